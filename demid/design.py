@@ -1,0 +1,176 @@
+"""Designed experiments: factor coding, polynomial terms and design-structure checks.
+
+A *term* is a tuple of non-negative integer exponents, one per factor in CSV
+column order.  Its name follows the factor column names: ``Intercept``, ``a``,
+``a:b``, ``a^2``, ``a^2:b``, ``a:b:c``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from itertools import combinations, combinations_with_replacement
+
+import numpy as np
+
+Term = tuple[int, ...]
+
+INTERCEPT = "Intercept"
+
+
+def term_name(term: Term, factors: list[str]) -> str:
+    parts = []
+    for name, power in zip(factors, term):
+        if power == 1:
+            parts.append(name)
+        elif power > 1:
+            parts.append(f"{name}^{power}")
+    return ":".join(parts) if parts else INTERCEPT
+
+
+def parse_term(name: str, factors: list[str]) -> Term:
+    """Inverse of :func:`term_name`; raises ``ValueError`` for unknown factors."""
+    powers = [0] * len(factors)
+    if name == INTERCEPT:
+        return tuple(powers)
+    for part in name.split(":"):
+        base, _, power = part.partition("^")
+        if base not in factors:
+            raise ValueError(f"unknown factor '{base}' in term '{name}'")
+        powers[factors.index(base)] += int(power) if power else 1
+    return tuple(powers)
+
+
+def quadratic_terms(n_factors: int) -> list[Term]:
+    """Eq. (1): intercept, linear, two-factor interactions, pure quadratics."""
+    eye = np.eye(n_factors, dtype=int)
+    terms: list[Term] = [tuple([0] * n_factors)]
+    terms += [tuple(row) for row in eye]
+    terms += [tuple(eye[i] + eye[j]) for i, j in combinations(range(n_factors), 2)]
+    terms += [tuple(2 * row) for row in eye]
+    return terms
+
+
+def cubic_terms(n_factors: int) -> list[Term]:
+    """All third-order monomials, in a stable order (pure cubes first)."""
+    cubes = [tuple(3 * row) for row in np.eye(n_factors, dtype=int)]
+    mixed = []
+    for combo in combinations_with_replacement(range(n_factors), 3):
+        powers = [0] * n_factors
+        for i in combo:
+            powers[i] += 1
+        if max(powers) < 3:
+            mixed.append(tuple(powers))
+    return cubes + mixed
+
+
+def model_matrix(x: np.ndarray, terms: list[Term]) -> np.ndarray:
+    """Columns ``prod_i x_i**term_i`` for points ``x`` of shape (n, k)."""
+    x = np.asarray(x, dtype=float)
+    out = np.ones((x.shape[0], len(terms)))
+    for j, term in enumerate(terms):
+        for i, power in enumerate(term):
+            if power:
+                out[:, j] *= x[:, i] ** power
+    return out
+
+
+@dataclass(frozen=True)
+class Coding:
+    """Affine map between actual factor units and design (coded) units.
+
+    ``coded = (actual - center) / unit``.  For a CCD with axial distance alpha,
+    the factorial points sit at +-1 and the axial points at +-alpha.
+    """
+
+    factors: tuple[str, ...]
+    center: tuple[float, ...]
+    unit: tuple[float, ...]
+
+    @classmethod
+    def from_levels(cls, factors, actual: np.ndarray, alpha: float = 1.0) -> "Coding":
+        """Centre = mid-range of the table, unit = half-range / alpha."""
+        actual = np.asarray(actual, dtype=float)
+        lo, hi = actual.min(axis=0), actual.max(axis=0)
+        unit = (hi - lo) / (2.0 * alpha)
+        unit = np.where(unit > 0, unit, 1.0)
+        return cls(tuple(factors), tuple(float(v) for v in (lo + hi) / 2), tuple(float(v) for v in unit))
+
+    def to_coded(self, actual) -> np.ndarray:
+        return (np.asarray(actual, dtype=float) - np.array(self.center)) / np.array(self.unit)
+
+    def to_actual(self, coded) -> np.ndarray:
+        return np.asarray(coded, dtype=float) * np.array(self.unit) + np.array(self.center)
+
+
+@dataclass(frozen=True)
+class DesignStructure:
+    """Counts of point types found in a coded design."""
+
+    n_runs: int
+    n_factorial: int
+    n_axial: int
+    n_center: int
+    n_other: int
+    alpha: float | None
+
+    def describe(self) -> str:
+        return (f"{self.n_runs} runs: {self.n_factorial} factorial, {self.n_axial} axial, "
+                f"{self.n_center} centre" + (f", {self.n_other} other" if self.n_other else ""))
+
+
+def classify_points(coded: np.ndarray, alpha: float, atol: float = 1e-3) -> np.ndarray:
+    """Label each coded point 'center', 'factorial', 'axial', 'edge' (Box-Behnken) or 'other'."""
+    coded = np.asarray(coded, dtype=float)
+    labels = []
+    for row in coded:
+        mag = np.abs(row)
+        zero = mag < atol
+        one = np.abs(mag - 1) < atol
+        ax = np.abs(mag - alpha) < atol * max(alpha, 1)
+        if zero.all():
+            labels.append("center")
+        elif one.all():
+            labels.append("factorial")
+        elif zero.sum() == len(row) - 1 and ax.sum() == 1:
+            labels.append("axial")
+        elif (zero | one).all() and one.sum() == 2:
+            labels.append("edge")
+        else:
+            labels.append("other")
+    return np.array(labels)
+
+
+def nominal_levels(design_type: str, alpha: float) -> np.ndarray:
+    """The coded levels a factor may take in the declared design."""
+    if design_type == "ccd":
+        return np.array([-alpha, -1.0, 0.0, 1.0, alpha]) if abs(alpha - 1) > 1e-9 else np.array([-1.0, 0.0, 1.0])
+    if design_type in ("box_behnken", "factorial"):
+        return np.array([-1.0, 0.0, 1.0])
+    return np.array([])
+
+
+def ccd_counts(n_factors: int, center_runs: int) -> dict[str, int]:
+    return {"factorial": 2 ** n_factors, "axial": 2 * n_factors, "center": center_runs}
+
+
+def rotatable_alpha(n_factors: int) -> float:
+    return float((2 ** n_factors) ** 0.25)
+
+
+def ccd_points(n_factors: int, alpha: float | None = None, center_runs: int = 5) -> np.ndarray:
+    """Coded CCD points in standard order: factorial, axial, centre."""
+    alpha = rotatable_alpha(n_factors) if alpha is None else alpha
+    fact = np.array(np.meshgrid(*[[-1.0, 1.0]] * n_factors, indexing="ij")).reshape(n_factors, -1).T
+    fact = fact[:, ::-1]  # first factor varies fastest (Yates order)
+    axial = np.zeros((2 * n_factors, n_factors))
+    for i in range(n_factors):
+        axial[2 * i, i] = -alpha
+        axial[2 * i + 1, i] = alpha
+    return np.vstack([fact, axial, np.zeros((center_runs, n_factors))])
+
+
+def replicate_groups(coded: np.ndarray, decimals: int = 6) -> np.ndarray:
+    """Integer group id per run; runs at the same design point share an id."""
+    keys = np.round(np.asarray(coded, dtype=float), decimals)
+    _, inverse = np.unique(keys, axis=0, return_inverse=True)
+    return inverse.ravel()

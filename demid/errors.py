@@ -1,0 +1,30 @@
+"""User-facing input errors: one line naming the file (or config key), row and column."""
+
+from __future__ import annotations
+
+
+class InputError(Exception):
+    """A problem with user input (table or config) that the user must fix.
+
+    The message is a single line that names where the problem is: the file or
+    config key, and where applicable the run (row) and column.  The CLI and the
+    Snakemake scripts print ``str(err)`` and exit non-zero without a traceback.
+    """
+
+    def __init__(self, message: str, *, source: str | None = None, run=None, column: str | None = None):
+        self.source = source
+        self.run = run
+        self.column = column
+        self.detail = message
+        super().__init__(self._compose())
+
+    def _compose(self) -> str:
+        where = []
+        if self.source is not None:
+            where.append(str(self.source))
+        if self.run is not None:
+            where.append(f"run {self.run}")
+        if self.column is not None:
+            where.append(f"column '{self.column}'")
+        prefix = ", ".join(where)
+        return f"{prefix}: {self.detail}" if prefix else self.detail

@@ -1,0 +1,379 @@
+"""Quadratic response-surface surrogates fitted by statsmodels OLS, with diagnostics.
+
+The fit keeps the statsmodels results object (``SurrogateFit.results``);
+diagnostics are small dataclasses with ``to_frame()``.  Everything downstream
+of the fit (grids, admissibility, uncertainty) uses the light
+:class:`Surrogate` predictor, which is what ``fits/{material}.parquet`` stores.
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import asdict, dataclass, field
+from functools import cached_property
+
+import numpy as np
+import pandas as pd
+import statsmodels.api as sm
+from scipy import stats
+from statsmodels.stats.diagnostic import het_breuschpagan, linear_reset
+from statsmodels.stats.outliers_influence import variance_inflation_factor
+
+from .design import Coding, Term, model_matrix, parse_term, quadratic_terms, replicate_groups, term_name
+
+
+# --------------------------------------------------------------------------- results
+@dataclass(frozen=True)
+class FitStatistics:
+    """Table 2 statistics.  rmse = sqrt(SSE/n); resid_std = sqrt(SSE/(n-p)); q2 = 1 - PRESS/SST."""
+
+    response: str
+    n_runs: int
+    n_params: int
+    r2: float
+    adj_r2: float
+    rmse: float
+    resid_std: float
+    press: float
+    q2: float
+    lof_f: float
+    lof_p: float
+
+    def to_frame(self) -> pd.DataFrame:
+        return pd.DataFrame([asdict(self)])
+
+
+@dataclass(frozen=True)
+class LackOfFitAnova:
+    """ANOVA with the residual split into lack of fit and pure error (replicated points).
+
+    Verified against Montgomery, *Design and Analysis of Experiments*, Example 11.2.
+    """
+
+    response: str
+    ss_model: float
+    df_model: int
+    ss_residual: float
+    df_residual: int
+    ss_lof: float
+    df_lof: int
+    ss_pure_error: float
+    df_pure_error: int
+    ss_total: float
+    df_total: int
+
+    def _f(self, ss_a, df_a, ss_b, df_b):
+        if df_a <= 0 or df_b <= 0 or ss_b <= 0:
+            return np.nan, np.nan
+        f = (ss_a / df_a) / (ss_b / df_b)
+        return float(f), float(stats.f.sf(f, df_a, df_b))
+
+    @property
+    def model_f(self):
+        return self._f(self.ss_model, self.df_model, self.ss_residual, self.df_residual)
+
+    @property
+    def lof_f(self):
+        return self._f(self.ss_lof, self.df_lof, self.ss_pure_error, self.df_pure_error)
+
+    def to_frame(self) -> pd.DataFrame:
+        mf, mp = self.model_f
+        lf, lp = self.lof_f
+        rows = [
+            ("Model", self.ss_model, self.df_model, mf, mp),
+            ("Residual", self.ss_residual, self.df_residual, np.nan, np.nan),
+            ("Lack of fit", self.ss_lof, self.df_lof, lf, lp),
+            ("Pure error", self.ss_pure_error, self.df_pure_error, np.nan, np.nan),
+            ("Total (corrected)", self.ss_total, self.df_total, np.nan, np.nan),
+        ]
+        df = pd.DataFrame(rows, columns=["source", "sum_sq", "df", "F", "p_value"])
+        df["mean_sq"] = np.where(df["df"] > 0, df["sum_sq"] / df["df"].where(df["df"] > 0, 1), np.nan)
+        df.insert(0, "response", self.response)
+        return df[["response", "source", "df", "sum_sq", "mean_sq", "F", "p_value"]]
+
+
+@dataclass(frozen=True)
+class Diagnostics:
+    """Residual diagnostics, all computed with statsmodels / scipy."""
+
+    response: str
+    breusch_pagan_lm: float
+    breusch_pagan_p: float
+    reset_f: float
+    reset_p: float
+    shapiro_w: float
+    shapiro_p: float
+    max_vif: float
+    max_cooks_d: float
+    max_abs_student_resid: float
+
+    def to_frame(self) -> pd.DataFrame:
+        return pd.DataFrame([asdict(self)])
+
+
+# --------------------------------------------------------------------------- predictor
+@dataclass
+class Surrogate:
+    """A fitted polynomial in model units (actual units, or log10 for log-scale factors)."""
+
+    response: str
+    factors: list[str]
+    terms: list[Term]
+    coefficients: np.ndarray
+    covariance: np.ndarray
+    resid_var: float
+    resid_df: int
+    log_factors: tuple[str, ...] = field(default_factory=tuple)
+
+    def model_units(self, points) -> np.ndarray:
+        z = np.array(points, dtype=float, copy=True, ndmin=2)
+        for i, name in enumerate(self.factors):
+            if name in self.log_factors:
+                z[:, i] = np.log10(z[:, i])
+        return z
+
+    def predict(self, points, chunk: int = 1_000_000) -> np.ndarray:
+        z = self.model_units(points)
+        out = np.empty(z.shape[0])
+        for start in range(0, z.shape[0], chunk):
+            out[start:start + chunk] = model_matrix(z[start:start + chunk], self.terms) @ self.coefficients
+        return out
+
+    def se_mean(self, points, chunk: int = 1_000_000) -> np.ndarray:
+        """Standard error of the fitted mean (statsmodels' ``mean_se``)."""
+        z = self.model_units(points)
+        out = np.empty(z.shape[0])
+        for start in range(0, z.shape[0], chunk):
+            m = model_matrix(z[start:start + chunk], self.terms)
+            out[start:start + chunk] = np.sqrt(np.einsum("ij,jk,ik->i", m, self.covariance, m))
+        return out
+
+    def se_prediction(self, points) -> np.ndarray:
+        """Standard error for a new observation (``obs_se``): sqrt(se_mean^2 + sigma^2)."""
+        return np.sqrt(self.se_mean(points) ** 2 + self.resid_var)
+
+    @property
+    def term_names(self) -> list[str]:
+        return [term_name(t, self.factors) for t in self.terms]
+
+
+# --------------------------------------------------------------------------- fit
+class SurrogateFit:
+    """OLS fit of one response on a polynomial (default: full quadratic) in coded units."""
+
+    def __init__(self, response: str, factors: list[str], x_actual: np.ndarray, y: np.ndarray,
+                 runs: np.ndarray, coding: Coding, terms: list[Term] | None = None,
+                 log_factors: tuple[str, ...] = ()):
+        self.response = response
+        self.factors = list(factors)
+        self.x_actual = np.asarray(x_actual, dtype=float)
+        self.y = np.asarray(y, dtype=float)
+        self.runs = np.asarray(runs)
+        self.coding = coding
+        self.terms = list(terms) if terms is not None else quadratic_terms(len(factors))
+        self.log_factors = tuple(log_factors)
+        self.coded = coding.to_coded(self._model_units(self.x_actual))
+        exog = pd.DataFrame(model_matrix(self.coded, self.terms), columns=self.term_names)
+        endog = pd.Series(self.y, name=response)
+        self.results = sm.OLS(endog, exog).fit()
+
+    def _model_units(self, x):
+        z = np.array(x, dtype=float, copy=True)
+        for i, name in enumerate(self.factors):
+            if name in self.log_factors:
+                z[:, i] = np.log10(z[:, i])
+        return z
+
+    @property
+    def term_names(self) -> list[str]:
+        return [term_name(t, self.factors) for t in self.terms]
+
+    @property
+    def n_runs(self) -> int:
+        return len(self.y)
+
+    @property
+    def n_params(self) -> int:
+        return len(self.terms)
+
+    @cached_property
+    def hat_diag(self) -> np.ndarray:
+        x = self.results.model.exog
+        q, _ = np.linalg.qr(x)
+        return np.sum(q * q, axis=1)
+
+    @cached_property
+    def press(self) -> float:
+        h = self.hat_diag
+        resid = self.results.resid.to_numpy()
+        with np.errstate(divide="ignore", invalid="ignore"):
+            loo = resid / (1.0 - h)
+        return float(np.sum(loo ** 2)) if np.all(h < 1 - 1e-10) else np.nan
+
+    def anova(self) -> LackOfFitAnova:
+        res = self.results
+        sse = float(res.ssr)
+        sst = float(np.sum((self.y - self.y.mean()) ** 2))
+        groups = replicate_groups(self.coded)
+        n_unique = int(groups.max()) + 1 if len(groups) else 0
+        ss_pe = 0.0
+        for g in range(n_unique):
+            yg = self.y[groups == g]
+            ss_pe += float(np.sum((yg - yg.mean()) ** 2))
+        df_pe = self.n_runs - n_unique
+        df_res = int(round(res.df_resid))
+        return LackOfFitAnova(
+            response=self.response,
+            ss_model=sst - sse, df_model=self.n_params - 1,
+            ss_residual=sse, df_residual=df_res,
+            ss_lof=sse - ss_pe, df_lof=df_res - df_pe,
+            ss_pure_error=ss_pe, df_pure_error=df_pe,
+            ss_total=sst, df_total=self.n_runs - 1,
+        )
+
+    def statistics(self) -> FitStatistics:
+        res = self.results
+        sse = float(res.ssr)
+        sst = float(np.sum((self.y - self.y.mean()) ** 2))
+        n, p = self.n_runs, self.n_params
+        lof_f, lof_p = self.anova().lof_f
+        return FitStatistics(
+            response=self.response, n_runs=n, n_params=p,
+            r2=1.0 - sse / sst if sst > 0 else np.nan,
+            adj_r2=1.0 - (sse / (n - p)) / (sst / (n - 1)) if sst > 0 and n > p else np.nan,
+            rmse=float(np.sqrt(sse / n)),
+            resid_std=float(np.sqrt(sse / (n - p))) if n > p else np.nan,
+            press=self.press,
+            q2=1.0 - self.press / sst if sst > 0 else np.nan,
+            lof_f=lof_f, lof_p=lof_p,
+        )
+
+    def influence(self) -> pd.DataFrame:
+        """Per-run externally studentised residuals, leverage and Cook's distance (statsmodels)."""
+        with warnings.catch_warnings(), np.errstate(divide="ignore", invalid="ignore"):
+            warnings.simplefilter("ignore", RuntimeWarning)
+            frame = self.results.get_influence().summary_frame()
+        out = pd.DataFrame({
+            "response": self.response,
+            "run": self.runs,
+            "observed": self.y,
+            "fitted": self.results.fittedvalues.to_numpy(),
+            "residual": self.results.resid.to_numpy(),
+            "loo_residual": self.results.resid.to_numpy() / (1 - self.hat_diag),
+            "student_resid": frame["student_resid"].to_numpy(),
+            "leverage": frame["hat_diag"].to_numpy(),
+            "cooks_d": frame["cooks_d"].to_numpy(),
+        })
+        return out
+
+    def diagnostics(self) -> Diagnostics:
+        res = self.results
+        exog = res.model.exog
+        nan = float("nan")
+        with warnings.catch_warnings(), np.errstate(all="ignore"):
+            warnings.simplefilter("ignore")
+            try:
+                bp_lm, bp_p, _, _ = het_breuschpagan(res.resid, exog)
+            except Exception:  # noqa: BLE001 - degenerate designs (e.g. perfect fit)
+                bp_lm, bp_p = nan, nan
+            try:
+                reset = linear_reset(res, power=2, use_f=True)
+                reset_f, reset_p = float(reset.fvalue), float(reset.pvalue)
+            except Exception:  # noqa: BLE001
+                reset_f, reset_p = nan, nan
+            try:
+                sw, sp = stats.shapiro(res.resid) if self.n_runs >= 3 else (nan, nan)
+            except Exception:  # noqa: BLE001
+                sw, sp = nan, nan
+            vifs = [variance_inflation_factor(exog, j) for j in range(1, exog.shape[1])]
+            infl = self.influence()
+        return Diagnostics(
+            response=self.response,
+            breusch_pagan_lm=float(bp_lm), breusch_pagan_p=float(bp_p),
+            reset_f=reset_f, reset_p=reset_p,
+            shapiro_w=float(sw), shapiro_p=float(sp),
+            max_vif=float(np.nanmax(vifs)) if vifs else nan,
+            max_cooks_d=float(np.nanmax(infl["cooks_d"])),
+            max_abs_student_resid=float(np.nanmax(np.abs(infl["student_resid"]))),
+        )
+
+    # ---- coefficients in coded and model (actual) units
+    def _coded_to_actual_matrix(self) -> np.ndarray:
+        """Linear map M with beta_actual = M @ beta_coded (exact: same polynomial space)."""
+        k = len(self.factors)
+        degree = max(max(t) for t in self.terms) if self.terms else 0
+        levels = np.linspace(-1, 1, degree + 1)
+        pts = np.array(np.meshgrid(*[levels] * k, indexing="ij")).reshape(k, -1).T
+        a_coded = model_matrix(pts, self.terms)
+        a_actual = model_matrix(self.coding.to_actual(pts), self.terms)
+        return np.linalg.lstsq(a_actual, a_coded, rcond=None)[0]
+
+    def coefficients(self) -> pd.DataFrame:
+        res = self.results
+        m = self._coded_to_actual_matrix()
+        return pd.DataFrame({
+            "response": self.response,
+            "term": self.term_names,
+            "coefficient_coded": res.params.to_numpy(),
+            "std_err_coded": res.bse.to_numpy(),
+            "t_value": res.tvalues.to_numpy(),
+            "p_value": res.pvalues.to_numpy(),
+            "coefficient_actual": m @ res.params.to_numpy(),
+        })
+
+    def surrogate(self) -> Surrogate:
+        m = self._coded_to_actual_matrix()
+        cov = np.asarray(self.results.cov_params())
+        return Surrogate(
+            response=self.response, factors=self.factors, terms=self.terms,
+            coefficients=m @ self.results.params.to_numpy(), covariance=m @ cov @ m.T,
+            resid_var=float(self.results.scale), resid_df=int(round(self.results.df_resid)),
+            log_factors=self.log_factors,
+        )
+
+
+def fit_response(table: pd.DataFrame, factors: list[str], response: str, *, alpha: float = 1.0,
+                 coding: Coding | None = None, terms: list[Term] | None = None,
+                 log_factors: tuple[str, ...] = ()) -> SurrogateFit:
+    """Fit one response, dropping runs where it is missing (failed simulations)."""
+    if coding is None:
+        z = table[factors].to_numpy(dtype=float).copy()
+        for i, name in enumerate(factors):
+            if name in log_factors:
+                z[:, i] = np.log10(z[:, i])
+        coding = Coding.from_levels(factors, z, alpha)
+    ok = np.isfinite(table[response].to_numpy(dtype=float))
+    sub = table.loc[ok]
+    runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, len(sub) + 1)
+    return SurrogateFit(response, factors, sub[factors].to_numpy(dtype=float),
+                        sub[response].to_numpy(dtype=float), runs, coding, terms, log_factors)
+
+
+# --------------------------------------------------------------------------- parquet round trip
+def surrogates_to_frame(fits: list[SurrogateFit]) -> pd.DataFrame:
+    """Long table: one row per response x term, coefficients and covariance in actual units."""
+    frames = []
+    for fit in fits:
+        coef = fit.coefficients()
+        sur = fit.surrogate()
+        cov = pd.DataFrame(sur.covariance, columns=[f"cov:{n}" for n in sur.term_names])
+        coef["resid_var"] = sur.resid_var
+        coef["resid_df"] = sur.resid_df
+        coef["log_factors"] = ",".join(sur.log_factors)
+        frames.append(pd.concat([coef.reset_index(drop=True), cov], axis=1))
+    return pd.concat(frames, ignore_index=True)
+
+
+def surrogates_from_frame(frame: pd.DataFrame, factors: list[str]) -> dict[str, Surrogate]:
+    out = {}
+    for response, rows in frame.groupby("response", sort=False):
+        names = rows["term"].tolist()
+        cov = rows[[f"cov:{n}" for n in names]].to_numpy(dtype=float)
+        logs = rows["log_factors"].iloc[0]
+        out[response] = Surrogate(
+            response=response, factors=list(factors), terms=[parse_term(n, factors) for n in names],
+            coefficients=rows["coefficient_actual"].to_numpy(dtype=float), covariance=cov,
+            resid_var=float(rows["resid_var"].iloc[0]), resid_df=int(rows["resid_df"].iloc[0]),
+            log_factors=tuple(x for x in logs.split(",") if x),
+        )
+    return out
