@@ -104,6 +104,7 @@ class AdmissibleSet:
     lower: np.ndarray
     upper: np.ndarray
     mask: np.ndarray = field(repr=False)
+    cell_fraction: np.ndarray = field(default=None, repr=False)
     best_error: float = np.nan
     best_point: np.ndarray = field(default_factory=lambda: np.array([]))
     evaluations: int = 0
@@ -227,6 +228,25 @@ def admissible_set(surrogates: dict[str, Surrogate], domain: Domain, observables
         observables=observables, tolerance=eps, factors=tuple(domain.factors),
         fraction=float(cell_frac.mean()), node_fraction=float(mask.mean()),
         n_nodes=int(mask.size), n_admissible_nodes=int(mask.sum()), n_refined_cells=int(len(cand_idx)),
-        lower=lower, upper=upper, mask=mask.ravel(), best_error=float(worst.ravel()[best]),
+        lower=lower, upper=upper, mask=mask.ravel(), cell_fraction=cell_frac, best_error=float(worst.ravel()[best]),
         best_point=best_point, evaluations=int(evaluations),
     )
+
+
+def evaluate_scenarios(surrogates: dict[str, Surrogate], material_cfg: dict, n: int,
+                       grid_predictions: pd.DataFrame | None = None) -> tuple[pd.DataFrame, dict[str, AdmissibleSet]]:
+    """Every configured scenario of a material: long table (one row per scenario x factor) and the sets."""
+    domain = Domain.from_config(material_cfg["factors"])
+    targets = {r: float(c["target"]) for r, c in material_cfg["responses"].items() if "target" in c}
+    frames, sets = [], {}
+    for name, scen in (material_cfg.get("scenarios") or {}).items():
+        result = admissible_set(surrogates, domain, scen["observables"], targets, scen["tolerance"], n,
+                                grid_predictions=grid_predictions)
+        frame = result.to_frame()
+        frame.insert(0, "scenario", name)
+        frames.append(frame)
+        sets[name] = result
+    columns = ["scenario", "observables", "tolerance", "feasible_fraction_pct", "factor", "lower", "upper",
+               "width", "node_fraction_pct", "n_admissible_nodes", "best_max_rel_error"]
+    table = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=columns)
+    return table[columns], sets

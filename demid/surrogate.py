@@ -377,3 +377,26 @@ def surrogates_from_frame(frame: pd.DataFrame, factors: list[str]) -> dict[str, 
             log_factors=tuple(x for x in logs.split(",") if x),
         )
     return out
+
+
+# --------------------------------------------------------------------------- per-material step
+def fit_material(table: pd.DataFrame, material_cfg: dict) -> list[SurrogateFit]:
+    """Quadratic fit of every response of a validated table, in the declared design's coding."""
+    from .data import infer_coding
+
+    factors = list(material_cfg["factors"])
+    log_factors = tuple(f for f, c in material_cfg["factors"].items() if c.get("scale") == "log")
+    coding = infer_coding(table, factors, material_cfg["design"], material_cfg["data"], log_factors)
+    return [fit_response(table, factors, r, coding=coding, log_factors=log_factors)
+            for r in material_cfg["responses"]]
+
+
+def fit_frames(fits: list[SurrogateFit]) -> dict[str, pd.DataFrame]:
+    """The parquet intermediates of the fit step, keyed by output name."""
+    return {
+        "fits": surrogates_to_frame(fits),
+        "statistics": pd.concat([f.statistics().to_frame() for f in fits], ignore_index=True),
+        "anova": pd.concat([f.anova().to_frame() for f in fits], ignore_index=True),
+        "influence": pd.concat([f.influence() for f in fits], ignore_index=True),
+        "diagnostics": pd.concat([f.diagnostics().to_frame() for f in fits], ignore_index=True),
+    }

@@ -1,0 +1,24 @@
+# demid: which experiments identify the DEM micro-parameters, and what the simulation gets wrong.
+# Run `snakemake -c2`; your own study: `snakemake -c2 --configfile their.yaml --directory their_dir`.
+
+configfile: "config.yaml"
+
+
+include: "workflow/rules/common.smk"
+include: "workflow/rules/validate.smk"
+include: "workflow/rules/fit.smk"
+include: "workflow/rules/admissibility.smk"
+include: "workflow/rules/figures.smk"
+include: "workflow/rules/tables.smk"
+include: "workflow/rules/report.smk"
+
+
+rule all:
+    input:
+        all_outputs(),
+    default_target: True
+
+
+rule smoke:
+    input:
+        smoke_outputs(),

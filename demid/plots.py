@@ -1,0 +1,178 @@
+"""Publication figures: admissible sets, response surfaces, Pareto trade-off.
+
+Sets are drawn cell by cell from the evaluation grid.  When the grid is finer
+than the figure, cells are max-pooled into pixels so a narrow band or ridge
+stays visible instead of being averaged away.
+"""
+
+from __future__ import annotations
+
+from itertools import combinations
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+from matplotlib.colors import ListedColormap  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
+
+from .admissibility import AdmissibleSet, Domain  # noqa: E402
+
+plt.rcParams.update({
+    "figure.dpi": 150, "font.size": 9, "axes.titlesize": 10, "axes.labelsize": 9,
+    "legend.fontsize": 8, "svg.hashsalt": "demid", "axes.spines.top": False, "axes.spines.right": False,
+})
+
+SCENARIO_COLORS = ["#9ecae1", "#08519c", "#fdae6b", "#a63603", "#74c476", "#006d2c"]
+MAX_PIXELS = 500
+
+
+def _label(cfg: dict, name: str) -> str:
+    label = cfg.get("label") or name
+    unit = cfg.get("unit", "-")
+    return f"{label} [{unit}]" if unit and unit != "-" else label
+
+
+def _pool(mask: np.ndarray, max_pixels: int = MAX_PIXELS) -> np.ndarray:
+    """Max-pool a boolean 2-D mask so that no side exceeds ``max_pixels``."""
+    out = mask
+    for axis in (0, 1):
+        n = out.shape[axis]
+        if n > max_pixels:
+            block = int(np.ceil(n / max_pixels))
+            pad = (-n) % block
+            widths = [(0, 0), (0, 0)]
+            widths[axis] = (0, pad)
+            padded = np.pad(out, widths, constant_values=False)
+            shape = list(padded.shape)
+            shape[axis] = shape[axis] // block
+            shape.insert(axis + 1, block)
+            out = padded.reshape(shape).any(axis=axis + 1)
+    return out
+
+
+def _cell_mask(result: AdmissibleSet, n: int, d: int) -> np.ndarray:
+    if result.cell_fraction is not None:
+        return np.asarray(result.cell_fraction) > 0
+    return result.mask.reshape((n,) * d)
+
+
+def _extent(domain: Domain, i: int, j: int):
+    lo, hi = domain.search_bounds()
+    return [lo[i], hi[i], lo[j], hi[j]]
+
+
+def _axis_scale(ax, domain: Domain, i: int, j: int):
+    # imshow works in search units; label log factors with actual values.
+    for k, setter in ((i, ax.xaxis), (j, ax.yaxis)):
+        if domain.log[k]:
+            setter.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{10 ** v:.3g}"))
+
+
+def sets_figure(domain: Domain, factor_cfg: dict, sets: dict[str, AdmissibleSet], scenario_cfg: dict,
+                n: int, reference_point: dict | None = None, title: str = "") -> plt.Figure:
+    """Overlay of every scenario's admissible set (pairwise projections for d > 2)."""
+    d = domain.dim
+    pairs = list(combinations(range(d), 2)) if d > 1 else [(0, 0)]
+    fig, axes = plt.subplots(1, len(pairs), figsize=(4.4 * len(pairs) + 0.6, 4.0), squeeze=False)
+    handles = []
+    for s_idx, (name, result) in enumerate(sets.items()):
+        color = SCENARIO_COLORS[s_idx % len(SCENARIO_COLORS)]
+        label = scenario_cfg.get(name, {}).get("label") or name
+        obs = "+".join(result.observables)
+        frac = 100 * result.fraction
+        handles.append(Patch(color=color, label=f"{label} ({obs}, ε={result.tolerance:g}): {frac:.3g} %"))
+        cells = _cell_mask(result, n, d)
+        for ax, (i, j) in zip(axes[0], pairs):
+            other = tuple(k for k in range(d) if k not in (i, j))
+            proj = cells.any(axis=other) if other else cells
+            img = _pool(proj.T)  # rows = y (factor j)
+            if not img.any():
+                continue
+            cmap = ListedColormap([(0, 0, 0, 0), color])
+            ax.imshow(img.astype(float), origin="lower", extent=_extent(domain, i, j), aspect="auto",
+                      cmap=cmap, vmin=0, vmax=1, interpolation="nearest")
+    names = list(domain.factors)
+    for ax, (i, j) in zip(axes[0], pairs):
+        ax.set_xlabel(_label(factor_cfg[names[i]], names[i]))
+        ax.set_ylabel(_label(factor_cfg[names[j]], names[j]))
+        lo, hi = domain.search_bounds()
+        ax.set_xlim(lo[i], hi[i])
+        ax.set_ylim(lo[j], hi[j])
+        _axis_scale(ax, domain, i, j)
+        if reference_point:
+            ref = domain.to_search(np.array([[reference_point[f] for f in names]]))[0]
+            ax.plot(ref[i], ref[j], marker="*", ms=11, color="#d62728", mec="k", mew=0.6, ls="none")
+    if reference_point:
+        handles.append(plt.Line2D([], [], marker="*", ms=10, color="#d62728", mec="k", ls="none",
+                                  label="reference point"))
+    fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 2), frameon=False,
+               bbox_to_anchor=(0.5, -0.02))
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout(rect=(0, 0.08 + 0.04 * ((len(handles) - 1) // 2), 1, 1))
+    return fig
+
+
+def surface_figure(domain: Domain, factor_cfg: dict, response_cfg: dict, grid: pd.DataFrame, n: int,
+                   table: pd.DataFrame | None = None, title: str = "") -> plt.Figure:
+    """Contour panel per response over the first two factors (others at their mid-range)."""
+    names = list(domain.factors)
+    d = domain.dim
+    responses = [r for r in response_cfg if r in grid.columns]
+    ncol = min(3, len(responses))
+    nrow = int(np.ceil(len(responses) / ncol))
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.6 * nrow), squeeze=False)
+    lo, hi = domain.search_bounds()
+    step = max(1, (n - 1) // 200)
+    for ax, r in zip(axes.ravel(), responses):
+        values = grid[r].to_numpy().reshape((n,) * d)
+        if d > 2:
+            values = values[(slice(None), slice(None)) + (n // 2,) * (d - 2)]
+        if d == 1:
+            ax.plot(np.linspace(lo[0], hi[0], n), values, color="k")
+            continue
+        z = values[::step, ::step].T
+        xs = np.linspace(lo[0], hi[0], n)[::step]
+        ys = np.linspace(lo[1], hi[1], n)[::step]
+        cs = ax.contourf(xs, ys, z, levels=14, cmap="viridis")
+        fig.colorbar(cs, ax=ax, label=_label(response_cfg[r], r))
+        target = response_cfg[r].get("target")
+        if target is not None and z.min() < target < z.max():
+            ax.contour(xs, ys, z, levels=[target], colors="w", linewidths=1.4, linestyles="--")
+        if table is not None:
+            pts = domain.to_search(table[names].to_numpy())
+            ax.plot(pts[:, 0], pts[:, 1], "o", ms=3.5, mfc="w", mec="k", mew=0.6, ls="none")
+        ax.set_xlabel(_label(factor_cfg[names[0]], names[0]))
+        ax.set_ylabel(_label(factor_cfg[names[1]], names[1]))
+        ax.set_title(response_cfg[r].get("label") or r)
+        _axis_scale(ax, domain, 0, 1)
+    for ax in axes.ravel()[len(responses):]:
+        ax.set_visible(False)
+    sub = "" if d <= 2 else f" (other factors at mid-range: {', '.join(names[2:])})"
+    if title or sub:
+        fig.suptitle(f"{title}{sub}")
+    fig.tight_layout()
+    return fig
+
+
+def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, error_of: str, target: float, minimise: str,
+                  max_error: float, response_cfg: dict, title: str = "", cloud_points: int = 60_000) -> plt.Figure:
+    """Objective cloud (deterministic subsample of grid points) and the Pareto front."""
+    error = 100 * np.abs(grid[error_of].to_numpy() - target) / abs(target)
+    objective = grid[minimise].to_numpy()
+    step = max(1, len(error) // cloud_points)
+    fig, ax = plt.subplots(figsize=(5.6, 4.2))
+    ax.plot(error[::step], objective[::step], ".", ms=1.2, color="#bdbdbd", alpha=0.6, rasterized=True,
+            label="grid points (subsample)")
+    ax.plot(100 * front["error"], front["objective"], "-", color="#08519c", lw=1.6, label="Pareto front")
+    ax.axvline(100 * max_error, color="#a63603", ls="--", lw=1, label=f"error = {100 * max_error:g} %")
+    ax.set_xlabel(f"relative error of {response_cfg[error_of].get('label') or error_of} [%]")
+    ax.set_ylabel(_label(response_cfg[minimise], minimise))
+    ax.legend(frameon=False, loc="upper right")
+    if title:
+        ax.set_title(title)
+    fig.tight_layout()
+    return fig

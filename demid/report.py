@@ -1,0 +1,221 @@
+"""Cross-material tables and the text of the HTML report."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pandas as pd
+
+from .io import read_parquet
+
+SURROGATE_FIT_COLUMNS = ["material", "response", "n_runs", "r2", "adj_r2", "rmse", "resid_std", "q2", "lof_f", "lof_p"]
+IDENTIFIABILITY_COLUMNS = ["material", "scenario", "observables", "tolerance", "feasible_fraction_pct", "factor",
+                           "lower", "upper", "width"]
+
+
+def surrogate_fit_table(statistics: dict[str, str | Path]) -> pd.DataFrame:
+    """Table 2: one row per material x response, from the per-material statistics parquet files."""
+    frames = []
+    for material, path in statistics.items():
+        frame = read_parquet(path)
+        frame.insert(0, "material", material)
+        frames.append(frame)
+    return pd.concat(frames, ignore_index=True)[SURROGATE_FIT_COLUMNS]
+
+
+def identifiability_table(scenario_files) -> pd.DataFrame:
+    """Table 3 in long form: one row per material x scenario x factor (+ diagnostic columns)."""
+    frames = [read_parquet(p) for p in scenario_files]
+    frames = [f for f in frames if len(f)]
+    if not frames:
+        return pd.DataFrame(columns=IDENTIFIABILITY_COLUMNS)
+    table = pd.concat(frames, ignore_index=True)
+    extra = [c for c in table.columns if c not in IDENTIFIABILITY_COLUMNS]
+    return table[IDENTIFIABILITY_COLUMNS + extra]
+
+
+def pareto_intervals(path: str | Path) -> pd.DataFrame:
+    """The interval summary rows of a tables/pareto_{material}.csv file."""
+    frame = pd.read_csv(path)
+    rows = frame[frame["kind"] == "interval"]
+    return rows[["factor", "lower", "upper", "n_points"]].reset_index(drop=True)
+
+
+# --------------------------------------------------------------------------- report text
+def _fmt(value, digits: int = 4) -> str:
+    if isinstance(value, (float, int)) and not isinstance(value, bool):
+        if value != value:  # NaN
+            return "–"
+        return f"{value:.{digits}g}"
+    return str(value)
+
+
+def markdown_table(frame: pd.DataFrame, digits: int = 4) -> str:
+    """A GitHub-style Markdown table (no extra dependency), numbers to ``digits`` significant digits."""
+    if frame.empty:
+        return "_(empty)_"
+    cols = list(frame.columns)
+    lines = ["| " + " | ".join(cols) + " |", "|" + "|".join("---" for _ in cols) + "|"]
+    for _, row in frame.iterrows():
+        lines.append("| " + " | ".join(_fmt(row[c], digits) for c in cols) + " |")
+    return "\n".join(lines)
+
+
+def execute_report(notebook: str | Path, output: str | Path, *, results_dir: str, config_json: str) -> None:
+    """Run the report notebook with papermill (the kernel is this Python)."""
+    import papermill as pm
+
+    Path(output).parent.mkdir(parents=True, exist_ok=True)
+    pm.execute_notebook(str(notebook), str(output), parameters={"results_dir": results_dir,
+                                                                  "config_json": config_json},
+                        kernel_name="python3", progress_bar=False, log_output=False, cwd=str(Path.cwd()))
+
+
+def render_html(notebook: str | Path, output: str | Path) -> None:
+    """Self-contained HTML with code cells hidden: the reader sees text, tables and figures."""
+    import nbformat
+    from nbconvert import HTMLExporter
+
+    from .io import atomic_path
+
+    exporter = HTMLExporter(exclude_input=True, exclude_input_prompt=True, exclude_output_prompt=True)
+    body, _ = exporter.from_notebook_node(nbformat.read(str(notebook), as_version=4))
+    with atomic_path(output) as tmp:
+        Path(tmp).write_text(body, encoding="utf-8")
+
+
+class ReportSections:
+    """Builds the report's displayable parts from the results folder; optional parts are skipped."""
+
+    def __init__(self, results_dir: str, config: dict):
+        self.root = Path(results_dir)
+        self.config = config
+        self.materials = list(config.get("materials", {}))
+
+    # helpers
+    def _md(self, text: str):
+        from IPython.display import Markdown
+
+        return Markdown(text)
+
+    def _image(self, path: Path):
+        from IPython.display import Image
+
+        return Image(filename=str(path), width=820) if path.is_file() else self._md(f"_(missing figure {path.name})_")
+
+    def _csv(self, name: str) -> pd.DataFrame | None:
+        path = self.root / "tables" / name
+        return pd.read_csv(path) if path.is_file() else None
+
+    def _label(self, material: str) -> str:
+        return self.config["materials"][material].get("label") or material
+
+    # sections
+    def all(self) -> list:
+        parts = self.header()
+        parts += self.paper_comparison()
+        parts += self.surrogate_fit()
+        parts += self.identifiability()
+        for m in self.materials:
+            parts += self.material(m)
+        return parts
+
+    def header(self) -> list:
+        text = ["# demid — identifiability report", "",
+                "Which measured observables identify the DEM micro-parameters within the design domain? "
+                "For every material, quadratic response surfaces are fitted to the designed simulation runs, "
+                "and the *admissible set* — parameter points whose predicted observables all lie within a "
+                "relative tolerance of the measured targets — is compared across observable scenarios "
+                "(feasible fraction Φ of the domain and per-parameter span W).", "",
+                f"Materials: {', '.join(self._label(m) for m in self.materials)}."]
+        published = self.config.get("published")
+        if published and Path(published).is_file():
+            import yaml
+
+            with open(published, encoding="utf-8") as fh:
+                pub = yaml.safe_load(fh) or {}
+            provenance = pub.get("provenance")
+            if provenance:
+                text += ["", "> **Data provenance.** " + " ".join(str(provenance).split())]
+        return [self._md("\n".join(text))]
+
+    def paper_comparison(self) -> list:
+        table = self._csv("paper_comparison.csv")
+        if table is None:
+            return []
+        n_pass = int(table["pass"].astype(str).str.lower().eq("true").sum())
+        return [self._md(f"## Reproduction of the published numbers\n\n{n_pass} of {len(table)} published "
+                         f"numbers are reproduced within their tolerance.\n\n" + markdown_table(table))]
+
+    def surrogate_fit(self) -> list:
+        table = self._csv("surrogate_fit.csv")
+        if table is None:
+            return []
+        return [self._md("## Surrogate fidelity (Table 2)\n\nrmse = √(SSE/n); resid_std = √(SSE/(n−p)); "
+                         "q2 = 1 − PRESS/SST (leave-one-out); lack of fit is tested against pure error from "
+                         "replicated runs.\n\n" + markdown_table(table))]
+
+    def identifiability(self) -> list:
+        table = self._csv("identifiability.csv")
+        if table is None:
+            return []
+        cols = ["material", "scenario", "observables", "tolerance", "feasible_fraction_pct", "factor", "lower",
+                "upper", "width"]
+        lines = ["## Admissible sets (Table 3)", "", markdown_table(table[cols]), ""]
+        for m in self.materials:
+            sub = table[table["material"] == m]
+            scen = list(dict.fromkeys(sub["scenario"]))
+            if len(scen) < 2:
+                continue
+            base = sub[sub["scenario"] == scen[0]]
+            for s in scen[1:]:
+                other = sub[sub["scenario"] == s]
+                f0 = base["feasible_fraction_pct"].iloc[0]
+                f1 = other["feasible_fraction_pct"].iloc[0]
+                change = f"{100 * (f1 - f0) / f0:+.1f} %" if f0 > 0 else "n/a"
+                widths = []
+                for fac in base["factor"]:
+                    w0 = base.loc[base["factor"] == fac, "width"].iloc[0]
+                    w1 = other.loc[other["factor"] == fac, "width"].iloc[0]
+                    if w0 > 0 and w1 == w1:
+                        widths.append(f"W({fac}) {100 * (w1 - w0) / w0:+.1f} %")
+                lines.append(f"- **{self._label(m)}**: {s} vs {scen[0]}: Φ {f0:.4g} % → {f1:.4g} % "
+                             f"({change}); " + ", ".join(widths))
+        return [self._md("\n".join(lines))]
+
+    def material(self, m: str) -> list:
+        cfg = self.config["materials"][m]
+        parts = [self._md(f"## {self._label(m)}")]
+        summary = self.root / "validated" / f"{m}.json"
+        if summary.is_file():
+            import json
+
+            info = json.loads(summary.read_text(encoding="utf-8"))
+            types = ", ".join(f"{v} {k}" for k, v in info["point_types"].items())
+            text = f"**Table check.** {info['n_runs']} runs ({types}); every factor value sits on a level of the declared design and inside the search bounds."
+            if info["warnings"]:
+                text += "\n\n" + "\n".join(f"- ⚠ {w}" for w in info["warnings"])
+            parts.append(self._md(text))
+        parts.append(self._md("**Admissible sets by scenario** (cells drawn without smoothing; ★ = reference point)."))
+        parts.append(self._image(self.root / "figures" / f"sets_{m}.png"))
+        parts.append(self._md("**Response surfaces** with design runs (○) and targets (dashed)."))
+        parts.append(self._image(self.root / "figures" / f"surface_{m}.png"))
+        if cfg.get("pareto"):
+            par = cfg["pareto"]
+            parts.append(self._md(f"**Pareto trade-off**: relative error of {par['error_of']} vs predicted "
+                                  f"{par['minimise']}."))
+            parts.append(self._image(self.root / "figures" / f"pareto_{m}.png"))
+            pareto = self._csv(f"pareto_{m}.csv")
+            if pareto is not None:
+                iv = pareto[pareto["kind"] == "interval"][["factor", "lower", "upper", "n_points"]]
+                parts.append(self._md(f"Intervals over Pareto points with error < {100 * par['max_error']:g} %:\n\n"
+                                      + markdown_table(iv)))
+        anova = self.root / "fits" / f"{m}_anova.parquet"
+        if anova.is_file():
+            parts.append(self._md("**ANOVA with lack of fit**\n\n" + markdown_table(read_parquet(anova))))
+        diag = self.root / "fits" / f"{m}_diagnostics.parquet"
+        if diag.is_file():
+            parts.append(self._md("**Residual diagnostics** (Breusch–Pagan, RESET, Shapiro–Wilk p-values; "
+                                  "largest VIF, Cook's distance, |studentised residual|)\n\n"
+                                  + markdown_table(read_parquet(diag), 3)))
+        return parts

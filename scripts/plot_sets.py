@@ -1,0 +1,18 @@
+"""Snakemake script: overlay of the admissible sets of every scenario (paper Figs. 3 and 5)."""
+
+import sys
+
+sys.stderr = open(snakemake.log[0], "w", encoding="utf-8")  # noqa: F821
+
+from demid.admissibility import Domain, evaluate_scenarios  # noqa: E402
+from demid.io import read_parquet, save_figure  # noqa: E402
+from demid.plots import sets_figure  # noqa: E402
+from demid.surrogate import surrogates_from_frame  # noqa: E402
+
+cfg = snakemake.params.material_cfg  # noqa: F821
+n = snakemake.params.grid_points  # noqa: F821
+surrogates = surrogates_from_frame(read_parquet(snakemake.input.fits), list(cfg["factors"]))  # noqa: F821
+_, sets = evaluate_scenarios(surrogates, cfg, n, read_parquet(snakemake.input.grid))  # noqa: F821
+fig = sets_figure(Domain.from_config(cfg["factors"]), cfg["factors"], sets, cfg.get("scenarios") or {}, n,
+                  cfg.get("reference_point"), cfg.get("label") or snakemake.wildcards.material)  # noqa: F821
+save_figure(fig, snakemake.output.figure)  # noqa: F821

@@ -1,0 +1,47 @@
+rule predict_grid:
+    input:
+        fits=f"{RESULTS}/fits/{{material}}.parquet",
+    output:
+        grid=f"{RESULTS}/grid/{{material}}.parquet",
+    params:
+        material_cfg=material_cfg,
+        grid_points=material_grid_points,
+    log:
+        "logs/grid/{material}.log",
+    benchmark:
+        "benchmarks/grid/{material}.tsv"
+    script:
+        "../../scripts/predict_grid.py"
+
+
+rule evaluate_scenarios:
+    input:
+        fits=f"{RESULTS}/fits/{{material}}.parquet",
+        grid=f"{RESULTS}/grid/{{material}}.parquet",
+    output:
+        scenarios=f"{RESULTS}/scenarios/{{material}}.parquet",
+    params:
+        material_cfg=material_cfg,
+        grid_points=material_grid_points,
+    log:
+        "logs/scenarios/{material}.log",
+    benchmark:
+        "benchmarks/scenarios/{material}.tsv"
+    script:
+        "../../scripts/evaluate_scenarios.py"
+
+
+rule extract_pareto:
+    input:
+        grid=f"{RESULTS}/grid/{{material}}.parquet",
+    output:
+        table=f"{RESULTS}/tables/pareto_{{material}}.csv",
+        front=f"{RESULTS}/pareto/{{material}}.parquet",
+    params:
+        material_cfg=material_cfg,
+    log:
+        "logs/pareto/{material}.log",
+    benchmark:
+        "benchmarks/pareto/{material}.tsv"
+    script:
+        "../../scripts/extract_pareto.py"

@@ -1,0 +1,122 @@
+import sys
+from pathlib import Path
+
+from demid.config import check_semantics, grid_size, validate_schema
+from demid.data import validate_material
+from demid.errors import InputError
+
+
+# Validate the config (schema with defaults, then cross-references) and every table before
+# any job is scheduled: a user error stops here with one line, and nothing is written.
+try:
+    _checked = validate_schema(dict(config), source="config")
+    config.clear()
+    config.update(_checked)
+    check_semantics(config, source="config")
+    for _name, _material in config["materials"].items():
+        validate_material(_name, _material)
+except InputError as err:
+    sys.exit(f"demid: error: {err}")
+
+
+RESULTS = config["results_dir"]
+MATERIALS = list(config["materials"])
+
+
+wildcard_constraints:
+    material="|".join(MATERIALS),
+
+
+def material_cfg(wildcards):
+    return config["materials"][wildcards.material]
+
+
+def material_data(wildcards):
+    return config["materials"][wildcards.material]["data"]
+
+
+def material_grid_points(wildcards):
+    return grid_size(config, wildcards.material)
+
+
+def pareto_materials():
+    return [m for m in MATERIALS if config["materials"][m].get("pareto")]
+
+
+def paper_figures():
+    return [
+        f"{RESULTS}/figures/{mat['paper_figure']}_{name}.png"
+        for name, mat in config["materials"].items()
+        if mat.get("paper_figure")
+    ]
+
+
+def paper_figure_pattern():
+    names = sorted({m["paper_figure"] for m in config["materials"].values() if m.get("paper_figure")})
+    return "|".join(names) if names else "(?!x)x"
+
+
+def paper_figure_source(wildcards):
+    mat = config["materials"][wildcards.material]
+    kind = "pareto" if mat.get("pareto") else "sets"
+    return f"{RESULTS}/figures/{kind}_{wildcards.material}.png"
+
+
+def per_material_outputs(material):
+    out = [
+        f"{RESULTS}/validated/{material}.parquet",
+        f"{RESULTS}/fits/{material}.parquet",
+        f"{RESULTS}/grid/{material}.parquet",
+        f"{RESULTS}/scenarios/{material}.parquet",
+        f"{RESULTS}/figures/sets_{material}.png",
+        f"{RESULTS}/figures/surface_{material}.png",
+    ]
+    if config["materials"][material].get("pareto"):
+        out += [
+            f"{RESULTS}/tables/pareto_{material}.csv",
+            f"{RESULTS}/figures/pareto_{material}.png",
+        ]
+    return out
+
+
+def report_tables():
+    out = [f"{RESULTS}/tables/surrogate_fit.csv", f"{RESULTS}/tables/identifiability.csv"]
+    out += [f"{RESULTS}/tables/pareto_{m}.csv" for m in pareto_materials()]
+    out += [f"{RESULTS}/validated/{m}.json" for m in MATERIALS]
+    out += [f"{RESULTS}/fits/{m}_anova.parquet" for m in MATERIALS]
+    out += [f"{RESULTS}/fits/{m}_diagnostics.parquet" for m in MATERIALS]
+    if config.get("published"):
+        out.append(f"{RESULTS}/tables/paper_comparison.csv")
+    return out
+
+
+def report_figures():
+    out = []
+    for m in MATERIALS:
+        out += [f"{RESULTS}/figures/sets_{m}.png", f"{RESULTS}/figures/surface_{m}.png"]
+        if config["materials"][m].get("pareto"):
+            out.append(f"{RESULTS}/figures/pareto_{m}.png")
+    return out
+
+
+def config_json():
+    import json
+
+    return json.dumps(config, sort_keys=True)
+
+
+def all_outputs():
+    out = [o for m in MATERIALS for o in per_material_outputs(m)]
+    out += paper_figures()
+    out += [
+        f"{RESULTS}/tables/surrogate_fit.csv",
+        f"{RESULTS}/tables/identifiability.csv",
+        f"{RESULTS}/report/report.html",
+    ]
+    if config.get("published"):
+        out.append(f"{RESULTS}/tables/paper_comparison.csv")
+    return out
+
+
+def smoke_outputs():
+    return per_material_outputs(config.get("smoke_material") or MATERIALS[0])

@@ -1,0 +1,14 @@
+rule validate_table:
+    input:
+        data=material_data,
+    output:
+        table=f"{RESULTS}/validated/{{material}}.parquet",
+        summary=f"{RESULTS}/validated/{{material}}.json",
+    params:
+        material_cfg=material_cfg,
+    log:
+        "logs/validate/{material}.log",
+    benchmark:
+        "benchmarks/validate/{material}.tsv"
+    script:
+        "../../scripts/validate_table.py"
