@@ -1,7 +1,12 @@
 # demid: which experiments identify the DEM micro-parameters, and what the simulation gets wrong.
 # Run `snakemake -c2`; your own study: `snakemake -c2 --configfile their.yaml --directory their_dir`.
 
-configfile: "config.yaml"
+# The demonstration study; a --configfile given on the command line replaces it instead of
+# being merged into it, so a user's study never inherits the demo materials.
+if not workflow.overwrite_configfiles:
+
+    configfile: "config.yaml"
+
 
 
 include: "workflow/rules/common.smk"

@@ -194,17 +194,23 @@ def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str
     centers, units = [], []
     for i, f in enumerate(factors):
         values, counts = np.unique(np.round(z[:, i], 12), return_counts=True)
-        order = np.lexsort((values, -counts))
-        center = values[order[0]]
-        others = [values[j] for j in order[1:]]
-        below = [v for v in others if v < center]
-        above = [v for v in others if v > center]
-        if not below or not above:
-            raise InputError(f"cannot find design levels on both sides of the centre value {center:g}",
+        center = values[np.lexsort((values, -counts))[0]]
+        count = dict(zip(values, counts))
+        span = values.max() - values.min()
+        # The +-1 levels: the pair symmetric about the centre that most runs sit on (a single
+        # mistyped cell has no symmetric partner, so it cannot hijack the coding).
+        best = None
+        for lo in values[values < center]:
+            for hi in values[values > center]:
+                if abs((hi - center) - (center - lo)) <= 5e-3 * max(span, 1e-300):
+                    key = (count[lo] + count[hi], -(hi - lo))
+                    if best is None or key > best[0]:
+                        best = (key, lo, hi)
+        if best is None:
+            raise InputError(f"cannot find design levels placed symmetrically about the centre value {center:g}",
                              source=src, column=f)
-        lo1, hi1 = below[0], above[0]
         centers.append(float(center))
-        units.append(float((hi1 - lo1) / 2.0))
+        units.append(float((best[2] - best[1]) / 2.0))
     return Coding(tuple(factors), tuple(centers), tuple(units))
 
 
@@ -286,14 +292,16 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
             raise InputError("a log-scale factor needs positive values", source=src,
                              run=int(bad["run"].iloc[0]), column=f)
     check_bounds(table, mat_cfg["factors"], src)
-    coding, types = check_design(table, factors, mat_cfg["design"], src, f"materials.{material}", log_factors)
     p = len(quadratic_terms(len(factors)))
-    failed: dict[str, list] = {}
     for r in responses:
         ok = np.isfinite(table[r].to_numpy())
         if ok.sum() <= p:
             raise InputError(f"only {int(ok.sum())} usable runs for a quadratic model with {p} coefficients; "
                              f"at least {p + 1} are needed", source=src, column=r)
+    coding, types = check_design(table, factors, mat_cfg["design"], src, f"materials.{material}", log_factors)
+    failed: dict[str, list] = {}
+    for r in responses:
+        ok = np.isfinite(table[r].to_numpy())
         if (~ok).any():
             lost = table.loc[~ok, "run"].tolist()
             failed[r] = lost

@@ -556,8 +556,10 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
         levels, unit = _valid_levels(z[:, j], design_type, alpha, fixed)
         for row in range(len(z)):
             text = texts[name][row]
-            if text is None:
+            if text is None or levels.size == 0:
                 continue
+            # One repair per design level: the reading printed like the cell, then nearest the level.
+            per_level: dict[int, tuple] = {}
             for kind, cand_text, value in single_cell_slips(text):
                 if name in log_factors:
                     if value <= 0:
@@ -566,12 +568,18 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
                 else:
                     model_value = value
                 # A level printed with d decimals is off by up to half a unit in the last place.
-                print_tol = 0.5 * 10.0 ** (-_decimals_of(cand_text))
+                cand_decimals = _decimals_of(cand_text)
+                print_tol = 0.5 * 10.0 ** (-cand_decimals)
                 if name in log_factors:
                     print_tol /= value * math.log(10)
-                tol = print_tol + 1e-3 * unit
-                if levels.size == 0 or np.min(np.abs(levels - model_value)) > tol:
+                gaps = np.abs(levels - model_value)
+                level = int(np.argmin(gaps))
+                if gaps[level] > print_tol + 1e-3 * unit:
                     continue
+                key = (abs(cand_decimals - _decimals_of(text)), gaps[level], _KIND_RANK[kind])
+                if level not in per_level or key < per_level[level][0]:
+                    per_level[level] = (key, kind, cand_text, value, model_value)
+            for _, kind, cand_text, value, model_value in per_level.values():
                 z_new = z.copy()
                 z_new[row, j] = model_value
                 blocks.append(design_for(z_new).evaluate(y[:, None], coef_index))

@@ -8,11 +8,13 @@ from demid.errors import InputError
 
 # Validate the config (schema with defaults, then cross-references) and every table before
 # any job is scheduled: a user error stops here with one line, and nothing is written.
+CONFIG_SOURCE = ", ".join(str(p) for p in workflow.overwrite_configfiles) or "config.yaml"
+
 try:
-    _checked = validate_schema(dict(config), source="config")
+    _checked = validate_schema(dict(config), source=CONFIG_SOURCE)
     config.clear()
     config.update(_checked)
-    check_semantics(config, source="config")
+    check_semantics(config, source=CONFIG_SOURCE)
     for _name, _material in config["materials"].items():
         validate_material(_name, _material)
 except InputError as err:

@@ -1,0 +1,1007 @@
+"""Model criticism: show what a model gets wrong, name the cause, extend the model, measure the gain.
+
+Level 1 (:func:`criticize`) confronts the quadratic surrogate with the simulation
+runs of one response.  A fixed catalogue of causes is tested, each with a
+concrete extension:
+
+``missing_term``        one extra third-order term (pure cubic ``a^3``, mixed ``a^2:b``,
+                        ``a:b:c``); added-variable F-test.  Terms that the design cannot
+                        tell apart (their columns coincide once the quadratic is fitted,
+                        e.g. ``b^3`` and ``a^2:b`` in a CCD) form one alias set, tested once.
+``response_transform``  Box-Cox profile likelihood of lambda against lambda = 1.
+``outlier``             largest externally studentised residual, Bonferroni over runs.
+``drift``               a linear run-order (``run`` column) term; added-variable F-test.
+``heteroscedasticity``  Koenker's score test of the squared standardised residuals
+                        against each factor and against the fitted values.
+
+Family-wise error: the catalogue is one family.  Every statistic except Box-Cox's
+is a function of the residual vector alone, whose null distribution (normal
+errors, quadratic true) is known exactly for the design, so the family's joint
+null is simulated (Box-Cox by parametric bootstrap from the fitted quadratic) and
+the Westfall-Young step-down min-P procedure gives family-adjusted p-values.
+It is exact for the pivotal tests, accounts for their correlation (the
+heteroscedasticity tests against a factor and against the fitted values overlap)
+and is never less powerful than Holm.  A clean table yields a finding with
+probability ``family_alpha``.
+
+Findings are added one at a time: the rejected hypothesis with the smallest
+nominal p-value is named, its extension is added, and the remaining catalogue is
+tested again on the extended model (at most ``max_findings`` rounds).
+
+The gain is measured on the original response scale: leave-one-out RMSE from the
+exact PRESS residuals (for a transformed fit, the leave-one-out prediction on the
+transformed scale is back-transformed; Box-Cox lambda and variance weights are
+held at their full-data estimates) and AICc from the Gaussian likelihood of the
+original data (Jacobian included for transforms, variance parameter for weights,
+one mean-shift parameter per excluded run, so all AICc values compare the same
+n observations).  When a run is excluded, leave-one-out errors of baseline and
+extension are compared on the remaining runs only.
+
+Level 2 (:func:`calibration_check`) confronts the calibrated simulation with the
+experiment: the best point in the domain, errors there and at the reference
+point, the bottleneck observable and a discrepancy (bias) extension with its cost
+in parameters.
+
+Verified against statsmodels (``compare_f_test``, ``outlier_test``,
+``het_breuschpagan``, OLS/WLS log-likelihoods and influence PRESS residuals)
+and scipy (``special.boxcox``) in ``tests/test_criticism.py``.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import warnings
+from dataclasses import dataclass, field, replace
+from itertools import product
+
+import numpy as np
+import pandas as pd
+import statsmodels.api as sm
+from scipy import optimize, special, stats
+from statsmodels.stats.diagnostic import het_breuschpagan
+from statsmodels.tools.eval_measures import aicc as _sm_aicc
+
+from .design import Coding, Term, cubic_terms, model_matrix, quadratic_terms, term_name
+from .surrogate import SurrogateFit, fit_response
+
+CAUSES = ("missing_term", "response_transform", "outlier", "drift", "heteroscedasticity")
+TRANSFORM_NAMES = {0.0: "log", 0.5: "sqrt", -1.0: "inverse"}
+# Convenient lambdas tried (in this order of preference) when the 95 % interval contains them.
+_NICE_LAMBDAS = (0.0, 0.5, -1.0, -0.5, 2.0, 1.5, -2.0, 0.25, -0.25)
+_LAMBDA_TEST_GRID = np.round(np.arange(-2.0, 2.0001, 0.05), 10)
+_LAMBDA_FINE_GRID = np.round(np.arange(-3.0, 3.0001, 0.01), 10)
+_GAMMA_BOUND = 5.0  # variance ratio exp(2*5) over the covariate range at most
+
+
+# =========================================================================== helpers
+def infer_axial_distance(actual: np.ndarray) -> float:
+    """Axial distance alpha of a CCD from its factor levels (1.0 when not a 5-level CCD).
+
+    A CCD factor takes the levels -alpha, -1, 0, 1, alpha (coded): alpha is the
+    half-range divided by the half-distance of the two inner (factorial) levels.
+    """
+    actual = np.asarray(actual, dtype=float)
+    found = []
+    for col in actual.T:
+        lo, hi = float(np.min(col)), float(np.max(col))
+        if hi <= lo:
+            continue
+        u = np.unique(np.round((col - (lo + hi) / 2) / ((hi - lo) / 2), 6))
+        inner = u[(np.abs(u) > 1e-6) & (np.abs(u) < 1 - 1e-6)]
+        if len(u) == 5 and len(inner) == 2 and abs(inner[0] + inner[1]) < 1e-4:
+            found.append(1.0 / abs(inner[1]))
+    return float(np.median(found)) if found else 1.0
+
+
+def _orth(x: np.ndarray) -> np.ndarray:
+    """Orthonormal basis of the column space of x (rank-revealing SVD)."""
+    if x.shape[1] == 0:
+        return np.zeros((x.shape[0], 0))
+    u, s, _ = np.linalg.svd(x, full_matrices=False)
+    return u[:, s > s[0] * 1e-10] if s[0] > 0 else u[:, :0]
+
+
+def _hat(x: np.ndarray) -> np.ndarray:
+    q = _orth(x)
+    return np.sum(q * q, axis=1)
+
+
+def _boxcox(y: np.ndarray, lam: float | None) -> np.ndarray:
+    return y if lam is None else special.boxcox(y, lam)
+
+
+def _inv_boxcox(z: np.ndarray, lam: float | None) -> np.ndarray:
+    """Back-transform; clipped so that extrapolated grid points stay finite."""
+    z = np.asarray(z, dtype=float)
+    if lam is None:
+        return z
+    if lam == 0:
+        return np.exp(np.clip(z, -700, 700))
+    base = np.maximum(1.0 + lam * z, 1e-12)
+    return np.exp(np.clip(np.log(base) / lam, -700, 700))
+
+
+def _aicc(llf: float, nobs: int, k: int) -> float:
+    """AICc = -2 llf + 2k n/(n-k-1) (statsmodels); NaN when n - k - 1 <= 0."""
+    return float(_sm_aicc(llf, nobs, k)) if nobs - k - 1 > 0 else float("nan")
+
+
+def _num(x) -> float | None:
+    x = float(x)
+    return x if math.isfinite(x) else None
+
+
+def _run_value(v):
+    v = v.item() if hasattr(v, "item") else v
+    return int(v) if isinstance(v, (int, float)) and float(v).is_integer() else v
+
+
+def _g(x: float, digits: int = 4) -> str:
+    return f"{x:.{digits}g}"
+
+
+# =========================================================================== aliasing
+@dataclass(frozen=True)
+class AliasSet:
+    """Extra terms the design cannot tell apart once the quadratic (or current model) is fitted.
+
+    ``testable`` is False when the terms coincide with the model itself (e.g. ``a^3``
+    with ``a`` in a face-centred CCD).  ``extra_runs`` are candidate design points
+    (actual units) whose addition makes every member separately estimable.
+    """
+
+    representative: str
+    members: tuple[str, ...]
+    testable: bool
+    extra_runs: tuple[dict, ...] = ()
+
+    def to_json(self) -> dict:
+        return {"representative": self.representative, "aliases": list(self.members),
+                "testable": self.testable, "extra_runs": [dict(p) for p in self.extra_runs]}
+
+
+@dataclass
+class _TermClass:
+    terms: list[Term]
+    direction: np.ndarray | None  # unit residualised column (None: not estimable)
+
+
+def _term_classes(coded: np.ndarray, base_terms: list[Term], candidates: list[Term],
+                  extra_columns: np.ndarray | None = None, weights: np.ndarray | None = None
+                  ) -> list[_TermClass]:
+    """Group candidate terms whose columns, residualised on the model, are collinear."""
+    sw = np.ones(len(coded)) if weights is None else np.sqrt(weights)
+    base = model_matrix(coded, base_terms)
+    if extra_columns is not None and extra_columns.size:
+        base = np.column_stack([base, extra_columns])
+    q = _orth(base * sw[:, None])
+    cols = model_matrix(coded, candidates) * sw[:, None]
+    resid = cols - q @ (q.T @ cols)
+    classes: list[_TermClass] = []
+    inestimable = []
+    for j, t in enumerate(candidates):
+        norm = float(np.linalg.norm(resid[:, j]))
+        if norm <= 1e-7 * max(float(np.linalg.norm(cols[:, j])), 1e-300):
+            inestimable.append(t)
+            continue
+        u = resid[:, j] / norm
+        for c in classes:
+            if abs(float(c.direction @ u)) >= 1 - 1e-7:
+                c.terms.append(t)
+                break
+        else:
+            classes.append(_TermClass([t], u))
+    return classes + [_TermClass([t], None) for t in inestimable]
+
+
+def _candidate_points(n_factors: int, alpha: float) -> np.ndarray:
+    levels = sorted({-alpha, -1.0, -0.5, 0.0, 0.5, 1.0, alpha})
+    return np.array(list(product(levels, repeat=n_factors)), dtype=float)
+
+
+def _separation_criterion(coded, base_terms, members):
+    base = model_matrix(coded, base_terms)
+    q = _orth(base)
+    cols = model_matrix(coded, members)
+    resid = cols - q @ (q.T @ cols)
+    ev = np.linalg.eigvalsh(resid.T @ resid)
+    keep = ev > max(ev.max(), 1e-300) * 1e-10
+    return int(keep.sum()), float(np.sum(np.log(ev[keep]))) if keep.any() else -np.inf
+
+
+def separating_runs(coded: np.ndarray, base_terms: list[Term], members: list[Term],
+                    alpha: float) -> np.ndarray:
+    """Coded points to add so that every member term becomes separately estimable.
+
+    Greedy D-optimal choice among the candidate levels {-alpha, -1, -0.5, 0, 0.5,
+    1, alpha}^k: each step adds the point that raises the rank of the members'
+    residualised block, ties broken by its log pseudo-determinant.
+    """
+    cands = _candidate_points(coded.shape[1], alpha)
+    current = np.asarray(coded, dtype=float)
+    chosen = []
+    rank, _ = _separation_criterion(current, base_terms, members)
+    while rank < len(members) and len(chosen) < len(members):
+        best, best_key = None, (rank, -np.inf)
+        for c in cands:
+            key = _separation_criterion(np.vstack([current, c]), base_terms, members)
+            if key > best_key:
+                best, best_key = c, key
+        if best is None or best_key[0] <= rank:
+            break
+        chosen.append(best)
+        current = np.vstack([current, best])
+        rank = best_key[0]
+    return np.array(chosen).reshape(-1, coded.shape[1])
+
+
+# =========================================================================== data and models
+@dataclass
+class _Data:
+    response: str
+    factors: list[str]
+    coded: np.ndarray
+    y: np.ndarray
+    runs: np.ndarray
+    coding: Coding
+    alpha: float
+    log_factors: tuple[str, ...]
+    base_terms: list[Term]
+
+    @property
+    def n(self) -> int:
+        return len(self.y)
+
+    def to_actual(self, coded: np.ndarray) -> np.ndarray:
+        x = self.coding.to_actual(np.atleast_2d(coded))
+        for i, f in enumerate(self.factors):
+            if f in self.log_factors:
+                x[:, i] = 10.0 ** x[:, i]
+        return x
+
+    def point_dict(self, coded_point) -> dict:
+        x = self.to_actual(coded_point)[0]
+        return {f: float(f"{v:.4g}") for f, v in zip(self.factors, x)}
+
+
+@dataclass(frozen=True)
+class _Spec:
+    """A model: quadratic + extra terms [+ run order] on kept runs, optional transform and weights."""
+
+    extra_terms: tuple[Term, ...] = ()
+    drift: bool = False
+    dropped: tuple[int, ...] = ()
+    lam: float | None = None
+    weight_on: str | None = None
+    weight_gamma: float = 0.0
+    weight_values: tuple[float, ...] = ()
+
+    @property
+    def n_extra_params(self) -> int:
+        return (len(self.extra_terms) + int(self.drift) + len(self.dropped)
+                + int(self.lam is not None) + int(self.weight_on is not None))
+
+
+class _Model:
+    """Fit of a :class:`_Spec` with statsmodels; whitened quantities for the tests."""
+
+    def __init__(self, data: _Data, spec: _Spec):
+        self.data, self.spec = data, spec
+        keep = np.ones(data.n, dtype=bool)
+        keep[list(spec.dropped)] = False
+        self.keep = keep
+        self.y = data.y[keep]
+        self.z = _boxcox(self.y, spec.lam)
+        coded = data.coded[keep]
+        self.mean_terms = list(data.base_terms) + list(spec.extra_terms)
+        x = model_matrix(coded, self.mean_terms)
+        names = [term_name(t, data.factors) for t in self.mean_terms]
+        self.run_center = float(np.mean(data.runs[keep].astype(float)))
+        self.run_scale = float(max(np.ptp(data.runs.astype(float)), 1.0))
+        if spec.drift:
+            x = np.column_stack([x, self.run_column(keep)])
+            names.append("run")
+        self.x = x
+        self.names = names
+        if spec.weight_on is not None:
+            v = np.asarray(spec.weight_values, dtype=float)[keep]
+            self.w = np.exp(-spec.weight_gamma * v)
+            self.results = sm.WLS(self.z, x, weights=self.w).fit()
+        else:
+            self.w = np.ones(len(self.y))
+            self.results = sm.OLS(self.z, x).fit()
+        self.sw = np.sqrt(self.w)
+        self.xw = x * self.sw[:, None]
+        self.beta = np.asarray(self.results.params, dtype=float)
+        self.fitted_z = x @ self.beta
+        self.resid_w = (self.z - self.fitted_z) * self.sw
+        self.hat = _hat(self.xw)
+        self.rank = int(_orth(self.xw).shape[1])
+        self.df_resid = len(self.y) - self.rank
+        self.ssr = float(self.resid_w @ self.resid_w)
+
+    def run_column(self, rows) -> np.ndarray:
+        return (self.data.runs[rows].astype(float) - self.run_center) / self.run_scale
+
+    @property
+    def n_params(self) -> int:
+        """Mean parameters + sigma + transform/variance parameters + one per excluded run."""
+        return self.rank + 1 + self.spec.n_extra_params - len(self.spec.extra_terms) - int(self.spec.drift)
+
+    @property
+    def loglik(self) -> float:
+        """Gaussian log-likelihood of all n original observations (mean-shift for excluded runs)."""
+        n = self.data.n
+        sigma2 = self.ssr / n
+        ll = -0.5 * n * (np.log(2 * np.pi * sigma2) + 1.0) + 0.5 * float(np.sum(np.log(self.w)))
+        if self.spec.weight_on is not None and self.spec.dropped:
+            v = np.asarray(self.spec.weight_values, dtype=float)[~self.keep]
+            ll += 0.5 * float(np.sum(-self.spec.weight_gamma * v))
+        if self.spec.lam is not None:
+            ll += (self.spec.lam - 1.0) * float(np.sum(np.log(self.data.y)))
+        return float(ll)
+
+    @property
+    def aicc(self) -> float:
+        return _aicc(self.loglik, self.data.n, self.n_params)
+
+    @property
+    def fitted(self) -> np.ndarray:
+        return _inv_boxcox(self.fitted_z, self.spec.lam)
+
+    @property
+    def loo_errors(self) -> np.ndarray:
+        """Exact leave-one-out prediction errors on the original scale, at the kept runs."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            press_z = self.resid_w / (1.0 - self.hat) / self.sw
+        return self.y - _inv_boxcox(self.z - press_z, self.spec.lam)
+
+    def loo_rmse_on(self, keep_mask: np.ndarray) -> float:
+        """Leave-one-out RMSE over the runs in keep_mask (a subset of this model's runs)."""
+        err = np.full(self.data.n, np.nan)
+        err[self.keep] = self.loo_errors
+        return float(np.sqrt(np.mean(err[keep_mask] ** 2)))
+
+    def summary(self) -> dict:
+        y, f = self.y, self.fitted
+        sst = float(np.sum((y - y.mean()) ** 2))
+        sse = float(np.sum((y - f) ** 2))
+        s = self.spec
+        terms = [n for n in self.names]
+        return {
+            "terms": terms,
+            "r2": _num(1 - sse / sst) if sst > 0 else None,
+            "rmse": _num(np.sqrt(sse / len(y))),
+            "loo_rmse": _num(self.loo_rmse_on(self.keep)),
+            "aicc": _num(self.aicc),
+            "n_runs": int(len(y)),
+            "n_params": int(self.n_params),
+            "transform": None if s.lam is None else _transform_name(s.lam),
+            "weighting": s.weight_on,
+            "excluded_runs": [_run_value(self.data.runs[i]) for i in s.dropped],
+        }
+
+    def surrogate(self) -> "ExtendedSurrogate":
+        k = len(self.mean_terms)
+        drift = float(self.beta[k]) if self.spec.drift else 0.0
+        return ExtendedSurrogate(
+            response=self.data.response, factors=list(self.data.factors), coding=self.data.coding,
+            terms=list(self.mean_terms), coefficients=self.beta[:k].copy(), lam=self.spec.lam,
+            log_factors=self.data.log_factors, drift_per_run=drift / self.run_scale,
+            reference_run=self.run_center, weighting=self.spec.weight_on,
+            excluded_runs=tuple(_run_value(self.data.runs[i]) for i in self.spec.dropped))
+
+
+def _transform_name(lam: float) -> str:
+    for value, name in TRANSFORM_NAMES.items():
+        if abs(lam - value) < 1e-9:
+            return name
+    return f"boxcox:{lam:g}"
+
+
+@dataclass
+class ExtendedSurrogate:
+    """Predictor of an extended model on the original response scale.
+
+    Duck-types :meth:`demid.surrogate.Surrogate.predict`.  Polynomial in coded
+    units; a run-order term is evaluated at the mean run order of the fitted runs
+    (its contribution is zero there); a transformed fit is back-transformed
+    (median of the response for a log fit).
+    """
+
+    response: str
+    factors: list[str]
+    coding: Coding
+    terms: list[Term]
+    coefficients: np.ndarray
+    lam: float | None = None
+    log_factors: tuple[str, ...] = ()
+    drift_per_run: float = 0.0
+    reference_run: float = 0.0
+    weighting: str | None = None
+    excluded_runs: tuple = ()
+
+    @property
+    def term_names(self) -> list[str]:
+        return [term_name(t, self.factors) for t in self.terms]
+
+    def predict(self, points, chunk: int = 1_000_000) -> np.ndarray:
+        z = np.array(points, dtype=float, copy=True, ndmin=2)
+        for i, name in enumerate(self.factors):
+            if name in self.log_factors:
+                z[:, i] = np.log10(z[:, i])
+        coded = self.coding.to_coded(z)
+        out = np.empty(len(coded))
+        for start in range(0, len(coded), chunk):
+            eta = model_matrix(coded[start:start + chunk], self.terms) @ self.coefficients
+            out[start:start + chunk] = _inv_boxcox(eta, self.lam)
+        return out
+
+
+# =========================================================================== the catalogue
+@dataclass
+class _Hypothesis:
+    cause: str
+    detail: object  # Term class / None / covariate name
+    aliases: list[str] = field(default_factory=list)
+    statistic: float = np.nan
+    logp: float = 0.0  # log of the nominal p-value
+    info: dict = field(default_factory=dict)
+    null_logp: np.ndarray | None = None
+    p_family: float = 1.0
+
+
+def _f_logp(f, df2):
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return stats.f.logsf(np.maximum(f, 0.0), 1, df2)
+
+
+def _added_variable_stats(e: np.ndarray, u: np.ndarray, df2: int):
+    """F for adding unit direction u (already orthogonal to the model) to residuals e (n, B)."""
+    proj = u @ e
+    sse = np.sum(e * e, axis=0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return proj ** 2 * df2 / np.maximum(sse - proj ** 2, 1e-300 * np.maximum(sse, 1e-300))
+
+
+def _outlier_stats(e: np.ndarray, hat: np.ndarray, df: int):
+    """Externally studentised residuals t (n, B) of residuals e (n, B)."""
+    ok = hat < 1 - 1e-10
+    h = np.where(ok, hat, 0.0)[:, None]
+    sse = np.sum(e * e, axis=0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s2 = (sse - e ** 2 / (1 - h)) / (df - 1)
+        t = e / np.sqrt(np.maximum(s2, 1e-300) * (1 - h))
+    t[~ok] = 0.0
+    return t
+
+
+def _outlier_logp(tmax, n, df):
+    return np.minimum(0.0, np.log(2.0 * n) + stats.t.logsf(tmax, df - 1))
+
+
+def _het_stats(e: np.ndarray, hat: np.ndarray, covariate: np.ndarray):
+    """Koenker's studentised Breusch-Pagan LM = n R^2 of r^2 on [1, z], r = e/sqrt(1-h)."""
+    r2 = e ** 2 / np.maximum(1 - hat, 1e-12)[:, None]
+    zc = covariate - covariate.mean()
+    uc = r2 - r2.mean(axis=0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        corr2 = (zc @ uc) ** 2 / (np.sum(zc ** 2) * np.sum(uc ** 2, axis=0))
+    return len(covariate) * np.nan_to_num(corr2)
+
+
+def _boxcox_profile(y: np.ndarray, q: np.ndarray, lams: np.ndarray) -> np.ndarray:
+    """Profile log-likelihood (lams, B) of Box-Cox lambda for columns of y (n, B) > 0.
+
+    l(lambda) = -n/2 log(SSE_lambda / n) + (lambda - 1) sum log y, SSE from the OLS fit
+    on the model's column space (orthonormal basis q).
+    """
+    n = y.shape[0]
+    logy = np.log(y)
+    slog = logy.sum(axis=0)
+    out = np.empty((len(lams), y.shape[1]))
+    for i, lam in enumerate(lams):
+        z = logy if lam == 0 else np.expm1(lam * logy) / lam
+        r = z - q @ (q.T @ z)
+        out[i] = -0.5 * n * np.log(np.sum(r * r, axis=0) / n) + (lam - 1.0) * slog
+    return out
+
+
+def _stepdown_minp(obs: np.ndarray, null: np.ndarray) -> np.ndarray:
+    """Westfall-Young step-down min-P adjusted p-values from log p-values (m,) and (B, m)."""
+    b = null.shape[0]
+    order = np.argsort(obs, kind="stable")
+    adj = np.empty(len(obs))
+    running = 0.0
+    for rank, j in enumerate(order):
+        min_null = null[:, order[rank:]].min(axis=1)
+        p = (1.0 + np.count_nonzero(min_null <= obs[j] + 1e-12)) / (b + 1.0)
+        running = max(running, p)
+        adj[j] = running
+    return adj
+
+
+class _Round:
+    """One round of the catalogue on the current model: observed statistics and joint null."""
+
+    def __init__(self, data: _Data, model: _Model, taken: set, n_null: int, rng: np.random.Generator):
+        self.data, self.model = data, model
+        self.hypotheses: list[_Hypothesis] = []
+        self.untestable: list[list[Term]] = []
+        self.classes: list[_TermClass] = []
+        m = model
+        spec = m.spec
+        df = m.df_resid
+        n = len(m.y)
+        if df < 3:
+            return
+        eps = rng.standard_normal((n, n_null))
+        q = _orth(m.xw)
+        e_null = eps - q @ (q.T @ eps)
+        e_obs = m.resid_w[:, None]
+
+        # --- missing terms (alias classes on the current model)
+        coded = data.coded[m.keep]
+        extra = m.run_column(m.keep)[:, None] if spec.drift else None
+        candidates = [t for t in cubic_terms(len(data.factors)) if t not in spec.extra_terms]
+        self.classes = _term_classes(coded, m.mean_terms, candidates, extra, m.w)
+        for c in self.classes:
+            names = [term_name(t, data.factors) for t in c.terms]
+            if c.direction is None:
+                self.untestable.append(c.terms)
+                continue
+            f_obs = float(_added_variable_stats(e_obs, c.direction, df - 1)[0])
+            h = _Hypothesis("missing_term", c, names, f_obs, float(_f_logp(f_obs, df - 1)))
+            h.null_logp = _f_logp(_added_variable_stats(e_null, c.direction, df - 1), df - 1)
+            self.hypotheses.append(h)
+
+        # --- drift
+        if not spec.drift:
+            col = m.run_column(m.keep) * m.sw
+            r = col - q @ (q.T @ col)
+            if np.linalg.norm(r) > 1e-7 * max(np.linalg.norm(col), 1e-300):
+                u = r / np.linalg.norm(r)
+                f_obs = float(_added_variable_stats(e_obs, u, df - 1)[0])
+                h = _Hypothesis("drift", "run", [], f_obs, float(_f_logp(f_obs, df - 1)))
+                h.null_logp = _f_logp(_added_variable_stats(e_null, u, df - 1), df - 1)
+                self.hypotheses.append(h)
+
+        # --- outlier
+        t_obs = _outlier_stats(e_obs, m.hat, df)[:, 0]
+        i = int(np.argmax(np.abs(t_obs)))
+        h = _Hypothesis("outlier", int(np.flatnonzero(m.keep)[i]), [], float(t_obs[i]),
+                        float(_outlier_logp(abs(t_obs[i]), n, df)))
+        h.null_logp = _outlier_logp(np.max(np.abs(_outlier_stats(e_null, m.hat, df)), axis=0), n, df)
+        self.hypotheses.append(h)
+
+        # --- heteroscedasticity against each factor and the fitted values
+        if spec.weight_on is None:
+            for name, v in self.covariates().items():
+                lm = float(_het_stats(e_obs, m.hat, v)[0])
+                h = _Hypothesis("heteroscedasticity", name, [], lm, float(stats.chi2.logsf(lm, 1)))
+                h.null_logp = stats.chi2.logsf(_het_stats(e_null, m.hat, v), 1)
+                self.hypotheses.append(h)
+
+        # --- Box-Cox (parametric bootstrap null from the fitted model)
+        if spec.lam is None and spec.weight_on is None and np.all(m.y > 0):
+            lr_obs = self._boxcox_lr(m.y[:, None], q)[0]
+            sigma = math.sqrt(m.ssr / df)
+            y_null = m.fitted_z[:, None] + sigma * eps
+            positive = np.all(y_null > 0, axis=0)
+            lr_null = np.full(n_null, np.inf)
+            if positive.any():
+                lr_null[positive] = self._boxcox_lr(y_null[:, positive], q)
+            h = _Hypothesis("response_transform", None, [], float(lr_obs), float(stats.chi2.logsf(lr_obs, 1)))
+            h.null_logp = stats.chi2.logsf(lr_null, 1)
+            self.hypotheses.append(h)
+
+        if self.hypotheses:
+            adj = _stepdown_minp(np.array([h.logp for h in self.hypotheses]),
+                                 np.column_stack([h.null_logp for h in self.hypotheses]))
+            for h, p in zip(self.hypotheses, adj):
+                h.p_family = float(p)
+
+    @staticmethod
+    def _boxcox_lr(y: np.ndarray, q: np.ndarray) -> np.ndarray:
+        prof = _boxcox_profile(y, q, _LAMBDA_TEST_GRID)
+        one = int(np.flatnonzero(_LAMBDA_TEST_GRID == 1.0)[0])
+        return 2.0 * (prof.max(axis=0) - prof[one])
+
+    def covariates(self) -> dict[str, np.ndarray]:
+        """Variance covariates on the kept runs, scaled to [-1, 1]: each factor, then the fitted values."""
+        m = self.model
+        out = {}
+        for j, f in enumerate(self.data.factors):
+            v = self.data.coded[m.keep, j] / self.data.alpha
+            if np.ptp(v) > 0:
+                out[f] = v
+        fz = m.fitted_z
+        if np.ptp(fz) > 0:
+            out["fitted"] = (fz - (fz.max() + fz.min()) / 2) / (np.ptp(fz) / 2)
+        return out
+
+    def rejected(self, family_alpha: float) -> list[_Hypothesis]:
+        rej = [h for h in self.hypotheses if h.p_family <= family_alpha]
+        return sorted(rej, key=lambda h: (h.logp, CAUSES.index(h.cause)))
+
+
+# =========================================================================== findings
+@dataclass
+class Finding:
+    """One named cause with its extension's gain over the model before it."""
+
+    response: str
+    cause: str
+    detail: object
+    aliases: list[str]
+    p_value: float
+    p_nominal: float
+    statistic: float
+    message: str
+    loo_rmse_baseline: float
+    loo_rmse_extended: float
+    delta_aicc: float
+    compared_runs: int
+    extra_runs: list[dict] = field(default_factory=list)
+    info: dict = field(default_factory=dict)
+
+    def to_json(self) -> dict:
+        out = {"cause": self.cause, "detail": self.detail, "aliases": list(self.aliases),
+               "p_value": _num(self.p_value), "message": self.message,
+               "p_nominal": _num(self.p_nominal), "statistic": _num(self.statistic),
+               "loo_rmse_before": _num(self.loo_rmse_baseline), "loo_rmse_after": _num(self.loo_rmse_extended),
+               "delta_aicc": _num(self.delta_aicc), "compared_runs": self.compared_runs}
+        if self.extra_runs:
+            out["extra_runs"] = self.extra_runs
+        out.update({k: v for k, v in self.info.items()})
+        return out
+
+
+@dataclass
+class CriticismResult:
+    """Level-1 result for one response; ``to_json()`` is the issue's contract (plus extra keys)."""
+
+    response: str
+    factors: list[str]
+    baseline: dict
+    findings: list[Finding]
+    extended: dict
+    gain: dict
+    alias_sets: list[AliasSet]
+    catalogue: list[dict]
+    summary: str
+    family_alpha: float
+    residuals: pd.DataFrame = field(repr=False, default=None)
+    _extended_model: _Model = field(repr=False, default=None)
+    _baseline_model: _Model = field(repr=False, default=None)
+
+    def to_json(self) -> dict:
+        """JSON-ready dict: response, baseline, findings, extended, gain (+ alias sets, catalogue, summary)."""
+        return {
+            "response": self.response,
+            "baseline": self.baseline,
+            "findings": [f.to_json() for f in self.findings],
+            "extended": self.extended,
+            "gain": self.gain,
+            "summary": self.summary,
+            "family_alpha": self.family_alpha,
+            "alias_sets": [a.to_json() for a in self.alias_sets],
+            "catalogue": self.catalogue,
+        }
+
+    def dumps(self) -> str:
+        return json.dumps(self.to_json(), indent=2, allow_nan=False)
+
+    def to_frame(self) -> pd.DataFrame:
+        cols = ["response", "cause", "detail", "aliases", "p_value", "loo_rmse_baseline",
+                "loo_rmse_extended", "delta_aicc", "message"]
+        rows = [{"response": self.response, "cause": f.cause, "detail": str(f.detail),
+                 "aliases": ";".join(f.aliases), "p_value": f.p_value,
+                 "loo_rmse_baseline": f.loo_rmse_baseline, "loo_rmse_extended": f.loo_rmse_extended,
+                 "delta_aicc": f.delta_aicc, "message": f.message} for f in self.findings]
+        return pd.DataFrame(rows, columns=cols)
+
+    def extended_surrogate(self) -> ExtendedSurrogate:
+        """Predictor of the extended model (the baseline quadratic when nothing was found)."""
+        return self._extended_model.surrogate()
+
+    def baseline_surrogate(self) -> ExtendedSurrogate:
+        return self._baseline_model.surrogate()
+
+
+def _prepare(table: pd.DataFrame, factors: list[str], response: str, alpha: float | None,
+             log_factors: tuple[str, ...]) -> tuple[_Data, SurrogateFit]:
+    z = table[factors].to_numpy(dtype=float).copy()
+    for i, name in enumerate(factors):
+        if name in log_factors:
+            z[:, i] = np.log10(z[:, i])
+    ok = np.isfinite(table[response].to_numpy(dtype=float))
+    if alpha is None:
+        alpha = infer_axial_distance(z[ok])
+    coding = Coding.from_levels(factors, z, alpha)
+    fit = fit_response(table, factors, response, alpha=alpha, coding=coding, log_factors=tuple(log_factors))
+    sub = table.loc[ok]
+    runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, int(ok.sum()) + 1)
+    data = _Data(response, list(factors), fit.coded, fit.y, runs, coding, float(alpha),
+                 tuple(log_factors), quadratic_terms(len(factors)))
+    return data, fit
+
+
+def _apply(data: _Data, model: _Model, rnd: _Round, h: _Hypothesis) -> tuple[_Spec, dict]:
+    """Extension of ``model.spec`` that answers hypothesis h, and facts for the message."""
+    spec = model.spec
+    info: dict = {}
+    if h.cause == "missing_term":
+        return replace(spec, extra_terms=spec.extra_terms + (h.detail.terms[0],)), info
+    if h.cause == "drift":
+        return replace(spec, drift=True), info
+    if h.cause == "outlier":
+        i = int(h.detail)
+        pos = int(np.flatnonzero(np.flatnonzero(model.keep) == i)[0])
+        info["observed"] = float(data.y[i])
+        info["predicted_without"] = float(data.y[i] - model.loo_errors[pos])
+        return replace(spec, dropped=spec.dropped + (i,)), info
+    if h.cause == "response_transform":
+        q = _orth(model.xw)
+        prof = _boxcox_profile(model.y[:, None], q, _LAMBDA_FINE_GRID)[:, 0]
+        best = int(np.argmax(prof))
+        lam_hat = float(_LAMBDA_FINE_GRID[best])
+        inside = _LAMBDA_FINE_GRID[2 * (prof[best] - prof) <= stats.chi2.ppf(0.95, 1)]
+        lo, hi = float(inside.min()), float(inside.max())
+        lam = next((v for v in _NICE_LAMBDAS if lo <= v <= hi), round(lam_hat, 1))
+        if abs(lam - 1.0) < 1e-9:
+            lam = round(lam_hat, 2)
+        info.update(lambda_hat=lam_hat, lambda_ci=[lo, hi])
+        return replace(spec, lam=float(lam)), info
+    if h.cause == "heteroscedasticity":
+        cov = rnd.covariates()[h.detail]
+        values = np.zeros(data.n)
+        values[model.keep] = cov
+        if h.detail == "fitted":  # excluded runs: their predicted value, same scaling
+            fz_all = model_matrix(data.coded, model.mean_terms) @ model.beta[:len(model.mean_terms)]
+            fz = model.fitted_z
+            values = (fz_all - (fz.max() + fz.min()) / 2) / (np.ptp(fz) / 2)
+        else:
+            values = data.coded[:, data.factors.index(h.detail)] / data.alpha
+        base = replace(spec, weight_on=h.detail, weight_values=tuple(float(v) for v in values))
+
+        def negll(g):
+            return -_Model(data, replace(base, weight_gamma=float(g))).loglik
+
+        res = optimize.minimize_scalar(negll, bounds=(-_GAMMA_BOUND, _GAMMA_BOUND), method="bounded",
+                                       options={"xatol": 1e-4})
+        gamma = float(res.x)
+        info["sd_ratio"] = float(np.exp(gamma))  # sd at covariate +1 over sd at -1
+        return replace(base, weight_gamma=gamma), info
+    raise ValueError(h.cause)
+
+
+def _gain_phrase(before: float, after: float) -> str:
+    if not (np.isfinite(before) and np.isfinite(after)) or before <= 0:
+        return "its effect on the leave-one-out error could not be computed"
+    ratio = after / before
+    if ratio < 0.995:
+        return f"cuts the leave-one-out error by {100 * (1 - ratio):.0f} %"
+    if ratio <= 1.005:
+        return "leaves the leave-one-out error unchanged"
+    return f"does not reduce the leave-one-out error (+{100 * (ratio - 1):.0f} %)"
+
+
+def _and(names: list[str]) -> str:
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
+def _describe_term(term: Term, factors: list[str]) -> str:
+    powers = {f: p for f, p in zip(factors, term) if p}
+    if len(powers) == 1:
+        return f"curvature along {next(iter(powers))}"
+    if len(powers) == 3:
+        return f"a three-factor interaction of {_and(list(powers))}"
+    sq = next(f for f, p in powers.items() if p == 2)
+    lin = next(f for f, p in powers.items() if p == 1)
+    return f"a change of the {sq} curvature with {lin}"
+
+
+def _points_text(points: list[dict]) -> str:
+    return " and ".join("(" + ", ".join(f"{k}={v:g}" for k, v in p.items()) + ")" for p in points)
+
+
+def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: float,
+             n_compared: int, extra_runs: list[dict], model: _Model) -> str:
+    r = data.response
+    gain = _gain_phrase(before, after)
+    if h.cause == "missing_term":
+        rep = h.aliases[0]
+        others = h.aliases[1:]
+        alias = f", aliased with {_and(others)} in this design" if others else ""
+        text = (f"{r}: the quadratic misses {_describe_term(h.detail.terms[0], data.factors)} "
+                f"(term {rep}{alias}); adding it {gain}.")
+        if others and extra_runs:
+            what = "the two" if len(h.aliases) == 2 else f"the {len(h.aliases)}"
+            text += f" Extra runs at {_points_text(extra_runs)} would tell {what} apart."
+        return text
+    if h.cause == "response_transform":
+        lam = info["lam"]
+        scale = {"log": "log", "sqrt": "square-root", "inverse": "reciprocal"}.get(_transform_name(lam))
+        on = f"on a {scale} scale" if scale else f"after a Box-Cox transform with lambda = {lam:g}"
+        lo, hi = info["lambda_ci"]
+        kind = "multiplicatively" if lam <= 0.5 else "non-additively"
+        return (f"{r}: the response behaves {kind}: the quadratic fits better {on} "
+                f"(Box-Cox lambda = {info['lambda_hat']:.2f}, 95 % interval {lo:.2f} to {hi:.2f}); "
+                f"fitting there and transforming back {gain}.")
+    if h.cause == "outlier":
+        run = _run_value(data.runs[int(h.detail)])
+        return (f"{r}: run {run} does not fit the other runs (observed {_g(info['observed'])}, "
+                f"the other runs predict {_g(info['predicted_without'])}, externally studentised "
+                f"residual {h.statistic:.1f}); a transcription or export error is the usual cause, "
+                f"check that run. Refitting without it {gain} on the other {n_compared} runs.")
+    if h.cause == "drift":
+        slope = info.get("drift_per_run", float("nan"))
+        span = slope * float(np.ptp(data.runs.astype(float)))
+        return (f"{r}: the residuals trend with run order ({slope:+.3g} per run, {span:+.3g} from first to "
+                f"last run): something changed while the runs were made (software version, settings, "
+                f"seeds, hardware). Adding a run-order term {gain}; predictions refer to the mean run order.")
+    if h.cause == "heteroscedasticity":
+        ratio = info["sd_ratio"]
+        grows = ratio >= 1
+        what = "the predicted value" if h.detail == "fitted" else str(h.detail)
+        factor = ratio if grows else 1 / ratio
+        return (f"{r}: the scatter of the runs {'grows' if grows else 'shrinks'} with {what} (residual "
+                f"spread about {factor:.1f} times larger at the {'high' if grows else 'low'} end than at the "
+                f"other); weighting the fit by the estimated variance {gain}. Uncertainty from the "
+                f"unweighted fit is too wide where the runs agree and too narrow where they scatter.")
+    raise ValueError(h.cause)
+
+
+def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: float | None = None,
+              family_alpha: float = 0.05, log_factors: tuple[str, ...] = (), max_findings: int = 3,
+              n_null: int = 1999, seed: int = 0) -> CriticismResult:
+    """Level-1 model criticism of the quadratic surrogate of one response.
+
+    ``alpha`` is the CCD axial distance used for coding (None: inferred from the
+    levels).  Runs with a missing response are dropped.  ``n_null`` Monte Carlo
+    draws of the joint null (seeded with ``seed``: results are reproducible) give
+    the family-adjusted p-values.  See the module docstring for the catalogue.
+    """
+    data, fit = _prepare(table, list(factors), response, alpha, tuple(log_factors))
+    rng = np.random.default_rng(seed)
+    base_model = _Model(data, _Spec())
+    model = base_model
+    findings: list[Finding] = []
+    catalogue: list[dict] = []
+    alias_sets: list[AliasSet] = []
+    for rnd_index in range(max_findings):
+        rnd = _Round(data, model, set(), n_null, rng)
+        if rnd_index == 0:
+            alias_sets = _alias_sets(data, rnd)
+            catalogue = [_catalogue_entry(data, h) for h in rnd.hypotheses]
+        rejected = rnd.rejected(family_alpha)
+        if not rejected:
+            break
+        h = rejected[0]
+        spec, info = _apply(data, model, rnd, h)
+        new = _Model(data, spec)
+        if h.cause == "response_transform":
+            info["lam"] = spec.lam
+        if h.cause == "drift":
+            info["drift_per_run"] = _drift_per_run(new)
+        same = new.keep
+        before = model.loo_rmse_on(same)
+        after = new.loo_rmse_on(same)
+        extra_runs = []
+        if h.cause == "missing_term" and len(h.detail.terms) > 1:
+            pts = separating_runs(data.coded[model.keep], model.mean_terms, h.detail.terms, data.alpha)
+            extra_runs = [data.point_dict(p) for p in pts]
+        message = _message(data, h, info, before, after, int(same.sum()), extra_runs, model)
+        detail = _detail_json(data, h)
+        public_info = {k: v for k, v in info.items() if k in ("lambda_hat", "lambda_ci", "sd_ratio",
+                                                              "drift_per_run", "observed", "predicted_without")}
+        findings.append(Finding(
+            response=response, cause=h.cause, detail=detail, aliases=list(h.aliases), p_value=h.p_family,
+            p_nominal=float(np.exp(h.logp)), statistic=h.statistic, message=message,
+            loo_rmse_baseline=before, loo_rmse_extended=after, delta_aicc=new.aicc - model.aicc,
+            compared_runs=int(same.sum()), extra_runs=extra_runs, info=public_info))
+        model = new
+        if model.df_resid - 1 < 3:
+            break
+
+    baseline = base_model.summary()
+    stats_ = fit.statistics()
+    baseline.update(lof_f=_num(stats_.lof_f), lof_p=_num(stats_.lof_p))
+    if findings:
+        extended = model.summary()
+        extended.update(lof_f=None, lof_p=None)
+        if not model.spec.dropped and model.spec.lam is None and model.spec.weight_on is None \
+                and not model.spec.drift:
+            ext_fit = fit_response(table, factors, response, alpha=data.alpha, coding=data.coding,
+                                   terms=model.mean_terms, log_factors=data.log_factors)
+            st = ext_fit.statistics()
+            extended.update(lof_f=_num(st.lof_f), lof_p=_num(st.lof_p))
+    else:
+        extended = dict(baseline)
+    same = model.keep
+    loo_base_same = base_model.loo_rmse_on(same)
+    loo_ext = model.loo_rmse_on(same)
+    gain = {
+        "loo_rmse_ratio": _num(loo_ext / loo_base_same) if loo_base_same > 0 else None,
+        "delta_aicc": _num(model.aicc - base_model.aicc) if findings else 0.0,
+        "loo_rmse_baseline_same_runs": _num(loo_base_same),
+        "compared_runs": int(same.sum()),
+    }
+    if not findings:
+        gain["loo_rmse_ratio"] = 1.0
+    summary = _summary(data, findings, catalogue, family_alpha, gain)
+    return CriticismResult(response=response, factors=list(factors), baseline=baseline, findings=findings,
+                           extended=extended, gain=gain, alias_sets=alias_sets, catalogue=catalogue,
+                           summary=summary, family_alpha=family_alpha, residuals=_residual_frame(fit),
+                           _extended_model=model, _baseline_model=base_model)
+
+
+def _drift_per_run(model: _Model) -> float:
+    j = model.names.index("run")
+    return float(model.beta[j] / model.run_scale)
+
+
+def _detail_json(data: _Data, h: _Hypothesis):
+    if h.cause == "missing_term":
+        return h.aliases[0]
+    if h.cause == "outlier":
+        return _run_value(data.runs[int(h.detail)])
+    if h.cause == "response_transform":
+        return None  # filled below
+    return h.detail
+
+
+def _alias_sets(data: _Data, rnd: _Round) -> list[AliasSet]:
+    out = []
+    for c in rnd.classes:
+        names = tuple(term_name(t, data.factors) for t in c.terms)
+        runs = ()
+        if len(c.terms) > 1 or c.direction is None:
+            pts = separating_runs(data.coded[rnd.model.keep], rnd.model.mean_terms, c.terms, data.alpha)
+            runs = tuple(data.point_dict(p) for p in pts)
+        out.append(AliasSet(names[0], names, c.direction is not None, runs))
+    return out
+
+
+def _catalogue_entry(data: _Data, h: _Hypothesis) -> dict:
+    detail = _detail_json(data, h)
+    return {"cause": h.cause, "detail": detail, "aliases": list(h.aliases),
+            "statistic": _num(h.statistic), "p_nominal": _num(np.exp(h.logp)), "p_family": _num(h.p_family)}
+
+
+def _summary(data: _Data, findings: list[Finding], catalogue: list[dict], family_alpha: float,
+             gain: dict) -> str:
+    n_tests = len(catalogue)
+    if not findings:
+        return (f"{data.response}: nothing found: none of the {n_tests} catalogue tests (missing term, "
+                f"transform, outlier, drift, unequal scatter) is significant at a family-wise "
+                f"{100 * family_alpha:g} % level. With {data.n} runs only clear defects are detectable.")
+    names = ", ".join(f"{f.cause} ({f.detail})" for f in findings)
+    ratio = gain.get("loo_rmse_ratio")
+    tail = f"; together they change the leave-one-out error by {100 * (ratio - 1):+.0f} %" if ratio else ""
+    return f"{data.response}: {len(findings)} finding(s) at a family-wise {100 * family_alpha:g} % level: {names}{tail}."
+
+
+def _residual_frame(fit: SurrogateFit) -> pd.DataFrame:
+    return fit.influence()
+
+
+# The transform detail needs the chosen lambda; patch it in after construction.
+_criticize_core = criticize
+
+
+def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: float | None = None,  # noqa: F811
+              family_alpha: float = 0.05, log_factors: tuple[str, ...] = (), max_findings: int = 3,
+              n_null: int = 1999, seed: int = 0) -> CriticismResult:
+    result = _criticize_core(table, factors, response, alpha=alpha, family_alpha=family_alpha,
+                             log_factors=log_factors, max_findings=max_findings, n_null=n_null, seed=seed)
+    lam = result._extended_model.spec.lam
+    for f in result.findings:
+        if f.cause == "response_transform":
+            f.detail = _transform_name(lam)
+    return result
+
+
+criticize.__doc__ = _criticize_core.__doc__

@@ -1,0 +1,41 @@
+"""Shared fixtures: small synthetic CCD studies written to temporary folders."""
+
+from __future__ import annotations
+
+import pytest
+
+from .helpers import make_ccd_table
+
+
+@pytest.fixture
+def study_dir(tmp_path):
+    """A self-made two-factor study (own config and table) in a temporary folder."""
+
+    def responses(x):
+        a, b = x[:, 0], x[:, 1]
+        return {"y1": 100 + 20 * a - 2 * b + 10 * a**2 + 0.5 * a * b,
+                "y2": 80 + 5 * a + 3 * b - 0.1 * b**2}
+
+    table = make_ccd_table(responses, [0.1, 1.0], [0.9, 11.0], noise=0.3, seed=3, decimals=3)
+    table = table.rename(columns={"x1": "a", "x2": "b"})
+    (tmp_path / "data").mkdir()
+    table.to_csv(tmp_path / "data" / "m.csv", index=False)
+    (tmp_path / "study.yaml").write_text(
+        "grid_points: 101\n"
+        "materials:\n"
+        "  m:\n"
+        "    data: data/m.csv\n"
+        "    design: {type: ccd, alpha: 1.41421, center_runs: 5}\n"
+        "    factors:\n"
+        "      a: {lower: 0.1, upper: 0.9}\n"
+        "      b: {lower: 1.0, upper: 11.0}\n"
+        "    responses:\n"
+        "      y1: {target: 115}\n"
+        "      y2: {target: 95}\n"
+        "    reference_point: {a: 0.5, b: 6}\n"
+        "    scenarios:\n"
+        "      y1_only: {observables: [y1], tolerance: 0.02}\n"
+        "      both: {observables: [y1, y2], tolerance: 0.02}\n",
+        encoding="utf-8",
+    )
+    return tmp_path

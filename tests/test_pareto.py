@@ -1,0 +1,32 @@
+import numpy as np
+import pandas as pd
+import pytest
+
+from demid.pareto import pareto_analysis, pareto_front
+
+
+def test_front_of_known_points():
+    first = np.array([1, 2, 3, 4, 2, 5, 1])
+    second = np.array([5, 3, 4, 1, 3, 0.5, 6])
+    idx = pareto_front(first, second)
+    assert idx.tolist() == [0, 1, 3, 5]  # duplicate (2,3) kept once, (3,4) and (1,6) dominated
+
+
+def test_front_matches_brute_force():
+    rng = np.random.default_rng(11)
+    a, b = rng.random(400), rng.random(400)
+    idx = set(pareto_front(a, b).tolist())
+    brute = {i for i in range(400)
+             if not np.any((a <= a[i]) & (b <= b[i]) & ((a < a[i]) | (b < b[i])))}
+    assert idx == brute
+
+
+def test_analytic_front_on_a_line():
+    # error = |x - 0.5|/0.5 relative to target 0.5 of D = x; objective S = y + (1 - x)
+    x, y = np.meshgrid(np.linspace(0, 1, 101), np.linspace(0, 1, 101), indexing="ij")
+    grid = pd.DataFrame({"x": x.ravel(), "y": y.ravel(), "D": x.ravel(), "S": y.ravel() + 1 - x.ravel()})
+    res = pareto_analysis(grid, ["x", "y"], "D", 0.5, "S", 0.19)
+    # Front: y = 0 and x >= 0.5 (larger x lowers S but raises the error).
+    assert (res.front["y"] == 0).all() and (res.front["x"] >= 0.5 - 1e-12).all()
+    iv = res.intervals.set_index("factor")
+    assert iv.loc["x", "lower"] == pytest.approx(0.5) and iv.loc["x", "upper"] == pytest.approx(0.59)
