@@ -894,7 +894,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
             pts = separating_runs(data.coded[model.keep], model.mean_terms, h.detail.terms, data.alpha)
             extra_runs = [data.point_dict(p) for p in pts]
         message = _message(data, h, info, before, after, int(same.sum()), extra_runs, model)
-        detail = _detail_json(data, h)
+        detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
         public_info = {k: v for k, v in info.items() if k in ("lambda_hat", "lambda_ci", "sd_ratio",
                                                               "drift_per_run", "observed", "predicted_without")}
         findings.append(Finding(
@@ -949,7 +949,7 @@ def _detail_json(data: _Data, h: _Hypothesis):
     if h.cause == "outlier":
         return _run_value(data.runs[int(h.detail)])
     if h.cause == "response_transform":
-        return None  # filled below
+        return "boxcox"
     return h.detail
 
 
@@ -986,22 +986,3 @@ def _summary(data: _Data, findings: list[Finding], catalogue: list[dict], family
 
 def _residual_frame(fit: SurrogateFit) -> pd.DataFrame:
     return fit.influence()
-
-
-# The transform detail needs the chosen lambda; patch it in after construction.
-_criticize_core = criticize
-
-
-def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: float | None = None,  # noqa: F811
-              family_alpha: float = 0.05, log_factors: tuple[str, ...] = (), max_findings: int = 3,
-              n_null: int = 1999, seed: int = 0) -> CriticismResult:
-    result = _criticize_core(table, factors, response, alpha=alpha, family_alpha=family_alpha,
-                             log_factors=log_factors, max_findings=max_findings, n_null=n_null, seed=seed)
-    lam = result._extended_model.spec.lam
-    for f in result.findings:
-        if f.cause == "response_transform":
-            f.detail = _transform_name(lam)
-    return result
-
-
-criticize.__doc__ = _criticize_core.__doc__

@@ -60,7 +60,6 @@ KINDS = ("sign_lost", "decimal_shift", "transposition", "digit_doubled", "digit_
 _KIND_RANK = {kind: i for i, kind in enumerate(KINDS)}
 
 _MISFIT_CAP = 1e6  # distance charged for a statistic that cannot be reproduced (NaN)
-_LEVEL_MATCH = 1e-2  # coded-unit tolerance when estimating the declared coding from a table
 _ALL_DIGITS = "0123456789"
 
 
@@ -351,12 +350,15 @@ class _DesignFit:
 
 
 # --------------------------------------------------------------------------- design levels
-def _estimate_coding(column: np.ndarray, nominal: np.ndarray, alpha: float) -> tuple[float, float]:
+def _estimate_coding(column: np.ndarray, nominal: np.ndarray, alpha: float, decimals: int) -> tuple[float, float]:
     """(centre, unit) that puts the most cells of a factor column on the nominal coded levels.
 
     Starts from the table's mid-range coding (Coding.from_levels) and tries every
-    pair of distinct values on every pair of levels, so one mistyped extreme
-    does not shift the levels a repair may take.
+    pair of distinct values on every pair of levels, so that one mistyped extreme
+    does not shift the levels a repair may take.  A cell is on a level when it is
+    within its printing precision (``decimals``) of it, plus 2e-4 in coded units
+    for a rounded alpha; among codings with equally many cells on levels, the
+    smallest squared deviation wins, then the mid-range coding.
     """
     lo, hi = float(column.min()), float(column.max())
     default = ((lo + hi) / 2, (hi - lo) / (2 * alpha) if hi > lo else 1.0)
@@ -370,17 +372,20 @@ def _estimate_coding(column: np.ndarray, nominal: np.ndarray, alpha: float) -> t
     centre = np.array([o[0] for o in options])[:, None]
     unit = np.array([o[1] for o in options])[:, None]
     coded = (column[None, :] - centre) / unit
-    hits = (np.min(np.abs(coded[:, :, None] - nominal[None, None, :]), axis=2) <= _LEVEL_MATCH).sum(axis=1)
-    best = int(np.argmax(hits))  # first maximum: the mid-range coding wins ties
+    deviation = np.min(np.abs(coded[:, :, None] - nominal[None, None, :]), axis=2)
+    hit = deviation <= 0.5 * 10.0 ** (-decimals) / np.abs(unit) + 2e-4
+    hits = hit.sum(axis=1)
+    spread = np.where(hit, deviation ** 2, 0.0).sum(axis=1)
+    best = int(np.lexsort((np.arange(len(options)), np.round(spread, 12), -hits))[0])
     return float(centre[best, 0]), float(unit[best, 0])
 
 
-def _valid_levels(column: np.ndarray, design_type: str, alpha: float,
+def _valid_levels(column: np.ndarray, design_type: str, alpha: float, decimals: int,
                   fixed: tuple[float, float] | None) -> tuple[np.ndarray, float]:
     """Levels a factor may take (model units) and its unit: nominal levels of the design, plus
     every value the column holds more than once."""
     nominal = nominal_levels(design_type, alpha)
-    centre, unit = fixed if fixed is not None else _estimate_coding(column, nominal, alpha)
+    centre, unit = fixed if fixed is not None else _estimate_coding(column, nominal, alpha, decimals)
     values, counts = np.unique(column, return_counts=True)
     levels = np.concatenate([centre + unit * nominal, values[counts >= 2]])
     return np.unique(levels), abs(unit)
@@ -553,7 +558,8 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
         fixed = None
         if coding is not None:
             fixed = (float(coding.center[j]), float(coding.unit[j]))
-        levels, unit = _valid_levels(z[:, j], design_type, alpha, fixed)
+        column_decimals = max((_decimals_of(t) for t in texts[name] if t is not None), default=0)
+        levels, unit = _valid_levels(z[:, j], design_type, alpha, column_decimals, fixed)
         for row in range(len(z)):
             text = texts[name][row]
             if text is None or levels.size == 0:

@@ -6,6 +6,8 @@ rule predict_grid:
     params:
         material_cfg=material_cfg,
         grid_points=material_grid_points,
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/grid/{material}.log",
     benchmark:
@@ -23,6 +25,8 @@ rule evaluate_scenarios:
     params:
         material_cfg=material_cfg,
         grid_points=material_grid_points,
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/scenarios/{material}.log",
     benchmark:
@@ -39,6 +43,8 @@ rule extract_pareto:
         front=f"{RESULTS}/pareto/{{material}}.parquet",
     params:
         material_cfg=material_cfg,
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/pareto/{material}.log",
     benchmark:

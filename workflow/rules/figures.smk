@@ -12,6 +12,8 @@ rule plot_sets:
     params:
         material_cfg=material_cfg,
         grid_points=material_grid_points,
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/figures/sets_{material}.log",
     benchmark:
@@ -33,6 +35,8 @@ rule plot_surface:
     params:
         material_cfg=material_cfg,
         grid_points=material_grid_points,
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/figures/surface_{material}.log",
     benchmark:
@@ -53,6 +57,8 @@ rule plot_pareto:
         ),
     params:
         material_cfg=material_cfg,
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/figures/pareto_{material}.log",
     benchmark:
@@ -72,6 +78,8 @@ rule paper_figure:
         ),
     wildcard_constraints:
         paper_figure=paper_figure_pattern(),
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/figures/{paper_figure}_{material}.log",
     benchmark:

@@ -9,6 +9,8 @@ rule fit_surrogates:
         diagnostics=f"{RESULTS}/fits/{{material}}_diagnostics.parquet",
     params:
         material_cfg=material_cfg,
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/fit/{material}.log",
     benchmark:

@@ -6,8 +6,9 @@ rule report_notebook:
     output:
         notebook=f"{RESULTS}/report/report.ipynb",
     params:
-        results_dir=RESULTS,
         config_json=config_json(),
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/report/notebook.log",
     benchmark:
@@ -21,6 +22,8 @@ rule report_html:
         notebook=f"{RESULTS}/report/report.ipynb",
     output:
         html=f"{RESULTS}/report/report.html",
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/report/html.log",
     benchmark:

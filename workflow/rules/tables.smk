@@ -5,6 +5,8 @@ rule surrogate_fit_table:
         table=f"{RESULTS}/tables/surrogate_fit.csv",
     params:
         materials=MATERIALS,
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/tables/surrogate_fit.log",
     benchmark:
@@ -20,6 +22,8 @@ rule identifiability_table:
         table=f"{RESULTS}/tables/identifiability.csv",
     params:
         materials=MATERIALS,
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/tables/identifiability.log",
     benchmark:
@@ -38,6 +42,8 @@ rule paper_comparison_table:
         table=f"{RESULTS}/tables/paper_comparison.csv",
     params:
         pareto_materials=pareto_materials(),
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/tables/paper_comparison.log",
     benchmark:

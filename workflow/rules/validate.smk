@@ -6,6 +6,8 @@ rule validate_table:
         summary=f"{RESULTS}/validated/{{material}}.json",
     params:
         material_cfg=material_cfg,
+    conda:
+        "../envs/demid.yaml"
     log:
         "logs/validate/{material}.log",
     benchmark:

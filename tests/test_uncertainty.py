@@ -1,0 +1,308 @@
+"""Tests for demid.uncertainty against exact answers (closed forms, exact areas, statsmodels)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+from numpy.testing import assert_allclose
+from scipy import stats
+
+from demid import uncertainty as unc
+from demid.admissibility import Domain, admissible_set
+from demid.design import ccd_points, model_matrix, quadratic_terms, rotatable_alpha
+from demid.surrogate import Surrogate, fit_response
+
+SQUARE = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0))
+
+
+# --------------------------------------------------------------------------- fixtures
+def quadratic(coefficients, factors=("a", "b"), covariance=None, log_factors=()) -> Surrogate:
+    """Exact quadratic surrogate; coefficients follow quadratic_terms order."""
+    k = len(factors)
+    terms = quadratic_terms(k)
+    coef = np.zeros(len(terms))
+    coef[:len(coefficients)] = coefficients
+    cov = np.zeros((len(terms), len(terms))) if covariance is None else covariance
+    return Surrogate("y", list(factors), terms, coef, cov, 0.0, 1, tuple(log_factors))
+
+
+def ring(center, factors=("a", "b")) -> Surrogate:
+    """y = |x - center|^2, whose level sets are circles (spheres)."""
+    center = np.asarray(center, dtype=float)
+    k = len(center)
+    coef = np.concatenate([[np.sum(center ** 2)], -2 * center, np.zeros(k * (k - 1) // 2), np.ones(k)])
+    return quadratic(coef, factors)
+
+
+def linear(intercept, slopes, variance_intercept=0.0, factors=("a", "b")) -> Surrogate:
+    """y = intercept + slopes . x with se_mean = sqrt(variance_intercept) everywhere."""
+    k = len(factors)
+    p = len(quadratic_terms(k))
+    cov = np.zeros((p, p))
+    cov[0, 0] = variance_intercept
+    return quadratic(np.concatenate([[intercept], slopes]), factors, cov)
+
+
+@pytest.fixture(scope="module")
+def mortar_like():
+    """Three noisy responses on a rotatable 13-run CCD, fitted by OLS (mortar-like bands)."""
+    alpha = rotatable_alpha(2)
+    coded = ccd_points(2, alpha, 5)
+    lo, hi = np.array([0.0757, 0.5]), np.array([0.9243, 12.5])
+    x = (lo + hi) / 2 + coded * (hi - lo) / (2 * alpha)
+    rng = np.random.default_rng(5)
+    table = pd.DataFrame(x, columns=["mu_r", "gamma"])
+    table.insert(0, "run", np.arange(1, len(x) + 1))
+    m, g = x.T
+    table["d5"] = 110.81 - 18 * (m - 0.12) - 2.2 * (g - 6.2) + 4 * (m - 0.12) ** 2 + rng.normal(0, 1.2, len(x))
+    table["d10"] = 122.45 - 24 * (m - 0.12) - 2.0 * (g - 6.2) + 6 * (m - 0.12) ** 2 + rng.normal(0, 1.9, len(x))
+    table["d15"] = 131.95 - 30 * (m - 0.12) - 1.6 * (g - 6.2) + 9 * (m - 0.12) ** 2 + rng.normal(0, 1.8, len(x))
+    fits = {r: fit_response(table, ["mu_r", "gamma"], r, alpha=alpha) for r in ("d5", "d10", "d15")}
+    domain = Domain(("mu_r", "gamma"), tuple(lo), tuple(hi))
+    targets = {"d5": 110.81, "d10": 122.45, "d15": 131.95}
+    return fits, {r: f.surrogate() for r, f in fits.items()}, domain, targets
+
+
+# --------------------------------------------------------------------------- sigma and se_mean
+def test_se_mean_matches_statsmodels_mean_se(mortar_like):
+    fits, surrogates, domain, _ = mortar_like
+    points = np.random.default_rng(0).uniform(domain.lower, domain.upper, size=(25, 2))
+    for name, fit in fits.items():
+        exog = pd.DataFrame(model_matrix(fit.coding.to_coded(points), fit.terms), columns=fit.term_names)
+        frame = fit.results.get_prediction(exog).summary_frame(alpha=0.05)
+        assert_allclose(surrogates[name].predict(points), frame["mean"], rtol=1e-10)
+        assert_allclose(surrogates[name].se_mean(points), frame["mean_se"], rtol=1e-8)
+
+
+def test_measurement_sigma_sources():
+    assert unc.measurement_sigma({"sigma": 0.4, "sigma_rel": 0.1}, 120.0) == 0.4
+    assert unc.measurement_sigma({"sigma_rel": 0.01}, -200.0) == pytest.approx(2.0)
+    assert unc.measurement_sigma({}, 50.0, default_rel=0.01) == pytest.approx(0.5)
+    assert unc.measurement_sigma(None, 50.0) == 0.0
+    sigma, basis = unc.measurement_sigmas({"a": {"sigma_rel": 0.02}, "b": {}}, ["a", "b"],
+                                          {"a": 10.0, "b": 100.0}, tolerance=0.02)
+    assert sigma == pytest.approx({"a": 0.2, "b": 1.0})
+    assert basis["a"].startswith("config sigma_rel") and "tolerance/2" in basis["b"]
+
+
+# --------------------------------------------------------------------------- robust sets
+def test_plausibility_field_is_exactly_the_widened_band(mortar_like):
+    _, surrogates, domain, targets = mortar_like
+    field = unc.PlausibilityField(surrogates["d15"], targets["d15"], 0.02, 2.0, sigma=0.7)
+    points = np.random.default_rng(1).uniform(domain.lower, domain.upper, size=(5000, 2))
+    yhat = surrogates["d15"].predict(points)
+    s = np.sqrt(surrogates["d15"].se_mean(points) ** 2 + 0.7 ** 2)
+    band = 0.02 * targets["d15"]
+    plausible = np.abs(yhat - targets["d15"]) <= band + 2.0 * s
+    assert np.array_equal(np.abs(field.predict(points) - targets["d15"]) <= band, plausible)
+
+
+def test_robust_set_contains_strict_set(mortar_like):
+    _, surrogates, domain, targets = mortar_like
+    for observables in (["d15"], ["d5", "d10", "d15"]):
+        strict = admissible_set(surrogates, domain, observables, targets, 0.02, 101)
+        robust = unc.robust_admissible_set(surrogates, domain, observables, targets, 0.02, 101,
+                                           z=2.0, sigma={"d15": 0.5})
+        assert robust.fraction > strict.fraction > 0
+        assert np.all(robust.mask[strict.mask])
+        assert np.all(robust.lower <= strict.lower) and np.all(robust.upper >= strict.upper)
+        same = unc.robust_admissible_set(surrogates, domain, observables, targets, 0.02, 101, z=0.0)
+        assert same.fraction == strict.fraction
+
+
+def test_robust_with_constant_sigma_equals_wider_strict_tolerance():
+    sur = {"y": ring([0.47, 0.52])}
+    target, eps, sigma, z = 0.09, 0.02, 0.0009, 2.0
+    robust = unc.robust_admissible_set(sur, SQUARE, ["y"], {"y": target}, eps, 81, z=z, sigma={"y": sigma})
+    wider = admissible_set(sur, SQUARE, ["y"], {"y": target}, eps + z * sigma / target, 81)
+    assert robust.fraction == pytest.approx(wider.fraction, rel=1e-12)
+    assert robust.fraction == pytest.approx(2 * np.pi * target * (eps + z * sigma / target), rel=2e-3)
+
+
+def test_robust_identifiability_frame_contract(mortar_like):
+    _, surrogates, domain, targets = mortar_like
+    scenarios = {"d15_only": (["d15"], 0.02), "full_sequence": (["d5", "d10", "d15"], 0.02)}
+    frame = unc.robust_identifiability_frame(surrogates, domain, scenarios, targets, 61, z=2.0)
+    assert list(frame.columns) == unc.ROBUST_COLUMNS
+    assert len(frame) == 4
+    assert (frame["robust_fraction_pct"] >= frame["strict_fraction_pct"]).all()
+    assert (frame["robust_width"] >= frame["strict_width"] - 1e-12).all()
+
+
+# --------------------------------------------------------------------------- tolerance sweep
+def test_tolerance_sweep_is_monotone(mortar_like):
+    _, surrogates, domain, targets = mortar_like
+    scenarios = {"d15_only": (["d15"], 0.02), "full_sequence": (["d5", "d10", "d15"], 0.025)}
+    frame = unc.tolerance_sweep(surrogates, domain, scenarios, targets, [0.005, 0.01, 0.02, 0.05, 0.1], 61)
+    assert list(frame.columns[:8]) == unc.SWEEP_COLUMNS
+    for name, rows in frame.groupby("scenario"):
+        first = rows.drop_duplicates("tolerance")
+        assert first["tolerance"].is_monotonic_increasing
+        assert np.all(np.diff(first["feasible_fraction_pct"]) >= 0)
+        assert (first["fraction_error_pct"] < 0.05 * first["feasible_fraction_pct"] + 1e-9).all()
+        for _, per_factor in rows.groupby("factor"):
+            widths = per_factor["width"].to_numpy()
+            widths = widths[np.isfinite(widths)]
+            assert np.all(np.diff(widths) >= -1e-12)
+    assert 0.025 in set(frame.loc[frame["scenario"] == "full_sequence", "tolerance"])
+    fig = unc.tolerance_sweep_figure(frame, "mortar-like")
+    assert len(fig.axes) == 3
+
+
+# --------------------------------------------------------------------------- posterior
+def test_linear_gaussian_posterior_matches_truncated_normal():
+    """y = 2 + 3a with sigma and se_mean constant: the a-posterior is a truncated normal."""
+    domain = Domain(("a", "b"), (0.0, 0.0), (10.0, 1.0))
+    sigma, var_mean = 1.5, 0.25
+    sur = {"y": linear(2.0, [3.0, 0.0], var_mean)}
+    mu = 0.8  # close to the lower bound, so the truncation matters
+    sd = np.sqrt(sigma ** 2 + var_mean) / 3.0
+    post = unc.grid_posterior(sur, domain, ["y"], {"y": 2.0 + 3.0 * mu}, {"y": sigma}, 401)
+    exact = stats.truncnorm((0.0 - mu) / sd, (10.0 - mu) / sd, loc=mu, scale=sd)
+    assert_allclose([post.credible_lower[0], post.credible_upper[0]], exact.ppf([0.025, 0.975]), rtol=2e-4)
+    assert post.mean[0] == pytest.approx(exact.mean(), rel=1e-4)
+    kl_bits = (np.log(10.0) - exact.entropy()) / np.log(2)
+    assert post.information_gain_bits == pytest.approx(kl_bits, rel=1e-4)
+    assert post.information_gain_error_bits < 1e-3
+    # b is not observed: its marginal is the uniform prior
+    assert_allclose([post.credible_lower[1], post.credible_upper[1], post.mean[1]], [0.025, 0.975, 0.5], atol=1e-9)
+    assert_allclose(post.marginals[1], 1.0, atol=1e-9)
+
+
+def test_information_gain_adds_for_independent_observables():
+    domain = Domain(("a", "b"), (-5.0, -5.0), (5.0, 5.0))
+    surrogates = {"p": linear(0.0, [1.0, 0.0]), "q": linear(0.0, [0.0, 2.0])}
+    surrogates["q"].response = "q"
+    targets, sigma = {"p": 0.3, "q": -1.0}, {"p": 0.4, "q": 0.6}
+    posts = unc.subset_posteriors(surrogates, domain, ["p", "q"], targets, sigma, 301)
+    wide = [(np.log(10.0) - stats.norm(scale=s).entropy()) / np.log(2) for s in (0.4, 0.3)]
+    assert posts[("p",)].information_gain_bits == pytest.approx(wide[0], rel=1e-6)
+    assert posts[("q",)].information_gain_bits == pytest.approx(wide[1], rel=1e-6)
+    assert posts[("p", "q")].information_gain_bits == pytest.approx(sum(wide), rel=1e-6)
+    frame = unc.information_gain_frame(posts)
+    assert list(frame.columns[:7]) == unc.INFORMATION_GAIN_COLUMNS
+    assert len(frame) == 6
+    fig = unc.posterior_figure(posts, "independent")
+    assert len(fig.axes) == 2
+
+
+def test_log_factor_posterior_quantiles_in_actual_units():
+    """Prior uniform in log10(b); y linear in log10(b): quantiles are 10**(normal quantiles)."""
+    domain = Domain(("a", "b"), (0.0, 1e-3), (1.0, 1e1), (False, True))
+    sur = {"y": quadratic([0.0, 0.0, 1.0], ("a", "b"), log_factors=("b",))}
+    post = unc.grid_posterior(sur, domain, ["y"], {"y": -1.0}, {"y": 0.2}, 201)
+    assert_allclose([post.credible_lower[1], post.credible_upper[1]],
+                    10.0 ** stats.norm(-1.0, 0.2).ppf([0.025, 0.975]), rtol=1e-4)
+    assert post.mean[1] == pytest.approx(10.0 ** -1.0 * np.exp((0.2 * np.log(10)) ** 2 / 2), rel=1e-4)
+
+
+def test_zero_variance_likelihood_is_rejected():
+    with pytest.raises(ValueError, match="sigma"):
+        unc.grid_posterior({"y": ring([0.5, 0.5])}, SQUARE, ["y"], {"y": 0.1}, {"y": 0.0}, 21)
+
+
+# --------------------------------------------------------------------------- ranking and advice
+def test_ranking_and_advice():
+    domain = Domain(("a", "b"), (-5.0, -5.0), (5.0, 5.0))
+    surrogates = {"p": linear(10.0, [1.0, 0.0]), "q": linear(10.0, [0.0, 2.0]), "w": linear(10.0, [0.1, 0.1])}
+    for name, sur in surrogates.items():
+        sur.response = name
+    targets = {"p": 10.3, "q": 9.0, "w": 10.0}
+    sigma = {o: 0.05 * targets[o] for o in targets}
+    ranking = unc.rank_observable_sets(surrogates, domain, ["p", "q", "w"], targets, sigma, 0.1, 101)
+    assert list(ranking.columns[:5]) == unc.RANKING_COLUMNS
+    assert len(ranking) == 7
+    assert ranking["rank"].tolist() == list(range(1, 8))
+    assert ranking["observables"].iloc[0] == "p+q+w"
+    assert np.all(np.diff(ranking["information_gain_bits"]) <= 0)
+    row = ranking.set_index("observables").loc["p+q"]
+    frac = ranking.set_index("observables")["feasible_fraction_pct"]
+    assert row["best_subset"] in ("p", "q")
+    assert row["contraction_pct_vs_best_subset"] == pytest.approx(
+        100 * (1 - frac["p+q"] / min(frac["p"], frac["q"])))
+    advice = unc.next_measurement_advice(ranking, labels={"q": "shape"})
+    lines = advice.splitlines()
+    assert lines[0].startswith("As a first measurement, shape")
+    assert any(line.startswith("From p, adding shape gains") and "shrinks the admissible fraction" in line
+               for line in lines)
+    assert len(lines) == 1 + 3 + 3
+
+
+# --------------------------------------------------------------------------- numerical accuracy
+def test_plane_band_fraction_matches_sampling():
+    rng = np.random.default_rng(3)
+    for d in (2, 3):
+        center = rng.normal(0, 0.5, 6)
+        increments = rng.normal(0, 1.0, (d, 6))
+        increments[0, 0] = 1e-9  # nearly flat along one axis
+        exact = unc.plane_band_fraction(center, increments, 0.3)
+        u = (np.stack(np.meshgrid(*[(np.arange(200 if d == 2 else 60) + 0.5) / (200 if d == 2 else 60) - 0.5]
+                                  * d, indexing="ij")).reshape(d, -1))
+        sampled = [np.mean(np.abs(c + inc @ u) <= 0.3) for c, inc in zip(center, increments.T)]
+        assert_allclose(exact, sampled, atol=0.01 if d == 3 else 0.005)
+
+
+@pytest.mark.parametrize("fraction", [1e-2, 1e-3, 1e-4])
+def test_fraction_with_error_meets_target_on_annulus(fraction):
+    r0 = 0.3
+    eps = fraction / (2 * np.pi * r0 ** 2)  # annulus area pi r0^2 (1+eps) - pi r0^2 (1-eps)
+    rng = np.random.default_rng(11)
+    for _ in range(3):
+        sur = {"y": ring(0.5 + rng.uniform(-0.05, 0.05, 2))}
+        est = unc.fraction_with_error(sur, SQUARE, ["y"], {"y": r0 ** 2}, eps, 81)
+        true_error = abs(est.fraction - fraction)
+        assert true_error / fraction <= 0.02
+        assert est.error >= true_error
+        assert est.relative_error <= 0.02
+        assert est.evaluations < 15_000
+
+
+def test_fraction_with_error_reports_grid_error_and_3d_shell():
+    sur = {"y": ring([0.5, 0.48, 0.51], ("a", "b", "c"))}
+    cube = Domain(("a", "b", "c"), (0.0, 0.0, 0.0), (1.0, 1.0, 1.0))
+    eps, target = 0.05, 0.09
+    exact = 4 / 3 * np.pi * target ** 1.5 * ((1 + eps) ** 1.5 - (1 - eps) ** 1.5)
+    grid = admissible_set(sur, cube, ["y"], {"y": target}, eps, 31)
+    est = unc.fraction_with_error(sur, cube, ["y"], {"y": target}, eps, 31, reference=grid)
+    assert abs(est.fraction - exact) <= est.error <= 0.02 * exact
+    assert abs(est.grid_fraction - exact) <= est.grid_error
+
+
+def test_polish_spans_recovers_exact_annulus_extent():
+    center, r0, eps = np.array([0.43, 0.56]), 0.2, 0.1
+    sur = {"y": ring(center)}
+    aset = admissible_set(sur, SQUARE, ["y"], {"y": r0 ** 2}, eps, 41)
+    lower, upper = unc.polish_spans(sur, SQUARE, ["y"], {"y": r0 ** 2}, eps, aset)
+    outer = r0 * np.sqrt(1 + eps)
+    assert_allclose(lower, center - outer, atol=1e-7)
+    assert_allclose(upper, center + outer, atol=1e-7)
+    assert np.all(lower <= aset.lower) and np.all(upper >= aset.upper)
+    assert np.max(np.abs(aset.lower - (center - outer))) > 1e-4  # the grid alone is visibly off
+
+
+def test_polish_spans_thin_set_without_admissible_nodes():
+    """A thin annulus that the 11-point grid nodes miss: starts come from the least-violating nodes."""
+    center, r0, eps = np.array([0.503, 0.4977]), 0.3, 0.002
+    sur = {"y": ring(center)}
+    aset = admissible_set(sur, SQUARE, ["y"], {"y": r0 ** 2}, eps, 11)
+    assert aset.n_admissible_nodes == 0 and aset.fraction > 0 and np.isfinite(aset.upper).all()
+    lower, upper = unc.polish_spans(sur, SQUARE, ["y"], {"y": r0 ** 2}, eps, aset)
+    assert_allclose(upper, center + r0 * np.sqrt(1 + eps), atol=1e-7)
+
+
+@pytest.mark.parametrize("eps", [1.0, 0.5])
+def test_sobol_interval_covers_exact_4d_ball_and_shell(eps):
+    factors = ("a", "b", "c", "d")
+    domain = Domain(factors, (0.0,) * 4, (1.0,) * 4)
+    sur = {"y": ring([0.5, 0.5, 0.49, 0.52], factors)}
+    target = 0.09
+    exact = np.pi ** 2 / 2 * target ** 2 * ((1 + eps) ** 2 - max(1 - eps, 0.0) ** 2)
+    covered = 0
+    for seed in range(20):
+        res = unc.sobol_fraction(sur, domain, ["y"], {"y": target}, eps, 2 ** 16, seed)
+        covered += res.ci_lower <= exact <= res.ci_upper
+        assert res.ci_upper - res.ci_lower < 0.05 * exact
+    assert covered >= 17  # nominal 95 %: P(covered <= 16 of 20) is 1.6 %
+    assert res.evaluations == 2 ** 16 and res.points_per_replicate == 2 ** 12
+    assert res.upper[0] == pytest.approx(0.5 + np.sqrt(target * (1 + eps)), abs=0.02)

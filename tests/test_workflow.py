@@ -1,0 +1,92 @@
+"""End-to-end: a self-made study through --configfile/--directory, determinism, incremental reruns."""
+
+from __future__ import annotations
+
+import re
+import shutil
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from demid.io import read_parquet
+
+from .workflow_helpers import planned_jobs, run_snakemake, tree_hashes
+
+pytestmark = pytest.mark.workflow
+
+
+def _add_second_material(study_dir):
+    """Copy material m as n (own table) so partial reruns can be observed."""
+    shutil.copy(study_dir / "data" / "m.csv", study_dir / "data" / "n.csv")
+    text = (study_dir / "study.yaml").read_text(encoding="utf-8")
+    block = text[text.index("  m:\n"):]
+    (study_dir / "study.yaml").write_text(text + block.replace("  m:\n", "  n:\n", 1).replace("data/m.csv", "data/n.csv"),
+                                          encoding="utf-8")
+
+
+def test_self_made_study_runs_and_is_byte_identical(study_dir, tmp_path):
+    _add_second_material(study_dir)
+    twin = tmp_path / "twin"
+    shutil.copytree(study_dir, twin)
+    first = run_snakemake(study_dir, study_dir / "study.yaml")
+    assert first.returncode == 0, first.stderr[-3000:]
+    results = study_dir / "results"
+    for name in ["tables/surrogate_fit.csv", "tables/identifiability.csv", "report/report.html",
+                 "validated/m.parquet", "fits/m.parquet", "grid/m.parquet", "scenarios/n.parquet",
+                 "figures/sets_m.png", "figures/surface_n.png"]:
+        assert (results / name).is_file(), name
+    fit = pd.read_csv(results / "tables" / "surrogate_fit.csv")
+    assert list(fit.columns) == ["material", "response", "n_runs", "r2", "adj_r2", "rmse", "resid_std", "q2",
+                                 "lof_f", "lof_p"]
+    assert len(fit) == 4 and (fit["r2"] > 0.95).all()
+    ident = pd.read_csv(results / "tables" / "identifiability.csv")
+    assert list(ident.columns[:9]) == ["material", "scenario", "observables", "tolerance", "feasible_fraction_pct",
+                                       "factor", "lower", "upper", "width"]
+    both = ident[(ident["material"] == "m") & (ident["scenario"] == "both")]
+    one = ident[(ident["material"] == "m") & (ident["scenario"] == "y1_only")]
+    assert both["feasible_fraction_pct"].iloc[0] <= one["feasible_fraction_pct"].iloc[0]
+    grid = read_parquet(results / "grid" / "m.parquet")
+    assert len(grid) == 101**2 and list(grid.columns) == ["a", "b", "y1", "y2"]
+
+    # A second clean run elsewhere gives byte-identical tables, parquet, JSON and PNG.
+    second = run_snakemake(twin, twin / "study.yaml")
+    assert second.returncode == 0, second.stderr[-3000:]
+    assert tree_hashes(results) == tree_hashes(twin / "results")
+
+    # A no-op rerun schedules nothing.
+    noop = run_snakemake(study_dir, study_dir / "study.yaml", "-n")
+    assert noop.returncode == 0
+    assert planned_jobs(noop.stdout) == {}, noop.stdout
+
+    # Editing one value of n's table reruns only n's chain plus the cross-material outputs.
+    path = study_dir / "data" / "n.csv"
+    table = pd.read_csv(path)
+    table.loc[0, "y1"] = table.loc[0, "y1"] + 0.5
+    table.to_csv(path, index=False)
+    edit = run_snakemake(study_dir, study_dir / "study.yaml", "-n")
+    jobs = planned_jobs(edit.stdout)
+    assert jobs.get("validate_table") == 1 and jobs.get("fit_surrogates") == 1, edit.stdout
+    assert re.search(r"material=n\b", edit.stdout)
+    assert not re.search(r"material=m\b", edit.stdout), edit.stdout
+    assert jobs.get("surrogate_fit_table") == 1 and jobs.get("report_html") == 1
+
+
+def test_failed_run_and_unreachable_target_complete(study_dir):
+    table = pd.read_csv(study_dir / "data" / "m.csv")
+    table["status"] = "ok"
+    table.loc[table["run"] == 2, ["y1", "status"]] = [np.nan, "failed"]
+    table.to_csv(study_dir / "data" / "m.csv", index=False)
+    config = (study_dir / "study.yaml").read_text(encoding="utf-8").replace("y2: {target: 95}", "y2: {target: 500}")
+    (study_dir / "study.yaml").write_text(config, encoding="utf-8")
+    proc = run_snakemake(study_dir, study_dir / "study.yaml", "results/tables/identifiability.csv",
+                         "results/validated/m.json")
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    ident = pd.read_csv(study_dir / "results" / "tables" / "identifiability.csv")
+    both = ident[ident["scenario"] == "both"]
+    assert (both["feasible_fraction_pct"] == 0).all() and both["lower"].isna().all()
+    assert (both["best_max_rel_error"] > 0.5).all()
+    summary = (study_dir / "results" / "validated" / "m.json").read_text(encoding="utf-8")
+    assert '"y1": [\n      2\n    ]' in summary and "failed" in summary
+    stats = read_parquet(study_dir / "results" / "fits" / "m_statistics.parquet").set_index("response")
+    assert stats.loc["y1", "n_runs"] == 12 and stats.loc["y2", "n_runs"] == 13
