@@ -1,3 +1,9 @@
+localrules:
+    surrogate_fit_table,
+    identifiability_table,
+    paper_comparison_table,
+
+
 rule surrogate_fit_table:
     input:
         statistics=expand(f"{RESULTS}/fits/{{material}}_statistics.parquet", material=MATERIALS),
