@@ -1,0 +1,49 @@
+"""The command line: contracts of `fit` and `validate`, and one-line errors with exit status 2."""
+
+import json
+import subprocess
+import sys
+
+import pytest
+import statsmodels.api as sm
+
+from demid.design import model_matrix, quadratic_terms
+
+
+def _run(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "demid", *args], capture_output=True, text=True, cwd=cwd)
+
+
+def test_fit_json_contract_matches_statsmodels(study_dir, tmp_path):
+    out = tmp_path / "fit.json"
+    proc = _run("fit", "--data", str(study_dir / "data" / "m.csv"), "--factors", "a,b", "--responses", "y1,y2",
+                "--out", str(out))
+    assert proc.returncode == 0, proc.stderr
+    result = json.loads(out.read_text())
+    assert set(result) == {"y1", "y2"}
+    for key in ["n_runs", "r2", "adj_r2", "rmse", "resid_std", "q2", "lof_f", "lof_p", "coefficients"]:
+        assert key in result["y1"]
+    import pandas as pd
+
+    table = pd.read_csv(study_dir / "data" / "m.csv")
+    ref = sm.OLS(table["y1"], model_matrix(table[["a", "b"]].to_numpy(), quadratic_terms(2))).fit()
+    assert result["y1"]["r2"] == pytest.approx(ref.rsquared, rel=1e-9)
+    names = ["Intercept", "a", "b", "a:b", "a^2", "b^2"]
+    assert [result["y1"]["coefficients"][n] for n in names] == pytest.approx(ref.params.tolist(), rel=1e-6)
+    assert result["y1"]["n_runs"] == 13
+
+
+def test_validate_command(study_dir):
+    proc = _run("validate", "--config", "study.yaml", cwd=study_dir)
+    assert proc.returncode == 0, proc.stderr
+    assert "m: data/m.csv OK (13 runs" in proc.stdout
+
+
+def test_user_error_is_one_line_exit_2(study_dir):
+    text = (study_dir / "study.yaml").read_text().replace("y2: {target: 95}", "y2: {target: 95, colour: red}")
+    (study_dir / "study.yaml").write_text(text)
+    proc = _run("validate", "--config", "study.yaml", cwd=study_dir)
+    assert proc.returncode == 2
+    assert "Traceback" not in proc.stderr
+    assert proc.stderr.strip().count("\n") == 0
+    assert "materials.m.responses.y2" in proc.stderr and "colour" in proc.stderr
