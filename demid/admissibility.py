@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from itertools import product
+from math import factorial
 
 import numpy as np
 import pandas as pd
@@ -76,8 +77,12 @@ class Domain:
 
     def grid(self, n: int) -> np.ndarray:
         """All grid nodes in actual units, shape (n**d, d), 'ij' (C) order."""
-        mesh = np.meshgrid(*self.axes(n), indexing="ij")
-        return np.column_stack([m.ravel() for m in mesh])
+        axes = self.axes(n)
+        out = np.empty((n ** self.dim, self.dim))
+        for i, ax in enumerate(axes):
+            inner = n ** (self.dim - i - 1)
+            out[:, i] = np.tile(np.repeat(ax, inner), n ** i)
+        return out
 
 
 def predict_grid(surrogates: dict[str, Surrogate], domain: Domain, n: int) -> pd.DataFrame:
@@ -156,6 +161,153 @@ def _curvature_margin(values: np.ndarray) -> float:
     return margin
 
 
+def _box_cdf(t: np.ndarray, widths: np.ndarray) -> np.ndarray:
+    """P(V_1 + ... + V_d <= t) for independent V_i ~ U(0, widths_i); widths shape (d, m).
+
+    Inclusion-exclusion formula for sums of uniforms; widths are floored at 1e-4 of
+    their sum so that the alternating sum stays well conditioned (the floor moves the
+    distribution by less than 1e-4 of its width).
+    """
+    d = widths.shape[0]
+    total = widths.sum(axis=0)
+    w = np.maximum(widths, 1e-4 * total + 1e-300)
+    total = w.sum(axis=0)
+    t = np.clip(t, 0.0, total)
+    acc = np.zeros_like(t)
+    for subset in product((0, 1), repeat=d):
+        shift = sum(w[i] for i in range(d) if subset[i]) if any(subset) else 0.0
+        acc += (-1) ** sum(subset) * np.maximum(t - shift, 0.0) ** d
+    return np.clip(acc / (factorial(d) * np.prod(w, axis=0)), 0.0, 1.0)
+
+
+def plane_band_fraction(center: np.ndarray, increments: np.ndarray, eps: float) -> np.ndarray:
+    """Fraction of a box on which ``|center + sum_i a_i u_i| <= eps``, u uniform on [-1/2, 1/2]^d.
+
+    ``increments`` (d, m) are the changes a_i of the linear field across the box along
+    each axis.  Exact for linear fields (verified against Monte Carlo in the tests).
+    """
+    widths = np.abs(increments)
+    start = center - widths.sum(axis=0) / 2.0
+    return _box_cdf(eps - start, widths) - _box_cdf(-eps - start, widths)
+
+
+@dataclass
+class CellCount:
+    cells: np.ndarray
+    fraction: float
+    evaluations: int
+    analytic_cells: int
+    sampled_cells: int
+    span_lower: np.ndarray  # search units, over admissible sub-sample points (inf when none)
+    span_upper: np.ndarray
+
+
+def cell_count(resid: np.ndarray, eps: float, domain: Domain, step: np.ndarray, evaluate,
+                subdivisions: int) -> CellCount:
+    """Admissible fraction of the grid's cells, second-order accurate at the set boundary.
+
+    Cells are classified from corner ranges widened by the curvature margin (as in
+    :func:`admissible_set`).  A boundary cell in which exactly one observable is active
+    and whose corners straddle a band edge is measured analytically from the plane
+    through its corners (no new evaluations); cells where several observables are
+    active, or where the band may only dip in between the corners, are sub-sampled.
+    """
+    k, shape = resid.shape[0], resid.shape[1:]
+    d = len(shape)
+    cells = tuple(m - 1 for m in shape)
+    inside = np.ones(cells, dtype=bool)
+    outside = np.zeros(cells, dtype=bool)
+    n_active = np.zeros(cells, dtype=np.int8)
+    which = np.zeros(cells, dtype=np.int16)
+    suspicious = np.zeros(cells, dtype=bool)
+    for j, r in enumerate(resid):
+        views = list(_corner_views(r))
+        lo = np.minimum.reduce(views)
+        hi = np.maximum.reduce(views)
+        m = _curvature_margin(r)
+        in_j = (lo - m >= -eps) & (hi + m <= eps)
+        out_j = (hi + m < -eps) | (lo - m > eps)
+        active = ~in_j & ~out_j
+        inside &= in_j
+        outside |= out_j
+        n_active += active
+        which[active] = j
+        suspicious |= active & ((hi < -eps) | (lo > eps))
+    frac = inside.astype(float)
+    candidate = ~inside & ~outside
+    analytic = candidate & (n_active == 1) & ~suspicious
+    for j in range(k):
+        sel = analytic & (which == j)
+        if not sel.any():
+            continue
+        corners = [v[sel] for v in _corner_views(resid[j])]
+        offsets = list(product((0, 1), repeat=d))
+        center = np.mean(corners, axis=0)
+        increments = np.stack([
+            np.mean([c for c, o in zip(corners, offsets) if o[i] == 1], axis=0)
+            - np.mean([c for c, o in zip(corners, offsets) if o[i] == 0], axis=0)
+            for i in range(d)])
+        frac[sel] = plane_band_fraction(center, increments, eps)
+
+    sampled = candidate & ~analytic
+    idx = np.argwhere(sampled)
+    evaluations = 0
+    span_lo = np.full(d, np.inf)
+    span_hi = np.full(d, -np.inf)
+    if len(idx):
+        lo_u, _ = domain.search_bounds()
+        sub = (np.arange(subdivisions) + 0.5) / subdivisions
+        offs = np.column_stack([g.ravel() for g in np.meshgrid(*[sub] * d, indexing="ij")])
+        chunk = max(1, 131_072 // len(offs))
+        for start in range(0, len(idx), chunk):
+            part = idx[start:start + chunk]
+            u = (lo_u + (part[:, None, :] + offs[None, :, :]) * step).reshape(-1, d)
+            r = evaluate(domain.to_actual(u))
+            evaluations += r.size
+            ok_flat = np.all(np.abs(r) <= eps, axis=0)
+            ok = ok_flat.reshape(len(part), len(offs))
+            frac[tuple(part.T)] = ok.mean(axis=1)
+            if ok_flat.any():
+                span_lo = np.minimum(span_lo, u[ok_flat].min(axis=0))
+                span_hi = np.maximum(span_hi, u[ok_flat].max(axis=0))
+    return CellCount(frac, float(frac.mean()), evaluations, int(analytic.sum()), int(len(idx)), span_lo, span_hi)
+
+
+
+def _refine_span_ends(cell_frac, span_lo, span_hi, lo_u, hi_u, step, domain, evaluate, eps, s):
+    """Sub-sample the outermost occupied cell slab on each side of each axis.
+
+    Cells measured by the plane rule hold admissible points between the nodes; where
+    such a cell lies beyond the node-based span, the span end is found on an s-point
+    sub-grid of that slab (accuracy step/s, as for sampled cells).
+    """
+    d = cell_frac.ndim
+    occupied = np.argwhere(cell_frac > 0)
+    if not len(occupied):
+        return span_lo, span_hi
+    sub = (np.arange(s) + 0.5) / s
+    span_lo, span_hi = span_lo.copy(), span_hi.copy()
+    for i in range(d):
+        for side in (0, 1):
+            edge = occupied[:, i].max() if side else occupied[:, i].min()
+            cell_lo = lo_u[i] + edge * step[i]
+            if side == 0 and (span_lo[i] <= cell_lo + 1e-12 * abs(step[i]) or span_lo[i] <= lo_u[i]):
+                continue
+            if side == 1 and (span_hi[i] >= cell_lo + step[i] - 1e-12 * abs(step[i]) or span_hi[i] >= hi_u[i]):
+                continue
+            cells = occupied[occupied[:, i] == edge]
+            offs = np.column_stack([g.ravel() for g in np.meshgrid(*[sub] * d, indexing="ij")])
+            chunk = max(1, 131_072 // len(offs))
+            for start in range(0, len(cells), chunk):
+                part = cells[start:start + chunk]
+                u = (lo_u + (part[:, None, :] + offs[None, :, :]) * step).reshape(-1, d)
+                ok = np.all(np.abs(evaluate(domain.to_actual(u))) <= eps, axis=0)
+                if ok.any():
+                    span_lo = np.minimum(span_lo, u[ok].min(axis=0))
+                    span_hi = np.maximum(span_hi, u[ok].max(axis=0))
+    return span_lo, span_hi
+
+
 def admissible_set(surrogates: dict[str, Surrogate], domain: Domain, observables, targets: dict[str, float],
                    tolerance: float, n: int, grid_predictions: pd.DataFrame | None = None,
                    subdivisions: int | None = None) -> AdmissibleSet:
@@ -171,43 +323,17 @@ def admissible_set(surrogates: dict[str, Surrogate], domain: Domain, observables
     worst = np.max(np.abs(resid), axis=0)
     mask = worst <= eps
 
-    # Classify cells from the corner ranges of every observable's residual.
-    inside = np.ones((n - 1,) * d, dtype=bool)
-    outside = np.zeros((n - 1,) * d, dtype=bool)
-    for r in resid:
-        lo = hi = None
-        for view in _corner_views(r):
-            lo = view.copy() if lo is None else np.minimum(lo, view)
-            hi = view.copy() if hi is None else np.maximum(hi, view)
-        m = _curvature_margin(r)
-        inside &= (lo - m >= -eps) & (hi + m <= eps)
-        outside |= (hi + m < -eps) | (lo - m > eps)
-    candidate = ~inside & ~outside
-    cell_frac = inside.astype(float)
-
     lo_u, hi_u = domain.search_bounds()
     step = (hi_u - lo_u) / (n - 1)
-    s = subdivisions or (16 if d <= 2 else 4)
-    sub = (np.arange(s) + 0.5) / s
-    offsets = np.column_stack([m.ravel() for m in np.meshgrid(*[sub] * d, indexing="ij")])
-    cand_idx = np.argwhere(candidate)
-    evaluations = n ** d * len(observables)
-    span_lo = np.full(d, np.inf)
-    span_hi = np.full(d, -np.inf)
-    chunk = max(1, 2_000_000 // len(offsets))
-    for start in range(0, len(cand_idx), chunk):
-        idx = cand_idx[start:start + chunk]
-        u = (lo_u + idx[:, None, :] * step + offsets[None, :, :] * step).reshape(-1, d)
-        x = domain.to_actual(u)
-        ok = np.ones(len(x), dtype=bool)
-        for o in observables:
-            ok &= np.abs((surrogates[o].predict(x) - targets[o]) / abs(targets[o])) <= eps
-        evaluations += len(x) * len(observables)
-        ok2 = ok.reshape(len(idx), len(offsets))
-        cell_frac[tuple(idx.T)] = ok2.mean(axis=1)
-        if ok.any():
-            span_lo = np.minimum(span_lo, u[ok].min(axis=0))
-            span_hi = np.maximum(span_hi, u[ok].max(axis=0))
+
+    def evaluate(x):
+        return np.stack([(surrogates[o].predict(x) - targets[o]) / abs(targets[o]) for o in observables])
+
+    count = cell_count(resid, eps, domain, step, evaluate, subdivisions or (16 if d <= 2 else 4))
+    cell_frac = count.cells
+    evaluations = n ** d * len(observables) + count.evaluations
+    span_lo, span_hi = count.span_lower.copy(), count.span_upper.copy()
+    cand_idx = np.argwhere((cell_frac > 0) & (cell_frac < 1))
 
     axes_u = domain.search_axes(n)
     if mask.any():
@@ -216,6 +342,14 @@ def admissible_set(surrogates: dict[str, Surrogate], domain: Domain, observables
             where = np.flatnonzero(present)
             span_lo[i] = min(span_lo[i], axes_u[i][where[0]])
             span_hi[i] = max(span_hi[i], axes_u[i][where[-1]])
+    span_lo, span_hi = _refine_span_ends(cell_frac, span_lo, span_hi, lo_u, hi_u, step, domain, evaluate, eps,
+                                         subdivisions or 16)
+    if not np.isfinite(span_lo).all() and (cell_frac > 0).any():
+        # A band thinner than the grid spacing: no node or sub-point is admissible, but the
+        # plane rule measured it; bound the span by the extent of the cells that hold it.
+        cells = np.argwhere(cell_frac > 0)
+        span_lo = lo_u + cells.min(axis=0) * step
+        span_hi = lo_u + (cells.max(axis=0) + 1) * step
     if np.isfinite(span_lo).all():
         lower = domain.to_actual(span_lo)[0]
         upper = domain.to_actual(span_hi)[0]

@@ -67,8 +67,8 @@ from .surrogate import SurrogateFit, fit_response
 
 CAUSES = ("missing_term", "response_transform", "outlier", "drift", "heteroscedasticity")
 TRANSFORM_NAMES = {0.0: "log", 0.5: "sqrt", -1.0: "inverse"}
-# Convenient lambdas tried (in this order of preference) when the 95 % interval contains them.
-_NICE_LAMBDAS = (0.0, 0.5, -1.0, -0.5, 2.0, 1.5, -2.0, 0.25, -0.25)
+# Further convenient lambdas, tried when the 95 % interval contains none of the named ones.
+_NICE_LAMBDAS = (-0.5, 2.0, 1.5, -2.0, 0.25, -0.25)
 _LAMBDA_TEST_GRID = np.round(np.arange(-2.0, 2.0001, 0.05), 10)
 _LAMBDA_FINE_GRID = np.round(np.arange(-3.0, 3.0001, 0.01), 10)
 _GAMMA_BOUND = 5.0  # variance ratio exp(2*5) over the covariate range at most
@@ -450,6 +450,11 @@ class _Hypothesis:
     info: dict = field(default_factory=dict)
     null_logp: np.ndarray | None = None
     p_family: float = 1.0
+    strength: float | None = None  # ranking key when it differs from logp (Box-Cox)
+
+    @property
+    def rank_key(self) -> float:
+        return self.logp if self.strength is None else self.strength
 
 
 def _f_logp(f, df2):
@@ -482,13 +487,17 @@ def _outlier_logp(tmax, n, df):
 
 
 def _het_stats(e: np.ndarray, hat: np.ndarray, covariate: np.ndarray):
-    """Koenker's studentised Breusch-Pagan LM = n R^2 of r^2 on [1, z], r = e/sqrt(1-h)."""
+    """Breusch-Pagan score statistic LM = ESS/2 of u = r^2/mean(r^2) on [1, z], r = e/sqrt(1-h).
+
+    The normal-theory score test for var = sigma^2 exp(gamma z); its null
+    distribution is taken from the simulated residuals, not from chi-square(1).
+    """
     r2 = e ** 2 / np.maximum(1 - hat, 1e-12)[:, None]
-    zc = covariate - covariate.mean()
-    uc = r2 - r2.mean(axis=0)
     with np.errstate(divide="ignore", invalid="ignore"):
-        corr2 = (zc @ uc) ** 2 / (np.sum(zc ** 2) * np.sum(uc ** 2, axis=0))
-    return len(covariate) * np.nan_to_num(corr2)
+        u = r2 / r2.mean(axis=0)
+    zc = covariate - covariate.mean()
+    uc = u - u.mean(axis=0)
+    return np.nan_to_num(0.5 * (zc @ uc) ** 2 / np.sum(zc ** 2))
 
 
 def _boxcox_profile(y: np.ndarray, q: np.ndarray, lams: np.ndarray) -> np.ndarray:
@@ -583,17 +592,15 @@ class _Round:
                 h.null_logp = stats.chi2.logsf(_het_stats(e_null, m.hat, v), 1)
                 self.hypotheses.append(h)
 
-        # --- Box-Cox (parametric bootstrap null from the fitted model)
+        # --- Box-Cox: parametric bootstrap from the fitted model, conditional on positive responses;
+        # joined to the family as an independent uniform (conservative under positive dependence).
         if spec.lam is None and spec.weight_on is None and np.all(m.y > 0):
-            lr_obs = self._boxcox_lr(m.y[:, None], q)[0]
-            sigma = math.sqrt(m.ssr / df)
-            y_null = m.fitted_z[:, None] + sigma * eps
-            positive = np.all(y_null > 0, axis=0)
-            lr_null = np.full(n_null, np.inf)
-            if positive.any():
-                lr_null[positive] = self._boxcox_lr(y_null[:, positive], q)
-            h = _Hypothesis("response_transform", None, [], float(lr_obs), float(stats.chi2.logsf(lr_obs, 1)))
-            h.null_logp = stats.chi2.logsf(lr_null, 1)
+            lr_obs = float(self._boxcox_lr(m.y[:, None], q)[0])
+            p_boot, n_used = self._boxcox_bootstrap(m, q, lr_obs, n_null, rng)
+            h = _Hypothesis("response_transform", None, [], lr_obs, math.log(p_boot),
+                            info={"bootstrap_draws": n_used})
+            h.strength = float(stats.chi2.logsf(lr_obs, 1))
+            h.null_logp = np.log(rng.uniform(size=n_null))
             self.hypotheses.append(h)
 
         if self.hypotheses:
@@ -601,6 +608,29 @@ class _Round:
                                  np.column_stack([h.null_logp for h in self.hypotheses]))
             for h, p in zip(self.hypotheses, adj):
                 h.p_family = float(p)
+
+    def _boxcox_bootstrap(self, m: _Model, q: np.ndarray, lr_obs: float, n_null: int,
+                          rng: np.random.Generator, max_batches: int = 20) -> tuple[float, int]:
+        """P(LR* >= LR | all y* > 0) under y* = fitted + sigma * N(0, 1); (p, draws used).
+
+        When the fitted null model almost never yields all-positive responses the
+        positivity of the data is itself the evidence: p = 1 / (draws tried + 1).
+        """
+        sigma = math.sqrt(m.ssr / m.df_resid)
+        used = exceed = tried = 0
+        for _ in range(max_batches):
+            y_null = m.fitted_z[:, None] + sigma * rng.standard_normal((len(m.y), n_null))
+            tried += n_null
+            ok = np.all(y_null > 0, axis=0)
+            take = np.flatnonzero(ok)[: n_null - used]
+            if len(take):
+                exceed += int(np.count_nonzero(self._boxcox_lr(y_null[:, take], q) >= lr_obs - 1e-9))
+                used += len(take)
+            if used >= n_null:
+                break
+        if used == 0:
+            return 1.0 / (tried + 1.0), 0
+        return (exceed + 1.0) / (used + 1.0), used
 
     @staticmethod
     def _boxcox_lr(y: np.ndarray, q: np.ndarray) -> np.ndarray:
@@ -623,7 +653,7 @@ class _Round:
 
     def rejected(self, family_alpha: float) -> list[_Hypothesis]:
         rej = [h for h in self.hypotheses if h.p_family <= family_alpha]
-        return sorted(rej, key=lambda h: (h.logp, CAUSES.index(h.cause)))
+        return sorted(rej, key=lambda h: (h.rank_key, CAUSES.index(h.cause)))
 
 
 # =========================================================================== findings
@@ -747,9 +777,17 @@ def _apply(data: _Data, model: _Model, rnd: _Round, h: _Hypothesis) -> tuple[_Sp
         prof = _boxcox_profile(model.y[:, None], q, _LAMBDA_FINE_GRID)[:, 0]
         best = int(np.argmax(prof))
         lam_hat = float(_LAMBDA_FINE_GRID[best])
-        inside = _LAMBDA_FINE_GRID[2 * (prof[best] - prof) <= stats.chi2.ppf(0.95, 1)]
+        # Small-sample 95 % interval: the likelihood ratio in F form, F = df (exp(LR/n) - 1) ~ F(1, df)
+        # (the chi-square(1) interval is far too narrow at a dozen runs).
+        n, df = len(model.y), model.df_resid - 1
+        f_ratio = df * np.expm1(2 * (prof[best] - prof) / n)
+        inside = _LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.95, 1, df)]
         lo, hi = float(inside.min()), float(inside.max())
-        lam = next((v for v in _NICE_LAMBDAS if lo <= v <= hi), round(lam_hat, 1))
+        # The transform used is the first convenient lambda (log, sqrt, inverse, then others)
+        # that the data do not reject at the 1 % level; otherwise lambda-hat to one decimal.
+        plausible = _LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.99, 1, df)]
+        lo99, hi99 = float(plausible.min()), float(plausible.max())
+        lam = next((v for v in (*TRANSFORM_NAMES, *_NICE_LAMBDAS) if lo99 <= v <= hi99), round(lam_hat, 1))
         if abs(lam - 1.0) < 1e-9:
             lam = round(lam_hat, 2)
         info.update(lambda_hat=lam_hat, lambda_ci=[lo, hi])
@@ -986,3 +1024,352 @@ def _summary(data: _Data, findings: list[Finding], catalogue: list[dict], family
 
 def _residual_frame(fit: SurrogateFit) -> pd.DataFrame:
     return fit.influence()
+
+
+# =========================================================================== level 2
+@dataclass
+class Level2Result:
+    """The calibrated simulation against the experiment for one material.
+
+    Relative errors are (y_hat - y*) / |y*| as in :mod:`demid.admissibility`;
+    ``best_*`` refers to the point of the domain minimising the largest |relative
+    error| over all observables with targets.  ``without[k]`` is that smallest
+    largest error when observable k is left out (equivalently: given a free bias).
+    """
+
+    factors: list[str]
+    observables: list[str]
+    targets: dict[str, float]
+    tolerance: float
+    best_point: dict[str, float]
+    best_values: dict[str, float]
+    best_errors: dict[str, float]
+    best_max_error: float
+    feasible: bool
+    reference_point: dict[str, float] | None
+    reference_values: dict[str, float] | None
+    reference_errors: dict[str, float] | None
+    bottleneck: str | None
+    without: dict[str, float]
+    implied_bias: dict[str, float]
+    bias_candidates: list[str]
+    biased_observable: str | None
+    shared_bias: dict
+    extensions: list[dict]
+    message: str
+
+    @property
+    def reference_max_error(self) -> float | None:
+        if self.reference_errors is None:
+            return None
+        return float(max(abs(v) for v in self.reference_errors.values()))
+
+    def to_frame(self) -> pd.DataFrame:
+        rows = []
+        for o in self.observables:
+            ref = self.reference_errors[o] if self.reference_errors else np.nan
+            rows.append({
+                "observable": o, "target": self.targets[o],
+                "at_best": self.best_values[o], "rel_error_best": self.best_errors[o],
+                "at_reference": self.reference_values[o] if self.reference_values else np.nan,
+                "rel_error_reference": ref, "tolerance": self.tolerance,
+                "within_tolerance": bool(abs(self.best_errors[o]) <= self.tolerance + 1e-12),
+                "within_tolerance_reference": bool(abs(ref) <= self.tolerance + 1e-12) if self.reference_errors else None,
+                "bottleneck": o == self.bottleneck,
+                "max_error_without": self.without.get(o, np.nan),
+                "implied_bias": self.implied_bias.get(o, np.nan),
+                "bias_candidate": o in self.bias_candidates,
+            })
+        return pd.DataFrame(rows)
+
+    def to_json(self) -> dict:
+        def clean(d):
+            return None if d is None else {k: _num(v) for k, v in d.items()}
+        return {
+            "observables": list(self.observables), "targets": clean(self.targets), "tolerance": self.tolerance,
+            "best_point": clean(self.best_point), "best_values": clean(self.best_values),
+            "best_errors": clean(self.best_errors), "best_max_error": _num(self.best_max_error),
+            "feasible": bool(self.feasible),
+            "reference_point": clean(self.reference_point), "reference_values": clean(self.reference_values),
+            "reference_errors": clean(self.reference_errors), "reference_max_error": self.reference_max_error,
+            "bottleneck": self.bottleneck, "max_error_without": clean(self.without),
+            "implied_bias": clean(self.implied_bias), "bias_candidates": list(self.bias_candidates),
+            "biased_observable": self.biased_observable, "shared_bias": self.shared_bias,
+            "extensions": self.extensions, "message": self.message,
+        }
+
+
+class _Level2Problem:
+    """Relative errors of all observables as a function of a point in unit-scaled search space."""
+
+    def __init__(self, surrogates, domain, targets, observables):
+        self.surrogates, self.domain = surrogates, domain
+        self.observables = list(observables)
+        self.targets = np.array([targets[o] for o in self.observables], dtype=float)
+        self.lo, self.hi = domain.search_bounds()
+
+    def actual(self, s: np.ndarray) -> np.ndarray:
+        return self.domain.to_actual(self.lo + np.atleast_2d(s) * (self.hi - self.lo))
+
+    def values(self, s: np.ndarray) -> np.ndarray:
+        x = self.actual(s)
+        return np.stack([np.asarray(self.surrogates[o].predict(x), dtype=float) for o in self.observables])
+
+    def errors(self, s: np.ndarray) -> np.ndarray:
+        return (self.values(s) - self.targets[:, None]) / np.abs(self.targets)[:, None]
+
+
+def _worst(err: np.ndarray, shared: bool) -> np.ndarray:
+    """Largest |error| per column; with a shared bias, the best bias leaves half the spread."""
+    if shared:
+        return (err.max(axis=0) - err.min(axis=0)) / 2
+    return np.abs(err).max(axis=0)
+
+
+def _minimax(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, rows: list[int],
+             shared: bool = False, starts: int = 4) -> tuple[float, np.ndarray, float]:
+    """min over the domain of the largest |relative error| of ``rows`` (+ optional shared bias).
+
+    Grid search, then SLSQP on the epigraph form (min t s.t. |e_k(x) - delta| <= t)
+    from the best few grid nodes.  Returns (value, unit point, delta).
+    """
+    worst = _worst(grid_err[rows], shared)
+    order = np.argsort(worst, kind="stable")
+    picks = [order[0]]
+    for i in order[1:]:
+        if len(picks) >= starts:
+            break
+        if np.min(np.max(np.abs(grid_s[picks] - grid_s[i]), axis=1)) > 0.1:
+            picks.append(i)
+    d = grid_s.shape[1]
+
+    def evaluate(s):
+        e = problem.errors(s)[rows, 0]
+        delta = (e.max() + e.min()) / 2 if shared else 0.0
+        return float(np.max(np.abs(e - delta))), delta
+
+    best_val, best_s = float(worst[order[0]]), grid_s[order[0]].copy()
+    best_delta = evaluate(best_s)[1]
+    for i in picks:
+        v0, delta0 = evaluate(grid_s[i])
+        x0 = np.concatenate([grid_s[i], [v0], [delta0] if shared else []])
+
+        def cons(v):
+            e = problem.errors(v[:d])[rows, 0] - (v[d + 1] if shared else 0.0)
+            return np.concatenate([v[d] - e, v[d] + e])
+
+        bounds = [(0.0, 1.0)] * d + [(0.0, None)] + ([(None, None)] if shared else [])
+        with warnings.catch_warnings(), np.errstate(all="ignore"):
+            warnings.simplefilter("ignore")
+            res = optimize.minimize(lambda v: v[d], x0, method="SLSQP", bounds=bounds,
+                                    constraints=[{"type": "ineq", "fun": cons}],
+                                    options={"maxiter": 200, "ftol": 1e-12})
+        s = np.clip(res.x[:d], 0.0, 1.0)
+        val, delta = evaluate(s)
+        if val < best_val:
+            best_val, best_s, best_delta = val, s, delta
+    return best_val, best_s, best_delta
+
+
+def calibration_check(surrogates: dict, domain, targets: dict[str, float], tolerance: float, n: int,
+                      reference_point: dict | None = None) -> Level2Result:
+    """Level-2 criticism: can any point of the domain meet every target, and if not, why not?
+
+    ``surrogates`` maps observable -> object with ``predict(points_actual)``;
+    observables are those with both a surrogate and a target.  The best point
+    minimises the largest |relative error| (grid of ``n`` points per axis, then
+    SLSQP polish).  Discrepancy extensions: a free bias on one observable (the
+    bottleneck), a shared relative bias on all, a bias on each (saturated).
+    """
+    observables = [o for o in targets if o in surrogates]
+    if not observables:
+        raise ValueError("no observable has both a surrogate and a target")
+    factors = list(domain.factors)
+    d, k = len(factors), len(observables)
+    problem = _Level2Problem(surrogates, domain, targets, observables)
+    axes = [np.linspace(0.0, 1.0, n)] * d
+    grid_s = np.column_stack([m.ravel() for m in np.meshgrid(*axes, indexing="ij")])
+    grid_err = problem.errors(grid_s)
+    every = list(range(k))
+
+    best_val, best_s, _ = _minimax(problem, grid_s, grid_err, every)
+    best_x = problem.actual(best_s)[0]
+    best_values = dict(zip(observables, problem.values(best_s)[:, 0].tolist()))
+    best_errors = dict(zip(observables, problem.errors(best_s)[:, 0].tolist()))
+    feasible = best_val <= tolerance + 1e-12
+
+    ref_values = ref_errors = None
+    if reference_point is not None:
+        x_ref = np.array([[float(reference_point[f]) for f in factors]])
+        vals = np.stack([np.asarray(surrogates[o].predict(x_ref), dtype=float) for o in observables])[:, 0]
+        ref_values = dict(zip(observables, vals.tolist()))
+        ref_errors = {o: (v - targets[o]) / abs(targets[o]) for o, v in ref_values.items()}
+
+    without, implied = {}, {}
+    if k > 1:
+        for i, o in enumerate(observables):
+            val, s, _ = _minimax(problem, grid_s, grid_err, [j for j in every if j != i])
+            without[o] = val
+            implied[o] = float(problem.errors(s)[i, 0])
+    bottleneck = None
+    candidates: list[str] = []
+    biased = None
+    if not feasible:
+        # Smallest error left when the observable is dropped; near-ties (common when the rest is
+        # exactly solvable) go to the observable needing the smallest bias.
+        bottleneck = (min(without, key=lambda o: (round(without[o] / (1e-3 * tolerance)), abs(implied[o])))
+                      if without else observables[0])
+        candidates = [o for o in observables if without.get(o, np.inf) <= tolerance + 1e-12]
+        biased = candidates[0] if len(candidates) == 1 else None
+
+    shared_val, shared_s, shared_delta = _minimax(problem, grid_s, grid_err, every, shared=True)
+    shared = {"delta": _num(shared_delta), "max_error": _num(shared_val),
+              "point": {f: _num(v) for f, v in zip(factors, problem.actual(shared_s)[0])},
+              "n_params": d + 1}
+    extensions = _level2_extensions(d, k, best_val, shared_val, without, bottleneck)
+    result = Level2Result(
+        factors=factors, observables=observables, targets={o: float(targets[o]) for o in observables},
+        tolerance=float(tolerance), best_point=dict(zip(factors, best_x.tolist())), best_values=best_values,
+        best_errors=best_errors, best_max_error=float(best_val), feasible=bool(feasible),
+        reference_point=None if reference_point is None else {f: float(reference_point[f]) for f in factors},
+        reference_values=ref_values, reference_errors=ref_errors, bottleneck=bottleneck, without=without,
+        implied_bias=implied, bias_candidates=candidates, biased_observable=biased, shared_bias=shared,
+        extensions=extensions, message="")
+    result.message = _level2_message(result)
+    return result
+
+
+def _level2_extensions(d: int, k: int, best: float, shared: float, without: dict, bottleneck) -> list[dict]:
+    def row(model, n_params, max_error):
+        spare = k - n_params
+        note = ("testable: {} spare measurement(s)".format(spare) if spare > 0 else
+                "saturated: as many unknowns as measurements, it fits whenever a solution lies in the domain, "
+                "so the fit itself is no evidence" if spare == 0 else
+                "not identifiable: more unknowns than measurements; any point fits and the biases are just "
+                "the residuals there")
+        return {"model": model, "n_params": n_params, "n_measurements": k, "spare_measurements": spare,
+                "max_error": _num(max_error), "note": note}
+
+    rows = [row("simulation as calibrated (no discrepancy)", d, best)]
+    if bottleneck is not None and without:
+        rows.append(row(f"bias on {bottleneck}", d + 1, without[bottleneck]))
+    rows.append(row("shared relative bias on all observables", d + 1, shared))
+    rows.append(row("bias on every observable", d + k, 0.0))
+    return rows
+
+
+def _pct(x: float) -> str:
+    return f"{100 * x:.2f} %" if abs(x) < 0.1 else f"{100 * x:.1f} %"
+
+
+def _level2_message(r: Level2Result) -> str:
+    pt = ", ".join(f"{f}={_g(v)}" for f, v in r.best_point.items())
+    k, d = len(r.observables), len(r.factors)
+    obs = _and(r.observables)
+    parts = []
+    if r.feasible:
+        parts.append(f"Every target ({obs}) can be met within {_pct(r.tolerance)}: the best point ({pt}) "
+                     f"misses by at most {_pct(r.best_max_error)}.")
+    else:
+        worst = max(r.best_errors, key=lambda o: abs(r.best_errors[o]))
+        parts.append(f"No point of the domain meets every target ({obs}) within {_pct(r.tolerance)}; the "
+                     f"closest point ({pt}) still misses by {_pct(r.best_max_error)} ({worst} "
+                     f"{'over' if r.best_errors[worst] > 0 else 'under'}-predicted).")
+        if r.bottleneck is not None and r.without:
+            b = r.bottleneck
+            parts.append(f"{b} is the bottleneck: without it the others can be met within "
+                         f"{_pct(r.without[b])}, and the simulation would then read {b} "
+                         f"{_pct(abs(r.implied_bias[b]))} {'high' if r.implied_bias[b] > 0 else 'low'}.")
+            if r.biased_observable is not None:
+                parts.append(f"{b} is the only observable whose removal makes the rest consistent, so a "
+                             f"discrepancy (bias) in {b} explains the mismatch.")
+            elif len(r.bias_candidates) > 1:
+                parts.append(f"But removing any of {_and(r.bias_candidates)} makes the rest consistent: with "
+                             f"{k} measurements and {d} parameters the data cannot say which one is off "
+                             f"({b} is named because it needs the smallest bias); a further independent "
+                             f"measurement would.")
+            else:
+                parts.append("No single observable explains the mismatch on its own.")
+    if r.reference_errors is not None:
+        ref = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in r.reference_errors.items())
+        ok = r.reference_max_error <= r.tolerance + 1e-12
+        parts.append(f"At the reference point the errors are {ref}: it {'meets' if ok else 'misses'} the "
+                     f"{_pct(r.tolerance)} tolerance.")
+    sb = r.shared_bias
+    spare = k - d - 1
+    parts.append(f"A shared relative bias of {100 * sb['delta']:+.2f} % on all targets would leave "
+                 f"{_pct(sb['max_error'])} at one extra parameter; "
+                 + (f"{spare} measurement(s) remain to test it." if spare > 0 else
+                    "with " + str(k) + " measurements and " + str(d) + " parameters it uses the last spare "
+                    "measurement, so its fit cannot be taken as evidence of a bias." if spare == 0 else
+                    "there are fewer measurements than unknowns, so it is not identifiable."))
+    parts.append(f"A bias on every observable ({d + k} unknowns for {k} measurements) fits trivially and is "
+                 f"not identifiable.")
+    return " ".join(parts)
+
+
+# =========================================================================== figure
+def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], title: str):
+    """Residual diagnostics, one row per response: vs fitted, vs run order, normal QQ.
+
+    Residuals are those of the baseline quadratic; the QQ panel uses externally
+    studentised residuals.  Named findings are marked: an outlier run is ringed
+    and labelled in every panel, a drift gets its trend line, other causes are
+    written in the first panel.  Returns a :class:`matplotlib.figure.Figure`
+    (no pyplot state, no dates; save with ``metadata={'Software': None}`` etc.).
+    """
+    from matplotlib.figure import Figure
+
+    by_response = {r.response: r for r in results}
+    rows = max(len(fits), 1)
+    fig = Figure(figsize=(12, 3.3 * rows), layout="constrained")
+    axes = fig.subplots(rows, 3, squeeze=False)
+    for row, fit in zip(axes, fits):
+        res = by_response.get(fit.response)
+        infl = fit.influence()
+        runs = infl["run"].to_numpy()
+        resid = infl["residual"].to_numpy()
+        fitted = infl["fitted"].to_numpy()
+        stud = infl["student_resid"].to_numpy()
+        order = np.argsort(stud)
+        theo = stats.norm.ppf((np.arange(1, len(stud) + 1) - 0.375) / (len(stud) + 0.25))
+        qq_x = np.empty_like(theo)
+        qq_x[order] = theo
+        panels = [(fitted, resid, "fitted value", "residual"),
+                  (runs.astype(float), resid, "run order", "residual"),
+                  (qq_x, stud, "normal quantile", "ext. studentised residual")]
+        for ax, (x, y, xl, yl) in zip(row, panels):
+            ax.scatter(x, y, s=18, color="0.25", zorder=3)
+            ax.set_xlabel(xl)
+            ax.set_ylabel(yl)
+            ax.grid(alpha=0.3)
+        row[0].axhline(0, color="0.5", lw=0.8)
+        row[1].axhline(0, color="0.5", lw=0.8)
+        lim = np.nanmax(np.abs(np.concatenate([qq_x, stud[np.isfinite(stud)]]))) if len(stud) else 1.0
+        row[2].plot([-lim, lim], [-lim, lim], color="0.5", lw=0.8)
+        row[0].set_title(f"{fit.response}: residual vs fitted", fontsize=10)
+        row[1].set_title(f"{fit.response}: residual vs run order", fontsize=10)
+        row[2].set_title(f"{fit.response}: normal QQ", fontsize=10)
+        notes = []
+        for f in (res.findings if res is not None else []):
+            if f.cause == "outlier":
+                hit = runs == f.detail
+                for ax, (x, y, _, _) in zip(row, panels):
+                    ax.scatter(x[hit], y[hit], s=110, facecolors="none", edgecolors="tab:red", lw=1.5, zorder=4)
+                    for xi, yi in zip(x[hit], y[hit]):
+                        ax.annotate(f"run {f.detail}", (xi, yi), textcoords="offset points", xytext=(6, 6),
+                                    color="tab:red", fontsize=8)
+            elif f.cause == "drift":
+                slope, icpt = np.polyfit(runs.astype(float), resid, 1)
+                xs = np.array([runs.min(), runs.max()], dtype=float)
+                row[1].plot(xs, icpt + slope * xs, color="tab:red", lw=1.2)
+            label = {"missing_term": "missing term", "response_transform": "transform",
+                     "heteroscedasticity": "unequal scatter vs"}.get(f.cause, f.cause)
+            alias = " = " + " = ".join(f.aliases[1:]) if f.cause == "missing_term" and len(f.aliases) > 1 else ""
+            notes.append(f"{label} {f.detail}{alias} (p={f.p_value:.3g})")
+        text = "; ".join(notes) if notes else "nothing found"
+        row[0].text(0.02, 0.97, text, transform=row[0].transAxes, va="top", fontsize=8,
+                    color="tab:red" if notes else "0.3",
+                    bbox={"facecolor": "white", "alpha": 0.8, "edgecolor": "none"})
+    fig.suptitle(title)
+    return fig

@@ -65,13 +65,17 @@ def cubic_terms(n_factors: int) -> list[Term]:
 
 def model_matrix(x: np.ndarray, terms: list[Term]) -> np.ndarray:
     """Columns ``prod_i x_i**term_i`` for points ``x`` of shape (n, k)."""
-    x = np.asarray(x, dtype=float)
-    out = np.ones((x.shape[0], len(terms)))
+    cols = np.ascontiguousarray(np.asarray(x, dtype=float).T)  # one contiguous row per factor
+    out = np.empty((len(terms), cols.shape[1]))
     for j, term in enumerate(terms):
+        row = out[j]
+        row.fill(1.0)
         for i, power in enumerate(term):
-            if power:
-                out[:, j] *= x[:, i] ** power
-    return out
+            if power == 1:
+                row *= cols[i]
+            elif power > 1:
+                row *= cols[i] ** power
+    return out.T
 
 
 @dataclass(frozen=True)

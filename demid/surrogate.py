@@ -132,14 +132,14 @@ class Surrogate:
                 z[:, i] = np.log10(z[:, i])
         return z
 
-    def predict(self, points, chunk: int = 1_000_000) -> np.ndarray:
+    def predict(self, points, chunk: int = 65_536) -> np.ndarray:
         z = self.model_units(points)
         out = np.empty(z.shape[0])
         for start in range(0, z.shape[0], chunk):
             out[start:start + chunk] = model_matrix(z[start:start + chunk], self.terms) @ self.coefficients
         return out
 
-    def se_mean(self, points, chunk: int = 1_000_000) -> np.ndarray:
+    def se_mean(self, points, chunk: int = 65_536) -> np.ndarray:
         """Standard error of the fitted mean (statsmodels' ``mean_se``)."""
         z = self.model_units(points)
         out = np.empty(z.shape[0])

@@ -282,19 +282,95 @@ def _coded_to_actual_matrix(coding: Coding, terms: list[Term]) -> np.ndarray:
     return np.linalg.lstsq(model_matrix(coding.to_actual(pts), terms), model_matrix(pts, terms), rcond=None)[0]
 
 
+def _lack_of_fit_p(out: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    lof_f = np.asarray(out["lof_f"], dtype=float)
+    lof_p = np.full(lof_f.shape, np.nan)
+    ok = np.isfinite(lof_f)
+    if ok.any():
+        lof_p[ok] = stats.f.sf(lof_f[ok], out["_df_lof"][ok], out["_df_pe"][ok])
+    out["lof_p"] = lof_p
+    return out
+
+
+def _precision(text: str) -> int:
+    """Decimals the number needs (trailing zeros dropped): '0.2000' -> 1, '0.0757' -> 4."""
+    return len(text.partition(".")[2].rstrip("0"))
+
+
+def _irregularity(found_text: str, suggested_text: str, column_precision: int) -> int:
+    """-1 when a repair brings a cell printed with more decimals than its column back in line,
+    +1 when the repair needs more decimals than the column shows, else 0."""
+    if _precision(suggested_text) > column_precision:
+        return 1
+    return -1 if _precision(found_text) > column_precision else 0
+
+
+def _precision_elsewhere(texts: list[str | None]) -> np.ndarray:
+    """Per cell: the largest precision among the column's *other* cells (how the column is printed)."""
+    prec = np.array([_precision(t) if t is not None else -1 for t in texts])
+    if prec.size < 2:
+        return np.maximum(prec, 0)
+    top = np.sort(prec)[::-1]
+    out = np.where(prec == top[0], top[1], top[0])
+    return np.maximum(out, 0)
+
+
+def _statistics(sse, sst, press, ss_pe, n, p, rank, df_pe) -> dict[str, np.ndarray]:
+    """The published statistics from the sums of squares; arrays over hypotheses, definitions as in
+    :meth:`demid.surrogate.SurrogateFit.statistics` and :meth:`~demid.surrogate.SurrogateFit.anova`."""
+    sse, sst, press, ss_pe = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (sse, sst, press, ss_pe)))
+    n = np.broadcast_to(n, sse.shape)
+    df_res = n - np.broadcast_to(rank, sse.shape)
+    df_pe = np.broadcast_to(df_pe, sse.shape)
+    df_lof = df_res - df_pe
+    with np.errstate(divide="ignore", invalid="ignore"):
+        sst_ok = sst > 0
+        has_df = n > p
+        return {
+            "r2": np.where(sst_ok, 1.0 - sse / sst, np.nan),
+            "adj_r2": np.where(sst_ok & has_df, 1.0 - (sse / (n - p)) / (sst / (n - 1)), np.nan),
+            "rmse": np.sqrt(sse / n),
+            "resid_std": np.where(has_df, np.sqrt(sse / (n - p)), np.nan),
+            "q2": np.where(sst_ok, 1.0 - press / sst, np.nan),
+            "ss_model": sst - sse, "ss_residual": sse, "ss_lof": sse - ss_pe,
+            "ss_pure_error": ss_pe, "ss_total": sst,
+            "lof_f": np.where((df_lof > 0) & (df_pe > 0) & (ss_pe > 0),
+                              ((sse - ss_pe) / df_lof) / (ss_pe / df_pe), np.nan),
+            # lof_p is filled in by _lack_of_fit_p, in one vectorised call over all hypotheses.
+            "_df_lof": df_lof.astype(float), "_df_pe": df_pe.astype(float),
+        }
+
+
+def _add_coefficients(out: dict, beta: np.ndarray, to_actual: list | np.ndarray | None,
+                      coefficients: dict[str, tuple[str, int]]) -> dict:
+    """beta: (p, m) coded coefficients; to_actual: (p, p) map or one per hypothesis."""
+    if not coefficients:
+        return out
+    actual = None
+    if any(units == "actual" for units, _ in coefficients.values()):
+        if isinstance(to_actual, np.ndarray):
+            actual = to_actual @ beta
+        else:
+            actual = np.stack([m @ beta[:, i] for i, m in enumerate(to_actual)], axis=1)
+    for key, (units, index) in coefficients.items():
+        out[key] = (beta if units == "coded" else actual)[index]
+    return out
+
+
 class _DesignFit:
-    """Everything about one design (factor settings) that the fit statistics need.
+    """One design (factor settings) and everything the statistics need about it.
 
     ``evaluate(Y)`` returns the statistics for every column of ``Y`` (responses
     on this design) at once: the fit is linear in y, so residuals, PRESS
-    residuals, pure-error deviations and coefficients are matrix products.
+    residuals, pure-error deviations and coefficients are matrix products with
+    the pseudo-inverse, the hat matrix and the replicate-group projection.
     """
 
     def __init__(self, coded: np.ndarray, terms: list[Term], coding: Coding, need_actual: bool):
         x = model_matrix(coded, terms)
         n, p = x.shape
         u, s, vt = np.linalg.svd(x, full_matrices=False)
-        tol = (s.max() if s.size else 0.0) * max(n, p) * np.finfo(float).eps
+        tol = (s.max() if s.size else 0.0) * max(n, p) * np.finfo(float).eps  # numpy.linalg.matrix_rank's
         rank = int(np.sum(s > tol))
         self.x = x
         self.pinv = vt[:rank].T @ (u[:, :rank].T / s[:rank, None])
@@ -310,43 +386,47 @@ class _DesignFit:
 
     def evaluate(self, y: np.ndarray, coefficients: dict[str, tuple[str, int]]) -> dict[str, np.ndarray]:
         y = np.asarray(y, dtype=float)
-        n, p = self.n, self.p
         beta = self.pinv @ y
         resid = y - self.x @ beta
         sse = np.sum(resid ** 2, axis=0)
         sst = np.sum((y - y.mean(axis=0)) ** 2, axis=0)
         ss_pe = np.sum((y - self.group_mean @ y) ** 2, axis=0)
-        nan = np.full(sse.shape, np.nan)
         if np.all(self.hat < 1 - 1e-10):
             press = np.sum((resid / (1.0 - self.hat)[:, None]) ** 2, axis=0)
         else:
-            press = nan
-        df_res = n - self.rank
-        df_lof = df_res - self.df_pe
-        with np.errstate(divide="ignore", invalid="ignore"):
-            sst_ok = sst > 0
-            out = {
-                "r2": np.where(sst_ok, 1.0 - sse / sst, np.nan),
-                "adj_r2": np.where(sst_ok, 1.0 - (sse / (n - p)) / (sst / (n - 1)), np.nan) if n > p else nan,
-                "rmse": np.sqrt(sse / n),
-                "resid_std": np.sqrt(sse / (n - p)) if n > p else nan,
-                "q2": np.where(sst_ok, 1.0 - press / sst, np.nan),
-                "ss_model": sst - sse, "ss_residual": sse, "ss_lof": sse - ss_pe,
-                "ss_pure_error": ss_pe, "ss_total": sst,
-            }
-            if df_lof > 0 and self.df_pe > 0:
-                lof_f = np.where(ss_pe > 0, ((sse - ss_pe) / df_lof) / (ss_pe / self.df_pe), np.nan)
-                lof_p = np.full(lof_f.shape, np.nan)
-                ok = np.isfinite(lof_f)
-                lof_p[ok] = stats.f.sf(lof_f[ok], df_lof, self.df_pe)
-            else:
-                lof_f, lof_p = nan, nan
-        out["lof_f"], out["lof_p"] = lof_f, lof_p
-        if coefficients:
-            actual = self.to_actual @ beta if self.to_actual is not None else None
-            for key, (units, index) in coefficients.items():
-                out[key] = (beta if units == "coded" else actual)[index]
-        return out
+            press = np.full(sse.shape, np.nan)
+        out = _statistics(sse, sst, press, ss_pe, self.n, self.p, self.rank, self.df_pe)
+        return _add_coefficients(out, beta, self.to_actual, coefficients)
+
+
+def _evaluate_designs(coded: np.ndarray, y: np.ndarray, terms: list[Term], to_actual: list | None,
+                      coefficients: dict[str, tuple[str, int]]) -> dict[str, np.ndarray]:
+    """Statistics of one response ``y`` (n,) on many designs ``coded`` (m, n, k), in one batched SVD."""
+    m, n, _ = coded.shape
+    x = np.stack([model_matrix(c, terms) for c in coded])
+    p = x.shape[2]
+    u, s, vt = np.linalg.svd(x, full_matrices=False)
+    keep = s > s.max(axis=1, keepdims=True) * max(n, p) * np.finfo(float).eps
+    rank = keep.sum(axis=1)
+    u = u * keep[:, None, :]
+    uty = np.einsum("mnq,n->mq", u, y)
+    with np.errstate(divide="ignore"):
+        s_inv = np.where(keep, 1.0 / s, 0.0)
+    beta = np.einsum("mqp,mq->pm", vt, s_inv * uty)
+    resid = y[None, :] - np.einsum("mnq,mq->mn", u, uty)
+    hat = np.sum(u ** 2, axis=2)
+    sse = np.sum(resid ** 2, axis=1)
+    sst = np.full(m, np.sum((y - y.mean()) ** 2))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        press = np.where(np.all(hat < 1 - 1e-10, axis=1), np.sum((resid / (1.0 - hat)) ** 2, axis=1), np.nan)
+    # Replicates: same coded point after rounding to 6 decimals, as demid.design.replicate_groups.
+    keys = np.round(coded, 6)
+    same = np.all(keys[:, :, None, :] == keys[:, None, :, :], axis=3)
+    size = same.sum(axis=2)
+    ss_pe = np.sum((y[None, :] - (same @ y) / size) ** 2, axis=1)
+    df_pe = n - np.rint(np.sum(1.0 / size, axis=1)).astype(int)
+    out = _statistics(sse, sst, press, ss_pe, n, p, rank, df_pe)
+    return _add_coefficients(out, beta, to_actual, coefficients)
 
 
 # --------------------------------------------------------------------------- design levels
@@ -380,15 +460,34 @@ def _estimate_coding(column: np.ndarray, nominal: np.ndarray, alpha: float, deci
     return float(centre[best, 0]), float(unit[best, 0])
 
 
-def _valid_levels(column: np.ndarray, design_type: str, alpha: float, decimals: int,
-                  fixed: tuple[float, float] | None) -> tuple[np.ndarray, float]:
-    """Levels a factor may take (model units) and its unit: nominal levels of the design, plus
-    every value the column holds more than once."""
+def _design_levels(column: np.ndarray, design_type: str, alpha: float, decimals: int,
+                   fixed: tuple[float, float] | None) -> tuple[np.ndarray, float]:
+    """Nominal levels of the declared design for one factor column (model units), and its unit."""
     nominal = nominal_levels(design_type, alpha)
     centre, unit = fixed if fixed is not None else _estimate_coding(column, nominal, alpha, decimals)
-    values, counts = np.unique(column, return_counts=True)
-    levels = np.concatenate([centre + unit * nominal, values[counts >= 2]])
-    return np.unique(levels), abs(unit)
+    return centre + unit * nominal, abs(unit)
+
+
+def _levels_for_cell(column: np.ndarray, row: int, nominal: np.ndarray, tolerance: float):
+    """Values a cell may be repaired to: (exact, approximate) levels.
+
+    A nominal level that another cell of the column prints is only reachable as
+    exactly that printed value; a nominal level no other cell shows (an axial
+    point, say) is reachable within ``tolerance``.  Values the other cells repeat
+    are exact levels too (designs off the nominal grid).
+    """
+    others = np.delete(column, row)
+    exact, loose = [], []
+    for level in nominal:
+        near = others[np.abs(others - level) <= tolerance]
+        if near.size:
+            values, counts = np.unique(near, return_counts=True)
+            exact.append(values[np.argmax(counts)])
+        else:
+            loose.append(level)
+    values, counts = np.unique(others, return_counts=True)
+    exact.extend(values[counts >= 2])
+    return np.unique(np.array(exact, dtype=float)), np.array(loose, dtype=float)
 
 
 # --------------------------------------------------------------------------- results
@@ -515,7 +614,8 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
         code = coding if coding is not None else Coding.from_levels(factors, z_table, alpha)
         return _DesignFit(code.to_coded(z_table[fit_rows]), terms, code, need_actual)
 
-    base = design_for(z).evaluate(y[:, None], coef_index)
+    table_design = design_for(z)
+    base = _lack_of_fit_p(table_design.evaluate(y[:, None], coef_index))
     reproduced = {name: float(base[name][0]) for name in targets}
     agrees = {name: bool(targets[name].agrees(reproduced[name])) for name in targets}
     published_values = {name: t.value for name, t in targets.items()}
@@ -532,79 +632,96 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
                                       f"of '{response}' to the printed decimals")
 
     texts = _cell_texts(table, printed, [*factors, response], source)
-    columns = list(table.columns)
-    names = list(targets)
-    records: list[tuple] = []  # (row, column, found_text, found, suggested_text, suggested, kind)
+    column_order = {name: i for i, name in enumerate(table.columns)}
+    # (row, column, found_text, found, suggested_text, suggested, kind, _irregularity)
+    records: list[tuple] = []
     blocks: list[dict[str, np.ndarray]] = []
 
     # Response cells: one column of Y per hypothesis, all evaluated at once.
-    fit_positions = np.flatnonzero(fit_rows)
+    precision = _precision_elsewhere(texts[response])
     y_columns = []
-    for i, row in enumerate(fit_positions):
+    for i, row in enumerate(np.flatnonzero(fit_rows)):
         text = texts[response][row]
         if text is None:
             continue
         for kind, cand_text, value in single_cell_slips(text):
             y_columns.append((i, value))
-            records.append((row, response, text, y_all[row], cand_text, value, kind))
+            records.append((row, response, text, y_all[row], cand_text, value, kind,
+                            _irregularity(text, cand_text, precision[row])))
     if y_columns:
         ymat = np.repeat(y[:, None], len(y_columns), axis=1)
-        idx = np.array([i for i, _ in y_columns])
-        ymat[idx, np.arange(len(y_columns))] = [v for _, v in y_columns]
-        blocks.append(design_for(z).evaluate(ymat, coef_index))
+        ymat[[i for i, _ in y_columns], np.arange(len(y_columns))] = [v for _, v in y_columns]
+        blocks.append(table_design.evaluate(ymat, coef_index))
 
-    # Factor cells: refit only repairs that land on a valid design level.
+    # Factor cells: refit (batched) only repairs that land on a valid design level.
+    repaired: list[np.ndarray] = []
+    repaired_codings: list[Coding] = []
     for j, name in enumerate(factors):
-        fixed = None
-        if coding is not None:
-            fixed = (float(coding.center[j]), float(coding.unit[j]))
-        column_decimals = max((_decimals_of(t) for t in texts[name] if t is not None), default=0)
-        levels, unit = _valid_levels(z[:, j], design_type, alpha, column_decimals, fixed)
+        precision = _precision_elsewhere(texts[name])
+        fixed = (float(coding.center[j]), float(coding.unit[j])) if coding is not None else None
+        column_precision = int(np.sort(precision)[len(precision) // 2]) if len(precision) else 0
+        nominal, unit = _design_levels(z[:, j], design_type, alpha, column_precision, fixed)
+        is_log = name in log_factors
         for row in range(len(z)):
             text = texts[name][row]
-            if text is None or levels.size == 0:
+            if text is None:
                 continue
-            # One repair per design level: the reading printed like the cell, then nearest the level.
+            # Printed levels are off by up to half a unit in the column's last place;
+            # 3e-4 coded units more allow for an alpha given to fewer digits than the table.
+            half = 0.5 * 10.0 ** (-precision[row])
+            if is_log:
+                half /= max(float(x_actual[row, j]), 1e-300) * math.log(10)
+            exact, loose = _levels_for_cell(z[:, j], row, nominal, half + 3e-4 * unit)
+            slips = [sl for sl in single_cell_slips(text) if not is_log or sl[2] > 0]
+            if not slips or exact.size + loose.size == 0:
+                continue
+            values = np.array([value for _, _, value in slips])
+            model_values = np.log10(values) if is_log else values
+            levels = np.concatenate([exact, loose])
+            tolerance = np.concatenate([1e-12 * np.maximum(1.0, np.abs(exact)),
+                                        np.full(loose.size, half + 3e-4 * unit)])
+            gaps = np.abs(model_values[:, None] - levels[None, :])
+            ok = gaps <= tolerance[None, :]
+            # A cell found off every design level is itself irregular: its repairs come first in ties.
+            off_grid = bool(np.all(np.abs(z[row, j] - levels) > tolerance))
+            # One repair per design level: printed like the column, then nearest the level, then kind.
             per_level: dict[int, tuple] = {}
-            for kind, cand_text, value in single_cell_slips(text):
-                if name in log_factors:
-                    if value <= 0:
-                        continue
-                    model_value = math.log10(value)
-                else:
-                    model_value = value
-                # A level printed with d decimals is off by up to half a unit in the last place.
-                cand_decimals = _decimals_of(cand_text)
-                print_tol = 0.5 * 10.0 ** (-cand_decimals)
-                if name in log_factors:
-                    print_tol /= value * math.log(10)
-                gaps = np.abs(levels - model_value)
-                level = int(np.argmin(gaps))
-                if gaps[level] > print_tol + 1e-3 * unit:
-                    continue
-                key = (abs(cand_decimals - _decimals_of(text)), gaps[level], _KIND_RANK[kind])
+            for c, level in zip(*np.nonzero(ok)):
+                kind, cand_text, value = slips[c]
+                over = _irregularity(text, cand_text, precision[row])
+                if off_grid and over == 0:
+                    over = -1
+                key = (over, gaps[c, level], _KIND_RANK[kind])
                 if level not in per_level or key < per_level[level][0]:
-                    per_level[level] = (key, kind, cand_text, value, model_value)
-            for _, kind, cand_text, value, model_value in per_level.values():
+                    per_level[level] = (key, kind, cand_text, value, float(model_values[c]), over)
+            for _, kind, cand_text, value, model_value, over in per_level.values():
                 z_new = z.copy()
                 z_new[row, j] = model_value
-                blocks.append(design_for(z_new).evaluate(y[:, None], coef_index))
-                records.append((row, name, text, x_actual[row, j], cand_text, value, kind))
+                code = coding if coding is not None else Coding.from_levels(factors, z_new, alpha)
+                repaired.append(code.to_coded(z_new[fit_rows]))
+                repaired_codings.append(code)
+                records.append((row, name, text, x_actual[row, j], cand_text, value, kind, over))
+    if repaired:
+        to_actual = [_coded_to_actual_matrix(c, terms) for c in repaired_codings] if need_actual else None
+        blocks.append(_evaluate_designs(np.stack(repaired), y, terms, to_actual, coef_index))
 
     if not records:
         return result(False, [], False, _unexplained_message(response, targets, reproduced, agrees, 0, 0), 0)
-    values = {name: np.concatenate([np.atleast_1d(b[name]) for b in blocks]) for name in names}
+    values = _lack_of_fit_p({key: np.concatenate([np.atleast_1d(b[key]) for b in blocks]) for key in blocks[0]})
     restores = np.zeros(len(records), dtype=int)
     misfit = np.zeros(len(records))
-    for name in names:
+    for name in targets:
         restores += targets[name].agrees(values[name])
         misfit += targets[name].misfit(values[name])
     # Round the continuous tie-break so that symmetric repairs fall through to kind, row and column.
-    misfit_key = np.round(misfit, 9)
-    kind_key = np.array([_KIND_RANK[r[6]] for r in records])
-    row_key = np.array([r[0] for r in records])
-    col_key = np.array([columns.index(r[1]) for r in records])
-    order = np.lexsort((col_key, row_key, kind_key, misfit_key, -restores))
+    order = np.lexsort((
+        [column_order[r[1]] for r in records],
+        [r[0] for r in records],
+        [_KIND_RANK[r[6]] for r in records],
+        np.round(misfit, 9),
+        [r[7] for r in records],
+        -restores,
+    ))
 
     full = order[restores[order] == n_pub]
     explained = bool(full.size)

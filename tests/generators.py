@@ -119,6 +119,7 @@ def ccd_table(seed: int, n_factors: int = 2, kind: str = "clean", size: float = 
 
 # --------------------------------------------------------------------------- level 2
 MORTAR_OBSERVABLES = ("d5", "d10", "d15")
+EXTENDED_OBSERVABLES = ("d5", "d10", "d15", "d20")
 
 
 @dataclass(frozen=True)
@@ -132,12 +133,13 @@ class Level2Case:
 
 
 def mortar_case(seed: int, biased: str | None = None, shift: float = 4.0,
-                tolerance: float = 0.02) -> Level2Case:
+                tolerance: float = 0.02, observables: tuple[str, ...] = MORTAR_OBSERVABLES) -> Level2Case:
     """Three mortar-like diameter surrogates, targets met exactly at a random interior point.
 
     The diameters grow with the stroke number and depend on rolling friction and
     surface energy with gradient directions about 25-30 degrees apart (the
-    sequence is informative but correlated, as in the source study).  With
+    sequence is informative but correlated, as in the source study).  ``observables``
+    may add a fourth reading (``EXTENDED_OBSERVABLES``).  With
     ``biased`` set, that observable's target is shifted by ``shift * tolerance``
     (relative, random sign): the hidden discrepancy.
     """
@@ -149,7 +151,7 @@ def mortar_case(seed: int, biased: str | None = None, shift: float = 4.0,
     terms = quadratic_terms(2)
     base = rng.uniform(-0.4, 0.4)
     surrogates = {}
-    for i, name in enumerate(MORTAR_OBSERVABLES):
+    for i, name in enumerate(observables):
         angle = np.deg2rad(-60.0 + 28.0 * i + rng.normal(0, 3.0))
         level = 110.0 + 10.0 * i
         slope = 0.12 * level

@@ -124,8 +124,9 @@ def test_robust_identifiability_frame_contract(mortar_like):
     _, surrogates, domain, targets = mortar_like
     scenarios = {"d15_only": (["d15"], 0.02), "full_sequence": (["d5", "d10", "d15"], 0.02)}
     frame = unc.robust_identifiability_frame(surrogates, domain, scenarios, targets, 61, z=2.0)
-    assert list(frame.columns) == unc.ROBUST_COLUMNS
+    assert list(frame.columns[:13]) == unc.ROBUST_COLUMNS
     assert len(frame) == 4
+    assert (frame["strict_fraction_error_pct"] < 0.01 * frame["strict_fraction_pct"]).all()
     assert (frame["robust_fraction_pct"] >= frame["strict_fraction_pct"]).all()
     assert (frame["robust_width"] >= frame["strict_width"] - 1e-12).all()
 
@@ -300,10 +301,64 @@ def test_sobol_interval_covers_exact_4d_ball_and_shell(eps):
     exact = np.pi ** 2 / 2 * target ** 2 * ((1 + eps) ** 2 - max(1 - eps, 0.0) ** 2)
     covered = 0
     for seed in range(20):
-        res = unc.sobol_fraction(sur, domain, ["y"], {"y": target}, eps, 2 ** 16, seed)
+        res = unc.sobol_fraction(sur, domain, ["y"], {"y": target}, eps, 2 ** 16, seed, polish=seed == 19)
         covered += res.ci_lower <= exact <= res.ci_upper
         assert res.ci_upper - res.ci_lower < 0.05 * exact
     assert covered >= 17  # nominal 95 %: P(covered <= 16 of 20) is 1.6 %
     assert res.evaluations == 2 ** 16 and res.points_per_replicate == 2 ** 12
     assert res.upper[0] == pytest.approx(0.5 + np.sqrt(target * (1 + eps)), abs=1e-7)  # polished
     assert res.lower[3] == pytest.approx(0.52 - np.sqrt(target * (1 + eps)), abs=1e-7)
+
+
+def test_qmc_posterior_above_three_factors_matches_truncated_normal():
+    factors = ("a", "b", "c", "d")
+    domain = Domain(factors, (0.0, 0.0, 0.0, 0.0), (10.0, 1.0, 1.0, 1.0))
+    sur = {"y": linear(2.0, [3.0, 0.0, 0.0, 0.0], 0.25, factors)}
+    mu, sd = 0.8, np.sqrt(1.5 ** 2 + 0.25) / 3.0
+    exact = stats.truncnorm((0.0 - mu) / sd, (10.0 - mu) / sd, loc=mu, scale=sd)
+    post = unc.subset_posteriors(sur, domain, ["y"], {"y": 2.0 + 3.0 * mu}, {"y": 1.5}, 51, seed=1)[("y",)]
+    assert post.information_gain_bits == pytest.approx((np.log(10.0) - exact.entropy()) / np.log(2), rel=1e-4)
+    assert post.information_gain_error_bits < 1e-3
+    assert_allclose([post.credible_lower[0], post.credible_upper[0]], exact.ppf([0.025, 0.975]), atol=2e-3)
+    assert post.mean[0] == pytest.approx(exact.mean(), rel=1e-4)
+    assert_allclose(post.mean[1:], 0.5, atol=1e-3)
+
+
+# --------------------------------------------------------------------------- one material end to end
+def _material_cfg(factors: dict, responses: dict, scenarios: dict) -> dict:
+    return {"factors": factors, "responses": responses, "scenarios": scenarios}
+
+
+def test_analyse_material_two_factors(mortar_like):
+    _, surrogates, domain, targets = mortar_like
+    cfg = _material_cfg(
+        {f: {"lower": lo, "upper": hi, "label": f.upper()} for f, lo, hi in zip(domain.factors, domain.lower,
+                                                                                 domain.upper)},
+        {"d5": {"target": targets["d5"], "sigma": 0.5}, "d10": {"target": targets["d10"]},
+         "d15": {"target": targets["d15"], "sigma_rel": 0.004, "label": "d_15"}},
+        {"d15_only": {"observables": ["d15"], "tolerance": 0.02},
+         "full_sequence": {"observables": ["d5", "d10", "d15"], "tolerance": 0.02}})
+    result = unc.analyse_material(surrogates, cfg, tolerances=[0.01, 0.05],
+                                  sizes={"robust": 61, "sweep": 41, "posterior": 61})
+    assert list(result.robust.columns[:13]) == unc.ROBUST_COLUMNS and len(result.robust) == 4
+    assert set(result.sweep["tolerance"]) == {0.01, 0.02, 0.05}
+    assert len(result.ranking) == 7 and len(result.information_gain) == 14
+    assert "config sigma = 0.5" in result.notes[0] and "tolerance/2" in result.notes[1]
+    assert "d_15" in result.advice
+    assert len(result.sweep_figure("t").axes) == 3 and len(result.posterior_figure("t").axes) == 2
+
+
+def test_analyse_material_four_factors_uses_sobol():
+    factors = ("a", "b", "c", "d")
+    sur = {"y": ring([0.5, 0.5, 0.49, 0.52], factors)}
+    cfg = _material_cfg({f: {"lower": 0.0, "upper": 1.0} for f in factors}, {"y": {"target": 0.09}},
+                        {"shell": {"observables": ["y"], "tolerance": 0.5}})
+    result = unc.analyse_material(sur, cfg, tolerances=[0.2],
+                                  sizes={"robust": 2 ** 12, "sweep": 2 ** 10, "posterior": 21,
+                                         "posterior_points": 2 ** 12})
+    exact = np.pi ** 2 / 2 * 0.09 ** 2 * (1.5 ** 2 - 0.5 ** 2)
+    row = result.robust.iloc[0]
+    assert row["strict_fraction_pct"] == pytest.approx(100 * exact, abs=4 * row["strict_fraction_error_pct"])
+    assert row["robust_fraction_pct"] == row["strict_fraction_pct"]  # exact surrogate: no se_mean
+    assert row["strict_upper"] == pytest.approx(0.5 + np.sqrt(0.09 * 1.5), abs=1e-6)
+    assert "Sobol" in result.notes[2] and result.ranking["information_gain_bits"].iloc[0] > 0

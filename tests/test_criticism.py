@@ -1,0 +1,380 @@
+"""Model criticism: hidden effects must be found and named, clean tables must stay quiet.
+
+Effect sizes used below are where the benchmark (benchmarks/criticism_power.py)
+gives a naming rate close to 1 for the design; smaller effects are named less
+often, as the benchmark reports.  The reference computations use statsmodels
+and scipy directly.
+"""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pandas as pd
+import pytest
+import statsmodels.api as sm
+from scipy import optimize, special
+from statsmodels.stats.diagnostic import het_breuschpagan
+from statsmodels.tools.eval_measures import aicc
+
+from demid.admissibility import Domain, admissible_set
+from demid.criticism import (CAUSES, calibration_check, criticize, infer_axial_distance, residual_figure,
+                             separating_runs)
+from demid.design import Coding, model_matrix, parse_term, quadratic_terms
+from demid.surrogate import fit_response
+
+from generators import EXTENDED_OBSERVABLES, FACTORS, ccd_table, design, mortar_case
+
+SEEDS = range(5)
+
+
+def coded_of(table, factors):
+    x = table[factors].to_numpy(float)
+    alpha = infer_axial_distance(x)
+    return Coding.from_levels(factors, x, alpha).to_coded(x), alpha
+
+
+def quadratic_ols(table, factors, response="y", extra=None, rows=None):
+    coded, _ = coded_of(table, factors)
+    x = model_matrix(coded, quadratic_terms(len(factors)))
+    if extra is not None:
+        x = np.column_stack([x, extra])
+    y = table[response].to_numpy(float)
+    if rows is not None:
+        x, y = x[rows], y[rows]
+    return sm.OLS(y, x).fit()
+
+
+# --------------------------------------------------------------------------- design aliasing
+def test_axial_distance_is_inferred_from_levels():
+    for k in (2, 3):
+        table, _ = ccd_table(0, k)
+        assert infer_axial_distance(table[FACTORS[k]].to_numpy(float)) == pytest.approx(design(k)[3], rel=1e-5)
+    face, _ = ccd_table(0, 2, alpha=1.0)
+    assert infer_axial_distance(face[FACTORS[2]].to_numpy(float)) == 1.0
+
+
+def test_alias_sets_of_a_two_factor_ccd():
+    table, _ = ccd_table(0, 2)
+    sets = {a.representative: a for a in criticize(table, FACTORS[2], "y").alias_sets}
+    assert set(sets) == {"mu_r^3", "gamma^3"}
+    assert sets["gamma^3"].members == ("gamma^3", "mu_r^2:gamma")
+    assert sets["mu_r^3"].members == ("mu_r^3", "mu_r:gamma^2")
+    # The proposed extra run really separates the two: the columns become independent.
+    coded, alpha = coded_of(table, FACTORS[2])
+    terms = quadratic_terms(2) + [parse_term(t, FACTORS[2]) for t in sets["gamma^3"].members]
+    assert np.linalg.matrix_rank(model_matrix(coded, terms)) == len(terms) - 1
+    extra = np.array([[p[f] for f in FACTORS[2]] for p in sets["gamma^3"].extra_runs])
+    extra_coded = Coding.from_levels(FACTORS[2], table[FACTORS[2]].to_numpy(float), alpha).to_coded(extra)
+    assert np.linalg.matrix_rank(model_matrix(np.vstack([coded, extra_coded]), terms)) == len(terms)
+
+
+def test_alias_sets_of_a_three_factor_and_a_face_centred_ccd():
+    table, _ = ccd_table(1, 3)
+    sets = {a.representative: a for a in criticize(table, FACTORS[3], "y").alias_sets}
+    assert sets["gamma^3"].members == ("gamma^3", "mu_s^2:gamma", "mu_r^2:gamma")
+    assert sets["mu_s:mu_r:gamma"].members == ("mu_s:mu_r:gamma",)
+    assert all(a.testable for a in sets.values()) and len(sets) == 4
+    assert len(sets["gamma^3"].extra_runs) == 2  # three aliased terms need two extra runs
+
+    face, _ = ccd_table(1, 2, alpha=1.0)
+    sets = {a.representative: a for a in criticize(face, FACTORS[2], "y").alias_sets}
+    # In a face-centred CCD a^3 coincides with a; the mixed terms stay estimable.
+    assert not sets["mu_r^3"].testable and sets["mu_r:gamma^2"].testable
+    coded, _ = coded_of(face, FACTORS[2])
+    pts = separating_runs(coded, quadratic_terms(2), [parse_term("mu_r^3", FACTORS[2])], 1.0)
+    assert len(pts) == 1 and np.abs(pts[0, 0]) == pytest.approx(0.5)
+
+
+# --------------------------------------------------------------------------- statistics vs statsmodels
+def test_catalogue_statistics_match_statsmodels():
+    table, _ = ccd_table(7, 2, "term", 3.0, term="gamma^3")
+    res = criticize(table, FACTORS[2], "y")
+    cat = {(c["cause"], c["detail"]): c for c in res.catalogue}
+    coded, _ = coded_of(table, FACTORS[2])
+    base = quadratic_ols(table, FACTORS[2])
+    for term in ("gamma^3", "mu_r^3"):
+        ext = quadratic_ols(table, FACTORS[2], extra=model_matrix(coded, [parse_term(term, FACTORS[2])]))
+        f, p, _ = ext.compare_f_test(base)
+        assert cat[("missing_term", term)]["statistic"] == pytest.approx(f, rel=1e-8)
+        assert cat[("missing_term", term)]["p_nominal"] == pytest.approx(p, rel=1e-6)
+    run = table["run"].to_numpy(float)
+    f, p, _ = quadratic_ols(table, FACTORS[2], extra=run).compare_f_test(base)
+    assert cat[("drift", "run")]["statistic"] == pytest.approx(f, rel=1e-8)
+    out = np.asarray(base.outlier_test(method="bonf"))
+    i = int(np.argmax(np.abs(out[:, 0])))
+    entry = next(c for c in res.catalogue if c["cause"] == "outlier")
+    assert entry["detail"] == table["run"].iloc[i]
+    assert entry["statistic"] == pytest.approx(out[i, 0], rel=1e-8)
+    assert entry["p_nominal"] == pytest.approx(out[i, 2], rel=1e-6)
+    r = base.resid / np.sqrt(1 - base.get_influence().hat_matrix_diag)
+    alpha = infer_axial_distance(table[FACTORS[2]].to_numpy(float))
+    for j, name in enumerate(FACTORS[2]):
+        lm = het_breuschpagan(r, sm.add_constant(coded[:, j] / alpha), robust=False)[0]
+        assert cat[("heteroscedasticity", name)]["statistic"] == pytest.approx(lm, rel=1e-8)
+    y = table["y"].to_numpy(float)
+    x = base.model.exog
+
+    def profile(lam):
+        return -0.5 * len(y) * np.log(sm.OLS(special.boxcox(y, lam), x).fit().ssr / len(y)) \
+            + (lam - 1) * np.log(y).sum()
+
+    grid = np.round(np.arange(-2, 2.0001, 0.05), 10)
+    lr = 2 * (max(profile(v) for v in grid) - profile(1.0))
+    assert cat[("response_transform", "boxcox")]["statistic"] == pytest.approx(lr, rel=1e-6)
+
+
+def test_baseline_numbers_match_the_surrogate_fit_and_statsmodels():
+    table, _ = ccd_table(2, 3)
+    res = criticize(table, FACTORS[3], "y")
+    fit = fit_response(table, FACTORS[3], "y", alpha=design(3)[3])
+    st = fit.statistics()
+    ols = quadratic_ols(table, FACTORS[3])
+    press = ols.get_influence().resid_press
+    assert res.baseline["r2"] == pytest.approx(st.r2)
+    assert res.baseline["rmse"] == pytest.approx(st.rmse)
+    assert res.baseline["loo_rmse"] == pytest.approx(np.sqrt(np.mean(press ** 2)))
+    assert res.baseline["aicc"] == pytest.approx(aicc(ols.llf, ols.nobs, ols.df_model + 2))
+    assert res.baseline["lof_p"] == pytest.approx(st.lof_p)
+
+
+# --------------------------------------------------------------------------- hidden effects
+PLANTS = [  # (kind, n_factors, size, extra generator arguments)
+    ("term", 2, 8.0, {}),
+    ("term", 3, 6.0, {}),
+    ("log", 2, 3.0, {}),
+    ("log", 3, 2.0, {}),
+    ("outlier", 2, 30.0, {}),
+    ("outlier", 3, 20.0, {}),
+    ("drift", 2, 14.0, {}),
+    ("drift", 3, 10.0, {}),
+    ("het", 3, 1000.0, {}),
+]
+CAUSE_OF = {"term": "missing_term", "log": "response_transform", "outlier": "outlier", "drift": "drift",
+            "het": "heteroscedasticity"}
+
+
+@pytest.mark.parametrize("kind,k,size,kwargs", PLANTS, ids=[f"{p[0]}-{p[1]}f" for p in PLANTS])
+def test_planted_effect_is_named(kind, k, size, kwargs):
+    for seed in SEEDS:
+        table, planted = ccd_table(100 + seed, k, kind, size, **kwargs)
+        res = criticize(table, FACTORS[k], "y")
+        assert res.findings, f"seed {seed}: nothing found for {planted}"
+        first = res.findings[0]
+        assert first.cause == CAUSE_OF[kind], (seed, planted, first.message)
+        if kind == "term":
+            assert planted.term in first.aliases and first.detail == first.aliases[0]
+        elif kind == "log":
+            assert first.detail == "log", first.message
+        elif kind == "outlier":
+            assert first.detail == planted.run
+        elif kind == "drift":
+            assert first.detail == "run"
+        elif kind == "het":
+            assert first.detail == planted.factor
+        assert first.p_value <= res.family_alpha
+        assert 0 < first.p_value <= 1 and first.message.startswith("y: ")
+
+
+def test_clean_tables_stay_quiet():
+    """Family-wise error 5 %: at most 3 of 30 clean tables may show a finding (P(>3) ~ 0.06)."""
+    alarms = []
+    for seed in range(30):
+        k = 2 if seed % 2 else 3
+        table, _ = ccd_table(200 + seed, k)
+        res = criticize(table, FACTORS[k], "y")
+        if res.findings:
+            alarms.append((seed, res.findings[0].cause))
+        else:
+            assert res.extended == res.baseline
+            assert res.gain["loo_rmse_ratio"] == 1.0 and res.gain["delta_aicc"] == 0.0
+            assert res.to_frame().empty
+    assert len(alarms) <= 3, alarms
+
+
+# --------------------------------------------------------------------------- gains and extensions
+def test_missing_term_extension_and_gain():
+    table, planted = ccd_table(11, 2, "term", 8.0, term="mu_r^2:gamma")
+    res = criticize(table, FACTORS[2], "y")
+    f = res.findings[0]
+    assert f.detail == "gamma^3" and f.aliases == ["gamma^3", "mu_r^2:gamma"]
+    assert "aliased with mu_r^2:gamma" in f.message and "Extra runs at" in f.message
+    coded, _ = coded_of(table, FACTORS[2])
+    ext = quadratic_ols(table, FACTORS[2], extra=model_matrix(coded, [parse_term("gamma^3", FACTORS[2])]))
+    base = quadratic_ols(table, FACTORS[2])
+    loo_ext = np.sqrt(np.mean(ext.get_influence().resid_press ** 2))
+    loo_base = np.sqrt(np.mean(base.get_influence().resid_press ** 2))
+    assert f.loo_rmse_extended == pytest.approx(loo_ext) and f.loo_rmse_baseline == pytest.approx(loo_base)
+    assert res.gain["loo_rmse_ratio"] == pytest.approx(loo_ext / loo_base)
+    assert res.gain["delta_aicc"] == pytest.approx(aicc(ext.llf, 13, 8) - aicc(base.llf, 13, 7))
+    assert res.extended["terms"][-1] == "gamma^3"
+    x = table[FACTORS[2]].to_numpy(float)
+    assert_pred = res.extended_surrogate().predict(x)
+    np.testing.assert_allclose(assert_pred, ext.fittedvalues, rtol=1e-9)
+
+
+def test_outlier_gain_is_compared_on_the_other_runs():
+    table, planted = ccd_table(12, 2, "outlier", 30.0)
+    res = criticize(table, FACTORS[2], "y")
+    f = res.findings[0]
+    assert (f.cause, f.detail) == ("outlier", planted.run)
+    others = (table["run"] != planted.run).to_numpy()
+    base = quadratic_ols(table, FACTORS[2])
+    refit = quadratic_ols(table, FACTORS[2], rows=others)
+    assert f.compared_runs == 12
+    assert f.loo_rmse_baseline == pytest.approx(np.sqrt(np.mean(base.get_influence().resid_press[others] ** 2)))
+    assert f.loo_rmse_extended == pytest.approx(np.sqrt(np.mean(refit.get_influence().resid_press ** 2)))
+    assert res.extended["excluded_runs"] == [planted.run] and res.extended["n_runs"] == 12
+    np.testing.assert_allclose(res.extended_surrogate().predict(table[FACTORS[2]].to_numpy(float)[others]),
+                               refit.fittedvalues, rtol=1e-9)
+    assert f"run {planted.run} does not fit" in f.message
+
+
+def test_transform_extension_back_transforms_and_counts_the_jacobian():
+    table, _ = ccd_table(13, 2, "log", 3.0)
+    res = criticize(table, FACTORS[2], "y")
+    f = res.findings[0]
+    assert (f.cause, f.detail) == ("response_transform", "log")
+    y = table["y"].to_numpy(float)
+    log_fit = quadratic_ols(table.assign(y=np.log(y)), FACTORS[2])
+    np.testing.assert_allclose(res.extended_surrogate().predict(table[FACTORS[2]].to_numpy(float)),
+                               np.exp(log_fit.fittedvalues), rtol=1e-9)
+    llf_original_scale = log_fit.llf - np.log(y).sum()
+    assert res.extended["aicc"] == pytest.approx(aicc(llf_original_scale, 13, 8))  # 6 + sigma + lambda
+    assert res.extended["transform"] == "log"
+    loo = np.exp(np.log(y) - log_fit.get_influence().resid_press)
+    assert res.extended["loo_rmse"] == pytest.approx(np.sqrt(np.mean((y - loo) ** 2)))
+
+
+def test_drift_extension_predicts_at_the_mean_run_order():
+    table, _ = ccd_table(14, 2, "drift", 14.0)
+    res = criticize(table, FACTORS[2], "y")
+    assert res.findings[0].cause == "drift"
+    run = table["run"].to_numpy(float)
+    ext = quadratic_ols(table, FACTORS[2], extra=run - run.mean())
+    coded, _ = coded_of(table, FACTORS[2])
+    expected = model_matrix(coded, quadratic_terms(2)) @ ext.params[:-1]
+    np.testing.assert_allclose(res.extended_surrogate().predict(table[FACTORS[2]].to_numpy(float)), expected,
+                               rtol=1e-9)
+    assert res.findings[0].info["drift_per_run"] == pytest.approx(ext.params[-1])
+
+
+def test_heteroscedasticity_extension_is_maximum_likelihood_wls():
+    table, planted = ccd_table(101, 3, "het", 1000.0)
+    res = criticize(table, FACTORS[3], "y")
+    f = res.findings[0]
+    assert (f.cause, f.detail) == ("heteroscedasticity", planted.factor)
+    coded, alpha = coded_of(table, FACTORS[3])
+    v = coded[:, FACTORS[3].index(planted.factor)] / alpha
+    x = model_matrix(coded, quadratic_terms(3))
+    y = table["y"].to_numpy(float)
+
+    def negll(g):
+        return -sm.WLS(y, x, weights=np.exp(-g * v)).fit().llf
+
+    g = optimize.minimize_scalar(negll, bounds=(-5, 5), method="bounded", options={"xatol": 1e-6}).x
+    assert f.info["sd_ratio"] == pytest.approx(np.exp(g), rel=1e-3)
+    assert res.extended["aicc"] == pytest.approx(aicc(-negll(g), 20, 12), rel=1e-6)
+    assert res.extended["weighting"] == planted.factor
+
+
+def test_extended_surrogate_feeds_admissible_set():
+    table, _ = ccd_table(13, 2, "log", 3.0)
+    res = criticize(table, FACTORS[2], "y")
+    sur = res.extended_surrogate()
+    x = table[FACTORS[2]].to_numpy(float)
+    domain = Domain(tuple(FACTORS[2]), tuple(x.min(axis=0)), tuple(x.max(axis=0)))
+    target = float(np.median(table["y"]))
+    before = admissible_set({"y": res.baseline_surrogate()}, domain, ["y"], {"y": target}, 0.05, 41)
+    after = admissible_set({"y": sur}, domain, ["y"], {"y": target}, 0.05, 41)
+    assert 0 < after.fraction < 1 and 0 < before.fraction < 1
+
+
+def test_json_and_frame_contract(tmp_path):
+    table, planted = ccd_table(12, 2, "outlier", 30.0)
+    table.loc[3, "y"] = np.nan  # a failed run is dropped
+    res = criticize(table, FACTORS[2], "y")
+    doc = json.loads(res.dumps())
+    assert list(doc)[:5] == ["response", "baseline", "findings", "extended", "gain"]
+    keys = {"terms", "r2", "rmse", "loo_rmse", "aicc"}
+    assert keys <= set(doc["baseline"]) and set(doc["baseline"]) == set(doc["extended"])
+    assert doc["baseline"]["n_runs"] == 12
+    assert {"loo_rmse_ratio", "delta_aicc"} <= set(doc["gain"])
+    for f in doc["findings"]:
+        assert {"cause", "detail", "aliases", "p_value", "message"} <= set(f) and f["cause"] in CAUSES
+    assert isinstance(doc["findings"][0]["detail"], int)
+    frame = res.to_frame()
+    assert list(frame.columns) == ["response", "cause", "detail", "aliases", "p_value", "loo_rmse_baseline",
+                                   "loo_rmse_extended", "delta_aicc", "message"]
+    frame.to_csv(tmp_path / "criticism.csv", index=False)
+    assert len(pd.read_csv(tmp_path / "criticism.csv")) == len(res.findings)
+
+
+def test_residual_figure(tmp_path):
+    fits, results = [], []
+    for name, kind, size in (("d5", "outlier", 30.0), ("d10", "drift", 14.0), ("d15", "clean", 0.0)):
+        table, _ = ccd_table(21, 2, kind, size, response=name)
+        fits.append(fit_response(table, FACTORS[2], name, alpha=design(2)[3]))
+        results.append(criticize(table, FACTORS[2], name))
+    fig = residual_figure(fits, results, "mortar")
+    assert len(fig.axes) == 9
+    fig.savefig(tmp_path / "r.png", dpi=40, metadata={"Software": None})
+    assert (tmp_path / "r.png").stat().st_size > 0
+
+
+# --------------------------------------------------------------------------- level 2
+def test_level2_consistent_targets_are_met_at_the_true_point():
+    case = mortar_case(0)
+    res = calibration_check(case.surrogates, case.domain, case.targets, case.tolerance, 81, case.true_point)
+    assert res.feasible and res.best_max_error < 1e-6 and res.bottleneck is None
+    assert res.reference_max_error == pytest.approx(0, abs=1e-12)
+    frame = res.to_frame()
+    assert list(frame.columns[:8]) == ["observable", "target", "at_best", "rel_error_best", "at_reference",
+                                       "rel_error_reference", "tolerance", "within_tolerance"]
+    assert frame["within_tolerance"].all()
+    json.dumps(res.to_json(), allow_nan=False)
+
+
+def test_level2_best_point_is_the_minimax_point():
+    case = mortar_case(3, "d10", shift=4.0)
+    res = calibration_check(case.surrogates, case.domain, case.targets, case.tolerance, 41)
+    lo, hi = case.domain.search_bounds()
+    fine = Domain(case.domain.factors, case.domain.lower, case.domain.upper).grid(401)
+    worst = np.max([np.abs(s.predict(fine) - case.targets[o]) / case.targets[o]
+                    for o, s in case.surrogates.items()], axis=0)
+    assert res.best_max_error <= worst.min() + 1e-9
+    assert res.best_max_error == pytest.approx(worst.min(), abs=2e-4)
+
+
+@pytest.mark.parametrize("shift", [4.0, 6.0])
+def test_level2_hidden_bias_is_named_with_a_spare_measurement(shift):
+    """Four readings, two parameters: one biased reading can be localised."""
+    for seed in range(4):
+        for obs in EXTENDED_OBSERVABLES:
+            case = mortar_case(seed, obs, shift=shift, observables=EXTENDED_OBSERVABLES)
+            res = calibration_check(case.surrogates, case.domain, case.targets, case.tolerance, 81,
+                                    case.true_point)
+            assert not res.feasible and res.bottleneck == obs, (seed, obs, res.message)
+            if shift >= 6:
+                assert res.biased_observable == obs, (seed, obs, res.message)
+            assert abs(res.implied_bias[obs]) == pytest.approx(shift * case.tolerance, rel=0.05)
+
+
+def test_level2_three_readings_detect_but_cannot_always_localise():
+    """Three readings, two parameters: the set is inconsistent, which reading is off is not identifiable."""
+    named = ambiguous = 0
+    for seed in range(6):
+        for obs in ("d5", "d10", "d15"):
+            case = mortar_case(seed, obs, shift=6.0)
+            res = calibration_check(case.surrogates, case.domain, case.targets, case.tolerance, 81,
+                                    case.true_point)
+            assert not res.feasible and obs in res.bias_candidates
+            shared = next(e for e in res.extensions if e["model"].startswith("shared"))
+            assert shared["spare_measurements"] == 0 and shared["note"].startswith("saturated")
+            if res.biased_observable is None:
+                ambiguous += 1
+                assert "cannot say which one is off" in res.message
+            else:
+                named += res.biased_observable == obs
+    assert ambiguous > 0 and named + ambiguous == 18
