@@ -183,6 +183,49 @@ class ReportSections:
                              f"({change}); " + ", ".join(widths))
         return [self._md("\n".join(lines))]
 
+    def uncertainty(self, m: str) -> list:
+        """Strict vs robust sets, tolerance sweep, posteriors and the next-experiment advice."""
+        summary = self.root / "uncertainty" / f"{m}.json"
+        if not summary.is_file():
+            return []
+        import json
+
+        info = json.loads(summary.read_text(encoding="utf-8"))
+        parts = [self._md("### Beyond deterministic admissibility")]
+        robust = self._csv("robust_identifiability.csv")
+        if robust is not None and len(robust[robust["material"] == m]):
+            sub = robust[robust["material"] == m]
+            cols = ["scenario", "observables", "tolerance", "z", "factor", "strict_fraction_pct",
+                    "robust_fraction_pct", "strict_width", "robust_width"]
+            lines = ["**Strict vs robust admissible sets.** A point is *plausibly* admissible when every "
+                     "observable is within ε·|y*| + z·√(se² + σ²) of its target, where se is the surrogate's "
+                     "standard error of the mean and σ the measurement uncertainty.", "",
+                     markdown_table(sub[cols])]
+            scen = list(dict.fromkeys(sub["scenario"]))
+            if len(scen) >= 2:
+                first = sub[sub["scenario"] == scen[0]].iloc[0]
+                last = sub[sub["scenario"] == scen[-1]].iloc[0]
+                def _contr(a, b):
+                    return f"{100 * (b - a) / a:+.1f} %" if a > 0 else "n/a"
+                lines += ["", f"From {scen[0]} to {scen[-1]} the feasible fraction changes by "
+                          f"{_contr(first['strict_fraction_pct'], last['strict_fraction_pct'])} (strict) and "
+                          f"{_contr(first['robust_fraction_pct'], last['robust_fraction_pct'])} (robust)."]
+            parts.append(self._md("\n".join(lines)))
+        parts.append(self._md("**Tolerance sweep** — conclusions should not hang on one ε."))
+        parts.append(self._image(self.root / "figures" / f"sweep_{m}.png"))
+        ranking = self._csv("observable_ranking.csv")
+        if ranking is not None and len(ranking[ranking["material"] == m]):
+            sub = ranking[ranking["material"] == m]
+            cols = [c for c in ["rank", "observables", "information_gain_bits", "feasible_fraction_pct",
+                                "contraction_pct_vs_best_subset"] if c in sub.columns]
+            parts.append(self._md("**Which experiment next.** Every observable set ranked by information gain "
+                                  "(KL divergence from the uniform prior on Ω to the grid posterior, in bits).\n\n"
+                                  + markdown_table(sub[cols]) + ("\n\n" + info["advice"] if info.get("advice") else "")))
+        parts.append(self._image(self.root / "figures" / f"posterior_{m}.png"))
+        if info.get("notes"):
+            parts.append(self._md("\n".join(f"- {n}" for n in info["notes"])))
+        return parts
+
     def material(self, m: str) -> list:
         cfg = self.config["materials"][m]
         parts = [self._md(f"## {self._label(m)}")]
@@ -210,6 +253,7 @@ class ReportSections:
                 iv = pareto[pareto["kind"] == "interval"][["factor", "lower", "upper", "n_points"]]
                 parts.append(self._md(f"Intervals over Pareto points with error < {100 * par['max_error']:g} %:\n\n"
                                       + markdown_table(iv)))
+        parts += self.uncertainty(m)
         anova = self.root / "fits" / f"{m}_anova.parquet"
         if anova.is_file():
             parts.append(self._md("**ANOVA with lack of fit**\n\n" + markdown_table(read_parquet(anova))))
@@ -219,3 +263,14 @@ class ReportSections:
                                   "largest VIF, Cook's distance, |studentised residual|)\n\n"
                                   + markdown_table(read_parquet(diag), 3)))
         return parts
+
+
+def stack_material_tables(files: dict[str, str | Path]) -> pd.DataFrame:
+    """Concatenate per-material parquet tables with a leading ``material`` column."""
+    frames = []
+    for material, path in files.items():
+        frame = read_parquet(path)
+        frame.insert(0, "material", material)
+        frames.append(frame)
+    frames = [f for f in frames if len(f)]
+    return pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=["material"])

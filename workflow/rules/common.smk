@@ -23,6 +23,10 @@ except InputError as err:
 
 RESULTS = config["results_dir"]
 MATERIALS = list(config["materials"])
+UNCERTAINTY_TABLES = [
+    f"{RESULTS}/tables/{name}.csv"
+    for name in ("robust_identifiability", "tolerance_sweep", "information_gain", "observable_ranking")
+]
 
 
 wildcard_constraints:
@@ -89,6 +93,8 @@ def report_tables():
     out += [f"{RESULTS}/fits/{m}_diagnostics.parquet" for m in MATERIALS]
     if config.get("published"):
         out.append(f"{RESULTS}/tables/paper_comparison.csv")
+    out += UNCERTAINTY_TABLES
+    out += [f"{RESULTS}/uncertainty/{m}.json" for m in MATERIALS]
     return out
 
 
@@ -98,6 +104,7 @@ def report_figures():
         out += [f"{RESULTS}/figures/sets_{m}.png", f"{RESULTS}/figures/surface_{m}.png"]
         if config["materials"][m].get("pareto"):
             out.append(f"{RESULTS}/figures/pareto_{m}.png")
+        out += [f"{RESULTS}/figures/sweep_{m}.png", f"{RESULTS}/figures/posterior_{m}.png"]
     return out
 
 
@@ -110,6 +117,8 @@ def config_json():
 def all_outputs():
     out = [o for m in MATERIALS for o in per_material_outputs(m)]
     out += paper_figures()
+    out += report_figures()
+    out += UNCERTAINTY_TABLES
     out += [
         f"{RESULTS}/tables/surrogate_fit.csv",
         f"{RESULTS}/tables/identifiability.csv",
