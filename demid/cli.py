@@ -102,11 +102,14 @@ def cmd_check_transcription(args) -> int:
     from .io import write_json
     from .transcription import check_transcription
 
+    from .data import read_printed
+
     factors = _split(args.factors)
     table = _load_table(args.data, factors, [args.response])
     published = _parse_published(args.published)
     result = check_transcription(table, factors, args.response, published,
-                                 alpha=_alpha(table, factors, args.alpha))
+                                 alpha=_alpha(table, factors, args.alpha), design_type=args.design,
+                                 printed=read_printed(args.data, table), source=args.data)
     write_json(result.to_json(), args.out)
     return 0
 
@@ -141,6 +144,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--response", required=True)
     p.add_argument("--published", required=True, help="e.g. r2=0.9617,lof_f=90.33")
     p.add_argument("--alpha", type=float, default=None)
+    p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"])
     p.add_argument("--out", required=True)
     p.set_defaults(func=cmd_check_transcription)
     return parser

@@ -176,6 +176,7 @@ def _term_classes(coded: np.ndarray, base_terms: list[Term], candidates: list[Te
     if extra_columns is not None and extra_columns.size:
         base = np.column_stack([base, extra_columns])
     q = _orth(base * sw[:, None])
+    hat = np.sum(q * q, axis=1)
     cols = model_matrix(coded, candidates) * sw[:, None]
     resid = cols - q @ (q.T @ cols)
     classes: list[_TermClass] = []
@@ -186,6 +187,10 @@ def _term_classes(coded: np.ndarray, base_terms: list[Term], candidates: list[Te
             inestimable.append(t)
             continue
         u = resid[:, j] / norm
+        if np.max(hat + u * u) > 1 - 1e-6:
+            # The term would only fit one run exactly (leverage 1): not a curvature the runs can show.
+            inestimable.append(t)
+            continue
         for c in classes:
             if abs(float(c.direction @ u)) >= 1 - 1e-7:
                 c.terms.append(t)
@@ -206,7 +211,7 @@ def _separation_criterion(coded, base_terms, members):
     cols = model_matrix(coded, members)
     resid = cols - q @ (q.T @ cols)
     ev = np.linalg.eigvalsh(resid.T @ resid)
-    keep = ev > max(ev.max(), 1e-300) * 1e-10
+    keep = ev > max(float(np.sum(cols * cols)), 1e-300) * 1e-12
     return int(keep.sum()), float(np.sum(np.log(ev[keep]))) if keep.any() else -np.inf
 
 
@@ -534,7 +539,7 @@ def _stepdown_minp(obs: np.ndarray, null: np.ndarray) -> np.ndarray:
 class _Round:
     """One round of the catalogue on the current model: observed statistics and joint null."""
 
-    def __init__(self, data: _Data, model: _Model, taken: set, n_null: int, rng: np.random.Generator):
+    def __init__(self, data: _Data, model: _Model, n_null: int, rng: np.random.Generator):
         self.data, self.model = data, model
         self.hypotheses: list[_Hypothesis] = []
         self.untestable: list[list[Term]] = []
@@ -599,7 +604,9 @@ class _Round:
             p_boot, n_used = self._boxcox_bootstrap(m, q, lr_obs, n_null, rng)
             h = _Hypothesis("response_transform", None, [], lr_obs, math.log(p_boot),
                             info={"bootstrap_draws": n_used})
-            h.strength = float(stats.chi2.logsf(lr_obs, 1))
+            # Ranked against the other causes by the F form of the likelihood ratio, which is close
+            # to calibrated at a dozen runs (chi-square(1) is far too liberal there).
+            h.strength = float(_f_logp((df - 1) * np.expm1(lr_obs / n), df - 1))
             h.null_logp = np.log(rng.uniform(size=n_null))
             self.hypotheses.append(h)
 
@@ -815,6 +822,10 @@ def _apply(data: _Data, model: _Model, rnd: _Round, h: _Hypothesis) -> tuple[_Sp
     raise ValueError(h.cause)
 
 
+_CAUSE_WORDS = {"missing_term": "missing term", "response_transform": "transform", "outlier": "outlier run",
+                "drift": "drift with", "heteroscedasticity": "unequal scatter with"}
+
+
 def _gain_phrase(before: float, after: float) -> str:
     if not (np.isfinite(before) and np.isfinite(after)) or before <= 0:
         return "its effect on the leave-one-out error could not be computed"
@@ -910,16 +921,28 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     catalogue: list[dict] = []
     alias_sets: list[AliasSet] = []
     for rnd_index in range(max_findings):
-        rnd = _Round(data, model, set(), n_null, rng)
+        rnd = _Round(data, model, n_null, rng)
         if rnd_index == 0:
             alias_sets = _alias_sets(data, rnd)
             catalogue = [_catalogue_entry(data, h) for h in rnd.hypotheses]
         rejected = rnd.rejected(family_alpha)
         if not rejected:
             break
-        h = rejected[0]
-        spec, info = _apply(data, model, rnd, h)
-        new = _Model(data, spec)
+        # Every rejected cause is a one-parameter extension; the one that explains the runs best
+        # (highest likelihood of the original data) is named, the others are listed as alternatives.
+        fitted_alternatives = []
+        for cand in rejected:
+            cand_spec, cand_info = _apply(data, model, rnd, cand)
+            fitted_alternatives.append((cand, cand_spec, cand_info, _Model(data, cand_spec)))
+        best = max(range(len(fitted_alternatives)),
+                   key=lambda i: (round(fitted_alternatives[i][3].loglik, 9), -i))
+        h, spec, info, new = fitted_alternatives[best]
+        alternatives = [{"cause": c.cause, "detail": _detail_json(data, c) if c.cause != "response_transform"
+                         else _transform_name(sp.lam), "p_value": _num(c.p_family),
+                         "loglik_vs_named": _num(mo.loglik - new.loglik)}
+                        for c, sp, _, mo in fitted_alternatives if c is not h]
+        if findings and not new.loo_rmse_on(new.keep) < model.loo_rmse_on(new.keep):
+            break  # a further extension must also predict left-out runs better
         if h.cause == "response_transform":
             info["lam"] = spec.lam
         if h.cause == "drift":
@@ -932,9 +955,15 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
             pts = separating_runs(data.coded[model.keep], model.mean_terms, h.detail.terms, data.alpha)
             extra_runs = [data.point_dict(p) for p in pts]
         message = _message(data, h, info, before, after, int(same.sum()), extra_runs, model)
+        close = [a for a in alternatives if a["loglik_vs_named"] is not None and a["loglik_vs_named"] > -2.0]
+        if close:
+            message += (" Almost as likely: " + "; ".join(f"{_CAUSE_WORDS[a['cause']]} {a['detail']}" for a in close)
+                        + ".")
         detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
         public_info = {k: v for k, v in info.items() if k in ("lambda_hat", "lambda_ci", "sd_ratio",
                                                               "drift_per_run", "observed", "predicted_without")}
+        if alternatives:
+            public_info["alternatives"] = alternatives
         findings.append(Finding(
             response=response, cause=h.cause, detail=detail, aliases=list(h.aliases), p_value=h.p_family,
             p_nominal=float(np.exp(h.logp)), statistic=h.statistic, message=message,

@@ -183,6 +183,15 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
     return table, warnings
 
 
+def read_printed(path: Path | str, table: pd.DataFrame) -> pd.DataFrame:
+    """The table's cells as printed (strings, trailing zeros kept), in ``table``'s row order."""
+    header, rows, _ = read_raw(path)
+    printed = pd.DataFrame(rows, columns=header).apply(lambda col: col.str.strip())
+    printed["run"] = [str(int(parse_number(v))) for v in printed["run"]]
+    order = {str(r): i for i, r in enumerate(printed["run"])}
+    return printed.iloc[[order[str(int(r))] for r in table["run"]]].reset_index(drop=True)
+
+
 def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str,
                  log_factors=()) -> Coding:
     """Centre = most frequent level, unit = half the distance between the two next most frequent."""

@@ -183,6 +183,25 @@ class ReportSections:
                              f"({change}); " + ", ".join(widths))
         return [self._md("\n".join(lines))]
 
+    def transcription(self, checks: dict) -> list:
+        """Per response: does the refit reproduce the statistics the source published?"""
+        if not checks:
+            return []
+        lines = ["**Transcription check** against the statistics the source published:"]
+        for response, res in checks.items():
+            stats = ", ".join(f"{k} {res['printed'].get(k, res['published'][k])} → "
+                              f"{_fmt(res['reproduced'][k])}{'' if res['agrees'][k] else ' ✗'}"
+                              for k in res["published"])
+            verdict = "agrees" if res["consistent"] else "**disagrees**"
+            lines.append(f"- `{response}` {verdict} ({stats}).")
+            if not res["consistent"]:
+                lines.append(f"  {res['message']}")
+                for s in res["suspects"][:5]:
+                    lines.append(f"  - run {s['run']}, column `{s['column']}`: found {s['found']}, "
+                                 f"suggested {s['suggested']} ({s['kind'].replace('_', ' ')}; restores "
+                                 f"{s['restores']} of {res['n_published']} statistics)")
+        return [self._md("\n".join(lines))]
+
     def uncertainty(self, m: str) -> list:
         """Strict vs robust sets, tolerance sweep, posteriors and the next-experiment advice."""
         summary = self.root / "uncertainty" / f"{m}.json"
@@ -239,6 +258,7 @@ class ReportSections:
             if info["warnings"]:
                 text += "\n\n" + "\n".join(f"- ⚠ {w}" for w in info["warnings"])
             parts.append(self._md(text))
+            parts += self.transcription(info.get("transcription") or {})
         parts.append(self._md("**Admissible sets by scenario** (cells drawn without smoothing; ★ = reference point)."))
         parts.append(self._image(self.root / "figures" / f"sets_{m}.png"))
         parts.append(self._md("**Response surfaces** with design runs (○) and targets (dashed)."))

@@ -25,17 +25,36 @@ up, half down or half to even is accepted alike.  A printed bound such as
 ``"< 0.0001"`` agrees when the refit satisfies it.
 
 Ranking of repairs.  By the number of published statistics the repaired table
-reproduces (``restores``, more first); then by the summed distance of the
-repaired statistics from the printed values, each in units of its rounding
-half-width ``h`` (closer first); then by the kind of slip (sign lost, decimal
-shift, transposition, doubled, dropped, substituted digit: fewer keystrokes
-first); then by table row and column order.
+reproduces (``restores``, more first); then by how the repair fits the way the
+column is printed (a repair of a cell that stands out -- more decimals than the
+rest of its column, or a factor value off every design level -- first; a repair
+that needs more decimals than the column shows last); then by the summed
+distance of the repaired statistics from the printed values, each in units of
+its rounding half-width ``h`` (closer first); then by the kind of slip (sign
+lost, decimal shift, transposition, doubled, dropped, substituted digit: the
+order of :data:`KINDS`); then by table row and column order.  All repairs that
+restore every statistic are reported (at most ``max_suspects``); when none
+does, the verdict says so plainly and the best partial repairs (restoring more
+statistics than the table as found) are listed as leads.
+
+Candidates.  Each cell's printed string (``printed``, or reconstructed from the
+number with the column's largest number of decimals) is edited by every slip
+of every kind; a repair that gives the same number under several kinds is kept
+under the first kind in :data:`KINDS`.  A factor repair must land on a level of
+the declared design: a level another cell of the column prints exactly as
+printed there, a level no other cell shows (an axial point) within the
+column's printing precision.  The declared coding is the one that puts the most
+cells on the design's nominal levels, so a mistyped extreme does not move the
+levels; pass ``coding`` to fix it instead.  Repaired tables are coded with
+``Coding.from_levels`` as :func:`~demid.surrogate.fit_response` would code them.
 
 Speed.  A response cell enters the fit linearly, so every response hypothesis
 is one column of a matrix ``Y`` and all are evaluated at once from the
-pseudo-inverse, the hat matrix and the pure-error projection of the table's
-design.  A factor cell changes the design; only candidates that land on a valid
-design level are refitted (one small SVD each).
+pseudo-inverse, the hat matrix and the replicate-group projection of the
+table's design.  A factor cell changes the design; the repairs that land on a
+design level are refitted together in one batched SVD.  A 20-run, 3-factor
+table (about 2,000 response and 140 factor hypotheses) takes a few hundredths
+of a second.
 """
 
 from __future__ import annotations
@@ -60,6 +79,7 @@ KINDS = ("sign_lost", "decimal_shift", "transposition", "digit_doubled", "digit_
 _KIND_RANK = {kind: i for i, kind in enumerate(KINDS)}
 
 _MISFIT_CAP = 1e6  # distance charged for a statistic that cannot be reproduced (NaN)
+_ALPHA_SLACK = 3e-4  # coded units: a table printed from alpha = 1.41421 against a declared 1.414
 _ALL_DIGITS = "0123456789"
 
 
@@ -246,10 +266,11 @@ def single_cell_slips(text: str) -> list[tuple[str, str, float]]:
         if digit_at[i]:
             out += [("digit_substitution", sign + body[:i] + d + body[i + 1:]) for d in _ALL_DIGITS if d != ch]
     for i in range(len(body) - 1):
-        if digit_at[i] and digit_at[i + 1] and body[i] != body[i + 1]:
-            out.append(("transposition", sign + body[:i] + body[i + 1] + body[i] + body[i + 2:]))
+        if not (digit_at[i] and digit_at[i + 1]):
             continue
-        if digit_at[i] and body[i] == body[i + 1]:
+        if body[i] != body[i + 1]:
+            out.append(("transposition", sign + body[:i] + body[i + 1] + body[i] + body[i + 2:]))
+        else:
             out.append(("digit_doubled", sign + body[:i] + body[i + 1:]))
     for shift in (-2, -1, 1, 2):
         out.append(("decimal_shift", format(found.scaleb(shift), "f")))
@@ -294,6 +315,8 @@ def _lack_of_fit_p(out: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
 
 def _precision(text: str) -> int:
     """Decimals the number needs (trailing zeros dropped): '0.2000' -> 1, '0.0757' -> 4."""
+    if "e" in text.lower():
+        text = format(Decimal(text), "f")
     return len(text.partition(".")[2].rstrip("0"))
 
 
@@ -436,9 +459,9 @@ def _estimate_coding(column: np.ndarray, nominal: np.ndarray, alpha: float, deci
     Starts from the table's mid-range coding (Coding.from_levels) and tries every
     pair of distinct values on every pair of levels, so that one mistyped extreme
     does not shift the levels a repair may take.  A cell is on a level when it is
-    within its printing precision (``decimals``) of it, plus 2e-4 in coded units
-    for a rounded alpha; among codings with equally many cells on levels, the
-    smallest squared deviation wins, then the mid-range coding.
+    within its printing precision (``decimals``) of it, plus ``_ALPHA_SLACK``;
+    among codings with equally many cells on levels, the smallest squared
+    deviation wins, then the mid-range coding.
     """
     lo, hi = float(column.min()), float(column.max())
     default = ((lo + hi) / 2, (hi - lo) / (2 * alpha) if hi > lo else 1.0)
@@ -453,7 +476,7 @@ def _estimate_coding(column: np.ndarray, nominal: np.ndarray, alpha: float, deci
     unit = np.array([o[1] for o in options])[:, None]
     coded = (column[None, :] - centre) / unit
     deviation = np.min(np.abs(coded[:, :, None] - nominal[None, None, :]), axis=2)
-    hit = deviation <= 0.5 * 10.0 ** (-decimals) / np.abs(unit) + 2e-4
+    hit = deviation <= 0.5 * 10.0 ** (-decimals) / np.abs(unit) + _ALPHA_SLACK
     hits = hit.sum(axis=1)
     spread = np.where(hit, deviation ** 2, 0.0).sum(axis=1)
     best = int(np.lexsort((np.arange(len(options)), np.round(spread, 12), -hits))[0])
@@ -512,7 +535,14 @@ class Suspect:
 
 @dataclass
 class TranscriptionResult:
-    """Verdict of :func:`check_transcription` for one response."""
+    """Verdict of :func:`check_transcription` for one response.
+
+    ``published``/``reproduced``/``agrees`` are keyed by statistic (coefficients as
+    ``coef_coded[a:b]`` or ``coef_actual[a:b]``); ``printed`` keeps each published
+    value as printed.  ``explained`` is None when consistent, True when a
+    single-cell repair restores every published statistic, False otherwise.
+    ``n_candidates`` counts the single-cell hypotheses evaluated.
+    """
 
     response: str
     consistent: bool
@@ -582,9 +612,11 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     ``printed`` is the table as printed (strings, e.g. ``pd.read_csv(path,
     dtype=str)``); without it each numeric column is printed with its largest
     number of decimals.  A factor repair is considered only when it lands on a
-    valid level of the declared design (``design_type``/``alpha``, or a level the
-    column repeats).  Returns a :class:`TranscriptionResult`; raises
-    :class:`InputError` for unusable input.
+    valid level of the declared design (``design_type``: ``ccd``, ``box_behnken``
+    or ``factorial``, with ``alpha``; or a level the column repeats).
+    ``log_factors`` are fitted in log10 units (``coding``, when given, is in those
+    model units), as in :func:`~demid.surrogate.fit_response`.  Returns a
+    :class:`TranscriptionResult`; raises :class:`InputError` for unusable input.
     """
     source = source or f"published statistics for '{response}'"
     factors = list(factors)
@@ -610,11 +642,8 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     y = y_all[fit_rows]
     runs = _runs(table)
 
-    def design_for(z_table: np.ndarray) -> _DesignFit:
-        code = coding if coding is not None else Coding.from_levels(factors, z_table, alpha)
-        return _DesignFit(code.to_coded(z_table[fit_rows]), terms, code, need_actual)
-
-    table_design = design_for(z)
+    table_coding = coding if coding is not None else Coding.from_levels(factors, z, alpha)
+    table_design = _DesignFit(table_coding.to_coded(z[fit_rows]), terms, table_coding, need_actual)
     base = _lack_of_fit_p(table_design.evaluate(y[:, None], coef_index))
     reproduced = {name: float(base[name][0]) for name in targets}
     agrees = {name: bool(targets[name].agrees(reproduced[name])) for name in targets}
@@ -666,12 +695,12 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
             text = texts[name][row]
             if text is None:
                 continue
-            # Printed levels are off by up to half a unit in the column's last place;
-            # 3e-4 coded units more allow for an alpha given to fewer digits than the table.
+            # Printed levels are off by up to half a unit in the column's last place,
+            # plus _ALPHA_SLACK for an alpha given to fewer digits than the table.
             half = 0.5 * 10.0 ** (-precision[row])
             if is_log:
                 half /= max(float(x_actual[row, j]), 1e-300) * math.log(10)
-            exact, loose = _levels_for_cell(z[:, j], row, nominal, half + 3e-4 * unit)
+            exact, loose = _levels_for_cell(z[:, j], row, nominal, half + _ALPHA_SLACK * unit)
             slips = [sl for sl in single_cell_slips(text) if not is_log or sl[2] > 0]
             if not slips or exact.size + loose.size == 0:
                 continue
@@ -679,7 +708,7 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
             model_values = np.log10(values) if is_log else values
             levels = np.concatenate([exact, loose])
             tolerance = np.concatenate([1e-12 * np.maximum(1.0, np.abs(exact)),
-                                        np.full(loose.size, half + 3e-4 * unit)])
+                                        np.full(loose.size, half + _ALPHA_SLACK * unit)])
             gaps = np.abs(model_values[:, None] - levels[None, :])
             ok = gaps <= tolerance[None, :]
             # A cell found off every design level is itself irregular: its repairs come first in ties.
@@ -814,3 +843,79 @@ def check_table(table: pd.DataFrame, factors: list[str], responses_cfg: dict, *,
         results.append(check_transcription(table, factors, response, block, alpha=alpha,
                                            design_type=design_type, **options))
     return results
+
+
+def check_material(validated, material_cfg: dict, printed: pd.DataFrame | None = None) -> list[TranscriptionResult]:
+    """The transcription check of a validated material table against its config's ``published`` blocks.
+
+    Uses the validated table's design coding, so the check and the fits share one coding.
+    """
+    factors = list(material_cfg["factors"])
+    log_factors = tuple(f for f, c in material_cfg["factors"].items() if c.get("scale") == "log")
+    design = material_cfg["design"]
+    table = validated.table
+    return check_table(table, factors, material_cfg["responses"], alpha=float(design.get("alpha", 1.0)),
+                       design_type=design["type"], coding=validated.coding, log_factors=log_factors,
+                       printed=printed, source=material_cfg["data"])
+
+
+def transcription_frame(results: list[TranscriptionResult]) -> pd.DataFrame:
+    """Rows of tables/transcription_check.csv (without the material column)."""
+    columns = ["response", "statistic", "published", "reproduced", "agrees", "printed"]
+    frames = [r.to_frame() for r in results]
+    return pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=columns)
+
+
+def likely_typos(validated, material_cfg: dict, printed: pd.DataFrame | None = None, *,
+                 family_alpha: float = 0.05, kinds=("transposition", "decimal_shift", "sign_lost")) -> list[dict]:
+    """Response cells that look mistyped even without published statistics.
+
+    A run is flagged when its externally studentised residual is extreme after a
+    Bonferroni correction over the runs (family-wise ``family_alpha``) *and* a digit
+    swap, misplaced decimal point or lost sign of the printed cell lands within three
+    leave-one-out standard errors of the prediction from the other runs.  Both
+    conditions together keep this silent on clean tables.
+    """
+    from scipy import stats as _stats
+
+    from .surrogate import fit_response
+
+    factors = list(material_cfg["factors"])
+    log_factors = tuple(f for f, c in material_cfg["factors"].items() if c.get("scale") == "log")
+    table = validated.table
+    flags = []
+    for response in material_cfg["responses"]:
+        fit = fit_response(table, factors, response, coding=validated.coding, log_factors=log_factors)
+        n, p = fit.n_runs, fit.n_params
+        df = n - p - 1
+        if df < 1:
+            continue
+        infl = fit.influence()
+        pvals = 2 * _stats.t.sf(np.abs(infl["student_resid"].to_numpy()), df) * n
+        for i in np.flatnonzero(pvals < family_alpha):
+            row = infl.iloc[i]
+            h = row["leverage"]
+            loo_pred = row["observed"] - row["residual"] / (1 - h)
+            s_loo = abs(row["residual"] / row["student_resid"]) / np.sqrt(1 - h) if row["student_resid"] else 0.0
+            se = s_loo * np.sqrt(1 + h / (1 - h))  # prediction error of the run from the others
+            run = row["run"]
+            if printed is not None:
+                text = printed.loc[table["run"].to_numpy() == run, response].iloc[0]
+            else:
+                text = repr(float(row["observed"]))
+            best = None
+            for kind, suggested_text, value in single_cell_slips(str(text)):
+                if kind not in kinds:
+                    continue
+                distance = abs(value - loo_pred)
+                if distance <= 3 * se and (best is None or distance < best[0]):
+                    best = (distance, kind, value)
+            if best is not None:
+                flags.append({"run": _jsonable(run), "column": response, "found": float(row["observed"]),
+                              "suggested": best[2], "kind": best[1], "student_resid": float(row["student_resid"]),
+                              "predicted_from_other_runs": float(loo_pred),
+                              "message": f"{material_cfg['data']}, run {_jsonable(run)}, column '{response}': "
+                                         f"{text} is far from the fit of the other runs (studentised residual "
+                                         f"{row['student_resid']:.1f}, predicted {loo_pred:.4g}); "
+                                         f"{best[2]:g} ({best[1].replace('_', ' ')}) would fit — likely typo"})
+    return flags

@@ -50,11 +50,18 @@ class Planted:
     factor: str | None = None
 
 
-def design(n_factors: int, alpha: float | None = None) -> tuple[list[str], Coding, np.ndarray, float]:
-    """Factor names, coding and coded CCD points (standard order) of the test designs."""
+def design(n_factors: int, alpha: float | None = None, replicates: int = 1
+           ) -> tuple[list[str], Coding, np.ndarray, float]:
+    """Factor names, coding and coded CCD points (standard order) of the test designs.
+
+    ``replicates`` > 1 repeats every factorial and axial point (DEM runs with
+    different particle-generation seeds); the centre runs are not repeated.
+    """
     factors = FACTORS[n_factors]
     alpha = rotatable_alpha(n_factors) if alpha is None else alpha
-    coded = ccd_points(n_factors, alpha, CENTER_RUNS[n_factors])
+    n_center = CENTER_RUNS[n_factors]
+    coded = ccd_points(n_factors, alpha, n_center)
+    coded = np.vstack([np.tile(coded[:-n_center], (replicates, 1)), coded[-n_center:]])
     lo = np.array([RANGES[f][0] for f in factors])
     hi = np.array([RANGES[f][1] for f in factors])
     coding = Coding(tuple(factors), tuple((lo + hi) / 2), tuple((hi - lo) / (2 * alpha)))
@@ -73,7 +80,7 @@ def random_quadratic(rng: np.random.Generator, n_factors: int) -> np.ndarray:
 
 def ccd_table(seed: int, n_factors: int = 2, kind: str = "clean", size: float = 0.0, *,
               term: str | None = None, factor: str | None = None, noise: float = 1.0,
-              log_noise: float = 0.03, alpha: float | None = None,
+              log_noise: float = 0.03, alpha: float | None = None, replicates: int = 1,
               response: str = "y") -> tuple[pd.DataFrame, Planted]:
     """One CCD table (rows in run order) with the defect ``kind`` of magnitude ``size`` planted.
 
@@ -83,7 +90,7 @@ def ccd_table(seed: int, n_factors: int = 2, kind: str = "clean", size: float = 
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}")
     rng = np.random.default_rng(seed)
-    factors, coding, coded, alpha = design(n_factors, alpha)
+    factors, coding, coded, alpha = design(n_factors, alpha, replicates)
     n = len(coded)
     run_of_row = rng.permutation(n) + 1
     quad = model_matrix(coded, quadratic_terms(n_factors))

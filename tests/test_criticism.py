@@ -24,7 +24,7 @@ from demid.criticism import (CAUSES, calibration_check, criticize, infer_axial_d
 from demid.design import Coding, model_matrix, parse_term, quadratic_terms
 from demid.surrogate import fit_response
 
-from generators import EXTENDED_OBSERVABLES, FACTORS, ccd_table, design, mortar_case
+from .generators import EXTENDED_OBSERVABLES, FACTORS, ccd_table, design, mortar_case
 
 SEEDS = range(5)
 

@@ -86,7 +86,11 @@ def per_material_outputs(material):
 
 
 def report_tables():
-    out = [f"{RESULTS}/tables/surrogate_fit.csv", f"{RESULTS}/tables/identifiability.csv"]
+    out = [
+        f"{RESULTS}/tables/surrogate_fit.csv",
+        f"{RESULTS}/tables/identifiability.csv",
+        f"{RESULTS}/tables/transcription_check.csv",
+    ]
     out += [f"{RESULTS}/tables/pareto_{m}.csv" for m in pareto_materials()]
     out += [f"{RESULTS}/validated/{m}.json" for m in MATERIALS]
     out += [f"{RESULTS}/fits/{m}_anova.parquet" for m in MATERIALS]
@@ -122,6 +126,7 @@ def all_outputs():
     out += [
         f"{RESULTS}/tables/surrogate_fit.csv",
         f"{RESULTS}/tables/identifiability.csv",
+        f"{RESULTS}/tables/transcription_check.csv",
         f"{RESULTS}/report/report.html",
     ]
     if config.get("published"):

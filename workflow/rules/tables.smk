@@ -2,6 +2,7 @@ localrules:
     surrogate_fit_table,
     identifiability_table,
     paper_comparison_table,
+    transcription_table,
 
 
 rule surrogate_fit_table:
@@ -56,3 +57,20 @@ rule paper_comparison_table:
         "benchmarks/tables/paper_comparison.tsv"
     script:
         "../../scripts/paper_comparison_table.py"
+
+
+rule transcription_table:
+    input:
+        checks=expand(f"{RESULTS}/validated/{{material}}_transcription.parquet", material=MATERIALS),
+    output:
+        table=f"{RESULTS}/tables/transcription_check.csv",
+    params:
+        materials=MATERIALS,
+    conda:
+        "../envs/demid.yaml"
+    log:
+        "logs/tables/transcription_check.log",
+    benchmark:
+        "benchmarks/tables/transcription_check.tsv"
+    script:
+        "../../scripts/transcription_table.py"

@@ -4,6 +4,7 @@ rule validate_table:
     output:
         table=f"{RESULTS}/validated/{{material}}.parquet",
         summary=f"{RESULTS}/validated/{{material}}.json",
+        transcription=f"{RESULTS}/validated/{{material}}_transcription.parquet",
     params:
         material_cfg=material_cfg,
     conda:
