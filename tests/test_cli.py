@@ -47,3 +47,36 @@ def test_user_error_is_one_line_exit_2(study_dir):
     assert "Traceback" not in proc.stderr
     assert proc.stderr.strip().count("\n") == 0
     assert "materials.m.responses.y2" in proc.stderr and "colour" in proc.stderr
+
+
+def test_check_transcription_cli_finds_planted_slip(tmp_path):
+    from .test_surrogate import MONTGOMERY
+
+    table = MONTGOMERY.copy()
+    table.loc[table["run"] == 4, "y"] = 97.5  # 79.5 with two digits transposed
+    path = tmp_path / "m.csv"
+    table.to_csv(path, index=False)
+    out = tmp_path / "out.json"
+    proc = _run("check-transcription", "--data", str(path), "--factors", "x1,x2", "--response", "y",
+                "--published", "r2=0.9827,ss_model=28.25,ss_residual=0.50,ss_lof=0.28,ss_pure_error=0.21",
+                "--out", str(out))
+    assert proc.returncode == 0, proc.stderr
+    result = json.loads(out.read_text())
+    assert {"consistent", "published", "reproduced", "suspects"} <= set(result)
+    assert result["consistent"] is False
+    top = result["suspects"][0]
+    assert {"run", "column", "found", "suggested", "kind", "restores"} <= set(top)
+    assert (top["run"], top["column"], top["suggested"], top["kind"]) == (4, "y", 79.5, "transposition")
+
+
+def test_check_transcription_cli_consistent_exit_0(tmp_path):
+    from .test_surrogate import MONTGOMERY
+
+    path = tmp_path / "m.csv"
+    MONTGOMERY.to_csv(path, index=False)
+    out = tmp_path / "out.json"
+    proc = _run("check-transcription", "--data", str(path), "--factors", "x1,x2", "--response", "y",
+                "--published", "r2=0.9827,ss_lof=0.28", "--out", str(out))
+    assert proc.returncode == 0, proc.stderr
+    result = json.loads(out.read_text())
+    assert result["consistent"] is True and result["suspects"] == []
