@@ -79,7 +79,8 @@ def render_html(notebook: str | Path, output: str | Path) -> None:
     from .io import atomic_path
 
     exporter = HTMLExporter(exclude_input=True, exclude_input_prompt=True, exclude_output_prompt=True)
-    body, _ = exporter.from_notebook_node(nbformat.read(str(notebook), as_version=4))
+    nb = nbformat.read(str(notebook), as_version=4)
+    body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": "demid — identifiability report"}})
     with atomic_path(output) as tmp:
         Path(tmp).write_text(body, encoding="utf-8")
 
