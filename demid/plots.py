@@ -176,3 +176,17 @@ def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, error_of: str, target
         ax.set_title(title)
     fig.tight_layout()
     return fig
+
+
+def material_figures(surrogates: dict, material_cfg: dict, n: int, grid: pd.DataFrame, table: pd.DataFrame,
+                     title: str) -> dict[str, plt.Figure]:
+    """The per-material figures: scenario overlay ('sets') and response surfaces ('surface')."""
+    from .admissibility import evaluate_scenarios
+
+    domain = Domain.from_config(material_cfg["factors"])
+    _, sets = evaluate_scenarios(surrogates, material_cfg, n, grid)
+    return {
+        "sets": sets_figure(domain, material_cfg["factors"], sets, material_cfg.get("scenarios") or {}, n,
+                            material_cfg.get("reference_point"), title),
+        "surface": surface_figure(domain, material_cfg["factors"], material_cfg["responses"], grid, n, table, title),
+    }

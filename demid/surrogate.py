@@ -14,10 +14,6 @@ from functools import cached_property
 
 import numpy as np
 import pandas as pd
-import statsmodels.api as sm
-from scipy import stats
-from statsmodels.stats.diagnostic import het_breuschpagan, linear_reset
-from statsmodels.stats.outliers_influence import variance_inflation_factor
 
 from .design import Coding, Term, model_matrix, parse_term, quadratic_terms, replicate_groups, term_name
 
@@ -63,6 +59,8 @@ class LackOfFitAnova:
     df_total: int
 
     def _f(self, ss_a, df_a, ss_b, df_b):
+        from scipy import stats
+
         if df_a <= 0 or df_b <= 0 or ss_b <= 0:
             return np.nan, np.nan
         f = (ss_a / df_a) / (ss_b / df_b)
@@ -172,6 +170,10 @@ class SurrogateFit:
         self.coding = coding
         self.terms = list(terms) if terms is not None else quadratic_terms(len(factors))
         self.log_factors = tuple(log_factors)
+        # statsmodels is imported here, not at module level: grid and scenario jobs only need
+        # the light Surrogate predictor and should not pay for its import.
+        import statsmodels.api as sm
+
         self.coded = coding.to_coded(self._model_units(self.x_actual))
         exog = pd.DataFrame(model_matrix(self.coded, self.terms), columns=self.term_names)
         endog = pd.Series(self.y, name=response)
@@ -267,6 +269,10 @@ class SurrogateFit:
         return out
 
     def diagnostics(self) -> Diagnostics:
+        from scipy import stats
+        from statsmodels.stats.diagnostic import het_breuschpagan, linear_reset
+        from statsmodels.stats.outliers_influence import variance_inflation_factor
+
         res = self.results
         exog = res.model.exog
         nan = float("nan")

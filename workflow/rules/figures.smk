@@ -1,33 +1,15 @@
-rule plot_sets:
+rule plot_material:
     input:
         fits=f"{RESULTS}/fits/{{material}}.parquet",
         grid=f"{RESULTS}/grid/{{material}}.parquet",
-        scenarios=f"{RESULTS}/scenarios/{{material}}.parquet",
+        table=f"{RESULTS}/validated/{{material}}.parquet",
     output:
-        figure=report(
+        sets=report(
             f"{RESULTS}/figures/sets_{{material}}.png",
             category="Admissible sets",
             caption="../report/sets.rst",
         ),
-    params:
-        material_cfg=material_cfg,
-        grid_points=material_grid_points,
-    conda:
-        "../envs/demid.yaml"
-    log:
-        "logs/figures/sets_{material}.log",
-    benchmark:
-        "benchmarks/figures/sets_{material}.tsv"
-    script:
-        "../../scripts/plot_sets.py"
-
-
-rule plot_surface:
-    input:
-        grid=f"{RESULTS}/grid/{{material}}.parquet",
-        table=f"{RESULTS}/validated/{{material}}.parquet",
-    output:
-        figure=report(
+        surface=report(
             f"{RESULTS}/figures/surface_{{material}}.png",
             category="Response surfaces",
             caption="../report/surface.rst",
@@ -38,11 +20,11 @@ rule plot_surface:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/figures/surface_{material}.log",
+        "logs/figures/{material}.log",
     benchmark:
-        "benchmarks/figures/surface_{material}.tsv"
+        "benchmarks/figures/{material}.tsv"
     script:
-        "../../scripts/plot_surface.py"
+        "../../scripts/plot_material.py"
 
 
 rule plot_pareto:
