@@ -178,15 +178,27 @@ def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, error_of: str, target
     return fig
 
 
-def material_figures(surrogates: dict, material_cfg: dict, n: int, grid: pd.DataFrame, table: pd.DataFrame,
-                     title: str) -> dict[str, plt.Figure]:
-    """The per-material figures: scenario overlay ('sets') and response surfaces ('surface')."""
-    from .admissibility import evaluate_scenarios
+def surface_figure_from_surrogates(surrogates: dict, material_cfg: dict, table: pd.DataFrame | None, title: str,
+                                   n: int = 201) -> plt.Figure:
+    """Surface panels on an n x n slice through the first two factors (others at mid-range)."""
+    from .admissibility import predict_grid
 
     domain = Domain.from_config(material_cfg["factors"])
-    _, sets = evaluate_scenarios(surrogates, material_cfg, n, grid)
-    return {
-        "sets": sets_figure(domain, material_cfg["factors"], sets, material_cfg.get("scenarios") or {}, n,
-                            material_cfg.get("reference_point"), title),
-        "surface": surface_figure(domain, material_cfg["factors"], material_cfg["responses"], grid, n, table, title),
-    }
+    d = domain.dim
+    if d > 2:
+        # A 2-D slice: the remaining factors at the centre of their (search-unit) range.
+        lo, hi = domain.search_bounds()
+        mid = domain.to_actual(((lo + hi) / 2)[None, :])[0]
+        names = list(domain.factors)
+        slice_domain = Domain(tuple(names[:2]), tuple(domain.lower[:2]), tuple(domain.upper[:2]), domain.log[:2])
+        pts = slice_domain.grid(n)
+        full = np.column_stack([pts] + [np.full(len(pts), mid[k]) for k in range(2, d)])
+        grid = pd.DataFrame(full, columns=names)
+        for name, sur in surrogates.items():
+            grid[name] = sur.predict(full)
+        values = {r: grid[r].to_numpy() for r in surrogates}
+        grid2 = pd.DataFrame(pts, columns=names[:2]).assign(**values)
+        return surface_figure(slice_domain, material_cfg["factors"], material_cfg["responses"], grid2, n, table,
+                              f"{title} (other factors at mid-range: {', '.join(names[2:])})")
+    grid = predict_grid(surrogates, domain, n)
+    return surface_figure(domain, material_cfg["factors"], material_cfg["responses"], grid, n, table, title)

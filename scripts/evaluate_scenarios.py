@@ -1,16 +1,21 @@
-"""Snakemake script: admissible sets, feasible fractions and spans of every scenario (eq. 2-4)."""
+"""Snakemake script: admissible sets, feasible fractions and spans of every scenario (eq. 2-4),
+and their overlay figure (paper Figs. 3 and 5) drawn from the same sets."""
 
 import sys
 
 sys.stderr = open(snakemake.log[0], "w", encoding="utf-8")  # noqa: F821
 
-from demid.admissibility import evaluate_scenarios  # noqa: E402
-from demid.io import read_parquet, write_parquet  # noqa: E402
+from demid.admissibility import Domain, evaluate_scenarios  # noqa: E402
+from demid.io import read_parquet, save_figure, write_parquet  # noqa: E402
+from demid.plots import sets_figure  # noqa: E402
 from demid.surrogate import surrogates_from_frame  # noqa: E402
 
 cfg = snakemake.params.material_cfg  # noqa: F821
+n = snakemake.params.grid_points  # noqa: F821
 surrogates = surrogates_from_frame(read_parquet(snakemake.input.fits), list(cfg["factors"]))  # noqa: F821
-grid = read_parquet(snakemake.input.grid)  # noqa: F821
-table, _ = evaluate_scenarios(surrogates, cfg, snakemake.params.grid_points, grid)  # noqa: F821
+table, sets = evaluate_scenarios(surrogates, cfg, n, read_parquet(snakemake.input.grid))  # noqa: F821
 table.insert(0, "material", snakemake.wildcards.material)  # noqa: F821
 write_parquet(table, snakemake.output.scenarios)  # noqa: F821
+fig = sets_figure(Domain.from_config(cfg["factors"]), cfg["factors"], sets, cfg.get("scenarios") or {}, n,
+                  cfg.get("reference_point"), cfg.get("label") or snakemake.wildcards.material)  # noqa: F821
+save_figure(fig, snakemake.output.figure)  # noqa: F821

@@ -22,6 +22,11 @@ rule evaluate_scenarios:
         grid=f"{RESULTS}/grid/{{material}}.parquet",
     output:
         scenarios=f"{RESULTS}/scenarios/{{material}}.parquet",
+        figure=report(
+            f"{RESULTS}/figures/sets_{{material}}.png",
+            category="Admissible sets",
+            caption="../report/sets.rst",
+        ),
     params:
         material_cfg=material_cfg,
         grid_points=material_grid_points,
@@ -41,6 +46,11 @@ rule extract_pareto:
     output:
         table=f"{RESULTS}/tables/pareto_{{material}}.csv",
         front=f"{RESULTS}/pareto/{{material}}.parquet",
+        figure=report(
+            f"{RESULTS}/figures/pareto_{{material}}.png",
+            category="Pareto trade-off",
+            caption="../report/pareto.rst",
+        ),
     params:
         material_cfg=material_cfg,
     conda:

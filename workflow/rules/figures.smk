@@ -1,52 +1,23 @@
-rule plot_material:
+rule plot_surface:
     input:
         fits=f"{RESULTS}/fits/{{material}}.parquet",
-        grid=f"{RESULTS}/grid/{{material}}.parquet",
         table=f"{RESULTS}/validated/{{material}}.parquet",
     output:
-        sets=report(
-            f"{RESULTS}/figures/sets_{{material}}.png",
-            category="Admissible sets",
-            caption="../report/sets.rst",
-        ),
-        surface=report(
+        figure=report(
             f"{RESULTS}/figures/surface_{{material}}.png",
             category="Response surfaces",
             caption="../report/surface.rst",
         ),
     params:
         material_cfg=material_cfg,
-        grid_points=material_grid_points,
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/figures/{material}.log",
+        "logs/figures/surface_{material}.log",
     benchmark:
-        "benchmarks/figures/{material}.tsv"
+        "benchmarks/figures/surface_{material}.tsv"
     script:
-        "../../scripts/plot_material.py"
-
-
-rule plot_pareto:
-    input:
-        grid=f"{RESULTS}/grid/{{material}}.parquet",
-        front=f"{RESULTS}/pareto/{{material}}.parquet",
-    output:
-        figure=report(
-            f"{RESULTS}/figures/pareto_{{material}}.png",
-            category="Pareto trade-off",
-            caption="../report/pareto.rst",
-        ),
-    params:
-        material_cfg=material_cfg,
-    conda:
-        "../envs/demid.yaml"
-    log:
-        "logs/figures/pareto_{material}.log",
-    benchmark:
-        "benchmarks/figures/pareto_{material}.tsv"
-    script:
-        "../../scripts/plot_pareto.py"
+        "../../scripts/plot_surface.py"
 
 
 rule paper_figure:

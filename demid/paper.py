@@ -1,0 +1,169 @@
+"""Every number a paper published, held against the pipeline's reproduction of it.
+
+:func:`paper_comparison` reads the published numbers (``data/published.yaml``, see its
+comments for the layout) and the pipeline's tables -- Table 2 (``surrogate_fit``),
+Table 3 in long form (``identifiability``) and the Pareto intervals -- and returns one row
+per published number with the reproduced value, the difference and a pass flag.
+
+Tolerances (issue "demonstration dataset"):
+
+* R²: within 0.005 (absolute);
+* RMSE: within 2 % (relative);
+* feasible fractions: within 5 % (relative);
+* widths, interval ends and bounds: within 2 % (relative), or 0.005 (absolute) when the
+  published value is below 0.25 -- a grid step of the small parameters is of that order;
+* contractions: within 1 percentage point, recomputed from the *reproduced* fractions or
+  widths as 100 (richer / simpler - 1);
+* tolerances epsilon of the scenarios: equal;
+* "unresolved over the full search interval": the admissible width is at least 98 % of the
+  search range.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+
+COLUMNS = ["quantity", "material", "published", "reproduced", "abs_diff", "rel_diff", "tolerance", "pass"]
+
+
+def _num(value) -> float:
+    return float(value) if value is not None else math.nan
+
+
+def _rule(kind: str, published: float) -> tuple[str, callable]:
+    """Readable tolerance and the test it stands for, by kind of number."""
+    if kind == "r2":
+        return "±0.005", lambda d, r: d <= 0.005
+    if kind == "rmse":
+        return "±2 % rel", lambda d, r: r <= 0.02
+    if kind == "fraction":
+        return "±5 % rel", lambda d, r: r <= 0.05
+    if kind == "width":
+        if abs(published) < 0.25:
+            return "±0.005 abs (value < 0.25)", lambda d, r: d <= 0.005
+        return "±2 % rel", lambda d, r: r <= 0.02
+    if kind == "contraction":
+        return "±1 point", lambda d, r: d <= 1.0
+    if kind == "tolerance":
+        return "equal", lambda d, r: d <= 1e-12
+    if kind == "unresolved":
+        return "≥ 98 % of the search range", lambda d, r: d <= 2.0
+    raise ValueError(f"unknown kind of published number '{kind}'")
+
+
+class _Rows:
+    def __init__(self):
+        self.rows = []
+
+    def add(self, quantity: str, material: str, published, reproduced, kind: str) -> None:
+        pub, rep = _num(published), _num(reproduced)
+        text, test = _rule(kind, pub)
+        if kind == "unresolved":           # published 100 % of the range; only falling short counts
+            abs_diff = max(0.0, pub - rep) if np.isfinite(rep) else math.nan
+        else:
+            abs_diff = abs(rep - pub) if np.isfinite(rep) else math.nan
+        rel_diff = abs_diff / abs(pub) if pub != 0 and np.isfinite(abs_diff) else math.nan
+        ok = bool(np.isfinite(abs_diff) and test(abs_diff, rel_diff if np.isfinite(rel_diff) else abs_diff))
+        self.rows.append({"quantity": quantity, "material": material, "published": pub, "reproduced": rep,
+                          "abs_diff": abs_diff, "rel_diff": rel_diff, "tolerance": text, "pass": ok})
+
+
+def _scenario_rows(identifiability: pd.DataFrame, material: str, scenario: str) -> pd.DataFrame:
+    sel = identifiability[(identifiability["material"] == material) & (identifiability["scenario"] == scenario)]
+    return sel.set_index("factor")
+
+
+def _fraction(identifiability, material, scenario) -> float:
+    sel = _scenario_rows(identifiability, material, scenario)
+    return float(sel["feasible_fraction_pct"].iloc[0]) if len(sel) else math.nan
+
+
+def _column(identifiability, material, scenario, factor, column) -> float:
+    sel = _scenario_rows(identifiability, material, scenario)
+    return float(sel.loc[factor, column]) if factor in sel.index else math.nan
+
+
+def paper_comparison(published: dict, surrogate_fit: pd.DataFrame, identifiability: pd.DataFrame,
+                     pareto_intervals: dict[str, pd.DataFrame]) -> pd.DataFrame:
+    """One row per published number: ``quantity, material, published, reproduced, abs_diff,
+    rel_diff, tolerance, pass``.
+
+    ``surrogate_fit`` has ``material, response, r2, rmse, ...``; ``identifiability`` has
+    ``material, scenario, tolerance, feasible_fraction_pct, factor, lower, upper, width``;
+    ``pareto_intervals[material]`` has ``factor, lower, upper, n_points``.  A number whose
+    reproduction is missing gets NaN and fails.  Verified against hand-made tables in
+    ``tests/test_paper.py``.
+    """
+    out = _Rows()
+    fits = surrogate_fit.set_index(["material", "response"])
+
+    for material, responses in (published.get("table2") or {}).items():
+        for response, stats in responses.items():
+            for stat, kind in (("r2", "r2"), ("rmse", "rmse")):
+                if stat in stats:
+                    key = (material, response)
+                    rep = fits.loc[key, stat] if key in fits.index else math.nan
+                    out.add(f"Table 2 {stat.upper() if stat == 'rmse' else 'R²'} {response}", material,
+                            stats[stat], rep, kind)
+
+    for material, scenarios in (published.get("tolerances") or {}).items():
+        for scenario, eps in scenarios.items():
+            sel = _scenario_rows(identifiability, material, scenario)
+            rep = float(sel["tolerance"].iloc[0]) if len(sel) else math.nan
+            out.add(f"tolerance ε {scenario}", material, eps, rep, "tolerance")
+
+    for material, scenarios in (published.get("table3") or {}).items():
+        for scenario, entry in scenarios.items():
+            out.add(f"Table 3 feasible fraction [%] {scenario}", material, entry["feasible_fraction_pct"],
+                    _fraction(identifiability, material, scenario), "fraction")
+            for factor, width in (entry.get("width") or {}).items():
+                out.add(f"Table 3 width {factor} {scenario}", material, width,
+                        _column(identifiability, material, scenario, factor, "width"), "width")
+
+    for item in published.get("contractions") or []:
+        material, simple, rich = item["material"], item["from"], item["to"]
+        if item["quantity"] == "fraction":
+            before, after = (_fraction(identifiability, material, s) for s in (simple, rich))
+            what = "feasible fraction"
+        else:
+            before, after = (_column(identifiability, material, s, item["factor"], "width") for s in (simple, rich))
+            what = f"width {item['factor']}"
+        rep = 100.0 * (after / before - 1.0) if before else math.nan
+        out.add(f"contraction [%] {what}, {simple} → {rich}", material, item["value"], rep, "contraction")
+
+    for material, scenarios in (published.get("intervals") or {}).items():
+        for scenario, factors in scenarios.items():
+            for factor, (low, high) in factors.items():
+                out.add(f"interval {factor} lower end, {scenario}", material, low,
+                        _column(identifiability, material, scenario, factor, "lower"), "width")
+                out.add(f"interval {factor} upper end, {scenario}", material, high,
+                        _column(identifiability, material, scenario, factor, "upper"), "width")
+
+    paste = published.get("paste_diameter_only")
+    if paste:
+        scenario = paste["scenario"]
+        out.add(f"feasible fraction [%] {scenario}", "paste", paste["feasible_fraction_pct"],
+                _fraction(identifiability, "paste", scenario), "fraction")
+        for factor, value in (paste.get("upper") or {}).items():
+            out.add(f"upper bound {factor} (≲), {scenario}", "paste", value,
+                    _column(identifiability, "paste", scenario, factor, "upper"), "width")
+        domain = (published.get("search_domain") or {}).get("paste", {})
+        for factor in paste.get("unresolved") or []:
+            low, high = domain[factor]
+            width = _column(identifiability, "paste", scenario, factor, "width")
+            out.add(f"{factor} unresolved: width [% of search range], {scenario}", "paste", 100.0,
+                    100.0 * width / (float(high) - float(low)), "unresolved")
+
+    for material, entry in (published.get("pareto") or {}).items():
+        table = pareto_intervals.get(material)
+        summary = table.set_index("factor") if table is not None else pd.DataFrame()
+        for factor, (low, high) in entry["intervals"].items():
+            for end, value in (("lower", low), ("upper", high)):
+                rep = float(summary.loc[factor, end]) if factor in summary.index else math.nan
+                out.add(f"Pareto interval {factor} {end} end (error < {entry['max_error']:g})", material, value,
+                        rep, "width")
+
+    return pd.DataFrame(out.rows, columns=COLUMNS)

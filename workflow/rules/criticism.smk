@@ -1,0 +1,44 @@
+rule criticize_material:
+    input:
+        table=f"{RESULTS}/validated/{{material}}.parquet",
+        fits=f"{RESULTS}/fits/{{material}}.parquet",
+    output:
+        responses=directory(f"{RESULTS}/criticism/{{material}}"),
+        findings=f"{RESULTS}/criticism/{{material}}_findings.parquet",
+        calibration=f"{RESULTS}/criticism/{{material}}_calibration.parquet",
+        summary=f"{RESULTS}/criticism/{{material}}.json",
+        figure=report(
+            f"{RESULTS}/figures/residuals_{{material}}.png",
+            category="Model criticism",
+            caption="../report/residuals.rst",
+        ),
+    params:
+        material_cfg=material_cfg,
+        grid_points=material_grid_points,
+    conda:
+        "../envs/demid.yaml"
+    log:
+        "logs/criticism/{material}.log",
+    benchmark:
+        "benchmarks/criticism/{material}.tsv"
+    script:
+        "../../scripts/criticize_material.py"
+
+
+rule criticism_tables:
+    input:
+        findings=expand(f"{RESULTS}/criticism/{{material}}_findings.parquet", material=MATERIALS),
+        calibration=expand(f"{RESULTS}/criticism/{{material}}_calibration.parquet", material=MATERIALS),
+    output:
+        findings=f"{RESULTS}/tables/criticism.csv",
+        calibration=f"{RESULTS}/tables/calibration_residuals.csv",
+    params:
+        materials=MATERIALS,
+    conda:
+        "../envs/demid.yaml"
+    log:
+        "logs/tables/criticism.log",
+    benchmark:
+        "benchmarks/tables/criticism.tsv"
+    script:
+        "../../scripts/criticism_tables.py"
