@@ -108,11 +108,10 @@ def sets_figure(domain: Domain, factor_cfg: dict, sets: dict[str, AdmissibleSet]
     if reference_point:
         handles.append(plt.Line2D([], [], marker="*", ms=10, color="#d62728", mec="k", ls="none",
                                   label="reference point"))
-    fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 2), frameon=False,
-               bbox_to_anchor=(0.5, -0.02))
+    fig.legend(handles=handles, loc="lower center", ncol=1, frameon=False, bbox_to_anchor=(0.5, 0.0))
     if title:
         fig.suptitle(title)
-    fig.tight_layout(rect=(0, 0.08 + 0.04 * ((len(handles) - 1) // 2), 1, 1))
+    fig.tight_layout(rect=(0, 0.035 + 0.045 * len(handles), 1, 1))
     return fig
 
 
@@ -160,20 +159,35 @@ def surface_figure(domain: Domain, factor_cfg: dict, response_cfg: dict, grid: p
 
 def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, error_of: str, target: float, minimise: str,
                   max_error: float, response_cfg: dict, title: str = "", cloud_points: int = 60_000) -> plt.Figure:
-    """Objective cloud (deterministic subsample of grid points) and the Pareto front."""
+    """Objective cloud (a seeded random subsample of the grid) and the Pareto front, with a zoom on
+    the low-error end where the front's intervals are read."""
     error = 100 * np.abs(grid[error_of].to_numpy() - target) / abs(target)
     objective = grid[minimise].to_numpy()
-    step = max(1, len(error) // cloud_points)
-    fig, ax = plt.subplots(figsize=(5.6, 4.2))
-    ax.plot(error[::step], objective[::step], ".", ms=1.2, color="#bdbdbd", alpha=0.6, rasterized=True,
-            label="grid points (subsample)")
-    ax.plot(100 * front["error"], front["objective"], "-", color="#08519c", lw=1.6, label="Pareto front")
-    ax.axvline(100 * max_error, color="#a63603", ls="--", lw=1, label=f"error = {100 * max_error:g} %")
-    ax.set_xlabel(f"relative error of {response_cfg[error_of].get('label') or error_of} [%]")
-    ax.set_ylabel(_label(response_cfg[minimise], minimise))
-    ax.legend(frameon=False, loc="upper right")
+    rng = np.random.default_rng(0)  # a random subsample avoids the moire of a strided one
+    pick = np.sort(rng.choice(len(error), size=min(cloud_points, len(error)), replace=False))
+    fig, axes = plt.subplots(1, 2, figsize=(9.6, 4.0))
+    front_err = 100 * front["error"].to_numpy()
+    front_obj = front["objective"].to_numpy()
+    for ax, zoom in zip(axes, (False, True)):
+        ax.plot(error[pick], objective[pick], ".", ms=1.2, color="#bdbdbd", alpha=0.6, rasterized=True,
+                label="grid points (random subsample)")
+        ax.plot(front_err, front_obj, "-", color="#08519c", lw=1.8, label="Pareto front")
+        ax.axvline(100 * max_error, color="#a63603", ls="--", lw=1, label=f"error = {100 * max_error:g} %")
+        ax.set_xlabel(f"relative error of {response_cfg[error_of].get('label') or error_of} [%]")
+        ax.set_ylabel(_label(response_cfg[minimise], minimise))
+        if zoom:
+            xmax = 3 * 100 * max_error
+            near = front_obj[front_err <= xmax]
+            lo, hi = (near.min(), near.max()) if len(near) else (front_obj.min(), front_obj.max())
+            pad = 0.5 * (hi - lo) + 1e-9 * max(abs(hi), 1.0)
+            ax.set_xlim(0, xmax)
+            ax.set_ylim(lo - pad, hi + 4 * pad)
+            ax.set_title(f"zoom: error ≤ {xmax:g} %")
+        else:
+            ax.legend(frameon=False, loc="upper right")
+            ax.set_title("objective cloud")
     if title:
-        ax.set_title(title)
+        fig.suptitle(title)
     fig.tight_layout()
     return fig
 
