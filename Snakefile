@@ -16,6 +16,7 @@ include: "workflow/rules/admissibility.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/tables.smk"
 include: "workflow/rules/uncertainty.smk"
+include: "workflow/rules/criticism.smk"
 include: "workflow/rules/report.smk"
 
 

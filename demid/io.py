@@ -40,7 +40,12 @@ def write_parquet(frame: pd.DataFrame, path: Path | str) -> None:
     table = pa.Table.from_pandas(frame.reset_index(drop=True), preserve_index=False)
     table = table.replace_schema_metadata(None)
     with atomic_path(path) as tmp:
-        pq.write_table(table, tmp, compression="zstd", write_statistics=False)
+        # Byte-stream-split floats compress better and read ~2x faster than dictionary pages
+        # for the large grid tables; no statistics keeps the bytes independent of writer details.
+        floats = [f.name for f in table.schema if pa.types.is_floating(f.type)]
+        pq.write_table(table, tmp, compression="zstd", use_dictionary=[f.name for f in table.schema
+                                                                      if f.name not in floats],
+                       use_byte_stream_split=floats or False, write_statistics=False)
 
 
 def read_parquet(path: Path | str) -> pd.DataFrame:

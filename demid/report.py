@@ -13,6 +13,22 @@ IDENTIFIABILITY_COLUMNS = ["material", "scenario", "observables", "tolerance", "
                            "lower", "upper", "width"]
 
 
+TRANSCRIPTION_COLUMNS = ["material", "response", "statistic", "published", "reproduced", "agrees", "printed"]
+
+
+def summary_tables(inputs: dict[str, dict[str, str | Path]]) -> dict[str, pd.DataFrame]:
+    """Every cross-material CSV from the per-material parquet files (keyed by the rule's input names)."""
+    out = {
+        "surrogate_fit": surrogate_fit_table(inputs["statistics"]),
+        "identifiability": identifiability_table(list(inputs["scenarios"].values())),
+        "transcription": stack_material_tables(inputs["transcription"]).reindex(columns=TRANSCRIPTION_COLUMNS),
+    }
+    for name in ("robust", "sweep", "information_gain", "ranking", "findings", "calibration"):
+        if name in inputs:
+            out[name] = stack_material_tables(inputs[name])
+    return out
+
+
 def surrogate_fit_table(statistics: dict[str, str | Path]) -> pd.DataFrame:
     """Table 2: one row per material x response, from the per-material statistics parquet files."""
     frames = []
@@ -203,6 +219,36 @@ class ReportSections:
                                  f"{s['restores']} of {res['n_published']} statistics)")
         return [self._md("\n".join(lines))]
 
+    def criticism(self, m: str) -> list:
+        """What the surrogate and the calibrated simulation get wrong, the named cause and the gain."""
+        summary = self.root / "criticism" / f"{m}.json"
+        if not summary.is_file():
+            return []
+        import json
+
+        info = json.loads(summary.read_text(encoding="utf-8"))
+        lines = ["### What the model gets wrong", "",
+                 "**Level 1 — surrogate against the simulation runs.** Each quadratic is tested against a fixed "
+                 "catalogue of causes (a missing cubic or mixed term, a response transform, an outlying run, "
+                 "run-order drift, non-constant variance) with family-wise error control; a finding is kept only "
+                 "with its extension and the measured gain (leave-one-out RMSE, AICc)."]
+        for response, res in info["level1"].items():
+            if res["messages"]:
+                lines += [f"- `{response}`: " + " ".join(res["messages"])]
+            else:
+                lines += [f"- `{response}`: nothing found — the quadratic is adequate for these runs."]
+        findings = self._csv("criticism.csv")
+        if findings is not None and "response" in findings.columns and len(findings[findings["material"] == m]):
+            cols = [c for c in ["response", "cause", "detail", "p_value", "loo_rmse_baseline", "loo_rmse_extended",
+                                "delta_aicc"] if c in findings.columns]
+            lines += ["", markdown_table(findings[findings["material"] == m][cols])]
+        level2 = info.get("level2")
+        if level2:
+            lines += ["", "**Level 2 — calibrated simulation against the experiment.** " + level2["message"]]
+        parts = [self._md("\n".join(lines))]
+        parts.append(self._image(self.root / "figures" / f"residuals_{m}.png"))
+        return parts
+
     def uncertainty(self, m: str) -> list:
         """Strict vs robust sets, tolerance sweep, posteriors and the next-experiment advice."""
         summary = self.root / "uncertainty" / f"{m}.json"
@@ -274,6 +320,7 @@ class ReportSections:
                 iv = pareto[pareto["kind"] == "interval"][["factor", "lower", "upper", "n_points"]]
                 parts.append(self._md(f"Intervals over Pareto points with error < {100 * par['max_error']:g} %:\n\n"
                                       + markdown_table(iv)))
+        parts += self.criticism(m)
         parts += self.uncertainty(m)
         anova = self.root / "fits" / f"{m}_anova.parquet"
         if anova.is_file():
@@ -287,11 +334,14 @@ class ReportSections:
 
 
 def stack_material_tables(files: dict[str, str | Path]) -> pd.DataFrame:
-    """Concatenate per-material parquet tables with a leading ``material`` column."""
+    """Concatenate per-material parquet tables with a leading ``material`` column (columns kept when empty)."""
     frames = []
     for material, path in files.items():
         frame = read_parquet(path)
         frame.insert(0, "material", material)
         frames.append(frame)
-    frames = [f for f in frames if len(f)]
-    return pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=["material"])
+    filled = [f for f in frames if len(f)]
+    if filled:
+        return pd.concat(filled, ignore_index=True)
+    widest = max(frames, key=lambda f: f.shape[1]) if frames else pd.DataFrame(columns=["material"])
+    return widest.iloc[0:0]

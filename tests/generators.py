@@ -30,7 +30,8 @@ import numpy as np
 import pandas as pd
 
 from demid.admissibility import Domain
-from demid.design import Coding, ccd_points, cubic_terms, model_matrix, parse_term, quadratic_terms, rotatable_alpha, term_name
+from demid.design import (Coding, ccd_points, cubic_terms, model_matrix, parse_term, quadratic_terms,
+                          rotatable_alpha, term_name)
 from demid.surrogate import Surrogate
 
 FACTORS = {2: ["mu_r", "gamma"], 3: ["mu_s", "mu_r", "gamma"]}

@@ -1,9 +1,15 @@
 """Model criticism: hidden effects must be found and named, clean tables must stay quiet.
 
-Effect sizes used below are where the benchmark (benchmarks/criticism_power.py)
-gives a naming rate close to 1 for the design; smaller effects are named less
-often, as the benchmark reports.  The reference computations use statsmodels
-and scipy directly.
+Effect sizes below are where benchmarks/criticism_power.py (200 tables per
+cell) names the planted cause and place in at least 95 % of tables: cubic term
+>= 6 noise SDs (2 factors: 1.00 at 6; 3 factors: 1.00 at 6), log-normal response
+spanning 3 nepers (0.965) / 2 nepers with 3 factors (0.99), outlier 30 / 20 SDs
+(1.00 / 0.995), drift >= 10 SDs over the campaign (>= 0.995), and scatter growing
+30-fold along a factor, seen only with replicated points (0.955 with factorial and
+axial points in triplicate; unreplicated 13- and 20-run CCDs name it in < 30 % of
+tables even at 100-fold).  Smaller effects are named less often, as the benchmark
+reports next to the oracle test that knows the defect.  The reference
+computations use statsmodels and scipy directly.
 """
 
 from __future__ import annotations
@@ -15,7 +21,6 @@ import pandas as pd
 import pytest
 import statsmodels.api as sm
 from scipy import optimize, special
-from statsmodels.stats.diagnostic import het_breuschpagan
 from statsmodels.tools.eval_measures import aicc
 
 from demid.admissibility import Domain, admissible_set
@@ -108,13 +113,13 @@ def test_catalogue_statistics_match_statsmodels():
     assert entry["detail"] == table["run"].iloc[i]
     assert entry["statistic"] == pytest.approx(out[i, 0], rel=1e-8)
     assert entry["p_nominal"] == pytest.approx(out[i, 2], rel=1e-6)
-    r = base.resid / np.sqrt(1 - base.get_influence().hat_matrix_diag)
-    alpha = infer_axial_distance(table[FACTORS[2]].to_numpy(float))
-    for j, name in enumerate(FACTORS[2]):
-        lm = het_breuschpagan(r, sm.add_constant(coded[:, j] / alpha), robust=False)[0]
-        assert cat[("heteroscedasticity", name)]["statistic"] == pytest.approx(lm, rel=1e-8)
     y = table["y"].to_numpy(float)
     x = base.model.exog
+    alpha = infer_axial_distance(table[FACTORS[2]].to_numpy(float))
+    for j, name in enumerate(FACTORS[2]):  # profile likelihood ratio of log-linear variance, gamma grid
+        v = coded[:, j] / alpha
+        llf = max(sm.WLS(y, x, weights=np.exp(-g * v)).fit().llf for g in np.linspace(-2.5, 2.5, 21))
+        assert cat[("heteroscedasticity", name)]["statistic"] == pytest.approx(2 * (llf - base.llf), rel=1e-8)
 
     def profile(lam):
         return -0.5 * len(y) * np.log(sm.OLS(special.boxcox(y, lam), x).fit().ssr / len(y)) \
@@ -149,7 +154,8 @@ PLANTS = [  # (kind, n_factors, size, extra generator arguments)
     ("outlier", 3, 20.0, {}),
     ("drift", 2, 14.0, {}),
     ("drift", 3, 10.0, {}),
-    ("het", 3, 1000.0, {}),
+    ("het", 2, 30.0, {"replicates": 3}),  # unequal scatter needs replicated points to be seen
+    ("het", 3, 100.0, {"replicates": 2}),
 ]
 CAUSE_OF = {"term": "missing_term", "log": "response_transform", "outlier": "outlier", "drift": "drift",
             "het": "heteroscedasticity"}
@@ -249,7 +255,7 @@ def test_transform_extension_back_transforms_and_counts_the_jacobian():
 
 def test_drift_extension_predicts_at_the_mean_run_order():
     table, _ = ccd_table(14, 2, "drift", 14.0)
-    res = criticize(table, FACTORS[2], "y")
+    res = criticize(table, FACTORS[2], "y", max_findings=1)
     assert res.findings[0].cause == "drift"
     run = table["run"].to_numpy(float)
     ext = quadratic_ols(table, FACTORS[2], extra=run - run.mean())
@@ -261,21 +267,21 @@ def test_drift_extension_predicts_at_the_mean_run_order():
 
 
 def test_heteroscedasticity_extension_is_maximum_likelihood_wls():
-    table, planted = ccd_table(101, 3, "het", 1000.0)
-    res = criticize(table, FACTORS[3], "y")
+    table, planted = ccd_table(101, 2, "het", 30.0, replicates=3)
+    res = criticize(table, FACTORS[2], "y")
     f = res.findings[0]
     assert (f.cause, f.detail) == ("heteroscedasticity", planted.factor)
-    coded, alpha = coded_of(table, FACTORS[3])
-    v = coded[:, FACTORS[3].index(planted.factor)] / alpha
-    x = model_matrix(coded, quadratic_terms(3))
+    coded, alpha = coded_of(table, FACTORS[2])
+    v = coded[:, FACTORS[2].index(planted.factor)] / alpha
+    x = model_matrix(coded, quadratic_terms(2))
     y = table["y"].to_numpy(float)
 
     def negll(g):
         return -sm.WLS(y, x, weights=np.exp(-g * v)).fit().llf
 
-    g = optimize.minimize_scalar(negll, bounds=(-5, 5), method="bounded", options={"xatol": 1e-6}).x
+    g = optimize.minimize_scalar(negll, bounds=(-2.5, 2.5), method="bounded", options={"xatol": 1e-6}).x
     assert f.info["sd_ratio"] == pytest.approx(np.exp(g), rel=1e-3)
-    assert res.extended["aicc"] == pytest.approx(aicc(-negll(g), 20, 12), rel=1e-6)
+    assert res.extended["aicc"] == pytest.approx(aicc(-negll(g), len(y), 8), abs=1e-4)  # 6 + sigma + gamma
     assert res.extended["weighting"] == planted.factor
 
 
@@ -311,6 +317,15 @@ def test_json_and_frame_contract(tmp_path):
     assert len(pd.read_csv(tmp_path / "criticism.csv")) == len(res.findings)
 
 
+def test_too_few_runs_are_reported_not_tested():
+    table, _ = ccd_table(5, 2, alpha=1.0)
+    coded, _ = coded_of(table, FACTORS[2])
+    small = table[np.abs(coded).sum(axis=1) > 0].copy()  # no centre runs: 8 runs, 6 coefficients
+    res = criticize(small, FACTORS[2], "y")
+    assert res.findings == [] and res.catalogue == [] and "nothing could be tested" in res.summary
+    assert res.extended == res.baseline
+
+
 def test_residual_figure(tmp_path):
     fits, results = [], []
     for name, kind, size in (("d5", "outlier", 30.0), ("d10", "drift", 14.0), ("d15", "clean", 0.0)):
@@ -339,26 +354,40 @@ def test_level2_consistent_targets_are_met_at_the_true_point():
 def test_level2_best_point_is_the_minimax_point():
     case = mortar_case(3, "d10", shift=4.0)
     res = calibration_check(case.surrogates, case.domain, case.targets, case.tolerance, 41)
-    lo, hi = case.domain.search_bounds()
-    fine = Domain(case.domain.factors, case.domain.lower, case.domain.upper).grid(401)
-    worst = np.max([np.abs(s.predict(fine) - case.targets[o]) / case.targets[o]
-                    for o, s in case.surrogates.items()], axis=0)
-    assert res.best_max_error <= worst.min() + 1e-9
-    assert res.best_max_error == pytest.approx(worst.min(), abs=2e-4)
+    fine = case.domain.grid(401)
+
+    def worst(points):
+        return np.max([np.abs(s.predict(points) - case.targets[o]) / case.targets[o]
+                       for o, s in case.surrogates.items()], axis=0)
+
+    assert res.best_max_error <= worst(fine).min() + 1e-9
+    x0 = np.array([res.best_point[f] for f in case.domain.factors])
+    polish = optimize.minimize(lambda x: worst(x[None, :])[0], x0, method="Nelder-Mead",
+                               bounds=list(zip(case.domain.lower, case.domain.upper)),
+                               options={"xatol": 1e-10, "fatol": 1e-12})
+    assert res.best_max_error <= polish.fun + 1e-7
+    assert res.best_max_error == pytest.approx(worst(x0[None, :])[0])
 
 
 @pytest.mark.parametrize("shift", [4.0, 6.0])
 def test_level2_hidden_bias_is_named_with_a_spare_measurement(shift):
-    """Four readings, two parameters: one biased reading can be localised."""
+    """Four readings, two parameters: the biased reading is the bottleneck; at 6 tolerances it is
+    usually also the only reading whose removal makes the rest consistent."""
+    unique = 0
     for seed in range(4):
         for obs in EXTENDED_OBSERVABLES:
             case = mortar_case(seed, obs, shift=shift, observables=EXTENDED_OBSERVABLES)
             res = calibration_check(case.surrogates, case.domain, case.targets, case.tolerance, 81,
                                     case.true_point)
             assert not res.feasible and res.bottleneck == obs, (seed, obs, res.message)
-            if shift >= 6:
-                assert res.biased_observable == obs, (seed, obs, res.message)
-            assert abs(res.implied_bias[obs]) == pytest.approx(shift * case.tolerance, rel=0.05)
+            assert obs in res.bias_candidates and res.without[obs] == pytest.approx(0, abs=1e-6)
+            unique += res.biased_observable == obs
+            # target * (1 + b) read as target: the implied relative bias is -b / (1 + b)
+            b = shift * case.tolerance
+            assert b / (1 + b) - 1e-3 <= abs(res.implied_bias[obs]) <= b / (1 - b) + 1e-3
+            assert f"{obs} is the bottleneck" in res.message
+    if shift >= 6:
+        assert unique >= 14
 
 
 def test_level2_three_readings_detect_but_cannot_always_localise():

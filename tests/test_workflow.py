@@ -69,7 +69,7 @@ def test_self_made_study_runs_and_is_byte_identical(study_dir, tmp_path):
     assert jobs.get("validate_table") == 1 and jobs.get("fit_surrogates") == 1, edit.stdout
     assert re.search(r"material=n\b", edit.stdout)
     assert not re.search(r"material=m\b", edit.stdout), edit.stdout
-    assert jobs.get("surrogate_fit_table") == 1 and jobs.get("report_html") == 1
+    assert jobs.get("summary_tables") == 1 and jobs.get("report") == 1
 
 
 def test_failed_run_and_unreachable_target_complete(study_dir):

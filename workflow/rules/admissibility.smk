@@ -1,26 +1,8 @@
-rule predict_grid:
+rule admissibility:
     input:
         fits=f"{RESULTS}/fits/{{material}}.parquet",
     output:
         grid=f"{RESULTS}/grid/{{material}}.parquet",
-    params:
-        material_cfg=material_cfg,
-        grid_points=material_grid_points,
-    conda:
-        "../envs/demid.yaml"
-    log:
-        "logs/grid/{material}.log",
-    benchmark:
-        "benchmarks/grid/{material}.tsv"
-    script:
-        "../../scripts/predict_grid.py"
-
-
-rule evaluate_scenarios:
-    input:
-        fits=f"{RESULTS}/fits/{{material}}.parquet",
-        grid=f"{RESULTS}/grid/{{material}}.parquet",
-    output:
         scenarios=f"{RESULTS}/scenarios/{{material}}.parquet",
         figure=report(
             f"{RESULTS}/figures/sets_{{material}}.png",
@@ -33,11 +15,11 @@ rule evaluate_scenarios:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/scenarios/{material}.log",
+        "logs/admissibility/{material}.log",
     benchmark:
-        "benchmarks/scenarios/{material}.tsv"
+        "benchmarks/admissibility/{material}.tsv"
     script:
-        "../../scripts/evaluate_scenarios.py"
+        "../../scripts/admissibility.py"
 
 
 rule extract_pareto:

@@ -23,9 +23,19 @@ except InputError as err:
 
 RESULTS = config["results_dir"]
 MATERIALS = list(config["materials"])
-UNCERTAINTY_TABLES = [
+SUMMARY_TABLES = [
     f"{RESULTS}/tables/{name}.csv"
-    for name in ("robust_identifiability", "tolerance_sweep", "information_gain", "observable_ranking")
+    for name in (
+        "surrogate_fit",
+        "identifiability",
+        "transcription_check",
+        "robust_identifiability",
+        "tolerance_sweep",
+        "information_gain",
+        "observable_ranking",
+        "criticism",
+        "calibration_residuals",
+    )
 ]
 
 
@@ -86,19 +96,15 @@ def per_material_outputs(material):
 
 
 def report_tables():
-    out = [
-        f"{RESULTS}/tables/surrogate_fit.csv",
-        f"{RESULTS}/tables/identifiability.csv",
-        f"{RESULTS}/tables/transcription_check.csv",
-    ]
+    out = list(SUMMARY_TABLES)
     out += [f"{RESULTS}/tables/pareto_{m}.csv" for m in pareto_materials()]
     out += [f"{RESULTS}/validated/{m}.json" for m in MATERIALS]
     out += [f"{RESULTS}/fits/{m}_anova.parquet" for m in MATERIALS]
     out += [f"{RESULTS}/fits/{m}_diagnostics.parquet" for m in MATERIALS]
     if config.get("published"):
         out.append(f"{RESULTS}/tables/paper_comparison.csv")
-    out += UNCERTAINTY_TABLES
     out += [f"{RESULTS}/uncertainty/{m}.json" for m in MATERIALS]
+    out += [f"{RESULTS}/criticism/{m}.json" for m in MATERIALS]
     return out
 
 
@@ -108,7 +114,11 @@ def report_figures():
         out += [f"{RESULTS}/figures/sets_{m}.png", f"{RESULTS}/figures/surface_{m}.png"]
         if config["materials"][m].get("pareto"):
             out.append(f"{RESULTS}/figures/pareto_{m}.png")
-        out += [f"{RESULTS}/figures/sweep_{m}.png", f"{RESULTS}/figures/posterior_{m}.png"]
+        out += [
+            f"{RESULTS}/figures/sweep_{m}.png",
+            f"{RESULTS}/figures/posterior_{m}.png",
+            f"{RESULTS}/figures/residuals_{m}.png",
+        ]
     return out
 
 
@@ -122,13 +132,9 @@ def all_outputs():
     out = [o for m in MATERIALS for o in per_material_outputs(m)]
     out += paper_figures()
     out += report_figures()
-    out += UNCERTAINTY_TABLES
-    out += [
-        f"{RESULTS}/tables/surrogate_fit.csv",
-        f"{RESULTS}/tables/identifiability.csv",
-        f"{RESULTS}/tables/transcription_check.csv",
-        f"{RESULTS}/report/report.html",
-    ]
+    out += SUMMARY_TABLES
+    out += [f"{RESULTS}/criticism/{m}" for m in MATERIALS]
+    out.append(f"{RESULTS}/report/report.html")
     if config.get("published"):
         out.append(f"{RESULTS}/tables/paper_comparison.csv")
     return out

@@ -23,22 +23,3 @@ rule criticize_material:
         "benchmarks/criticism/{material}.tsv"
     script:
         "../../scripts/criticize_material.py"
-
-
-rule criticism_tables:
-    input:
-        findings=expand(f"{RESULTS}/criticism/{{material}}_findings.parquet", material=MATERIALS),
-        calibration=expand(f"{RESULTS}/criticism/{{material}}_calibration.parquet", material=MATERIALS),
-    output:
-        findings=f"{RESULTS}/tables/criticism.csv",
-        calibration=f"{RESULTS}/tables/calibration_residuals.csv",
-    params:
-        materials=MATERIALS,
-    conda:
-        "../envs/demid.yaml"
-    log:
-        "logs/tables/criticism.log",
-    benchmark:
-        "benchmarks/tables/criticism.tsv"
-    script:
-        "../../scripts/criticism_tables.py"

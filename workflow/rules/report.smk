@@ -1,32 +1,18 @@
-rule report_notebook:
+rule report:
     input:
         tables=report_tables(),
         figures=report_figures(),
         notebook=workflow.source_path("../notebooks/report.ipynb"),
     output:
         notebook=f"{RESULTS}/report/report.ipynb",
+        html=f"{RESULTS}/report/report.html",
     params:
         config_json=config_json(),
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/report/notebook.log",
+        "logs/report/report.log",
     benchmark:
-        "benchmarks/report/notebook.tsv"
+        "benchmarks/report/report.tsv"
     script:
-        "../../scripts/run_report.py"
-
-
-rule report_html:
-    input:
-        notebook=f"{RESULTS}/report/report.ipynb",
-    output:
-        html=f"{RESULTS}/report/report.html",
-    conda:
-        "../envs/demid.yaml"
-    log:
-        "logs/report/html.log",
-    benchmark:
-        "benchmarks/report/html.tsv"
-    script:
-        "../../scripts/render_report.py"
+        "../../scripts/report.py"

@@ -1,42 +1,41 @@
 localrules:
-    surrogate_fit_table,
-    identifiability_table,
+    summary_tables,
     paper_comparison_table,
-    transcription_table,
 
 
-rule surrogate_fit_table:
+rule summary_tables:
     input:
         statistics=expand(f"{RESULTS}/fits/{{material}}_statistics.parquet", material=MATERIALS),
-    output:
-        table=f"{RESULTS}/tables/surrogate_fit.csv",
-    params:
-        materials=MATERIALS,
-    conda:
-        "../envs/demid.yaml"
-    log:
-        "logs/tables/surrogate_fit.log",
-    benchmark:
-        "benchmarks/tables/surrogate_fit.tsv"
-    script:
-        "../../scripts/surrogate_fit_table.py"
-
-
-rule identifiability_table:
-    input:
         scenarios=expand(f"{RESULTS}/scenarios/{{material}}.parquet", material=MATERIALS),
+        transcription=expand(f"{RESULTS}/validated/{{material}}_transcription.parquet", material=MATERIALS),
+        robust=expand(f"{RESULTS}/uncertainty/{{material}}_robust.parquet", material=MATERIALS),
+        sweep=expand(f"{RESULTS}/uncertainty/{{material}}_sweep.parquet", material=MATERIALS),
+        information_gain=expand(
+            f"{RESULTS}/uncertainty/{{material}}_information_gain.parquet", material=MATERIALS
+        ),
+        ranking=expand(f"{RESULTS}/uncertainty/{{material}}_ranking.parquet", material=MATERIALS),
+        findings=expand(f"{RESULTS}/criticism/{{material}}_findings.parquet", material=MATERIALS),
+        calibration=expand(f"{RESULTS}/criticism/{{material}}_calibration.parquet", material=MATERIALS),
     output:
-        table=f"{RESULTS}/tables/identifiability.csv",
+        surrogate_fit=f"{RESULTS}/tables/surrogate_fit.csv",
+        identifiability=f"{RESULTS}/tables/identifiability.csv",
+        transcription=f"{RESULTS}/tables/transcription_check.csv",
+        robust=f"{RESULTS}/tables/robust_identifiability.csv",
+        sweep=f"{RESULTS}/tables/tolerance_sweep.csv",
+        information_gain=f"{RESULTS}/tables/information_gain.csv",
+        ranking=f"{RESULTS}/tables/observable_ranking.csv",
+        findings=f"{RESULTS}/tables/criticism.csv",
+        calibration=f"{RESULTS}/tables/calibration_residuals.csv",
     params:
         materials=MATERIALS,
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/tables/identifiability.log",
+        "logs/tables/summary.log",
     benchmark:
-        "benchmarks/tables/identifiability.tsv"
+        "benchmarks/tables/summary.tsv"
     script:
-        "../../scripts/identifiability_table.py"
+        "../../scripts/summary_tables.py"
 
 
 rule paper_comparison_table:
@@ -57,20 +56,3 @@ rule paper_comparison_table:
         "benchmarks/tables/paper_comparison.tsv"
     script:
         "../../scripts/paper_comparison_table.py"
-
-
-rule transcription_table:
-    input:
-        checks=expand(f"{RESULTS}/validated/{{material}}_transcription.parquet", material=MATERIALS),
-    output:
-        table=f"{RESULTS}/tables/transcription_check.csv",
-    params:
-        materials=MATERIALS,
-    conda:
-        "../envs/demid.yaml"
-    log:
-        "logs/tables/transcription_check.log",
-    benchmark:
-        "benchmarks/tables/transcription_check.tsv"
-    script:
-        "../../scripts/transcription_table.py"
