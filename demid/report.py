@@ -31,12 +31,7 @@ def summary_tables(inputs: dict[str, dict[str, str | Path]]) -> dict[str, pd.Dat
 
 def surrogate_fit_table(statistics: dict[str, str | Path]) -> pd.DataFrame:
     """Table 2: one row per material x response, from the per-material statistics parquet files."""
-    frames = []
-    for material, path in statistics.items():
-        frame = read_parquet(path)
-        frame.insert(0, "material", material)
-        frames.append(frame)
-    return pd.concat(frames, ignore_index=True)[SURROGATE_FIT_COLUMNS]
+    return stack_material_tables(statistics)[SURROGATE_FIT_COLUMNS]
 
 
 def identifiability_table(scenario_files) -> pd.DataFrame:
