@@ -1382,6 +1382,8 @@ def _level2_message(r: Level2Result) -> str:
     sb = r.shared_bias
     spare = k - d - 1
     meas = f"{k} measurement{'s' if k != 1 else ''} and {d} parameter{'s' if d != 1 else ''}"
+    if r.feasible:
+        return " ".join(parts)
     if spare < 0:
         parts.append(f"With {meas}, a shared relative bias on the targets is not identifiable (any point "
                      f"fits once it is free).")
