@@ -1506,6 +1506,40 @@ def _identifiability_effect(surrogates: dict, extended, response: str, material_
     return rows
 
 
+def reference_point_position(surrogates: dict, material_cfg: dict, n: int) -> list[dict]:
+    """Where the source's chosen point lies relative to each scenario's admissible set.
+
+    ``inside`` is evaluated at the point itself; ``nearest`` is the closest admissible grid node
+    (distance in units of the search ranges, in percent, so factors of different scale compare).
+    """
+    from .admissibility import Domain, admissible_set
+
+    ref = material_cfg.get("reference_point")
+    if not ref:
+        return []
+    domain = Domain.from_config(material_cfg["factors"])
+    targets = {r: float(c["target"]) for r, c in material_cfg["responses"].items() if "target" in c}
+    point = np.array([[ref[f] for f in domain.factors]], dtype=float)
+    lo, hi = domain.search_bounds()
+    u_ref = (domain.to_search(point)[0] - lo) / (hi - lo)
+    rows = []
+    for name, scen in (material_cfg.get("scenarios") or {}).items():
+        obs = scen["observables"]
+        errors = {o: float((surrogates[o].predict(point)[0] - targets[o]) / abs(targets[o])) for o in obs}
+        inside = max(abs(e) for e in errors.values()) <= scen["tolerance"]
+        aset = admissible_set(surrogates, domain, obs, targets, scen["tolerance"], n)
+        nearest, distance = None, None
+        if aset.mask.any():
+            nodes = domain.grid(n)[aset.mask]
+            u = (domain.to_search(nodes) - lo) / (hi - lo)
+            k = int(np.argmin(np.sum((u - u_ref) ** 2, axis=1)))
+            nearest = dict(zip(domain.factors, map(float, nodes[k])))
+            distance = 0.0 if inside else float(100 * np.sqrt(np.sum((u[k] - u_ref) ** 2)))
+        rows.append({"scenario": name, "inside": bool(inside), "errors": errors, "nearest_admissible": nearest,
+                     "distance_pct_of_range": distance})
+    return rows
+
+
 def criticize_material(table: pd.DataFrame, surrogates: dict, material_cfg: dict, n: int,
                        title: str) -> MaterialCriticism:
     """Level 1 for every response (with the identifiability effect of any extension) and level 2."""
@@ -1545,5 +1579,6 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material_cfg: dict
         "level1": {r: {"findings": len(p["findings"]), "messages": [f["message"] for f in p["findings"]]}
                    for r, p in response_json.items()},
         "level2": level2.to_json() if level2 is not None else None,
+        "reference_point": reference_point_position(surrogates, material_cfg, n_effect),
     }
     return MaterialCriticism(response_json, findings, calibration, summary, residual_figure(fits, results, title))

@@ -240,6 +240,17 @@ class ReportSections:
         level2 = info.get("level2")
         if level2:
             lines += ["", "**Level 2 — calibrated simulation against the experiment.** " + level2["message"]]
+        for pos in info.get("reference_point") or []:
+            errs = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in pos["errors"].items())
+            if pos["inside"]:
+                where = "lies inside the admissible set"
+            elif pos["nearest_admissible"] is None:
+                where = "cannot lie in it: the admissible set is empty"
+            else:
+                near = ", ".join(f"{f}={v:.4g}" for f, v in pos["nearest_admissible"].items())
+                where = (f"lies outside it, {pos['distance_pct_of_range']:.1f} % of the search range from the "
+                         f"nearest admissible point ({near})")
+            lines.append(f"- Reference point vs scenario *{pos['scenario']}*: it {where} (errors {errs}).")
         parts = [self._md("\n".join(lines))]
         parts.append(self._image(self.root / "figures" / f"residuals_{m}.png"))
         return parts
