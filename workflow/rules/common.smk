@@ -125,7 +125,7 @@ def report_figures():
 def config_json():
     import json
 
-    return json.dumps(config, sort_keys=True)
+    return json.dumps(config)  # keeps the config order of materials and responses
 
 
 def all_outputs():
