@@ -80,13 +80,18 @@ def test_failed_run_and_unreachable_target_complete(study_dir):
     config = (study_dir / "study.yaml").read_text(encoding="utf-8").replace("y2: {target: 95}", "y2: {target: 500}")
     (study_dir / "study.yaml").write_text(config, encoding="utf-8")
     proc = run_snakemake(study_dir, study_dir / "study.yaml", "results/tables/identifiability.csv",
-                         "results/validated/m.json")
+                         "results/validated/m.json", "results/report/report.html")
     assert proc.returncode == 0, proc.stderr[-3000:]
     ident = pd.read_csv(study_dir / "results" / "tables" / "identifiability.csv")
     both = ident[ident["scenario"] == "both"]
     assert (both["feasible_fraction_pct"] == 0).all() and both["lower"].isna().all()
-    assert (both["best_max_rel_error"] > 0.5).all()
+    scenarios = read_parquet(study_dir / "results" / "scenarios" / "m.parquet")
+    assert (scenarios.loc[scenarios["scenario"] == "both", "best_max_rel_error"] > 0.5).all()
+    assert list(ident.columns) == ["material", "scenario", "observables", "tolerance", "feasible_fraction_pct",
+                                   "factor", "lower", "upper", "width"]
     summary = (study_dir / "results" / "validated" / "m.json").read_text(encoding="utf-8")
     assert '"y1": [\n      2\n    ]' in summary and "failed" in summary
+    report = (study_dir / "results" / "report" / "report.html").read_text(encoding="utf-8")
+    assert "no point of the domain meets every target" in report
     stats = read_parquet(study_dir / "results" / "fits" / "m_statistics.parquet").set_index("response")
     assert stats.loc["y1", "n_runs"] == 12 and stats.loc["y2", "n_runs"] == 13
