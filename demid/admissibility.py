@@ -23,6 +23,9 @@ import pandas as pd
 
 from .surrogate import Surrogate
 
+#: Up to this many factors Omega is evaluated on a full grid; beyond it on scrambled Sobol points.
+MAX_GRID_DIM = 3
+
 
 @dataclass(frozen=True)
 class Domain:
@@ -75,6 +78,19 @@ class Domain:
         """Grid axes in actual units (log-spaced for log factors)."""
         return [10.0 ** ax if lg else ax for ax, lg in zip(self.search_axes(n), self.log)]
 
+    def sobol(self, n: int, seed: int = 0) -> np.ndarray:
+        """2**ceil(log2 n) scrambled Sobol points, uniform in search units, returned in actual units."""
+        from scipy.stats import qmc
+
+        lo, hi = self.search_bounds()
+        m = max(1, int(np.ceil(np.log2(max(n, 2)))))
+        return self.to_actual(lo + qmc.Sobol(self.dim, scramble=True, rng=np.random.default_rng(seed))
+                              .random_base2(m) * (hi - lo))
+
+    def sample(self, n: int) -> np.ndarray:
+        """The evaluation points: the n-per-axis grid up to 3 factors, n Sobol points beyond."""
+        return self.grid(n) if self.dim <= MAX_GRID_DIM else self.sobol(n)
+
     def grid(self, n: int) -> np.ndarray:
         """All grid nodes in actual units, shape (n**d, d), 'ij' (C) order."""
         axes = self.axes(n)
@@ -86,8 +102,8 @@ class Domain:
 
 
 def predict_grid(surrogates: dict[str, Surrogate], domain: Domain, n: int) -> pd.DataFrame:
-    """Surrogate predictions at every grid node: factor columns then one column per response."""
-    points = domain.grid(n)
+    """Surrogate predictions at every evaluation point (grid node, or Sobol point above 3 factors)."""
+    points = domain.sample(n)
     frame = pd.DataFrame(points, columns=list(domain.factors))
     for name, sur in surrogates.items():
         frame[name] = sur.predict(points)
@@ -113,6 +129,8 @@ class AdmissibleSet:
     best_error: float = np.nan
     best_point: np.ndarray = field(default_factory=lambda: np.array([]))
     evaluations: int = 0
+    points: np.ndarray | None = field(default=None, repr=False)  # sample points (Sobol evaluation only)
+    fraction_ci: tuple[float, float] | None = None
 
     @property
     def empty(self) -> bool:
@@ -367,6 +385,30 @@ def admissible_set(surrogates: dict[str, Surrogate], domain: Domain, observables
     )
 
 
+def sobol_admissible_set(surrogates: dict[str, Surrogate], domain: Domain, observables, targets: dict[str, float],
+                         tolerance: float, n: int, sample: pd.DataFrame | None = None) -> AdmissibleSet:
+    """Eq. (2)-(4) for more than 3 factors: randomised-QMC fraction with a confidence interval
+    (:func:`demid.uncertainty.sobol_fraction`), spans polished to the boundary, and the admissible
+    points of the evaluation sample for figures."""
+    from .uncertainty import sobol_fraction
+
+    observables = tuple(observables)
+    if sample is None:
+        sample = predict_grid({o: surrogates[o] for o in observables}, domain, n)
+    points = sample[list(domain.factors)].to_numpy()
+    resid = relative_residuals({o: sample[o].to_numpy() for o in observables}, targets, observables)
+    worst = np.max(np.abs(resid), axis=0)
+    mask = worst <= tolerance
+    est = sobol_fraction(surrogates, domain, observables, targets, tolerance, n, seed=0)
+    best = int(np.argmin(worst))
+    return AdmissibleSet(
+        observables=observables, tolerance=float(tolerance), factors=tuple(domain.factors), fraction=est.fraction,
+        node_fraction=float(mask.mean()), n_nodes=int(mask.size), n_admissible_nodes=int(mask.sum()),
+        n_refined_cells=0, lower=np.asarray(est.lower), upper=np.asarray(est.upper), mask=mask,
+        best_error=float(worst[best]), best_point=points[best], evaluations=int(est.evaluations + resid.size),
+        points=points, fraction_ci=(est.ci_lower, est.ci_upper))
+
+
 def evaluate_scenarios(surrogates: dict[str, Surrogate], material_cfg: dict, n: int,
                        grid_predictions: pd.DataFrame | None = None) -> tuple[pd.DataFrame, dict[str, AdmissibleSet]]:
     """Every configured scenario of a material: long table (one row per scenario x factor) and the sets."""
@@ -374,8 +416,12 @@ def evaluate_scenarios(surrogates: dict[str, Surrogate], material_cfg: dict, n: 
     targets = {r: float(c["target"]) for r, c in material_cfg["responses"].items() if "target" in c}
     frames, sets = [], {}
     for name, scen in (material_cfg.get("scenarios") or {}).items():
-        result = admissible_set(surrogates, domain, scen["observables"], targets, scen["tolerance"], n,
-                                grid_predictions=grid_predictions)
+        if domain.dim > MAX_GRID_DIM:
+            result = sobol_admissible_set(surrogates, domain, scen["observables"], targets, scen["tolerance"], n,
+                                          grid_predictions)
+        else:
+            result = admissible_set(surrogates, domain, scen["observables"], targets, scen["tolerance"], n,
+                                    grid_predictions=grid_predictions)
         frame = result.to_frame()
         frame.insert(0, "scenario", name)
         frames.append(frame)

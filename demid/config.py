@@ -145,7 +145,10 @@ def grid_size(config: dict, material: str) -> int:
     mat = config["materials"][material]
     if mat.get("grid_points"):
         return int(mat["grid_points"])
-    return int(config["grid_points"] if len(mat["factors"]) <= 2 else config["grid_points_3d"])
+    d = len(mat["factors"])
+    if d <= 2:
+        return int(config["grid_points"])
+    return int(config["grid_points_3d"] if d == 3 else config["sobol_points"])
 
 
 def targets(material_cfg: dict) -> dict[str, float]:

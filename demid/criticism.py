@@ -1486,9 +1486,26 @@ def _level2_tolerance(material_cfg: dict) -> float:
     return float(min(scenarios, key=lambda sc: (-len(sc["observables"]), sc["tolerance"]))["tolerance"])
 
 
+def _admissible(surrogates, domain, observables, targets, tolerance, n):
+    from .admissibility import MAX_GRID_DIM, admissible_set, sobol_admissible_set
+
+    if domain.dim > MAX_GRID_DIM:
+        return sobol_admissible_set(surrogates, domain, observables, targets, tolerance, n)
+    return admissible_set(surrogates, domain, observables, targets, tolerance, n)
+
+
+def _effect_points(n: int, d: int) -> int:
+    """Grid points per axis (Sobol points above 3 factors) for the before/after and level-2 searches."""
+    if d <= 2:
+        return min(n, 401)
+    if d == 3:
+        return min(n, 61)
+    return min(n, 2 ** 14)
+
+
 def _identifiability_effect(surrogates: dict, extended, response: str, material_cfg: dict, n: int) -> list[dict]:
     """Feasible fraction and spans of every scenario that uses ``response``, before and after the extension."""
-    from .admissibility import Domain, admissible_set
+    from .admissibility import Domain
 
     domain = Domain.from_config(material_cfg["factors"])
     targets = {r: float(c["target"]) for r, c in material_cfg["responses"].items() if "target" in c}
@@ -1496,9 +1513,9 @@ def _identifiability_effect(surrogates: dict, extended, response: str, material_
     for name, scen in (material_cfg.get("scenarios") or {}).items():
         if response not in scen["observables"]:
             continue
-        before = admissible_set(surrogates, domain, scen["observables"], targets, scen["tolerance"], n)
-        after = admissible_set({**surrogates, response: extended}, domain, scen["observables"], targets,
-                               scen["tolerance"], n)
+        before = _admissible(surrogates, domain, scen["observables"], targets, scen["tolerance"], n)
+        after = _admissible({**surrogates, response: extended}, domain, scen["observables"], targets,
+                            scen["tolerance"], n)
         rows.append({"scenario": name, "fraction_pct_before": 100 * before.fraction,
                      "fraction_pct_after": 100 * after.fraction,
                      "width_before": dict(zip(domain.factors, before.width)),
@@ -1512,7 +1529,7 @@ def reference_point_position(surrogates: dict, material_cfg: dict, n: int) -> li
     ``inside`` is evaluated at the point itself; ``nearest`` is the closest admissible grid node
     (distance in units of the search ranges, in percent, so factors of different scale compare).
     """
-    from .admissibility import Domain, admissible_set
+    from .admissibility import Domain
 
     ref = material_cfg.get("reference_point")
     if not ref:
@@ -1527,10 +1544,10 @@ def reference_point_position(surrogates: dict, material_cfg: dict, n: int) -> li
         obs = scen["observables"]
         errors = {o: float((surrogates[o].predict(point)[0] - targets[o]) / abs(targets[o])) for o in obs}
         inside = max(abs(e) for e in errors.values()) <= scen["tolerance"]
-        aset = admissible_set(surrogates, domain, obs, targets, scen["tolerance"], n)
+        aset = _admissible(surrogates, domain, obs, targets, scen["tolerance"], n)
         nearest, distance = None, None
         if aset.mask.any():
-            nodes = domain.grid(n)[aset.mask]
+            nodes = (aset.points if aset.points is not None else domain.grid(n))[aset.mask]
             u = (domain.to_search(nodes) - lo) / (hi - lo)
             k = int(np.argmin(np.sum((u - u_ref) ** 2, axis=1)))
             nearest = dict(zip(domain.factors, map(float, nodes[k])))
@@ -1554,7 +1571,8 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material_cfg: dict
     coding = infer_coding(table, factors, design, material_cfg["data"], log_factors)
     # Identifiability before/after is evaluated on a coarser grid than the main one: it is a
     # comparison of two surrogates, and 3-factor grids would otherwise dominate the run time.
-    n_effect = min(n, 401 if len(factors) <= 2 else 61)
+    n_effect = _effect_points(n, len(factors))
+    n_level2 = n_effect if len(factors) <= 3 else max(5, int(2e5 ** (1 / len(factors))))
     response_json, frames, results, fits = {}, [], [], []
     for response in material_cfg["responses"]:
         result = criticize(table, factors, response, alpha=alpha, log_factors=log_factors)
@@ -1573,7 +1591,7 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material_cfg: dict
     level2 = None
     if targets:
         level2 = calibration_check({r: surrogates[r] for r in targets}, domain, targets,
-                                   _level2_tolerance(material_cfg), n_effect, material_cfg.get("reference_point"))
+                                   _level2_tolerance(material_cfg), n_level2, material_cfg.get("reference_point"))
     calibration = level2.to_frame() if level2 is not None else pd.DataFrame()
     summary = {
         "level1": {r: {"findings": len(p["findings"]), "messages": [f["message"] for f in p["findings"]]}

@@ -76,7 +76,12 @@ def sets_figure(domain: Domain, factor_cfg: dict, sets: dict[str, AdmissibleSet]
     """Overlay of every scenario's admissible set (pairwise projections for d > 2)."""
     d = domain.dim
     pairs = list(combinations(range(d), 2)) if d > 1 else [(0, 0)]
-    fig, axes = plt.subplots(1, len(pairs), figsize=(4.4 * len(pairs) + 0.6, 4.0), squeeze=False)
+    ncol = min(3, len(pairs))
+    nrow = int(np.ceil(len(pairs) / ncol))
+    fig, grid_axes = plt.subplots(nrow, ncol, figsize=(4.4 * ncol + 0.6, 4.0 * nrow), squeeze=False)
+    axes = grid_axes.reshape(1, -1)
+    for ax in axes[0][len(pairs):]:
+        ax.set_visible(False)
     handles = []
     for s_idx, (name, result) in enumerate(sets.items()):
         color = SCENARIO_COLORS[s_idx % len(SCENARIO_COLORS)]
@@ -84,6 +89,11 @@ def sets_figure(domain: Domain, factor_cfg: dict, sets: dict[str, AdmissibleSet]
         obs = "+".join(result.observables)
         frac = 100 * result.fraction
         handles.append(Patch(color=color, label=f"{label} ({obs}, ε={result.tolerance:g}): {frac:.3g} %"))
+        if result.points is not None:  # Sobol evaluation (more than 3 factors): admissible points
+            pts = domain.to_search(result.points[result.mask])
+            for ax, (i, j) in zip(axes[0], pairs):
+                ax.plot(pts[:, i], pts[:, j], ".", ms=1.5, color=color, rasterized=True)
+            continue
         cells = _cell_mask(result, n, d)
         for ax, (i, j) in zip(axes[0], pairs):
             other = tuple(k for k in range(d) if k not in (i, j))
@@ -111,7 +121,7 @@ def sets_figure(domain: Domain, factor_cfg: dict, sets: dict[str, AdmissibleSet]
     fig.legend(handles=handles, loc="lower center", ncol=1, frameon=False, bbox_to_anchor=(0.5, 0.0))
     if title:
         fig.suptitle(title)
-    fig.tight_layout(rect=(0, 0.035 + 0.045 * len(handles), 1, 1))
+    fig.tight_layout(rect=(0, (0.035 + 0.045 * len(handles)) / nrow, 1, 1))
     return fig
 
 

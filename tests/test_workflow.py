@@ -95,3 +95,37 @@ def test_failed_run_and_unreachable_target_complete(study_dir):
     assert "no point of the domain meets every target" in report
     stats = read_parquet(study_dir / "results" / "fits" / "m_statistics.parquet").set_index("response")
     assert stats.loc["y1", "n_runs"] == 12 and stats.loc["y2", "n_runs"] == 13
+
+
+def test_four_factor_study_uses_sobol_points(tmp_path):
+    """Above three factors a grid is out of reach: Sobol points, fractions with a confidence interval."""
+    from .helpers import make_ccd_table
+
+    def responses(x):
+        a, b, c, d = x.T
+        return {"y": 50 + 10 * a + 4 * b - 3 * c + 2 * d + 6 * a * b + 5 * a**2,
+                "z": 20 + 2 * a - 5 * b + 3 * c * d + 2 * d**2}
+
+    table = make_ccd_table(responses, [0] * 4, [1] * 4, alpha=2.0, center_runs=7, noise=0.2, seed=5, decimals=4)
+    table = table.rename(columns={"x1": "a", "x2": "b", "x3": "c", "x4": "d"})
+    (tmp_path / "data").mkdir()
+    table.to_csv(tmp_path / "data" / "four.csv", index=False)
+    (tmp_path / "four.yaml").write_text(
+        "sobol_points: 4096\n"
+        "materials:\n"
+        "  four:\n"
+        "    data: data/four.csv\n"
+        "    design: {type: ccd, alpha: 2.0, center_runs: 7}\n"
+        "    factors: {a: {lower: 0, upper: 1}, b: {lower: 0, upper: 1}, c: {lower: 0, upper: 1},"
+        " d: {lower: 0, upper: 1}}\n"
+        "    responses: {y: {target: 60}, z: {target: 20}}\n"
+        "    scenarios:\n"
+        "      y_only: {observables: [y], tolerance: 0.05}\n"
+        "      both: {observables: [y, z], tolerance: 0.05}\n",
+        encoding="utf-8")
+    proc = run_snakemake(tmp_path, tmp_path / "four.yaml")
+    assert proc.returncode == 0, proc.stderr[-4000:]
+    ident = pd.read_csv(tmp_path / "results" / "tables" / "identifiability.csv")
+    fractions = ident.drop_duplicates("scenario").set_index("scenario")["feasible_fraction_pct"]
+    assert 0 < fractions["both"] <= fractions["y_only"] < 100
+    assert len(read_parquet(tmp_path / "results" / "grid" / "four.parquet")) == 4096
