@@ -21,6 +21,7 @@ from math import factorial
 import numpy as np
 import pandas as pd
 
+from .config import targets as material_targets
 from .surrogate import Surrogate
 
 #: Up to this many factors Omega is evaluated on a full grid; beyond it on scrambled Sobol points.
@@ -413,7 +414,7 @@ def evaluate_scenarios(surrogates: dict[str, Surrogate], material_cfg: dict, n: 
                        grid_predictions: pd.DataFrame | None = None) -> tuple[pd.DataFrame, dict[str, AdmissibleSet]]:
     """Every configured scenario of a material: long table (one row per scenario x factor) and the sets."""
     domain = Domain.from_config(material_cfg["factors"])
-    targets = {r: float(c["target"]) for r, c in material_cfg["responses"].items() if "target" in c}
+    targets = material_targets(material_cfg)
     frames, sets = [], {}
     for name, scen in (material_cfg.get("scenarios") or {}).items():
         if domain.dim > MAX_GRID_DIM:

@@ -5,7 +5,6 @@ from __future__ import annotations
 import copy
 from pathlib import Path
 
-import jsonschema
 import yaml
 
 from .errors import InputError
@@ -50,6 +49,8 @@ def _fill_defaults(instance, schema: dict, root: dict):
 
 def validate_schema(config: dict, source: str = "config") -> dict:
     """Validate against the schema, fill defaults, return a new dict.  Raises InputError."""
+    import jsonschema  # only validation needs it; per-material jobs import this module for `targets`
+
     schema = load_schema()
     validator = jsonschema.Draft7Validator(schema)
     errors = sorted(validator.iter_errors(config), key=lambda e: (len(e.absolute_path), list(map(str, e.absolute_path))))
@@ -152,4 +153,5 @@ def grid_size(config: dict, material: str) -> int:
 
 
 def targets(material_cfg: dict) -> dict[str, float]:
+    """Measured targets of a material's responses (those that have one)."""
     return {r: float(c["target"]) for r, c in material_cfg["responses"].items() if "target" in c}

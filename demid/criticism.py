@@ -71,6 +71,7 @@ import statsmodels.api as sm
 from scipy import optimize, special, stats
 from statsmodels.tools.eval_measures import aicc as _sm_aicc
 
+from .config import targets as material_targets
 from .design import Coding, Term, cubic_terms, model_matrix, quadratic_terms, term_name
 from .surrogate import SurrogateFit, fit_response
 
@@ -1508,7 +1509,7 @@ def _identifiability_effect(surrogates: dict, extended, response: str, material_
     from .admissibility import Domain
 
     domain = Domain.from_config(material_cfg["factors"])
-    targets = {r: float(c["target"]) for r, c in material_cfg["responses"].items() if "target" in c}
+    targets = material_targets(material_cfg)
     rows = []
     for name, scen in (material_cfg.get("scenarios") or {}).items():
         if response not in scen["observables"]:
@@ -1535,7 +1536,7 @@ def reference_point_position(surrogates: dict, material_cfg: dict, n: int) -> li
     if not ref:
         return []
     domain = Domain.from_config(material_cfg["factors"])
-    targets = {r: float(c["target"]) for r, c in material_cfg["responses"].items() if "target" in c}
+    targets = material_targets(material_cfg)
     point = np.array([[ref[f] for f in domain.factors]], dtype=float)
     lo, hi = domain.search_bounds()
     u_ref = (domain.to_search(point)[0] - lo) / (hi - lo)
@@ -1586,7 +1587,7 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material_cfg: dict
         fits.append(fit_response(table, factors, response, coding=coding, log_factors=log_factors))
     findings = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame()
 
-    targets = {r: float(c["target"]) for r, c in material_cfg["responses"].items() if "target" in c}
+    targets = material_targets(material_cfg)
     domain = Domain.from_config(material_cfg["factors"])
     level2 = None
     if targets:

@@ -153,10 +153,6 @@ def nominal_levels(design_type: str, alpha: float) -> np.ndarray:
     return np.array([])
 
 
-def ccd_counts(n_factors: int, center_runs: int) -> dict[str, int]:
-    return {"factorial": 2 ** n_factors, "axial": 2 * n_factors, "center": center_runs}
-
-
 def rotatable_alpha(n_factors: int) -> float:
     return float((2 ** n_factors) ** 0.25)
 
