@@ -222,7 +222,11 @@ def surface_figure_from_surrogates(surrogates: dict, material_cfg: dict, table: 
             grid[name] = sur.predict(full)
         values = {r: grid[r].to_numpy() for r in surrogates}
         grid2 = pd.DataFrame(pts, columns=names[:2]).assign(**values)
+        held = ", ".join(
+            f"{material_cfg['factors'][f].get('label') or f} = {mid[k + 2]:.3g}"
+            + (f" {material_cfg['factors'][f]['unit']}" if material_cfg["factors"][f].get("unit", "-") != "-" else "")
+            for k, f in enumerate(names[2:]))
         return surface_figure(slice_domain, material_cfg["factors"], material_cfg["responses"], grid2, n, table,
-                              f"{title} (other factors at mid-range: {', '.join(names[2:])})")
+                              f"{title} — slice at {held}")
     grid = predict_grid(surrogates, domain, n)
     return surface_figure(domain, material_cfg["factors"], material_cfg["responses"], grid, n, table, title)
