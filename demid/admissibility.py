@@ -22,6 +22,7 @@ import numpy as np
 import pandas as pd
 
 from .config import targets as material_targets
+from .design import model_units
 from .surrogate import Surrogate
 
 #: Up to this many factors Omega is evaluated on a full grid; beyond it on scrambled Sobol points.
@@ -53,8 +54,7 @@ class Domain:
         return len(self.factors)
 
     def search_bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        lo = np.array([np.log10(v) if lg else v for v, lg in zip(self.lower, self.log)], dtype=float)
-        hi = np.array([np.log10(v) if lg else v for v, lg in zip(self.upper, self.log)], dtype=float)
+        lo, hi = self.to_search(np.array([self.lower, self.upper]))
         return lo, hi
 
     def to_actual(self, u: np.ndarray) -> np.ndarray:
@@ -65,11 +65,7 @@ class Domain:
         return u
 
     def to_search(self, x: np.ndarray) -> np.ndarray:
-        x = np.array(x, dtype=float, copy=True, ndmin=2)
-        for i, lg in enumerate(self.log):
-            if lg:
-                x[:, i] = np.log10(x[:, i])
-        return x
+        return model_units(x, self.factors, [f for f, lg in zip(self.factors, self.log) if lg])
 
     def search_axes(self, n: int) -> list[np.ndarray]:
         lo, hi = self.search_bounds()

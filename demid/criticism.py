@@ -72,7 +72,7 @@ from scipy import optimize, special, stats
 from statsmodels.tools.eval_measures import aicc as _sm_aicc
 
 from .config import targets as material_targets
-from .design import Coding, Term, cubic_terms, model_matrix, quadratic_terms, term_name
+from .design import Coding, Term, cubic_terms, model_matrix, model_units, quadratic_terms, term_name
 from .surrogate import SurrogateFit, fit_response
 
 CAUSES = ("missing_term", "response_transform", "outlier", "drift", "heteroscedasticity")
@@ -462,11 +462,7 @@ class ExtendedSurrogate:
         return [term_name(t, self.factors) for t in self.terms]
 
     def predict(self, points, chunk: int = 1_000_000) -> np.ndarray:
-        z = np.array(points, dtype=float, copy=True, ndmin=2)
-        for i, name in enumerate(self.factors):
-            if name in self.log_factors:
-                z[:, i] = np.log10(z[:, i])
-        coded = self.coding.to_coded(z)
+        coded = self.coding.to_coded(model_units(points, self.factors, self.log_factors))
         out = np.empty(len(coded))
         for start in range(0, len(coded), chunk):
             eta = model_matrix(coded[start:start + chunk], self.terms) @ self.coefficients
@@ -797,10 +793,7 @@ class CriticismResult:
 
 def _prepare(table: pd.DataFrame, factors: list[str], response: str, alpha: float | None,
              log_factors: tuple[str, ...]) -> tuple[_Data, SurrogateFit]:
-    z = table[factors].to_numpy(dtype=float).copy()
-    for i, name in enumerate(factors):
-        if name in log_factors:
-            z[:, i] = np.log10(z[:, i])
+    z = model_units(table[factors].to_numpy(), factors, log_factors)
     ok = np.isfinite(table[response].to_numpy(dtype=float))
     if alpha is None:
         alpha = infer_axial_distance(z[ok])

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .design import Coding, classify_points, nominal_levels, quadratic_terms
+from .design import Coding, classify_points, model_units, nominal_levels, quadratic_terms
 from .errors import InputError
 
 UNICODE_MINUS = "\u2212"
@@ -36,6 +36,7 @@ class ValidatedTable:
     point_types: np.ndarray
     warnings: list[str] = field(default_factory=list)
     failed: dict[str, list] = field(default_factory=dict)
+    log_factors: tuple[str, ...] = ()
 
     def summary(self, material: str) -> dict:
         counts = {t: int(np.sum(self.point_types == t)) for t in sorted(set(self.point_types))}
@@ -51,19 +52,12 @@ class ValidatedTable:
 
     def to_frame(self) -> pd.DataFrame:
         out = self.table.copy()
-        coded = self.coding.to_coded(_model_units(out, self.coding))
+        factors = list(self.coding.factors)
+        coded = self.coding.to_coded(model_units(out[factors].to_numpy(), factors, self.log_factors))
         for i, f in enumerate(self.coding.factors):
             out[f"coded:{f}"] = coded[:, i]
         out["point_type"] = self.point_types
         return out
-
-
-def _model_units(table: pd.DataFrame, coding: Coding, log_factors=()) -> np.ndarray:
-    z = table[list(coding.factors)].to_numpy(dtype=float).copy()
-    for i, f in enumerate(coding.factors):
-        if f in log_factors:
-            z[:, i] = np.log10(z[:, i])
-    return z
 
 
 def _sniff_delimiter(header: str) -> str:
@@ -197,7 +191,7 @@ def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str
     """Centre = most frequent level, unit = half the distance between the two next most frequent."""
     dtype = design["type"]
     alpha = float(design.get("alpha", 1.0))
-    z = _model_units(table, Coding(tuple(factors), (0.0,) * len(factors), (1.0,) * len(factors)), log_factors)
+    z = model_units(table[factors].to_numpy(), factors, log_factors)
     if dtype == "custom":
         return Coding.from_levels(factors, z, alpha)
     centers, units = [], []
@@ -229,7 +223,7 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
     dtype = design["type"]
     alpha = float(design.get("alpha", 1.0))
     coding = infer_coding(table, factors, design, src, log_factors)
-    z = _model_units(table, coding, log_factors)
+    z = model_units(table[factors].to_numpy(), factors, log_factors)
     coded = coding.to_coded(z)
     if dtype == "custom":
         return coding, np.array(["other"] * len(table))
@@ -318,4 +312,5 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
             note = " — pure error is no longer available" if centre_ok < 2 <= int(np.sum(types == "center")) else ""
             warnings.append(f"{src}, column '{r}': run(s) {', '.join(map(str, lost))} excluded from the fit "
                             f"(failed simulation){note}")
-    return ValidatedTable(table=table, coding=coding, point_types=types, warnings=warnings, failed=failed)
+    return ValidatedTable(table=table, coding=coding, point_types=types, warnings=warnings, failed=failed,
+                          log_factors=log_factors)

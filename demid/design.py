@@ -63,6 +63,15 @@ def cubic_terms(n_factors: int) -> list[Term]:
     return cubes + mixed
 
 
+def model_units(x, factors, log_factors=()) -> np.ndarray:
+    """A copy of points ``x`` (n, k) in model units: log10 for the factors in ``log_factors``."""
+    z = np.array(x, dtype=float, copy=True, ndmin=2)
+    for i, name in enumerate(factors):
+        if name in log_factors:
+            z[:, i] = np.log10(z[:, i])
+    return z
+
+
 def model_matrix(x: np.ndarray, terms: list[Term]) -> np.ndarray:
     """Columns ``prod_i x_i**term_i`` for points ``x`` of shape (n, k)."""
     cols = np.ascontiguousarray(np.asarray(x, dtype=float).T)  # one contiguous row per factor

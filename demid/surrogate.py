@@ -15,7 +15,7 @@ from functools import cached_property
 import numpy as np
 import pandas as pd
 
-from .design import Coding, Term, model_matrix, parse_term, quadratic_terms, replicate_groups, term_name
+from .design import Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, replicate_groups, term_name
 
 
 # --------------------------------------------------------------------------- results
@@ -124,11 +124,7 @@ class Surrogate:
     log_factors: tuple[str, ...] = field(default_factory=tuple)
 
     def model_units(self, points) -> np.ndarray:
-        z = np.array(points, dtype=float, copy=True, ndmin=2)
-        for i, name in enumerate(self.factors):
-            if name in self.log_factors:
-                z[:, i] = np.log10(z[:, i])
-        return z
+        return model_units(points, self.factors, self.log_factors)
 
     def predict(self, points, chunk: int = 65_536) -> np.ndarray:
         z = self.model_units(points)
@@ -174,17 +170,10 @@ class SurrogateFit:
         # the light Surrogate predictor and should not pay for its import.
         import statsmodels.api as sm
 
-        self.coded = coding.to_coded(self._model_units(self.x_actual))
+        self.coded = coding.to_coded(model_units(self.x_actual, self.factors, self.log_factors))
         exog = pd.DataFrame(model_matrix(self.coded, self.terms), columns=self.term_names)
         endog = pd.Series(self.y, name=response)
         self.results = sm.OLS(endog, exog).fit()
-
-    def _model_units(self, x):
-        z = np.array(x, dtype=float, copy=True)
-        for i, name in enumerate(self.factors):
-            if name in self.log_factors:
-                z[:, i] = np.log10(z[:, i])
-        return z
 
     @property
     def term_names(self) -> list[str]:
@@ -343,11 +332,7 @@ def fit_response(table: pd.DataFrame, factors: list[str], response: str, *, alph
                  log_factors: tuple[str, ...] = ()) -> SurrogateFit:
     """Fit one response, dropping runs where it is missing (failed simulations)."""
     if coding is None:
-        z = table[factors].to_numpy(dtype=float).copy()
-        for i, name in enumerate(factors):
-            if name in log_factors:
-                z[:, i] = np.log10(z[:, i])
-        coding = Coding.from_levels(factors, z, alpha)
+        coding = Coding.from_levels(factors, model_units(table[factors].to_numpy(), factors, log_factors), alpha)
     ok = np.isfinite(table[response].to_numpy(dtype=float))
     sub = table.loc[ok]
     runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, len(sub) + 1)

@@ -94,3 +94,5 @@ def test_log_scale_factor_design(tmp_path):
     vt = validate_material("m", cfg)
     assert vt.coding.center[1] == pytest.approx(-2.0)
     assert sorted(set(vt.point_types)) == ["axial", "center", "factorial"]
+    coded = vt.to_frame()["coded:x2"].to_numpy()  # coded in log10 units: levels 0, +-1, +-alpha
+    assert np.min(np.abs(coded[:, None] - np.array([-1.41421, -1, 0, 1, 1.41421])), axis=1).max() < 1e-3
