@@ -25,8 +25,9 @@ bisection on "the line at x_j = t holds an admissible interval".  The fraction i
 along both axes; the two results are independent and their difference enters the error.
 
 *Three factors* are handled by slices: each slice is an exact plane; spans and the reference
-distance minimise exact slice quantities over the slicing coordinate (scan, then golden
-section), and the fraction integrates exact slice areas adaptively.
+distance minimise exact slice quantities over the slicing coordinate (a scan, then repeated
+sampling of the bracket around the best slice), and the fraction integrates exact slice areas
+adaptively.
 
 Entry point: :func:`exact_set`; :func:`exact_set_for_surrogates` adapts
 :class:`demid.surrogate.Surrogate` objects.
@@ -49,8 +50,7 @@ _QUADRATURE_RTOL = 1e-9  # per plane; the 3-D outer integral uses _OUTER_RTOL
 _OUTER_RTOL = 1e-7
 _MAX_ROUNDS = 40
 _BISECTION_STEPS = 60
-_SCAN_POINTS = 65        # slices scanned before golden-section refinement (3 factors)
-_GOLDEN_TOL = 1e-11      # in unit coordinates
+_SCAN_POINTS = 65        # slices scanned before the zoom refinement (3 factors)
 _ROOT_IMAG_TOL = 1e-6    # accepted imaginary part of a breakpoint (extra breakpoints are harmless)
 
 
@@ -138,7 +138,7 @@ def _quadratic_roots(coef: np.ndarray) -> np.ndarray:
     return roots[..., : coef.shape[-1] - 1]
 
 
-def _companion_roots(coef: np.ndarray) -> np.ndarray:
+def _companion_roots(coef: np.ndarray, imag_tol: float = 1e-7) -> np.ndarray:
     """Real roots of higher-degree polynomials: companion eigenvalues, then two Newton steps."""
     shape, degree = coef.shape[:-1], coef.shape[-1] - 1
     flat = coef.reshape(-1, degree + 1)
@@ -156,7 +156,7 @@ def _companion_roots(coef: np.ndarray) -> np.ndarray:
         comp[:, np.arange(1, deg), np.arange(deg - 1)] = 1.0
         comp[:, :, -1] = -monic
         eig = np.linalg.eigvals(comp)
-        real = np.where(np.abs(eig.imag) <= 1e-7 * np.maximum(1.0, np.abs(eig.real)), eig.real, np.nan)
+        real = np.where(np.abs(eig.imag) <= imag_tol * np.maximum(1.0, np.abs(eig.real)), eig.real, np.nan)
         for _ in range(2):
             value = _horner(scaled[rows, :deg + 1][:, None, :], real)[:, 0, :]
             slope = _horner((scaled[rows, 1:deg + 1] * np.arange(1, deg + 1))[:, None, :], real)[:, 0, :]
@@ -257,25 +257,30 @@ _GAUSS_WEIGHTS[[1, 3, 5, 7, 9, 11, 13]] = np.concatenate([_WG[:-1], _WG[::-1]]) 
 _MAX_PIECES = 20_000
 
 
-def _integrate(func, pieces: np.ndarray, rtol: float, atol: float = 1e-15) -> tuple[np.ndarray, float]:
-    """Adaptive integral of a vectorised ``func`` (M,) -> (M, c) over the union of ``pieces`` (P, 2).
+def _integrate(func, owners, lower, upper, n_owners: int, rtol: float, columns: int = 1,
+               atol: float = 1e-15) -> tuple[np.ndarray, np.ndarray]:
+    """Adaptive integrals of a vectorised ``func(owner, s) -> (M, columns)`` over pieces of owners.
 
-    Each piece is mapped by ``s = s0 + h (1 - cos(pi v)) / 2``, which turns square-root ends
-    (a line that grazes a curve) into smooth ones, and integrated by Gauss-Kronrod 7-15 in
-    ``v``; pieces are bisected until the QUADPACK error estimate meets the tolerance.
-    Returns the integrals of the c columns and the summed error estimate of the first column.
+    Piece m covers [lower[m], upper[m]] of owner ``owners[m]``.  Each piece is mapped by
+    ``s = s0 + h (1 - cos(pi v)) / 2``, which turns square-root ends (a line grazing a curve)
+    into smooth ones, and integrated by Gauss-Kronrod 7-15 in ``v``; pieces are bisected until
+    the QUADPACK error estimate meets ``rtol`` of the owner's integral.  Returns integrals
+    (n_owners, columns) and the summed error estimates of the first column (n_owners,).
     """
-    pending = np.asarray(pieces, dtype=float).reshape(-1, 2)
-    pending = pending[pending[:, 1] - pending[:, 0] > 1e-15]
-    total_length = float(np.sum(pending[:, 1] - pending[:, 0])) or 1.0
-    total, error, target = None, 0.0, None
+    owners = np.asarray(owners, dtype=int)
+    lower, upper = np.asarray(lower, dtype=float), np.asarray(upper, dtype=float)
+    keep = upper - lower > 1e-15
+    owners, lower, upper = owners[keep], lower[keep], upper[keep]
+    length = np.bincount(owners, weights=upper - lower, minlength=n_owners)
+    length[length == 0] = 1.0
+    total, error, target = np.zeros((n_owners, columns)), np.zeros(n_owners), None
     for rnd in range(_MAX_ROUNDS):
-        if not len(pending):
+        if not len(lower):
             break
-        h = pending[:, 1] - pending[:, 0]
-        nodes = pending[:, :1] + h[:, None] * (1 - np.cos(np.pi * _KRONROD_NODES)) / 2
+        h = upper - lower
+        nodes = lower[:, None] + h[:, None] * (1 - np.cos(np.pi * _KRONROD_NODES)) / 2
         jac = h[:, None] * np.pi / 2 * np.sin(np.pi * _KRONROD_NODES)
-        values = np.asarray(func(nodes.ravel()), dtype=float).reshape(len(pending), 15, -1)
+        values = np.asarray(func(np.repeat(owners, 15), nodes.ravel()), dtype=float).reshape(len(h), 15, columns)
         kronrod = np.einsum("pn,pnc->pc", jac * _KRONROD_WEIGHTS, values)
         gauss = np.einsum("pn,pn->p", jac * _GAUSS_WEIGHTS, values[:, :, 0])
         # QUADPACK's estimate: |K - G| scaled by the integrand's variation on the piece
@@ -285,204 +290,304 @@ def _integrate(func, pieces: np.ndarray, rtol: float, atol: float = 1e-15) -> tu
         with np.errstate(divide="ignore", invalid="ignore"):
             scaled = np.where(variation > 0, variation * np.minimum(1.0, (200 * diff / variation) ** 1.5), diff)
         estimate = np.maximum(scaled, 50 * np.finfo(float).eps * np.abs(kronrod[:, 0]))
-        if total is None:
-            total = np.zeros(values.shape[2])
-            target = max(rtol * abs(float(kronrod[:, 0].sum())), atol)
-        last = rnd == _MAX_ROUNDS - 1 or 2 * len(pending) > _MAX_PIECES
-        done = (estimate <= target * h / total_length) | (h < 1e-13) | last
-        total += kronrod[done].sum(axis=0)
-        error += float(estimate[done].sum())
-        rest = pending[~done]
-        mid = rest.mean(axis=1)
-        pending = np.concatenate([np.column_stack([rest[:, 0], mid]), np.column_stack([mid, rest[:, 1]])])
-    return (total if total is not None else np.zeros(1)), error
+        if target is None:
+            target = np.maximum(rtol * np.abs(np.bincount(owners, weights=kronrod[:, 0], minlength=n_owners)), atol)
+        last = rnd == _MAX_ROUNDS - 1 or 2 * len(h) > _MAX_PIECES
+        done = (estimate <= target[owners] * h / length[owners]) | (h < 1e-13) | last
+        np.add.at(total, owners[done], kronrod[done])
+        np.add.at(error, owners[done], estimate[done])
+        owners, lower, upper = owners[~done], lower[~done], upper[~done]
+        mid = 0.5 * (lower + upper)
+        owners = np.concatenate([owners, owners])
+        lower, upper = np.concatenate([lower, mid]), np.concatenate([mid, upper])
+    return total, error
 
 
-def _golden_min(func, a: float, b: float, anchor: float) -> tuple[float, float]:
-    """Minimum of a scalar ``func`` on [a, b] by golden section.
+def _argmin_by_owner(owners: np.ndarray, values: np.ndarray, n_owners: int) -> np.ndarray:
+    """Index of the smallest value of each owner (-1 for owners without entries)."""
+    order = np.lexsort((values, owners))
+    first = np.ones(len(order), dtype=bool)
+    first[1:] = owners[order][1:] != owners[order][:-1]
+    out = np.full(n_owners, -1)
+    out[owners[order][first]] = order[first]
+    return out
 
-    ``func`` may return inf (an empty slice); when both probes are inf the search moves
-    towards ``anchor``, a point known to be feasible.
-    """
-    ratio = (np.sqrt(5.0) - 1) / 2
-    c, d = b - ratio * (b - a), a + ratio * (b - a)
-    fc, fd = func(c), func(d)
-    while b - a > _GOLDEN_TOL:
-        left = fc < fd if (np.isfinite(fc) or np.isfinite(fd)) else anchor < (c + d) / 2
-        if left:
-            b, d, fd = d, c, fc
-            c = b - ratio * (b - a)
-            fc = func(c)
-        else:
-            a, c, fc = c, d, fd
-            d = a + ratio * (b - a)
-            fd = func(d)
-    return (c, fc) if fc <= fd else (d, fd)
+
+def _zoom_min(func, owners, lower, upper, best_x, best_value, rounds: int = 11, points: int = 17):
+    """Refine per-owner minima of ``func(owner, x)`` by repeatedly sampling the bracket around the best point."""
+    best_x, best_value = np.array(best_x, dtype=float), np.array(best_value, dtype=float)
+    lower, upper = np.array(lower, dtype=float), np.array(upper, dtype=float)
+    rows = np.arange(len(owners))
+    grid = np.linspace(0.0, 1.0, points)
+    for _ in range(rounds):
+        x = lower[:, None] + (upper - lower)[:, None] * grid
+        values = np.asarray(func(np.repeat(owners, points), x.ravel())).reshape(len(owners), points)
+        i = np.argmin(values, axis=1)
+        better = values[rows, i] < best_value
+        best_x = np.where(better, x[rows, i], best_x)
+        best_value = np.where(better, values[rows, i], best_value)
+        lower, upper = x[rows, np.maximum(i - 1, 0)], x[rows, np.minimum(i + 1, points - 1)]
+        if np.max(upper - lower) < 1e-13:
+            break
+    return best_x, best_value
 
 
 # =========================================================================== planes
 def _sylvester_det(f: np.ndarray, g: np.ndarray) -> np.ndarray:
-    """Resultants (batched over rows) of polynomials with ascending coefficients f (n, p+1), g (n, q+1)."""
-    p, q = f.shape[1] - 1, g.shape[1] - 1
+    """Resultants (batched over leading axes) of polynomials with ascending coefficients f (..., p+1), g (..., q+1)."""
+    p, q = f.shape[-1] - 1, g.shape[-1] - 1
     size = p + q
     if size == 0:
-        return np.ones(len(f))
-    mat = np.zeros((len(f), size, size))
+        return np.ones(f.shape[:-1])
+    mat = np.zeros(f.shape[:-1] + (size, size))
     for i in range(q):
-        mat[:, i, i:i + p + 1] = f[:, ::-1]
+        mat[..., i, i:i + p + 1] = f[..., ::-1]
     for i in range(p):
-        mat[:, q + i, i:i + q + 1] = g[:, ::-1]
+        mat[..., q + i, i:i + q + 1] = g[..., ::-1]
     return np.linalg.det(mat)
 
 
-def _unit_roots_of_values(values: np.ndarray, nodes: np.ndarray) -> list[float]:
-    """Roots in [0, 1] of the polynomials interpolating ``values`` (n, S) at Chebyshev ``nodes`` (in [-1, 1])."""
-    from numpy.polynomial import chebyshev as cheb
-
-    scale = np.max(np.abs(values), axis=0)
-    keep = scale > 0
-    coef = np.linalg.solve(cheb.chebvander(nodes, len(nodes) - 1), values[:, keep] / scale[keep])
-    found = []
-    for column in coef.T:
-        column = cheb.chebtrim(column, 1e-11 * np.max(np.abs(column)))
-        if len(column) < 2:
+def _chebyshev_roots(coef: np.ndarray) -> np.ndarray:
+    """Near-real roots in [-1, 1] of Chebyshev series (rows of ``coef``), NaN padded; colleague matrices."""
+    n_rows, size = coef.shape
+    out = np.full((n_rows, max(size - 1, 0)), np.nan)
+    scale = np.max(np.abs(coef), axis=1, keepdims=True)
+    scaled = np.divide(coef, scale, out=np.zeros_like(coef), where=scale > 0)
+    scaled[np.abs(scaled) < 1e-11] = 0.0  # interpolation noise: not a degree
+    nonzero = scaled != 0
+    degree = np.where(nonzero.any(axis=1), size - 1 - np.argmax(nonzero[:, ::-1], axis=1), 0)
+    for deg in range(1, size):
+        rows = np.flatnonzero(degree == deg)
+        if not len(rows):
             continue
-        roots = cheb.chebroots(column)
-        roots = roots.real[np.abs(roots.imag) <= _ROOT_IMAG_TOL]
-        found.extend(((roots[(roots >= -1) & (roots <= 1)] + 1) / 2).tolist())
-    return found
+        c = scaled[rows, :deg + 1]
+        if deg == 1:
+            out[rows, 0] = -c[:, 0] / c[:, 1]
+            continue
+        # numpy's chebcompanion, batched: symmetric colleague matrix minus a last-column update
+        scl = np.array([1.0] + [np.sqrt(0.5)] * (deg - 1))
+        mat = np.zeros((deg, deg))
+        mat[np.arange(1, deg), np.arange(deg - 1)] = 0.5
+        mat[np.arange(deg - 1), np.arange(1, deg)] = 0.5
+        mat[0, 1] = mat[1, 0] = np.sqrt(0.5)
+        mats = np.repeat(mat[None], len(rows), axis=0)
+        mats[:, :, -1] -= (c[:, :-1] / c[:, -1:]) * (scl / scl[-1]) * 0.5
+        eig = np.linalg.eigvals(mats)
+        out[rows, :deg] = np.where(np.abs(eig.imag) <= _ROOT_IMAG_TOL, eig.real, np.nan)
+    return np.where(np.abs(out) <= 1.0, out, np.nan)
 
 
-class _Plane:
-    """The admissible set of residual tensors ``tensor`` (K, D+1, D+1) in the unit square."""
+def _ragged(owners: np.ndarray, values: np.ndarray, n_owners: int) -> np.ndarray:
+    """Sorted, de-duplicated values per owner as a NaN-padded array (n_owners, width)."""
+    keep = np.isfinite(values)
+    owners, values = owners[keep], values[keep]
+    order = np.lexsort((values, owners))
+    owners, values = owners[order], values[order]
+    fresh = np.ones(len(values), dtype=bool)
+    fresh[1:] = (owners[1:] != owners[:-1]) | (values[1:] - values[:-1] > 1e-14)
+    owners, values = owners[fresh], values[fresh]
+    counts = np.bincount(owners, minlength=n_owners)
+    out = np.full((n_owners, max(int(counts.max()), 1)), np.nan)
+    start = np.concatenate([[0], np.cumsum(counts)[:-1]])
+    out[owners, np.arange(len(owners)) - start[owners]] = values
+    return out
 
-    def __init__(self, tensor: np.ndarray, eps: float):
-        self.tensor = tensor
+
+@dataclass(frozen=True)
+class _Pieces:
+    """Breakpoint pieces of lines along one axis, for all planes: owner, [lower, upper], feasible."""
+
+    owner: np.ndarray
+    lower: np.ndarray
+    upper: np.ndarray
+    feasible: np.ndarray
+
+    @property
+    def mid(self) -> np.ndarray:
+        return 0.5 * (self.lower + self.upper)
+
+
+class _Planes:
+    """Admissible sets of a batch of planes, residual tensors (P, K, D+1, D+1) on the unit square.
+
+    Pieces of lines along ``axis`` are delimited by breakpoints of the other coordinate; each
+    piece is feasible (its lines hold admissible intervals) or not, throughout.
+    """
+
+    def __init__(self, tensors: np.ndarray, eps: float):
+        self.tensors = tensors
         self.eps = eps
-        self._breakpoints: dict[int, np.ndarray] = {}
+        self.count = tensors.shape[0]
+        self._pieces: dict[int, _Pieces] = {}
 
-    def lines(self, axis: int, s) -> _Lines:
-        """Lines parallel to ``axis`` at other coordinate(s) ``s``."""
+    def lines(self, axis: int, owners, s) -> _Lines:
+        """Lines parallel to ``axis`` in planes ``owners`` at other coordinate ``s``."""
         s = np.atleast_1d(np.asarray(s, dtype=float))
-        points = np.zeros((len(s), 2))
-        points[:, 1 - axis] = s
-        return _Lines.cut(_line_coefficients(self.tensor, axis, points), self.eps)
+        powers = s[:, None] ** np.arange(self.tensors.shape[2])
+        spec = "ns,nkts->nkt" if axis == 0 else "ns,nkst->nkt"
+        return _Lines.cut(np.einsum(spec, powers, self.tensors[np.asarray(owners)]), self.eps)
 
-    def breakpoints(self, axis: int) -> np.ndarray:
-        """Sorted values of the other coordinate where the pieces of lines along ``axis`` change."""
-        if axis not in self._breakpoints:
-            self._breakpoints[axis] = self._find_breakpoints(axis)
-        return self._breakpoints[axis]
+    def pieces(self, axis: int) -> _Pieces:
+        if axis not in self._pieces:
+            points = self._breakpoints(axis)
+            points = np.where(np.isnan(points), 1.0, points)
+            lower, upper = points[:, :-1], points[:, 1:]
+            valid = upper - lower > 1e-14
+            owner = np.nonzero(valid)[0]
+            lower, upper = lower[valid], upper[valid]
+            feasible = self.lines(axis, owner, 0.5 * (lower + upper)).feasible
+            self._pieces[axis] = _Pieces(owner, lower, upper, feasible)
+        return self._pieces[axis]
 
-    def _find_breakpoints(self, axis: int) -> np.ndarray:
-        tens = self.tensor if axis == 0 else self.tensor.transpose(0, 2, 1)  # [k, e_t, e_s]
-        n_obs, size = tens.shape[:2]
-        eps = self.eps
-        found = [0.0, 1.0]
-        levels = np.array([eps, -eps])
+    def _breakpoints(self, axis: int) -> np.ndarray:
+        """Per plane, the sorted values of the other coordinate where lines along ``axis`` change structure."""
+        tens = self.tensors if axis == 0 else self.tensors.transpose(0, 1, 3, 2)  # [p, k, e_t, e_s]
+        n_planes, n_obs, size = tens.shape[:3]
+        levels = np.array([self.eps, -self.eps])
+        owners = [np.arange(n_planes), np.arange(n_planes)]
+        values = [np.zeros(n_planes), np.ones(n_planes)]
         # roots entering or leaving through the edges t = 0 and t = 1
         for t in (0.0, 1.0):
-            edge = np.einsum("t,kts->ks", t ** np.arange(size), tens)
-            shifted = np.repeat(edge[:, None, :], 2, axis=1)
-            shifted[:, :, 0] -= levels
-            roots = _real_roots_unit(shifted)
-            found.extend(roots[np.isfinite(roots)].tolist())
-        nonzero = tens != 0
+            edge = np.einsum("t,pkts->pks", t ** np.arange(size), tens)
+            shifted = np.repeat(edge[:, :, None, :], 2, axis=2)
+            shifted[..., 0] -= levels
+            roots = _real_roots_unit(shifted).reshape(n_planes, -1)
+            owners.append(np.repeat(np.arange(n_planes), roots.shape[1]))
+            values.append(roots.ravel())
+        scale = np.max(np.abs(tens), axis=(2, 3), keepdims=True)
+        significant = np.abs(tens) > 1e-14 * scale
         e_t, e_s = np.meshgrid(np.arange(size), np.arange(size), indexing="ij")
-        t_degree = [int(e_t[nz].max()) if nz.any() else 0 for nz in nonzero]
-        total_degree = [int((e_t + e_s)[nz].max()) if nz.any() else 0 for nz in nonzero]
-        top = max(total_degree)
-        if max(t_degree) > 0:
-            n_nodes = 2 * top * top + 1
-            nodes = np.cos(np.pi * (np.arange(n_nodes) + 0.5) / n_nodes)
-            s = (nodes + 1) / 2
-            coef_t = np.einsum("ns,kts->nkt", s[:, None] ** np.arange(size), tens)
-            curves = []
-            for k in range(n_obs):
-                if t_degree[k] == 0:
+        t_degree = np.max(np.where(significant, e_t, 0), axis=(2, 3))  # formal degree per plane and observable
+        top = int(np.max(np.where(significant, e_t + e_s, 0)))
+        if t_degree.max() > 0:
+            rows, dets = self._resultants(tens, t_degree, top)
+            if len(rows):
+                n_nodes = dets.shape[1]
+                nodes = np.cos(np.pi * (np.arange(n_nodes) + 0.5) / n_nodes)
+                from numpy.polynomial import chebyshev as cheb
+
+                peak = np.max(np.abs(dets), axis=1, keepdims=True)
+                keep = peak[:, 0] > 0
+                coef = (dets[keep] / peak[keep]) @ np.linalg.inv(cheb.chebvander(nodes, n_nodes - 1)).T
+                roots = (_chebyshev_roots(coef) + 1) / 2
+                owners.append(np.repeat(rows[keep], roots.shape[1]))
+                values.append(roots.ravel())
+        return _ragged(np.concatenate(owners), np.clip(np.concatenate(values), 0.0, 1.0), n_planes)
+
+    def _resultants(self, tens, t_degree, top):
+        """Resultants in t of every curve with its t-derivative and with every curve of another observable,
+        sampled at Chebyshev nodes of s (enough nodes to interpolate them exactly)."""
+        n_nodes = 2 * top * top + 1
+        s = (np.cos(np.pi * (np.arange(n_nodes) + 0.5) / n_nodes) + 1) / 2
+        coef_t = np.einsum("ns,pkts->pknt", s[:, None] ** np.arange(tens.shape[2]), tens)  # (P, K, n, D+1)
+        levels = (self.eps, -self.eps)
+        rows, dets = [], []
+
+        def curve(planes, k, level, degree):
+            f = coef_t[planes, k, :, :degree + 1].copy()
+            f[..., 0] -= level
+            return f
+
+        n_obs = tens.shape[1]
+        for k in range(n_obs):
+            for degree in np.unique(t_degree[:, k]):
+                if degree == 0:
                     continue  # curves s = const: their positions are edge roots already
+                planes = np.flatnonzero(t_degree[:, k] == degree)
                 for level in levels:
-                    f = coef_t[:, k, :t_degree[k] + 1].copy()
-                    f[:, 0] -= level
-                    curves.append((k, f))
-            values = []
-            for k, f in curves:
-                # two roots of one curve merge where the resultant with its t-derivative vanishes
-                values.append(_sylvester_det(f, f[:, 1:] * np.arange(1, f.shape[1])))
-            for (k1, f1), (k2, f2) in product(curves, curves):
-                if k1 < k2:
-                    values.append(_sylvester_det(f1, f2))
-            if values:
-                found.extend(_unit_roots_of_values(np.column_stack(values), nodes))
-        points = np.unique(np.clip(found, 0.0, 1.0))
-        return points[np.concatenate([[True], np.diff(points) > 1e-14])]
+                    f = curve(planes, k, level, degree)
+                    rows.append(planes)
+                    dets.append(_sylvester_det(f, f[..., 1:] * np.arange(1, degree + 1)))
+        for k1 in range(n_obs):
+            for k2 in range(k1 + 1, n_obs):
+                pairs = t_degree[:, [k1, k2]]
+                for d1, d2 in np.unique(pairs, axis=0):
+                    if d1 == 0 or d2 == 0:
+                        continue
+                    planes = np.flatnonzero((pairs[:, 0] == d1) & (pairs[:, 1] == d2))
+                    for l1, l2 in product(levels, levels):
+                        rows.append(planes)
+                        dets.append(_sylvester_det(curve(planes, k1, l1, d1), curve(planes, k2, l2, d2)))
+        if not rows:
+            return np.empty(0, dtype=int), np.empty((0, n_nodes))
+        return np.concatenate(rows), np.concatenate(dets)
 
-    def piece_feasibility(self, axis: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Breakpoints, piece midpoints and whether the line at each midpoint holds an admissible interval."""
-        points = self.breakpoints(axis)
-        mids = 0.5 * (points[1:] + points[:-1])
-        return points, mids, self.lines(axis, mids).feasible
+    def integral(self, axis: int, rtol: float = _QUADRATURE_RTOL) -> tuple[np.ndarray, np.ndarray]:
+        """Areas (P,) from exact line lengths, and their quadrature error estimates (P,)."""
+        pieces = self.pieces(axis)
+        f = pieces.feasible
+        total, error = _integrate(lambda o, s: self.lines(axis, o, s).length[:, None], pieces.owner[f],
+                                  pieces.lower[f], pieces.upper[f], self.count, rtol)
+        return total[:, 0], error
 
-    def integral(self, axis: int, rtol: float = _QUADRATURE_RTOL) -> tuple[float, float]:
-        """Area of the admissible set from exact line lengths, and the quadrature error estimate."""
-        points, _, feasible = self.piece_feasibility(axis)
-        pieces = np.column_stack([points[:-1], points[1:]])[feasible]
-        value, error = _integrate(lambda s: self.lines(axis, s).length[:, None], pieces, rtol)
-        return float(value[0]), error
-
-    def span(self, coord: int, polish: bool = True) -> tuple[float, float]:
-        """Exact [min, max] of coordinate ``coord`` over the set (NaN when empty)."""
+    def spans(self, coord: int, polish: bool = True) -> np.ndarray:
+        """(P, 2) exact min and max of coordinate ``coord`` per plane (NaN when empty)."""
         axis = 1 - coord  # lines across the coordinate
-        points, mids, feasible = self.piece_feasibility(axis)
-        if not feasible.any():
-            return np.nan, np.nan
-        first, last = np.flatnonzero(feasible)[[0, -1]]
-        lower, upper = points[first], points[last + 1]
+        pieces = self.pieces(axis)
+        out = np.full((self.count, 2), np.nan)
+        idx = np.flatnonzero(pieces.feasible)
+        if not len(idx):
+            return out
+        first = np.full(self.count, -1)
+        last = np.full(self.count, -1)
+        first[pieces.owner[idx[::-1]]] = idx[::-1]
+        last[pieces.owner[idx]] = idx
+        has = np.flatnonzero(first >= 0)
+        lo_piece, hi_piece = first[has], last[has]
+        out[has, 0] = pieces.lower[lo_piece]
+        out[has, 1] = pieces.upper[hi_piece]
         if polish:
-            inside = np.array([mids[first], mids[last]])
-            outside = np.array([mids[first - 1] if first > 0 else np.nan,
-                                mids[last + 1] if last + 1 < len(mids) else np.nan])
-            ends = self._bisect(axis, inside, outside)
-            lower = ends[0] if first > 0 else 0.0
-            upper = ends[1] if last + 1 < len(mids) else 1.0
-        return float(lower), float(upper)
+            # bisection between the feasible piece's midpoint and the infeasible neighbour's
+            inner = np.concatenate([lo_piece, hi_piece])
+            outer = np.concatenate([lo_piece - 1, hi_piece + 1])
+            interior = np.concatenate([pieces.lower[lo_piece] > 0, pieces.upper[hi_piece] < 1])
+            owners = pieces.owner[inner]
+            inside = pieces.mid[inner]
+            outside = np.where(interior, pieces.mid[np.clip(outer, 0, len(pieces.mid) - 1)], inside)
+            ends = self._bisect(axis, owners, inside, outside)
+            out[has, 0] = np.where(interior[:len(has)], ends[:len(has)], 0.0)
+            out[has, 1] = np.where(interior[len(has):], ends[len(has):], 1.0)
+        return out
 
-    def _bisect(self, axis: int, inside: np.ndarray, outside: np.ndarray) -> np.ndarray:
-        """Transitions between feasible lines at ``inside`` and infeasible lines at ``outside`` (NaN: skip)."""
-        inside, outside = inside.copy(), np.where(np.isnan(outside), inside, outside)
+    def _bisect(self, axis: int, owners, inside: np.ndarray, outside: np.ndarray) -> np.ndarray:
+        """Transitions between feasible lines at ``inside`` and infeasible lines at ``outside``."""
+        inside, outside = inside.copy(), outside.copy()
         for _ in range(_BISECTION_STEPS):
-            mid = 0.5 * (inside + outside)
-            ok = self.lines(axis, mid).feasible
-            inside = np.where(ok, mid, inside)
-            outside = np.where(ok, outside, mid)
             if np.max(np.abs(inside - outside)) < 1e-15:
                 break
+            mid = 0.5 * (inside + outside)
+            ok = self.lines(axis, owners, mid).feasible
+            inside = np.where(ok, mid, inside)
+            outside = np.where(ok, outside, mid)
         return inside
 
-    def distance(self, ref: np.ndarray) -> tuple[float, np.ndarray]:
-        """Euclidean distance from ``ref`` (2,) to the set and the nearest point (inf, NaN when empty)."""
-        points, _, feasible = self.piece_feasibility(0)
-        if not feasible.any():
-            return np.inf, np.full(2, np.nan)
+    def distance(self, ref: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Per plane: Euclidean distance from ``ref`` (2,) to the set and the nearest point (inf, NaN when empty)."""
+        pieces = self.pieces(0)
+        f = np.flatnonzero(pieces.feasible)
+        dist, point = np.full(self.count, np.inf), np.full((self.count, 2), np.nan)
+        if not len(f):
+            return dist, point
 
-        def squared(s):
-            gap, _ = self.lines(0, s).nearest(ref[0])
-            return gap ** 2 + (np.asarray(s) - ref[1]) ** 2
+        def squared(owners, s):
+            gap, _ = self.lines(0, owners, s).nearest(ref[0])
+            return gap ** 2 + (s - ref[1]) ** 2
 
         grid = (1 - np.cos(np.pi * np.linspace(0, 1, 17))) / 2
-        best_value, s_best = np.inf, np.nan
-        for lo, hi in np.column_stack([points[:-1], points[1:]])[feasible]:
-            pad = 1e-12 * (hi - lo)
-            s = lo + pad + (hi - lo - 2 * pad) * grid
-            vals = squared(s)
-            i = int(np.argmin(vals))
-            if vals[i] < best_value:
-                best_value, s_best = vals[i], s[i]
-                x, value = _golden_min(lambda x: float(squared(x)[0]), s[max(i - 1, 0)], s[min(i + 1, 16)], s[i])
-                if value < best_value:
-                    best_value, s_best = value, x
-        _, t_best = self.lines(0, s_best).nearest(ref[0])
-        return float(np.sqrt(best_value)), np.array([t_best[0], s_best])
+        lo, hi = pieces.lower[f], pieces.upper[f]
+        pad = 1e-12 * (hi - lo)
+        samples = (lo + pad)[:, None] + (hi - lo - 2 * pad)[:, None] * grid
+        owners = np.repeat(pieces.owner[f], 17)
+        values = squared(owners, samples.ravel())
+        best = _argmin_by_owner(owners, values, self.count)
+        has = np.flatnonzero(best >= 0)
+        piece, i = np.divmod(best[has], 17)
+        s_best, v_best = _zoom_min(squared, has, samples[piece, np.maximum(i - 1, 0)],
+                                   samples[piece, np.minimum(i + 1, 16)], samples[piece, i], values[best[has]])
+        _, t_best = self.lines(0, has, s_best).nearest(ref[0])
+        dist[has] = np.sqrt(v_best)
+        point[has] = np.column_stack([t_best, s_best])
+        return dist, point
 
 
 # =========================================================================== three factors
@@ -492,74 +597,62 @@ class _Solid:
     def __init__(self, tensor: np.ndarray, eps: float):
         self.tensor = tensor
         self.eps = eps
-        self._planes: dict[tuple[int, float], _Plane] = {}
 
-    def plane(self, axis: int, s: float) -> _Plane:
-        """The slice ``u_axis = s``; its coordinates are the other two axes in order."""
-        key = (axis, float(s))
-        if key not in self._planes:
-            powers = float(s) ** np.arange(self.tensor.shape[1])
-            self._planes[key] = _Plane(np.tensordot(self.tensor, powers, axes=([axis + 1], [0])), self.eps)
-        return self._planes[key]
-
-    @staticmethod
-    def _in_plane(axis: int, coord: int) -> int:
-        return coord - (coord > axis)
+    def planes(self, axis: int, s) -> _Planes:
+        """The slices ``u_axis = s``; their coordinates are the other two axes in order."""
+        s = np.atleast_1d(np.asarray(s, dtype=float))
+        moved = np.moveaxis(self.tensor, axis + 1, -1)
+        return _Planes(np.einsum("pe,kabe->pkab", s[:, None] ** np.arange(self.tensor.shape[1]), moved), self.eps)
 
     def span(self, coord: int) -> tuple[float, float]:
-        """Minimum and maximum of ``coord`` over slices of another coordinate: scan, then golden section."""
+        """Min and max of ``coord``: exact slice spans, minimised over slices of another coordinate."""
         for axis in (a for a in range(3) if a != coord):
-            c = self._in_plane(axis, coord)
+            c = coord - (coord > axis)
             scan = np.linspace(0.0, 1.0, _SCAN_POINTS)
-            ends = np.array([self.plane(axis, s).span(c, polish=False) for s in scan])
+            ends = self.planes(axis, scan).spans(c, polish=False)
             if np.isnan(ends[:, 0]).all():
-                continue
-            result = []
-            for sign, column in ((1.0, 0), (-1.0, 1)):
-                values = np.where(np.isnan(ends[:, column]), np.inf, sign * ends[:, column])
-                i = int(np.argmin(values))
+                continue  # the set is thinner than the scan in this direction: slice another way
 
-                def end(s, sign=sign, column=column):
-                    value = self.plane(axis, s).span(c, polish=False)[column]
-                    return np.inf if np.isnan(value) else sign * value
+            def objective(owners, s):
+                e = self.planes(axis, s).spans(c, polish=False)
+                return np.nan_to_num(np.where(owners == 0, e[:, 0], -e[:, 1]), nan=np.inf)
 
-                s_best, _ = _golden_min(end, scan[max(i - 1, 0)], scan[min(i + 1, len(scan) - 1)], scan[i])
-                candidates = [(values[i], scan[i]), (end(s_best), s_best)]
-                s_best = min(candidates)[1]
-                result.append(self.plane(axis, s_best).span(c)[column])
-            return result[0], result[1]
+            values = np.nan_to_num(np.column_stack([ends[:, 0], -ends[:, 1]]), nan=np.inf)
+            i = np.argmin(values, axis=0)
+            last = len(scan) - 1
+            s_best, _ = _zoom_min(objective, np.array([0, 1]), scan[np.maximum(i - 1, 0)],
+                                  scan[np.minimum(i + 1, last)], scan[i], values[i, [0, 1]])
+            final = self.planes(axis, s_best).spans(c)
+            return float(final[0, 0]), float(final[1, 1])
         return np.nan, np.nan
 
     def integral(self, axis: int, lower: float, upper: float) -> tuple[float, float]:
         """Volume by adaptive integration over slices ``u_axis = s`` of exact slice areas."""
 
-        def areas(s):
-            out = np.empty((len(s), 2))
-            for i, value in enumerate(s):
-                out[i] = self.plane(axis, value).integral(0)
-            return out
+        def areas(owners, s):
+            area, error = self.planes(axis, s).integral(0)
+            return np.column_stack([area, error])
 
         edges = np.linspace(lower, upper, 9)
-        value, error = _integrate(areas, np.column_stack([edges[:-1], edges[1:]]), _OUTER_RTOL)
-        return float(value[0]), error + float(value[1])
+        total, error = _integrate(areas, np.zeros(8, dtype=int), edges[:-1], edges[1:], 1, _OUTER_RTOL, columns=2)
+        return float(total[0, 0]), float(error[0] + total[0, 1])
 
     def distance(self, ref: np.ndarray, axis: int, lower: float, upper: float) -> tuple[float, np.ndarray]:
         """Distance from ``ref`` (3,) to the set, minimising over slices ``u_axis = s`` in [lower, upper]."""
         rest = np.delete(ref, axis)
 
-        def squared(s):
-            d, _ = self.plane(axis, s).distance(rest)
+        def squared(owners, s):
+            d, _ = self.planes(axis, s).distance(rest)
             return d * d + (s - ref[axis]) ** 2
 
         pad = 1e-12 * (upper - lower)
         scan = np.linspace(lower + pad, upper - pad, 33)
-        values = np.array([squared(s) for s in scan])
+        values = squared(None, scan)
         i = int(np.argmin(values))
-        s_best, best = _golden_min(squared, scan[max(i - 1, 0)], scan[min(i + 1, len(scan) - 1)], scan[i])
-        if values[i] < best:
-            s_best, best = scan[i], values[i]
-        _, point = self.plane(axis, s_best).distance(rest)
-        return float(np.sqrt(best)), np.insert(point, axis, s_best)
+        s_best, best = _zoom_min(squared, np.array([0]), [scan[max(i - 1, 0)]], [scan[min(i + 1, 32)]],
+                                 [scan[i]], [values[i]])
+        _, point = self.planes(axis, s_best).distance(rest)
+        return float(np.sqrt(best[0])), np.insert(point[0], axis, s_best[0])
 
 
 # =========================================================================== result
@@ -597,7 +690,7 @@ class ExactSet:
         if self.dim == 1:
             return _Lines.cut(self.residuals[None], self.tolerance)
         if self.dim == 2:
-            return _Plane(self.residuals, self.tolerance)
+            return _Planes(self.residuals[None], self.tolerance)
         return _Solid(self.residuals, self.tolerance)
 
     @cached_property
@@ -605,7 +698,9 @@ class ExactSet:
         shape = self._shape
         if self.dim == 1:
             return np.array([[shape.first[0], shape.last[0]]]) if shape.feasible[0] else np.full((1, 2), np.nan)
-        return np.array([shape.span(j) for j in range(self.dim)])
+        if self.dim == 2:
+            return np.array([shape.spans(j)[0] for j in range(2)])
+        return np.array([shape.span(j) for j in range(3)])
 
     @cached_property
     def _outer_axis(self) -> int:
@@ -619,9 +714,10 @@ class ExactSet:
         if self.dim == 1:
             return float(shape.length[0]), 0.0
         if self.dim == 2:
-            along0, err0 = shape.integral(0)
-            along1, err1 = shape.integral(1)
-            return along0, err0 + err1 + abs(along0 - along1)
+            # two independent integrations, along each axis; their difference joins the error
+            (along0,), (err0,) = shape.integral(0)
+            (along1,), (err1,) = shape.integral(1)
+            return float(along0), float(err0 + err1 + abs(along0 - along1))
         lo, hi = self._unit_spans[self._outer_axis]
         if np.isnan(lo) or hi <= lo:
             return 0.0, 0.0
@@ -660,7 +756,8 @@ class ExactSet:
             gap, point = shape.nearest(ref[0])
             return float(gap[0]), np.array([point[0]])
         if self.dim == 2:
-            return shape.distance(ref)
+            dist, point = shape.distance(ref)
+            return float(dist[0]), point[0]
         lo, hi = self._unit_spans[self._outer_axis]
         if np.isnan(lo):
             return np.inf, np.full(3, np.nan)
