@@ -128,14 +128,18 @@ def _real_roots_unit(coef: np.ndarray) -> np.ndarray:
 def _quadratic_roots(coef: np.ndarray) -> np.ndarray:
     """Both roots of c0 + c1 t + c2 t^2 by the cancellation-free formula (c2 = 0 allowed)."""
     c0, c1 = coef[..., 0], coef[..., 1]
-    c2 = coef[..., 2] if coef.shape[-1] > 2 else np.zeros_like(c0)
+    if coef.shape[-1] == 2:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            root = -c0 / c1
+        return np.where(np.isfinite(root), root, np.nan)[..., None]
+    c2 = coef[..., 2]
     with np.errstate(divide="ignore", invalid="ignore"):
         disc = c1 * c1 - 4.0 * c2 * c0
         q = -0.5 * (c1 + np.copysign(np.sqrt(disc), c1))
         roots = np.stack([q / c2, c0 / q], axis=-1)
     roots[disc < 0] = np.nan
     roots[~np.isfinite(roots)] = np.nan
-    return roots[..., : coef.shape[-1] - 1]
+    return roots
 
 
 def _companion_roots(coef: np.ndarray, imag_tol: float = 1e-7) -> np.ndarray:
@@ -832,8 +836,9 @@ def exact_set_for_surrogates(surrogates: dict, observables, targets: dict, toler
     log = [factors_cfg[f].get("scale", "linear") == "log" for f in names]
 
     def model(values):
-        values = np.asarray(values, dtype=float)
-        return np.where(log, np.log10(values), values)
+        values = np.array(values, dtype=float)
+        values[log] = np.log10(values[log])
+        return values
 
     for o in observables:
         if list(surrogates[o].factors) != names:
