@@ -292,6 +292,28 @@ def test_shell_cut_by_a_slab_3d():
     np.testing.assert_allclose(es.nearest_point, [lo, 0.3, 0.0], atol=1e-6)
 
 
+def test_needle_3d():
+    # two thin tilted slabs cross in a needle along a, 1.6e-3 x 2.4e-3 of the range in cross-section
+    eps = 2e-3
+    slab_b = Polynomial([[0, 1, 0], [1, 0, 0]], [1.0, -0.1])  # |b - 0.1 a - 0.4| <= 0.4 eps
+    slab_c = Polynomial([[0, 0, 1], [1, 0, 0]], [1.0, 0.05])  # |c + 0.05 a - 0.6| <= 0.6 eps
+    es = exact_set([slab_b, slab_c], [0.4, 0.6], eps, [0] * 3, [1] * 3)
+    assert es.fraction == pytest.approx((0.8 * eps) * (1.2 * eps), rel=FRACTION_RTOL / 10)
+    np.testing.assert_allclose(es.model_spans, [[0, 1], [0.4 * (1 - eps), 0.4 * (1 + eps) + 0.1],
+                                                [0.6 * (1 - eps) - 0.05, 0.6 * (1 + eps)]], rtol=1e-9)
+
+
+def test_tiny_ball_3d():
+    # a ball of radius 0.005 (half a percent of the range), between the nodes of any coarse scan
+    center = np.array([0.3, 0.6, 0.7])
+    r = np.sqrt(2.5e-5)
+    es = exact_set([squares(3, center)], [1e-5], 1.5, [0] * 3, [1] * 3, reference=[0.5, 0.5, 0.5])
+    assert es.fraction == pytest.approx(4 / 3 * np.pi * r ** 3, rel=FRACTION_RTOL / 10)
+    np.testing.assert_allclose(es.model_spans, np.column_stack([center - r, center + r]), rtol=1e-8)
+    gap = np.linalg.norm(center - 0.5)
+    assert es.reference_distance == pytest.approx(gap - r, rel=DISTANCE_RTOL / 100)
+
+
 # --------------------------------------------------------------------------- log-scale factors and the adapter
 def test_surrogate_adapter_with_a_log_factor():
     # y = (log10 x)^2 + w^2 over x in [0.1, 10], w in [-1, 1]: the annulus in model coordinates

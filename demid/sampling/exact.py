@@ -46,8 +46,8 @@ import pandas as pd
 #: Highest number of factors handled exactly (more factors need quasi-Monte Carlo).
 MAX_EXACT_DIM = 3
 
-_QUADRATURE_RTOL = 1e-9  # per plane; the 3-D outer integral uses _OUTER_RTOL
-_OUTER_RTOL = 1e-7
+_QUADRATURE_RTOL = 1e-7  # per plane (QUADPACK estimates are conservative: true errors ~1e-11)
+_OUTER_RTOL = 1e-6
 _MAX_ROUNDS = 40
 _BISECTION_STEPS = 60
 _SCAN_POINTS = 65        # slices scanned before the zoom refinement (3 factors)
@@ -516,12 +516,12 @@ class _Planes:
             return np.empty(0, dtype=int), np.empty((0, n_nodes))
         return np.concatenate(rows), np.concatenate(dets)
 
-    def integral(self, axis: int, rtol: float = _QUADRATURE_RTOL) -> tuple[np.ndarray, np.ndarray]:
+    def integral(self, axis: int, rtol: float | None = None) -> tuple[np.ndarray, np.ndarray]:
         """Areas (P,) from exact line lengths, and their quadrature error estimates (P,)."""
         pieces = self.pieces(axis)
         f = pieces.feasible
         total, error = _integrate(lambda o, s: self.lines(axis, o, s).length[:, None], pieces.owner[f],
-                                  pieces.lower[f], pieces.upper[f], self.count, rtol)
+                                  pieces.lower[f], pieces.upper[f], self.count, rtol or _QUADRATURE_RTOL)
         return total[:, 0], error
 
     def spans(self, coord: int, polish: bool = True) -> np.ndarray:
@@ -608,14 +608,43 @@ class _Solid:
         moved = np.moveaxis(self.tensor, axis + 1, -1)
         return _Planes(np.einsum("pe,kabe->pkab", s[:, None] ** np.arange(self.tensor.shape[1]), moved), self.eps)
 
+    @cached_property
+    def seed(self) -> np.ndarray | None:
+        """An admissible point (unit coordinates), or None: best node of a 41^3 grid, else a local search."""
+        from scipy import optimize
+
+        nodes = np.linspace(0.0, 1.0, 41)
+        powers = nodes[:, None] ** np.arange(self.tensor.shape[1])
+        worst = np.max(np.abs(np.einsum("ia,jb,kc,qabc->qijk", powers, powers, powers, self.tensor)), axis=0)
+        order = np.argsort(worst, axis=None)[:4]
+        starts = np.column_stack(np.unravel_index(order, worst.shape)) / 40.0
+        if worst.flat[order[0]] <= self.eps:
+            return starts[0]
+
+        def excess(u):
+            inside = np.clip(u, 0.0, 1.0)
+            coef = _line_coefficients(self.tensor, 0, inside[None, :])
+            return float(np.max(np.abs(_horner(coef, inside[None, :1])))) + float(np.sum(np.abs(u - inside)))
+
+        for start in starts:
+            res = optimize.minimize(excess, start, method="Nelder-Mead",
+                                    options={"xatol": 1e-12, "fatol": 1e-14, "maxfev": 4000})
+            if res.fun <= self.eps:
+                return np.clip(res.x, 0.0, 1.0)
+        return None
+
     def span(self, coord: int) -> tuple[float, float]:
         """Min and max of ``coord``: exact slice spans, minimised over slices of another coordinate."""
+        seed = self.seed
+        if seed is None:
+            return np.nan, np.nan
         for axis in (a for a in range(3) if a != coord):
             c = coord - (coord > axis)
-            scan = np.linspace(0.0, 1.0, _SCAN_POINTS)
+            # the slice through the seed holds the set however thin it is across the slices
+            scan = np.unique(np.append(np.linspace(0.0, 1.0, _SCAN_POINTS), seed[axis]))
             ends = self.planes(axis, scan).spans(c, polish=False)
             if np.isnan(ends[:, 0]).all():
-                continue  # the set is thinner than the scan in this direction: slice another way
+                continue  # the seed lies on a measure-zero part: slice another way
 
             def objective(owners, s):
                 e = self.planes(axis, s).spans(c, polish=False)
