@@ -292,20 +292,25 @@ def test_shell_cut_by_a_slab_3d():
     np.testing.assert_allclose(es.nearest_point, [lo, 0.3, 0.0], atol=1e-6)
 
 
+# positions midway between the nodes of a 65-slice scan (k / 64) and off the nodes of a 41^3 grid
+MID_NODES = np.array([19.5, 25.5, 38.5, 45.5]) / 64
+
+
 def test_needle_3d():
-    # two thin tilted slabs cross in a needle along a, 1.6e-3 x 2.4e-3 of the range in cross-section
+    # two thin slabs cross in a needle along a, 1.3e-3 x 2.4e-3 of the range in cross-section
     eps = 2e-3
-    slab_b = Polynomial([[0, 1, 0], [1, 0, 0]], [1.0, -0.1])  # |b - 0.1 a - 0.4| <= 0.4 eps
-    slab_c = Polynomial([[0, 0, 1], [1, 0, 0]], [1.0, 0.05])  # |c + 0.05 a - 0.6| <= 0.6 eps
-    es = exact_set([slab_b, slab_c], [0.4, 0.6], eps, [0] * 3, [1] * 3)
-    assert es.fraction == pytest.approx((0.8 * eps) * (1.2 * eps), rel=FRACTION_RTOL / 10)
-    np.testing.assert_allclose(es.model_spans, [[0, 1], [0.4 * (1 - eps), 0.4 * (1 + eps) + 0.1],
-                                                [0.6 * (1 - eps) - 0.05, 0.6 * (1 + eps)]], rtol=1e-9)
+    b0, c0 = MID_NODES[1], MID_NODES[2]
+    slab_b = Polynomial([[0, 1, 0]], [1.0])  # |b - b0| <= b0 eps
+    slab_c = Polynomial([[0, 0, 1], [1, 0, 0]], [1.0, 1e-3])  # |c + 0.001 a - c0| <= c0 eps
+    es = exact_set([slab_b, slab_c], [b0, c0], eps, [0] * 3, [1] * 3)
+    assert es.fraction == pytest.approx((2 * b0 * eps) * (2 * c0 * eps), rel=FRACTION_RTOL / 10)
+    np.testing.assert_allclose(es.model_spans, [[0, 1], [b0 * (1 - eps), b0 * (1 + eps)],
+                                                [c0 * (1 - eps) - 1e-3, c0 * (1 + eps)]], rtol=1e-9)
 
 
 def test_tiny_ball_3d():
-    # a ball of radius 0.005 (half a percent of the range), between the nodes of any coarse scan
-    center = np.array([0.3, 0.6, 0.7])
+    # a ball of radius 0.005 (half a percent of the range) that no scanned slice or grid node meets
+    center = MID_NODES[[0, 2, 3]]
     r = np.sqrt(2.5e-5)
     es = exact_set([squares(3, center)], [1e-5], 1.5, [0] * 3, [1] * 3, reference=[0.5, 0.5, 0.5])
     assert es.fraction == pytest.approx(4 / 3 * np.pi * r ** 3, rel=FRACTION_RTOL / 10)
