@@ -215,6 +215,22 @@ def test_reference_inside_and_empty_set():
     assert empty.reference_distance == np.inf
 
 
+def test_cubic_band():
+    # b (1 + 0.3 a) + a^3 - 0.4 a^2 in [0.45, 0.55]: a cubic along lines in a; chord lengths in b are explicit
+    poly = Polynomial([[0, 1], [3, 0], [1, 1], [2, 0]], [1.0, 1.0, 0.3, -0.4])
+    es = exact_set([poly], [0.5], 0.1, [0, 0], [1, 1])
+
+    def chord(a):
+        k, base = 1 + 0.3 * a, a ** 3 - 0.4 * a ** 2
+        return max(0.0, min(1.0, (0.55 - base) / k) - max(0.0, (0.45 - base) / k))
+
+    area, _ = integrate.quad(chord, 0, 1, epsabs=1e-14, epsrel=1e-13, limit=200)
+    assert es.fraction == pytest.approx(area, rel=1e-8)
+    # the band leaves the box through b = 0 where a^3 - 0.4 a^2 = 0.55
+    a_end = max(r.real for r in np.roots([1, -0.4, 0, -0.55]) if abs(r.imag) < 1e-12)
+    np.testing.assert_allclose(es.model_spans, [[0, a_end], [0, 0.55]], rtol=1e-9, atol=1e-12)
+
+
 # --------------------------------------------------------------------------- two factors, against numpy.roots
 def _u_ridge():
     # a thin U-shaped ridge (like Poraver's angle of repose: b-width 0.01) and a product band
