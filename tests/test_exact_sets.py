@@ -124,9 +124,11 @@ def roots_span(responses, targets, eps, coord, n=501):
 
 
 # --------------------------------------------------------------------------- two factors, closed form
-def test_annulus_fraction_and_spans():
-    # y = a^2 + b^2 on [-1, 1]^2, target 0.5 at 20 %: 0.4 <= r^2 <= 0.6
-    es = exact_set([squares(2)], [0.5], 0.2, [-1, -1], [1, 1])
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+def test_annulus_fraction_and_spans(sign):
+    # y = a^2 + b^2 on [-1, 1]^2, target 0.5 at 20 %: 0.4 <= r^2 <= 0.6 (the same set for -y and -0.5)
+    poly = squares(2)
+    es = exact_set([Polynomial(poly.exponents, sign * poly.coefficients)], [sign * 0.5], 0.2, [-1, -1], [1, 1])
     assert es.fraction == pytest.approx(np.pi * (0.6 - 0.4) / 4, rel=1e-9)
     assert 0 <= es.fraction_error < 1e-7
     np.testing.assert_allclose(es.spans[["lower", "upper"]].to_numpy(),
@@ -229,6 +231,14 @@ def test_cubic_band():
     # the band leaves the box through b = 0 where a^3 - 0.4 a^2 = 0.55
     a_end = max(r.real for r in np.roots([1, -0.4, 0, -0.55]) if abs(r.imag) < 1e-12)
     np.testing.assert_allclose(es.model_spans, [[0, a_end], [0, 0.55]], rtol=1e-9, atol=1e-12)
+
+
+def test_one_factor():
+    # y = a^2 on [-1, 1], target 0.5 at 20 %: |a| in [sqrt(0.4), sqrt(0.6)]
+    es = exact_set([Polynomial([[2]], [1.0])], [0.5], 0.2, [-1], [1], reference=[0.1])
+    assert es.fraction == pytest.approx(np.sqrt(0.6) - np.sqrt(0.4), rel=1e-12)
+    np.testing.assert_allclose(es.model_spans, [[-np.sqrt(0.6), np.sqrt(0.6)]], rtol=1e-12)
+    assert es.reference_distance == pytest.approx((np.sqrt(0.4) - 0.1) / 2, rel=1e-12)
 
 
 # --------------------------------------------------------------------------- two factors, against numpy.roots

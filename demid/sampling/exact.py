@@ -19,15 +19,16 @@ cross.  These are the roots of univariate polynomials and of resultants (Sylvest
 determinants, interpolated exactly at Chebyshev nodes), so nothing between two breakpoints
 can be missed, however thin.  Between breakpoints the admissible length is smooth up to
 square-root ends, which the substitution ``s = s0 + h (1 - cos(pi v)) / 2`` removes;
-embedded Clenshaw-Curtis rules then converge geometrically and their difference is the error
-estimate.  A span end is the first breakpoint bounding a feasible piece, polished by
+adaptive Gauss-Kronrod (7-15) quadrature then converges fast and estimates its error.  A span end is the first breakpoint bounding a feasible piece, polished by
 bisection on "the line at x_j = t holds an admissible interval".  The fraction is computed
 along both axes; the two results are independent and their difference enters the error.
 
 *Three factors* are handled by slices: each slice is an exact plane; spans and the reference
-distance minimise exact slice quantities over the slicing coordinate (a scan, then repeated
-sampling of the bracket around the best slice), and the fraction integrates exact slice areas
-adaptively.
+distance minimise exact slice quantities over the slicing coordinate (a scan that includes the
+slice through an admissible seed point, then repeated sampling of the bracket around the best
+slice), and the fraction integrates exact slice areas adaptively over the widest span.  The
+exact plane computations make thin features *within* a slice safe; a second component thinner
+than the scan spacing across the slices, away from the seed, could be missed by the 3-D spans.
 
 Entry point: :func:`exact_set`; :func:`exact_set_for_surrogates` adapts
 :class:`demid.surrogate.Surrogate` objects.
@@ -763,7 +764,8 @@ class ExactSet:
 
     @property
     def fraction_error(self) -> float:
-        """Estimated absolute error of :attr:`fraction` (quadrature; in 2-D plus the difference of the two line directions)."""
+        """Estimated absolute error of :attr:`fraction`: the quadrature estimates, and in 2-D the
+        difference between the integrations along the two axes."""
         return self._fraction[1]
 
     @cached_property
