@@ -42,10 +42,6 @@ def squares(dim, center=None) -> Polynomial:
     return Polynomial(exps, coef)
 
 
-def widths(es) -> np.ndarray:
-    return es.spans["width"].to_numpy()
-
-
 # --------------------------------------------------------------------------- independent references
 def strip_area_below(alpha, beta, c):
     """Area of {alpha a + beta b <= c} in the unit square (alpha, beta > 0): piecewise-linear integrand, exact."""
@@ -100,15 +96,15 @@ def roots_fraction(responses, targets, eps, n, axis=0):
     return float(np.mean([sum(hi - lo for lo, hi in line) for line in lines]))
 
 
-def roots_span(responses, targets, eps, coord, n=501):
-    """Min and max of unit coordinate ``coord``: lines across it on a grid, refined twice around each end."""
+def roots_span(responses, targets, eps, coord, n=101):
+    """Min and max of unit coordinate ``coord``: lines across it on a grid, refined three times around each end."""
     axis = 1 - coord
 
     def feasible(values):
         return np.array([bool(line) for line in roots_line_intervals(responses, targets, eps, values, axis)])
 
-    def transition(inside, outside, m=201):
-        for _ in range(2):  # grid search between a feasible and an infeasible line, twice
+    def transition(inside, outside, m=101):
+        for _ in range(3):  # grid search between a feasible and an infeasible line, three times
             grid = np.linspace(outside, inside, m)
             ok = feasible(grid)
             k = int(np.argmax(ok))
