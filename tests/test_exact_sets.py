@@ -369,6 +369,8 @@ def test_bad_arguments():
         exact_set([squares(2)], [1.0], 0.1, [-1, -1, -1, -1], [1, 1, 1, 1])
     with pytest.raises(ValueError):
         exact_set([squares(3)], [1.0], 0.1, [-1, -1], [1, 1])
+    with pytest.raises(ValueError):
+        exact_set([squares(2)], [1.0], 0.1, [-1, -1], [1, 1], reference=[0.0])
 
 
 # --------------------------------------------------------------------------- the demonstration study

@@ -853,6 +853,8 @@ def exact_set(polys, targets, tolerance: float, lower, upper, *, reference=None,
     names = tuple(factors) if factors is not None else tuple(f"x{i}" for i in range(dim))
     flags = tuple(bool(x) for x in log) if log is not None else (False,) * dim
     ref = None if reference is None else np.asarray(reference, dtype=float).ravel()
+    if ref is not None and (ref.shape != lower.shape or not np.isfinite(ref).all()):
+        raise ValueError("the reference point needs one finite value per factor")
     return ExactSet(residuals, float(tolerance), lower, upper, names, flags, ref)
 
 
