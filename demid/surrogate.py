@@ -388,6 +388,5 @@ def fit_frames(fits: list[SurrogateFit]) -> dict[str, pd.DataFrame]:
         "fits": surrogates_to_frame(fits),
         "statistics": pd.concat([f.statistics().to_frame() for f in fits], ignore_index=True),
         "anova": pd.concat([f.anova().to_frame() for f in fits], ignore_index=True),
-        "influence": pd.concat([f.influence() for f in fits], ignore_index=True),
         "diagnostics": pd.concat([f.diagnostics().to_frame() for f in fits], ignore_index=True),
     }

@@ -27,7 +27,6 @@ rule extract_pareto:
         grid=f"{RESULTS}/grid/{{material}}.parquet",
     output:
         table=f"{RESULTS}/tables/pareto_{{material}}.csv",
-        front=f"{RESULTS}/pareto/{{material}}.parquet",
         figure=report(
             f"{RESULTS}/figures/pareto_{{material}}.png",
             category="Pareto trade-off",
