@@ -21,82 +21,9 @@ from math import factorial
 import numpy as np
 import pandas as pd
 
-from .config import targets as material_targets
-from .design import model_units
+from .sampling import MAX_GRID_DIM, Domain, uses_grid  # noqa: F401  (re-exported)
+from .spec import as_spec
 from .surrogate import Surrogate
-
-#: Up to this many factors Omega is evaluated on a full grid; beyond it on scrambled Sobol points.
-MAX_GRID_DIM = 3
-
-
-@dataclass(frozen=True)
-class Domain:
-    """The search domain Omega: a box in search units (actual, or log10 for log factors)."""
-
-    factors: tuple[str, ...]
-    lower: tuple[float, ...]
-    upper: tuple[float, ...]
-    log: tuple[bool, ...] = ()
-
-    def __post_init__(self):
-        if not self.log:
-            object.__setattr__(self, "log", tuple(False for _ in self.factors))
-
-    @classmethod
-    def from_config(cls, factors_cfg: dict) -> "Domain":
-        names = tuple(factors_cfg)
-        return cls(names, tuple(float(factors_cfg[f]["lower"]) for f in names),
-                   tuple(float(factors_cfg[f]["upper"]) for f in names),
-                   tuple(factors_cfg[f].get("scale", "linear") == "log" for f in names))
-
-    @property
-    def dim(self) -> int:
-        return len(self.factors)
-
-    def search_bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        lo, hi = self.to_search(np.array([self.lower, self.upper]))
-        return lo, hi
-
-    def to_actual(self, u: np.ndarray) -> np.ndarray:
-        u = np.array(u, dtype=float, copy=True, ndmin=2)
-        for i, lg in enumerate(self.log):
-            if lg:
-                u[:, i] = 10.0 ** u[:, i]
-        return u
-
-    def to_search(self, x: np.ndarray) -> np.ndarray:
-        return model_units(x, self.factors, [f for f, lg in zip(self.factors, self.log) if lg])
-
-    def search_axes(self, n: int) -> list[np.ndarray]:
-        lo, hi = self.search_bounds()
-        return [np.linspace(a, b, n) for a, b in zip(lo, hi)]
-
-    def axes(self, n: int) -> list[np.ndarray]:
-        """Grid axes in actual units (log-spaced for log factors)."""
-        return [10.0 ** ax if lg else ax for ax, lg in zip(self.search_axes(n), self.log)]
-
-    def sobol(self, n: int, seed: int = 0) -> np.ndarray:
-        """2**ceil(log2 n) scrambled Sobol points, uniform in search units, returned in actual units."""
-        from scipy.stats import qmc
-
-        lo, hi = self.search_bounds()
-        m = max(1, int(np.ceil(np.log2(max(n, 2)))))
-        return self.to_actual(lo + qmc.Sobol(self.dim, scramble=True, rng=np.random.default_rng(seed))
-                              .random_base2(m) * (hi - lo))
-
-    def sample(self, n: int) -> np.ndarray:
-        """The evaluation points: the n-per-axis grid up to 3 factors, n Sobol points beyond."""
-        return self.grid(n) if self.dim <= MAX_GRID_DIM else self.sobol(n)
-
-    def grid(self, n: int) -> np.ndarray:
-        """All grid nodes in actual units, shape (n**d, d), 'ij' (C) order."""
-        axes = self.axes(n)
-        out = np.empty((n ** self.dim, self.dim))
-        for i, ax in enumerate(axes):
-            inner = n ** (self.dim - i - 1)
-            out[:, i] = np.tile(np.repeat(ax, inner), n ** i)
-        return out
-
 
 def predict_grid(surrogates: dict[str, Surrogate], domain: Domain, n: int) -> pd.DataFrame:
     """Surrogate predictions at every evaluation point (grid node, or Sobol point above 3 factors)."""
@@ -406,18 +333,24 @@ def sobol_admissible_set(surrogates: dict[str, Surrogate], domain: Domain, obser
         points=points, fraction_ci=(est.ci_lower, est.ci_upper))
 
 
-def evaluate_scenarios(surrogates: dict[str, Surrogate], material_cfg: dict, n: int,
+def evaluate_scenarios(surrogates: dict[str, Surrogate], material, n: int | None = None,
                        grid_predictions: pd.DataFrame | None = None) -> tuple[pd.DataFrame, dict[str, AdmissibleSet]]:
-    """Every configured scenario of a material: long table (one row per scenario x factor) and the sets."""
-    domain = Domain.from_config(material_cfg["factors"])
-    targets = material_targets(material_cfg)
+    """Every configured scenario of a material: long table (one row per scenario x factor) and the sets.
+
+    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry); ``n``
+    defaults to its evaluation size.
+    """
+    spec = as_spec(material)
+    n = spec.grid_points if n is None else n
+    domain, targets = spec.domain, spec.targets
     frames, sets = [], {}
-    for name, scen in (material_cfg.get("scenarios") or {}).items():
-        if domain.dim > MAX_GRID_DIM:
-            result = sobol_admissible_set(surrogates, domain, scen["observables"], targets, scen["tolerance"], n,
+    for scen in spec.scenarios:
+        name = scen.name
+        if not uses_grid(domain.dim):
+            result = sobol_admissible_set(surrogates, domain, scen.observables, targets, scen.tolerance, n,
                                           grid_predictions)
         else:
-            result = admissible_set(surrogates, domain, scen["observables"], targets, scen["tolerance"], n,
+            result = admissible_set(surrogates, domain, scen.observables, targets, scen.tolerance, n,
                                     grid_predictions=grid_predictions)
         frame = result.to_frame()
         frame.insert(0, "scenario", name)

@@ -143,15 +143,7 @@ def load_config(path: Path | str, base_dir: Path | str | None = None) -> dict:
 
 
 def grid_size(config: dict, material: str) -> int:
-    mat = config["materials"][material]
-    if mat.get("grid_points"):
-        return int(mat["grid_points"])
-    d = len(mat["factors"])
-    if d <= 2:
-        return int(config["grid_points"])
-    return int(config["grid_points_3d"] if d == 3 else config["sobol_points"])
+    """Grid points per axis (Sobol points above 3 factors) of a material (see demid.spec)."""
+    from .spec import evaluation_size
 
-
-def targets(material_cfg: dict) -> dict[str, float]:
-    """Measured targets of a material's responses (those that have one)."""
-    return {r: float(c["target"]) for r, c in material_cfg["responses"].items() if "target" in c}
+    return evaluation_size(config, config["materials"][material])

@@ -71,8 +71,9 @@ import statsmodels.api as sm
 from scipy import optimize, special, stats
 from statsmodels.tools.eval_measures import aicc as _sm_aicc
 
-from .config import targets as material_targets
 from .design import Coding, Term, cubic_terms, model_matrix, model_units, quadratic_terms, term_name
+from .sampling import uses_grid
+from .spec import MaterialSpec, as_spec
 from .surrogate import SurrogateFit, fit_response
 
 CAUSES = ("missing_term", "response_transform", "outlier", "drift", "heteroscedasticity")
@@ -1472,18 +1473,10 @@ class MaterialCriticism:
     figure: object
 
 
-def _level2_tolerance(material_cfg: dict) -> float:
-    """The tolerance of the scenario with the most observables (ties: the smallest); 0.02 without scenarios."""
-    scenarios = list((material_cfg.get("scenarios") or {}).values())
-    if not scenarios:
-        return 0.02
-    return float(min(scenarios, key=lambda sc: (-len(sc["observables"]), sc["tolerance"]))["tolerance"])
-
-
 def _admissible(surrogates, domain, observables, targets, tolerance, n):
-    from .admissibility import MAX_GRID_DIM, admissible_set, sobol_admissible_set
+    from .admissibility import admissible_set, sobol_admissible_set
 
-    if domain.dim > MAX_GRID_DIM:
+    if not uses_grid(domain.dim):
         return sobol_admissible_set(surrogates, domain, observables, targets, tolerance, n)
     return admissible_set(surrogates, domain, observables, targets, tolerance, n)
 
@@ -1497,48 +1490,44 @@ def _effect_points(n: int, d: int) -> int:
     return min(n, 2 ** 14)
 
 
-def _identifiability_effect(surrogates: dict, extended, response: str, material_cfg: dict, n: int) -> list[dict]:
+def _identifiability_effect(surrogates: dict, extended, response: str, spec: MaterialSpec, n: int) -> list[dict]:
     """Feasible fraction and spans of every scenario that uses ``response``, before and after the extension."""
-    from .admissibility import Domain
-
-    domain = Domain.from_config(material_cfg["factors"])
-    targets = material_targets(material_cfg)
+    domain, targets = spec.domain, spec.targets
     rows = []
-    for name, scen in (material_cfg.get("scenarios") or {}).items():
-        if response not in scen["observables"]:
+    for scen in spec.scenarios:
+        if response not in scen.observables:
             continue
-        before = _admissible(surrogates, domain, scen["observables"], targets, scen["tolerance"], n)
-        after = _admissible({**surrogates, response: extended}, domain, scen["observables"], targets,
-                            scen["tolerance"], n)
-        rows.append({"scenario": name, "fraction_pct_before": 100 * before.fraction,
+        before = _admissible(surrogates, domain, scen.observables, targets, scen.tolerance, n)
+        after = _admissible({**surrogates, response: extended}, domain, scen.observables, targets,
+                            scen.tolerance, n)
+        rows.append({"scenario": scen.name, "fraction_pct_before": 100 * before.fraction,
                      "fraction_pct_after": 100 * after.fraction,
                      "width_before": dict(zip(domain.factors, before.width)),
                      "width_after": dict(zip(domain.factors, after.width))})
     return rows
 
 
-def reference_point_position(surrogates: dict, material_cfg: dict, n: int) -> list[dict]:
+def reference_point_position(surrogates: dict, material, n: int) -> list[dict]:
     """Where the source's chosen point lies relative to each scenario's admissible set.
 
     ``inside`` is evaluated at the point itself; ``nearest`` is the closest admissible grid node
     (distance in units of the search ranges, in percent, so factors of different scale compare).
+    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry).
     """
-    from .admissibility import Domain
-
-    ref = material_cfg.get("reference_point")
+    spec = as_spec(material)
+    ref = spec.reference_point
     if not ref:
         return []
-    domain = Domain.from_config(material_cfg["factors"])
-    targets = material_targets(material_cfg)
+    domain, targets = spec.domain, spec.targets
     point = np.array([[ref[f] for f in domain.factors]], dtype=float)
     lo, hi = domain.search_bounds()
     u_ref = (domain.to_search(point)[0] - lo) / (hi - lo)
     rows = []
-    for name, scen in (material_cfg.get("scenarios") or {}).items():
-        obs = scen["observables"]
+    for scen in spec.scenarios:
+        name, obs = scen.name, scen.observables
         errors = {o: float((surrogates[o].predict(point)[0] - targets[o]) / abs(targets[o])) for o in obs}
-        inside = max(abs(e) for e in errors.values()) <= scen["tolerance"]
-        aset = _admissible(surrogates, domain, obs, targets, scen["tolerance"], n)
+        inside = max(abs(e) for e in errors.values()) <= scen.tolerance
+        aset = _admissible(surrogates, domain, obs, targets, scen.tolerance, n)
         nearest, distance = None, None
         if aset.mask.any():
             nodes = (aset.points if aset.points is not None else domain.grid(n))[aset.mask]
@@ -1551,46 +1540,47 @@ def reference_point_position(surrogates: dict, material_cfg: dict, n: int) -> li
     return rows
 
 
-def criticize_material(table: pd.DataFrame, surrogates: dict, material_cfg: dict, n: int,
-                       title: str) -> MaterialCriticism:
-    """Level 1 for every response (with the identifiability effect of any extension) and level 2."""
-    from .admissibility import Domain
-    from .data import infer_coding
-    from .surrogate import fit_response
+def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int | None = None,
+                       title: str | None = None) -> MaterialCriticism:
+    """Level 1 for every response (with the identifiability effect of any extension) and level 2.
 
-    factors = list(material_cfg["factors"])
-    log_factors = tuple(f for f, c in material_cfg["factors"].items() if c.get("scale") == "log")
-    design = material_cfg["design"]
-    alpha = float(design.get("alpha", 1.0)) if design["type"] == "ccd" else 1.0
-    coding = infer_coding(table, factors, design, material_cfg["data"], log_factors)
+    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry); ``n`` and
+    ``title`` default to its evaluation size and label.
+    """
+    from .data import infer_coding
+
+    spec = as_spec(material)
+    n = spec.grid_points if n is None else n
+    title = spec.label if title is None else title
+    factors, log_factors, alpha = spec.factor_names, spec.log_factors, spec.axial_alpha
+    coding = infer_coding(table, factors, spec.design, spec.data, log_factors)
     # Identifiability before/after is evaluated on a coarser grid than the main one: it is a
     # comparison of two surrogates, and 3-factor grids would otherwise dominate the run time.
     n_effect = _effect_points(n, len(factors))
-    n_level2 = n_effect if len(factors) <= 3 else max(5, int(2e5 ** (1 / len(factors))))
+    n_level2 = n_effect if uses_grid(len(factors)) else max(5, int(2e5 ** (1 / len(factors))))
     response_json, frames, results, fits = {}, [], [], []
-    for response in material_cfg["responses"]:
+    for response in spec.response_names:
         result = criticize(table, factors, response, alpha=alpha, log_factors=log_factors)
         payload = result.to_json()
         if result.findings:
             payload["identifiability"] = _identifiability_effect(surrogates, result.extended_surrogate(), response,
-                                                                 material_cfg, n_effect)
+                                                                 spec, n_effect)
         response_json[response] = payload
         frames.append(result.to_frame())
         results.append(result)
         fits.append(fit_response(table, factors, response, coding=coding, log_factors=log_factors))
     findings = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame()
 
-    targets = material_targets(material_cfg)
-    domain = Domain.from_config(material_cfg["factors"])
+    targets, domain = spec.targets, spec.domain
     level2 = None
     if targets:
         level2 = calibration_check({r: surrogates[r] for r in targets}, domain, targets,
-                                   _level2_tolerance(material_cfg), n_level2, material_cfg.get("reference_point"))
+                                   spec.reference_tolerance, n_level2, spec.reference_point)
     calibration = level2.to_frame() if level2 is not None else pd.DataFrame()
     summary = {
         "level1": {r: {"findings": len(p["findings"]), "messages": [f["message"] for f in p["findings"]]}
                    for r, p in response_json.items()},
         "level2": level2.to_json() if level2 is not None else None,
-        "reference_point": reference_point_position(surrogates, material_cfg, n_effect),
+        "reference_point": reference_point_position(surrogates, spec, n_effect),
     }
     return MaterialCriticism(response_json, findings, calibration, summary, residual_figure(fits, results, title))

@@ -19,6 +19,7 @@ from matplotlib.colors import ListedColormap  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
 from .admissibility import AdmissibleSet, Domain  # noqa: E402
+from .spec import MaterialSpec  # noqa: E402
 
 plt.rcParams.update({
     "figure.dpi": 150, "font.size": 9, "axes.titlesize": 10, "axes.labelsize": 9,
@@ -27,12 +28,6 @@ plt.rcParams.update({
 
 SCENARIO_COLORS = ["#9ecae1", "#08519c", "#fdae6b", "#a63603", "#74c476", "#006d2c"]
 MAX_PIXELS = 500
-
-
-def _label(cfg: dict, name: str) -> str:
-    label = cfg.get("label") or name
-    unit = cfg.get("unit", "-")
-    return f"{label} [{unit}]" if unit and unit != "-" else label
 
 
 def _pool(mask: np.ndarray, max_pixels: int = MAX_PIXELS) -> np.ndarray:
@@ -71,9 +66,10 @@ def _axis_scale(ax, domain: Domain, i: int, j: int):
             setter.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{10 ** v:.3g}"))
 
 
-def sets_figure(domain: Domain, factor_cfg: dict, sets: dict[str, AdmissibleSet], scenario_cfg: dict,
-                n: int, reference_point: dict | None = None, title: str = "") -> plt.Figure:
+def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> plt.Figure:
     """Overlay of every scenario's admissible set (pairwise projections for d > 2)."""
+    domain, reference_point, title = spec.domain, spec.reference_point, spec.label
+    scenario_labels = {sc.name: sc.label for sc in spec.scenarios}
     d = domain.dim
     pairs = list(combinations(range(d), 2)) if d > 1 else [(0, 0)]
     ncol = min(3, len(pairs))
@@ -85,7 +81,7 @@ def sets_figure(domain: Domain, factor_cfg: dict, sets: dict[str, AdmissibleSet]
     handles = []
     for s_idx, (name, result) in enumerate(sets.items()):
         color = SCENARIO_COLORS[s_idx % len(SCENARIO_COLORS)]
-        label = scenario_cfg.get(name, {}).get("label") or name
+        label = scenario_labels.get(name) or name
         obs = "+".join(result.observables)
         frac = 100 * result.fraction
         handles.append(Patch(color=color, label=f"{label} ({obs}, ε={result.tolerance:g}): {frac:.3g} %"))
@@ -106,8 +102,8 @@ def sets_figure(domain: Domain, factor_cfg: dict, sets: dict[str, AdmissibleSet]
                       cmap=cmap, vmin=0, vmax=1, interpolation="nearest")
     names = list(domain.factors)
     for ax, (i, j) in zip(axes[0], pairs):
-        ax.set_xlabel(_label(factor_cfg[names[i]], names[i]))
-        ax.set_ylabel(_label(factor_cfg[names[j]], names[j]))
+        ax.set_xlabel(spec.factor(names[i]).axis_label)
+        ax.set_ylabel(spec.factor(names[j]).axis_label)
         lo, hi = domain.search_bounds()
         ax.set_xlim(lo[i], hi[i])
         ax.set_ylim(lo[j], hi[j])
@@ -125,12 +121,12 @@ def sets_figure(domain: Domain, factor_cfg: dict, sets: dict[str, AdmissibleSet]
     return fig
 
 
-def surface_figure(domain: Domain, factor_cfg: dict, response_cfg: dict, grid: pd.DataFrame, n: int,
+def surface_figure(domain: Domain, spec: MaterialSpec, grid: pd.DataFrame, n: int,
                    table: pd.DataFrame | None = None, title: str = "") -> plt.Figure:
     """Contour panel per response over the first two factors (others at their mid-range)."""
     names = list(domain.factors)
     d = domain.dim
-    responses = [r for r in response_cfg if r in grid.columns]
+    responses = [r for r in spec.response_names if r in grid.columns]
     ncol = min(3, len(responses))
     nrow = int(np.ceil(len(responses) / ncol))
     fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.6 * nrow), squeeze=False)
@@ -147,16 +143,16 @@ def surface_figure(domain: Domain, factor_cfg: dict, response_cfg: dict, grid: p
         xs = np.linspace(lo[0], hi[0], n)[::step]
         ys = np.linspace(lo[1], hi[1], n)[::step]
         cs = ax.contourf(xs, ys, z, levels=14, cmap="viridis")
-        fig.colorbar(cs, ax=ax, label=_label(response_cfg[r], r))
-        target = response_cfg[r].get("target")
+        fig.colorbar(cs, ax=ax, label=spec.response(r).axis_label)
+        target = spec.response(r).target
         if target is not None and z.min() < target < z.max():
             ax.contour(xs, ys, z, levels=[target], colors="w", linewidths=1.4, linestyles="--")
         if table is not None:
             pts = domain.to_search(table[names].to_numpy())
             ax.plot(pts[:, 0], pts[:, 1], "o", ms=3.5, mfc="w", mec="k", mew=0.6, ls="none")
-        ax.set_xlabel(_label(factor_cfg[names[0]], names[0]))
-        ax.set_ylabel(_label(factor_cfg[names[1]], names[1]))
-        ax.set_title(response_cfg[r].get("label") or r)
+        ax.set_xlabel(spec.factor(names[0]).axis_label)
+        ax.set_ylabel(spec.factor(names[1]).axis_label)
+        ax.set_title(spec.response(r).label)
         _axis_scale(ax, domain, 0, 1)
     for ax in axes.ravel()[len(responses):]:
         ax.set_visible(False)
@@ -167,10 +163,11 @@ def surface_figure(domain: Domain, factor_cfg: dict, response_cfg: dict, grid: p
     return fig
 
 
-def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, error_of: str, target: float, minimise: str,
-                  max_error: float, response_cfg: dict, title: str = "", cloud_points: int = 60_000) -> plt.Figure:
+def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, spec: MaterialSpec, cloud_points: int = 60_000) -> plt.Figure:
     """Objective cloud (a seeded random subsample of the grid) and the Pareto front, with a zoom on
     the low-error end where the front's intervals are read."""
+    error_of, minimise, max_error = spec.pareto.error_of, spec.pareto.minimise, spec.pareto.max_error
+    target, title = spec.targets[error_of], spec.label
     error = 100 * np.abs(grid[error_of].to_numpy() - target) / abs(target)
     objective = grid[minimise].to_numpy()
     rng = np.random.default_rng(0)  # a random subsample avoids the moire of a strided one
@@ -183,8 +180,8 @@ def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, error_of: str, target
                 label="grid points (random subsample)")
         ax.plot(front_err, front_obj, "-", color="#08519c", lw=1.8, label="Pareto front")
         ax.axvline(100 * max_error, color="#a63603", ls="--", lw=1, label=f"error = {100 * max_error:g} %")
-        ax.set_xlabel(f"relative error of {response_cfg[error_of].get('label') or error_of} [%]")
-        ax.set_ylabel(_label(response_cfg[minimise], minimise))
+        ax.set_xlabel(f"relative error of {spec.response(error_of).label} [%]")
+        ax.set_ylabel(spec.response(minimise).axis_label)
         if zoom:
             xmax = 3 * 100 * max_error
             near = front_obj[front_err <= xmax]
@@ -202,12 +199,12 @@ def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, error_of: str, target
     return fig
 
 
-def surface_figure_from_surrogates(surrogates: dict, material_cfg: dict, table: pd.DataFrame | None, title: str,
+def surface_figure_from_surrogates(surrogates: dict, spec: MaterialSpec, table: pd.DataFrame | None,
                                    n: int = 201) -> plt.Figure:
     """Surface panels on an n x n slice through the first two factors (others at mid-range)."""
     from .admissibility import predict_grid
 
-    domain = Domain.from_config(material_cfg["factors"])
+    domain, title = spec.domain, spec.label
     d = domain.dim
     if d > 2:
         # A 2-D slice: the remaining factors at the centre of their (search-unit) range.
@@ -223,10 +220,10 @@ def surface_figure_from_surrogates(surrogates: dict, material_cfg: dict, table: 
         values = {r: grid[r].to_numpy() for r in surrogates}
         grid2 = pd.DataFrame(pts, columns=names[:2]).assign(**values)
         held = ", ".join(
-            f"{material_cfg['factors'][f].get('label') or f} = {mid[k + 2]:.3g}"
-            + (f" {material_cfg['factors'][f]['unit']}" if material_cfg["factors"][f].get("unit", "-") != "-" else "")
+            f"{spec.factor(f).label} = {mid[k + 2]:.3g}"
+            + (f" {spec.factor(f).unit}" if spec.factor(f).unit != "-" else "")
             for k, f in enumerate(names[2:]))
-        return surface_figure(slice_domain, material_cfg["factors"], material_cfg["responses"], grid2, n, table,
+        return surface_figure(slice_domain, spec, grid2, n, table,
                               f"{title} — slice at {held}")
     grid = predict_grid(surrogates, domain, n)
-    return surface_figure(domain, material_cfg["factors"], material_cfg["responses"], grid, n, table, title)
+    return surface_figure(domain, spec, grid, n, table, title)

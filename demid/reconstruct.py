@@ -759,7 +759,8 @@ def analyse(config: dict, base_dir: Path | str = ".", grid_points: dict[str, int
     pareto_analysis) without writing files.  ``grid_points`` overrides the grid per material.
     Returns ``(surrogate_fit, identifiability, pareto_intervals)`` with the pipeline's columns.
     """
-    from .admissibility import Domain, admissible_set, predict_grid
+    from .admissibility import admissible_set, predict_grid
+    from .spec import MaterialSpec
     from .pareto import pareto_analysis
     from .surrogate import fit_response
 
@@ -779,9 +780,9 @@ def analyse(config: dict, base_dir: Path | str = ".", grid_points: dict[str, int
             surrogates[response] = fit.surrogate()
         default = config.get("grid_points", 1001) if len(factors) <= 2 else config.get("grid_points_3d", 201)
         n = (grid_points or {}).get(name, mat.get("grid_points", default))
-        domain = Domain.from_config(mat["factors"])
+        spec = MaterialSpec.from_material(name, mat)
+        domain, targets = spec.domain, spec.targets
         grid = predict_grid(surrogates, domain, n)
-        targets = {r: float(c["target"]) for r, c in mat["responses"].items() if "target" in c}
         for scenario, spec in (mat.get("scenarios") or {}).items():
             result = admissible_set(surrogates, domain, spec["observables"], targets, spec["tolerance"], n,
                                     grid_predictions=grid)

@@ -119,7 +119,9 @@ class ReportSections:
         return pd.read_csv(path) if path.is_file() else None
 
     def _label(self, material: str) -> str:
-        return self.config["materials"][material].get("label") or material
+        from .spec import MaterialSpec
+
+        return MaterialSpec.from_material(material, self.config["materials"][material]).label
 
     # sections
     def all(self) -> list:

@@ -70,6 +70,7 @@ from scipy import stats
 
 from .design import Coding, Term, model_matrix, nominal_levels, parse_term, quadratic_terms, replicate_groups, term_name
 from .errors import InputError
+from .spec import as_spec
 
 STATISTICS = ("r2", "adj_r2", "rmse", "resid_std", "q2", "lof_f", "lof_p",
               "ss_model", "ss_residual", "ss_lof", "ss_pure_error", "ss_total")
@@ -845,18 +846,17 @@ def check_table(table: pd.DataFrame, factors: list[str], responses_cfg: dict, *,
     return results
 
 
-def check_material(validated, material_cfg: dict, printed: pd.DataFrame | None = None) -> list[TranscriptionResult]:
+def check_material(validated, material, printed: pd.DataFrame | None = None) -> list[TranscriptionResult]:
     """The transcription check of a validated material table against its config's ``published`` blocks.
 
-    Uses the validated table's design coding, so the check and the fits share one coding.
+    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry).  Uses the
+    validated table's design coding, so the check and the fits share one coding.
     """
-    factors = list(material_cfg["factors"])
-    log_factors = tuple(f for f, c in material_cfg["factors"].items() if c.get("scale") == "log")
-    design = material_cfg["design"]
-    table = validated.table
-    return check_table(table, factors, material_cfg["responses"], alpha=float(design.get("alpha", 1.0)),
-                       design_type=design["type"], coding=validated.coding, log_factors=log_factors,
-                       printed=printed, source=material_cfg["data"])
+    spec = as_spec(material)
+    responses = {r: ({"published": spec.published[r]} if r in spec.published else {}) for r in spec.response_names}
+    return check_table(validated.table, spec.factor_names, responses, alpha=spec.alpha,
+                       design_type=spec.design_type, coding=validated.coding, log_factors=spec.log_factors,
+                       printed=printed, source=spec.data)
 
 
 def transcription_frame(results: list[TranscriptionResult]) -> pd.DataFrame:
@@ -866,7 +866,7 @@ def transcription_frame(results: list[TranscriptionResult]) -> pd.DataFrame:
     return pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=columns)
 
 
-def likely_typos(validated, material_cfg: dict, printed: pd.DataFrame | None = None, *,
+def likely_typos(validated, material, printed: pd.DataFrame | None = None, *,
                  family_alpha: float = 0.05, kinds=("transposition", "decimal_shift", "sign_lost")) -> list[dict]:
     """Response cells that look mistyped even without published statistics.
 
@@ -880,11 +880,11 @@ def likely_typos(validated, material_cfg: dict, printed: pd.DataFrame | None = N
 
     from .surrogate import fit_response
 
-    factors = list(material_cfg["factors"])
-    log_factors = tuple(f for f, c in material_cfg["factors"].items() if c.get("scale") == "log")
+    spec = as_spec(material)
+    factors, log_factors = spec.factor_names, spec.log_factors
     table = validated.table
     flags = []
-    for response in material_cfg["responses"]:
+    for response in spec.response_names:
         fit = fit_response(table, factors, response, coding=validated.coding, log_factors=log_factors)
         n, p = fit.n_runs, fit.n_params
         df = n - p - 1
@@ -914,7 +914,7 @@ def likely_typos(validated, material_cfg: dict, printed: pd.DataFrame | None = N
                 flags.append({"run": _jsonable(run), "column": response, "found": float(row["observed"]),
                               "suggested": best[2], "kind": best[1], "student_resid": float(row["student_resid"]),
                               "predicted_from_other_runs": float(loo_pred),
-                              "message": f"{material_cfg['data']}, run {_jsonable(run)}, column '{response}': "
+                              "message": f"{spec.data}, run {_jsonable(run)}, column '{response}': "
                                          f"{text} is far from the fit of the other runs (studentised residual "
                                          f"{row['student_resid']:.1f}, predicted {loo_pred:.4g}); "
                                          f"{best[2]:g} ({best[1].replace('_', ' ')}) would fit — likely typo"})

@@ -44,6 +44,8 @@ from scipy import interpolate, optimize, stats
 from scipy.stats import qmc
 
 from .admissibility import AdmissibleSet, Domain, admissible_set, cell_count, plane_band_fraction, predict_grid  # noqa: F401
+from .sampling import uses_grid
+from .spec import FALLBACK_TOLERANCE, as_spec
 from .surrogate import Surrogate
 
 LN2 = float(np.log(2.0))
@@ -589,7 +591,7 @@ def subset_posteriors(surrogates: dict[str, Surrogate], domain: Domain, observab
     subsets = [tuple(s) for s in subsets]
     needed = sorted({o for s in subsets for o in s}, key=list(observables).index)
     sigma_basis = {o: (sigma_basis or {}).get(o, f"sigma = {sigma[o]:g}") for o in needed}
-    if domain.dim > 3:
+    if not uses_grid(domain.dim):
         return _qmc_posteriors(surrogates, domain, needed, targets, sigma, subsets, bins=n, points=sobol_points,
                                seed=seed, level=level, predictive=predictive, sigma_basis=sigma_basis)
     points = domain.grid(n)
@@ -679,7 +681,7 @@ def rank_observable_sets(surrogates: dict[str, Surrogate], domain: Domain, obser
         posteriors = subset_posteriors(surrogates, domain, observables, targets, sigma, n, subsets=subsets,
                                        sobol_points=sobol_points)
     fn = fraction_n or n
-    grid = predict_grid({o: surrogates[o] for o in observables}, domain, fn) if domain.dim <= 3 else None
+    grid = predict_grid({o: surrogates[o] for o in observables}, domain, fn) if uses_grid(domain.dim) else None
     frac = {(): 1.0}
     gain = {(): 0.0}
     for s in subsets:
@@ -794,7 +796,7 @@ def summarise_set(surrogates: dict[str, Surrogate], domain: Domain, observables,
     half-width of its 95 % confidence interval.
     """
     observables = tuple(observables)
-    if domain.dim > 3:
+    if not uses_grid(domain.dim):
         res = sobol_fraction(surrogates, domain, observables, targets, tolerance, sobol_points, seed,
                              z=z, sigma=sigma, polish=polish)
         return SetSummary(res.fraction, (res.ci_upper - res.ci_lower) / 2, res.lower, res.upper,
@@ -862,7 +864,7 @@ def tolerance_sweep(surrogates: dict[str, Surrogate], domain: Domain, scenarios:
     """
     needed = sorted({o for obs, _ in scenarios.values() for o in obs})
     base = (predict_grid({o: surrogates[o] for o in needed}, domain, n)
-            if z == 0 and domain.dim <= 3 else None)
+            if z == 0 and uses_grid(domain.dim) else None)
     frames = []
     for name, (observables, nominal) in scenarios.items():
         observables = tuple(observables)
@@ -882,8 +884,6 @@ def tolerance_sweep(surrogates: dict[str, Surrogate], domain: Domain, scenarios:
 # =========================================================================== one material
 #: Default tolerances of the sweep (the config's ``sweep_tolerances`` default).
 DEFAULT_SWEEP_TOLERANCES = (0.005, 0.01, 0.02, 0.03, 0.05, 0.075, 0.1, 0.15, 0.2)
-#: Tolerance used for default sigmas and the ranking when a material has no scenario.
-FALLBACK_TOLERANCE = 0.02
 
 
 def recommended_sizes(dim: int) -> dict[str, int]:
@@ -921,38 +921,29 @@ class MaterialUncertainty:
         return posterior_figure(self.posteriors, title, factor_labels=self.factor_labels)
 
 
-def _reference_tolerance(scenarios: dict) -> float:
-    """Tolerance of the scenario with the most observables (ties: the smallest tolerance)."""
-    if not scenarios:
-        return FALLBACK_TOLERANCE
-    return min(scenarios.values(), key=lambda sc: (-len(sc[0]), sc[1]))[1]
-
-
-def analyse_material(surrogates: dict[str, Surrogate], material_cfg: dict, *, z: float = 2.0,
+def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2.0,
                      tolerances=DEFAULT_SWEEP_TOLERANCES, sizes: dict[str, int] | None = None,
                      strict_sets: dict[str, AdmissibleSet] | None = None, seed: int = 0) -> MaterialUncertainty:
     """Robust sets, tolerance sweep, posteriors, ranking and advice for one configured material.
 
-    ``material_cfg`` is one entry of the config's ``materials`` (factors, responses with
-    ``target`` and optional ``sigma``/``sigma_rel``, scenarios).  Robust sets use the
+    ``material`` is a :class:`~demid.spec.MaterialSpec` (or one entry of the config's
+    ``materials``: factors, responses with ``target`` and optional ``sigma``/``sigma_rel``, scenarios).  Robust sets use the
     configured measurement sigma only (0 when absent); posteriors and the ranking use it
     or, when absent, ``sigma_rel`` = reference tolerance / 2, where the reference
     tolerance is that of the scenario with the most observables.  ``notes`` states the
     grid sizes and sigma bases used, for the report.
     """
-    domain = Domain.from_config(material_cfg["factors"])
-    responses = material_cfg.get("responses") or {}
-    targets = {r: float(c["target"]) for r, c in responses.items()
-               if c.get("target") is not None and r in surrogates}
-    scenarios = {name: (tuple(sc["observables"]), float(sc["tolerance"]))
-                 for name, sc in (material_cfg.get("scenarios") or {}).items()}
+    spec = as_spec(material)
+    domain = spec.domain
+    targets = {r: t for r, t in spec.targets.items() if r in surrogates}
+    scenarios = {sc.name: (sc.observables, sc.tolerance) for sc in spec.scenarios}
     sizes = {**recommended_sizes(domain.dim), **(sizes or {})}
-    tolerance = _reference_tolerance(scenarios)
+    tolerance = spec.reference_tolerance
     observables = list(targets)
-    robust_sigma, robust_basis = measurement_sigmas(responses, observables, targets)
-    post_sigma, post_basis = measurement_sigmas(responses, observables, targets, tolerance)
-    labels = {r: (responses[r].get("label") or r) for r in observables}
-    factor_labels = {f: (c.get("label") or f) for f, c in material_cfg["factors"].items()}
+    robust_sigma, robust_basis = measurement_sigmas(spec.sigma_config, observables, targets)
+    post_sigma, post_basis = measurement_sigmas(spec.sigma_config, observables, targets, tolerance)
+    labels = {r: spec.response_labels[r] for r in observables}
+    factor_labels = spec.factor_labels
 
     robust = sweep = None
     if scenarios:
@@ -967,14 +958,14 @@ def analyse_material(surrogates: dict[str, Surrogate], material_cfg: dict, *, z:
     ranking = (rank_observable_sets(surrogates, domain, observables, targets, post_sigma, tolerance,
                                     sizes["posterior"], posteriors=posteriors, sobol_points=points)
                if observables else pd.DataFrame(columns=RANKING_COLUMNS))
-    grid_word = "scrambled Sobol points" if domain.dim > 3 else "grid points per axis"
+    grid_word = "grid points per axis" if uses_grid(domain.dim) else "scrambled Sobol points"
     notes = [
         f"Robust sets: z = {z:g}; " + "; ".join(f"{o}: {robust_basis[o]}" for o in observables) + ".",
         f"Posteriors and ranking at tolerance {tolerance:g}: "
         + "; ".join(f"{o}: {post_basis[o]}" for o in observables) + ".",
         f"Robust sets on {sizes['robust']} {grid_word}, sweeps on {sizes['sweep']}, "
         + (f"posteriors on {points} scrambled Sobol points ({sizes['posterior']} histogram bins)."
-           if domain.dim > 3 else f"posteriors on {sizes['posterior']} grid points per axis."),
+           if not uses_grid(domain.dim) else f"posteriors on {sizes['posterior']} grid points per axis."),
     ]
     if not scenarios:
         notes.append(f"No scenarios configured: ranking and default sigma use tolerance {FALLBACK_TOLERANCE:g}.")

@@ -8,8 +8,7 @@ from demid.io import read_parquet, save_figure  # noqa: E402
 from demid.plots import surface_figure_from_surrogates  # noqa: E402
 from demid.surrogate import surrogates_from_frame  # noqa: E402
 
-cfg = snakemake.params.material_cfg  # noqa: F821
-surrogates = surrogates_from_frame(read_parquet(snakemake.input.fits), list(cfg["factors"]))  # noqa: F821
-fig = surface_figure_from_surrogates(surrogates, cfg, read_parquet(snakemake.input.table),  # noqa: F821
-                                     cfg.get("label") or snakemake.wildcards.material)  # noqa: F821
+spec = snakemake.params.spec  # noqa: F821
+surrogates = surrogates_from_frame(read_parquet(snakemake.input.fits), spec.factor_names)  # noqa: F821
+fig = surface_figure_from_surrogates(surrogates, spec, read_parquet(snakemake.input.table))  # noqa: F821
 save_figure(fig, snakemake.output.figure)  # noqa: F821

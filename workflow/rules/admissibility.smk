@@ -10,8 +10,7 @@ rule admissibility:
             caption="../report/sets.rst",
         ),
     params:
-        material_cfg=material_cfg,
-        grid_points=material_grid_points,
+        spec=material_spec,
     conda:
         "../envs/demid.yaml"
     log:
@@ -33,7 +32,7 @@ rule extract_pareto:
             caption="../report/pareto.rst",
         ),
     params:
-        material_cfg=material_cfg,
+        spec=material_spec,
     conda:
         "../envs/demid.yaml"
     log:

@@ -1,9 +1,10 @@
 import sys
 from pathlib import Path
 
-from demid.config import check_semantics, grid_size, validate_schema
+from demid.config import check_semantics, validate_schema
 from demid.data import validate_material
 from demid.errors import InputError
+from demid.spec import MaterialSpec
 
 
 # Validate the config (schema with defaults, then cross-references) and every table before
@@ -43,16 +44,17 @@ wildcard_constraints:
     material="|".join(MATERIALS),
 
 
-def material_cfg(wildcards):
-    return config["materials"][wildcards.material]
+# One MaterialSpec per material, built once from the validated config; rules pass it as their
+# only per-material parameter.
+SPECS = {name: MaterialSpec.from_config(name, config) for name in MATERIALS}
+
+
+def material_spec(wildcards):
+    return SPECS[wildcards.material]
 
 
 def material_data(wildcards):
     return config["materials"][wildcards.material]["data"]
-
-
-def material_grid_points(wildcards):
-    return grid_size(config, wildcards.material)
 
 
 def pareto_materials():

@@ -13,8 +13,7 @@ rule criticize_material:
             caption="../report/residuals.rst",
         ),
     params:
-        material_cfg=material_cfg,
-        grid_points=material_grid_points,
+        spec=material_spec,
     conda:
         "../envs/demid.yaml"
     log:

@@ -9,7 +9,7 @@ rule plot_surface:
             caption="../report/surface.rst",
         ),
     params:
-        material_cfg=material_cfg,
+        spec=material_spec,
     conda:
         "../envs/demid.yaml"
     log:

@@ -7,7 +7,7 @@ rule fit_surrogates:
         anova=f"{RESULTS}/fits/{{material}}_anova.parquet",
         diagnostics=f"{RESULTS}/fits/{{material}}_diagnostics.parquet",
     params:
-        material_cfg=material_cfg,
+        spec=material_spec,
     conda:
         "../envs/demid.yaml"
     log:

@@ -18,7 +18,7 @@ rule analyse_uncertainty:
             caption="../report/posterior.rst",
         ),
     params:
-        material_cfg=material_cfg,
+        spec=material_spec,
         z=config["robust_z"],
         tolerances=config["sweep_tolerances"],
     conda:
