@@ -9,7 +9,8 @@ import yaml
 
 from .errors import InputError
 
-SCHEMA_PATH = Path(__file__).resolve().parent.parent / "workflow" / "schemas" / "config.schema.yaml"
+# Shipped with the package (package data), so a non-editable install validates configs too.
+SCHEMA_PATH = Path(__file__).resolve().parent / "schemas" / "config.schema.yaml"
 
 
 def load_schema(path: Path | str = SCHEMA_PATH) -> dict:

@@ -17,6 +17,11 @@ from functools import cached_property
 FALLBACK_TOLERANCE = 0.02
 
 
+def join_observables(observables) -> str:
+    """An observable set's name in tables and legends: ``d5+d10+d15``."""
+    return "+".join(observables)
+
+
 def _axis_label(label: str, unit: str) -> str:
     return f"{label} [{unit}]" if unit and unit != "-" else label
 
