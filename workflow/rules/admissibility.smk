@@ -11,6 +11,8 @@ rule admissibility:
         ),
     params:
         spec=material_spec,
+    resources:
+        mem_mb=evaluation_mem_mb,
     conda:
         "../envs/demid.yaml"
     log:
@@ -33,6 +35,8 @@ rule extract_pareto:
         ),
     params:
         spec=material_spec,
+    resources:
+        mem_mb=evaluation_mem_mb,
     conda:
         "../envs/demid.yaml"
     log:

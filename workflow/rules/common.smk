@@ -4,6 +4,7 @@ from pathlib import Path
 from demid.config import check_semantics, validate_schema
 from demid.data import validate_material
 from demid.errors import InputError
+from demid.sampling import uses_grid
 from demid.spec import MaterialSpec
 
 
@@ -55,6 +56,13 @@ def material_spec(wildcards):
 
 def material_data(wildcards):
     return config["materials"][wildcards.material]["data"]
+
+
+def evaluation_mem_mb(wildcards):
+    """Memory of a job that holds every evaluation point's predictions (about 3 copies of 8-byte values)."""
+    spec = SPECS[wildcards.material]
+    points = spec.grid_points ** spec.dim if uses_grid(spec.dim) else spec.grid_points
+    return 1000 + int(24 * points * (spec.dim + len(spec.responses)) / 1e6)
 
 
 def pareto_materials():

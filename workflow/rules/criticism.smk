@@ -14,6 +14,8 @@ rule criticize_material:
         ),
     params:
         spec=material_spec,
+    resources:
+        mem_mb=2000,
     conda:
         "../envs/demid.yaml"
     log:

@@ -10,6 +10,8 @@ rule plot_surface:
         ),
     params:
         spec=material_spec,
+    resources:
+        mem_mb=1000,
     conda:
         "../envs/demid.yaml"
     log:
@@ -31,6 +33,8 @@ rule paper_figure:
         ),
     wildcard_constraints:
         paper_figure=paper_figure_pattern(),
+    resources:
+        mem_mb=100,
     conda:
         "../envs/demid.yaml"
     log:

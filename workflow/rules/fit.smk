@@ -8,6 +8,8 @@ rule fit_surrogates:
         diagnostics=f"{RESULTS}/fits/{{material}}_diagnostics.parquet",
     params:
         spec=material_spec,
+    resources:
+        mem_mb=1000,
     conda:
         "../envs/demid.yaml"
     log:

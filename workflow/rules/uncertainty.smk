@@ -21,6 +21,8 @@ rule analyse_uncertainty:
         spec=material_spec,
         z=config["robust_z"],
         tolerances=config["sweep_tolerances"],
+    resources:
+        mem_mb=2000,
     conda:
         "../envs/demid.yaml"
     log:

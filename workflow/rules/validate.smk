@@ -7,6 +7,8 @@ rule validate_table:
         transcription=f"{RESULTS}/validated/{{material}}_transcription.parquet",
     params:
         spec=material_spec,
+    resources:
+        mem_mb=1000,
     conda:
         "../envs/demid.yaml"
     log:
