@@ -92,7 +92,6 @@ def per_material_outputs(material):
     out = [
         f"{RESULTS}/validated/{material}.parquet",
         f"{RESULTS}/fits/{material}.parquet",
-        f"{RESULTS}/grid/{material}.parquet",
         f"{RESULTS}/scenarios/{material}.parquet",
         f"{RESULTS}/figures/sets_{material}.png",
         f"{RESULTS}/figures/surface_{material}.png",
