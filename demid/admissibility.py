@@ -14,13 +14,16 @@ from typing import TYPE_CHECKING
 import pandas as pd
 
 # Re-exported: the estimators' public names, as earlier callers import them from here.
-from .sampling import (MAX_GRID_DIM, AdmissibleSet, CellCount, Domain, admissible_set,  # noqa: F401
+from .sampling import (MAX_GRID_DIM, AdmissibleSet, CellCount, Domain, admissible_set,
                        cell_count, evaluate_set, plane_band_fraction, predict_grid, relative_residuals,
                        sobol_admissible_set)
 from .spec import as_spec
 
 if TYPE_CHECKING:
     from .surrogate import Surrogate
+
+__all__ = ["MAX_GRID_DIM", "AdmissibleSet", "CellCount", "Domain", "admissible_set", "cell_count", "evaluate_scenarios",
+           "evaluate_set", "plane_band_fraction", "predict_grid", "relative_residuals", "sobol_admissible_set"]
 
 
 def evaluate_scenarios(surrogates: dict[str, Surrogate], material, n: int | None = None,

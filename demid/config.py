@@ -50,7 +50,7 @@ def _fill_defaults(instance, schema: dict, root: dict):
 
 def validate_schema(config: dict, source: str = "config") -> dict:
     """Validate against the schema, fill defaults, return a new dict.  Raises InputError."""
-    import jsonschema  # only validation needs it; per-material jobs import this module for `targets`
+    import jsonschema  # only validation needs it, not the per-material jobs
 
     schema = load_schema()
     validator = jsonschema.Draft7Validator(schema)

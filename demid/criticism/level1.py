@@ -197,7 +197,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     ``alpha`` is the CCD axial distance used for coding (None: inferred from the
     levels).  Runs with a missing response are dropped.  ``n_null`` Monte Carlo
     draws of the joint null (seeded with ``seed``: results are reproducible) give
-    the family-adjusted p-values.  See the module docstring for the catalogue.
+    the family-adjusted p-values.  See the package docstring (demid.criticism) for the catalogue.
     """
     data, fit = _prepare(table, list(factors), response, alpha, tuple(log_factors))
     rng = np.random.default_rng(seed)

@@ -37,7 +37,7 @@ def _effect_points(n: int, d: int) -> int:
     """Grid points per axis (Sobol points above 3 factors) for the before/after and level-2 searches."""
     if d <= 2:
         return min(n, 401)
-    if d == 3:
+    if uses_grid(d):
         return min(n, 61)
     return min(n, 2 ** 14)
 

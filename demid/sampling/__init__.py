@@ -1,19 +1,30 @@
 """Evaluating admissible sets over the search domain Omega.
 
-``domain`` (the box, its grids and Sobol points), ``residuals`` (the one relative-residual
-evaluator), ``grid`` and ``sobol`` (the two estimators), ``polish`` (span ends on the exact
-boundary) and ``choice`` (:func:`evaluate_set`, the only place that picks grid or Sobol).
+``domain`` (the box, its grids and Sobol points, and :func:`uses_grid`, the one grid-or-Sobol
+decision), ``residuals`` (the one relative-residual evaluator and plausibility fields), ``grid``
+and ``sobol`` (the two estimators), ``polish`` (span ends on the exact boundary) and ``evaluate``
+(:func:`evaluate_set`: one set, by whichever estimator :func:`uses_grid` picks).
+
+The estimators (scipy) load on first use (PEP 562), so the workflow's parse step and the
+spec import only the domain.
 """
 
-from .choice import MAX_GRID_DIM, evaluate_set, uses_grid
-from .domain import Domain
-from .grid import AdmissibleSet, CellCount, FractionEstimate, admissible_set, cell_count, fraction_with_error, \
-    plane_band_fraction, predict_grid
-from .polish import polish_spans
-from .residuals import PlausibilityField, plausibility_fields, relative_residuals
-from .sobol import SobolFraction, sobol_admissible_set, sobol_fraction
+from importlib import import_module
 
-__all__ = ["MAX_GRID_DIM", "AdmissibleSet", "CellCount", "Domain", "FractionEstimate", "PlausibilityField",
-           "SobolFraction", "admissible_set", "cell_count", "evaluate_set", "fraction_with_error",
-           "plane_band_fraction", "plausibility_fields", "polish_spans", "predict_grid", "relative_residuals",
-           "sobol_admissible_set", "sobol_fraction", "uses_grid"]
+from .domain import MAX_GRID_DIM, Domain, uses_grid
+
+_WHERE = {
+    "AdmissibleSet": "grid", "CellCount": "grid", "FractionEstimate": "grid", "admissible_set": "grid",
+    "cell_count": "grid", "fraction_with_error": "grid", "plane_band_fraction": "grid", "predict_grid": "grid",
+    "PlausibilityField": "residuals", "plausibility_fields": "residuals", "relative_residuals": "residuals",
+    "SobolFraction": "sobol", "sobol_admissible_set": "sobol", "sobol_fraction": "sobol",
+    "polish_spans": "polish", "evaluate_set": "evaluate",
+}
+
+__all__ = ["MAX_GRID_DIM", "Domain", "uses_grid", *sorted(_WHERE)]
+
+
+def __getattr__(name: str):
+    if name in _WHERE:
+        return getattr(import_module(f".{_WHERE[name]}", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,4 +1,5 @@
-"""The search domain Omega: a box in search units (actual, or log10 for log-scale factors)."""
+"""The search domain Omega: a box in search units (actual, or log10 for log-scale factors),
+and the one decision between a full grid and scrambled Sobol points (:func:`uses_grid`)."""
 
 from __future__ import annotations
 
@@ -7,7 +8,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..design import model_units
-from .choice import uses_grid
+
+
+#: Up to this many factors Omega is evaluated on a full grid; beyond it on scrambled Sobol points.
+MAX_GRID_DIM = 3
+
+
+def uses_grid(dim: int) -> bool:
+    """True when a ``dim``-factor domain is evaluated on a full grid, False for Sobol points.
+
+    The only test of :data:`MAX_GRID_DIM`: every grid-or-Sobol branch asks this function.
+    """
+    return dim <= MAX_GRID_DIM
 
 
 @dataclass(frozen=True)

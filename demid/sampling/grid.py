@@ -337,7 +337,7 @@ def fraction_with_error(surrogates: dict[str, Surrogate], domain: Domain, observ
     """Feasible fraction (strict, or plausible when ``z > 0``) with a numerical error estimate.
 
     Grid nodes give the residual fields; boundary cells are measured by the plane rule of
-    :func:`~demid.admissibility.cell_count` (second order, no new evaluations) or sub-sampled.  The error
+    :func:`cell_count` (second order, no new evaluations) or sub-sampled.  The error
     compares with the nested (n+1)/2 grid (every second node: no new node evaluations),
     see :class:`FractionEstimate`.  ``n`` is rounded up to odd; ``grid_predictions``, if
     given, must be :func:`predict_grid` on that n.  Verified on annuli and spherical

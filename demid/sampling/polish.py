@@ -12,7 +12,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import optimize
 
-from .grid import admissible_set
 from .residuals import _fields, _residual_evaluator
 
 if TYPE_CHECKING:

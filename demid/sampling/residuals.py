@@ -31,7 +31,7 @@ class PlausibilityField:
     ``predict(x) = y* + (yhat(x) - y*) * b / (b + z s(x))`` with ``b = eps |y*|`` and
     ``s = sqrt(se_mean^2 + sigma^2)`` (``se_prediction`` instead of ``se_mean`` when
     ``predictive``).  ``|predict - y*| <= b`` iff ``|yhat - y*| <= b + z s``, and the
-    field is smooth, so :func:`demid.admissibility.admissible_set` (cell classification,
+    field is smooth, so :func:`~demid.sampling.grid.admissible_set` (cell classification,
     curvature margins, boundary refinement) applies unchanged.
     """
 

@@ -26,7 +26,7 @@ if TYPE_CHECKING:
 def sobol_admissible_set(surrogates: dict[str, Surrogate], domain: Domain, observables, targets: dict[str, float],
                          tolerance: float, n: int, sample: pd.DataFrame | None = None) -> AdmissibleSet:
     """Eq. (2)-(4) for more than 3 factors: randomised-QMC fraction with a confidence interval
-    (:func:`demid.uncertainty.sobol_fraction`), spans polished to the boundary, and the admissible
+    (:func:`sobol_fraction`), spans polished to the boundary, and the admissible
     points of the evaluation sample for figures."""
     observables = tuple(observables)
     if sample is None:

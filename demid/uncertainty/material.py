@@ -35,7 +35,7 @@ def recommended_sizes(dim: int) -> dict[str, int]:
     """
     if dim <= 2:
         return {"robust": 401, "sweep": 201, "posterior": 401}
-    if dim == 3:
+    if uses_grid(dim):
         return {"robust": 61, "sweep": 41, "posterior": 61}
     return {"robust": 2 ** 16, "sweep": 2 ** 14, "posterior": 51, "posterior_points": 2 ** 16}
 

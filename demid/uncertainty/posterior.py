@@ -20,7 +20,6 @@ from scipy.stats import qmc
 
 from ..sampling import uses_grid
 from ..spec import join_observables
-from .sigma import sigma_basis
 
 if TYPE_CHECKING:
     from ..sampling import Domain

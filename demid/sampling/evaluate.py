@@ -1,9 +1,10 @@
-"""The one decision between a full grid and scrambled Sobol points."""
+"""evaluate_set: one admissible set, on the grid or on Sobol points as :func:`uses_grid` decides."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from .domain import uses_grid
 from .grid import admissible_set
 from .sobol import sobol_admissible_set
 
@@ -13,15 +14,6 @@ if TYPE_CHECKING:
     from ..surrogate import Surrogate
     from .domain import Domain
     from .grid import AdmissibleSet
-
-#: Up to this many factors Omega is evaluated on a full grid; beyond it on scrambled Sobol points.
-MAX_GRID_DIM = 3
-
-
-def uses_grid(dim: int) -> bool:
-    """True when a ``dim``-factor domain is evaluated on a full grid, False for Sobol points."""
-    return dim <= MAX_GRID_DIM
-
 
 def evaluate_set(surrogates: dict[str, Surrogate], domain: Domain, observables, targets: dict[str, float],
                  tolerance: float, n: int, predictions: pd.DataFrame | None = None) -> AdmissibleSet:
