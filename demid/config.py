@@ -9,7 +9,8 @@ import yaml
 
 from .errors import InputError
 
-SCHEMA_PATH = Path(__file__).resolve().parent.parent / "workflow" / "schemas" / "config.schema.yaml"
+# Shipped with the package (package data), so a non-editable install validates configs too.
+SCHEMA_PATH = Path(__file__).resolve().parent / "schemas" / "config.schema.yaml"
 
 
 def load_schema(path: Path | str = SCHEMA_PATH) -> dict:
@@ -49,7 +50,7 @@ def _fill_defaults(instance, schema: dict, root: dict):
 
 def validate_schema(config: dict, source: str = "config") -> dict:
     """Validate against the schema, fill defaults, return a new dict.  Raises InputError."""
-    import jsonschema  # only validation needs it; per-material jobs import this module for `targets`
+    import jsonschema  # only validation needs it, not the per-material jobs
 
     schema = load_schema()
     validator = jsonschema.Draft7Validator(schema)
@@ -143,15 +144,7 @@ def load_config(path: Path | str, base_dir: Path | str | None = None) -> dict:
 
 
 def grid_size(config: dict, material: str) -> int:
-    mat = config["materials"][material]
-    if mat.get("grid_points"):
-        return int(mat["grid_points"])
-    d = len(mat["factors"])
-    if d <= 2:
-        return int(config["grid_points"])
-    return int(config["grid_points_3d"] if d == 3 else config["sobol_points"])
+    """Grid points per axis (Sobol points above 3 factors) of a material (see demid.spec)."""
+    from .spec import evaluation_size
 
-
-def targets(material_cfg: dict) -> dict[str, float]:
-    """Measured targets of a material's responses (those that have one)."""
-    return {r: float(c["target"]) for r, c in material_cfg["responses"].items() if "target" in c}
+    return evaluation_size(config, config["materials"][material])

@@ -20,6 +20,7 @@ import pandas as pd
 
 from .design import Coding, classify_points, model_units, nominal_levels, quadratic_terms
 from .errors import InputError
+from .spec import as_spec
 
 UNICODE_MINUS = "\u2212"
 _DECIMAL_COMMA = re.compile(r"^[+-]?\d*,\d+$")
@@ -286,7 +287,7 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
     path = Path(base_dir) / mat_cfg["data"]
     factors = list(mat_cfg["factors"])
     responses = list(mat_cfg["responses"])
-    log_factors = tuple(f for f, c in mat_cfg["factors"].items() if c.get("scale") == "log")
+    log_factors = as_spec(mat_cfg, material).log_factors
     table, warnings = read_table(path, factors, responses, mat_cfg.get("status_column", "status"))
     table = table[["run"] + factors + responses + ["status"]]
     for f in log_factors:

@@ -86,6 +86,23 @@ def _column(identifiability, material, scenario, factor, column) -> float:
     return float(sel.loc[factor, column]) if factor in sel.index else math.nan
 
 
+def _scenario_set_rows(out: _Rows, identifiability: pd.DataFrame, material: str, scenario: str, entry: dict,
+                       domain: dict) -> None:
+    """Rows of one ``scenario_sets`` entry: fraction, bounds, factors unresolved over their search range."""
+    if "feasible_fraction_pct" in entry:
+        out.add(f"feasible fraction [%] {scenario}", material, entry["feasible_fraction_pct"],
+                _fraction(identifiability, material, scenario), "fraction")
+    for end, sign in (("upper", "≲"), ("lower", "≳")):
+        for factor, value in (entry.get(end) or {}).items():
+            out.add(f"{end} bound {factor} ({sign}), {scenario}", material, value,
+                    _column(identifiability, material, scenario, factor, end), "width")
+    for factor in entry.get("unresolved") or []:
+        low, high = domain[factor]
+        width = _column(identifiability, material, scenario, factor, "width")
+        out.add(f"{factor} unresolved: width [% of search range], {scenario}", material, 100.0,
+                100.0 * width / (float(high) - float(low)), "unresolved")
+
+
 def paper_comparison(published: dict, surrogate_fit: pd.DataFrame, identifiability: pd.DataFrame,
                      pareto_intervals: dict[str, pd.DataFrame]) -> pd.DataFrame:
     """One row per published number: ``quantity, material, published, reproduced, abs_diff,
@@ -142,20 +159,10 @@ def paper_comparison(published: dict, surrogate_fit: pd.DataFrame, identifiabili
                 out.add(f"interval {factor} upper end, {scenario}", material, high,
                         _column(identifiability, material, scenario, factor, "upper"), "width")
 
-    paste = published.get("paste_diameter_only")
-    if paste:
-        scenario = paste["scenario"]
-        out.add(f"feasible fraction [%] {scenario}", "paste", paste["feasible_fraction_pct"],
-                _fraction(identifiability, "paste", scenario), "fraction")
-        for factor, value in (paste.get("upper") or {}).items():
-            out.add(f"upper bound {factor} (≲), {scenario}", "paste", value,
-                    _column(identifiability, "paste", scenario, factor, "upper"), "width")
-        domain = (published.get("search_domain") or {}).get("paste", {})
-        for factor in paste.get("unresolved") or []:
-            low, high = domain[factor]
-            width = _column(identifiability, "paste", scenario, factor, "width")
-            out.add(f"{factor} unresolved: width [% of search range], {scenario}", "paste", 100.0,
-                    100.0 * width / (float(high) - float(low)), "unresolved")
+    for material, scenarios in (published.get("scenario_sets") or {}).items():
+        domain = (published.get("search_domain") or {}).get(material, {})
+        for scenario, entry in scenarios.items():
+            _scenario_set_rows(out, identifiability, material, scenario, entry, domain)
 
     for material, entry in (published.get("pareto") or {}).items():
         table = pareto_intervals.get(material)

@@ -371,15 +371,18 @@ def surrogates_from_frame(frame: pd.DataFrame, factors: list[str]) -> dict[str, 
 
 
 # --------------------------------------------------------------------------- per-material step
-def fit_material(table: pd.DataFrame, material_cfg: dict) -> list[SurrogateFit]:
-    """Quadratic fit of every response of a validated table, in the declared design's coding."""
-    from .data import infer_coding
+def fit_material(table: pd.DataFrame, material) -> list[SurrogateFit]:
+    """Quadratic fit of every response of a validated table, in the declared design's coding.
 
-    factors = list(material_cfg["factors"])
-    log_factors = tuple(f for f, c in material_cfg["factors"].items() if c.get("scale") == "log")
-    coding = infer_coding(table, factors, material_cfg["design"], material_cfg["data"], log_factors)
-    return [fit_response(table, factors, r, coding=coding, log_factors=log_factors)
-            for r in material_cfg["responses"]]
+    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry).
+    """
+    from .data import infer_coding
+    from .spec import as_spec
+
+    spec = as_spec(material)
+    factors, log_factors = spec.factor_names, spec.log_factors
+    coding = infer_coding(table, factors, spec.design, spec.data, log_factors)
+    return [fit_response(table, factors, r, coding=coding, log_factors=log_factors) for r in spec.response_names]
 
 
 def fit_frames(fits: list[SurrogateFit]) -> dict[str, pd.DataFrame]:
@@ -388,6 +391,5 @@ def fit_frames(fits: list[SurrogateFit]) -> dict[str, pd.DataFrame]:
         "fits": surrogates_to_frame(fits),
         "statistics": pd.concat([f.statistics().to_frame() for f in fits], ignore_index=True),
         "anova": pd.concat([f.anova().to_frame() for f in fits], ignore_index=True),
-        "influence": pd.concat([f.influence() for f in fits], ignore_index=True),
         "diagnostics": pd.concat([f.diagnostics().to_frame() for f in fits], ignore_index=True),
     }

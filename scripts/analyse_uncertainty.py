@@ -8,10 +8,10 @@ from demid.io import read_parquet, save_figure, write_json, write_parquet  # noq
 from demid.surrogate import surrogates_from_frame  # noqa: E402
 from demid.uncertainty import analyse_material  # noqa: E402
 
-cfg = snakemake.params.material_cfg  # noqa: F821
-title = cfg.get("label") or snakemake.wildcards.material  # noqa: F821
-surrogates = surrogates_from_frame(read_parquet(snakemake.input.fits), list(cfg["factors"]))  # noqa: F821
-result = analyse_material(surrogates, cfg, z=snakemake.params.z, tolerances=snakemake.params.tolerances)  # noqa: F821
+spec = snakemake.params.spec  # noqa: F821
+title = spec.label
+surrogates = surrogates_from_frame(read_parquet(snakemake.input.fits), spec.factor_names)  # noqa: F821
+result = analyse_material(surrogates, spec, z=snakemake.params.z, tolerances=snakemake.params.tolerances)  # noqa: F821
 for name in ("robust", "sweep", "information_gain", "ranking"):
     write_parquet(getattr(result, name), getattr(snakemake.output, name))  # noqa: F821
 write_json({"advice": result.advice, "notes": result.notes}, snakemake.output.summary)  # noqa: F821

@@ -9,11 +9,10 @@ from demid.criticism import criticize_material  # noqa: E402
 from demid.io import read_parquet, save_figure, write_json, write_parquet  # noqa: E402
 from demid.surrogate import surrogates_from_frame  # noqa: E402
 
-cfg = snakemake.params.material_cfg  # noqa: F821
+spec = snakemake.params.spec  # noqa: F821
 out = snakemake.output  # noqa: F821
-surrogates = surrogates_from_frame(read_parquet(snakemake.input.fits), list(cfg["factors"]))  # noqa: F821
-result = criticize_material(read_parquet(snakemake.input.table), surrogates, cfg,  # noqa: F821
-                            snakemake.params.grid_points, cfg.get("label") or snakemake.wildcards.material)  # noqa: F821
+surrogates = surrogates_from_frame(read_parquet(snakemake.input.fits), spec.factor_names)  # noqa: F821
+result = criticize_material(read_parquet(snakemake.input.table), surrogates, spec)  # noqa: F821
 Path(out.responses).mkdir(parents=True, exist_ok=True)
 for response, payload in result.response_json.items():
     write_json(payload, Path(out.responses) / f"{response}.json")

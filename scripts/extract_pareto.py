@@ -4,17 +4,17 @@ import sys
 
 sys.stderr = open(snakemake.log[0], "w", encoding="utf-8")  # noqa: F821
 
-from demid.io import read_parquet, save_figure, write_csv, write_parquet  # noqa: E402
+from demid.admissibility import predict_grid  # noqa: E402
+from demid.io import read_parquet, save_figure, write_csv  # noqa: E402
 from demid.pareto import pareto_analysis  # noqa: E402
 from demid.plots import pareto_figure  # noqa: E402
+from demid.surrogate import surrogates_from_frame  # noqa: E402
 
-cfg = snakemake.params.material_cfg  # noqa: F821
-par = cfg["pareto"]
-target = cfg["responses"][par["error_of"]]["target"]
-grid = read_parquet(snakemake.input.grid)  # noqa: F821
-result = pareto_analysis(grid, list(cfg["factors"]), par["error_of"], target, par["minimise"], par["max_error"])
-write_parquet(result.front, snakemake.output.front)  # noqa: F821
+spec = snakemake.params.spec  # noqa: F821
+par = spec.pareto
+surrogates = surrogates_from_frame(read_parquet(snakemake.input.fits), spec.factor_names)  # noqa: F821
+grid = predict_grid(surrogates, spec.domain, spec.grid_points)
+result = pareto_analysis(grid, spec.factor_names, par.error_of, spec.targets[par.error_of], par.minimise,
+                         par.max_error)
 write_csv(result.to_frame(), snakemake.output.table)  # noqa: F821
-fig = pareto_figure(grid, result.front, par["error_of"], target, par["minimise"], par["max_error"],
-                    cfg["responses"], cfg.get("label") or snakemake.wildcards.material)  # noqa: F821
-save_figure(fig, snakemake.output.figure)  # noqa: F821
+save_figure(pareto_figure(grid, result.front, spec), snakemake.output.figure)  # noqa: F821

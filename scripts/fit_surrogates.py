@@ -8,6 +8,6 @@ from demid.io import read_parquet, write_parquet  # noqa: E402
 from demid.surrogate import fit_frames, fit_material  # noqa: E402
 
 table = read_parquet(snakemake.input.table)  # noqa: F821
-frames = fit_frames(fit_material(table, snakemake.params.material_cfg))  # noqa: F821
+frames = fit_frames(fit_material(table, snakemake.params.spec))  # noqa: F821
 for name, frame in frames.items():
     write_parquet(frame, getattr(snakemake.output, name))  # noqa: F821

@@ -8,17 +8,16 @@ from demid.data import read_printed, validate_material  # noqa: E402
 from demid.io import write_json, write_parquet  # noqa: E402
 from demid.transcription import check_material, likely_typos, transcription_frame  # noqa: E402
 
-material = snakemake.wildcards.material  # noqa: F821
-cfg = snakemake.params.material_cfg  # noqa: F821
-validated = validate_material(material, cfg)
+spec = snakemake.params.spec  # noqa: F821
+validated = validate_material(spec.name, spec.material_config())
 for warning in validated.warnings:
     print(f"warning: {warning}", file=sys.stderr)
 printed = read_printed(snakemake.input.data, validated.table)  # noqa: F821
-checks = check_material(validated, cfg, printed)
-typos = likely_typos(validated, cfg, printed)
+checks = check_material(validated, spec, printed)
+typos = likely_typos(validated, spec, printed)
 for flag in typos:
     print(f"warning: {flag['message']}", file=sys.stderr)
-summary = validated.summary(material)
+summary = validated.summary(spec.name)
 summary["warnings"] += [flag["message"] for flag in typos]
 summary["likely_typos"] = typos
 summary["transcription"] = {r.response: r.to_json() for r in checks}

@@ -8,7 +8,7 @@ import pytest
 import yaml
 
 from demid.paper import COLUMNS, paper_comparison
-from demid.reconstruct import analyse
+from demo.reconstruct import analyse
 
 ROOT = Path(__file__).resolve().parent.parent
 PUBLISHED = yaml.safe_load((ROOT / "data" / "published.yaml").read_text(encoding="utf-8"))
@@ -37,7 +37,7 @@ def test_published_yaml_matches_the_paper():
     assert PUBLISHED["tolerances"]["poraver"]["aor_shape"] == 0.01
     assert PUBLISHED["tolerances"]["paste"]["diameter_only"] == 0.05
     assert PUBLISHED["tolerances"]["mortar"]["full_sequence"] == 0.02
-    paste = PUBLISHED["paste_diameter_only"]
+    paste = PUBLISHED["scenario_sets"]["paste"]["diameter_only"]
     assert paste["feasible_fraction_pct"] == 8.38 and paste["upper"] == {"gamma": 0.093}
     assert set(paste["unresolved"]) == {"mu_s", "mu_r"}
     pareto = {k: [float(v) for v in b] for k, b in PUBLISHED["pareto"]["paste"]["intervals"].items()}

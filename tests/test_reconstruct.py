@@ -8,7 +8,7 @@ import pandas as pd
 import pytest
 import yaml
 
-from demid import reconstruct as rec
+from demo import reconstruct as rec
 from demid.design import model_matrix, quadratic_terms
 from demid.surrogate import fit_response
 
@@ -64,7 +64,7 @@ def test_tables_follow_the_declared_design(tables):
 
 
 def test_config_matches_the_reconstruction():
-    schema = yaml.safe_load((ROOT / "workflow" / "schemas" / "config.schema.yaml").read_text(encoding="utf-8"))
+    schema = yaml.safe_load((ROOT / "demid" / "schemas" / "config.schema.yaml").read_text(encoding="utf-8"))
     jsonschema.Draft7Validator(schema).validate(CONFIG)
     for name, material in rec.MATERIALS.items():
         cfg = CONFIG["materials"][name]

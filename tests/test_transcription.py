@@ -13,14 +13,12 @@ from demid.surrogate import fit_response
 from demid.transcription import (
     KINDS,
     STATISTICS,
-    _DesignFit,
-    _evaluate_designs,
-    _lack_of_fit_p,
     check_table,
     check_transcription,
     parse_printed,
     single_cell_slips,
 )
+from demid.transcription.engine import _DesignFit, _evaluate_designs, _lack_of_fit_p
 
 CENTRES = (0.5, 6.4, -2.0)
 UNITS = (0.3, 2.0, 1.5)

@@ -33,7 +33,7 @@ def test_self_made_study_runs_and_is_byte_identical(study_dir, tmp_path):
     assert first.returncode == 0, first.stderr[-3000:]
     results = study_dir / "results"
     for name in ["tables/surrogate_fit.csv", "tables/identifiability.csv", "report/report.html",
-                 "validated/m.parquet", "fits/m.parquet", "grid/m.parquet", "scenarios/n.parquet",
+                 "validated/m.parquet", "fits/m.parquet", "scenarios/n.parquet",
                  "figures/sets_m.png", "figures/surface_n.png"]:
         assert (results / name).is_file(), name
     fit = pd.read_csv(results / "tables" / "surrogate_fit.csv")
@@ -46,8 +46,12 @@ def test_self_made_study_runs_and_is_byte_identical(study_dir, tmp_path):
     both = ident[(ident["material"] == "m") & (ident["scenario"] == "both")]
     one = ident[(ident["material"] == "m") & (ident["scenario"] == "y1_only")]
     assert both["feasible_fraction_pct"].iloc[0] <= one["feasible_fraction_pct"].iloc[0]
-    grid = read_parquet(results / "grid" / "m.parquet")
-    assert len(grid) == 101**2 and list(grid.columns) == ["a", "b", "y1", "y2"]
+    # Evaluated on the configured 101 x 101 grid (admissible nodes / node fraction = all nodes);
+    # the dense predictions are not stored.
+    sets = read_parquet(results / "scenarios" / "m.parquet").drop_duplicates("scenario")
+    sets = sets[sets["n_admissible_nodes"] > 0]
+    nodes = sets["n_admissible_nodes"] / (sets["node_fraction_pct"] / 100)
+    assert len(sets) and nodes.to_numpy() == pytest.approx(101**2) and not (results / "grid").exists()
 
     # A second clean run elsewhere gives byte-identical tables, parquet, JSON and PNG.
     second = run_snakemake(twin, twin / "study.yaml")
@@ -128,4 +132,5 @@ def test_four_factor_study_uses_sobol_points(tmp_path):
     ident = pd.read_csv(tmp_path / "results" / "tables" / "identifiability.csv")
     fractions = ident.drop_duplicates("scenario").set_index("scenario")["feasible_fraction_pct"]
     assert 0 < fractions["both"] <= fractions["y_only"] < 100
-    assert len(read_parquet(tmp_path / "results" / "grid" / "four.parquet")) == 4096
+    sets = read_parquet(tmp_path / "results" / "scenarios" / "four.parquet").drop_duplicates("scenario")
+    assert len(sets) == 2 and (sets["n_admissible_nodes"] / (sets["node_fraction_pct"] / 100)).to_numpy() == pytest.approx(4096)

@@ -1,17 +1,25 @@
+# The set evaluation and the response-surface figure share one job: both start from the
+# fits, and the surface panels cost less than a Python start-up with the scientific stack.
 rule admissibility:
     input:
         fits=f"{RESULTS}/fits/{{material}}.parquet",
+        table=f"{RESULTS}/validated/{{material}}.parquet",
     output:
-        grid=f"{RESULTS}/grid/{{material}}.parquet",
         scenarios=f"{RESULTS}/scenarios/{{material}}.parquet",
         figure=report(
             f"{RESULTS}/figures/sets_{{material}}.png",
             category="Admissible sets",
             caption="../report/sets.rst",
         ),
+        surface=report(
+            f"{RESULTS}/figures/surface_{{material}}.png",
+            category="Response surfaces",
+            caption="../report/surface.rst",
+        ),
     params:
-        material_cfg=material_cfg,
-        grid_points=material_grid_points,
+        spec=material_spec,
+    resources:
+        mem_mb=evaluation_mem_mb,
     conda:
         "../envs/demid.yaml"
     log:
@@ -20,26 +28,3 @@ rule admissibility:
         "benchmarks/admissibility/{material}.tsv"
     script:
         "../../scripts/admissibility.py"
-
-
-rule extract_pareto:
-    input:
-        grid=f"{RESULTS}/grid/{{material}}.parquet",
-    output:
-        table=f"{RESULTS}/tables/pareto_{{material}}.csv",
-        front=f"{RESULTS}/pareto/{{material}}.parquet",
-        figure=report(
-            f"{RESULTS}/figures/pareto_{{material}}.png",
-            category="Pareto trade-off",
-            caption="../report/pareto.rst",
-        ),
-    params:
-        material_cfg=material_cfg,
-    conda:
-        "../envs/demid.yaml"
-    log:
-        "logs/pareto/{material}.log",
-    benchmark:
-        "benchmarks/pareto/{material}.tsv"
-    script:
-        "../../scripts/extract_pareto.py"

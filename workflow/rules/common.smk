@@ -1,9 +1,11 @@
 import sys
 from pathlib import Path
 
-from demid.config import check_semantics, grid_size, validate_schema
+from demid.config import check_semantics, validate_schema
 from demid.data import validate_material
 from demid.errors import InputError
+from demid.sampling import uses_grid
+from demid.spec import MaterialSpec
 
 
 # Validate the config (schema with defaults, then cross-references) and every table before
@@ -43,16 +45,24 @@ wildcard_constraints:
     material="|".join(MATERIALS),
 
 
-def material_cfg(wildcards):
-    return config["materials"][wildcards.material]
+# One MaterialSpec per material, built once from the validated config; rules pass it as their
+# only per-material parameter.
+SPECS = {name: MaterialSpec.from_config(name, config) for name in MATERIALS}
+
+
+def material_spec(wildcards):
+    return SPECS[wildcards.material]
 
 
 def material_data(wildcards):
     return config["materials"][wildcards.material]["data"]
 
 
-def material_grid_points(wildcards):
-    return grid_size(config, wildcards.material)
+def evaluation_mem_mb(wildcards):
+    """Memory of a job that holds every evaluation point's predictions (about 3 copies of 8-byte values)."""
+    spec = SPECS[wildcards.material]
+    points = spec.grid_points ** spec.dim if uses_grid(spec.dim) else spec.grid_points
+    return 1000 + int(24 * points * (spec.dim + len(spec.responses)) / 1e6)
 
 
 def pareto_materials():
@@ -82,7 +92,6 @@ def per_material_outputs(material):
     out = [
         f"{RESULTS}/validated/{material}.parquet",
         f"{RESULTS}/fits/{material}.parquet",
-        f"{RESULTS}/grid/{material}.parquet",
         f"{RESULTS}/scenarios/{material}.parquet",
         f"{RESULTS}/figures/sets_{material}.png",
         f"{RESULTS}/figures/surface_{material}.png",

@@ -13,8 +13,9 @@ rule criticize_material:
             caption="../report/residuals.rst",
         ),
     params:
-        material_cfg=material_cfg,
-        grid_points=material_grid_points,
+        spec=material_spec,
+    resources:
+        mem_mb=2000,
     conda:
         "../envs/demid.yaml"
     log:

@@ -1,25 +1,3 @@
-rule plot_surface:
-    input:
-        fits=f"{RESULTS}/fits/{{material}}.parquet",
-        table=f"{RESULTS}/validated/{{material}}.parquet",
-    output:
-        figure=report(
-            f"{RESULTS}/figures/surface_{{material}}.png",
-            category="Response surfaces",
-            caption="../report/surface.rst",
-        ),
-    params:
-        material_cfg=material_cfg,
-    conda:
-        "../envs/demid.yaml"
-    log:
-        "logs/figures/surface_{material}.log",
-    benchmark:
-        "benchmarks/figures/surface_{material}.tsv"
-    script:
-        "../../scripts/plot_surface.py"
-
-
 rule paper_figure:
     input:
         figure=paper_figure_source,
@@ -31,6 +9,8 @@ rule paper_figure:
         ),
     wildcard_constraints:
         paper_figure=paper_figure_pattern(),
+    resources:
+        mem_mb=100,
     conda:
         "../envs/demid.yaml"
     log:

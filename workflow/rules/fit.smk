@@ -5,10 +5,11 @@ rule fit_surrogates:
         fits=f"{RESULTS}/fits/{{material}}.parquet",
         statistics=f"{RESULTS}/fits/{{material}}_statistics.parquet",
         anova=f"{RESULTS}/fits/{{material}}_anova.parquet",
-        influence=f"{RESULTS}/fits/{{material}}_influence.parquet",
         diagnostics=f"{RESULTS}/fits/{{material}}_diagnostics.parquet",
     params:
-        material_cfg=material_cfg,
+        spec=material_spec,
+    resources:
+        mem_mb=1000,
     conda:
         "../envs/demid.yaml"
     log:

@@ -8,6 +8,8 @@ rule report:
         html=f"{RESULTS}/report/report.html",
     params:
         config_json=config_json(),
+    resources:
+        mem_mb=2000,
     conda:
         "../envs/demid.yaml"
     log:

@@ -28,6 +28,8 @@ rule summary_tables:
         calibration=f"{RESULTS}/tables/calibration_residuals.csv",
     params:
         materials=MATERIALS,
+    resources:
+        mem_mb=1000,
     conda:
         "../envs/demid.yaml"
     log:
@@ -48,6 +50,8 @@ rule paper_comparison_table:
         table=f"{RESULTS}/tables/paper_comparison.csv",
     params:
         pareto_materials=pareto_materials(),
+    resources:
+        mem_mb=1000,
     conda:
         "../envs/demid.yaml"
     log:

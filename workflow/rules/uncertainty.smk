@@ -18,9 +18,11 @@ rule analyse_uncertainty:
             caption="../report/posterior.rst",
         ),
     params:
-        material_cfg=material_cfg,
+        spec=material_spec,
         z=config["robust_z"],
         tolerances=config["sweep_tolerances"],
+    resources:
+        mem_mb=2000,
     conda:
         "../envs/demid.yaml"
     log:

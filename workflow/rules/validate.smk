@@ -6,7 +6,9 @@ rule validate_table:
         summary=f"{RESULTS}/validated/{{material}}.json",
         transcription=f"{RESULTS}/validated/{{material}}_transcription.parquet",
     params:
-        material_cfg=material_cfg,
+        spec=material_spec,
+    resources:
+        mem_mb=1000,
     conda:
         "../envs/demid.yaml"
     log:

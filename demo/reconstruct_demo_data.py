@@ -3,16 +3,17 @@
 The tables are reconstructed from the paper's published numbers (see data/README.md);
 this script is not part of the Snakemake pipeline, whose input they are.
 
-    python scripts/reconstruct_demo_data.py            # write the three CSVs (deterministic)
-    python scripts/reconstruct_demo_data.py --solve    # also re-solve the surrogate coefficients
-                                                       # (minutes) and print them for demid.reconstruct.RHO
+    python demo/reconstruct_demo_data.py            # write the three CSVs (deterministic)
+    python demo/reconstruct_demo_data.py --solve    # also re-solve the surrogate coefficients
+                                                    # (minutes) and print them for RHO in demo/reconstruct.py
 """
 
 import argparse
 import sys
 from pathlib import Path
 
-from demid import reconstruct
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))  # the repository root: demo/ is not installed
+from demo import reconstruct  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--out", default=str(Path(__file__).resolve().parent.parent / "data" / "ccd"),

@@ -43,7 +43,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .design import ccd_points, model_matrix, quadratic_terms
+from demid.design import ccd_points, model_matrix, quadratic_terms
 
 SQRT2 = math.sqrt(2.0)
 ALPHA_3 = 8.0 ** 0.25  # rotatable CCD with three factors
@@ -460,7 +460,7 @@ def _r2_residual(material: Material, response: Response, rho: np.ndarray, scale:
 
 def _surrogates(material: Material, rhos: dict[str, np.ndarray]):
     """Surrogate predictors (actual units) of the given coded relative-residual polynomials."""
-    from .surrogate import Surrogate
+    from demid.surrogate import Surrogate
 
     k = len(material.factors)
     p = len(quadratic_terms(k))
@@ -478,7 +478,7 @@ def _surrogates(material: Material, rhos: dict[str, np.ndarray]):
 def grid_sets(material: Material, rhos: dict[str, np.ndarray], scenarios: dict[str, tuple[list[str], float]],
               n: int):
     """admissible_set of every scenario on the pipeline's grid (n points per axis)."""
-    from .admissibility import Domain, admissible_set
+    from demid.admissibility import Domain, admissible_set
 
     domain = Domain(tuple(material.factor_names), tuple(f.lower for f in material.factors),
                     tuple(f.upper for f in material.factors))
@@ -759,9 +759,10 @@ def analyse(config: dict, base_dir: Path | str = ".", grid_points: dict[str, int
     pareto_analysis) without writing files.  ``grid_points`` overrides the grid per material.
     Returns ``(surrogate_fit, identifiability, pareto_intervals)`` with the pipeline's columns.
     """
-    from .admissibility import Domain, admissible_set, predict_grid
-    from .pareto import pareto_analysis
-    from .surrogate import fit_response
+    from demid.admissibility import admissible_set, predict_grid
+    from demid.spec import MaterialSpec
+    from demid.pareto import pareto_analysis
+    from demid.surrogate import fit_response
 
     base_dir = Path(base_dir)
     fit_rows, scen_rows, intervals = [], [], {}
@@ -779,9 +780,9 @@ def analyse(config: dict, base_dir: Path | str = ".", grid_points: dict[str, int
             surrogates[response] = fit.surrogate()
         default = config.get("grid_points", 1001) if len(factors) <= 2 else config.get("grid_points_3d", 201)
         n = (grid_points or {}).get(name, mat.get("grid_points", default))
-        domain = Domain.from_config(mat["factors"])
+        spec = MaterialSpec.from_material(name, mat)
+        domain, targets = spec.domain, spec.targets
         grid = predict_grid(surrogates, domain, n)
-        targets = {r: float(c["target"]) for r, c in mat["responses"].items() if "target" in c}
         for scenario, spec in (mat.get("scenarios") or {}).items():
             result = admissible_set(surrogates, domain, spec["observables"], targets, spec["tolerance"], n,
                                     grid_predictions=grid)

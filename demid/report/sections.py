@@ -1,4 +1,4 @@
-"""Cross-material tables and the text of the HTML report."""
+"""The text of the HTML report: one method per section, read from the results tree."""
 
 from __future__ import annotations
 
@@ -6,49 +6,8 @@ from pathlib import Path
 
 import pandas as pd
 
-from .io import read_parquet
-
-SURROGATE_FIT_COLUMNS = ["material", "response", "n_runs", "r2", "adj_r2", "rmse", "resid_std", "q2", "lof_f", "lof_p"]
-IDENTIFIABILITY_COLUMNS = ["material", "scenario", "observables", "tolerance", "feasible_fraction_pct", "factor",
-                           "lower", "upper", "width"]
-
-
-TRANSCRIPTION_COLUMNS = ["material", "response", "statistic", "published", "reproduced", "agrees", "printed"]
-
-
-def summary_tables(inputs: dict[str, dict[str, str | Path]]) -> dict[str, pd.DataFrame]:
-    """Every cross-material CSV from the per-material parquet files (keyed by the rule's input names)."""
-    out = {
-        "surrogate_fit": surrogate_fit_table(inputs["statistics"]),
-        "identifiability": identifiability_table(list(inputs["scenarios"].values())),
-        "transcription": stack_material_tables(inputs["transcription"]).reindex(columns=TRANSCRIPTION_COLUMNS),
-    }
-    for name in ("robust", "sweep", "information_gain", "ranking", "findings", "calibration"):
-        if name in inputs:
-            out[name] = stack_material_tables(inputs[name])
-    return out
-
-
-def surrogate_fit_table(statistics: dict[str, str | Path]) -> pd.DataFrame:
-    """Table 2: one row per material x response, from the per-material statistics parquet files."""
-    return stack_material_tables(statistics)[SURROGATE_FIT_COLUMNS]
-
-
-def identifiability_table(scenario_files) -> pd.DataFrame:
-    """Table 3 in long form: one row per material x scenario x factor (+ diagnostic columns)."""
-    frames = [read_parquet(p) for p in scenario_files]
-    frames = [f for f in frames if len(f)]
-    if not frames:
-        return pd.DataFrame(columns=IDENTIFIABILITY_COLUMNS)
-    # Exactly the Table 3 contract; diagnostics (node fraction, closest approach) stay in scenarios/*.parquet.
-    return pd.concat(frames, ignore_index=True)[IDENTIFIABILITY_COLUMNS]
-
-
-def pareto_intervals(path: str | Path) -> pd.DataFrame:
-    """The interval summary rows of a tables/pareto_{material}.csv file."""
-    frame = pd.read_csv(path)
-    rows = frame[frame["kind"] == "interval"]
-    return rows[["factor", "lower", "upper", "n_points"]].reset_index(drop=True)
+from ..io import read_parquet
+from .tables import IDENTIFIABILITY_COLUMNS
 
 
 # --------------------------------------------------------------------------- report text
@@ -69,30 +28,6 @@ def markdown_table(frame: pd.DataFrame, digits: int = 4) -> str:
     for _, row in frame.iterrows():
         lines.append("| " + " | ".join(_fmt(row[c], digits) for c in cols) + " |")
     return "\n".join(lines)
-
-
-def execute_report(notebook: str | Path, output: str | Path, *, results_dir: str, config_json: str) -> None:
-    """Run the report notebook with papermill (the kernel is this Python)."""
-    import papermill as pm
-
-    Path(output).parent.mkdir(parents=True, exist_ok=True)
-    pm.execute_notebook(str(notebook), str(output), parameters={"results_dir": results_dir,
-                                                                  "config_json": config_json},
-                        kernel_name="python3", progress_bar=False, log_output=False, cwd=str(Path.cwd()))
-
-
-def render_html(notebook: str | Path, output: str | Path) -> None:
-    """Self-contained HTML with code cells hidden: the reader sees text, tables and figures."""
-    import nbformat
-    from nbconvert import HTMLExporter
-
-    from .io import atomic_path
-
-    exporter = HTMLExporter(exclude_input=True, exclude_input_prompt=True, exclude_output_prompt=True)
-    nb = nbformat.read(str(notebook), as_version=4)
-    body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": "demid — identifiability report"}})
-    with atomic_path(output) as tmp:
-        Path(tmp).write_text(body, encoding="utf-8")
 
 
 class ReportSections:
@@ -119,7 +54,9 @@ class ReportSections:
         return pd.read_csv(path) if path.is_file() else None
 
     def _label(self, material: str) -> str:
-        return self.config["materials"][material].get("label") or material
+        from ..spec import MaterialSpec
+
+        return MaterialSpec.from_material(material, self.config["materials"][material]).label
 
     # sections
     def all(self) -> list:
@@ -343,17 +280,3 @@ class ReportSections:
                                   "largest VIF, Cook's distance, |studentised residual|)\n\n"
                                   + markdown_table(read_parquet(diag), 3)))
         return parts
-
-
-def stack_material_tables(files: dict[str, str | Path]) -> pd.DataFrame:
-    """Concatenate per-material parquet tables with a leading ``material`` column (columns kept when empty)."""
-    frames = []
-    for material, path in files.items():
-        frame = read_parquet(path)
-        frame.insert(0, "material", material)
-        frames.append(frame)
-    filled = [f for f in frames if len(f)]
-    if filled:
-        return pd.concat(filled, ignore_index=True)
-    widest = max(frames, key=lambda f: f.shape[1]) if frames else pd.DataFrame(columns=["material"])
-    return widest.iloc[0:0]

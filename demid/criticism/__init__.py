@@ -1,0 +1,73 @@
+"""Model criticism: show what a model gets wrong, name the cause, extend the model, measure the gain.
+
+Level 1 (:func:`criticize`) confronts the quadratic surrogate with the simulation
+runs of one response.  A fixed catalogue of causes is tested, each with a
+concrete one-parameter extension:
+
+``missing_term``        one extra third-order term (pure cubic ``a^3``, mixed ``a^2:b``,
+                        ``a:b:c``); added-variable F-test.  Terms that the design cannot
+                        tell apart (their columns coincide once the quadratic is fitted,
+                        e.g. ``b^3`` and ``a^2:b`` in a CCD) form one alias set, tested once;
+                        :func:`separating_runs` proposes the extra runs that would split it.
+``response_transform``  Box-Cox profile likelihood ratio of lambda against lambda = 1;
+                        extension: the quadratic on the transformed scale, back-transformed.
+``outlier``             largest externally studentised residual, Bonferroni over runs;
+                        extension: refit without that run (a mean shift for it).
+``drift``               a linear term in run order (``run`` column); added-variable F-test.
+``heteroscedasticity``  likelihood ratio of a log-linear variance, var = s^2 exp(g v), with
+                        v each factor and the fitted values; extension: maximum-likelihood WLS.
+
+Family-wise error.  The catalogue is one family.  Every statistic except
+Box-Cox's is a function of the error vector alone, whose distribution (normal
+errors, the current model true) is known exactly for the design, so the joint
+null is simulated and the Westfall-Young step-down min-P procedure gives
+family-adjusted p-values: exact, aware of the tests' correlation (a factor and
+the fitted values overlap as variance covariates), never less powerful than
+Holm.  Box-Cox's null depends on the unknown mean, so its p-value comes from a
+parametric bootstrap of the fitted model (conditional on positive responses) and
+it joins the family as an independent uniform, which is conservative when it
+correlates positively with the others.  A clean table yields a finding with
+probability at most ``family_alpha``.
+
+Naming.  The rejected cause with the smallest nominal p-value is named, except
+that one wild run may read as an outlier or as scatter growing towards its
+corner of the design: between those two (and between variance covariates) the
+better-fitting extension (higher likelihood) is named.  Its extension is added and
+the rest of the catalogue is tested again on the extended model, at most
+``max_findings`` rounds; a later finding must also lower the leave-one-out
+error, and nothing is tested after a weighted fit (its weights are estimates).
+
+Gain, on the original response scale: leave-one-out RMSE from the exact PRESS
+residuals (a transformed fit's leave-one-out prediction is back-transformed;
+Box-Cox lambda and variance weights are held at their full-data estimates), and
+AICc from the Gaussian likelihood of all n original observations (Jacobian for
+transforms, the variance parameter for weights, one mean-shift parameter per
+excluded run).  When a run is excluded, leave-one-out errors of the model before
+and after are compared on the remaining runs only.
+
+Level 2 (:func:`calibration_check`) confronts the calibrated simulation with the
+experiment: the best point in the domain, the errors there and at the reference
+point, the bottleneck observable, and bias (discrepancy) extensions with their
+cost in parameters and what the measurements can and cannot identify.
+
+Modules: ``models`` (data, models, extended surrogate), ``aliasing``, ``catalogue``
+(the causes and their family-wise test), ``level1``, ``level2``, ``messages`` (findings in
+words) and ``material`` (the per-material step); the figure is :mod:`demid.plots.criticism`.
+
+Verified against statsmodels (``compare_f_test``, ``outlier_test``, OLS/WLS
+log-likelihoods, influence PRESS residuals, ``eval_measures.aicc``) and scipy
+(``special.boxcox``, ``optimize``) in ``tests/test_criticism.py``; power and
+false-alarm rates against oracle tests in ``benchmarks/criticism_power.py``.
+"""
+
+from ..plots.criticism import residual_figure
+from .aliasing import AliasSet, separating_runs
+from .catalogue import CAUSES
+from .level1 import CriticismResult, Finding, criticize
+from .level2 import Level2Result, calibration_check
+from .material import MaterialCriticism, criticize_material, reference_point_position
+from .models import TRANSFORM_NAMES, ExtendedSurrogate, infer_axial_distance
+
+__all__ = ["CAUSES", "TRANSFORM_NAMES", "AliasSet", "CriticismResult", "ExtendedSurrogate", "Finding",
+           "Level2Result", "MaterialCriticism", "calibration_check", "criticize", "criticize_material",
+           "infer_axial_distance", "reference_point_position", "residual_figure", "separating_runs"]

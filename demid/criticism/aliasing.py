@@ -1,0 +1,131 @@
+"""Alias sets of third-order terms and the extra runs that would separate them.
+
+Terms whose columns coincide once the quadratic is fitted (e.g. ``b^3`` and ``a^2:b``
+in a CCD) form one alias set, tested once; :func:`separating_runs` proposes the
+candidate runs that best split such a set.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from itertools import product
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from ..design import model_matrix
+from .models import _orth, _residualize
+
+if TYPE_CHECKING:
+    from ..design import Term
+
+
+# =========================================================================== aliasing
+@dataclass(frozen=True)
+class AliasSet:
+    """Extra terms the design cannot tell apart once the quadratic (or current model) is fitted.
+
+    ``testable`` is False when the terms coincide with the model itself (e.g. ``a^3``
+    with ``a`` in a face-centred CCD).  ``extra_runs`` are candidate design points
+    (actual units) whose addition makes every member separately estimable.
+    """
+
+    representative: str
+    members: tuple[str, ...]
+    testable: bool
+    extra_runs: tuple[dict, ...] = ()
+
+    def to_json(self) -> dict:
+        return {"representative": self.representative, "aliases": list(self.members),
+                "testable": self.testable, "extra_runs": [dict(p) for p in self.extra_runs]}
+
+
+@dataclass
+class _TermClass:
+    terms: list[Term]
+    direction: np.ndarray | None  # unit residualised column (None: not estimable)
+
+
+def _term_classes(coded: np.ndarray, base_terms: list[Term], candidates: list[Term],
+                  extra_columns: np.ndarray | None = None, weights: np.ndarray | None = None
+                  ) -> list[_TermClass]:
+    """Group candidate terms whose columns, residualised on the model, are collinear."""
+    sw = np.ones(len(coded)) if weights is None else np.sqrt(weights)
+    base = model_matrix(coded, base_terms)
+    if extra_columns is not None and extra_columns.size:
+        base = np.column_stack([base, extra_columns])
+    q = _orth(base * sw[:, None])
+    hat = np.sum(q * q, axis=1)
+    cols = model_matrix(coded, candidates) * sw[:, None]
+    resid = _residualize(q, cols)
+    classes: list[_TermClass] = []
+    inestimable = []
+    for j, t in enumerate(candidates):
+        norm = float(np.linalg.norm(resid[:, j]))
+        if norm <= 1e-7 * max(float(np.linalg.norm(cols[:, j])), 1e-300):
+            inestimable.append(t)
+            continue
+        u = resid[:, j] / norm
+        if np.max(hat + u * u) > 1 - 1e-6:
+            # The term would only fit one run exactly (leverage 1): not a curvature the runs can show.
+            inestimable.append(t)
+            continue
+        for c in classes:
+            if abs(float(c.direction @ u)) >= 1 - 1e-7:
+                c.terms.append(t)
+                break
+        else:
+            classes.append(_TermClass([t], u))
+    return classes + [_TermClass([t], None) for t in inestimable]
+
+
+def _candidate_points(n_factors: int, alpha: float) -> np.ndarray:
+    levels = sorted({-alpha, -1.0, -0.5, 0.0, 0.5, 1.0, alpha})
+    return np.array(list(product(levels, repeat=n_factors)), dtype=float)
+
+
+def _separation_criterion(coded, base_terms, members):
+    base = model_matrix(coded, base_terms)
+    q = _orth(base)
+    cols = model_matrix(coded, members)
+    resid = _residualize(q, cols)
+    ev = np.linalg.eigvalsh(resid.T @ resid)
+    keep = ev > max(float(np.sum(cols * cols)), 1e-300) * 1e-12
+    return int(keep.sum()), float(np.sum(np.log(ev[keep]))) if keep.any() else -np.inf
+
+
+def separating_runs(coded: np.ndarray, base_terms: list[Term], members: list[Term],
+                    alpha: float) -> np.ndarray:
+    """Coded points to add so that every member term becomes separately estimable.
+
+    Greedy D-optimal choice among the candidate levels {-alpha, -1, -0.5, 0, 0.5,
+    1, alpha}^k: each step adds the point that raises the rank of the members'
+    residualised block, ties broken by its log pseudo-determinant.
+    """
+    coded = np.round(np.asarray(coded, dtype=float), 12)
+    return _separating_runs_cached(coded.tobytes(), coded.shape, tuple(map(tuple, base_terms)),
+                                   tuple(map(tuple, members)), float(alpha)).copy()
+
+
+@lru_cache(maxsize=256)
+def _separating_runs_cached(coded_bytes: bytes, shape: tuple, base_terms: tuple, members: tuple,
+                            alpha: float) -> np.ndarray:
+    coded = np.frombuffer(coded_bytes, dtype=float).reshape(shape)
+    base_terms, members = list(base_terms), list(members)
+    cands = _candidate_points(coded.shape[1], alpha)
+    current = np.asarray(coded, dtype=float)
+    chosen = []
+    rank, _ = _separation_criterion(current, base_terms, members)
+    while rank < len(members) and len(chosen) < len(members):
+        best, best_key = None, (rank, -np.inf)
+        for c in cands:
+            key = _separation_criterion(np.vstack([current, c]), base_terms, members)
+            if key > best_key:
+                best, best_key = c, key
+        if best is None or best_key[0] <= rank:
+            break
+        chosen.append(best)
+        current = np.vstack([current, best])
+        rank = best_key[0]
+    return np.array(chosen).reshape(-1, coded.shape[1])

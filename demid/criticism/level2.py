@@ -1,0 +1,251 @@
+"""Level 2: the calibrated simulation confronted with the experiment.
+
+:func:`calibration_check` finds the best point in the domain (minimax relative error),
+the errors there and at the reference point, the bottleneck observable, and bias
+(discrepancy) extensions with their cost in parameters.
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+from scipy import optimize
+
+from .messages import _level2_message
+from .models import _num
+
+
+# =========================================================================== level 2
+@dataclass
+class Level2Result:
+    """The calibrated simulation against the experiment for one material.
+
+    Relative errors are (y_hat - y*) / |y*| as in :mod:`demid.admissibility`;
+    ``best_*`` refers to the point of the domain minimising the largest |relative
+    error| over all observables with targets.  ``without[k]`` is that smallest
+    largest error when observable k is left out (equivalently: given a free bias).
+    """
+
+    factors: list[str]
+    observables: list[str]
+    targets: dict[str, float]
+    tolerance: float
+    best_point: dict[str, float]
+    best_values: dict[str, float]
+    best_errors: dict[str, float]
+    best_max_error: float
+    feasible: bool
+    reference_point: dict[str, float] | None
+    reference_values: dict[str, float] | None
+    reference_errors: dict[str, float] | None
+    bottleneck: str | None
+    without: dict[str, float]
+    implied_bias: dict[str, float]
+    bias_candidates: list[str]
+    biased_observable: str | None
+    shared_bias: dict
+    extensions: list[dict]
+    message: str
+
+    @property
+    def reference_max_error(self) -> float | None:
+        if self.reference_errors is None:
+            return None
+        return float(max(abs(v) for v in self.reference_errors.values()))
+
+    def to_frame(self) -> pd.DataFrame:
+        rows = []
+        for o in self.observables:
+            ref = self.reference_errors[o] if self.reference_errors else np.nan
+            rows.append({
+                "observable": o, "target": self.targets[o],
+                "at_best": self.best_values[o], "rel_error_best": self.best_errors[o],
+                "at_reference": self.reference_values[o] if self.reference_values else np.nan,
+                "rel_error_reference": ref, "tolerance": self.tolerance,
+                "within_tolerance": bool(abs(self.best_errors[o]) <= self.tolerance + 1e-12),
+                "within_tolerance_reference": (bool(abs(ref) <= self.tolerance + 1e-12)
+                                               if self.reference_errors else None),
+                "bottleneck": o == self.bottleneck,
+                "max_error_without": self.without.get(o, np.nan),
+                "implied_bias": self.implied_bias.get(o, np.nan),
+                "bias_candidate": o in self.bias_candidates,
+            })
+        return pd.DataFrame(rows)
+
+    def to_json(self) -> dict:
+        def clean(d):
+            return None if d is None else {k: _num(v) for k, v in d.items()}
+        return {
+            "observables": list(self.observables), "targets": clean(self.targets), "tolerance": self.tolerance,
+            "best_point": clean(self.best_point), "best_values": clean(self.best_values),
+            "best_errors": clean(self.best_errors), "best_max_error": _num(self.best_max_error),
+            "feasible": bool(self.feasible),
+            "reference_point": clean(self.reference_point), "reference_values": clean(self.reference_values),
+            "reference_errors": clean(self.reference_errors), "reference_max_error": self.reference_max_error,
+            "bottleneck": self.bottleneck, "max_error_without": clean(self.without),
+            "implied_bias": clean(self.implied_bias), "bias_candidates": list(self.bias_candidates),
+            "biased_observable": self.biased_observable, "shared_bias": self.shared_bias,
+            "extensions": self.extensions, "message": self.message,
+        }
+
+
+class _Level2Problem:
+    """Relative errors of all observables as a function of a point in unit-scaled search space."""
+
+    def __init__(self, surrogates, domain, targets, observables):
+        self.surrogates, self.domain = surrogates, domain
+        self.observables = list(observables)
+        self.targets = np.array([targets[o] for o in self.observables], dtype=float)
+        self.lo, self.hi = domain.search_bounds()
+
+    def actual(self, s: np.ndarray) -> np.ndarray:
+        return self.domain.to_actual(self.lo + np.atleast_2d(s) * (self.hi - self.lo))
+
+    def values(self, s: np.ndarray) -> np.ndarray:
+        x = self.actual(s)
+        return np.stack([np.asarray(self.surrogates[o].predict(x), dtype=float) for o in self.observables])
+
+    def errors(self, s: np.ndarray) -> np.ndarray:
+        return (self.values(s) - self.targets[:, None]) / np.abs(self.targets)[:, None]
+
+
+def _worst(err: np.ndarray, shared: bool) -> np.ndarray:
+    """Largest |error| per column; with a shared bias, the best bias leaves half the spread."""
+    if shared:
+        return (err.max(axis=0) - err.min(axis=0)) / 2
+    return np.abs(err).max(axis=0)
+
+
+def _minimax(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, rows: list[int],
+             shared: bool = False, starts: int = 4) -> tuple[float, np.ndarray, float]:
+    """min over the domain of the largest |relative error| of ``rows`` (+ optional shared bias).
+
+    Grid search, then SLSQP on the epigraph form (min t s.t. |e_k(x) - delta| <= t)
+    from the best few grid nodes.  Returns (value, unit point, delta).
+    """
+    worst = _worst(grid_err[rows], shared)
+    order = np.argsort(worst, kind="stable")
+    picks = [order[0]]
+    for i in order[1:]:
+        if len(picks) >= starts:
+            break
+        if np.min(np.max(np.abs(grid_s[picks] - grid_s[i]), axis=1)) > 0.1:
+            picks.append(i)
+    d = grid_s.shape[1]
+
+    def evaluate(s):
+        e = problem.errors(s)[rows, 0]
+        delta = (e.max() + e.min()) / 2 if shared else 0.0
+        return float(np.max(np.abs(e - delta))), delta
+
+    best_val, best_s = float(worst[order[0]]), grid_s[order[0]].copy()
+    best_delta = evaluate(best_s)[1]
+    for i in picks:
+        v0, delta0 = evaluate(grid_s[i])
+        x0 = np.concatenate([grid_s[i], [v0], [delta0] if shared else []])
+
+        def cons(v):
+            e = problem.errors(v[:d])[rows, 0] - (v[d + 1] if shared else 0.0)
+            return np.concatenate([v[d] - e, v[d] + e])
+
+        bounds = [(0.0, 1.0)] * d + [(0.0, None)] + ([(None, None)] if shared else [])
+        with warnings.catch_warnings(), np.errstate(all="ignore"):
+            warnings.simplefilter("ignore")
+            res = optimize.minimize(lambda v: v[d], x0, method="SLSQP", bounds=bounds,
+                                    constraints=[{"type": "ineq", "fun": cons}],
+                                    options={"maxiter": 200, "ftol": 1e-12})
+        s = np.clip(res.x[:d], 0.0, 1.0)
+        val, delta = evaluate(s)
+        if val < best_val:
+            best_val, best_s, best_delta = val, s, delta
+    return best_val, best_s, best_delta
+
+
+def calibration_check(surrogates: dict, domain, targets: dict[str, float], tolerance: float, n: int,
+                      reference_point: dict | None = None) -> Level2Result:
+    """Level-2 criticism: can any point of the domain meet every target, and if not, why not?
+
+    ``surrogates`` maps observable -> object with ``predict(points_actual)``;
+    observables are those with both a surrogate and a target.  The best point
+    minimises the largest |relative error| (grid of ``n`` points per axis, then
+    SLSQP polish).  Discrepancy extensions: a free bias on one observable (the
+    bottleneck), a shared relative bias on all, a bias on each (saturated).
+    """
+    observables = [o for o in targets if o in surrogates]
+    if not observables:
+        raise ValueError("no observable has both a surrogate and a target")
+    factors = list(domain.factors)
+    d, k = len(factors), len(observables)
+    problem = _Level2Problem(surrogates, domain, targets, observables)
+    axes = [np.linspace(0.0, 1.0, n)] * d
+    grid_s = np.column_stack([m.ravel() for m in np.meshgrid(*axes, indexing="ij")])
+    grid_err = problem.errors(grid_s)
+    every = list(range(k))
+
+    best_val, best_s, _ = _minimax(problem, grid_s, grid_err, every)
+    best_x = problem.actual(best_s)[0]
+    best_values = dict(zip(observables, problem.values(best_s)[:, 0].tolist()))
+    best_errors = dict(zip(observables, problem.errors(best_s)[:, 0].tolist()))
+    feasible = best_val <= tolerance + 1e-12
+
+    ref_values = ref_errors = None
+    if reference_point is not None:
+        x_ref = np.array([[float(reference_point[f]) for f in factors]])
+        vals = np.stack([np.asarray(surrogates[o].predict(x_ref), dtype=float) for o in observables])[:, 0]
+        ref_values = dict(zip(observables, vals.tolist()))
+        ref_errors = {o: (v - targets[o]) / abs(targets[o]) for o, v in ref_values.items()}
+
+    without, implied = {}, {}
+    if k > 1:
+        for i, o in enumerate(observables):
+            val, s, _ = _minimax(problem, grid_s, grid_err, [j for j in every if j != i])
+            without[o] = val
+            implied[o] = float(problem.errors(s)[i, 0])
+    bottleneck = None
+    candidates: list[str] = []
+    biased = None
+    if not feasible:
+        # Smallest error left when the observable is dropped; near-ties (common when the rest is
+        # exactly solvable) go to the observable needing the smallest bias.
+        bottleneck = (min(without, key=lambda o: (round(without[o] / (1e-3 * tolerance)), abs(implied[o])))
+                      if without else observables[0])
+        candidates = [o for o in observables if without.get(o, np.inf) <= tolerance + 1e-12]
+        biased = candidates[0] if len(candidates) == 1 else None
+
+    shared_val, shared_s, shared_delta = _minimax(problem, grid_s, grid_err, every, shared=True)
+    shared = {"delta": _num(shared_delta), "max_error": _num(shared_val),
+              "point": {f: _num(v) for f, v in zip(factors, problem.actual(shared_s)[0])},
+              "n_params": d + 1}
+    extensions = _level2_extensions(d, k, best_val, shared_val, without, bottleneck)
+    result = Level2Result(
+        factors=factors, observables=observables, targets={o: float(targets[o]) for o in observables},
+        tolerance=float(tolerance), best_point=dict(zip(factors, best_x.tolist())), best_values=best_values,
+        best_errors=best_errors, best_max_error=float(best_val), feasible=bool(feasible),
+        reference_point=None if reference_point is None else {f: float(reference_point[f]) for f in factors},
+        reference_values=ref_values, reference_errors=ref_errors, bottleneck=bottleneck, without=without,
+        implied_bias=implied, bias_candidates=candidates, biased_observable=biased, shared_bias=shared,
+        extensions=extensions, message="")
+    result.message = _level2_message(result)
+    return result
+
+
+def _level2_extensions(d: int, k: int, best: float, shared: float, without: dict, bottleneck) -> list[dict]:
+    def row(model, n_params, max_error):
+        spare = k - n_params
+        note = ("testable: {} spare measurement(s)".format(spare) if spare > 0 else
+                "saturated: as many unknowns as measurements, it fits whenever a solution lies in the domain, "
+                "so the fit itself is no evidence" if spare == 0 else
+                "not identifiable: more unknowns than measurements; any point fits and the biases are just "
+                "the residuals there")
+        return {"model": model, "n_params": n_params, "n_measurements": k, "spare_measurements": spare,
+                "max_error": _num(max_error), "note": note}
+
+    rows = [row("simulation as calibrated (no discrepancy)", d, best)]
+    if bottleneck is not None and without:
+        rows.append(row(f"bias on {bottleneck}", d + 1, without[bottleneck]))
+    rows.append(row("shared relative bias on all observables", d + 1, shared))
+    rows.append(row("bias on every observable", d + k, 0.0))
+    return rows

@@ -1,0 +1,153 @@
+"""Level-1 and level-2 findings in words: what is wrong, why, and the gain of the fix."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from .models import _g, _run_value, _transform_name
+
+if TYPE_CHECKING:
+    from ..design import Term
+    from .catalogue import _Hypothesis
+    from .level2 import Level2Result
+    from .models import _Data, _Model
+
+
+_CAUSE_WORDS = {"missing_term": "missing term", "response_transform": "transform", "outlier": "outlier run",
+                "drift": "drift with", "heteroscedasticity": "unequal scatter with"}
+
+
+def _gain_phrase(before: float, after: float) -> str:
+    if not (np.isfinite(before) and np.isfinite(after)) or before <= 0:
+        return "its effect on the leave-one-out error could not be computed"
+    ratio = after / before
+    if ratio < 0.995:
+        return f"cuts the leave-one-out error by {100 * (1 - ratio):.0f} %"
+    if ratio <= 1.005:
+        return "leaves the leave-one-out error unchanged"
+    return f"does not reduce the leave-one-out error (+{100 * (ratio - 1):.0f} %)"
+
+
+def _and(names: list[str]) -> str:
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
+def _describe_term(term: Term, factors: list[str]) -> str:
+    powers = {f: p for f, p in zip(factors, term) if p}
+    if len(powers) == 1:
+        return f"curvature along {next(iter(powers))}"
+    if len(powers) == 3:
+        return f"a three-factor interaction of {_and(list(powers))}"
+    sq = next(f for f, p in powers.items() if p == 2)
+    lin = next(f for f, p in powers.items() if p == 1)
+    return f"a change of the {sq} curvature with {lin}"
+
+
+def _points_text(points: list[dict]) -> str:
+    return " and ".join("(" + ", ".join(f"{k}={v:g}" for k, v in p.items()) + ")" for p in points)
+
+
+def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: float,
+             n_compared: int, extra_runs: list[dict], model: _Model) -> str:
+    r = data.response
+    gain = _gain_phrase(before, after)
+    if h.cause == "missing_term":
+        rep = h.aliases[0]
+        others = h.aliases[1:]
+        alias = f", aliased with {_and(others)} in this design" if others else ""
+        text = (f"{r}: the quadratic misses {_describe_term(h.detail.terms[0], data.factors)} "
+                f"(term {rep}{alias}); adding it {gain}.")
+        if others and extra_runs:
+            what = "the two" if len(h.aliases) == 2 else f"the {len(h.aliases)}"
+            text += f" Extra runs at {_points_text(extra_runs)} would tell {what} apart."
+        return text
+    if h.cause == "response_transform":
+        lam = info["lam"]
+        scale = {"log": "log", "sqrt": "square-root", "inverse": "reciprocal"}.get(_transform_name(lam))
+        on = f"on a {scale} scale" if scale else f"after a Box-Cox transform with lambda = {lam:g}"
+        lo, hi = info["lambda_ci"]
+        kind = "multiplicatively" if lam <= 0.5 else "non-additively"
+        return (f"{r}: the response behaves {kind}: the quadratic fits better {on} "
+                f"(Box-Cox lambda = {info['lambda_hat']:.2f}, 95 % interval {lo:.2f} to {hi:.2f}); "
+                f"fitting there and transforming back {gain}.")
+    if h.cause == "outlier":
+        run = _run_value(data.runs[int(h.detail)])
+        return (f"{r}: run {run} does not fit the other runs (observed {_g(info['observed'])}, "
+                f"the other runs predict {_g(info['predicted_without'])}, externally studentised "
+                f"residual {h.statistic:.1f}); a transcription or export error is the usual cause, "
+                f"check that run. Refitting without it {gain} on the other {n_compared} runs.")
+    if h.cause == "drift":
+        slope = info.get("drift_per_run", float("nan"))
+        span = slope * float(np.ptp(data.runs.astype(float)))
+        return (f"{r}: the residuals trend with run order ({slope:+.3g} per run, {span:+.3g} from first to "
+                f"last run): something changed while the runs were made (software version, settings, "
+                f"seeds, hardware). Adding a run-order term {gain}; predictions refer to the mean run order.")
+    if h.cause == "heteroscedasticity":
+        ratio = info["sd_ratio"]
+        grows = ratio >= 1
+        what = "the predicted value" if h.detail == "fitted" else str(h.detail)
+        factor = ratio if grows else 1 / ratio
+        return (f"{r}: the scatter of the runs {'grows' if grows else 'shrinks'} with {what} (residual "
+                f"spread about {factor:.1f} times larger at the {'high' if grows else 'low'} end than at the "
+                f"other); weighting the fit by the estimated variance {gain}. Uncertainty from the "
+                f"unweighted fit is too wide where the runs agree and too narrow where they scatter.")
+    raise ValueError(h.cause)
+
+
+def _pct(x: float) -> str:
+    return f"{100 * x:.2f} %" if abs(x) < 0.1 else f"{100 * x:.1f} %"
+
+
+def _level2_message(r: Level2Result) -> str:
+    pt = ", ".join(f"{f}={_g(v)}" for f, v in r.best_point.items())
+    k, d = len(r.observables), len(r.factors)
+    obs = _and(r.observables)
+    parts = []
+    if r.feasible:
+        parts.append(f"Every target ({obs}) can be met within {_pct(r.tolerance)}: the best point ({pt}) "
+                     f"misses by at most {_pct(r.best_max_error)}.")
+    else:
+        worst = max(r.best_errors, key=lambda o: abs(r.best_errors[o]))
+        parts.append(f"No point of the domain meets every target ({obs}) within {_pct(r.tolerance)}; the "
+                     f"closest point ({pt}) still misses by {_pct(r.best_max_error)} ({worst} "
+                     f"{'over' if r.best_errors[worst] > 0 else 'under'}-predicted).")
+        if r.bottleneck is not None and r.without:
+            b = r.bottleneck
+            parts.append(f"{b} is the bottleneck: without it the others can be met within "
+                         f"{_pct(r.without[b])}, and the simulation would then read {b} "
+                         f"{_pct(abs(r.implied_bias[b]))} {'high' if r.implied_bias[b] > 0 else 'low'}.")
+            if r.biased_observable is not None:
+                parts.append(f"{b} is the only observable whose removal makes the rest consistent, so a "
+                             f"discrepancy (bias) in {b} explains the mismatch.")
+            elif len(r.bias_candidates) > 1:
+                parts.append(f"But removing any of {_and(r.bias_candidates)} makes the rest consistent: with "
+                             f"{k} measurements and {d} parameters the data cannot say which one is off "
+                             f"({b} is named because it needs the smallest bias); a further independent "
+                             f"measurement would.")
+            else:
+                parts.append("No single observable explains the mismatch on its own.")
+    if r.reference_errors is not None:
+        ref = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in r.reference_errors.items())
+        ok = r.reference_max_error <= r.tolerance + 1e-12
+        parts.append(f"At the reference point the errors are {ref}: it {'meets' if ok else 'misses'} the "
+                     f"{_pct(r.tolerance)} tolerance.")
+    sb = r.shared_bias
+    spare = k - d - 1
+    meas = f"{k} measurement{'s' if k != 1 else ''} and {d} parameter{'s' if d != 1 else ''}"
+    if r.feasible:
+        return " ".join(parts)
+    if spare < 0:
+        parts.append(f"With {meas}, a shared relative bias on the targets is not identifiable (any point "
+                     f"fits once it is free).")
+    else:
+        parts.append(f"A shared relative bias of {100 * sb['delta']:+.2f} % on all targets would leave "
+                     f"{_pct(sb['max_error'])} at one extra parameter; "
+                     + (f"{spare} spare measurement{'s' if spare != 1 else ''} remain{'' if spare != 1 else 's'} "
+                        f"to test it." if spare > 0 else
+                        f"with {meas} it uses the last spare measurement, so its fit cannot be taken as "
+                        f"evidence of a bias."))
+    parts.append(f"A bias on every observable ({d + k} unknowns for {k} measurement{'s' if k != 1 else ''}) "
+                 f"fits trivially and is not identifiable.")
+    return " ".join(parts)

@@ -1,0 +1,297 @@
+"""The data and models level 1 works with: a response's runs in coded units, the
+quadratic and its one-parameter extensions (terms, transform, excluded runs, weights,
+drift), their likelihoods and leave-one-out errors, and the extended surrogate.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+import statsmodels.api as sm
+from scipy import special
+from statsmodels.tools.eval_measures import aicc as _sm_aicc
+
+from ..design import model_matrix, model_units, term_name
+
+if TYPE_CHECKING:
+    from ..design import Coding, Term
+
+
+TRANSFORM_NAMES = {0.0: "log", 0.5: "sqrt", -1.0: "inverse"}
+
+
+# =========================================================================== helpers
+def infer_axial_distance(actual: np.ndarray) -> float:
+    """Axial distance alpha of a CCD from its factor levels (1.0 when not a 5-level CCD).
+
+    A CCD factor takes the levels -alpha, -1, 0, 1, alpha (coded): alpha is the
+    half-range divided by the half-distance of the two inner (factorial) levels.
+    """
+    actual = np.asarray(actual, dtype=float)
+    found = []
+    for col in actual.T:
+        lo, hi = float(np.min(col)), float(np.max(col))
+        if hi <= lo:
+            continue
+        u = np.unique(np.round((col - (lo + hi) / 2) / ((hi - lo) / 2), 6))
+        inner = u[(np.abs(u) > 1e-6) & (np.abs(u) < 1 - 1e-6)]
+        if len(u) == 5 and len(inner) == 2 and abs(inner[0] + inner[1]) < 1e-4:
+            found.append(1.0 / abs(inner[1]))
+    return float(np.median(found)) if found else 1.0
+
+
+def _orth(x: np.ndarray) -> np.ndarray:
+    """Orthonormal basis of the column space of x (rank-revealing SVD)."""
+    if x.shape[1] == 0:
+        return np.zeros((x.shape[0], 0))
+    u, s, _ = np.linalg.svd(x, full_matrices=False)
+    return u[:, s > s[0] * 1e-10] if s[0] > 0 else u[:, :0]
+
+
+def _residualize(q: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """x minus its projection on the orthonormal columns q.
+
+    einsum rather than BLAS: for these small, wide matrices it is as fast and it
+    does not start BLAS threads, which thrash on a loaded machine.
+    """
+    return x - np.einsum("ij,jb->ib", q, np.einsum("ij,ib->jb", q, x))
+
+
+def _hat(x: np.ndarray) -> np.ndarray:
+    q = _orth(x)
+    return np.sum(q * q, axis=1)
+
+
+def _boxcox(y: np.ndarray, lam: float | None) -> np.ndarray:
+    return y if lam is None else special.boxcox(y, lam)
+
+
+def _inv_boxcox(z: np.ndarray, lam: float | None) -> np.ndarray:
+    """Back-transform; clipped so that extrapolated grid points stay finite."""
+    z = np.asarray(z, dtype=float)
+    if lam is None:
+        return z
+    if lam == 0:
+        return np.exp(np.clip(z, -700, 700))
+    base = np.maximum(1.0 + lam * z, 1e-12)
+    return np.exp(np.clip(np.log(base) / lam, -700, 700))
+
+
+def _aicc(llf: float, nobs: int, k: int) -> float:
+    """AICc = -2 llf + 2k n/(n-k-1) (statsmodels); NaN when n - k - 1 <= 0."""
+    return float(_sm_aicc(llf, nobs, k)) if nobs - k - 1 > 0 else float("nan")
+
+
+def _num(x) -> float | None:
+    x = float(x)
+    return x if math.isfinite(x) else None
+
+
+def _run_value(v):
+    v = v.item() if hasattr(v, "item") else v
+    return int(v) if isinstance(v, (int, float)) and float(v).is_integer() else v
+
+
+def _g(x: float, digits: int = 4) -> str:
+    return f"{x:.{digits}g}"
+
+
+# =========================================================================== data and models
+@dataclass
+class _Data:
+    response: str
+    factors: list[str]
+    coded: np.ndarray
+    y: np.ndarray
+    runs: np.ndarray
+    coding: Coding
+    alpha: float
+    log_factors: tuple[str, ...]
+    base_terms: list[Term]
+
+    @property
+    def n(self) -> int:
+        return len(self.y)
+
+    def to_actual(self, coded: np.ndarray) -> np.ndarray:
+        x = self.coding.to_actual(np.atleast_2d(coded))
+        for i, f in enumerate(self.factors):
+            if f in self.log_factors:
+                x[:, i] = 10.0 ** x[:, i]
+        return x
+
+    def point_dict(self, coded_point) -> dict:
+        x = self.to_actual(coded_point)[0]
+        return {f: float(f"{v:.4g}") for f, v in zip(self.factors, x)}
+
+
+@dataclass(frozen=True)
+class _Spec:
+    """A model: quadratic + extra terms [+ run order] on kept runs, optional transform and weights."""
+
+    extra_terms: tuple[Term, ...] = ()
+    drift: bool = False
+    dropped: tuple[int, ...] = ()
+    lam: float | None = None
+    weight_on: str | None = None
+    weight_gamma: float = 0.0
+    weight_values: tuple[float, ...] = ()
+
+    @property
+    def n_extra_params(self) -> int:
+        return (len(self.extra_terms) + int(self.drift) + len(self.dropped)
+                + int(self.lam is not None) + int(self.weight_on is not None))
+
+
+class _Model:
+    """Fit of a :class:`_Spec` with statsmodels; whitened quantities for the tests."""
+
+    def __init__(self, data: _Data, spec: _Spec):
+        self.data, self.spec = data, spec
+        keep = np.ones(data.n, dtype=bool)
+        keep[list(spec.dropped)] = False
+        self.keep = keep
+        self.y = data.y[keep]
+        self.z = _boxcox(self.y, spec.lam)
+        coded = data.coded[keep]
+        self.mean_terms = list(data.base_terms) + list(spec.extra_terms)
+        x = model_matrix(coded, self.mean_terms)
+        names = [term_name(t, data.factors) for t in self.mean_terms]
+        self.run_center = float(np.mean(data.runs[keep].astype(float)))
+        self.run_scale = float(max(np.ptp(data.runs.astype(float)), 1.0))
+        if spec.drift:
+            x = np.column_stack([x, self.run_column(keep)])
+            names.append("run")
+        self.x = x
+        self.names = names
+        if spec.weight_on is not None:
+            v = np.asarray(spec.weight_values, dtype=float)[keep]
+            self.w = np.exp(-spec.weight_gamma * v)
+            self.results = sm.WLS(self.z, x, weights=self.w).fit()
+        else:
+            self.w = np.ones(len(self.y))
+            self.results = sm.OLS(self.z, x).fit()
+        self.sw = np.sqrt(self.w)
+        self.xw = x * self.sw[:, None]
+        self.beta = np.asarray(self.results.params, dtype=float)
+        self.fitted_z = x @ self.beta
+        self.resid_w = (self.z - self.fitted_z) * self.sw
+        self.hat = _hat(self.xw)
+        self.rank = int(_orth(self.xw).shape[1])
+        self.df_resid = len(self.y) - self.rank
+        self.ssr = float(self.resid_w @ self.resid_w)
+
+    def run_column(self, rows) -> np.ndarray:
+        return (self.data.runs[rows].astype(float) - self.run_center) / self.run_scale
+
+    @property
+    def n_params(self) -> int:
+        """Mean parameters + sigma + transform/variance parameters + one per excluded run."""
+        return self.rank + 1 + self.spec.n_extra_params - len(self.spec.extra_terms) - int(self.spec.drift)
+
+    @property
+    def loglik(self) -> float:
+        """Gaussian log-likelihood of all n original observations (mean-shift for excluded runs)."""
+        n = self.data.n
+        sigma2 = self.ssr / n
+        ll = -0.5 * n * (np.log(2 * np.pi * sigma2) + 1.0) + 0.5 * float(np.sum(np.log(self.w)))
+        if self.spec.weight_on is not None and self.spec.dropped:
+            v = np.asarray(self.spec.weight_values, dtype=float)[~self.keep]
+            ll += 0.5 * float(np.sum(-self.spec.weight_gamma * v))
+        if self.spec.lam is not None:
+            ll += (self.spec.lam - 1.0) * float(np.sum(np.log(self.data.y)))
+        return float(ll)
+
+    @property
+    def aicc(self) -> float:
+        return _aicc(self.loglik, self.data.n, self.n_params)
+
+    @property
+    def fitted(self) -> np.ndarray:
+        return _inv_boxcox(self.fitted_z, self.spec.lam)
+
+    @property
+    def loo_errors(self) -> np.ndarray:
+        """Exact leave-one-out prediction errors on the original scale, at the kept runs."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            press_z = self.resid_w / (1.0 - self.hat) / self.sw
+        return self.y - _inv_boxcox(self.z - press_z, self.spec.lam)
+
+    def loo_rmse_on(self, keep_mask: np.ndarray) -> float:
+        """Leave-one-out RMSE over the runs in keep_mask (a subset of this model's runs)."""
+        err = np.full(self.data.n, np.nan)
+        err[self.keep] = self.loo_errors
+        return float(np.sqrt(np.mean(err[keep_mask] ** 2)))
+
+    def summary(self) -> dict:
+        y, f = self.y, self.fitted
+        sst = float(np.sum((y - y.mean()) ** 2))
+        sse = float(np.sum((y - f) ** 2))
+        s = self.spec
+        return {
+            "terms": list(self.names),
+            "r2": _num(1 - sse / sst) if sst > 0 else None,
+            "rmse": _num(np.sqrt(sse / len(y))),
+            "loo_rmse": _num(self.loo_rmse_on(self.keep)),
+            "aicc": _num(self.aicc),
+            "n_runs": int(len(y)),
+            "n_params": int(self.n_params),
+            "transform": None if s.lam is None else _transform_name(s.lam),
+            "weighting": s.weight_on,
+            "excluded_runs": [_run_value(self.data.runs[i]) for i in s.dropped],
+        }
+
+    def surrogate(self) -> "ExtendedSurrogate":
+        k = len(self.mean_terms)
+        drift = float(self.beta[k]) if self.spec.drift else 0.0
+        return ExtendedSurrogate(
+            response=self.data.response, factors=list(self.data.factors), coding=self.data.coding,
+            terms=list(self.mean_terms), coefficients=self.beta[:k].copy(), lam=self.spec.lam,
+            log_factors=self.data.log_factors, drift_per_run=drift / self.run_scale,
+            reference_run=self.run_center, weighting=self.spec.weight_on,
+            excluded_runs=tuple(_run_value(self.data.runs[i]) for i in self.spec.dropped))
+
+
+def _transform_name(lam: float) -> str:
+    for value, name in TRANSFORM_NAMES.items():
+        if abs(lam - value) < 1e-9:
+            return name
+    return f"boxcox:{lam:g}"
+
+
+@dataclass
+class ExtendedSurrogate:
+    """Predictor of an extended model on the original response scale.
+
+    Duck-types :meth:`demid.surrogate.Surrogate.predict`.  Polynomial in coded
+    units; a run-order term is evaluated at the mean run order of the fitted runs
+    (its contribution is zero there); a transformed fit is back-transformed
+    (median of the response for a log fit).
+    """
+
+    response: str
+    factors: list[str]
+    coding: Coding
+    terms: list[Term]
+    coefficients: np.ndarray
+    lam: float | None = None
+    log_factors: tuple[str, ...] = ()
+    drift_per_run: float = 0.0
+    reference_run: float = 0.0
+    weighting: str | None = None
+    excluded_runs: tuple = ()
+
+    @property
+    def term_names(self) -> list[str]:
+        return [term_name(t, self.factors) for t in self.terms]
+
+    def predict(self, points, chunk: int = 1_000_000) -> np.ndarray:
+        coded = self.coding.to_coded(model_units(points, self.factors, self.log_factors))
+        out = np.empty(len(coded))
+        for start in range(0, len(coded), chunk):
+            eta = model_matrix(coded[start:start + chunk], self.terms) @ self.coefficients
+            out[start:start + chunk] = _inv_boxcox(eta, self.lam)
+        return out

@@ -1,0 +1,23 @@
+"""Every figure of the pipeline, one module per kind.
+
+``sets`` (admissible sets), ``surface`` (response surfaces), ``pareto`` (trade-off),
+``uncertainty`` (sweep and posteriors), ``criticism`` (residuals); ``style`` holds the
+backend, rcParams and colours of the first three.  Submodules are imported on first use
+(PEP 562), so importing one kind of figure does not apply another kind's style.
+"""
+
+from importlib import import_module
+
+_WHERE = {
+    "sets_figure": "sets", "surface_figure": "surface", "surface_figure_from_surrogates": "surface",
+    "pareto_figure": "pareto", "tolerance_sweep_figure": "uncertainty", "posterior_figure": "uncertainty",
+    "residual_figure": "criticism",
+}
+
+__all__ = sorted(_WHERE)
+
+
+def __getattr__(name: str):
+    if name in _WHERE:
+        return getattr(import_module(f".{_WHERE[name]}", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,0 +1,49 @@
+"""Pareto trade-off figure: objective cloud and front (paper Fig. 4)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from .style import plt
+
+if TYPE_CHECKING:
+    from ..spec import MaterialSpec
+    import pandas as pd
+
+
+def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, spec: MaterialSpec, cloud_points: int = 60_000) -> plt.Figure:
+    """Objective cloud (a seeded random subsample of the grid) and the Pareto front, with a zoom on
+    the low-error end where the front's intervals are read."""
+    error_of, minimise, max_error = spec.pareto.error_of, spec.pareto.minimise, spec.pareto.max_error
+    target, title = spec.targets[error_of], spec.label
+    error = 100 * np.abs(grid[error_of].to_numpy() - target) / abs(target)
+    objective = grid[minimise].to_numpy()
+    rng = np.random.default_rng(0)  # a random subsample avoids the moire of a strided one
+    pick = np.sort(rng.choice(len(error), size=min(cloud_points, len(error)), replace=False))
+    fig, axes = plt.subplots(1, 2, figsize=(9.6, 4.0))
+    front_err = 100 * front["error"].to_numpy()
+    front_obj = front["objective"].to_numpy()
+    for ax, zoom in zip(axes, (False, True)):
+        ax.plot(error[pick], objective[pick], ".", ms=1.2, color="#bdbdbd", alpha=0.6, rasterized=True,
+                label="grid points (random subsample)")
+        ax.plot(front_err, front_obj, "-", color="#08519c", lw=1.8, label="Pareto front")
+        ax.axvline(100 * max_error, color="#a63603", ls="--", lw=1, label=f"error = {100 * max_error:g} %")
+        ax.set_xlabel(f"relative error of {spec.response(error_of).label} [%]")
+        ax.set_ylabel(spec.response(minimise).axis_label)
+        if zoom:
+            xmax = 3 * 100 * max_error
+            near = front_obj[front_err <= xmax]
+            lo, hi = (near.min(), near.max()) if len(near) else (front_obj.min(), front_obj.max())
+            pad = 0.5 * (hi - lo) + 1e-9 * max(abs(hi), 1.0)
+            ax.set_xlim(0, xmax)
+            ax.set_ylim(lo - pad, hi + 4 * pad)
+            ax.set_title(f"zoom: error ≤ {xmax:g} %")
+        else:
+            ax.legend(frameon=False, loc="upper right")
+            ax.set_title("objective cloud")
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout()
+    return fig

@@ -1,0 +1,100 @@
+"""Admissible-set figures (paper Figs. 3 and 5).
+
+Sets are drawn cell by cell from the evaluation grid.  When the grid is finer
+than the figure, cells are max-pooled into pixels so a narrow band or ridge
+stays visible instead of being averaged away.
+"""
+
+from __future__ import annotations
+
+from itertools import combinations
+from typing import TYPE_CHECKING
+
+import numpy as np
+from matplotlib.colors import ListedColormap
+from matplotlib.patches import Patch
+
+from .style import MAX_PIXELS, plt, SCENARIO_COLORS, _axis_scale, _extent
+
+if TYPE_CHECKING:
+    from ..sampling import AdmissibleSet
+    from ..spec import MaterialSpec
+
+
+def _pool(mask: np.ndarray, max_pixels: int = MAX_PIXELS) -> np.ndarray:
+    """Max-pool a boolean 2-D mask so that no side exceeds ``max_pixels``."""
+    out = mask
+    for axis in (0, 1):
+        n = out.shape[axis]
+        if n > max_pixels:
+            block = int(np.ceil(n / max_pixels))
+            pad = (-n) % block
+            widths = [(0, 0), (0, 0)]
+            widths[axis] = (0, pad)
+            padded = np.pad(out, widths, constant_values=False)
+            shape = list(padded.shape)
+            shape[axis] = shape[axis] // block
+            shape.insert(axis + 1, block)
+            out = padded.reshape(shape).any(axis=axis + 1)
+    return out
+
+
+def _cell_mask(result: AdmissibleSet, n: int, d: int) -> np.ndarray:
+    if result.cell_fraction is not None:
+        return np.asarray(result.cell_fraction) > 0
+    return result.mask.reshape((n,) * d)
+
+
+def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> plt.Figure:
+    """Overlay of every scenario's admissible set (pairwise projections for d > 2)."""
+    domain, reference_point, title = spec.domain, spec.reference_point, spec.label
+    scenario_labels = {sc.name: sc.label for sc in spec.scenarios}
+    d = domain.dim
+    pairs = list(combinations(range(d), 2)) if d > 1 else [(0, 0)]
+    ncol = min(3, len(pairs))
+    nrow = int(np.ceil(len(pairs) / ncol))
+    fig, grid_axes = plt.subplots(nrow, ncol, figsize=(4.4 * ncol + 0.6, 4.0 * nrow), squeeze=False)
+    axes = grid_axes.reshape(1, -1)
+    for ax in axes[0][len(pairs):]:
+        ax.set_visible(False)
+    handles = []
+    for s_idx, (name, result) in enumerate(sets.items()):
+        color = SCENARIO_COLORS[s_idx % len(SCENARIO_COLORS)]
+        label = scenario_labels.get(name) or name
+        obs = "+".join(result.observables)
+        frac = 100 * result.fraction
+        handles.append(Patch(color=color, label=f"{label} ({obs}, ε={result.tolerance:g}): {frac:.3g} %"))
+        if result.points is not None:  # Sobol evaluation (more than 3 factors): admissible points
+            pts = domain.to_search(result.points[result.mask])
+            for ax, (i, j) in zip(axes[0], pairs):
+                ax.plot(pts[:, i], pts[:, j], ".", ms=1.5, color=color, rasterized=True)
+            continue
+        cells = _cell_mask(result, n, d)
+        for ax, (i, j) in zip(axes[0], pairs):
+            other = tuple(k for k in range(d) if k not in (i, j))
+            proj = cells.any(axis=other) if other else cells
+            img = _pool(proj.T)  # rows = y (factor j)
+            if not img.any():
+                continue
+            cmap = ListedColormap([(0, 0, 0, 0), color])
+            ax.imshow(img.astype(float), origin="lower", extent=_extent(domain, i, j), aspect="auto",
+                      cmap=cmap, vmin=0, vmax=1, interpolation="nearest")
+    names = list(domain.factors)
+    for ax, (i, j) in zip(axes[0], pairs):
+        ax.set_xlabel(spec.factor(names[i]).axis_label)
+        ax.set_ylabel(spec.factor(names[j]).axis_label)
+        lo, hi = domain.search_bounds()
+        ax.set_xlim(lo[i], hi[i])
+        ax.set_ylim(lo[j], hi[j])
+        _axis_scale(ax, domain, i, j)
+        if reference_point:
+            ref = domain.to_search(np.array([[reference_point[f] for f in names]]))[0]
+            ax.plot(ref[i], ref[j], marker="*", ms=11, color="#d62728", mec="k", mew=0.6, ls="none")
+    if reference_point:
+        handles.append(plt.Line2D([], [], marker="*", ms=10, color="#d62728", mec="k", ls="none",
+                                  label="reference point"))
+    fig.legend(handles=handles, loc="lower center", ncol=1, frameon=False, bbox_to_anchor=(0.5, 0.0))
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout(rect=(0, (0.035 + 0.045 * len(handles)) / nrow, 1, 1))
+    return fig

@@ -1,0 +1,86 @@
+"""Response-surface contour panels with design runs and target levels."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+import pandas as pd
+
+from ..sampling import Domain
+from .style import plt, _axis_scale
+
+if TYPE_CHECKING:
+    from ..spec import MaterialSpec
+
+
+def surface_figure(domain: Domain, spec: MaterialSpec, grid: pd.DataFrame, n: int,
+                   table: pd.DataFrame | None = None, title: str = "") -> plt.Figure:
+    """Contour panel per response over the first two factors (others at their mid-range)."""
+    names = list(domain.factors)
+    d = domain.dim
+    responses = [r for r in spec.response_names if r in grid.columns]
+    ncol = min(3, len(responses))
+    nrow = int(np.ceil(len(responses) / ncol))
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.6 * nrow), squeeze=False)
+    lo, hi = domain.search_bounds()
+    step = max(1, (n - 1) // 200)
+    for ax, r in zip(axes.ravel(), responses):
+        values = grid[r].to_numpy().reshape((n,) * d)
+        if d > 2:
+            values = values[(slice(None), slice(None)) + (n // 2,) * (d - 2)]
+        if d == 1:
+            ax.plot(np.linspace(lo[0], hi[0], n), values, color="k")
+            continue
+        z = values[::step, ::step].T
+        xs = np.linspace(lo[0], hi[0], n)[::step]
+        ys = np.linspace(lo[1], hi[1], n)[::step]
+        cs = ax.contourf(xs, ys, z, levels=14, cmap="viridis")
+        fig.colorbar(cs, ax=ax, label=spec.response(r).axis_label)
+        target = spec.response(r).target
+        if target is not None and z.min() < target < z.max():
+            ax.contour(xs, ys, z, levels=[target], colors="w", linewidths=1.4, linestyles="--")
+        if table is not None:
+            pts = domain.to_search(table[names].to_numpy())
+            ax.plot(pts[:, 0], pts[:, 1], "o", ms=3.5, mfc="w", mec="k", mew=0.6, ls="none")
+        ax.set_xlabel(spec.factor(names[0]).axis_label)
+        ax.set_ylabel(spec.factor(names[1]).axis_label)
+        ax.set_title(spec.response(r).label)
+        _axis_scale(ax, domain, 0, 1)
+    for ax in axes.ravel()[len(responses):]:
+        ax.set_visible(False)
+    sub = "" if d <= 2 else f" (other factors at mid-range: {', '.join(names[2:])})"
+    if title or sub:
+        fig.suptitle(f"{title}{sub}")
+    fig.tight_layout()
+    return fig
+
+
+def surface_figure_from_surrogates(surrogates: dict, spec: MaterialSpec, table: pd.DataFrame | None,
+                                   n: int = 201) -> plt.Figure:
+    """Surface panels on an n x n slice through the first two factors (others at mid-range)."""
+    from ..sampling import predict_grid
+
+    domain, title = spec.domain, spec.label
+    d = domain.dim
+    if d > 2:
+        # A 2-D slice: the remaining factors at the centre of their (search-unit) range.
+        lo, hi = domain.search_bounds()
+        mid = domain.to_actual(((lo + hi) / 2)[None, :])[0]
+        names = list(domain.factors)
+        slice_domain = Domain(tuple(names[:2]), tuple(domain.lower[:2]), tuple(domain.upper[:2]), domain.log[:2])
+        pts = slice_domain.grid(n)
+        full = np.column_stack([pts] + [np.full(len(pts), mid[k]) for k in range(2, d)])
+        grid = pd.DataFrame(full, columns=names)
+        for name, sur in surrogates.items():
+            grid[name] = sur.predict(full)
+        values = {r: grid[r].to_numpy() for r in surrogates}
+        grid2 = pd.DataFrame(pts, columns=names[:2]).assign(**values)
+        held = ", ".join(
+            f"{spec.factor(f).label} = {mid[k + 2]:.3g}"
+            + (f" {spec.factor(f).unit}" if spec.factor(f).unit != "-" else "")
+            for k, f in enumerate(names[2:]))
+        return surface_figure(slice_domain, spec, grid2, n, table,
+                              f"{title} — slice at {held}")
+    grid = predict_grid(surrogates, domain, n)
+    return surface_figure(domain, spec, grid, n, table, title)

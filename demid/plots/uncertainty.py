@@ -1,0 +1,73 @@
+"""Uncertainty figures: the tolerance sweep and the posterior marginals."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ..spec import join_observables
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+
+# =========================================================================== figures
+def tolerance_sweep_figure(frame: pd.DataFrame, title: str, *, factor_labels: dict[str, str] | None = None):
+    """Phi(eps) on a log scale (one curve per observable set) and one span panel per factor."""
+    from matplotlib.figure import Figure
+
+    factor_labels = factor_labels or {}
+    factors = list(dict.fromkeys(frame["factor"]))
+    fig = Figure(figsize=(4.2 * (1 + len(factors)), 3.6), layout="constrained")
+    axes = fig.subplots(1, 1 + len(factors), squeeze=False)[0]
+    for k, (scenario, rows) in enumerate(frame.groupby("scenario", sort=False)):
+        color = f"C{k}"
+        label = f"{scenario}: {rows['observables'].iloc[0]}"
+        first = rows.drop_duplicates("tolerance").sort_values("tolerance")
+        tol_pct = 100 * first["tolerance"].to_numpy()
+        frac = first["feasible_fraction_pct"].to_numpy()
+        positive = frac > 0
+        axes[0].plot(tol_pct[positive], frac[positive], "o-", color=color, label=label)
+        if "fraction_error_pct" in first:
+            err = first["fraction_error_pct"].to_numpy()
+            axes[0].errorbar(tol_pct[positive], frac[positive], yerr=err[positive], fmt="none", color=color)
+        for ax, factor in zip(axes[1:], factors):
+            sub = rows[rows["factor"] == factor].sort_values("tolerance")
+            ax.plot(100 * sub["tolerance"], sub["width"], "o-", color=color, label=label)
+    axes[0].set_yscale("log")
+    axes[0].set_xlabel("tolerance ε [%]")
+    axes[0].set_ylabel("feasible fraction Φ(ε) [% of Ω]")
+    axes[0].legend(fontsize="small")
+    for ax, factor in zip(axes[1:], factors):
+        ax.set_xlabel("tolerance ε [%]")
+        ax.set_ylabel(f"admissible width of {factor_labels.get(factor, factor)}")
+    for ax in axes:
+        ax.set_xscale("log")
+        ax.grid(True, which="both", alpha=0.3)
+    fig.suptitle(title)
+    return fig
+
+
+def posterior_figure(posteriors: dict, title: str, *, factor_labels: dict[str, str] | None = None):
+    """Marginal posterior densities per factor, one curve per observable set, 95 % intervals shaded."""
+    from matplotlib.figure import Figure
+
+    factor_labels = factor_labels or {}
+    posts = list(posteriors.values())
+    factors = posts[0].factors
+    fig = Figure(figsize=(4.2 * len(factors), 3.4), layout="constrained")
+    axes = fig.subplots(1, len(factors), squeeze=False)[0]
+    for k, post in enumerate(posts):
+        label = f"{join_observables(post.observables)} ({post.information_gain_bits:.2f} bits)"
+        for i, ax in enumerate(axes):
+            x = post.axes_actual[i]
+            ax.plot(x, post.marginals[i], color=f"C{k}", label=label)
+            inside = (x >= post.credible_lower[i]) & (x <= post.credible_upper[i])
+            ax.fill_between(x, 0, post.marginals[i], where=inside, color=f"C{k}", alpha=0.15)
+            if post.log[i]:
+                ax.set_xscale("log")
+    for i, ax in enumerate(axes):
+        ax.set_xlabel(factor_labels.get(factors[i], factors[i]))
+        ax.set_ylabel("posterior density" + (" per log10 unit" if posts[0].log[i] else ""))
+    axes[0].legend(fontsize="small")
+    fig.suptitle(title)
+    return fig

@@ -1,0 +1,30 @@
+"""Evaluating admissible sets over the search domain Omega.
+
+``domain`` (the box, its grids and Sobol points, and :func:`uses_grid`, the one grid-or-Sobol
+decision), ``residuals`` (the one relative-residual evaluator and plausibility fields), ``grid``
+and ``sobol`` (the two estimators), ``polish`` (span ends on the exact boundary) and ``evaluate``
+(:func:`evaluate_set`: one set, by whichever estimator :func:`uses_grid` picks).
+
+The estimators (scipy) load on first use (PEP 562), so the workflow's parse step and the
+spec import only the domain.
+"""
+
+from importlib import import_module
+
+from .domain import MAX_GRID_DIM, Domain, uses_grid
+
+_WHERE = {
+    "AdmissibleSet": "grid", "CellCount": "grid", "FractionEstimate": "grid", "admissible_set": "grid",
+    "cell_count": "grid", "fraction_with_error": "grid", "plane_band_fraction": "grid", "predict_grid": "grid",
+    "PlausibilityField": "residuals", "plausibility_fields": "residuals", "relative_residuals": "residuals",
+    "SobolFraction": "sobol", "sobol_admissible_set": "sobol", "sobol_fraction": "sobol",
+    "polish_spans": "polish", "evaluate_set": "evaluate",
+}
+
+__all__ = ["MAX_GRID_DIM", "Domain", "uses_grid", *sorted(_WHERE)]
+
+
+def __getattr__(name: str):
+    if name in _WHERE:
+        return getattr(import_module(f".{_WHERE[name]}", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,0 +1,84 @@
+"""The search domain Omega: a box in search units (actual, or log10 for log-scale factors),
+and the one decision between a full grid and scrambled Sobol points (:func:`uses_grid`)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..design import model_units
+
+
+#: Up to this many factors Omega is evaluated on a full grid; beyond it on scrambled Sobol points.
+MAX_GRID_DIM = 3
+
+
+def uses_grid(dim: int) -> bool:
+    """True when a ``dim``-factor domain is evaluated on a full grid, False for Sobol points.
+
+    The only test of :data:`MAX_GRID_DIM`: every grid-or-Sobol branch asks this function.
+    """
+    return dim <= MAX_GRID_DIM
+
+
+@dataclass(frozen=True)
+class Domain:
+    """The search domain Omega: a box in search units (actual, or log10 for log factors)."""
+
+    factors: tuple[str, ...]
+    lower: tuple[float, ...]
+    upper: tuple[float, ...]
+    log: tuple[bool, ...] = ()
+
+    def __post_init__(self):
+        if not self.log:
+            object.__setattr__(self, "log", tuple(False for _ in self.factors))
+
+    @property
+    def dim(self) -> int:
+        return len(self.factors)
+
+    def search_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        lo, hi = self.to_search(np.array([self.lower, self.upper]))
+        return lo, hi
+
+    def to_actual(self, u: np.ndarray) -> np.ndarray:
+        u = np.array(u, dtype=float, copy=True, ndmin=2)
+        for i, lg in enumerate(self.log):
+            if lg:
+                u[:, i] = 10.0 ** u[:, i]
+        return u
+
+    def to_search(self, x: np.ndarray) -> np.ndarray:
+        return model_units(x, self.factors, [f for f, lg in zip(self.factors, self.log) if lg])
+
+    def search_axes(self, n: int) -> list[np.ndarray]:
+        lo, hi = self.search_bounds()
+        return [np.linspace(a, b, n) for a, b in zip(lo, hi)]
+
+    def axes(self, n: int) -> list[np.ndarray]:
+        """Grid axes in actual units (log-spaced for log factors)."""
+        return [10.0 ** ax if lg else ax for ax, lg in zip(self.search_axes(n), self.log)]
+
+    def sobol(self, n: int, seed: int = 0) -> np.ndarray:
+        """2**ceil(log2 n) scrambled Sobol points, uniform in search units, returned in actual units."""
+        from scipy.stats import qmc
+
+        lo, hi = self.search_bounds()
+        m = max(1, int(np.ceil(np.log2(max(n, 2)))))
+        return self.to_actual(lo + qmc.Sobol(self.dim, scramble=True, rng=np.random.default_rng(seed))
+                              .random_base2(m) * (hi - lo))
+
+    def sample(self, n: int) -> np.ndarray:
+        """The evaluation points: the n-per-axis grid up to 3 factors, n Sobol points beyond."""
+        return self.grid(n) if uses_grid(self.dim) else self.sobol(n)
+
+    def grid(self, n: int) -> np.ndarray:
+        """All grid nodes in actual units, shape (n**d, d), 'ij' (C) order."""
+        axes = self.axes(n)
+        out = np.empty((n ** self.dim, self.dim))
+        for i, ax in enumerate(axes):
+            inner = n ** (self.dim - i - 1)
+            out[:, i] = np.tile(np.repeat(ax, inner), n ** i)
+        return out

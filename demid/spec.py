@@ -1,0 +1,223 @@
+"""MaterialSpec: one material of a validated config, read once.
+
+Like SALib's ``ProblemSpec``, the spec is built once from the validated configuration and
+every per-material step receives it; nothing else reads a material's raw config entry.
+Every value that used to be derived in several places (log-scale factors, targets, the
+CCD's axial distance, the reference tolerance, label fallbacks, the evaluation size) is
+derived here, once.
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass
+from functools import cached_property
+
+#: Tolerance used for default sigmas, the ranking and level 2 when a material has no scenario.
+FALLBACK_TOLERANCE = 0.02
+
+
+def join_observables(observables) -> str:
+    """An observable set's name in tables and legends: ``d5+d10+d15``."""
+    return "+".join(observables)
+
+
+def _axis_label(label: str, unit: str) -> str:
+    return f"{label} [{unit}]" if unit and unit != "-" else label
+
+
+@dataclass(frozen=True)
+class Factor:
+    name: str
+    lower: float
+    upper: float
+    log: bool
+    label: str
+    unit: str
+
+    @property
+    def axis_label(self) -> str:
+        """``label [unit]`` (the label alone for dimensionless factors)."""
+        return _axis_label(self.label, self.unit)
+
+
+@dataclass(frozen=True)
+class Response:
+    name: str
+    target: float | None
+    label: str
+    unit: str
+    sigma: float | None
+    sigma_rel: float | None
+
+    @property
+    def axis_label(self) -> str:
+        return _axis_label(self.label, self.unit)
+
+    @property
+    def sigma_config(self) -> dict:
+        """The measurement-noise keys as configured (``sigma`` / ``sigma_rel``, absent when unset)."""
+        return {k: v for k, v in (("sigma", self.sigma), ("sigma_rel", self.sigma_rel)) if v is not None}
+
+
+@dataclass(frozen=True)
+class Scenario:
+    name: str
+    observables: tuple[str, ...]
+    tolerance: float
+    label: str
+
+
+@dataclass(frozen=True)
+class Pareto:
+    error_of: str
+    minimise: str
+    max_error: float
+
+
+@dataclass(frozen=True, eq=False)
+class MaterialSpec:
+    """A material as every step sees it: factors, responses, design, scenarios and derived values."""
+
+    name: str
+    label: str
+    data: str
+    design_type: str
+    alpha: float
+    center_runs: int
+    factors: tuple[Factor, ...]
+    responses: tuple[Response, ...]
+    scenarios: tuple[Scenario, ...]
+    reference_point: dict | None
+    pareto: Pareto | None
+    grid_points: int | None
+    paper_figure: str | None
+    _published: dict
+    _material: dict
+
+    # ------------------------------------------------------------------ construction
+    @classmethod
+    def from_material(cls, name: str, material: dict, grid_points: int | None = None) -> "MaterialSpec":
+        """The spec of one (schema-validated) ``materials`` entry; keys the schema defaults may be absent."""
+        design = material.get("design") or {}
+        factors = tuple(
+            Factor(f, float(c["lower"]), float(c["upper"]), c.get("scale", "linear") == "log",
+                   c.get("label") or f, c.get("unit", "-"))
+            for f, c in material["factors"].items())
+        responses = tuple(
+            Response(r, float(c["target"]) if c.get("target") is not None else None, c.get("label") or r,
+                     c.get("unit", "-"), c.get("sigma"), c.get("sigma_rel"))
+            for r, c in (material.get("responses") or {}).items())
+        scenarios = tuple(
+            Scenario(s, tuple(c["observables"]), float(c["tolerance"]), c.get("label") or s)
+            for s, c in (material.get("scenarios") or {}).items())
+        par = material.get("pareto")
+        pareto = Pareto(par["error_of"], par["minimise"], float(par["max_error"])) if par else None
+        published = {r: c["published"] for r, c in (material.get("responses") or {}).items() if c.get("published")}
+        return cls(
+            name=name, label=material.get("label") or name, data=material.get("data", ""),
+            design_type=design.get("type", "ccd"), alpha=float(design.get("alpha", 1.0)),
+            center_runs=int(design.get("center_runs", 0)), factors=factors, responses=responses,
+            scenarios=scenarios, reference_point=material.get("reference_point") or None, pareto=pareto,
+            grid_points=grid_points, paper_figure=material.get("paper_figure"),
+            _published=copy.deepcopy(published), _material=copy.deepcopy(material))
+
+    @classmethod
+    def from_config(cls, name: str, config: dict) -> "MaterialSpec":
+        """The spec of material ``name`` of a validated config (with the config's evaluation size)."""
+        material = config["materials"][name]
+        return cls.from_material(name, material, grid_points=evaluation_size(config, material))
+
+    # ------------------------------------------------------------------ derived values
+    @cached_property
+    def factor_names(self) -> list[str]:
+        return [f.name for f in self.factors]
+
+    @cached_property
+    def log_factors(self) -> tuple[str, ...]:
+        return tuple(f.name for f in self.factors if f.log)
+
+    @property
+    def dim(self) -> int:
+        return len(self.factors)
+
+    @cached_property
+    def domain(self):
+        from .sampling.domain import Domain
+
+        return Domain(tuple(self.factor_names), tuple(f.lower for f in self.factors),
+                      tuple(f.upper for f in self.factors), tuple(f.log for f in self.factors))
+
+    @property
+    def axial_alpha(self) -> float:
+        """The axial distance of a CCD; 1 for every other design type."""
+        return self.alpha if self.design_type == "ccd" else 1.0
+
+    @cached_property
+    def design(self) -> dict:
+        """The design block as the table validator reads it (type, alpha, center_runs)."""
+        return copy.deepcopy(self._material.get("design") or {})
+
+    @cached_property
+    def response_names(self) -> list[str]:
+        return [r.name for r in self.responses]
+
+    def response(self, name: str) -> Response:
+        return next(r for r in self.responses if r.name == name)
+
+    def factor(self, name: str) -> Factor:
+        return next(f for f in self.factors if f.name == name)
+
+    @cached_property
+    def targets(self) -> dict[str, float]:
+        """Measured targets of the responses that have one, in config order."""
+        return {r.name: r.target for r in self.responses if r.target is not None}
+
+    @cached_property
+    def factor_labels(self) -> dict[str, str]:
+        return {f.name: f.label for f in self.factors}
+
+    @cached_property
+    def response_labels(self) -> dict[str, str]:
+        return {r.name: r.label for r in self.responses}
+
+    @cached_property
+    def sigma_config(self) -> dict[str, dict]:
+        """Per response, its configured ``sigma`` / ``sigma_rel`` (what measurement_sigma reads)."""
+        return {r.name: r.sigma_config for r in self.responses}
+
+    @cached_property
+    def published(self) -> dict[str, dict]:
+        """Per response with a ``published`` block, that block (the transcription check's input)."""
+        return copy.deepcopy(self._published)
+
+    @property
+    def reference_tolerance(self) -> float:
+        """Tolerance of the scenario with the most observables (ties: the smallest); the fallback without."""
+        if not self.scenarios:
+            return FALLBACK_TOLERANCE
+        return min(self.scenarios, key=lambda sc: (-len(sc.observables), sc.tolerance)).tolerance
+
+    def material_config(self) -> dict:
+        """A copy of the validated ``materials`` entry, for the table validator (demid.data)."""
+        return copy.deepcopy(self._material)
+
+    def __repr__(self) -> str:  # stable and short: Snakemake hashes params by their repr
+        return f"MaterialSpec({self.name!r}, {self._material!r}, grid_points={self.grid_points!r})"
+
+
+def evaluation_size(config: dict, material: dict) -> int:
+    """Grid points per axis (Sobol points above 3 factors) of a material's set evaluation."""
+    from .sampling import uses_grid
+
+    if material.get("grid_points"):
+        return int(material["grid_points"])
+    d = len(material["factors"])
+    if d <= 2:
+        return int(config["grid_points"])
+    return int(config["grid_points_3d"] if uses_grid(d) else config["sobol_points"])
+
+
+def as_spec(material, name: str = "material") -> MaterialSpec:
+    """A MaterialSpec as is, or the spec of a bare ``materials`` entry (library and test callers)."""
+    return material if isinstance(material, MaterialSpec) else MaterialSpec.from_material(name, material)

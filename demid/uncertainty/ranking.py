@@ -1,0 +1,131 @@
+"""Which experiment next: every non-empty subset of the observables ranked by
+information gain and feasible-fraction contraction, with advice in words.
+"""
+
+from __future__ import annotations
+
+from itertools import combinations
+from typing import TYPE_CHECKING
+
+import numpy as np
+import pandas as pd
+
+from ..sampling import uses_grid
+from ..sampling.grid import predict_grid
+from ..spec import join_observables
+from .posterior import NO_OBSERVABLE, subset_posteriors
+from .robust import summarise_set
+
+if TYPE_CHECKING:
+    from ..sampling import Domain
+    from ..surrogate import Surrogate
+
+
+RANKING_COLUMNS = ["rank", "observables", "information_gain_bits", "feasible_fraction_pct",
+                   "contraction_pct_vs_best_subset"]
+
+
+# =========================================================================== which experiment next
+def rank_observable_sets(surrogates: dict[str, Surrogate], domain: Domain, observables_with_targets,
+                         targets: dict[str, float], sigma: dict[str, float], tolerance: float, n: int, *,
+                         posteriors: dict | None = None, fraction_n: int | None = None,
+                         sobol_points: int = 2 ** 16) -> pd.DataFrame:
+    """Rank every non-empty observable subset by information gain (bits), then by fraction.
+
+    Columns: rank, observables, information_gain_bits, feasible_fraction_pct (strict, at
+    ``tolerance``), contraction_pct_vs_best_subset = 100 (1 - Phi(S) / min_{T < S} Phi(T))
+    over proper subsets T (the empty set is Omega, Phi = 1) and best_subset (that T), then
+    gain_vs_best_subset_bits = IG(S) - max_{T < S} IG(T), n_observables, rank_by_fraction,
+    information_gain_error_bits.
+    """
+    observables = tuple(observables_with_targets)
+    subsets = [c for size in range(1, len(observables) + 1) for c in combinations(observables, size)]
+    if posteriors is None:
+        posteriors = subset_posteriors(surrogates, domain, observables, targets, sigma, n, subsets=subsets,
+                                       sobol_points=sobol_points)
+    fn = fraction_n or n
+    grid = predict_grid({o: surrogates[o] for o in observables}, domain, fn) if uses_grid(domain.dim) else None
+    frac = {(): 1.0}
+    gain = {(): 0.0}
+    for s in subsets:
+        frac[s] = summarise_set(surrogates, domain, s, targets, tolerance, fn, polish=False, with_error=False,
+                                sobol_points=sobol_points, grid_predictions=grid).fraction
+        gain[s] = posteriors[s].information_gain_bits
+    rows = []
+    for s in subsets:
+        proper = [t for size in range(len(s)) for t in combinations(s, size)]
+        best = min(proper, key=lambda t: (frac[t], -gain[t]))
+        contraction = 100.0 * (1.0 - frac[s] / frac[best]) if frac[best] > 0 else np.nan
+        rows.append({
+            "observables": join_observables(s), "information_gain_bits": gain[s],
+            "feasible_fraction_pct": 100.0 * frac[s], "contraction_pct_vs_best_subset": contraction,
+            "n_observables": len(s), "best_subset": join_observables(best) or NO_OBSERVABLE,
+            "gain_vs_best_subset_bits": gain[s] - max(gain[t] for t in proper),
+            "information_gain_error_bits": posteriors[s].information_gain_error_bits,
+            "tolerance": float(tolerance),
+        })
+    frame = pd.DataFrame(rows)
+    frame["rank_by_fraction"] = frame["feasible_fraction_pct"].rank(method="min").astype(int)
+    frame = frame.sort_values(["information_gain_bits", "feasible_fraction_pct"],
+                              ascending=[False, True], kind="stable").reset_index(drop=True)
+    frame.insert(0, "rank", np.arange(1, len(frame) + 1))
+    return frame
+
+
+def _pct(value: float) -> str:
+    return f"{value:.3g} %"
+
+
+def next_measurement_advice(ranking: pd.DataFrame, labels: dict[str, str] | None = None) -> str:
+    """In words: from each smaller observable set, which single added measurement gains most.
+
+    Uses the ``observables``, ``information_gain_bits`` and ``feasible_fraction_pct``
+    columns of :func:`rank_observable_sets`.  One sentence per starting set (the first
+    for starting from nothing), naming the runner-up and any disagreement with the
+    fraction criterion.
+    """
+    labels = labels or {}
+
+    def name(obs) -> str:
+        return " + ".join(labels.get(o, o) for o in obs)
+
+    sets = {tuple(str(s).split("+")): (float(g), float(f)) for s, g, f in
+            zip(ranking["observables"], ranking["information_gain_bits"], ranking["feasible_fraction_pct"])}
+    order = [o for o in max(sets, key=len)]
+    sets[()] = (0.0, 100.0)
+    by_members = {frozenset(k): k for k in sets}
+    lines = []
+    for size in range(len(order)):
+        for start in combinations(order, size):
+            base_gain, base_frac = sets[by_members[frozenset(start)]]
+            options = []
+            for o in order:
+                if o in start or frozenset(start) | {o} not in by_members:
+                    continue
+                g, f = sets[by_members[frozenset(start) | {o}]]
+                options.append((g - base_gain, f, o, g))
+            if not options:
+                continue
+            options.sort(key=lambda t: (-t[0], t[1]))
+            delta, f_new, best, g_new = options[0]
+            if not start:
+                text = (f"As a first measurement, {name([best])} is the most informative: "
+                        f"{g_new:.2f} bits, admissible fraction {_pct(f_new)} of the domain")
+            else:
+                text = (f"From {name(start)}, adding {name([best])} gains {delta:.2f} bits "
+                        f"({base_gain:.2f} -> {g_new:.2f})")
+                if base_frac > 0 and 1 - f_new / base_frac < 5e-4:
+                    text += f" but leaves the admissible fraction at {_pct(f_new)}"
+                elif base_frac > 0:
+                    text += (f" and shrinks the admissible fraction by {100 * (1 - f_new / base_frac):.1f} % "
+                             f"({_pct(base_frac)} -> {_pct(f_new)})")
+                else:
+                    text += " (the admissible set is already empty at this tolerance)"
+            if len(options) > 1:
+                text += f"; {name([options[1][2]])} would gain {options[1][0]:.2f} bits"
+                by_frac = min(options, key=lambda t: t[1])
+                if by_frac[2] != best and by_frac[1] < f_new:
+                    text += (f"; by fraction alone {name([by_frac[2]])} contracts more "
+                             f"({_pct(by_frac[1])} vs {_pct(f_new)})")
+            lines.append(text + ".")
+    return "\n".join(lines)
