@@ -60,13 +60,18 @@ def cmd_fit(args) -> int:
 
 def cmd_validate(args) -> int:
     from .config import load_config
-    from .data import validate_material
+    from .data import refuse_likely_typos, validate_material
 
-    config = load_config(args.config)
+    base_dir = Path(args.config).parent  # data paths are written relative to the config file
+    config = load_config(args.config, base_dir=base_dir)
     for name, mat in config["materials"].items():
-        vt = validate_material(name, mat)
+        vt = validate_material(name, mat, base_dir=base_dir)
+        confirmed = refuse_likely_typos(vt, name, mat, base_dir=base_dir)
         for w in vt.warnings:
             print(f"demid: warning: {w}", file=sys.stderr)
+        for flag in confirmed:
+            print(f"demid: note: {mat['data']}, run {flag['run']}, column '{flag['column']}': value confirmed "
+                  f"in confirmed_values although it looks like a typo", file=sys.stderr)
         counts = ", ".join(f"{v} {k}" for k, v in vt.summary(name)["point_types"].items())
         print(f"{name}: {mat['data']} OK ({len(vt.table)} runs: {counts})")
     print(f"{args.config}: configuration and {len(config['materials'])} table(s) valid")

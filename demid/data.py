@@ -314,3 +314,48 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
                             f"(failed simulation){note}")
     return ValidatedTable(table=table, coding=coding, point_types=types, warnings=warnings, failed=failed,
                           log_factors=log_factors)
+
+
+_SLIP_WORDING = {
+    "decimal_shift": "with the decimal point shifted",
+    "transposition": "with two adjacent digits swapped",
+    "sign_lost": "with its sign lost",
+}
+
+
+def _shortest(value: float) -> str:
+    return np.format_float_positional(float(value), trim="-")
+
+
+def refuse_likely_typos(validated: ValidatedTable, material: str, mat_cfg: dict,
+                        base_dir: Path | str = ".") -> list[dict]:
+    """Stop on a response cell that is far off the other runs' fit *and* reads like a digit-level slip.
+
+    A value the user has confirmed under ``confirmed_values`` passes; the confirmed flags are
+    returned so they can still be shown.  Raises InputError naming the file, run and column.
+    """
+    from .transcription import likely_typos
+
+    src = str(Path(mat_cfg["data"]))
+    key = f"materials.{material}.confirmed_values"
+    confirmed = set()
+    runs = set(int(r) for r in validated.table["run"])
+    for item in mat_cfg.get("confirmed_values") or []:
+        if item["column"] not in mat_cfg["responses"]:
+            raise InputError(f"config key {key}: '{item['column']}' is not a response of this material "
+                             f"(responses: {', '.join(mat_cfg['responses'])})", source=src)
+        if int(item["run"]) not in runs:
+            raise InputError(f"config key {key}: run {item['run']} is not in the table", source=src)
+        confirmed.add((int(item["run"]), item["column"]))
+    printed = read_printed(Path(base_dir) / mat_cfg["data"], validated.table)
+    flags = likely_typos(validated, mat_cfg, printed)
+    for flag in flags:
+        run, column = int(flag["run"]), flag["column"]
+        if (run, column) in confirmed:
+            continue
+        found = printed.loc[validated.table["run"].to_numpy() == run, column].iloc[0]
+        raise InputError(f"{found} looks like {_shortest(flag['suggested'])} "
+                         f"{_SLIP_WORDING.get(flag['kind'], 'mistyped')}; fix the cell, or confirm the value "
+                         f"with confirmed_values: [{{run: {run}, column: {column}}}]",
+                         source=src, run=run, column=column)
+    return flags

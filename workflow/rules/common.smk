@@ -2,7 +2,7 @@ import sys
 from pathlib import Path
 
 from demid.config import check_semantics, grid_size, validate_schema
-from demid.data import validate_material
+from demid.data import refuse_likely_typos, validate_material
 from demid.errors import InputError
 
 
@@ -16,7 +16,7 @@ try:
     config.update(_checked)
     check_semantics(config, source=CONFIG_SOURCE)
     for _name, _material in config["materials"].items():
-        validate_material(_name, _material)
+        refuse_likely_typos(validate_material(_name, _material), _name, _material)
 except InputError as err:
     sys.exit(f"demid: error: {err}")
 
