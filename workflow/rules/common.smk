@@ -122,9 +122,10 @@ def report_figures():
     return out
 
 
-def config_json():
+def config_json(wildcards):
     import json
 
+    # A function, not a string: Snakemake would read braces in labels or units as wildcards.
     return json.dumps(config)  # keeps the config order of materials and responses
 
 
