@@ -73,7 +73,7 @@ from statsmodels.tools.eval_measures import aicc as _sm_aicc
 
 from .config import targets as material_targets
 from .design import Coding, Term, cubic_terms, model_matrix, model_units, quadratic_terms, term_name
-from .surrogate import SurrogateFit, fit_response
+from .surrogate import SurrogateFit, fit_response, round_off_only
 
 CAUSES = ("missing_term", "response_transform", "outlier", "drift", "heteroscedasticity")
 TRANSFORM_NAMES = {0.0: "log", 0.5: "sqrt", -1.0: "inverse"}
@@ -583,7 +583,7 @@ class _Round:
         spec = m.spec
         df = m.df_resid
         n = len(m.y)
-        if df < 3:
+        if df < 3 or round_off_only(m.resid_w, m.z):  # an exact fit: round-off is not evidence
             return
         eps = rng.standard_normal((n, n_null))
         q = _orth(m.xw)
@@ -1019,7 +1019,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
 
     baseline = base_model.summary()
     stats_ = fit.statistics()
-    baseline.update(lof_f=_num(stats_.lof_f), lof_p=_num(stats_.lof_p))
+    baseline.update(lof_f=_num(stats_.lof_f), lof_p=_num(stats_.lof_p), lof_note=fit.anova().lof_note)
     if findings:
         extended = model.summary()
         extended.update(lof_f=None, lof_p=None)
