@@ -166,6 +166,14 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
         key = f"materials.{mname}"
         factors = mat["factors"]
         responses = mat["responses"]
+        if len(factors) < 2:
+            raise InputError(f"config key {key}.factors: only one factor ('{next(iter(factors))}'); demid needs at "
+                             "least two (admissible sets, posteriors and surfaces are drawn over factor pairs)",
+                             source=source)
+        if not any("target" in resp for resp in responses.values()):
+            raise InputError(f"config key {key}.responses: no response has a target; give at least one measured "
+                             f"value (e.g. {key}.responses.{next(iter(responses))}.target), or there is nothing "
+                             "to calibrate against", source=source)
         path = base_dir / mat["data"]
         if not path.is_file():
             raise InputError(f"config key {key}.data: data file '{mat['data']}' does not exist", source=source)

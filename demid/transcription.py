@@ -62,7 +62,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from decimal import Decimal, InvalidOperation
-from itertools import combinations
+from itertools import combinations, product
 
 import numpy as np
 import pandas as pd
@@ -588,6 +588,55 @@ def _jsonable(value):
     return value
 
 
+# A statistic the source computed from numbers it printed rounded: (statistic, printed inputs,
+# value from the inputs and the table's degrees of freedom).  Each function is monotonic in every input,
+# so its range over the inputs' rounding intervals is spanned by the corners.
+def _f_ratio(ss_a, ss_b, df_a, df_b):
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where((df_a > 0) & (df_b > 0) & (ss_b > 0), (ss_a / df_a) / (ss_b / df_b), np.nan)
+
+
+def _f_tail(f, df_a, df_b):
+    with np.errstate(invalid="ignore"):
+        return np.where((df_a > 0) & (df_b > 0) & np.isfinite(f), stats.f.sf(f, np.maximum(df_a, 1),
+                                                                           np.maximum(df_b, 1)), np.nan)
+
+
+_FROM_PRINTED = (
+    ("lof_f", ("ss_lof", "ss_pure_error"), lambda a, b, v: _f_ratio(a, b, v["_df_lof"], v["_df_pe"])),
+    ("lof_p", ("lof_f",), lambda f, v: _f_tail(f, v["_df_lof"], v["_df_pe"])),
+    ("lof_p", ("ss_lof", "ss_pure_error"),
+     lambda a, b, v: _f_tail(_f_ratio(a, b, v["_df_lof"], v["_df_pe"]), v["_df_lof"], v["_df_pe"])),
+)
+
+
+def _agreement(targets: dict[str, PrintedValue], values: dict[str, np.ndarray]) -> tuple[dict, set]:
+    """Per statistic, per hypothesis: does the printed value agree?  A statistic agrees when the refit
+    rounds to it, or when it is what the source's own printed, rounded inputs give (any value of the
+    inputs within their rounding) and those inputs agree with the refit.  Returns (agrees, names
+    that agree only through their printed inputs, for any hypothesis)."""
+    agrees = {name: np.atleast_1d(targets[name].agrees(values[name])) for name in targets}
+    via_inputs: set[str] = set()
+    for name, inputs, function in _FROM_PRINTED:
+        if name not in targets or targets[name].relation != "=" or any(
+                i not in targets or targets[i].relation != "=" for i in inputs):
+            continue
+        inputs_ok = np.logical_and.reduce([agrees[i] for i in inputs])
+        corners = np.array([function(*[targets[i].value + sign * targets[i].half_width
+                                       for i, sign in zip(inputs, signs)], values)
+                            for signs in product((-1.0, 1.0), repeat=len(inputs))], dtype=float)
+        lo = np.min(np.where(np.isnan(corners), np.inf, corners), axis=0)
+        hi = np.max(np.where(np.isnan(corners), -np.inf, corners), axis=0)
+        target = targets[name]
+        slack = target.half_width * (1 + 1e-6)
+        consistent = (target.value + slack >= lo) & (target.value - slack <= hi)
+        extra = inputs_ok & consistent & ~agrees[name]
+        if np.any(extra):
+            via_inputs.add(name)
+        agrees[name] = agrees[name] | extra
+    return agrees, via_inputs
+
+
 def _format(value: float) -> str:
     return "NaN" if not np.isfinite(value) else f"{value:.6g}"
 
@@ -646,7 +695,8 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     table_design = _DesignFit(table_coding.to_coded(z[fit_rows]), terms, table_coding, need_actual)
     base = _lack_of_fit_p(table_design.evaluate(y[:, None], coef_index))
     reproduced = {name: float(base[name][0]) for name in targets}
-    agrees = {name: bool(targets[name].agrees(reproduced[name])) for name in targets}
+    base_agrees, via_inputs = _agreement(targets, base)
+    agrees = {name: bool(base_agrees[name][0]) for name in targets}
     published_values = {name: t.value for name, t in targets.items()}
     printed_text = {name: t.text for name, t in targets.items()}
     n_pub = len(targets)
@@ -657,8 +707,10 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
                                    explained, message, printed_text, n_candidates)
 
     if n_agree == n_pub:
+        note = (f" ({', '.join(sorted(via_inputs))} as the source computed it from its own printed, rounded "
+                "inputs)" if via_inputs else "")
         return result(True, [], None, f"the table reproduces all {n_pub} published statistics "
-                                      f"of '{response}' to the printed decimals")
+                                      f"of '{response}' to the printed decimals{note}")
 
     texts = _cell_texts(table, printed, [*factors, response], source)
     column_order = {name: i for i, name in enumerate(table.columns)}
@@ -739,9 +791,10 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     values = _lack_of_fit_p({key: np.concatenate([np.atleast_1d(b[key]) for b in blocks]) for key in blocks[0]})
     restores = np.zeros(len(records), dtype=int)
     misfit = np.zeros(len(records))
+    candidate_agrees, _ = _agreement(targets, values)
     for name in targets:
-        restores += targets[name].agrees(values[name])
-        misfit += targets[name].misfit(values[name])
+        restores += candidate_agrees[name]
+        misfit += np.where(candidate_agrees[name], 0.0, targets[name].misfit(values[name]))
     # Round the continuous tie-break so that symmetric repairs fall through to kind, row and column.
     order = np.lexsort((
         [column_order[r[1]] for r in records],

@@ -290,3 +290,22 @@ def test_fit_and_criticize_accept_design(tmp_path):
                 "--out", str(out))
     assert proc.returncode == 0, proc.stderr
     assert out.exists()
+
+
+def test_one_factor_study_is_refused_at_validation(tmp_path):
+    def mutate(c):
+        del c["materials"]["mortar"]["factors"]["gamma"]
+        del c["materials"]["mortar"]["reference_point"]
+    with pytest.raises(InputError, match=r"config key materials\.mortar\.factors: only one factor \('mu_r'\); "
+                                         r"demid needs at least two"):
+        _load(tmp_path, mutate)
+
+
+def test_material_without_any_target_is_refused_at_validation(tmp_path):
+    def mutate(c):
+        c["materials"] = {"paste": c["materials"]["paste"]}
+        del c["materials"]["paste"]["responses"]["D"]["target"]
+        del c["materials"]["paste"]["scenarios"]
+        del c["materials"]["paste"]["pareto"]
+    with pytest.raises(InputError, match=r"config key materials\.paste\.responses: no response has a target"):
+        _load(tmp_path, mutate)
