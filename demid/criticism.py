@@ -1019,7 +1019,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
 
     baseline = base_model.summary()
     stats_ = fit.statistics()
-    baseline.update(lof_f=_num(stats_.lof_f), lof_p=_num(stats_.lof_p), lof_note=fit.anova().lof_note)
+    baseline.update(lof_f=_num(stats_.lof_f), lof_p=_num(stats_.lof_p))
     if findings:
         extended = model.summary()
         extended.update(lof_f=None, lof_p=None)
