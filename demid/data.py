@@ -171,7 +171,8 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
                 continue
             if failed:
                 raise InputError(f"the run is marked '{status}' in column '{status_column}' but this cell holds "
-                                 f"'{cell}'; empty the cell if the simulation failed, or clear the status",
+                                 f"'{cell}'; empty the cell if the simulation failed (if only some responses "
+                                 "failed, clear the status and write NaN in their cells)",
                                  source=src, run=run, column=col)
             if cell.lower() in _NONFINITE:
                 rec[col] = np.nan

@@ -122,6 +122,12 @@ def test_failed_run_with_a_value_left_in_its_cell_is_an_error(tmp_path):
         read_table(path, ["x1", "x2"], ["y"])
 
 
+def test_partial_failure_is_written_as_nan_with_status_ok(tmp_path):
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok", "2,0.2,2,NaN,ok"])
+    table, warnings = read_table(path, ["x1", "x2"], ["y"])
+    assert np.isnan(table.loc[table["run"] == 2, "y"].iloc[0]) and "treated as a failed simulation" in warnings[0]
+
+
 def test_ambiguous_thousands_separator_is_not_silently_read_as_decimal_comma(tmp_path):
     path = tmp_path / "t.csv"
     path.write_text('run;x1;x2;y\n1;0.1;1;4,576\n')
