@@ -16,7 +16,11 @@ for warning in validated.warnings:
 printed = read_printed(snakemake.input.data, validated.table)  # noqa: F821
 checks = check_material(validated, cfg, printed)
 typos = likely_typos(validated, cfg, printed)
+confirmed = {(int(item["run"]), item["column"]) for item in cfg.get("confirmed_values") or []}
 for flag in typos:
+    if (int(flag["run"]), flag["column"]) in confirmed:
+        flag["confirmed"] = True
+        flag["message"] += " (confirmed correct under confirmed_values)"
     print(f"warning: {flag['message']}", file=sys.stderr)
 summary = validated.summary(material)
 summary["warnings"] += [flag["message"] for flag in typos]
