@@ -607,6 +607,9 @@ _FROM_PRINTED = (
     ("lof_p", ("lof_f",), lambda f, v: _f_tail(f, v["_df_lof"], v["_df_pe"])),
     ("lof_p", ("ss_lof", "ss_pure_error"),
      lambda a, b, v: _f_tail(_f_ratio(a, b, v["_df_lof"], v["_df_pe"]), v["_df_lof"], v["_df_pe"])),
+    ("r2", ("ss_model", "ss_total"), lambda a, b, v: np.full(np.shape(v["_df_pe"]), a / b if b > 0 else np.nan)),
+    ("r2", ("ss_residual", "ss_total"),
+     lambda a, b, v: np.full(np.shape(v["_df_pe"]), 1.0 - a / b if b > 0 else np.nan)),
 )
 
 
@@ -707,7 +710,7 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
                                    explained, message, printed_text, n_candidates)
 
     if n_agree == n_pub:
-        note = (f" ({', '.join(sorted(via_inputs))} as the source computed it from its own printed, rounded "
+        note = (f" ({', '.join(sorted(via_inputs))} as computed from the source's own printed, rounded "
                 "inputs)" if via_inputs else "")
         return result(True, [], None, f"the table reproduces all {n_pub} published statistics "
                                       f"of '{response}' to the printed decimals{note}")

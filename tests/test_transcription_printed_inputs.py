@@ -70,3 +70,15 @@ def test_rounded_anova_of_other_tables_agrees(seed):
                "lof_p": f"{stats.f.sf(round(f, 2), 3, 4):.4f}"}
     result = check_transcription(table, ["x1", "x2"], "y", printed, alpha=1.414)
     assert result.consistent, result.message
+
+
+def test_r2_from_printed_sums_of_squares_agrees():
+    """R² printed from rounded SS model / SS total (28.25 / 28.74 = 0.9830) agrees; the exact refit gives 0.9827."""
+    exact = check_transcription(MONTGOMERY, ["x1", "x2"], "y", {"r2": "0.9827"}, alpha=1.414)
+    assert exact.consistent
+    printed = {"ss_model": "28.25", "ss_total": "28.74", "r2": "0.9830"}
+    result = check_transcription(MONTGOMERY, ["x1", "x2"], "y", printed, alpha=1.414)
+    assert result.consistent, result.message
+    assert not check_transcription(MONTGOMERY, ["x1", "x2"], "y", {"r2": "0.9830"}, alpha=1.414).consistent
+    wrong = dict(printed, r2="0.9803")  # digits swapped: no rounding of the printed sums gives it
+    assert not check_transcription(MONTGOMERY, ["x1", "x2"], "y", wrong, alpha=1.414).consistent
