@@ -25,14 +25,29 @@ def _load_table(path: str, factors: list[str], responses: list[str]):
     return table
 
 
-def _alpha(table, factors, alpha):
-    """Axial distance: given, or inferred as (max level distance) / (factorial level distance)."""
+def _alpha(table, factors, alpha, design="ccd"):
+    """Axial distance: given; 1 for designs without axial points; for a CCD inferred as
+    (max level distance) / (factorial level distance)."""
     if alpha is not None:
         return alpha
+    if design != "ccd":
+        return 1.0
     from .data import infer_coding
 
     coding = infer_coding(table, factors, {"type": "ccd"}, "table")
     return float(abs(coding.to_coded(table[factors].to_numpy(dtype=float))).max())
+
+
+def _require_estimable(table, factors, response, alpha, source):
+    """Refuse a saturated or rank-deficient quadratic: its R² is 1 or arbitrary, its residuals meaningless."""
+    import numpy as np
+
+    from .data import require_estimable
+    from .design import Coding
+
+    x = table[factors].to_numpy(dtype=float)
+    coded = Coding.from_levels(factors, x, alpha).to_coded(x)
+    require_estimable(coded, np.isfinite(table[response].to_numpy(dtype=float)), None, source, response)
 
 
 def cmd_fit(args) -> int:
@@ -41,9 +56,10 @@ def cmd_fit(args) -> int:
 
     factors, responses = _split(args.factors), _split(args.responses)
     table = _load_table(args.data, factors, responses)
-    alpha = _alpha(table, factors, args.alpha)
+    alpha = _alpha(table, factors, args.alpha, args.design)
     out = {}
     for r in responses:
+        _require_estimable(table, factors, r, alpha, args.data)
         fit = fit_response(table, factors, r, alpha=alpha)
         st = fit.statistics()
         coef = fit.coefficients()
@@ -60,13 +76,18 @@ def cmd_fit(args) -> int:
 
 def cmd_validate(args) -> int:
     from .config import load_config
-    from .data import validate_material
+    from .data import refuse_likely_typos, validate_material
 
-    config = load_config(args.config)
+    base_dir = Path(args.config).parent  # data paths are written relative to the config file
+    config = load_config(args.config, base_dir=base_dir)
     for name, mat in config["materials"].items():
-        vt = validate_material(name, mat)
+        vt = validate_material(name, mat, base_dir=base_dir)
+        confirmed = refuse_likely_typos(vt, name, mat, base_dir=base_dir)
         for w in vt.warnings:
             print(f"demid: warning: {w}", file=sys.stderr)
+        for flag in confirmed:
+            print(f"demid: note: {mat['data']}, run {flag['run']}, column '{flag['column']}': value confirmed "
+                  f"in confirmed_values although it looks like a typo", file=sys.stderr)
         counts = ", ".join(f"{v} {k}" for k, v in vt.summary(name)["point_types"].items())
         print(f"{name}: {mat['data']} OK ({len(vt.table)} runs: {counts})")
     print(f"{args.config}: configuration and {len(config['materials'])} table(s) valid")
@@ -79,7 +100,9 @@ def cmd_criticize(args) -> int:
 
     factors = _split(args.factors)
     table = _load_table(args.data, factors, [args.response])
-    result = criticize(table, factors, args.response, alpha=args.alpha)
+    _require_estimable(table, factors, args.response, _alpha(table, factors, args.alpha, args.design), args.data)
+    alpha = args.alpha if args.alpha is not None or args.design == "ccd" else 1.0  # None: criticize infers it
+    result = criticize(table, factors, args.response, alpha=alpha)
     write_json(result.to_json(), args.out)
     return 0
 
@@ -108,7 +131,7 @@ def cmd_check_transcription(args) -> int:
     table = _load_table(args.data, factors, [args.response])
     published = _parse_published(args.published)
     result = check_transcription(table, factors, args.response, published,
-                                 alpha=_alpha(table, factors, args.alpha), design_type=args.design,
+                                 alpha=_alpha(table, factors, args.alpha, args.design), design_type=args.design,
                                  printed=read_printed(args.data, table), source=args.data)
     write_json(result.to_json(), args.out)
     return 0
@@ -123,6 +146,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--factors", required=True, help="comma-separated factor columns, in order")
     p.add_argument("--responses", required=True, help="comma-separated response columns")
     p.add_argument("--alpha", type=float, default=None, help="CCD axial distance (default: inferred)")
+    p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"],
+                   help="design family: sets the coding (axial points only in a ccd)")
     p.add_argument("--out", required=True)
     p.set_defaults(func=cmd_fit)
 
@@ -135,6 +160,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--factors", required=True)
     p.add_argument("--response", required=True)
     p.add_argument("--alpha", type=float, default=None)
+    p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"],
+                   help="design family: sets the coding (axial points only in a ccd)")
     p.add_argument("--out", required=True)
     p.set_defaults(func=cmd_criticize)
 

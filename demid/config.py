@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import copy
+import re
 from pathlib import Path
 
+import numpy as np
 import yaml
 
 from .errors import InputError
@@ -48,12 +50,42 @@ def _fill_defaults(instance, schema: dict, root: dict):
                     _fill_defaults(value, extra, root)
 
 
+# PyYAML (YAML 1.1) reads 1e-6 -- no decimal point, no signed exponent -- as a string.
+_BARE_EXPONENT = re.compile(r"^\s*[-+]?(\d+\.?\d*|\.\d+)[eE][-+]?\d+\s*$")
+
+
+def _as_number(text: str, expected) -> float | int | None:
+    types = set(np.atleast_1d(expected))
+    value = float(text)
+    if "number" in types:
+        return value
+    return int(value) if "integer" in types and value.is_integer() else None
+
+
+def _numbers_written_as_strings(config: dict, validator) -> dict:
+    """A copy where strings such as '1e-6' are read as the numbers the schema expects there."""
+    config = copy.deepcopy(config)
+    while True:
+        fixable = [(e, _as_number(e.instance, e.validator_value)) for e in validator.iter_errors(config)
+                   if e.validator == "type" and isinstance(e.instance, str) and _BARE_EXPONENT.match(e.instance)
+                   and e.absolute_path]
+        fixable = [(e, v) for e, v in fixable if v is not None]
+        if not fixable:
+            return config
+        err, value = fixable[0]
+        node = config
+        for part in list(err.absolute_path)[:-1]:
+            node = node[part]
+        node[err.absolute_path[-1]] = value
+
+
 def validate_schema(config: dict, source: str = "config") -> dict:
     """Validate against the schema, fill defaults, return a new dict.  Raises InputError."""
     import jsonschema  # only validation needs it, not the per-material jobs
 
     schema = load_schema()
     validator = jsonschema.Draft7Validator(schema)
+    config = _numbers_written_as_strings(config, validator)
     errors = sorted(validator.iter_errors(config), key=lambda e: (len(e.absolute_path), list(map(str, e.absolute_path))))
     if errors:
         err = errors[0]
@@ -64,9 +96,68 @@ def validate_schema(config: dict, source: str = "config") -> dict:
     return config
 
 
+# Evaluation points per material held in memory at once (2**24: about 4096**2 or 256**3).
+MAX_GRID_NODES = 2 ** 24
+
+
+def _check_results_dir(config: dict, source: str) -> None:
+    results = str(config.get("results_dir", "results")).strip()
+    if not results or Path(results).resolve() == Path(Path(results).resolve().anchor):
+        raise InputError(f"config key results_dir: '{config.get('results_dir')}' would write the results into "
+                         "the file-system root; name a folder, e.g. results", source=source)
+
+
+def _check_grid_sizes(config: dict, source: str) -> None:
+    for mname, mat in config["materials"].items():
+        d = len(mat["factors"])
+        size = grid_size(config, mname)
+        nodes = size ** d if d <= 3 else size
+        if nodes > MAX_GRID_NODES:
+            key = (f"materials.{mname}.grid_points" if mat.get("grid_points")
+                   else "grid_points" if d <= 2 else "grid_points_3d" if d == 3 else "sobol_points")
+            most = int(round(MAX_GRID_NODES ** (1 / d))) if d <= 3 else MAX_GRID_NODES
+            raise InputError(f"config key {key}: {size} gives {nodes:,} evaluation points for material '{mname}' "
+                             f"({d} factors), more than the {MAX_GRID_NODES:,} held in memory; use at most "
+                             f"{most}", source=source)
+
+
+def _label_keys(mname: str, mat: dict):
+    yield f"materials.{mname}.label", mat.get("label", "")
+    for group in ("factors", "responses"):
+        for name, item in mat[group].items():
+            for field in ("label", "unit"):
+                yield f"materials.{mname}.{group}.{name}.{field}", item.get(field, "")
+    for name, scen in (mat.get("scenarios") or {}).items():
+        yield f"materials.{mname}.scenarios.{name}.label", scen.get("label", "")
+
+
+def _check_labels(config: dict, source: str) -> None:
+    """Labels with $...$ are drawn as matplotlib mathtext: a typo there would only fail in a late job."""
+    math = [(key, text) for mname, mat in config["materials"].items() for key, text in _label_keys(mname, mat)
+            if text.count("$") - text.count(r"\$") >= 2]
+    if not math:
+        return
+    from matplotlib import cbook
+    from matplotlib.mathtext import MathTextParser
+
+    parser = MathTextParser("path")
+    for key, text in math:
+        if not cbook.is_math_text(text):
+            continue
+        try:
+            parser.parse(text)
+        except ValueError as exc:
+            reason = " ".join(str(exc).split())
+            raise InputError(f"config key {key}: '{text}' is not valid matplotlib mathtext ({reason}); fix it or "
+                             r"write \$ for a literal dollar sign", source=source) from None
+
+
 def check_semantics(config: dict, source: str = "config", base_dir: Path | str = ".") -> None:
     """Cross-references the schema cannot check: names, targets, bounds, files."""
     base_dir = Path(base_dir)
+    _check_results_dir(config, source)
+    _check_grid_sizes(config, source)
+    _check_labels(config, source)
     materials = config["materials"]
     smoke = config.get("smoke_material") or ""
     if smoke and smoke not in materials:
@@ -76,6 +167,14 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
         key = f"materials.{mname}"
         factors = mat["factors"]
         responses = mat["responses"]
+        if len(factors) < 2:
+            raise InputError(f"config key {key}.factors: only one factor ('{next(iter(factors))}'); demid needs at "
+                             "least two (admissible sets, posteriors and surfaces are drawn over factor pairs)",
+                             source=source)
+        if not any("target" in resp for resp in responses.values()):
+            raise InputError(f"config key {key}.responses: no response has a target; give at least one measured "
+                             f"value (e.g. {key}.responses.{next(iter(responses))}.target), or there is nothing "
+                             "to calibrate against", source=source)
         path = base_dir / mat["data"]
         if not path.is_file():
             raise InputError(f"config key {key}.data: data file '{mat['data']}' does not exist", source=source)
@@ -116,6 +215,9 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
             for role in ("error_of", "minimise"):
                 if par[role] not in responses:
                     raise InputError(f"config key {key}.pareto.{role}: unknown response '{par[role]}'", source=source)
+            if par["error_of"] == par["minimise"]:
+                raise InputError(f"config key {key}.pareto: error_of and minimise are both '{par['minimise']}'; "
+                                 "a trade-off needs two different responses", source=source)
             if "target" not in responses[par["error_of"]]:
                 raise InputError(f"config key {key}.pareto.error_of: response '{par['error_of']}' has no target",
                                  source=source)
@@ -132,6 +234,8 @@ def load_config(path: Path | str, base_dir: Path | str | None = None) -> dict:
     try:
         with open(path, encoding="utf-8-sig") as fh:
             raw = yaml.safe_load(fh)
+    except UnicodeDecodeError as exc:
+        raise InputError(f"not UTF-8 text (byte {exc.start}); save the config as UTF-8", source=str(path)) from None
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         where = f" at line {mark.line + 1}" if mark is not None else ""

@@ -12,18 +12,20 @@ import difflib
 import io
 import math
 import re
+from itertools import combinations
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
-from .design import Coding, classify_points, model_units, nominal_levels, quadratic_terms
+from .design import Coding, classify_points, model_matrix, model_units, nominal_levels, quadratic_terms
 from .errors import InputError
 from .spec import as_spec
 
 UNICODE_MINUS = "\u2212"
 _DECIMAL_COMMA = re.compile(r"^[+-]?\d*,\d+$")
+_THOUSANDS_OR_DECIMAL = re.compile(r"^[+-]?[1-9]\d{0,2},\d{3}$")
 _FAILED = {"failed", "fail", "error", "crashed"}
 _NONFINITE = {"nan", "inf", "+inf", "-inf", "infinity", "-infinity"}
 
@@ -66,8 +68,8 @@ def _sniff_delimiter(header: str) -> str:
     return max(counts, key=lambda d: (counts[d], d == ","))
 
 
-def read_raw(path: Path | str) -> tuple[list[str], list[list[str]], str]:
-    """Header and string cells; a UTF-8 BOM is dropped, delimiter sniffed from the header."""
+def read_raw_numbered(path: Path | str) -> tuple[list[str], list[list[str]], list[int]]:
+    """Header, string cells and each row's line number in the file (comment and blank lines skipped)."""
     path = Path(path)
     if not path.is_file():
         raise InputError("data file does not exist", source=str(path))
@@ -75,13 +77,22 @@ def read_raw(path: Path | str) -> tuple[list[str], list[list[str]], str]:
         text = path.read_bytes().decode("utf-8-sig")
     except UnicodeDecodeError as exc:
         raise InputError(f"not UTF-8 text (byte {exc.start}); save the table as UTF-8 CSV", source=str(path)) from None
-    lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
-    if not lines:
+    numbered = [(no, ln) for no, ln in enumerate(text.splitlines(), start=1)
+                if ln.strip() and not ln.lstrip().startswith("#")]
+    if not numbered:
         raise InputError("the file is empty", source=str(path))
-    delim = _sniff_delimiter(lines[0])
-    rows = list(csv.reader(io.StringIO("\n".join(lines)), delimiter=delim))
+    delim = _sniff_delimiter(numbered[0][1])
+    rows = [next(csv.reader([ln], delimiter=delim)) for _, ln in numbered]
     header = [h.strip() for h in rows[0]]
-    return header, rows[1:], delim
+    return header, rows[1:], [no for no, _ in numbered[1:]]
+
+
+def read_raw(path: Path | str) -> tuple[list[str], list[list[str]], str]:
+    """Header and string cells; a UTF-8 BOM is dropped, delimiter sniffed from the header."""
+    header, rows, _ = read_raw_numbered(path)
+    lines = Path(path).read_bytes().decode("utf-8-sig").splitlines()
+    first = next(ln for ln in lines if ln.strip() and not ln.lstrip().startswith("#"))
+    return header, rows, _sniff_delimiter(first)
 
 
 def parse_number(cell: str) -> float:
@@ -89,6 +100,9 @@ def parse_number(cell: str) -> float:
     s = cell.strip().replace(UNICODE_MINUS, "-")
     if s == "":
         raise ValueError("empty cell")
+    if _THOUSANDS_OR_DECIMAL.match(s):
+        raise ValueError(f"found '{cell.strip()}': a thousands separator ({s.replace(',', '')}) or a decimal "
+                         f"comma ({s.replace(',', '.')})? write the number with a decimal point and no separator")
     if _DECIMAL_COMMA.match(s):
         raise ValueError(f"found '{cell.strip()}', a decimal comma; expected a decimal point, e.g. "
                          f"'{s.replace(',', '.')}'")
@@ -107,7 +121,7 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
     responses become NaN and are excluded from the fit.
     """
     src = str(path)
-    header, rows, _ = read_raw(path)
+    header, rows, line_numbers = read_raw_numbered(path)
     needed = ["run"] + list(factors) + list(responses)
     for col in needed:
         if col not in header:
@@ -122,7 +136,7 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
     warnings: list[str] = []
     records = []
     seen_runs: dict[int, int] = {}
-    for line_no, row in enumerate(rows, start=2):
+    for line_no, row in zip(line_numbers, rows):
         if len(row) != len(header):
             raise InputError(f"line {line_no} has {len(row)} cells, the header has {len(header)}", source=src)
         run_cell = row[idx["run"]].strip()
@@ -156,6 +170,11 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
             if failed and (cell == "" or cell.lower() in _NONFINITE):
                 rec[col] = np.nan
                 continue
+            if failed:
+                raise InputError(f"the run is marked '{status}' in column '{status_column}' but this cell holds "
+                                 f"'{cell}'; empty the cell if the simulation failed (if only some responses "
+                                 "failed, clear the status and write NaN in their cells)",
+                                 source=src, run=run, column=col)
             if cell.lower() in _NONFINITE:
                 rec[col] = np.nan
                 warnings.append(f"{src}, run {run}, column '{col}': value '{cell}' treated as a failed simulation")
@@ -187,34 +206,60 @@ def read_printed(path: Path | str, table: pd.DataFrame) -> pd.DataFrame:
     return printed.iloc[[order[str(int(r))] for r in table["run"]]].reset_index(drop=True)
 
 
+def _level_coding(values: np.ndarray, counts: np.ndarray, levels: np.ndarray,
+                  tol: float = 0.02) -> tuple[float, float] | None:
+    """Centre and unit that put the most runs on the nominal ``levels`` (coded units).
+
+    Every pair of distinct values is tried against every pair of levels; ties go to the most
+    symmetric placement (lowest and highest level found equally far from the centre).  A single
+    mistyped cell sits on no level, so it cannot move the coding; no value is privileged by how
+    often it occurs (a 3x3 factorial or a CCD with one centre run is coded like any other).
+    """
+    best, best_key = None, None
+    for i, j in combinations(range(len(values)), 2):
+        for a, b in combinations(range(len(levels)), 2):
+            unit = (values[j] - values[i]) / (levels[b] - levels[a])
+            centre = values[i] - unit * levels[a]
+            coded = (values - centre) / unit
+            nearest = np.abs(coded[:, None] - levels[None, :]).argmin(axis=1)
+            on = np.abs(coded - levels[nearest]) <= tol
+            key = (int(counts[on].sum()), -round(abs(coded[on].max() + coded[on].min()), 6), int(on.sum()))
+            if best_key is None or key > best_key:
+                best_key, best = key, (on, levels[nearest])
+    if best is None:
+        return None
+    on, assigned = best
+    vals, lev = values[on], assigned[on]
+    # Exact printed values where the design has them: the centre run, the +-1 pair.
+    centre = vals[lev == 0][0] if np.any(lev == 0) else None
+    if np.any(lev == 1) and np.any(lev == -1):
+        unit = (vals[lev == 1][0] - vals[lev == -1][0]) / 2.0
+        centre = centre if centre is not None else (vals[lev == 1][0] + vals[lev == -1][0]) / 2.0
+    else:
+        unit, fitted_centre = np.polyfit(lev, vals, 1)
+        centre = centre if centre is not None else fitted_centre
+    return float(centre), float(unit)
+
+
 def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str,
                  log_factors=()) -> Coding:
-    """Centre = most frequent level, unit = half the distance between the two next most frequent."""
+    """Centre and unit per factor from the design's geometry: the placement of the declared design's
+    nominal levels that puts the most runs on a level (see :func:`_level_coding`)."""
     dtype = design["type"]
     alpha = float(design.get("alpha", 1.0))
     z = model_units(table[factors].to_numpy(), factors, log_factors)
     if dtype == "custom":
         return Coding.from_levels(factors, z, alpha)
+    levels = nominal_levels(dtype, alpha)
     centers, units = [], []
     for i, f in enumerate(factors):
         values, counts = np.unique(np.round(z[:, i], 12), return_counts=True)
-        center = values[np.lexsort((values, -counts))[0]]
-        count = dict(zip(values, counts))
-        span = values.max() - values.min()
-        # The +-1 levels: the pair symmetric about the centre that most runs sit on (a single
-        # mistyped cell has no symmetric partner, so it cannot hijack the coding).
-        best = None
-        for lo in values[values < center]:
-            for hi in values[values > center]:
-                if abs((hi - center) - (center - lo)) <= 5e-3 * max(span, 1e-300):
-                    key = (count[lo] + count[hi], -(hi - lo))
-                    if best is None or key > best[0]:
-                        best = (key, lo, hi)
-        if best is None:
-            raise InputError(f"cannot find design levels placed symmetrically about the centre value {center:g}",
-                             source=src, column=f)
-        centers.append(float(center))
-        units.append(float((best[2] - best[1]) / 2.0))
+        found = _level_coding(values, counts, levels) if len(values) > 1 else None
+        if found is None:
+            raise InputError(f"the factor takes the single value {values[0]:g} in every run; a {dtype} design "
+                             "varies each factor over at least two levels", source=src, column=f)
+        centers.append(found[0])
+        units.append(found[1])
     return Coding(tuple(factors), tuple(centers), tuple(units))
 
 
@@ -281,6 +326,41 @@ def check_bounds(table: pd.DataFrame, factors_cfg: dict, src: str, rel_tol: floa
                              f"(config factors.{f})", source=src, run=int(r["run"]), column=f)
 
 
+def require_estimable(coded: np.ndarray, usable: np.ndarray, point_types: np.ndarray | None, src: str,
+                      column: str) -> None:
+    """The full quadratic must be estimable, with residual degrees of freedom, from the usable runs.
+
+    Runs that all lie on one sphere about the design centre (a spherical CCD whose centre runs
+    failed or were never made) cannot tell the intercept from the squared terms; a fit would
+    return arbitrary coefficients without complaint.
+    """
+    k = coded.shape[1]
+    terms = quadratic_terms(k)
+    x = coded[usable]
+    n, p = len(x), len(terms)
+    if n <= p:
+        raise InputError(f"only {n} usable runs for a quadratic model with {p} coefficients; at least {p + 1} "
+                         f"are needed (with {p} the fit is saturated and says nothing about its error)",
+                         source=src, column=column)
+    radius = np.sum(x ** 2, axis=1)
+    # Printed (rounded) levels put a spherical design only *nearly* on its sphere: test the geometry,
+    # not the numerical rank, or the fit returns arbitrary coefficients from the rounding noise.
+    if np.ptp(radius) <= 0.01 * max(radius.max(), 1e-300):
+        why = ("every usable run lies at the same distance from the design centre, so the intercept and the "
+               "squared terms cannot be told apart")
+        n_centre = int(np.sum(point_types == "center")) if point_types is not None else 0
+        why += (f" (all {n_centre} centre run(s) failed); at least one centre run is needed" if n_centre
+                else "; the design needs at least one centre run")
+        raise InputError(f"the quadratic model cannot be estimated: {why}", source=src, column=column)
+    matrix = model_matrix(x, terms)
+    singular = np.linalg.svd(matrix, compute_uv=False)
+    rank = int(np.sum(singular > 1e-8 * singular[0]))
+    if rank < p:
+        raise InputError(f"the quadratic model cannot be estimated (rank {rank} of {p} terms): the usable runs "
+                         "do not vary enough to estimate every term (e.g. a factor at only two levels)",
+                         source=src, column=column)
+
+
 def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") -> ValidatedTable:
     """Read a material's table and run every transcription check; raises InputError."""
     src = str(Path(mat_cfg["data"]))
@@ -303,6 +383,9 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
             raise InputError(f"only {int(ok.sum())} usable runs for a quadratic model with {p} coefficients; "
                              f"at least {p + 1} are needed", source=src, column=r)
     coding, types = check_design(table, factors, mat_cfg["design"], src, f"materials.{material}", log_factors)
+    coded = coding.to_coded(model_units(table[factors].to_numpy(), factors, log_factors))
+    for r in responses:
+        require_estimable(coded, np.isfinite(table[r].to_numpy()), types, src, r)
     failed: dict[str, list] = {}
     for r in responses:
         ok = np.isfinite(table[r].to_numpy())
@@ -315,3 +398,55 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
                             f"(failed simulation){note}")
     return ValidatedTable(table=table, coding=coding, point_types=types, warnings=warnings, failed=failed,
                           log_factors=log_factors)
+
+
+_SLIP_WORDING = {
+    "decimal_shift": "with the decimal point shifted",
+    "transposition": "with two adjacent digits swapped",
+    "sign_lost": "with its sign lost",
+}
+
+
+def _shortest(value: float) -> str:
+    return np.format_float_positional(float(value), trim="-")
+
+
+def _repair_explains(flag: dict, share: float = 0.2) -> bool:
+    """The repair removes most of the run's miss: a large slip, not a digit shuffle of a noisy value."""
+    predicted = flag["predicted_from_other_runs"]
+    return abs(flag["suggested"] - predicted) <= share * abs(flag["found"] - predicted)
+
+
+def refuse_likely_typos(validated: ValidatedTable, material: str, mat_cfg: dict,
+                        base_dir: Path | str = ".") -> list[dict]:
+    """Stop on a response cell that is far off the other runs' fit *and* reads like a digit-level slip.
+
+    A value the user has confirmed under ``confirmed_values`` passes; the confirmed flags are
+    returned so they can still be shown.  Raises InputError naming the file, run and column.
+    """
+    from .transcription import likely_typos
+
+    src = str(Path(mat_cfg["data"]))
+    key = f"materials.{material}.confirmed_values"
+    spec = as_spec(mat_cfg, material)
+    runs = set(int(r) for r in validated.table["run"])
+    for run, column in spec.confirmed_values:
+        if column not in spec.response_names:
+            raise InputError(f"config key {key}: '{column}' is not a response of this material "
+                             f"(responses: {', '.join(spec.response_names)})", source=src)
+        if run not in runs:
+            raise InputError(f"config key {key}: run {run} is not in the table", source=src)
+    confirmed = set(spec.confirmed_values)
+    printed = read_printed(Path(base_dir) / mat_cfg["data"], validated.table)
+    # Stopping a run needs stronger evidence than the report's warning (family-wise 1 %, not 5 %).
+    flags = likely_typos(validated, spec, printed, family_alpha=0.01)
+    for flag in flags:
+        run, column = int(flag["run"]), flag["column"]
+        if (run, column) in confirmed or not _repair_explains(flag):
+            continue
+        found = printed.loc[validated.table["run"].to_numpy() == run, column].iloc[0]
+        raise InputError(f"{found} looks like {_shortest(flag['suggested'])} "
+                         f"{_SLIP_WORDING.get(flag['kind'], 'mistyped')}; fix the cell, or confirm the value "
+                         f"with confirmed_values: [{{run: {run}, column: {column}}}]",
+                         source=src, run=run, column=column)
+    return flags

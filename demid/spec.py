@@ -198,6 +198,12 @@ class MaterialSpec:
             return FALLBACK_TOLERANCE
         return min(self.scenarios, key=lambda sc: (-len(sc.observables), sc.tolerance)).tolerance
 
+    @cached_property
+    def confirmed_values(self) -> tuple[tuple[int, str], ...]:
+        """(run, response column) cells confirmed correct although they look like a typo, in config order."""
+        items = self._material.get("confirmed_values") or []
+        return tuple(dict.fromkeys((int(c["run"]), c["column"]) for c in items))
+
     def material_config(self) -> dict:
         """A copy of the validated ``materials`` entry, for the table validator (demid.data)."""
         return copy.deepcopy(self._material)

@@ -18,6 +18,23 @@ import pandas as pd
 from .design import Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, replicate_groups, term_name
 
 
+# Residuals smaller than this share of the response's magnitude are floating-point round-off
+# (an exact polynomial, a deterministic simulator's identical replicates), not scatter to test.
+ROUND_OFF = 1e-9
+
+
+def round_off_floor(y) -> float:
+    """Residual size below which a fit of ``y`` is exact to working precision."""
+    y = np.asarray(y, dtype=float)
+    return ROUND_OFF * float(np.max(np.abs(y))) if y.size else 0.0
+
+
+def round_off_only(residuals, y) -> bool:
+    """True when the residuals are round-off: their root mean square is below :func:`round_off_floor`."""
+    residuals = np.asarray(residuals, dtype=float)
+    return bool(residuals.size) and float(np.sqrt(np.mean(residuals ** 2))) <= round_off_floor(y)
+
+
 # --------------------------------------------------------------------------- results
 @dataclass(frozen=True)
 class FitStatistics:
@@ -57,11 +74,12 @@ class LackOfFitAnova:
     df_pure_error: int
     ss_total: float
     df_total: int
+    ss_floor: float = 0.0  # sums of squares at or below this are round-off: an F-ratio over them is undefined
 
     def _f(self, ss_a, df_a, ss_b, df_b):
         from scipy import stats
 
-        if df_a <= 0 or df_b <= 0 or ss_b <= 0:
+        if df_a <= 0 or df_b <= 0 or ss_b <= self.ss_floor * df_b:
             return np.nan, np.nan
         f = (ss_a / df_a) / (ss_b / df_b)
         return float(f), float(stats.f.sf(f, df_a, df_b))
@@ -73,6 +91,18 @@ class LackOfFitAnova:
     @property
     def lof_f(self):
         return self._f(self.ss_lof, self.df_lof, self.ss_pure_error, self.df_pure_error)
+
+    @property
+    def lof_note(self) -> str:
+        """Why lack of fit has no F-ratio, or '' when it has one."""
+        if self.df_pure_error <= 0:
+            return "undefined: no replicated runs, so no pure error to test lack of fit against"
+        if self.df_lof <= 0:
+            return "undefined: no degrees of freedom for lack of fit"
+        if self.ss_pure_error <= self.ss_floor * self.df_pure_error:
+            return ("undefined: pure error is zero (replicated runs give identical responses, as from a "
+                    "deterministic simulator), so lack of fit cannot be tested against it")
+        return ""
 
     def to_frame(self) -> pd.DataFrame:
         mf, mp = self.model_f
@@ -87,7 +117,8 @@ class LackOfFitAnova:
         df = pd.DataFrame(rows, columns=["source", "sum_sq", "df", "F", "p_value"])
         df["mean_sq"] = np.where(df["df"] > 0, df["sum_sq"] / df["df"].where(df["df"] > 0, 1), np.nan)
         df.insert(0, "response", self.response)
-        return df[["response", "source", "df", "sum_sq", "mean_sq", "F", "p_value"]]
+        df["note"] = np.where(df["source"] == "Lack of fit", self.lof_note, "")
+        return df[["response", "source", "df", "sum_sq", "mean_sq", "F", "p_value", "note"]]
 
 
 @dataclass(frozen=True)
@@ -220,6 +251,7 @@ class SurrogateFit:
             ss_lof=sse - ss_pe, df_lof=df_res - df_pe,
             ss_pure_error=ss_pe, df_pure_error=df_pe,
             ss_total=sst, df_total=self.n_runs - 1,
+            ss_floor=round_off_floor(self.y) ** 2,
         )
 
     def statistics(self) -> FitStatistics:
@@ -244,6 +276,10 @@ class SurrogateFit:
         with warnings.catch_warnings(), np.errstate(divide="ignore", invalid="ignore"):
             warnings.simplefilter("ignore", RuntimeWarning)
             frame = self.results.get_influence().summary_frame()
+        if round_off_only(self.results.resid.to_numpy(), self.y):
+            # 0/0: residuals and their scale are both round-off, their ratio is noise (up to 1e136)
+            frame["student_resid"] = np.nan
+            frame["cooks_d"] = np.nan
         out = pd.DataFrame({
             "response": self.response,
             "run": self.runs,
@@ -282,14 +318,19 @@ class SurrogateFit:
                 sw, sp = nan, nan
             vifs = [variance_inflation_factor(exog, j) for j in range(1, exog.shape[1])]
             infl = self.influence()
+            if round_off_only(res.resid.to_numpy(), self.y):  # tests of round-off say nothing about the fit
+                bp_lm = bp_p = reset_f = reset_p = sw = sp = nan
+            max_cooks = float(np.nanmax(infl["cooks_d"])) if infl["cooks_d"].notna().any() else nan
+            max_student = (float(np.nanmax(np.abs(infl["student_resid"])))
+                           if infl["student_resid"].notna().any() else nan)
         return Diagnostics(
             response=self.response,
             breusch_pagan_lm=float(bp_lm), breusch_pagan_p=float(bp_p),
             reset_f=reset_f, reset_p=reset_p,
             shapiro_w=float(sw), shapiro_p=float(sp),
             max_vif=float(np.nanmax(vifs)) if vifs else nan,
-            max_cooks_d=float(np.nanmax(infl["cooks_d"])),
-            max_abs_student_resid=float(np.nanmax(np.abs(infl["student_resid"]))),
+            max_cooks_d=max_cooks,
+            max_abs_student_resid=max_student,
         )
 
     # ---- coefficients in coded and model (actual) units

@@ -16,6 +16,9 @@ printed = read_printed(snakemake.input.data, validated.table)  # noqa: F821
 checks = check_material(validated, spec, printed)
 typos = likely_typos(validated, spec, printed)
 for flag in typos:
+    if (int(flag["run"]), flag["column"]) in spec.confirmed_values:
+        flag["confirmed"] = True
+        flag["message"] += " (confirmed correct under confirmed_values)"
     print(f"warning: {flag['message']}", file=sys.stderr)
 summary = validated.summary(spec.name)
 summary["warnings"] += [flag["message"] for flag in typos]

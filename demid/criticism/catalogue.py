@@ -15,6 +15,7 @@ import numpy as np
 from scipy import stats
 
 from ..design import cubic_terms, term_name
+from ..surrogate import round_off_only
 from .aliasing import _term_classes
 from .models import _orth, _residualize
 
@@ -154,7 +155,7 @@ class _Round:
         spec = m.spec
         df = m.df_resid
         n = len(m.y)
-        if df < 3:
+        if df < 3 or round_off_only(m.resid_w, m.z):  # an exact fit: round-off is not evidence
             return
         eps = rng.standard_normal((n, n_null))
         q = _orth(m.xw)

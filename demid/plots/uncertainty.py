@@ -33,10 +33,14 @@ def tolerance_sweep_figure(frame: pd.DataFrame, title: str, *, factor_labels: di
         for ax, factor in zip(axes[1:], factors):
             sub = rows[rows["factor"] == factor].sort_values("tolerance")
             ax.plot(100 * sub["tolerance"], sub["width"], "o-", color=color, label=label)
-    axes[0].set_yscale("log")
+    if (frame["feasible_fraction_pct"] > 0).any():
+        axes[0].set_yscale("log")
+        axes[0].legend(fontsize="small")
+    else:  # a log axis of all zeros cannot be drawn; say what the empty panel means
+        axes[0].text(0.5, 0.5, "no admissible point at any swept tolerance:\nthe targets are out of reach",
+                     transform=axes[0].transAxes, ha="center", va="center")
     axes[0].set_xlabel("tolerance ε [%]")
     axes[0].set_ylabel("feasible fraction Φ(ε) [% of Ω]")
-    axes[0].legend(fontsize="small")
     for ax, factor in zip(axes[1:], factors):
         ax.set_xlabel("tolerance ε [%]")
         ax.set_ylabel(f"admissible width of {factor_labels.get(factor, factor)}")

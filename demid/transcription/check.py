@@ -13,7 +13,8 @@ from ..errors import InputError
 from ..spec import as_spec
 from .engine import (_ALPHA_SLACK, _DesignFit, _coded_to_actual_matrix, _design_levels, _evaluate_designs,
                      _lack_of_fit_p, _levels_for_cell, _numeric, _runs)
-from .printed import _cell_texts, _format, _irregularity, _jsonable, _parse_published, _precision_elsewhere
+from .printed import (_agreement, _cell_texts, _format, _irregularity, _jsonable, _parse_published,
+                      _precision_elsewhere)
 from .typos import _KIND_RANK, single_cell_slips
 
 
@@ -128,7 +129,8 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     table_design = _DesignFit(table_coding.to_coded(z[fit_rows]), terms, table_coding, need_actual)
     base = _lack_of_fit_p(table_design.evaluate(y[:, None], coef_index))
     reproduced = {name: float(base[name][0]) for name in targets}
-    agrees = {name: bool(targets[name].agrees(reproduced[name])) for name in targets}
+    base_agrees, via_inputs = _agreement(targets, base)
+    agrees = {name: bool(base_agrees[name][0]) for name in targets}
     published_values = {name: t.value for name, t in targets.items()}
     printed_text = {name: t.text for name, t in targets.items()}
     n_pub = len(targets)
@@ -139,8 +141,10 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
                                    explained, message, printed_text, n_candidates)
 
     if n_agree == n_pub:
+        note = (f" ({', '.join(sorted(via_inputs))} as computed from the source's own printed, rounded "
+                "inputs)" if via_inputs else "")
         return result(True, [], None, f"the table reproduces all {n_pub} published statistics "
-                                      f"of '{response}' to the printed decimals")
+                                      f"of '{response}' to the printed decimals{note}")
 
     texts = _cell_texts(table, printed, [*factors, response], source)
     # (row, column, found_text, found, suggested_text, suggested, kind, _irregularity)
@@ -279,9 +283,10 @@ def _rank_repairs(records: list[tuple], blocks: list[dict], targets: dict, colum
     values = _lack_of_fit_p({key: np.concatenate([np.atleast_1d(b[key]) for b in blocks]) for key in blocks[0]})
     restores = np.zeros(len(records), dtype=int)
     misfit = np.zeros(len(records))
+    candidate_agrees, _ = _agreement(targets, values)
     for name in targets:
-        restores += targets[name].agrees(values[name])
-        misfit += targets[name].misfit(values[name])
+        restores += candidate_agrees[name]
+        misfit += np.where(candidate_agrees[name], 0.0, targets[name].misfit(values[name]))
     # Round the continuous tie-break so that symmetric repairs fall through to kind, row and column.
     order = np.lexsort((
         [column_order[r[1]] for r in records],

@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from decimal import Decimal, InvalidOperation
+from itertools import product
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -216,6 +217,60 @@ def _jsonable(value):
     if isinstance(value, (float, np.floating)):
         return float(value) if math.isfinite(value) else None
     return value
+
+
+# A statistic the source computed from numbers it printed rounded: (statistic, printed inputs,
+# value from the inputs and the table's degrees of freedom).  Each function is monotonic in every input,
+# so its range over the inputs' rounding intervals is spanned by the corners.
+def _f_ratio(ss_a, ss_b, df_a, df_b):
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where((df_a > 0) & (df_b > 0) & (ss_b > 0), (ss_a / df_a) / (ss_b / df_b), np.nan)
+
+
+def _f_tail(f, df_a, df_b):
+    from scipy import stats
+
+    with np.errstate(invalid="ignore"):
+        return np.where((df_a > 0) & (df_b > 0) & np.isfinite(f), stats.f.sf(f, np.maximum(df_a, 1),
+                                                                           np.maximum(df_b, 1)), np.nan)
+
+
+_FROM_PRINTED = (
+    ("lof_f", ("ss_lof", "ss_pure_error"), lambda a, b, v: _f_ratio(a, b, v["_df_lof"], v["_df_pe"])),
+    ("lof_p", ("lof_f",), lambda f, v: _f_tail(f, v["_df_lof"], v["_df_pe"])),
+    ("lof_p", ("ss_lof", "ss_pure_error"),
+     lambda a, b, v: _f_tail(_f_ratio(a, b, v["_df_lof"], v["_df_pe"]), v["_df_lof"], v["_df_pe"])),
+    ("r2", ("ss_model", "ss_total"), lambda a, b, v: np.full(np.shape(v["_df_pe"]), a / b if b > 0 else np.nan)),
+    ("r2", ("ss_residual", "ss_total"),
+     lambda a, b, v: np.full(np.shape(v["_df_pe"]), 1.0 - a / b if b > 0 else np.nan)),
+)
+
+
+def _agreement(targets: dict[str, PrintedValue], values: dict[str, np.ndarray]) -> tuple[dict, set]:
+    """Per statistic, per hypothesis: does the printed value agree?  A statistic agrees when the refit
+    rounds to it, or when it is what the source's own printed, rounded inputs give (any value of the
+    inputs within their rounding) and those inputs agree with the refit.  Returns (agrees, names
+    that agree only through their printed inputs, for any hypothesis)."""
+    agrees = {name: np.atleast_1d(targets[name].agrees(values[name])) for name in targets}
+    via_inputs: set[str] = set()
+    for name, inputs, function in _FROM_PRINTED:
+        if name not in targets or targets[name].relation != "=" or any(
+                i not in targets or targets[i].relation != "=" for i in inputs):
+            continue
+        inputs_ok = np.logical_and.reduce([agrees[i] for i in inputs])
+        corners = np.array([function(*[targets[i].value + sign * targets[i].half_width
+                                       for i, sign in zip(inputs, signs)], values)
+                            for signs in product((-1.0, 1.0), repeat=len(inputs))], dtype=float)
+        lo = np.min(np.where(np.isnan(corners), np.inf, corners), axis=0)
+        hi = np.max(np.where(np.isnan(corners), -np.inf, corners), axis=0)
+        target = targets[name]
+        slack = target.half_width * (1 + 1e-6)
+        consistent = (target.value + slack >= lo) & (target.value - slack <= hi)
+        extra = inputs_ok & consistent & ~agrees[name]
+        if np.any(extra):
+            via_inputs.add(name)
+        agrees[name] = agrees[name] | extra
+    return agrees, via_inputs
 
 
 def _format(value: float) -> str:

@@ -2,7 +2,7 @@ import sys
 from pathlib import Path
 
 from demid.config import check_semantics, validate_schema
-from demid.data import validate_material
+from demid.data import refuse_likely_typos, validate_material
 from demid.errors import InputError
 from demid.sampling import uses_grid
 from demid.spec import MaterialSpec
@@ -18,7 +18,7 @@ try:
     config.update(_checked)
     check_semantics(config, source=CONFIG_SOURCE)
     for _name, _material in config["materials"].items():
-        validate_material(_name, _material)
+        refuse_likely_typos(validate_material(_name, _material), _name, _material)
 except InputError as err:
     sys.exit(f"demid: error: {err}")
 
@@ -131,9 +131,10 @@ def report_figures():
     return out
 
 
-def config_json():
+def config_json(wildcards):
     import json
 
+    # A function, not a string: Snakemake would read braces in labels or units as wildcards.
     return json.dumps(config)  # keeps the config order of materials and responses
 
 

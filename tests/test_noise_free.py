@@ -1,0 +1,68 @@
+"""Deterministic simulators: round-off residuals are never a finding; lack of fit without pure error is undefined."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from demid.criticism import criticize
+from demid.design import ccd_points, model_matrix, quadratic_terms
+from demid.surrogate import fit_response
+
+
+def _exact_table(k, seed, scale):
+    """An exact quadratic on a CCD in actual units; the centre runs are identical (a deterministic code)."""
+    rng = np.random.default_rng(seed)
+    alpha = (2 ** k) ** 0.25
+    coded = ccd_points(k, alpha, 5)
+    lower, upper = rng.uniform(0.01, 1, k), rng.uniform(2, 20, k)
+    actual = coded * (upper - lower) / (2 * alpha) + (lower + upper) / 2
+    beta = rng.normal(0, 1, len(quadratic_terms(k))) * scale
+    beta[0] = scale * rng.uniform(5, 50)
+    y = model_matrix(actual, quadratic_terms(k)) @ beta  # exact in actual units: round-off only
+    order = rng.permutation(len(coded))
+    table = pd.DataFrame(actual[order], columns=[f"x{i + 1}" for i in range(k)])
+    table.insert(0, "run", np.arange(1, len(coded) + 1))
+    table["y"] = y[order]
+    return table
+
+
+@pytest.mark.parametrize("k,seed,scale", [(2, 1, 1.0), (2, 2, 1e6), (3, 3, 1e-4), (3, 4, 250.0)])
+def test_exact_quadratic_gives_no_findings_and_undefined_lack_of_fit(k, seed, scale):
+    table = _exact_table(k, seed, scale)
+    factors = [f"x{i + 1}" for i in range(k)]
+    fit = fit_response(table, factors, "y", alpha=(2 ** k) ** 0.25)
+    st = fit.statistics()
+    assert np.isnan(st.lof_f) and np.isnan(st.lof_p)  # neither infinite nor a huge number
+    anova = fit.anova().to_frame().set_index("source")
+    assert "pure error is zero" in anova.loc["Lack of fit", "note"]
+    infl = fit.influence()
+    assert not np.any(np.abs(infl["student_resid"].to_numpy()) > 1e3)  # no 1e136 from 0/0
+    diag = fit.diagnostics()
+    assert np.isnan(diag.max_abs_student_resid)
+    result = criticize(table, factors, "y", n_null=199)
+    assert result.to_frame().empty
+    assert result.to_json()["baseline"]["lof_f"] is None  # undefined, not infinite
+
+
+@pytest.mark.parametrize("seed", [5, 6])
+def test_a_real_defect_on_an_otherwise_exact_surface_is_still_found(seed):
+    """The floor is scale-aware, not a blanket silence: one run off an exact surface is named."""
+    table = _exact_table(2, seed, 10.0)
+    spread = float(np.ptp(table["y"]))
+    table.loc[table["run"] == 3, "y"] += 0.05 * spread
+    result = criticize(table, ["x1", "x2"], "y", n_null=199)
+    frame = result.to_frame()
+    assert not frame.empty
+    assert frame.iloc[0]["cause"] == "outlier" and int(frame.iloc[0]["detail"]) == 3
+
+
+def test_noisy_replicates_keep_their_lack_of_fit_test():
+    table = _exact_table(2, 7, 1.0)
+    rng = np.random.default_rng(7)
+    table["y"] += 0.01 * np.ptp(table["y"]) * rng.standard_normal(len(table))
+    st = fit_response(table, ["x1", "x2"], "y", alpha=2 ** 0.5).statistics()
+    assert np.isfinite(st.lof_f) and 0 <= st.lof_p <= 1
+    note = fit_response(table, ["x1", "x2"], "y", alpha=2 ** 0.5).anova().lof_note
+    assert note == ""

@@ -1,0 +1,317 @@
+"""Tables and configs nobody here made: valid designs pass, every bad input is one clear line."""
+
+from __future__ import annotations
+
+import itertools
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from demid.config import load_config, validate_schema
+from demid.data import read_table, validate_material
+from demid.design import ccd_points, model_matrix, quadratic_terms
+from demid.errors import InputError
+
+REPO = Path(__file__).resolve().parent.parent
+
+
+def _write_design(tmp_path, coded, lower, upper, design, seed=0, alpha=None, name="t.csv", extra_cols=None):
+    """Actual-unit table from coded points; the outermost coded level maps onto the bounds."""
+    rng = np.random.default_rng(seed)
+    coded = np.asarray(coded, float)
+    k = coded.shape[1]
+    reach = np.abs(coded).max()
+    lower, upper = np.asarray(lower, float), np.asarray(upper, float)
+    centre, unit = (lower + upper) / 2, (upper - lower) / (2 * reach)
+    actual = coded * unit + centre
+    beta = rng.normal(0, 3, len(quadratic_terms(k)))
+    beta[0] = 50
+    y = model_matrix(coded, quadratic_terms(k)) @ beta + 0.2 * rng.standard_normal(len(coded))
+    order = rng.permutation(len(coded))
+    names = [f"x{i + 1}" for i in range(k)]
+    lines = ["run," + ",".join(names) + ",y"]
+    for run, i in enumerate(order, start=1):
+        lines.append(f"{run}," + ",".join(f"{v:.6f}" for v in actual[i]) + f",{y[i]:.3f}")
+    path = tmp_path / name
+    path.write_text("\n".join(lines) + "\n")
+    cfg = {"data": str(path), "design": design,
+           "factors": {f: {"lower": float(lo), "upper": float(hi)} for f, lo, hi in zip(names, lower, upper)},
+           "responses": {"y": {}}}
+    return cfg, coded[order], unit, centre
+
+
+def _full_factorial(k, levels):
+    return np.array(list(itertools.product(levels, repeat=k)), dtype=float)
+
+
+CASES = {
+    "3x3 factorial": (_full_factorial(2, [-1, 0, 1]), {"type": "factorial", "center_runs": 1}),
+    "3x3x3 factorial": (_full_factorial(3, [-1, 0, 1]), {"type": "factorial", "center_runs": 1}),
+    "face-centred CCD, one centre run": (ccd_points(2, 1.0, 1), {"type": "ccd", "alpha": 1.0, "center_runs": 1}),
+    "face-centred 3-factor CCD, one centre run": (ccd_points(3, 1.0, 1),
+                                                  {"type": "ccd", "alpha": 1.0, "center_runs": 1}),
+    "3-factor CCD, one centre run": (ccd_points(3, 1.68179, 1), {"type": "ccd", "alpha": 1.68179, "center_runs": 1}),
+    "3-factor CCD, two centre runs": (ccd_points(3, 1.68179, 2), {"type": "ccd", "alpha": 1.68179, "center_runs": 2}),
+    "4-factor CCD, one centre run": (ccd_points(4, 2.0, 1), {"type": "ccd", "alpha": 2.0, "center_runs": 1}),
+    "4-factor CCD, two centre runs": (ccd_points(4, 2.0, 2), {"type": "ccd", "alpha": 2.0, "center_runs": 2}),
+    "5-factor CCD, two centre runs": (ccd_points(5, 2.37841, 2), {"type": "ccd", "alpha": 2.37841, "center_runs": 2}),
+    "6-factor CCD, one centre run": (ccd_points(6, 2.82843, 1), {"type": "ccd", "alpha": 2.82843, "center_runs": 1}),
+    "2-factor CCD, two centre runs": (ccd_points(2, 1.41421, 2), {"type": "ccd", "alpha": 1.41421, "center_runs": 2}),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_valid_designs_validate_and_are_coded_by_their_geometry(tmp_path, case):
+    coded, design = CASES[case]
+    k = coded.shape[1]
+    lower = np.linspace(0.1, 2.0, k)
+    cfg, coded_order, unit, centre = _write_design(tmp_path, coded, lower, lower * 7 + 1, design, seed=k)
+    vt = validate_material("m", cfg)
+    # the coding recovers the design's own coded points (factorial points at +-1, centre at 0)
+    got = vt.coding.to_coded(vt.table[list(cfg["factors"])].to_numpy())
+    assert np.allclose(got, coded_order[np.argsort(np.arange(len(coded_order)))], atol=1e-4)
+    assert int(np.sum(vt.point_types == "center")) == design["center_runs"]
+
+
+def test_mistyped_factor_cell_is_located_not_absorbed_into_the_coding(tmp_path):
+    cfg, _, _, _ = _write_design(tmp_path, ccd_points(3, 1.68179, 1), [0.1, 1, 10], [0.5, 5, 50],
+                                 {"type": "ccd", "alpha": 1.68179, "center_runs": 1})
+    path = Path(cfg["data"])
+    lines = path.read_text().splitlines()
+    cells = lines[4].split(",")
+    cells[2] = f"{float(cells[2]) * 1.1:.6f}"  # off every level, still inside the bounds
+    lines[4] = ",".join(cells)
+    path.write_text("\n".join(lines) + "\n")
+    with pytest.raises(InputError, match=r"run 4, column 'x2': value .* is not a level of the declared ccd"):
+        validate_material("m", cfg)
+
+
+@pytest.mark.parametrize("k,alpha", [(2, 1.41421), (3, 1.73205)])
+def test_spherical_ccd_whose_centre_runs_all_failed_is_refused(tmp_path, k, alpha):
+    cfg, _, _, _ = _write_design(tmp_path, ccd_points(k, alpha, 3), [0.1] * k, [0.9] * k,
+                                 {"type": "ccd", "alpha": alpha, "center_runs": 3})
+    path = Path(cfg["data"])
+    lines = path.read_text().splitlines()
+    out = [lines[0] + ",status"]
+    for line in lines[1:]:
+        cells = line.split(",")
+        centre = all(abs(float(v) - 0.5) < 1e-9 for v in cells[1:1 + k])
+        out.append(",".join(cells[:-1] + ["", "failed"]) if centre else line + ",ok")
+    path.write_text("\n".join(out) + "\n")
+    with pytest.raises(InputError, match=r"column 'y': the quadratic model cannot be estimated.*all 3 centre "
+                                         r"run\(s\) failed\); at least one centre run is needed"):
+        validate_material("m", cfg)
+
+
+def _tiny(tmp_path, rows, header="run,x1,x2,y,status"):
+    path = tmp_path / "t.csv"
+    path.write_text(header + "\n" + "\n".join(rows) + "\n")
+    return path
+
+
+def test_failed_run_with_a_value_left_in_its_cell_is_an_error(tmp_path):
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok", "2,0.2,2,7.5,failed", "3,0.3,3,,failed"])
+    with pytest.raises(InputError, match=r"t\.csv, run 2, column 'y': the run is marked 'failed' in column "
+                                         r"'status' but this cell holds '7.5'"):
+        read_table(path, ["x1", "x2"], ["y"])
+
+
+def test_partial_failure_is_written_as_nan_with_status_ok(tmp_path):
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok", "2,0.2,2,NaN,ok"])
+    table, warnings = read_table(path, ["x1", "x2"], ["y"])
+    assert np.isnan(table.loc[table["run"] == 2, "y"].iloc[0]) and "treated as a failed simulation" in warnings[0]
+
+
+def test_ambiguous_thousands_separator_is_not_silently_read_as_decimal_comma(tmp_path):
+    path = tmp_path / "t.csv"
+    path.write_text('run;x1;x2;y\n1;0.1;1;4,576\n')
+    with pytest.raises(InputError) as err:
+        read_table(path, ["x1", "x2"], ["y"])
+    message = str(err.value)
+    assert "run 1, column 'y'" in message and "thousands separator (4576)" in message
+    assert "decimal comma (4.576)" in message
+    path.write_text('run;x1;x2;y\n1;0.1;1;4,57\n')  # not ambiguous: a decimal comma
+    with pytest.raises(InputError, match=r"a decimal comma; expected a decimal point, e\.g\. '4\.57'"):
+        read_table(path, ["x1", "x2"], ["y"])
+
+
+def test_line_numbers_count_comment_and_blank_lines(tmp_path):
+    path = _tiny(tmp_path, ["# measured 2024-03-01", "1,0.1,1,5.0,ok", "", "# second batch", "2,0.2,2,7.5"])
+    with pytest.raises(InputError, match=r"line 6 has 4 cells, the header has 5"):
+        read_table(path, ["x1", "x2"], ["y"])
+    path = _tiny(tmp_path, ["# note", "1,0.1,1,5.0,ok", "# note", "1,0.2,2,7.5,ok"])
+    with pytest.raises(InputError, match=r"duplicate run number \(lines 3 and 5\)"):
+        read_table(path, ["x1", "x2"], ["y"])
+
+
+# ----------------------------------------------------------------------------- config checks
+def _demo_config():
+    return yaml.safe_load((REPO / "config.yaml").read_text(encoding="utf-8"))
+
+
+def test_numbers_written_1e_minus_6_are_read_as_numbers():
+    raw = _demo_config()
+    raw["materials"]["poraver"]["responses"]["aor"]["sigma"] = "1e-6"
+    raw["grid_points"] = "1e3"
+    checked = validate_schema(raw)
+    assert checked["materials"]["poraver"]["responses"]["aor"]["sigma"] == 1e-6
+    assert checked["grid_points"] == 1000 and isinstance(checked["grid_points"], int)
+    raw["materials"]["poraver"]["responses"]["aor"]["sigma"] = "about 1e-6"
+    with pytest.raises(InputError, match="responses.aor.sigma"):
+        validate_schema(raw)
+
+
+def _load(tmp_path, mutate, encoding="utf-8"):
+    raw = _demo_config()
+    mutate(raw)
+    path = tmp_path / "c.yaml"
+    path.write_text(yaml.safe_dump(raw, allow_unicode=True), encoding=encoding, errors="replace")
+    return load_config(path, base_dir=REPO)
+
+
+def test_cp1252_config_is_one_clear_line(tmp_path):
+    with pytest.raises(InputError, match=r"c\.yaml: not UTF-8 text \(byte \d+\); save the config as UTF-8"):
+        _load(tmp_path, lambda c: None, encoding="cp1252")
+
+
+@pytest.mark.parametrize("key,value,match", [
+    ("grid_points", 20001, r"grid_points: .*20001 is greater than the maximum of 4096"),
+    ("grid_points", 10 ** 7, r"grid_points: .*greater than the maximum"),
+    ("grid_points_3d", 400, r"grid_points_3d: .*greater than the maximum of 256"),
+])
+def test_grid_sizes_beyond_memory_are_rejected(tmp_path, key, value, match):
+    with pytest.raises(InputError, match=match):
+        _load(tmp_path, lambda c: c.update({key: value}))
+
+
+def test_material_grid_override_beyond_memory_is_rejected(tmp_path):
+    def mutate(c):
+        c["materials"]["paste"]["grid_points"] = 300  # 3 factors: 27 million points
+    with pytest.raises(InputError, match=r"materials\.paste\.grid_points: 300 gives 27,000,000 evaluation points"):
+        _load(tmp_path, mutate)
+
+
+@pytest.mark.parametrize("value", ["", "  ", "/"])
+def test_results_dir_cannot_be_empty_or_root(tmp_path, value):
+    with pytest.raises(InputError, match="results_dir"):
+        _load(tmp_path, lambda c: c.update({"results_dir": value}))
+
+
+def test_pareto_needs_two_different_responses(tmp_path):
+    def mutate(c):
+        c["materials"]["paste"]["pareto"] = {"error_of": "D", "minimise": "D", "max_error": 0.02}
+    with pytest.raises(InputError, match=r"materials\.paste\.pareto: error_of and minimise are both 'D'"):
+        _load(tmp_path, mutate)
+
+
+@pytest.mark.parametrize("where,label", [
+    (("factors", "mu_r", "label"), r"$\mu_{r$"),
+    (("responses", "d5", "unit"), r"$\mathrm{mm$"),
+    (("responses", "d10", "label"), r"$d_{10} \alpah$"),
+])
+def test_mathtext_typo_in_a_label_names_the_config_key(tmp_path, where, label):
+    def mutate(c):
+        c["materials"]["mortar"][where[0]][where[1]][where[2]] = label
+    key = re.escape(f"materials.mortar.{'.'.join(where)}")
+    with pytest.raises(InputError, match=rf"config key {key}: .* is not valid matplotlib mathtext"):
+        _load(tmp_path, mutate)
+
+
+def test_valid_mathtext_and_dollar_free_labels_pass(tmp_path):
+    def mutate(c):
+        c["materials"]["mortar"]["factors"]["mu_r"]["label"] = r"$\mu_{r}$ (M)"
+        c["materials"]["mortar"]["responses"]["d5"]["unit"] = "US$ 5"
+    assert "mortar" in _load(tmp_path, mutate)["materials"]
+
+
+def test_readme_example_config_validates_on_the_shipped_table(tmp_path):
+    text = (REPO / "README.md").read_text(encoding="utf-8")
+    block = re.search(r"```yaml\n(.*?)```", text, re.S).group(1)
+    path = tmp_path / "readme.yaml"
+    path.write_text(block, encoding="utf-8")
+    config = load_config(path, base_dir=REPO)
+    for name, mat in config["materials"].items():
+        validate_material(name, mat, base_dir=REPO)
+
+
+# ----------------------------------------------------------------------------- command line
+def _cli(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "demid", *args], capture_output=True, text=True, cwd=cwd)
+
+
+def test_criticize_refuses_a_factor_at_two_levels(tmp_path):
+    coded = _full_factorial(2, [-1, 1])
+    coded = np.vstack([coded, coded, [[0, -1], [0, 1]]])  # x1 never at a third level among 10 runs
+    cfg, _, _, _ = _write_design(tmp_path, coded, [0.1, 1], [0.9, 9], {"type": "custom"})
+    proc = _cli("criticize", "--data", cfg["data"], "--factors", "x1,x2", "--response", "y",
+                "--out", str(tmp_path / "o.json"))
+    assert proc.returncode == 2
+    assert "cannot be estimated (rank 5 of 6 terms)" in proc.stderr
+
+
+def test_criticize_and_fit_refuse_a_saturated_fit(tmp_path):
+    coded = ccd_points(2, 1.41421, 0)[:6]  # 4 factorial + 2 axial runs: 6 runs for 6 coefficients
+    cfg, _, _, _ = _write_design(tmp_path, coded, [0.1, 1], [0.9, 9], {"type": "custom"})
+    for command in (["criticize", "--response", "y"], ["fit", "--responses", "y"]):
+        proc = _cli(*command, "--data", cfg["data"], "--factors", "x1,x2", "--out", str(tmp_path / "o.json"))
+        assert proc.returncode == 2, proc.stderr
+        assert re.fullmatch(r"demid: error: .*t\.csv, column 'y': only 6 usable runs for a quadratic model with 6 "
+                            r"coefficients.*saturated.*\n", proc.stderr)
+        assert not (tmp_path / "o.json").exists()
+
+
+def test_criticize_refuses_a_rank_deficient_fit(tmp_path):
+    coded = ccd_points(2, 1.41421, 0)  # rotatable CCD without centre runs: every run on one circle
+    cfg, _, _, _ = _write_design(tmp_path, coded, [0.1, 1], [0.9, 9], {"type": "custom"})
+    proc = _cli("criticize", "--data", cfg["data"], "--factors", "x1,x2", "--response", "y",
+                "--out", str(tmp_path / "o.json"))
+    assert proc.returncode == 2
+    assert "cannot be estimated: every usable run lies at the same distance from the design centre" in proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert not (tmp_path / "o.json").exists()
+
+
+def test_fit_and_criticize_accept_design(tmp_path):
+    coded = _full_factorial(2, [-1, 0, 1])
+    coded = np.vstack([coded, np.zeros((2, 2))])  # 3x3 factorial plus two more centre runs
+    cfg, _, _, _ = _write_design(tmp_path, coded, [0.1, 1], [0.9, 9], {"type": "factorial"})
+    out = tmp_path / "fit.json"
+    proc = _cli("fit", "--data", cfg["data"], "--factors", "x1,x2", "--responses", "y", "--design", "factorial",
+                "--out", str(out))
+    assert proc.returncode == 0, proc.stderr
+    coef = json.loads(out.read_text())["y"]["coefficients_coded"]
+    # factorial coding: the table's extremes are at +-1, so the coded quadratic equals the generator's
+    rng = np.random.default_rng(0)  # the generator's seed in _write_design
+    beta = rng.normal(0, 3, 6)
+    beta[0] = 50
+    assert coef["x1^2"] == pytest.approx(beta[4], abs=0.6) and coef["x1:x2"] == pytest.approx(beta[3], abs=0.6)
+    out = tmp_path / "crit.json"
+    proc = _cli("criticize", "--data", cfg["data"], "--factors", "x1,x2", "--response", "y", "--design", "factorial",
+                "--out", str(out))
+    assert proc.returncode == 0, proc.stderr
+    assert out.exists()
+
+
+def test_one_factor_study_is_refused_at_validation(tmp_path):
+    def mutate(c):
+        del c["materials"]["mortar"]["factors"]["gamma"]
+        del c["materials"]["mortar"]["reference_point"]
+    with pytest.raises(InputError, match=r"config key materials\.mortar\.factors: only one factor \('mu_r'\); "
+                                         r"demid needs at least two"):
+        _load(tmp_path, mutate)
+
+
+def test_material_without_any_target_is_refused_at_validation(tmp_path):
+    def mutate(c):
+        c["materials"] = {"paste": c["materials"]["paste"]}
+        del c["materials"]["paste"]["responses"]["D"]["target"]
+        del c["materials"]["paste"]["scenarios"]
+        del c["materials"]["paste"]["pareto"]
+    with pytest.raises(InputError, match=r"config key materials\.paste\.responses: no response has a target"):
+        _load(tmp_path, mutate)
