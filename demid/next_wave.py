@@ -1,0 +1,213 @@
+"""The next wave of simulations: a refocused search box and the runs to simulate in it.
+
+After a first design, the global quadratic locates the admissible set only roughly.  The next
+wave refocuses (history-matching style) on the *plausible* set of one scenario, i.e. the
+robust set of :mod:`demid.uncertainty` (surrogate standard error and measurement sigma
+included, ``robust_z`` standard deviations), computed once by the uncertainty step:
+
+* **next domain** = the plausible set's spans, widened by ``margin`` times the current range
+  on each side, clipped to the current range (search units: log10 for log-scale factors).
+  With an empty plausible set nothing can be refocused and the current range is kept.
+* **design runs**: a small design in that box, chosen greedily (D-optimal for the full
+  quadratic) from the 5-level grid {-1, -1/2, 0, 1/2, 1}^k of the box (3 levels above three
+  factors), given the earlier runs that already lie in the box, so that the box's own
+  quadratic is well determined by earlier + new runs together.
+* **separating runs**: when the criticism named a missing third-order term that the design
+  cannot tell apart from others (an alias set), runs in the box that make each member
+  separately estimable (:func:`demid.criticism.separating_runs`, in the box's coding).
+
+The next wave is an ordinary study: bounds = next domain, data = earlier runs inside it plus
+the new runs, ``design: {type: custom}``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from itertools import product
+
+import numpy as np
+import pandas as pd
+
+from .admissibility import Domain
+from .design import model_matrix, parse_term, quadratic_terms, term_name
+from .errors import InputError
+
+DOMAIN_COLUMNS = ["material", "factor", "lower", "upper"]
+PURPOSE_DESIGN = "design: D-optimal quadratic design in the refocused box"
+PURPOSE_SEPARATE = "separate aliased terms {terms} ({responses})"
+
+
+@dataclass
+class NextWave:
+    """Next domain (one row per factor), proposals and a sentence for the report."""
+
+    domain: pd.DataFrame
+    runs: pd.DataFrame
+    reason: str
+
+
+def refocus_scenario(material_cfg: dict) -> str:
+    """The scenario the next wave refocuses on: ``next_runs.scenario``, else the one with the most
+    observables (ties: the smallest tolerance, then config order)."""
+    scenarios = material_cfg.get("scenarios") or {}
+    chosen = (material_cfg.get("next_runs") or {}).get("scenario") or ""
+    if chosen:
+        return chosen
+    return min(scenarios, key=lambda s: (-len(scenarios[s]["observables"]), scenarios[s]["tolerance"],
+                                         list(scenarios).index(s)))
+
+
+def check_next_runs(config: dict, source: str = "config") -> None:
+    """Cross-references of ``next_runs``; raises InputError naming the key."""
+    for name, mat in config["materials"].items():
+        nr = mat.get("next_runs")
+        if not nr:
+            continue
+        key = f"materials.{name}.next_runs"
+        scenarios = mat.get("scenarios") or {}
+        if not scenarios:
+            raise InputError(f"config key {key}: needs at least one scenario (the set the next wave refocuses on)",
+                             source=source)
+        if nr.get("scenario") and nr["scenario"] not in scenarios:
+            raise InputError(f"config key {key}.scenario: unknown scenario '{nr['scenario']}' "
+                             f"(known: {', '.join(scenarios)})", source=source)
+
+
+def next_box(domain: Domain, plausible_lower, plausible_upper, margin: float) -> tuple[np.ndarray, np.ndarray]:
+    """Plausible spans widened by ``margin`` x range per side and clipped, in search units."""
+    lo_u, hi_u = domain.search_bounds()
+    plausible_lower = np.asarray(plausible_lower, dtype=float)
+    if not np.isfinite(plausible_lower).all():
+        return lo_u, hi_u
+    p_lo = domain.to_search(np.asarray(plausible_lower, dtype=float))[0]
+    p_hi = domain.to_search(np.asarray(plausible_upper, dtype=float))[0]
+    pad = margin * (hi_u - lo_u)
+    return np.maximum(lo_u, p_lo - pad), np.minimum(hi_u, p_hi + pad)
+
+
+def _candidates(k: int) -> np.ndarray:
+    levels = (-1.0, -0.5, 0.0, 0.5, 1.0) if k <= 3 else (-1.0, 0.0, 1.0)
+    return np.array(list(product(levels, repeat=k)))
+
+
+def _logdet(x: np.ndarray, terms) -> float:
+    m = model_matrix(x, terms)
+    info = m.T @ m + 1e-9 * np.eye(len(terms))
+    return float(np.linalg.slogdet(info)[1])
+
+
+def d_optimal_augment(existing: np.ndarray, count: int, k: int) -> np.ndarray:
+    """``count`` coded points from the box grid, added one at a time, each maximising det(X'X) of the
+    full quadratic over existing + chosen points.  A grid point is used once before any repeats;
+    ties go to the point farthest from the points already there (then grid order)."""
+    terms = quadratic_terms(k)
+    cands = _candidates(k)
+    current = np.asarray(existing, dtype=float).reshape(-1, k)
+    used = np.zeros(len(cands), dtype=bool)
+    for c_i, c in enumerate(cands):
+        if len(current) and np.min(np.abs(current - c).max(axis=1)) < 1e-9:
+            used[c_i] = True
+    chosen = []
+    for _ in range(count):
+        if used.all():
+            used[:] = False
+        best, best_key = None, None
+        for c_i in np.flatnonzero(~used):
+            trial = np.vstack([current, cands[c_i]])
+            spread = float(np.min(np.linalg.norm(current - cands[c_i], axis=1))) if len(current) else 0.0
+            key = (round(_logdet(trial, terms), 9), round(spread, 9))
+            if best_key is None or key > best_key:
+                best, best_key = c_i, key
+        used[best] = True
+        chosen.append(cands[best])
+        current = np.vstack([current, cands[best]])
+    return np.array(chosen).reshape(-1, k)
+
+
+def aliased_findings(findings: pd.DataFrame | None, factors: list[str]) -> list[tuple[tuple, list[str]]]:
+    """Alias sets (as term tuples) named by missing-term findings, with the responses naming them."""
+    if findings is None or not len(findings) or "cause" not in findings:
+        return []
+    out: dict[tuple, list[str]] = {}
+    for _, row in findings[findings["cause"] == "missing_term"].iterrows():
+        names = [n for n in str(row["aliases"]).split(";") if n]
+        if len(names) < 2:
+            continue
+        members = tuple(parse_term(n, factors) for n in names)
+        out.setdefault(members, []).append(str(row["response"]))
+    return list(out.items())
+
+
+def propose_runs(box_lower: np.ndarray, box_upper: np.ndarray, earlier: np.ndarray, count: int,
+                 alias_sets=()) -> tuple[np.ndarray, list]:
+    """Proposals (search units) and, per proposal, None (design run) or the (members, responses)
+    alias set it separates.  ``earlier``: earlier runs (search units) inside the box.
+
+    Separating runs are chosen after the design, given earlier + design runs; the design gives up
+    as many of the ``count`` runs as the separation needs.
+    """
+    from .criticism import separating_runs
+
+    k = len(box_lower)
+    center, half = (box_lower + box_upper) / 2, (box_upper - box_lower) / 2
+    existing = (np.asarray(earlier, dtype=float).reshape(-1, k) - center) / half
+    base = quadratic_terms(k)
+    for reserved in range(count + 1):
+        design = d_optimal_augment(existing, count - reserved, k)
+        separating, labels = [], []
+        for members, responses in alias_sets:
+            pts = separating_runs(np.vstack([existing, design] + separating), base, list(members), 1.0)
+            separating += list(pts)
+            labels += [(members, responses)] * len(pts)
+        if len(separating) <= reserved:
+            break
+    separating, labels = separating[:count], labels[:count]
+    fill = d_optimal_augment(np.vstack([existing, design] + separating), count - len(design) - len(separating), k)
+    points = np.vstack([design] + [np.reshape(p, (1, k)) for p in separating] + [fill])
+    return center + points * half, [None] * len(design) + labels + [None] * len(fill)
+
+
+def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, material_cfg: dict,
+                   robust: pd.DataFrame, findings: pd.DataFrame | None = None) -> NextWave:
+    """The next domain and runs of one material with ``next_runs``.
+
+    ``robust``: the material's robust-identifiability frame (:func:`demid.uncertainty.analyse_material`);
+    its plausible spans of the refocus scenario are used as they are.  ``findings``: the material's
+    criticism findings (missing terms with aliases get separating runs).
+    """
+    spec = material_cfg["next_runs"]
+    factors = list(material_cfg["factors"])
+    domain = Domain.from_config(material_cfg["factors"])
+    scenario = refocus_scenario(material_cfg)
+    rows = robust[robust["scenario"] == scenario].set_index("factor").loc[factors]
+    empty = float(rows["robust_fraction_pct"].iloc[0]) == 0 or not np.isfinite(rows["robust_lower"]).all()
+    lo, hi = next_box(domain, rows["robust_lower"].to_numpy(), rows["robust_upper"].to_numpy(),
+                      float(spec["margin"]))
+    lower_actual, upper_actual = domain.to_actual(lo)[0], domain.to_actual(hi)[0]
+    dom_frame = pd.DataFrame({"material": material, "factor": factors, "lower": lower_actual,
+                              "upper": upper_actual})
+
+    earlier_u = domain.to_search(table[factors].to_numpy(dtype=float))
+    inside = np.all((earlier_u >= lo - 1e-12 * (hi - lo)) & (earlier_u <= hi + 1e-12 * (hi - lo)), axis=1)
+    alias_sets = aliased_findings(findings, factors)
+    points_u, labels = propose_runs(lo, hi, earlier_u[inside], int(spec["count"]), alias_sets)
+    points = domain.to_actual(points_u)
+    purposes = [PURPOSE_DESIGN if lab is None else
+                PURPOSE_SEPARATE.format(terms=" = ".join(term_name(t, factors) for t in lab[0]),
+                                        responses=", ".join(lab[1])) for lab in labels]
+    runs = pd.DataFrame({"material": material, "proposal": np.arange(1, len(points) + 1)})
+    for i, f in enumerate(factors):
+        runs[f] = [float(f"{v:.10g}") for v in points[:, i]]
+    runs["purpose"] = purposes
+    for r, sur in surrogates.items():
+        runs[f"predicted_{r}"] = sur.predict(points)
+
+    observables = "+".join(material_cfg["scenarios"][scenario]["observables"])
+    n_sep = sum(lab is not None for lab in labels)
+    reason = (f"Refocused on the plausible set of scenario '{scenario}' ({observables})"
+              if not empty else f"Scenario '{scenario}' ({observables}) has no plausible point, so the "
+                                f"current range is kept")
+    reason += (f"; {len(points)} new runs: {len(points) - n_sep} from a D-optimal quadratic design in the box "
+               f"given the {int(inside.sum())} earlier run(s) inside it"
+               + (f", {n_sep} to separate aliased terms the criticism found" if n_sep else "") + ".")
+    return NextWave(dom_frame, runs, reason)
