@@ -251,13 +251,21 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, materia
         runs[f"predicted_{r}"] = sur.predict(points)
 
     observables = "+".join(material_cfg["scenarios"][scenario]["observables"])
+    cur_lo, cur_hi = domain.search_bounds()
+    narrowed = [f"{f} {a:.4g}–{b:.4g}" for f, a, b, u0, u1, v0, v1 in
+                zip(factors, lower_actual, upper_actual, lo, hi, cur_lo, cur_hi)
+                if u0 > v0 + 1e-12 * (v1 - v0) or u1 < v1 - 1e-12 * (v1 - v0)]
+    if empty:
+        reason = f"Scenario '{scenario}' ({observables}) has no plausible point, so the current range is kept"
+    elif narrowed:
+        reason = (f"Refocused on the plausible set of scenario '{scenario}' ({observables}) with a margin of "
+                  f"{float(spec['margin']):g} of the range: " + ", ".join(narrowed))
+    else:
+        reason = (f"The plausible set of scenario '{scenario}' ({observables}) reaches (within the margin) every "
+                  f"edge of the current range, so the range is kept")
     n_sep = sum(lab is not None for lab in labels)
-    reason = (f"Refocused on the plausible set of scenario '{scenario}' ({observables})"
-              if not empty else f"Scenario '{scenario}' ({observables}) has no plausible point, so the "
-                                f"current range is kept")
     reason += (f"; {len(points)} new runs: {len(points) - n_sep} from a D-optimal quadratic design on the "
-               f"plausible part of the box "
-               f"given the {int(inside.sum())} earlier run(s) inside it"
+               f"plausible part of the box given the {int(inside.sum())} earlier run(s) inside it"
                + (f", {n_sep} to separate aliased terms the criticism found" if n_sep else "") + ".")
     return NextWave(dom_frame, runs, reason)
 
