@@ -62,7 +62,10 @@ def cmd_validate(args) -> int:
     from .config import load_config
     from .data import validate_material
 
+    from .next_wave import check_next_runs
+
     config = load_config(args.config)
+    check_next_runs(config, source=args.config)
     for name, mat in config["materials"].items():
         vt = validate_material(name, mat)
         for w in vt.warnings:

@@ -163,3 +163,49 @@ def test_config_next_runs_schema_and_cross_references():
     none = validate_schema({"materials": {"m": {**base["materials"]["m"], "scenarios": {}}}})
     with pytest.raises(InputError, match="needs at least one scenario"):
         check_next_runs(none)
+
+
+@pytest.mark.workflow
+def test_pipeline_writes_the_next_wave_and_the_loop_closes(study_dir):
+    """next_runs: {count: 9} on a 2-factor study; then the next wave as an ordinary study validates."""
+    import subprocess
+    import sys
+
+    import yaml
+
+    from .workflow_helpers import run_snakemake
+
+    cfg_path = study_dir / "study.yaml"
+    cfg = yaml.safe_load(cfg_path.read_text(encoding="utf-8"))
+    cfg["materials"]["m"]["next_runs"] = {"count": 9}
+    cfg_path.write_text(yaml.safe_dump(cfg, sort_keys=False), encoding="utf-8")
+    proc = run_snakemake(study_dir, cfg_path, "results/tables/next_runs.csv")
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    domain = pd.read_csv(study_dir / "results" / "tables" / "next_domain.csv")
+    runs = pd.read_csv(study_dir / "results" / "tables" / "next_runs.csv")
+    assert list(domain.columns) == DOMAIN_COLUMNS and list(domain["factor"]) == ["a", "b"]
+    assert list(runs.columns) == ["material", "proposal", "a", "b", "purpose", "predicted_y1", "predicted_y2"]
+    assert list(runs["proposal"]) == list(range(1, 10))
+    box = domain.set_index("factor")
+    for f in ("a", "b"):
+        assert runs[f].between(box.loc[f, "lower"], box.loc[f, "upper"]).all()
+        assert box.loc[f, "lower"] >= cfg["materials"]["m"]["factors"][f]["lower"]
+        assert box.loc[f, "upper"] <= cfg["materials"]["m"]["factors"][f]["upper"]
+
+    # The loop: earlier runs inside the box + the simulated proposals, bounds = next domain, custom design.
+    earlier = pd.read_csv(study_dir / "data" / "m.csv")
+    inside = earlier[np.all([earlier[f].between(box.loc[f, "lower"], box.loc[f, "upper"]) for f in "ab"], axis=0)]
+    new = runs[["a", "b"]].copy()
+    new["y1"] = 100 + 20 * new["a"] - 2 * new["b"] + 10 * new["a"] ** 2 + 0.5 * new["a"] * new["b"]
+    new["y2"] = 80 + 5 * new["a"] + 3 * new["b"] - 0.1 * new["b"] ** 2
+    new.insert(0, "run", np.arange(100, 100 + len(new)))
+    pd.concat([inside, new], ignore_index=True).to_csv(study_dir / "data" / "wave2.csv", index=False)
+    mat = dict(cfg["materials"]["m"], data="data/wave2.csv", design={"type": "custom"})
+    mat.pop("next_runs")
+    mat.pop("reference_point")
+    mat["factors"] = {f: {"lower": float(box.loc[f, "lower"]), "upper": float(box.loc[f, "upper"])} for f in "ab"}
+    (study_dir / "wave2.yaml").write_text(yaml.safe_dump({"materials": {"m": mat}}, sort_keys=False),
+                                          encoding="utf-8")
+    check = subprocess.run([sys.executable, "-m", "demid", "validate", "--config", "wave2.yaml"], cwd=study_dir,
+                           capture_output=True, text=True)
+    assert check.returncode == 0, check.stderr
