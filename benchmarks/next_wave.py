@@ -23,6 +23,10 @@ Printed: one line per simulator and seed, then per metric the median next-wave /
 the number of cases where the next wave wins, and the number of cases where the next domain
 failed to contain the true set.
 
+Options: ``--noise`` (sd relative to the response level, default 0.003), ``--observables y1``
+(a single-observable scenario: a band across the domain), ``--whole-box-design`` (ablation:
+design runs spread over the whole next domain instead of its plausible part).
+
 Run:  python benchmarks/next_wave.py [--seeds 8] [--count 9] [--quick]
 """
 
@@ -210,7 +214,13 @@ def main(argv=None):
     parser.add_argument("--quick", action="store_true", help="3 seeds, coarser grids")
     parser.add_argument("--noise", type=float, default=NOISE_REL, help="noise sd relative to the response level")
     parser.add_argument("--observables", default=",".join(OBSERVABLES), help="scenario observables, e.g. y1")
+    parser.add_argument("--whole-box-design", action="store_true",
+                        help="ablation: design runs D-optimal over the whole next domain, not its plausible part")
     args = parser.parse_args(argv)
+    if args.whole_box_design:
+        import demid.next_wave
+
+        demid.next_wave.plausible_points = lambda *a, **k: np.empty((0, len(FACTORS)))
     NOISE_REL, OBSERVABLES = args.noise, tuple(args.observables.split(","))
     seeds = args.seeds if args.seeds != 8 or not args.quick else 3
     n = 201 if args.quick else 401

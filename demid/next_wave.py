@@ -94,37 +94,33 @@ def _candidates(k: int) -> np.ndarray:
     return np.array(list(product(levels, repeat=k)))
 
 
-def _logdet(x: np.ndarray, terms) -> float:
-    m = model_matrix(x, terms)
-    info = m.T @ m + 1e-9 * np.eye(len(terms))
-    return float(np.linalg.slogdet(info)[1])
-
-
 def d_optimal_augment(existing: np.ndarray, count: int, k: int, candidates: np.ndarray | None = None) -> np.ndarray:
-    """``count`` coded points from the box grid, added one at a time, each maximising det(X'X) of the
-    full quadratic over existing + chosen points.  A grid point is used once before any repeats;
-    ties go to the point farthest from the points already there (then grid order)."""
+    """``count`` coded points from ``candidates`` (default: the box's grid), added one at a time, each
+    maximising det(X'X) of the full quadratic over existing + chosen points.  By the rank-one update
+    det(M + f f') = det(M) (1 + f' M^-1 f) that is the candidate of largest prediction variance
+    f' M^-1 f.  A candidate is used once before any repeats; ties go to the candidate farthest from
+    the points already there (then candidate order)."""
     terms = quadratic_terms(k)
-    cands = _candidates(k) if candidates is None or not len(candidates) else np.asarray(candidates)
+    cands = _candidates(k) if candidates is None or not len(candidates) else np.asarray(candidates, dtype=float)
+    f = model_matrix(cands, terms)
     current = np.asarray(existing, dtype=float).reshape(-1, k)
-    used = np.zeros(len(cands), dtype=bool)
-    for c_i, c in enumerate(cands):
-        if len(current) and np.min(np.abs(current - c).max(axis=1)) < 1e-9:
-            used[c_i] = True
+    # A tiny ridge keeps M invertible while the first runs are still fewer than the coefficients.
+    info = model_matrix(current, terms).T @ model_matrix(current, terms) + 1e-9 * np.eye(len(terms))
+    dist = (np.min(np.linalg.norm(cands[:, None, :] - current[None, :, :], axis=2), axis=1)
+            if len(current) else np.full(len(cands), np.inf))
+    used = dist < 1e-9
     chosen = []
     for _ in range(count):
         if used.all():
             used[:] = False
-        best, best_key = None, None
-        for c_i in np.flatnonzero(~used):
-            trial = np.vstack([current, cands[c_i]])
-            spread = float(np.min(np.linalg.norm(current - cands[c_i], axis=1))) if len(current) else 0.0
-            key = (round(_logdet(trial, terms), 9), round(spread, 9))
-            if best_key is None or key > best_key:
-                best, best_key = c_i, key
+        variance = np.einsum("ij,ij->i", f @ np.linalg.inv(info), f)
+        key = np.where(used, -np.inf, np.round(np.log1p(np.maximum(variance, 0.0)), 9))
+        top = np.flatnonzero(key == key.max())
+        best = int(top[np.argmax(np.round(dist[top], 9))])
         used[best] = True
         chosen.append(cands[best])
-        current = np.vstack([current, cands[best]])
+        info += np.outer(f[best], f[best])
+        dist = np.minimum(dist, np.linalg.norm(cands - cands[best], axis=1))
     return np.array(chosen).reshape(-1, k)
 
 
