@@ -173,7 +173,7 @@ def run_case(name, sim, seed, count, n):
     ccd_cfg = _cfg(LO, HI, targets, {"type": "ccd", "alpha": 2 ** 0.5, "center_runs": 5}, count)
     surs, _, ccd_set = _estimate(ccd, ccd_cfg, n)
     robust = robust_identifiability_frame(surs, domain, {"both": (tuple(targets), TOLERANCE)}, targets, n, z=2.0)
-    wave = plan_next_wave("bench", ccd, surs, ccd_cfg, robust)
+    wave = plan_next_wave("bench", ccd, surs, ccd_cfg, robust, z=2.0)
     box_lo, box_hi = wave.domain["lower"].to_numpy(), wave.domain["upper"].to_numpy()
     contained = bool(np.all(truth.lower >= box_lo - 1e-9) and np.all(truth.upper <= box_hi + 1e-9))
     # Smallest gap between the true set and a box side that was not clipped to the search range.

@@ -211,12 +211,14 @@ def plausible_points(surrogates: dict, material_cfg: dict, scenario: str, z: flo
 
 
 def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, material_cfg: dict,
-                   robust: pd.DataFrame, findings: pd.DataFrame | None = None, z: float = 2.0) -> NextWave:
+                   robust: pd.DataFrame, findings: pd.DataFrame | None = None, *, z: float) -> NextWave:
     """The next domain and runs of one material with ``next_runs``.
 
     ``robust``: the material's robust-identifiability frame (:func:`demid.uncertainty.analyse_material`);
     its plausible spans of the refocus scenario are used as they are.  ``findings``: the material's
-    criticism findings (missing terms with aliases get separating runs).
+    criticism findings (missing terms with aliases get separating runs).  ``z``: the config's
+    ``robust_z``, the same as for the robust set, so that the plausible grid points used for the
+    design are those of that set.
     """
     spec = material_cfg["next_runs"]
     factors = list(material_cfg["factors"])

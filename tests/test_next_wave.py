@@ -45,7 +45,7 @@ def _annulus_material(count=9, tolerance=EPS, margin=0.1):
 
 def test_next_domain_contains_the_planted_set_and_is_refocused():
     table, surrogates, cfg, robust = _annulus_material()
-    wave = plan_next_wave("m", table, surrogates, cfg, robust)
+    wave = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
     assert list(wave.domain.columns) == DOMAIN_COLUMNS
     outer = R0 * np.sqrt(1 + EPS)
     lower, upper = wave.domain["lower"].to_numpy(), wave.domain["upper"].to_numpy()
@@ -66,7 +66,7 @@ def test_next_box_clips_to_range_and_handles_log_factors():
 
 def test_proposals_lie_in_the_box_on_the_plausible_set_and_predict_observables():
     table, surrogates, cfg, robust = _annulus_material(count=9)
-    wave = plan_next_wave("m", table, surrogates, cfg, robust)
+    wave = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
     runs = wave.runs
     assert list(runs.columns) == ["material", "proposal", "a", "b", "purpose", "predicted_y"]
     assert list(runs["proposal"]) == list(range(1, 10))
@@ -131,8 +131,8 @@ def test_findings_name_the_alias_sets():
 
 def test_same_inputs_same_tables():
     table, surrogates, cfg, robust = _annulus_material()
-    one = plan_next_wave("m", table, surrogates, cfg, robust)
-    two = plan_next_wave("m", table, surrogates, cfg, robust)
+    one = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
+    two = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
     pd.testing.assert_frame_equal(one.runs, two.runs)
     pd.testing.assert_frame_equal(one.domain, two.domain)
 
