@@ -18,6 +18,7 @@ include: "workflow/rules/figures.smk"
 include: "workflow/rules/tables.smk"
 include: "workflow/rules/uncertainty.smk"
 include: "workflow/rules/criticism.smk"
+include: "workflow/rules/next_wave.smk"
 include: "workflow/rules/report.smk"
 
 

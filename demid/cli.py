@@ -77,9 +77,11 @@ def cmd_fit(args) -> int:
 def cmd_validate(args) -> int:
     from .config import load_config
     from .data import refuse_likely_typos, validate_material
+    from .next_wave import check_next_runs
 
     base_dir = Path(args.config).parent  # data paths are written relative to the config file
     config = load_config(args.config, base_dir=base_dir)
+    check_next_runs(config, source=args.config)
     for name, mat in config["materials"].items():
         vt = validate_material(name, mat, base_dir=base_dir)
         confirmed = refuse_likely_typos(vt, name, mat, base_dir=base_dir)
@@ -137,6 +139,31 @@ def cmd_check_transcription(args) -> int:
     return 0
 
 
+def cmd_design(args) -> int:
+    from .design_generation import fragment_yaml, generate_sheet, parse_factor
+    from .io import atomic_path, write_csv
+
+    if not args.factor:
+        raise InputError("--factor: give at least one NAME=LOW:HIGH")
+    sheet = generate_sheet(args.type, [parse_factor(f) for f in args.factor], center_runs=args.center_runs,
+                           alpha=args.alpha, seed=args.seed)
+    frame = sheet.to_frame()
+    for response in args.response:
+        frame[response] = ""
+    write_csv(frame, args.out)
+    if args.config_out:
+        with atomic_path(args.config_out) as tmp:
+            tmp.write_text(fragment_yaml(sheet, args.material, args.out, args.response), encoding="utf-8")
+    print(f"{args.out}: {len(frame)} runs of a {args.type} design in randomised order (seed {args.seed})")
+    return 0
+
+
+def _one_line_error(message: str):
+    """Usage errors of new subcommands as one ``demid: error:`` line, status 2 (as argparse)."""
+    print(f"demid: error: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="demid", description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
@@ -174,6 +201,26 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"])
     p.add_argument("--out", required=True)
     p.set_defaults(func=cmd_check_transcription)
+
+    p = sub.add_parser("design", help="a randomised run sheet (CCD, Box-Behnken, 3^k factorial) and its config")
+    p.add_argument("--type", required=True, choices=["ccd", "box_behnken", "factorial"],
+                   help="design family; factorial is the three-level full factorial 3^k")
+    p.add_argument("--factor", action="append", default=[], metavar="NAME=LOW:HIGH",
+                   help="a factor and its search range in actual units (repeat per factor, in column order); "
+                        "the design's outer points (CCD axial points) sit on LOW and HIGH")
+    p.add_argument("--center-runs", type=int, default=3, metavar="N",
+                   help="number of centre runs in the sheet (factorial: including the grid's centre; default 3)")
+    p.add_argument("--alpha", default="rotatable", metavar="rotatable|face|VALUE",
+                   help="CCD axial distance in coded units: rotatable (2^k)^(1/4), face (1) or a number >= 1")
+    p.add_argument("--seed", type=int, default=0, metavar="S", help="seed of the randomised run order (default 0)")
+    p.add_argument("--response", action="append", default=[], metavar="NAME",
+                   help="an empty response column to fill in after simulating (repeatable)")
+    p.add_argument("--material", default="study", help="material key used in the config fragment")
+    p.add_argument("--out", required=True, metavar="FILE.csv", help="run sheet to write")
+    p.add_argument("--config-out", metavar="FILE.yaml",
+                   help="also write the config fragment declaring this design (data path = --out)")
+    p.set_defaults(func=cmd_design)
+    p.error = _one_line_error
     return parser
 
 

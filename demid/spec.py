@@ -75,6 +75,15 @@ class Pareto:
     max_error: float
 
 
+@dataclass(frozen=True)
+class NextRuns:
+    """The ``next_runs`` request: how many runs, the scenario to refocus on ("" = default), the margin."""
+
+    count: int
+    scenario: str
+    margin: float
+
+
 @dataclass(frozen=True, eq=False)
 class MaterialSpec:
     """A material as every step sees it: factors, responses, design, scenarios and derived values."""
@@ -94,6 +103,7 @@ class MaterialSpec:
     paper_figure: str | None
     _published: dict
     _material: dict
+    next_runs: NextRuns | None = None
 
     # ------------------------------------------------------------------ construction
     @classmethod
@@ -113,6 +123,8 @@ class MaterialSpec:
             for s, c in (material.get("scenarios") or {}).items())
         par = material.get("pareto")
         pareto = Pareto(par["error_of"], par["minimise"], float(par["max_error"])) if par else None
+        nr = material.get("next_runs")
+        next_runs = NextRuns(int(nr["count"]), nr.get("scenario") or "", float(nr["margin"])) if nr else None
         published = {r: c["published"] for r, c in (material.get("responses") or {}).items() if c.get("published")}
         return cls(
             name=name, label=material.get("label") or name, data=material.get("data", ""),
@@ -120,7 +132,7 @@ class MaterialSpec:
             center_runs=int(design.get("center_runs", 0)), factors=factors, responses=responses,
             scenarios=scenarios, reference_point=material.get("reference_point") or None, pareto=pareto,
             grid_points=grid_points, paper_figure=material.get("paper_figure"),
-            _published=copy.deepcopy(published), _material=copy.deepcopy(material))
+            _published=copy.deepcopy(published), _material=copy.deepcopy(material), next_runs=next_runs)
 
     @classmethod
     def from_config(cls, name: str, config: dict) -> "MaterialSpec":

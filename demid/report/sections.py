@@ -241,6 +241,20 @@ class ReportSections:
             parts.append(self._md("\n".join(f"- {n}" for n in info["notes"])))
         return parts
 
+    def next_wave(self, m: str) -> list:
+        """The proposed next wave (only for materials with ``next_runs``)."""
+        reasons = self.root / "next_wave" / "reasons.json"
+        runs = self._csv("next_runs.csv")
+        if runs is None or not reasons.is_file() or not len(runs[runs["material"] == m]):
+            return []
+        import json
+
+        reason = json.loads(reasons.read_text(encoding="utf-8")).get(m, "")
+        sub = runs[runs["material"] == m].dropna(axis=1, how="all")
+        return [self._md("### What to simulate next\n\n" + reason + " Simulate these runs, then study the next "
+                         "domain (tables/next_domain.csv) with the earlier runs inside it plus these "
+                         "(`design: {type: custom}`).\n\n" + markdown_table(sub.drop(columns="material")))]
+
     def material(self, m: str) -> list:
         cfg = self.config["materials"][m]
         parts = [self._md(f"## {self._label(m)}")]
@@ -271,6 +285,7 @@ class ReportSections:
                                       + markdown_table(iv)))
         parts += self.criticism(m)
         parts += self.uncertainty(m)
+        parts += self.next_wave(m)
         anova = self.root / "fits" / f"{m}_anova.parquet"
         if anova.is_file():
             parts.append(self._md("**ANOVA with lack of fit**\n\n" + markdown_table(read_parquet(anova))))

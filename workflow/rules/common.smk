@@ -4,6 +4,7 @@ from pathlib import Path
 from demid.config import check_semantics, validate_schema
 from demid.data import refuse_likely_typos, validate_material
 from demid.errors import InputError
+from demid.next_wave import check_next_runs
 from demid.sampling import uses_grid
 from demid.spec import MaterialSpec
 
@@ -17,6 +18,7 @@ try:
     config.clear()
     config.update(_checked)
     check_semantics(config, source=CONFIG_SOURCE)
+    check_next_runs(config, source=CONFIG_SOURCE)
     for _name, _material in config["materials"].items():
         refuse_likely_typos(validate_material(_name, _material), _name, _material)
 except InputError as err:
@@ -88,6 +90,18 @@ def paper_figure_source(wildcards):
     return f"{RESULTS}/figures/{kind}_{wildcards.material}.png"
 
 
+def next_wave_materials():
+    return [m for m in MATERIALS if SPECS[m].next_runs]
+
+
+def next_wave_tables():
+    """The next-wave tables exist only when some material asks for next_runs."""
+    if not next_wave_materials():
+        return []
+    return [f"{RESULTS}/tables/next_domain.csv", f"{RESULTS}/tables/next_runs.csv",
+            f"{RESULTS}/next_wave/reasons.json"]
+
+
 def per_material_outputs(material):
     out = [
         f"{RESULTS}/validated/{material}.parquet",
@@ -114,6 +128,7 @@ def report_tables():
         out.append(f"{RESULTS}/tables/paper_comparison.csv")
     out += [f"{RESULTS}/uncertainty/{m}.json" for m in MATERIALS]
     out += [f"{RESULTS}/criticism/{m}.json" for m in MATERIALS]
+    out += next_wave_tables()
     return out
 
 
@@ -144,6 +159,7 @@ def all_outputs():
     out += report_figures()
     out += SUMMARY_TABLES
     out += [f"{RESULTS}/criticism/{m}" for m in MATERIALS]
+    out += next_wave_tables()
     out.append(f"{RESULTS}/report/report.html")
     if config.get("published"):
         out.append(f"{RESULTS}/tables/paper_comparison.csv")

@@ -1,0 +1,198 @@
+"""Run sheets for a first wave of simulations: CCD, Box-Behnken and three-level factorial designs.
+
+A sheet lists the runs in a randomised execution order (``run``) with the standard order
+(``std_order``) alongside and one column per factor in actual units.  The search range
+LOW:HIGH of each factor is the design's outer extent: the axial points of a CCD sit on it
+(factorial points at +-1 = +-range/(2 alpha)), the +-1 levels of Box-Behnken and factorial
+designs sit on it.  The config fragment written with the sheet declares the same design, so
+the pipeline validates the filled-in sheet as that design.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from itertools import combinations, product
+
+import numpy as np
+import pandas as pd
+
+from .design import Coding, ccd_points, rotatable_alpha
+from .errors import InputError
+
+DESIGN_TYPES = ("ccd", "box_behnken", "factorial")
+
+
+@dataclass(frozen=True)
+class FactorRange:
+    name: str
+    low: float
+    high: float
+
+
+def parse_factor(text: str) -> FactorRange:
+    """``NAME=LOW:HIGH`` -> FactorRange; raises InputError naming the option."""
+    name, sep, rng = text.partition("=")
+    low, sep2, high = rng.partition(":")
+    name = name.strip()
+    if not (sep and sep2 and name):
+        raise InputError(f"--factor: expected NAME=LOW:HIGH, found '{text}'")
+    if not name[0].isalpha() or not name.replace("_", "").isalnum():
+        raise InputError(f"--factor: '{name}' is not a valid column name (letters, digits, _; starts with a letter)")
+    try:
+        lo, hi = float(low), float(high)
+    except ValueError:
+        raise InputError(f"--factor {name}: LOW and HIGH must be numbers, found '{rng}'") from None
+    if not (np.isfinite(lo) and np.isfinite(hi)) or lo >= hi:
+        raise InputError(f"--factor {name}: LOW must be below HIGH, found {low}:{high}")
+    return FactorRange(name, lo, hi)
+
+
+def parse_alpha(text: str, n_factors: int) -> float:
+    """``rotatable`` -> (2^k)^(1/4), ``face`` -> 1, or a number >= 1."""
+    if text == "rotatable":
+        return rotatable_alpha(n_factors)
+    if text == "face":
+        return 1.0
+    try:
+        value = float(text)
+    except ValueError:
+        raise InputError(f"--alpha: expected rotatable, face or a number, found '{text}'") from None
+    if not np.isfinite(value) or value < 1:
+        raise InputError(f"--alpha: a CCD needs alpha >= 1, found {text}")
+    return value
+
+
+def box_behnken_points(n_factors: int, center_runs: int) -> np.ndarray:
+    """Coded Box-Behnken points: a 2^2 factorial on every pair of factors (others at 0), then centres."""
+    rows = []
+    for i, j in combinations(range(n_factors), 2):
+        for a, b in product((-1.0, 1.0), repeat=2):
+            row = np.zeros(n_factors)
+            row[i], row[j] = a, b
+            rows.append(row)
+    return np.vstack([np.array(rows), np.zeros((center_runs, n_factors))])
+
+
+def factorial_points(n_factors: int, center_runs: int) -> np.ndarray:
+    """Coded 3^k full factorial (the smallest factorial a quadratic can be fitted to); the grid's
+    own centre point counts as the first of ``center_runs`` centre runs."""
+    grid = np.array(list(product((-1.0, 0.0, 1.0), repeat=n_factors)))[:, ::-1]
+    extra = max(center_runs - 1, 0)
+    return np.vstack([grid, np.zeros((extra, n_factors))])
+
+
+@dataclass(frozen=True)
+class RunSheet:
+    design_type: str
+    factors: tuple[FactorRange, ...]
+    alpha: float
+    center_runs: int
+    coded: np.ndarray  # standard order
+    order: np.ndarray  # order[i] = standard-order index of execution run i + 1
+
+    @property
+    def coding(self) -> Coding:
+        lo = np.array([f.low for f in self.factors])
+        hi = np.array([f.high for f in self.factors])
+        outer = self.alpha if self.design_type == "ccd" else 1.0
+        return Coding(tuple(f.name for f in self.factors), tuple((lo + hi) / 2), tuple((hi - lo) / (2 * outer)))
+
+    def to_frame(self) -> pd.DataFrame:
+        actual = self.coding.to_actual(self.coded)
+        frame = pd.DataFrame({"run": np.arange(1, len(self.order) + 1), "std_order": self.order + 1})
+        for i, f in enumerate(self.factors):
+            # Rounded to 12 significant digits so that the printed sheet is exact to read back.
+            frame[f.name] = [float(f"{v:.12g}") for v in actual[self.order, i]]
+        return frame
+
+    def design_config(self) -> dict:
+        out = {"type": self.design_type, "center_runs": int(self.center_runs)}
+        if self.design_type == "ccd":
+            out["alpha"] = float(f"{self.alpha:.12g}")
+        return out
+
+    def material_config(self, data_path: str, responses=()) -> dict:
+        cfg = {"data": str(data_path), "design": self.design_config(),
+               "factors": {f.name: {"lower": f.low, "upper": f.high} for f in self.factors}}
+        if responses:
+            cfg["responses"] = {r: {} for r in responses}
+        return cfg
+
+
+def coded_points(design_type: str, n_factors: int, alpha: float, center_runs: int) -> np.ndarray:
+    if design_type == "ccd":
+        return ccd_points(n_factors, alpha, center_runs)
+    if design_type == "box_behnken":
+        return box_behnken_points(n_factors, center_runs)
+    return factorial_points(n_factors, center_runs)
+
+
+def _check_counts(design_type: str, n_factors: int, center_runs: int) -> None:
+    if center_runs < 0:
+        raise InputError(f"--center-runs: must be 0 or more, found {center_runs}")
+    if design_type == "box_behnken" and not 3 <= n_factors <= 5:
+        raise InputError(f"--type box_behnken: needs 3 to 5 factors, found {n_factors}")
+    if design_type == "factorial" and center_runs < 1:
+        raise InputError("--center-runs: a 3^k factorial contains its centre point, so at least 1")
+    if not 1 <= n_factors <= 6:
+        raise InputError(f"--factor: 1 to 6 factors are supported, found {n_factors}")
+
+
+def _check_recoverable(sheet: RunSheet) -> None:
+    """The pipeline infers the design centre as the most frequent level of each factor; make sure it can."""
+    from .data import infer_coding
+
+    frame = sheet.to_frame()
+    names = [f.name for f in sheet.factors]
+    try:
+        inferred = infer_coding(frame, names, sheet.design_config(), "sheet")
+    except InputError:
+        inferred = None
+    if inferred is None or not np.allclose(inferred.center, sheet.coding.center, rtol=1e-9, atol=1e-12):
+        raise InputError(f"--center-runs {sheet.center_runs}: too few centre runs for the pipeline to find the "
+                         f"design centre (it must be the most frequent level of every factor); "
+                         f"use at least {_min_center_runs(sheet)}")
+
+
+def _min_center_runs(sheet: RunSheet) -> int:
+    """Smallest centre-run count whose centre level is strictly the most frequent for every factor."""
+    k = len(sheet.factors)
+    base = coded_points(sheet.design_type, k, sheet.alpha, 0 if sheet.design_type != "factorial" else 1)
+    extra = 0
+    for i in range(k):
+        levels, counts = np.unique(np.round(base[:, i], 9), return_counts=True)
+        at_zero = counts[levels == 0].sum() if (levels == 0).any() else 0
+        others = counts[levels != 0].max()
+        extra = max(extra, int(others - at_zero + 1))
+    return extra + (1 if sheet.design_type == "factorial" else 0)
+
+
+def generate_sheet(design_type: str, factors: list[FactorRange], *, center_runs: int, alpha: str = "rotatable",
+                   seed: int = 0) -> RunSheet:
+    """A randomised run sheet of the given design; the same seed gives the same sheet."""
+    if design_type not in DESIGN_TYPES:
+        raise InputError(f"--type: expected one of {', '.join(DESIGN_TYPES)}, found '{design_type}'")
+    names = [f.name for f in factors]
+    dupes = sorted({n for n in names if names.count(n) > 1})
+    if dupes:
+        raise InputError(f"--factor: '{dupes[0]}' given more than once")
+    k = len(factors)
+    _check_counts(design_type, k, center_runs)
+    a = parse_alpha(alpha, k) if design_type == "ccd" else 1.0
+    coded = coded_points(design_type, k, a, center_runs)
+    order = np.random.default_rng(seed).permutation(len(coded))
+    sheet = RunSheet(design_type, tuple(factors), a, center_runs, coded, order)
+    _check_recoverable(sheet)
+    return sheet
+
+
+def fragment_yaml(sheet: RunSheet, material: str, data_path: str, responses=()) -> str:
+    """The config fragment declaring the sheet's design (YAML text with a header comment)."""
+    import yaml
+
+    body = yaml.safe_dump({"materials": {material: sheet.material_config(data_path, responses)}},
+                          sort_keys=False, default_flow_style=None)
+    note = ("# Generated with the run sheet; add a target to each response that is measured.\n"
+            if responses else "# Generated with the run sheet; add `responses:` (one per simulated response "
+                              "column, with targets) before running the pipeline.\n")
+    return note + body

@@ -1,0 +1,152 @@
+"""Run sheets: textbook coded designs, randomised order, reproducibility, and validation by the pipeline."""
+
+import subprocess
+import sys
+from itertools import product
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+from demid.config import check_semantics, validate_schema
+from demid.data import validate_material
+from demid.design_generation import FactorRange, generate_sheet, parse_factor
+from demid.errors import InputError
+
+
+def _run(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "demid", *args], capture_output=True, text=True, cwd=cwd)
+
+
+def _rows(points):
+    return sorted(tuple(round(float(v), 9) for v in row) for row in points)
+
+
+# Textbook coded designs written out independently (Montgomery, Design and Analysis of Experiments, ch. 11).
+R2 = 2 ** 0.5
+CCD2_ROTATABLE = [(-1, -1), (1, -1), (-1, 1), (1, 1), (-R2, 0), (R2, 0), (0, -R2), (0, R2)] + [(0, 0)] * 5
+BBD3 = ([(a, b, 0) for a in (-1, 1) for b in (-1, 1)] + [(a, 0, c) for a in (-1, 1) for c in (-1, 1)]
+        + [(0, b, c) for b in (-1, 1) for c in (-1, 1)] + [(0, 0, 0)] * 3)
+
+
+def test_ccd_points_match_textbook_and_axial_points_sit_on_the_range():
+    sheet = generate_sheet("ccd", [FactorRange("e", 0.1, 0.9), FactorRange("mu", 2.0, 6.0)], center_runs=5)
+    frame = sheet.to_frame()
+    coded = (frame[["e", "mu"]].to_numpy() - [0.5, 4.0]) / (np.array([0.8, 4.0]) / (2 * R2))
+    assert _rows(coded) == _rows(CCD2_ROTATABLE)
+    assert frame["e"].min() == pytest.approx(0.1) and frame["e"].max() == pytest.approx(0.9)
+    assert frame["mu"].min() == pytest.approx(2.0) and frame["mu"].max() == pytest.approx(6.0)
+
+
+def test_three_factor_rotatable_alpha_and_face_centred():
+    f3 = [FactorRange(n, 0.0, 1.0) for n in "abc"]
+    sheet = generate_sheet("ccd", f3, center_runs=6)
+    assert sheet.alpha == pytest.approx(8 ** 0.25)
+    assert len(sheet.to_frame()) == 8 + 6 + 6
+    face = generate_sheet("ccd", f3, center_runs=2, alpha="face").to_frame()
+    assert sorted(set(face["a"])) == [0.0, 0.5, 1.0]
+
+
+def test_box_behnken_matches_textbook():
+    sheet = generate_sheet("box_behnken", [FactorRange(n, -2.0, 2.0) for n in "abc"], center_runs=3)
+    frame = sheet.to_frame()
+    assert _rows(frame[["a", "b", "c"]].to_numpy() / 2.0) == _rows(BBD3)
+
+
+def test_factorial_is_three_level_grid_with_centre_replicates():
+    frame = generate_sheet("factorial", [FactorRange("a", 0, 2), FactorRange("b", 10, 20)], center_runs=3).to_frame()
+    expected = [(a, b) for a, b in product((0, 1, 2), (10, 15, 20))] + [(1, 15)] * 2
+    assert _rows(frame[["a", "b"]].to_numpy()) == _rows(expected)
+
+
+def test_randomised_order_and_same_seed_same_sheet():
+    factors = [FactorRange("a", 0, 1), FactorRange("b", 0, 1)]
+    one = generate_sheet("ccd", factors, center_runs=5, seed=7).to_frame()
+    two = generate_sheet("ccd", factors, center_runs=5, seed=7).to_frame()
+    other = generate_sheet("ccd", factors, center_runs=5, seed=8).to_frame()
+    pd.testing.assert_frame_equal(one, two)
+    assert list(one["run"]) == list(range(1, 14))
+    assert list(one["std_order"]) != list(range(1, 14))  # not the standard order
+    assert list(one["std_order"]) != list(other["std_order"])
+    assert sorted(one["std_order"]) == list(range(1, 14))
+
+
+@pytest.mark.parametrize("args", [
+    ("ccd", ["a=0:1", "b=0:1"], "rotatable", 5),
+    ("ccd", ["a=0:1", "b=0:1", "c=1:3"], "face", 2),
+    ("ccd", ["a=0:1", "b=0:1", "c=1:3"], "1.5", 4),
+    ("box_behnken", ["a=0:1", "b=0:1", "c=1:3"], "rotatable", 3),
+    ("box_behnken", ["a=0:1", "b=0:1", "c=1:3", "d=5:9"], "rotatable", 2),
+    ("factorial", ["a=0:1", "b=-1:1"], "rotatable", 2),
+])
+def test_cli_sheet_validates_as_its_design(tmp_path, args):
+    dtype, factors, alpha, centres = args
+    cmd = ["design", "--type", dtype, "--center-runs", str(centres), "--alpha", alpha, "--seed", "3",
+           "--response", "y", "--out", "sheet.csv", "--config-out", "study.yaml"]
+    for f in factors:
+        cmd += ["--factor", f]
+    proc = _run(*cmd, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    sheet = pd.read_csv(tmp_path / "sheet.csv")
+    names = [f.split("=")[0] for f in factors]
+    rng = np.random.default_rng(0)
+    sheet["y"] = 1.0 + sheet[names].sum(axis=1) ** 2 + 0.01 * rng.standard_normal(len(sheet))  # filled in
+    sheet.to_csv(tmp_path / "sheet.csv", index=False)
+    config = validate_schema(yaml.safe_load((tmp_path / "study.yaml").read_text()))
+    check_semantics(config, base_dir=tmp_path)
+    vt = validate_material("study", config["materials"]["study"], base_dir=tmp_path)
+    counts = vt.summary("study")["point_types"]
+    assert counts.get("center", 0) == centres
+    if dtype == "ccd":
+        assert counts["factorial"] == 2 ** len(factors) and counts["axial"] == 2 * len(factors)
+    if dtype == "box_behnken":
+        assert counts["edge"] == 2 * len(factors) * (len(factors) - 1)
+
+
+def test_a_sheet_with_a_moved_point_does_not_validate(tmp_path):
+    """The validation used above can fail: one factorial point moved off its level is caught."""
+    proc = _run("design", "--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--center-runs", "5",
+                "--response", "y", "--out", "sheet.csv", "--config-out", "study.yaml", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    sheet = pd.read_csv(tmp_path / "sheet.csv")
+    sheet["y"] = np.arange(len(sheet), dtype=float) ** 1.5
+    i = int(np.flatnonzero(sheet["std_order"] == 1)[0])
+    sheet.loc[i, "a"] += 0.07
+    sheet.to_csv(tmp_path / "sheet.csv", index=False)
+    config = validate_schema(yaml.safe_load((tmp_path / "study.yaml").read_text()))
+    with pytest.raises(InputError, match="not a level"):
+        validate_material("study", config["materials"]["study"], base_dir=tmp_path)
+
+
+@pytest.mark.parametrize("argv, fragment", [
+    (["--type", "ccd", "--factor", "a=1:0"], "LOW must be below HIGH"),
+    (["--type", "ccd", "--factor", "a0:1"], "NAME=LOW:HIGH"),
+    (["--type", "ccd", "--factor", "a=0:x"], "must be numbers"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "a=0:2"], "more than once"),
+    (["--type", "ccd", "--factor", "a=0:1", "--alpha", "0.5"], "alpha >= 1"),
+    (["--type", "ccd", "--factor", "a=0:1", "--alpha", "wide"], "rotatable, face or a number"),
+    (["--type", "box_behnken", "--factor", "a=0:1", "--factor", "b=0:1"], "3 to 5 factors"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--center-runs", "0"], "at least 1"),
+    (["--type", "cube", "--factor", "a=0:1"], "invalid choice"),
+    (["--type", "ccd"], "at least one"),
+])
+def test_bad_input_is_one_line_with_status_2(tmp_path, argv, fragment):
+    proc = _run("design", *argv, "--out", "sheet.csv", cwd=tmp_path)
+    assert proc.returncode == 2
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("demid: error: ") and fragment in lines[0], proc.stderr
+    assert not (tmp_path / "sheet.csv").exists()
+
+
+def test_every_option_has_help():
+    from demid.cli import build_parser
+
+    parser = build_parser()
+    design = parser._subparsers._group_actions[0].choices["design"]
+    for action in design._actions:
+        assert action.help, action.dest
+
+
+def test_parse_factor():
+    assert parse_factor("mu_r=0.05:0.35") == FactorRange("mu_r", 0.05, 0.35)

@@ -1,0 +1,212 @@
+"""The next wave: refocused box around a planted admissible set, proposals, aliased-term separation."""
+
+from __future__ import annotations
+
+from itertools import product
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from demid.admissibility import Domain
+from demid.config import validate_schema
+from demid.design import model_matrix, quadratic_terms
+from demid.errors import InputError
+from demid.next_wave import (DOMAIN_COLUMNS, PURPOSE_DESIGN, aliased_findings, check_next_runs, d_optimal_augment,
+                             next_box, plan_materials, plan_next_wave, propose_runs)
+from demid.spec import MaterialSpec
+from demid.surrogate import fit_material
+from demid.uncertainty import robust_identifiability_frame
+
+from .helpers import make_ccd_table
+
+CENTRE = np.array([0.3, 0.6])
+R0 = 0.15
+EPS = 0.05
+
+
+def _annulus_material(count=9, tolerance=EPS, margin=0.1):
+    """Exact quadratic y = |x - c|^2 on [0, 1]^2, target R0^2: the admissible set is an annulus with
+    outer radius R0 sqrt(1 + eps) (closed form), and the noise-free fit has no standard error."""
+    def responses(x):
+        return {"y": ((x - CENTRE) ** 2).sum(axis=1)}
+
+    table = make_ccd_table(responses, [0, 0], [1, 1], noise=0.0).rename(columns={"x1": "a", "x2": "b"})
+    table["status"] = "ok"
+    cfg = {"data": "planted.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+           "factors": {"a": {"lower": 0.0, "upper": 1.0}, "b": {"lower": 0.0, "upper": 1.0}},
+           "responses": {"y": {"target": R0 ** 2}},
+           "scenarios": {"y": {"observables": ["y"], "tolerance": tolerance}},
+           "next_runs": {"count": count, "scenario": "", "margin": margin}}
+    surrogates = {f.response: f.surrogate() for f in fit_material(table, cfg)}
+    robust = robust_identifiability_frame(surrogates, MaterialSpec.from_material("m", cfg).domain,
+                                          {"y": (("y",), tolerance)}, {"y": R0 ** 2}, 201, z=2.0)
+    return table, surrogates, cfg, robust
+
+
+def test_next_domain_contains_the_planted_set_and_is_refocused():
+    table, surrogates, cfg, robust = _annulus_material()
+    wave = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
+    assert list(wave.domain.columns) == DOMAIN_COLUMNS
+    outer = R0 * np.sqrt(1 + EPS)
+    lower, upper = wave.domain["lower"].to_numpy(), wave.domain["upper"].to_numpy()
+    assert np.all(lower <= CENTRE - outer) and np.all(upper >= CENTRE + outer)
+    # the margin (0.1 of the range per side) and nothing more: the box is refocused, not Omega
+    assert np.allclose(lower, np.maximum(0, CENTRE - outer - 0.1), atol=2e-3)
+    assert np.allclose(upper, np.minimum(1, CENTRE + outer + 0.1), atol=2e-3)
+
+
+def test_next_box_clips_to_range_and_handles_log_factors():
+    dom = Domain(("a", "k"), (0.0, 1e-3), (1.0, 1e1), (False, True))
+    lo, hi = next_box(dom, [0.05, 1e-2], [0.5, 1e-1], 0.1)
+    assert lo == pytest.approx([0.0, -2.0 - 0.4])  # log10 range is 4 decades; 0.1 of it = 0.4 decades
+    assert hi == pytest.approx([0.6, -1.0 + 0.4])
+    lo, hi = next_box(dom, [np.nan, np.nan], [np.nan, np.nan], 0.1)  # empty plausible set: keep Omega
+    assert lo == pytest.approx([0.0, -3.0]) and hi == pytest.approx([1.0, 1.0])
+
+
+def test_proposals_lie_in_the_box_on_the_plausible_set_and_predict_observables():
+    table, surrogates, cfg, robust = _annulus_material(count=9)
+    wave = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
+    runs = wave.runs
+    assert list(runs.columns) == ["material", "proposal", "a", "b", "purpose", "predicted_y"]
+    assert list(runs["proposal"]) == list(range(1, 10))
+    assert (runs["purpose"] == PURPOSE_DESIGN).all()
+    box = wave.domain.set_index("factor")
+    for f in ("a", "b"):
+        assert runs[f].between(box.loc[f, "lower"] - 1e-12, box.loc[f, "upper"] + 1e-12).all()
+    assert np.allclose(runs["predicted_y"], ((runs[["a", "b"]].to_numpy() - CENTRE) ** 2).sum(axis=1), atol=1e-9)
+    # plausible points only (noise-free: plausible = admissible, checked on the grid of the box)
+    rel = np.abs(runs["predicted_y"] / R0 ** 2 - 1)
+    assert (rel <= EPS + 1e-9).all()
+    # earlier + new runs determine the box's own quadratic
+    inside = table[(table["a"].between(box.loc["a", "lower"], box.loc["a", "upper"]))
+                   & (table["b"].between(box.loc["b", "lower"], box.loc["b", "upper"]))]
+    pts = np.vstack([inside[["a", "b"]].to_numpy(), runs[["a", "b"]].to_numpy()])
+    assert np.linalg.matrix_rank(model_matrix(pts, quadratic_terms(2))) == 6
+
+
+def test_greedy_d_optimal_design_is_the_textbook_3x3_grid():
+    pts = d_optimal_augment(np.empty((0, 2)), 9, 2)
+    assert sorted(map(tuple, pts)) == sorted(product((-1.0, 0.0, 1.0), repeat=2))
+
+
+def _independent(points, members):
+    """Columns of the member terms, residualised on the quadratic, are linearly independent."""
+    base = model_matrix(points, quadratic_terms(2))
+    cols = model_matrix(points, members)
+    resid = cols - base @ np.linalg.lstsq(base, cols, rcond=None)[0]
+    s = np.linalg.svd(resid, compute_uv=False)
+    return s.min() > 1e-8 * max(s.max(), 1e-300)
+
+
+def test_aliased_terms_from_the_criticism_get_separating_runs():
+    """On the 3-level grid b^3 cannot be told from b (nor from a^2:b once b is fitted); the proposals
+    for a finding naming that alias set include runs that make both terms separately estimable."""
+    members = ((0, 3), (2, 1))  # b^3, a^2:b (factor order a, b)
+    lo, hi = np.array([0.0, 10.0]), np.array([2.0, 30.0])
+    plain, plain_labels = propose_runs(lo, hi, np.empty((0, 2)), 9)
+    points, labels = propose_runs(lo, hi, np.empty((0, 2)), 9, [(members, ["y"])])
+    assert len(points) == 9 and all(lab is None for lab in plain_labels)
+    separating = [i for i, lab in enumerate(labels) if lab is not None]
+    assert 1 <= len(separating) <= 2 and labels[separating[0]] == (members, ["y"])
+
+    def coded(p):
+        return (p - (lo + hi) / 2) / ((hi - lo) / 2)
+
+    assert not _independent(coded(plain), list(members))
+    assert _independent(coded(points), list(members))
+    assert np.all((points >= lo) & (points <= hi))
+
+
+def test_findings_name_the_alias_sets():
+    findings = pd.DataFrame([
+        {"response": "y1", "cause": "missing_term", "detail": "b^3", "aliases": "b^3;a^2:b"},
+        {"response": "y2", "cause": "missing_term", "detail": "b^3", "aliases": "b^3;a^2:b"},
+        {"response": "y2", "cause": "missing_term", "detail": "a:b:b", "aliases": "a:b^2"},  # not aliased
+        {"response": "y1", "cause": "outlier", "detail": "3", "aliases": ""},
+    ])
+    assert aliased_findings(findings, ["a", "b"]) == [(((0, 3), (2, 1)), ["y1", "y2"])]
+    assert aliased_findings(pd.DataFrame(), ["a", "b"]) == []
+
+
+def test_same_inputs_same_tables():
+    table, surrogates, cfg, robust = _annulus_material()
+    one = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
+    two = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
+    pd.testing.assert_frame_equal(one.runs, two.runs)
+    pd.testing.assert_frame_equal(one.domain, two.domain)
+
+
+def test_plan_materials_without_requests_gives_headers_only():
+    domain, runs, reasons = plan_materials({}, {"tables": {}, "fits": {}, "robust": {}, "findings": {}}, z=2.0)
+    assert list(domain.columns) == DOMAIN_COLUMNS and len(domain) == 0 and reasons == {}
+    assert list(runs.columns) == ["material", "proposal", "purpose"]
+
+
+def test_config_next_runs_schema_and_cross_references():
+    base = {"materials": {"m": {"data": "x.csv", "design": {"type": "custom"},
+                                "factors": {"a": {"lower": 0, "upper": 1}},
+                                "responses": {"y": {"target": 1.0}},
+                                "scenarios": {"s": {"observables": ["y"], "tolerance": 0.1}},
+                                "next_runs": {"count": 5}}}}
+    checked = validate_schema(base)
+    assert checked["materials"]["m"]["next_runs"] == {"count": 5, "scenario": "", "margin": 0.1}
+    check_next_runs(checked)
+    with pytest.raises(InputError, match="next_runs"):
+        validate_schema({"materials": {"m": {**base["materials"]["m"], "next_runs": {"count": 0}}}})
+    with pytest.raises(InputError, match="next_runs"):
+        validate_schema({"materials": {"m": {**base["materials"]["m"], "next_runs": {"count": 3, "size": 2}}}})
+    bad = validate_schema({"materials": {"m": {**base["materials"]["m"],
+                                               "next_runs": {"count": 3, "scenario": "t"}}}})
+    with pytest.raises(InputError, match="next_runs.scenario: unknown scenario 't'"):
+        check_next_runs(bad)
+    none = validate_schema({"materials": {"m": {**base["materials"]["m"], "scenarios": {}}}})
+    with pytest.raises(InputError, match="needs at least one scenario"):
+        check_next_runs(none)
+
+
+@pytest.mark.workflow
+def test_pipeline_writes_the_next_wave_and_the_loop_closes(study_dir):
+    """next_runs: {count: 9} on a 2-factor study; then the next wave as an ordinary study validates."""
+    import subprocess
+    import sys
+
+    import yaml
+
+    from .workflow_helpers import run_snakemake
+
+    cfg_path = study_dir / "study.yaml"
+    cfg = yaml.safe_load(cfg_path.read_text(encoding="utf-8"))
+    cfg["materials"]["m"]["next_runs"] = {"count": 9}
+    cfg_path.write_text(yaml.safe_dump(cfg, sort_keys=False), encoding="utf-8")
+    proc = run_snakemake(study_dir, cfg_path, "results/tables/next_runs.csv")
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    domain = pd.read_csv(study_dir / "results" / "tables" / "next_domain.csv")
+    runs = pd.read_csv(study_dir / "results" / "tables" / "next_runs.csv")
+    assert list(domain.columns) == DOMAIN_COLUMNS and list(domain["factor"]) == ["a", "b"]
+    assert list(runs.columns) == ["material", "proposal", "a", "b", "purpose", "predicted_y1", "predicted_y2"]
+    assert list(runs["proposal"]) == list(range(1, 10))
+    box = domain.set_index("factor")
+    for f in ("a", "b"):
+        assert runs[f].between(box.loc[f, "lower"], box.loc[f, "upper"]).all()
+        assert box.loc[f, "lower"] >= cfg["materials"]["m"]["factors"][f]["lower"]
+        assert box.loc[f, "upper"] <= cfg["materials"]["m"]["factors"][f]["upper"]
+
+    # The loop: earlier runs inside the box + the simulated proposals, bounds = next domain, custom design.
+    earlier = pd.read_csv(study_dir / "data" / "m.csv")
+    inside = earlier[np.all([earlier[f].between(box.loc[f, "lower"], box.loc[f, "upper"]) for f in "ab"], axis=0)]
+    new = runs[["a", "b"]].copy()
+    new["y1"] = 100 + 20 * new["a"] - 2 * new["b"] + 10 * new["a"] ** 2 + 0.5 * new["a"] * new["b"]
+    new["y2"] = 80 + 5 * new["a"] + 3 * new["b"] - 0.1 * new["b"] ** 2
+    new.insert(0, "run", np.arange(100, 100 + len(new)))
+    pd.concat([inside, new], ignore_index=True).to_csv(study_dir / "data" / "wave2.csv", index=False)
+    mat = dict(cfg["materials"]["m"], data="data/wave2.csv", design={"type": "custom"})
+    mat.pop("next_runs")
+    mat.pop("reference_point")
+    mat["factors"] = {f: {"lower": float(box.loc[f, "lower"]), "upper": float(box.loc[f, "upper"])} for f in "ab"}
+    (study_dir / "wave2.yaml").write_text(yaml.safe_dump({"materials": {"m": mat}}, sort_keys=False),
+                                          encoding="utf-8")
+    check = subprocess.run([sys.executable, "-m", "demid", "validate", "--config", "wave2.yaml"], cwd=study_dir,
+                           capture_output=True, text=True)
+    assert check.returncode == 0, check.stderr
