@@ -135,4 +135,5 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
         "level2": level2.to_json() if level2 is not None else None,
         "reference_point": reference_point_position(surrogates, spec, n_effect),
     }
-    return MaterialCriticism(response_json, findings, calibration, summary, residual_figure(fits, results, title))
+    return MaterialCriticism(response_json, findings, calibration, summary, residual_figure(fits, results, title,
+                                                                                   units={r.name: r for r in spec.responses}))

@@ -12,8 +12,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 from matplotlib.colors import ListedColormap
-from matplotlib.patches import Patch
+from matplotlib.patches import Patch, Rectangle
 
+from .labels import axis_label
 from .style import MAX_PIXELS, plt, SCENARIO_COLORS, _axis_scale, _extent
 
 if TYPE_CHECKING:
@@ -45,13 +46,42 @@ def _cell_mask(result: AdmissibleSet, n: int, d: int) -> np.ndarray:
     return result.mask.reshape((n,) * d)
 
 
+def _zoom_box(domain, sets: dict, n: int, thin: float = 0.35):
+    """Search-unit box around every admissible cell (padded), when the sets fill less than ``thin``
+    of the range along an axis; None when they are wide enough to read or empty."""
+    lo, hi = domain.search_bounds()
+    union = None
+    for result in sets.values():
+        if result.points is not None:
+            return None
+        cells = _cell_mask(result, n, 2)
+        union = cells if union is None else union | cells
+    if union is None or not union.any():
+        return None
+    box = []
+    for axis in (0, 1):
+        idx = np.flatnonzero(union.any(axis=1 - axis))
+        a, b = lo[axis] + (hi[axis] - lo[axis]) * np.array([idx[0], idx[-1] + 1]) / n
+        box.append((a, b))
+    fractions = [(b - a) / (hi[k] - lo[k]) for k, (a, b) in enumerate(box)]
+    if min(fractions) >= thin:
+        return None
+    out = []
+    for k, (a, b) in enumerate(box):
+        pad = max(0.15 * (b - a), 0.01 * (hi[k] - lo[k]))
+        out.append((max(lo[k], a - pad), min(hi[k], b + pad)))
+    return out
+
+
 def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> plt.Figure:
     """Overlay of every scenario's admissible set (pairwise projections for d > 2)."""
     domain, reference_point, title = spec.domain, spec.reference_point, spec.label
     scenario_labels = {sc.name: sc.label for sc in spec.scenarios}
     d = domain.dim
     pairs = list(combinations(range(d), 2)) if d > 1 else [(0, 0)]
-    ncol = min(3, len(pairs))
+    zoom = _zoom_box(domain, sets, n) if d == 2 else None
+    if zoom is not None:  # a thin set: the same pair again, zoomed on the sets
+        pairs = pairs + pairs    ncol = min(3, len(pairs))
     nrow = int(np.ceil(len(pairs) / ncol))
     fig, grid_axes = plt.subplots(nrow, ncol, figsize=(4.4 * ncol + 0.6, 4.0 * nrow), squeeze=False)
     axes = grid_axes.reshape(1, -1)
@@ -81,17 +111,24 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> p
                       cmap=cmap, vmin=0, vmax=1, interpolation="nearest")
     names = list(domain.factors)
     for ax, (i, j) in zip(axes[0], pairs):
-        ax.set_xlabel(spec.factor(names[i]).axis_label)
-        ax.set_ylabel(spec.factor(names[j]).axis_label)
+        ax.set_xlabel(axis_label(spec.factor(names[i])))
+        ax.set_ylabel(axis_label(spec.factor(names[j])))
         lo, hi = domain.search_bounds()
         ax.set_xlim(lo[i], hi[i])
         ax.set_ylim(lo[j], hi[j])
         _axis_scale(ax, domain, i, j)
+    if zoom is not None:
+        (x0, x1), (y0, y1) = zoom
+        axes[0][1].set_xlim(x0, x1)
+        axes[0][1].set_ylim(y0, y1)
+        axes[0][1].set_title("zoom on the admissible sets", fontsize=9)
+        axes[0][0].set_title("whole search range", fontsize=9)
+        axes[0][0].add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, ec="0.3", lw=0.8, ls=":"))
         if reference_point:
             ref = domain.to_search(np.array([[reference_point[f] for f in names]]))[0]
-            ax.plot(ref[i], ref[j], marker="*", ms=11, color="#d62728", mec="k", mew=0.6, ls="none")
+            ax.plot(ref[i], ref[j], marker="*", ms=11, color="#D55E00", mec="k", mew=0.6, ls="none")
     if reference_point:
-        handles.append(plt.Line2D([], [], marker="*", ms=10, color="#d62728", mec="k", ls="none",
+        handles.append(plt.Line2D([], [], marker="*", ms=10, color="#D55E00", mec="k", ls="none",
                                   label="reference point"))
     fig.legend(handles=handles, loc="lower center", ncol=1, frameon=False, bbox_to_anchor=(0.5, 0.0))
     if title:

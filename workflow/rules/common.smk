@@ -137,10 +137,15 @@ def config_json():
     return json.dumps(config)  # keeps the config order of materials and responses
 
 
+def with_svg(figures):
+    """Every figure is written as PNG and as SVG (vector, for a paper)."""
+    return [f for png in figures for f in (png, png.removesuffix(".png") + ".svg")]
+
+
 def all_outputs():
     out = [o for m in MATERIALS for o in per_material_outputs(m)]
-    out += paper_figures()
-    out += report_figures()
+    out += with_svg(paper_figures())
+    out += with_svg(report_figures())
     out += SUMMARY_TABLES
     out += [f"{RESULTS}/criticism/{m}" for m in MATERIALS]
     out.append(f"{RESULTS}/report/report.html")
