@@ -125,3 +125,40 @@ def test_csv_rounding_six_significant_digits(tmp_path):
     assert round_significant(frame)["a"].iloc[0] == 0.3
     write_csv(frame, tmp_path / "u.csv")
     assert (tmp_path / "u.csv").read_bytes() == path.read_bytes()
+
+
+def test_cli_version_and_help_on_every_option(capsys):
+    import argparse
+
+    from demid import __version__
+    from demid.cli import build_parser, main
+
+    with pytest.raises(SystemExit) as stop:
+        main(["--version"])
+    assert stop.value.code == 0
+    assert capsys.readouterr().out.strip() == f"demid {__version__}"
+    parser = build_parser()
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    for name, command in sub.choices.items():
+        for action in command._actions:
+            assert action.help, f"{name} {action.option_strings} has no help"
+            assert "``" not in action.help
+
+
+def test_columns_dictionary_covers_every_declared_table():
+    from demid.report.columns import TABLE_COLUMNS, columns_table
+    from demid.report.tables import IDENTIFIABILITY_COLUMNS, SURROGATE_FIT_COLUMNS, TRANSCRIPTION_COLUMNS
+    from demid.uncertainty.ranking import RANKING_COLUMNS
+    from demid.uncertainty.robust import ROBUST_COLUMNS
+
+    table = columns_table({"m": [("a", "mm"), ("b", "-")]})
+    assert not table.duplicated(["table", "column"]).any()
+    assert (table["description"].str.len() > 10).all()
+    for name, cols in [("surrogate_fit", SURROGATE_FIT_COLUMNS), ("identifiability", IDENTIFIABILITY_COLUMNS),
+                       ("transcription_check", TRANSCRIPTION_COLUMNS), ("observable_ranking", RANKING_COLUMNS),
+                       ("robust_identifiability", ROBUST_COLUMNS)]:
+        assert set(cols) <= set(TABLE_COLUMNS[name]) | {"material"}, name
+    units = table.set_index(["table", "column"])["unit"]
+    assert units[("identifiability.csv", "tolerance")].startswith("fraction")
+    assert units[("identifiability.csv", "feasible_fraction_pct")] == "% of Ω"
+    assert units[("pareto_m.csv", "a")] == "mm"

@@ -260,6 +260,8 @@ class ReportSections:
             else:
                 lines += [f"- `{response}`: nothing found — the quadratic is adequate for these runs."]
         findings = self._csv("criticism.csv")
+        if findings is not None and "cause" in findings.columns:
+            findings = findings[findings["cause"] != "none"]
         if findings is not None and "response" in findings.columns and len(findings[findings["material"] == m]):
             cols = [c for c in ["response", "cause", "detail", "p_value", "loo_rmse_baseline", "loo_rmse_extended",
                                 "delta_aicc"] if c in findings.columns]

@@ -37,6 +37,7 @@ SUMMARY_TABLES = [
         "observable_ranking",
         "criticism",
         "calibration_residuals",
+        "columns",
     )
 ]
 
