@@ -81,7 +81,8 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> p
     pairs = list(combinations(range(d), 2)) if d > 1 else [(0, 0)]
     zoom = _zoom_box(domain, sets, n) if d == 2 else None
     if zoom is not None:  # a thin set: the same pair again, zoomed on the sets
-        pairs = pairs + pairs    ncol = min(3, len(pairs))
+        pairs = pairs + pairs
+    ncol = min(3, len(pairs))
     nrow = int(np.ceil(len(pairs) / ncol))
     fig, grid_axes = plt.subplots(nrow, ncol, figsize=(4.4 * ncol + 0.6, 4.0 * nrow), squeeze=False)
     axes = grid_axes.reshape(1, -1)

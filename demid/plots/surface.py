@@ -48,7 +48,9 @@ def surface_figure(domain: Domain, spec: MaterialSpec, grid: pd.DataFrame, n: in
                     label="design runs")
         ax.set_xlabel(axis_label(spec.factor(names[0])))
         ax.set_ylabel(axis_label(spec.factor(names[1])))
-        ax.set_title(tex_label(spec.response(r).label))
+        missed = target is not None and not (z.min() < target < z.max())
+        ax.set_title(tex_label(spec.response(r).label) + (f" (target {target:g} not on this plot)" if missed else ""),
+                     fontsize=9)
         _axis_scale(ax, domain, 0, 1)
     for ax in axes.ravel()[len(responses):]:
         ax.set_visible(False)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from typing import TYPE_CHECKING
 
 from ..spec import join_observables
@@ -75,14 +76,20 @@ def posterior_figure(posteriors: dict, title: str, *, factor_labels: dict[str, s
                 ax.set_xscale("log")
     for i, ax in enumerate(axes):
         ax.set_xlabel(factor_labels.get(factors[i], factors[i]))
-        ax.set_ylabel("posterior density [1/unit" + (" of log10" if posts[0].log[i] else "") + "]")
+        unit = re.search(r"\[(.*)\]$", ax.get_xlabel())
+        unit = unit.group(1) if unit else "–"
+        if posts[0].log[i]:
+            ax.set_ylabel("posterior density [per log10 unit]")
+        else:
+            ax.set_ylabel("posterior density [" + ("–" if unit == "–" else f"1/({unit})") + "]")
         top = max(max(post.marginals[i]) for post in posts)
         step = 0.05 * top
         for k, (lo, hi, color) in enumerate(intervals[i]):
             ax.plot([lo, hi], [-step * (k + 1)] * 2, color=color, lw=2.5, solid_capstyle="butt")
         ax.axhline(0, color="0.6", lw=0.6)
         ax.set_ylim(-step * (len(intervals[i]) + 1), 1.05 * top)
+        ax.set_yticks([t for t in ax.get_yticks() if 0 <= t <= 1.05 * top])  # no negative density ticks
     fig.legend(*axes[0].get_legend_handles_labels(), loc="outside lower center", ncol=min(3, len(posts)),
                fontsize="small", frameon=False)
-    fig.suptitle(title)
+    fig.suptitle(f"{title}: posterior densities; bars below zero are 95 % credible intervals")
     return fig
