@@ -46,26 +46,38 @@ def _cell_mask(result: AdmissibleSet, n: int, d: int) -> np.ndarray:
     return result.mask.reshape((n,) * d)
 
 
-def _zoom_box(domain, sets: dict, n: int, thin: float = 0.35):
+def _zoom_box(domain, sets: dict, n: int, thin: float = 0.35, keep=None):
     """Search-unit box around every admissible cell (padded), when the sets fill less than ``thin``
     of the range along an axis; None when they are wide enough to read or empty."""
     lo, hi = domain.search_bounds()
-    union = None
+    masks = []
     for result in sets.values():
         if result.points is not None:
             return None
         cells = _cell_mask(result, n, 2)
-        union = cells if union is None else union | cells
-    if union is None or not union.any():
+        if cells.any():
+            masks.append(cells)
+    if not masks:
         return None
-    box = []
-    for axis in (0, 1):
-        idx = np.flatnonzero(union.any(axis=1 - axis))
-        a, b = lo[axis] + (hi[axis] - lo[axis]) * np.array([idx[0], idx[-1] + 1]) / n
-        box.append((a, b))
-    fractions = [(b - a) / (hi[k] - lo[k]) for k, (a, b) in enumerate(box)]
-    if min(fractions) >= thin:
-        return None
+
+    def bbox(mask):
+        out = []
+        for axis in (0, 1):
+            idx = np.flatnonzero(mask.any(axis=1 - axis))
+            out.append(tuple(lo[axis] + (hi[axis] - lo[axis]) * np.array([idx[0], idx[-1] + 1]) / n))
+        return out
+
+    def is_thin(box):
+        return min((b - a) / (hi[k] - lo[k]) for k, (a, b) in enumerate(box)) < thin
+
+    # All sets if together they are thin, else the smallest set (it is drawn last, on top).
+    box = bbox(np.logical_or.reduce(masks))
+    if not is_thin(box):
+        box = bbox(min(masks, key=lambda m: m.sum()))
+        if not is_thin(box):
+            return None
+    if keep is not None:  # the reference point stays in view
+        box = [(min(a, keep[k]), max(b, keep[k])) for k, (a, b) in enumerate(box)]
     out = []
     for k, (a, b) in enumerate(box):
         pad = max(0.15 * (b - a), 0.01 * (hi[k] - lo[k]))
@@ -79,7 +91,9 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> p
     scenario_labels = {sc.name: sc.label for sc in spec.scenarios}
     d = domain.dim
     pairs = list(combinations(range(d), 2)) if d > 1 else [(0, 0)]
-    zoom = _zoom_box(domain, sets, n) if d == 2 else None
+    keep = (domain.to_search(np.array([[reference_point[f] for f in domain.factors]]))[0]
+            if reference_point else None)
+    zoom = _zoom_box(domain, sets, n, keep=keep) if d == 2 else None
     if zoom is not None:  # a thin set: the same pair again, zoomed on the sets
         pairs = pairs + pairs
     ncol = min(3, len(pairs))
@@ -118,6 +132,9 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> p
         ax.set_xlim(lo[i], hi[i])
         ax.set_ylim(lo[j], hi[j])
         _axis_scale(ax, domain, i, j)
+        if reference_point:
+            ref = domain.to_search(np.array([[reference_point[f] for f in names]]))[0]
+            ax.plot(ref[i], ref[j], marker="*", ms=11, color="#D55E00", mec="k", mew=0.6, ls="none")
     if zoom is not None:
         (x0, x1), (y0, y1) = zoom
         axes[0][1].set_xlim(x0, x1)
@@ -125,9 +142,6 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> p
         axes[0][1].set_title("zoom on the admissible sets", fontsize=9)
         axes[0][0].set_title("whole search range", fontsize=9)
         axes[0][0].add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, ec="0.3", lw=0.8, ls=":"))
-        if reference_point:
-            ref = domain.to_search(np.array([[reference_point[f] for f in names]]))[0]
-            ax.plot(ref[i], ref[j], marker="*", ms=11, color="#D55E00", mec="k", mew=0.6, ls="none")
     if reference_point:
         handles.append(plt.Line2D([], [], marker="*", ms=10, color="#D55E00", mec="k", ls="none",
                                   label="reference point"))

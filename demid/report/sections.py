@@ -95,7 +95,7 @@ class ReportSections:
         import json
 
         from ..spec import MaterialSpec
-        from .summary import VERDICT_TEXT, criticism_lines, next_step, verdict_table
+        from .summary import VERDICT_TEXT, criticism_lines, next_step, unit_text, verdict_table
 
         parts = [self._md("## Summary\n\nPer factor and observable scenario the admissible interval is judged: "
                           + VERDICT_TEXT)]
@@ -111,7 +111,7 @@ class ReportSections:
             verdicts = verdict_table(rows, spec) if len(rows) else pd.DataFrame(columns=["factor", "verdict"])
             if level2.get("best_point"):
                 best = level2["best_point"]
-                point = ", ".join(f"{spec.factor(f).label} = {best[f]:.4g}" + (f" {spec.factor(f).unit}"
+                point = ", ".join(f"{spec.factor(f).label} = {best[f]:.4g}" + (f" {unit_text(spec.factor(f).unit)}"
                                                                               if spec.factor(f).unit != "-" else "")
                                   for f in spec.factor_names if f in best)
                 lines.append(f"**Recommended parameter set** (the point with the smallest largest relative error "

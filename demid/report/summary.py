@@ -7,6 +7,8 @@ results tree; nothing is recomputed here.
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pandas as pd
 
@@ -26,6 +28,16 @@ VERDICT_TEXT = (
     f"beyond it; **no admissible point**: no point of the domain meets every target. Widths are measured in "
     f"search units (log10 for log-scaled factors)."
 )
+
+
+_SUPERSCRIPT = str.maketrans("-0123456789.", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹·")
+
+
+def unit_text(unit: str) -> str:
+    """A config unit for running text: ``J m^-2`` -> ``J m⁻²``; dimensionless -> ``–``."""
+    if not unit or unit.strip() == "-":
+        return "–"
+    return re.sub(r"\^\{?(-?[0-9.]+)\}?", lambda m: m.group(1).translate(_SUPERSCRIPT), unit)
 
 
 def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False) -> tuple[str, float]:
@@ -51,7 +63,7 @@ def verdict_table(identifiability: pd.DataFrame, spec) -> pd.DataFrame:
         factor = spec.factor(row["factor"])
         verdict, width = factor_verdict(float(row["lower"]), float(row["upper"]), factor.lower, factor.upper, factor.log)
         label = next((sc.label for sc in spec.scenarios if sc.name == row["scenario"]), row["scenario"])
-        rows.append({"scenario": label, "factor": factor.label, "unit": factor.unit,
+        rows.append({"scenario": label, "factor": factor.label, "unit": unit_text(factor.unit),
                      "admissible interval": "–" if verdict == "no admissible point"
                      else f"[{row['lower']:.4g}, {row['upper']:.4g}]",
                      "width [% of range]": 100 * width, "verdict": verdict})
@@ -61,7 +73,9 @@ def verdict_table(identifiability: pd.DataFrame, spec) -> pd.DataFrame:
 def criticism_lines(info: dict, spec) -> list[str]:
     """One line per response (surrogate vs runs) and one for simulation vs experiment."""
     lines = []
-    for response, res in info.get("level1", {}).items():
+    level1 = info.get("level1", {})
+    for response in [r for r in spec.response_names if r in level1]:
+        res = level1[response]
         label = spec.response_labels.get(response, response)
         if res["messages"]:
             lines.append(f"Surrogate of {label}: " + " ".join(res["messages"]))
