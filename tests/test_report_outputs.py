@@ -162,3 +162,30 @@ def test_columns_dictionary_covers_every_declared_table():
     assert units[("identifiability.csv", "tolerance")].startswith("fraction")
     assert units[("identifiability.csv", "feasible_fraction_pct")] == "% of Ω"
     assert units[("pareto_m.csv", "a")] == "mm"
+
+
+def test_figures_are_png_at_300_dpi_and_svg_byte_identical_on_rerun(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+    from PIL import Image
+
+    from demid.io import save_figure
+
+    def draw():
+        fig = Figure(figsize=(2, 1.5))
+        ax = fig.subplots()
+        ax.plot([0, 1], [1, 0], label="a")
+        ax.set_xlabel(tex_label("μ_r,Po"))
+        ax.legend()
+        return fig
+
+    save_figure(draw(), tmp_path / "a.png")
+    save_figure(draw(), tmp_path / "b.png")
+    assert (tmp_path / "a.png").read_bytes() == (tmp_path / "b.png").read_bytes()
+    assert (tmp_path / "a.svg").read_bytes() == (tmp_path / "b.svg").read_bytes()
+    with Image.open(tmp_path / "a.png") as image:
+        assert image.size == (600, 450)
+    svg = (tmp_path / "a.svg").read_text(encoding="utf-8")
+    assert "<dc:date>" not in svg and "Matplotlib v" not in svg
