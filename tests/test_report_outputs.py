@@ -30,9 +30,9 @@ def test_block_anova_matches_statsmodels_nested_f_tests(seed):
     table, fit = _fit(seed)
     # Coded units equal actual units here (axial points at +-alpha = the bounds): statsmodels fits the raw table.
     full = smf.ols("y ~ x1 + x2 + x1:x2 + I(x1**2) + I(x2**2)", table).fit()
-    reduced = {"  Linear": "y ~ x1:x2 + I(x1**2) + I(x2**2)",
-               "  Two-factor interaction": "y ~ x1 + x2 + I(x1**2) + I(x2**2)",
-               "  Pure quadratic": "y ~ x1 + x2 + x1:x2"}
+    reduced = {"↳ Linear": "y ~ x1:x2 + I(x1**2) + I(x2**2)",
+               "↳ Two-factor interaction": "y ~ x1 + x2 + I(x1**2) + I(x2**2)",
+               "↳ Pure quadratic": "y ~ x1 + x2 + x1:x2"}
     anova = block_anova(fit).set_index("source")
     for source, formula in reduced.items():
         f, p, df = full.compare_f_test(smf.ols(formula, table).fit())
@@ -42,7 +42,7 @@ def test_block_anova_matches_statsmodels_nested_f_tests(seed):
     assert anova.loc["Residual", "sum_sq"] == pytest.approx(full.ssr, rel=1e-10)
     assert anova.loc["Model", "F"] == pytest.approx(full.fvalue, rel=1e-8)
     # Lack of fit + pure error = residual
-    assert anova.loc["  Lack of fit", "sum_sq"] + anova.loc["  Pure error", "sum_sq"] == pytest.approx(full.ssr)
+    assert anova.loc["↳ Lack of fit", "sum_sq"] + anova.loc["↳ Pure error", "sum_sq"] == pytest.approx(full.ssr)
 
 
 def test_coefficient_table_matches_statsmodels():

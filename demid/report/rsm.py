@@ -45,7 +45,7 @@ def block_anova(fit) -> pd.DataFrame:
         keep = [i for i, b in enumerate(blocks) if b != block]
         beta, *_ = np.linalg.lstsq(x[:, keep], y, rcond=None)
         sse_reduced = float(np.sum((y - x[:, keep] @ beta) ** 2))
-        rows.append((f"  {block}", len(blocks) - len(keep), sse_reduced - sse_full))
+        rows.append((f"↳ {block}", len(blocks) - len(keep), sse_reduced - sse_full))
     frame = pd.DataFrame(rows, columns=["source", "df", "sum_sq"])
     frame["mean_sq"] = frame["sum_sq"] / frame["df"]
     frame["F"] = frame["mean_sq"] / mse
@@ -53,8 +53,8 @@ def block_anova(fit) -> pd.DataFrame:
     lof_f, lof_p = lof.lof_f
     tail = pd.DataFrame([
         ("Residual", lof.df_residual, lof.ss_residual, np.nan, np.nan),
-        ("  Lack of fit", lof.df_lof, lof.ss_lof, lof_f, lof_p),
-        ("  Pure error", lof.df_pure_error, lof.ss_pure_error, np.nan, np.nan),
+        ("↳ Lack of fit", lof.df_lof, lof.ss_lof, lof_f, lof_p),
+        ("↳ Pure error", lof.df_pure_error, lof.ss_pure_error, np.nan, np.nan),
         ("Total (corrected)", lof.df_total, lof.ss_total, np.nan, np.nan),
     ], columns=["source", "df", "sum_sq", "F", "p_value"])
     tail["mean_sq"] = np.where(tail["df"] > 0, tail["sum_sq"] / tail["df"].clip(lower=1), np.nan)

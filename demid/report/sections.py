@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from ..io import read_parquet
+from ..io import FIGURE_DPI, read_parquet
 from .tables import IDENTIFIABILITY_COLUMNS
 
 
@@ -59,10 +59,14 @@ class ReportSections:
 
         if not path.is_file():
             return self._md(f"_(missing figure {path.name})_")
-        data = base64.b64encode(path.read_bytes()).decode("ascii")
+        raw = path.read_bytes()
+        data = base64.b64encode(raw).decode("ascii")
+        # Print size at 96 CSS px per inch (the PNG's width in pixels over its dpi), narrowed to the page:
+        # every figure's text then appears at about the same size.
+        css_px = round(int.from_bytes(raw[16:20], "big") / FIGURE_DPI * 96)
         alt = html.escape(alt or path.stem.replace("_", " "), quote=True)
         return HTML(f'<figure style="margin:0"><img src="data:image/png;base64,{data}" alt="{alt}" '
-                    f'style="width:100%;max-width:1100px;height:auto"><figcaption style="font-size:small">'
+                    f'style="width:{css_px}px;max-width:100%;height:auto"><figcaption style="font-size:small">'
                     f'{alt} — vector version: <code>figures/{path.stem}.svg</code></figcaption></figure>')
 
     def _paper(self, what: str) -> str:
@@ -358,8 +362,8 @@ class ReportSections:
                          f"{'inside' if point.inside else 'outside'} the search range Ω.")
             anova = block_anova(fit)
             lines += [f"#### {label}", "",
-                      "Coded units (A, B, … = " + ", ".join(f"{letters[f]}: {spec.factor(f).label}"
-                                                            for f in spec.factor_names) + "):", "",
+                      "Coded units (" + ", ".join(f"{letters[f]} = {spec.factor(f).label}"
+                                                   for f in spec.factor_names) + ", coded as below):", "",
                       f"`{equation(fit.term_names, coef['estimate'].to_numpy(), letters, label)}`", "",
                       "Actual units" + (" (log10 of log-scaled factors)" if spec.log_factors else "") + ":", "",
                       f"`{equation(fit.term_names, actual, {f: spec.factor(f).label for f in spec.factor_names}, label)}`",
