@@ -88,8 +88,8 @@ def test_factor_verdict_in_log_units():
                                                                  pytest.approx(1 / 3))
 
 
-@pytest.mark.parametrize("label, tex", [("μ_r,Po", r"$\mu_{\mathrm{r,Po}}$"), ("d_5", "$d_{5}$"),
-                                        ("mu_r", r"$\mu_{r}$"), ("gamma", r"$\gamma$"), ("AoR only", "AoR only")])
+@pytest.mark.parametrize("label, tex", [("μ_r,Po", r"$\mu_{\mathrm{r,Po}}$"), ("d_5", r"$d_{\mathrm{5}}$"), ("γ_M", r"$\gamma_{\mathrm{M}}$"),
+                                        ("mu_r", r"$\mu_{\mathrm{r}}$"), ("gamma", r"$\gamma$"), ("AoR only", "AoR only")])
 def test_mathtext_labels(label, tex):
     assert tex_label(label) == tex
 

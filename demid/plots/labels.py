@@ -46,7 +46,8 @@ def tex_label(label: str) -> str:
     body = _math(base)
     if sub:
         sub = sub.replace("_", ",")
-        inner = _math(sub) if sub in _GREEK or len(sub) == 1 else "\\mathrm{" + "".join(
+        # Subscripts name things (M for mortar, r for rolling): upright, Greek letters as symbols.
+        inner = _math(sub) if sub in _GREEK or sub in _TEX else "\\mathrm{" + "".join(
             _TEX.get(ch, ch) for ch in _SPECIAL.sub(r"\\\1", sub)) + "}"
         body += "_{" + inner + "}"
     return f"${body}$"
