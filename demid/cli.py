@@ -164,42 +164,50 @@ def _one_line_error(message: str):
     sys.exit(2)
 
 
+_DATA_HELP = "CSV table of the design runs: one column per factor and response"
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="demid", description=__doc__.splitlines()[0])
+    from . import __version__
+
+    parser = argparse.ArgumentParser(prog="demid", description="Command line: python -m demid <command>. "
+                                     "The full pipeline runs with snakemake -c2.")
+    parser.add_argument("--version", action="version", version=f"demid {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
 
     p = sub.add_parser("fit", help="quadratic OLS fit statistics and coefficients as JSON")
-    p.add_argument("--data", required=True)
+    p.add_argument("--data", required=True, help=_DATA_HELP)
     p.add_argument("--factors", required=True, help="comma-separated factor columns, in order")
     p.add_argument("--responses", required=True, help="comma-separated response columns")
     p.add_argument("--alpha", type=float, default=None, help="CCD axial distance (default: inferred)")
     p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"],
                    help="design family: sets the coding (axial points only in a ccd)")
-    p.add_argument("--out", required=True)
+    p.add_argument("--out", required=True, help="JSON file to write")
     p.set_defaults(func=cmd_fit)
 
     p = sub.add_parser("validate", help="check a config and its tables without running anything")
-    p.add_argument("--config", required=True)
+    p.add_argument("--config", required=True, help="the study's config YAML")
     p.set_defaults(func=cmd_validate)
 
     p = sub.add_parser("criticize", help="what the quadratic surrogate gets wrong, why, and the gain of a fix")
-    p.add_argument("--data", required=True)
-    p.add_argument("--factors", required=True)
-    p.add_argument("--response", required=True)
-    p.add_argument("--alpha", type=float, default=None)
+    p.add_argument("--data", required=True, help=_DATA_HELP)
+    p.add_argument("--factors", required=True, help="comma-separated factor columns, in order")
+    p.add_argument("--response", required=True, help="the response column to criticise")
+    p.add_argument("--alpha", type=float, default=None, help="CCD axial distance (default: inferred)")
     p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"],
                    help="design family: sets the coding (axial points only in a ccd)")
-    p.add_argument("--out", required=True)
+    p.add_argument("--out", required=True, help="JSON file to write")
     p.set_defaults(func=cmd_criticize)
 
     p = sub.add_parser("check-transcription", help="hold a table against its published statistics")
-    p.add_argument("--data", required=True)
-    p.add_argument("--factors", required=True)
-    p.add_argument("--response", required=True)
-    p.add_argument("--published", required=True, help="e.g. r2=0.9617,lof_f=90.33")
-    p.add_argument("--alpha", type=float, default=None)
-    p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"])
-    p.add_argument("--out", required=True)
+    p.add_argument("--data", required=True, help=_DATA_HELP)
+    p.add_argument("--factors", required=True, help="comma-separated factor columns, in order")
+    p.add_argument("--response", required=True, help="the response column the statistics belong to")
+    p.add_argument("--published", required=True, help="published statistics, e.g. r2=0.9617,lof_f=90.33")
+    p.add_argument("--alpha", type=float, default=None, help="CCD axial distance (default: inferred)")
+    p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"],
+                   help="design type of the table (default: ccd)")
+    p.add_argument("--out", required=True, help="JSON file to write")
     p.set_defaults(func=cmd_check_transcription)
 
     p = sub.add_parser("design", help="a randomised run sheet (CCD, Box-Behnken, 3^k factorial) and its config")

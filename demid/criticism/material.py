@@ -118,7 +118,12 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
             payload["identifiability"] = _identifiability_effect(surrogates, result.extended_surrogate(), response,
                                                                  spec, n_effect)
         response_json[response] = payload
-        frames.append(result.to_frame())
+        frame = result.to_frame()
+        if frame.empty:  # says "checked, nothing found" rather than looking like a check that never ran
+            frame = pd.DataFrame([{"response": response, "cause": "none", "detail": "", "aliases": "",
+                                   "message": "No defect found: the quadratic is adequate for these runs."}],
+                                 columns=frame.columns)
+        frames.append(frame)
         results.append(result)
         fits.append(fit_response(table, factors, response, coding=coding, log_factors=log_factors))
     findings = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame()
@@ -135,4 +140,5 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
         "level2": level2.to_json() if level2 is not None else None,
         "reference_point": reference_point_position(surrogates, spec, n_effect),
     }
-    return MaterialCriticism(response_json, findings, calibration, summary, residual_figure(fits, results, title))
+    return MaterialCriticism(response_json, findings, calibration, summary, residual_figure(fits, results, title,
+                                                                                   units={r.name: r for r in spec.responses}))

@@ -13,7 +13,7 @@ if TYPE_CHECKING:
 
 
 # =========================================================================== figure
-def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], title: str):
+def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], title: str, units: dict | None = None):
     """Residual diagnostics, one row per response: vs fitted, vs run order, normal QQ.
 
     Residuals are those of the baseline quadratic; the QQ panel uses externally
@@ -22,7 +22,13 @@ def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], ti
     written in the first panel.  Returns a :class:`matplotlib.figure.Figure`
     (no pyplot state, no dates; save with ``metadata={'Software': None}`` etc.).
     """
+    import textwrap
+
     from matplotlib.figure import Figure
+
+    from .labels import PALETTE, tex_label, tex_unit
+
+    units = units or {}
 
     by_response = {r.response: r for r in results}
     rows = max(len(fits), 1)
@@ -39,9 +45,12 @@ def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], ti
         theo = stats.norm.ppf((np.arange(1, len(stud) + 1) - 0.375) / (len(stud) + 0.25))
         qq_x = np.empty_like(theo)
         qq_x[order] = theo
-        panels = [(fitted, resid, "fitted value", "residual"),
-                  (runs.astype(float), resid, "run order", "residual"),
-                  (qq_x, stud, "normal quantile", "ext. studentised residual")]
+        item = units.get(fit.response)
+        unit = f" [{tex_unit(item.unit)}]" if item is not None else ""
+        name = tex_label(item.label) if item is not None else fit.response
+        panels = [(fitted, resid, f"fitted {name}{unit}", f"residual{unit}"),
+                  (runs.astype(float), resid, "run order [–]", f"residual{unit}"),
+                  (qq_x, stud, "normal quantile [–]", "ext. studentised residual [–]")]
         for ax, (x, y, xl, yl) in zip(row, panels):
             ax.scatter(x, y, s=18, color="0.25", zorder=3)
             ax.set_xlabel(xl)
@@ -51,29 +60,28 @@ def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], ti
         row[1].axhline(0, color="0.5", lw=0.8)
         lim = np.nanmax(np.abs(np.concatenate([qq_x, stud[np.isfinite(stud)]]))) if len(stud) else 1.0
         row[2].plot([-lim, lim], [-lim, lim], color="0.5", lw=0.8)
-        row[0].set_title(f"{fit.response}: residual vs fitted", fontsize=10)
-        row[1].set_title(f"{fit.response}: residual vs run order", fontsize=10)
-        row[2].set_title(f"{fit.response}: normal QQ", fontsize=10)
+        row[1].set_title(f"{name}: residual vs run order", fontsize=10)
+        row[2].set_title(f"{name}: normal QQ", fontsize=10)
         notes = []
         for f in (res.findings if res is not None else []):
             if f.cause == "outlier":
                 hit = runs == f.detail
                 for ax, (x, y, _, _) in zip(row, panels):
-                    ax.scatter(x[hit], y[hit], s=110, facecolors="none", edgecolors="tab:red", lw=1.5, zorder=4)
+                    ax.scatter(x[hit], y[hit], s=110, facecolors="none", edgecolors=PALETTE[5], lw=1.5, zorder=4)
                     for xi, yi in zip(x[hit], y[hit]):
                         ax.annotate(f"run {f.detail}", (xi, yi), textcoords="offset points", xytext=(6, 6),
-                                    color="tab:red", fontsize=8)
+                                    color=PALETTE[5], fontsize=8)
             elif f.cause == "drift":
                 slope, icpt = np.polyfit(runs.astype(float), resid, 1)
                 xs = np.array([runs.min(), runs.max()], dtype=float)
-                row[1].plot(xs, icpt + slope * xs, color="tab:red", lw=1.2)
+                row[1].plot(xs, icpt + slope * xs, color=PALETTE[5], lw=1.2)
             label = {"missing_term": "missing term", "response_transform": "transform",
                      "heteroscedasticity": "unequal scatter vs"}.get(f.cause, f.cause)
             alias = " = " + " = ".join(f.aliases[1:]) if f.cause == "missing_term" and len(f.aliases) > 1 else ""
             notes.append(f"{label} {f.detail}{alias} (p={f.p_value:.3g})")
-        text = "; ".join(notes) if notes else "nothing found"
-        row[0].text(0.02, 0.97, text, transform=row[0].transAxes, va="top", fontsize=8,
-                    color="tab:red" if notes else "0.3",
-                    bbox={"facecolor": "white", "alpha": 0.8, "edgecolor": "none"})
+        # The verdict goes in the panel title, never over the points.
+        text = "; ".join(notes) if notes else "no finding"
+        row[0].set_title(f"{name}: residual vs fitted\n" + "\n".join(textwrap.wrap(text, 60)), fontsize=9,
+                         color=PALETTE[5] if notes else "0.2")
     fig.suptitle(title)
     return fig

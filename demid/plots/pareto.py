@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .labels import PALETTE, axis_label, tex_label
 from .style import plt
 
 if TYPE_CHECKING:
@@ -28,10 +29,10 @@ def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, spec: MaterialSpec, c
     for ax, zoom in zip(axes, (False, True)):
         ax.plot(error[pick], objective[pick], ".", ms=1.2, color="#bdbdbd", alpha=0.6, rasterized=True,
                 label="grid points (random subsample)")
-        ax.plot(front_err, front_obj, "-", color="#08519c", lw=1.8, label="Pareto front")
-        ax.axvline(100 * max_error, color="#a63603", ls="--", lw=1, label=f"error = {100 * max_error:g} %")
-        ax.set_xlabel(f"relative error of {spec.response(error_of).label} [%]")
-        ax.set_ylabel(spec.response(minimise).axis_label)
+        ax.plot(front_err, front_obj, "-", color=PALETTE[0], lw=1.8, label="Pareto front")
+        ax.axvline(100 * max_error, color=PALETTE[5], ls="--", lw=1, label=f"error = {100 * max_error:g} %")
+        ax.set_xlabel(f"relative error of {tex_label(spec.response(error_of).label)} [%]")
+        ax.set_ylabel(axis_label(spec.response(minimise)))
         if zoom:
             xmax = 3 * 100 * max_error
             near = front_obj[front_err <= xmax]

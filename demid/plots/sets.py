@@ -12,8 +12,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 from matplotlib.colors import ListedColormap
-from matplotlib.patches import Patch
+from matplotlib.patches import Patch, Rectangle
 
+from .labels import axis_label
 from .style import MAX_PIXELS, plt, SCENARIO_COLORS, _axis_scale, _extent
 
 if TYPE_CHECKING:
@@ -45,12 +46,56 @@ def _cell_mask(result: AdmissibleSet, n: int, d: int) -> np.ndarray:
     return result.mask.reshape((n,) * d)
 
 
+def _zoom_box(domain, sets: dict, n: int, thin: float = 0.35, keep=None):
+    """Search-unit box around every admissible cell (padded), when the sets fill less than ``thin``
+    of the range along an axis; None when they are wide enough to read or empty."""
+    lo, hi = domain.search_bounds()
+    masks = []
+    for result in sets.values():
+        if result.points is not None:
+            return None
+        cells = _cell_mask(result, n, 2)
+        if cells.any():
+            masks.append(cells)
+    if not masks:
+        return None
+
+    def bbox(mask):
+        out = []
+        for axis in (0, 1):
+            idx = np.flatnonzero(mask.any(axis=1 - axis))
+            out.append(tuple(lo[axis] + (hi[axis] - lo[axis]) * np.array([idx[0], idx[-1] + 1]) / n))
+        return out
+
+    def is_thin(box):
+        return min((b - a) / (hi[k] - lo[k]) for k, (a, b) in enumerate(box)) < thin
+
+    # All sets if together they are thin, else the smallest set (it is drawn last, on top).
+    box = bbox(np.logical_or.reduce(masks))
+    if not is_thin(box):
+        box = bbox(min(masks, key=lambda m: m.sum()))
+        if not is_thin(box):
+            return None
+    if keep is not None:  # the reference point stays in view
+        box = [(min(a, keep[k]), max(b, keep[k])) for k, (a, b) in enumerate(box)]
+    out = []
+    for k, (a, b) in enumerate(box):
+        pad = max(0.15 * (b - a), 0.01 * (hi[k] - lo[k]))
+        out.append((max(lo[k], a - pad), min(hi[k], b + pad)))
+    return out
+
+
 def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> plt.Figure:
     """Overlay of every scenario's admissible set (pairwise projections for d > 2)."""
     domain, reference_point, title = spec.domain, spec.reference_point, spec.label
     scenario_labels = {sc.name: sc.label for sc in spec.scenarios}
     d = domain.dim
     pairs = list(combinations(range(d), 2)) if d > 1 else [(0, 0)]
+    keep = (domain.to_search(np.array([[reference_point[f] for f in domain.factors]]))[0]
+            if reference_point else None)
+    zoom = _zoom_box(domain, sets, n, keep=keep) if d == 2 else None
+    if zoom is not None:  # a thin set: the same pair again, zoomed on the sets
+        pairs = pairs + pairs
     ncol = min(3, len(pairs))
     nrow = int(np.ceil(len(pairs) / ncol))
     fig, grid_axes = plt.subplots(nrow, ncol, figsize=(4.4 * ncol + 0.6, 4.0 * nrow), squeeze=False)
@@ -81,17 +126,24 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> p
                       cmap=cmap, vmin=0, vmax=1, interpolation="nearest")
     names = list(domain.factors)
     for ax, (i, j) in zip(axes[0], pairs):
-        ax.set_xlabel(spec.factor(names[i]).axis_label)
-        ax.set_ylabel(spec.factor(names[j]).axis_label)
+        ax.set_xlabel(axis_label(spec.factor(names[i])))
+        ax.set_ylabel(axis_label(spec.factor(names[j])))
         lo, hi = domain.search_bounds()
         ax.set_xlim(lo[i], hi[i])
         ax.set_ylim(lo[j], hi[j])
         _axis_scale(ax, domain, i, j)
         if reference_point:
             ref = domain.to_search(np.array([[reference_point[f] for f in names]]))[0]
-            ax.plot(ref[i], ref[j], marker="*", ms=11, color="#d62728", mec="k", mew=0.6, ls="none")
+            ax.plot(ref[i], ref[j], marker="*", ms=11, color="#D55E00", mec="k", mew=0.6, ls="none")
+    if zoom is not None:
+        (x0, x1), (y0, y1) = zoom
+        axes[0][1].set_xlim(x0, x1)
+        axes[0][1].set_ylim(y0, y1)
+        axes[0][1].set_title("zoom on the admissible sets", fontsize=9)
+        axes[0][0].set_title("whole search range", fontsize=9)
+        axes[0][0].add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, ec="0.3", lw=0.8, ls=":"))
     if reference_point:
-        handles.append(plt.Line2D([], [], marker="*", ms=10, color="#d62728", mec="k", ls="none",
+        handles.append(plt.Line2D([], [], marker="*", ms=10, color="#D55E00", mec="k", ls="none",
                                   label="reference point"))
     fig.legend(handles=handles, loc="lower center", ncol=1, frameon=False, bbox_to_anchor=(0.5, 0.0))
     if title:

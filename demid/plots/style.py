@@ -13,16 +13,20 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after selecting the backend)
 
+from .labels import PALETTE  # noqa: E402
+
 if TYPE_CHECKING:
     from ..sampling import Domain
 
 
 plt.rcParams.update({
-    "figure.dpi": 150, "font.size": 9, "axes.titlesize": 10, "axes.labelsize": 9,
+    "figure.dpi": 150, "axes.prop_cycle": matplotlib.cycler(color=PALETTE), "font.size": 9, "axes.titlesize": 10, "axes.labelsize": 9,
     "legend.fontsize": 8, "svg.hashsalt": "demid", "axes.spines.top": False, "axes.spines.right": False,
 })
 
-SCENARIO_COLORS = ["#9ecae1", "#08519c", "#fdae6b", "#a63603", "#74c476", "#006d2c"]
+# Scenarios are drawn in order over each other (a later, larger observable set is a subset),
+# in the colour-blind-safe palette.
+SCENARIO_COLORS = [PALETTE[4], PALETTE[0], PALETTE[1], PALETTE[5], PALETTE[2], PALETTE[3]]
 MAX_PIXELS = 500
 
 

@@ -8,6 +8,7 @@ import numpy as np
 import pandas as pd
 
 from ..sampling import Domain
+from .labels import axis_label, tex_label, tex_unit
 from .style import plt, _axis_scale
 
 if TYPE_CHECKING:
@@ -36,24 +37,47 @@ def surface_figure(domain: Domain, spec: MaterialSpec, grid: pd.DataFrame, n: in
         xs = np.linspace(lo[0], hi[0], n)[::step]
         ys = np.linspace(lo[1], hi[1], n)[::step]
         cs = ax.contourf(xs, ys, z, levels=14, cmap="viridis")
-        fig.colorbar(cs, ax=ax, label=spec.response(r).axis_label)
+        fig.colorbar(cs, ax=ax, label=axis_label(spec.response(r)))
         target = spec.response(r).target
         if target is not None and z.min() < target < z.max():
             ax.contour(xs, ys, z, levels=[target], colors="w", linewidths=1.4, linestyles="--")
-        if table is not None:
-            pts = domain.to_search(table[names].to_numpy())
-            ax.plot(pts[:, 0], pts[:, 1], "o", ms=3.5, mfc="w", mec="k", mew=0.6, ls="none")
-        ax.set_xlabel(spec.factor(names[0]).axis_label)
-        ax.set_ylabel(spec.factor(names[1]).axis_label)
-        ax.set_title(spec.response(r).label)
+            ax.plot([], [], color="k", lw=1.4, ls="--", label="target contour")
+        if table is not None and len(table):
+            pts = domain.to_search(table[names[:2]].to_numpy())
+            ax.plot(pts[:, 0], pts[:, 1], "o", ms=3.5, mfc="w", mec="k", mew=0.6, ls="none",
+                    label="design runs")
+        ax.set_xlabel(axis_label(spec.factor(names[0])))
+        ax.set_ylabel(axis_label(spec.factor(names[1])))
+        missed = target is not None and not (z.min() < target < z.max())
+        ax.set_title(tex_label(spec.response(r).label) + (f" (target {target:g} not on this plot)" if missed else ""),
+                     fontsize=9)
         _axis_scale(ax, domain, 0, 1)
     for ax in axes.ravel()[len(responses):]:
         ax.set_visible(False)
+    handles = {}
+    for ax in axes.ravel():
+        for h, lab in zip(*ax.get_legend_handles_labels()):
+            handles.setdefault(lab, h)
     sub = "" if d <= 2 else f" (other factors at mid-range: {', '.join(names[2:])})"
     if title or sub:
         fig.suptitle(f"{title}{sub}")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.08 / nrow if handles else 0, 1, 1))
+    if handles:  # below the panels, never over a run
+        fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=len(handles), frameon=False)
     return fig
+
+
+def runs_on_slice(table: pd.DataFrame | None, domain: Domain, held: np.ndarray) -> pd.DataFrame | None:
+    """The design runs whose factors beyond the first two sit at the held values (runs elsewhere
+    would be read against a surface they do not lie on)."""
+    if table is None:
+        return None
+    names = list(domain.factors)
+    runs = domain.to_search(table[names].to_numpy())
+    centre = domain.to_search(held[None, :])[0]
+    lo, hi = domain.search_bounds()
+    off = np.abs(runs[:, 2:] - centre[2:]) / (hi[2:] - lo[2:])
+    return table[(off < 1e-3).all(axis=1)]
 
 
 def surface_figure_from_surrogates(surrogates: dict, spec: MaterialSpec, table: pd.DataFrame | None,
@@ -77,10 +101,10 @@ def surface_figure_from_surrogates(surrogates: dict, spec: MaterialSpec, table: 
         values = {r: grid[r].to_numpy() for r in surrogates}
         grid2 = pd.DataFrame(pts, columns=names[:2]).assign(**values)
         held = ", ".join(
-            f"{spec.factor(f).label} = {mid[k + 2]:.3g}"
-            + (f" {spec.factor(f).unit}" if spec.factor(f).unit != "-" else "")
+            f"{tex_label(spec.factor(f).label)} = {mid[k + 2]:.3g}"
+            + (f" {tex_unit(spec.factor(f).unit)}" if spec.factor(f).unit != "-" else "")
             for k, f in enumerate(names[2:]))
-        return surface_figure(slice_domain, spec, grid2, n, table,
-                              f"{title} — slice at {held}")
+        return surface_figure(slice_domain, spec, grid2, n, runs_on_slice(table, domain, mid),
+                              f"{title} — slice at {held} (held at mid-range)")
     grid = predict_grid(surrogates, domain, n)
     return surface_figure(domain, spec, grid, n, table, title)

@@ -2,7 +2,32 @@
 
 from __future__ import annotations
 
+import os
+import sys
+from contextlib import contextmanager
 from pathlib import Path
+
+
+@contextmanager
+def _kernel_stderr_to_log():
+    """Send the kernel process's stderr (it inherits file descriptor 2) where ``sys.stderr`` points,
+    i.e. the rule's log: ipykernel's start-up warnings are no business of the console."""
+    try:
+        target = sys.stderr.fileno()
+    except (AttributeError, OSError, ValueError):
+        yield
+        return
+    if target == 2:
+        yield
+        return
+    sys.stderr.flush()
+    saved = os.dup(2)
+    os.dup2(target, 2)
+    try:
+        yield
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
 
 
 def execute_report(notebook: str | Path, output: str | Path, *, results_dir: str, config_json: str) -> None:
@@ -10,6 +35,11 @@ def execute_report(notebook: str | Path, output: str | Path, *, results_dir: str
     import papermill as pm
 
     Path(output).parent.mkdir(parents=True, exist_ok=True)
+    with _kernel_stderr_to_log():
+        _execute(pm, notebook, output, results_dir, config_json)
+
+
+def _execute(pm, notebook, output, results_dir, config_json) -> None:
     pm.execute_notebook(str(notebook), str(output), parameters={"results_dir": results_dir,
                                                                   "config_json": config_json},
                         kernel_name="python3", progress_bar=False, log_output=False, cwd=str(Path.cwd()))

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from ..io import read_parquet
+from ..io import FIGURE_DPI, read_parquet
 from .tables import IDENTIFIABILITY_COLUMNS
 
 
@@ -30,6 +30,12 @@ def markdown_table(frame: pd.DataFrame, digits: int = 4) -> str:
     return "\n".join(lines)
 
 
+def _symbol_of(term: str, letters: dict[str, str]) -> str:
+    from .rsm import _symbol
+
+    return "–" if term == "Intercept" else _symbol(term, letters).replace(":", "·")
+
+
 class ReportSections:
     """Builds the report's displayable parts from the results folder; optional parts are skipped."""
 
@@ -44,10 +50,28 @@ class ReportSections:
 
         return Markdown(text)
 
-    def _image(self, path: Path):
-        from IPython.display import Image
+    def _image(self, path: Path, alt: str = ""):
+        """The PNG inline at the page's full width, with alt text and a link to its SVG twin."""
+        import base64
+        import html
 
-        return Image(filename=str(path), width=820) if path.is_file() else self._md(f"_(missing figure {path.name})_")
+        from IPython.display import HTML
+
+        if not path.is_file():
+            return self._md(f"_(missing figure {path.name})_")
+        raw = path.read_bytes()
+        data = base64.b64encode(raw).decode("ascii")
+        # Print size at 96 CSS px per inch (the PNG's width in pixels over its dpi), narrowed to the page:
+        # every figure's text then appears at about the same size.
+        css_px = round(int.from_bytes(raw[16:20], "big") / FIGURE_DPI * 96)
+        alt = html.escape(alt or path.stem.replace("_", " "), quote=True)
+        return HTML(f'<figure style="margin:0"><img src="data:image/png;base64,{data}" alt="{alt}" '
+                    f'style="width:{css_px}px;max-width:100%;height:auto"><figcaption style="font-size:small">'
+                    f'{alt} — vector version: <code>figures/{path.stem}.svg</code></figcaption></figure>')
+
+    def _paper(self, what: str) -> str:
+        """`` (paper Table 2)`` where published numbers are declared, else nothing: headings stay generic."""
+        return f" (paper {what})" if self.config.get("published") else ""
 
     def _csv(self, name: str) -> pd.DataFrame | None:
         path = self.root / "tables" / name
@@ -61,12 +85,76 @@ class ReportSections:
     # sections
     def all(self) -> list:
         parts = self.header()
-        parts += self.paper_comparison()
+        parts += self.summary()
         parts += self.surrogate_fit()
         parts += self.identifiability()
         for m in self.materials:
             parts += self.material(m)
+        parts += self.glossary()
+        parts += self.paper_comparison()
         return parts
+
+    def summary(self) -> list:
+        """Per material: recommended set, verdict per factor and scenario, criticism, next step."""
+        import json
+
+        from ..spec import MaterialSpec
+        from .summary import VERDICT_TEXT, criticism_lines, next_step, unit_text, verdict_table
+
+        parts = [self._md("## Summary\n\nPer factor and observable scenario the admissible interval is judged: "
+                          + VERDICT_TEXT)]
+        ident = self._csv("identifiability.csv")
+        ranking = self._csv("observable_ranking.csv")
+        for m in self.materials:
+            spec = MaterialSpec.from_material(m, self.config["materials"][m])
+            lines = [f"### {spec.label}", ""]
+            crit_path = self.root / "criticism" / f"{m}.json"
+            info = json.loads(crit_path.read_text(encoding="utf-8")) if crit_path.is_file() else {}
+            level2 = info.get("level2") or {}
+            rows = ident[ident["material"] == m] if ident is not None else pd.DataFrame()
+            verdicts = verdict_table(rows, spec) if len(rows) else pd.DataFrame(columns=["factor", "verdict"])
+            if level2.get("best_point"):
+                best = level2["best_point"]
+                point = ", ".join(f"{spec.factor(f).label} = {best[f]:.4g}" + (f" {unit_text(spec.factor(f).unit)}"
+                                                                              if spec.factor(f).unit != "-" else "")
+                                  for f in spec.factor_names if f in best)
+                lines.append(f"**Recommended parameter set** (the point with the smallest largest relative error "
+                             f"over {', '.join(spec.response_labels.get(o, o) for o in level2['observables'])}): "
+                             f"{point}; largest error {100 * level2['best_max_error']:.2f} %.")
+            if len(rows):
+                widest = max(spec.scenarios, key=lambda sc: len(sc.observables))
+                last = rows[rows["scenario"] == widest.name]
+                if len(last):
+                    iv = "; ".join(f"{spec.factor(r['factor']).label} ∈ [{r['lower']:.4g}, {r['upper']:.4g}]"
+                                   for _, r in last.iterrows())
+                    lines.append(f"Admissible intervals with every observable of *{widest.label}*: {iv}.")
+                loose = verdicts[(verdicts["scenario"] == widest.label) & (verdicts["verdict"] == "unresolved")]
+                if len(loose):
+                    lines.append(f"The data do not single out this point: {', '.join(loose['factor'])} can take any "
+                                 f"value in the interval above at (almost) the same error.")
+                lines += ["", markdown_table(verdicts, 3)]
+            crit = criticism_lines(info, spec)
+            if crit:
+                lines += ["", "**What the models get wrong:**", ""] + [f"- {c}" for c in crit]
+            steps = next_step(ranking[ranking["material"] == m] if ranking is not None else None, verdicts, spec)
+            if steps:
+                lines += ["", "**Next step:**", ""] + [f"- {s}" for s in steps]
+            parts.append(self._md("\n".join(lines)))
+        return parts
+
+    def glossary(self) -> list:
+        return [self._md(
+            "## Terms\n\n"
+            "- **Ω (search range)**: the box of factor values between the configured bounds (the design's ±α levels).\n"
+            "- **ε (tolerance)**: relative distance from the measured target within which a prediction counts as a "
+            "match; a fraction in the tables (0.02 = 2 %).\n"
+            "- **Φ (feasible fraction)**: share of Ω, in %, whose predictions match every target within ε.\n"
+            "- **z**: the number of standard deviations added to ε in a robust set (z = 2 covers about 95 %).\n"
+            "- **σ, σ_rel**: measurement uncertainty of a target, absolute or relative; when a response declares "
+            "none, σ_rel = ε/2 is assumed so that ε spans ±2σ.\n"
+            "- **bits / information gain**: Kullback–Leibler divergence from the uniform prior on Ω to the "
+            "posterior, in bits; one bit halves the plausible volume.\n"
+            "- **se**: standard error of the surrogate's mean prediction.")]
 
     def header(self) -> list:
         text = ["# demid — identifiability report", "",
@@ -92,14 +180,14 @@ class ReportSections:
         if table is None:
             return []
         n_pass = int(table["pass"].astype(str).str.lower().eq("true").sum())
-        return [self._md(f"## Reproduction of the published numbers\n\n{n_pass} of {len(table)} published "
+        return [self._md(f"## Appendix: reproduction of the published numbers\n\n{n_pass} of {len(table)} published "
                          f"numbers are reproduced within their tolerance.\n\n" + markdown_table(table))]
 
     def surrogate_fit(self) -> list:
         table = self._csv("surrogate_fit.csv")
         if table is None:
             return []
-        return [self._md("## Surrogate fidelity (Table 2)\n\nrmse = √(SSE/n); resid_std = √(SSE/(n−p)); "
+        return [self._md(f"## Surrogate fidelity{self._paper('Table 2')}\n\nrmse = √(SSE/n); resid_std = √(SSE/(n−p)); "
                          "q2 = 1 − PRESS/SST (leave-one-out); lack of fit is tested against pure error from "
                          "replicated runs.\n\n" + markdown_table(table))]
 
@@ -107,7 +195,7 @@ class ReportSections:
         table = self._csv("identifiability.csv")
         if table is None:
             return []
-        lines = ["## Admissible sets (Table 3)", "", markdown_table(table[IDENTIFIABILITY_COLUMNS]), ""]
+        lines = [f"## Admissible sets{self._paper('Table 3')}", "", markdown_table(table[IDENTIFIABILITY_COLUMNS]), ""]
         for m in self.materials:
             path = self.root / "scenarios" / f"{m}.parquet"
             if not path.is_file():
@@ -176,6 +264,8 @@ class ReportSections:
             else:
                 lines += [f"- `{response}`: nothing found — the quadratic is adequate for these runs."]
         findings = self._csv("criticism.csv")
+        if findings is not None and "cause" in findings.columns:
+            findings = findings[findings["cause"] != "none"]
         if findings is not None and "response" in findings.columns and len(findings[findings["material"] == m]):
             cols = [c for c in ["response", "cause", "detail", "p_value", "loo_rmse_baseline", "loo_rmse_extended",
                                 "delta_aicc"] if c in findings.columns]
@@ -195,7 +285,8 @@ class ReportSections:
                          f"nearest admissible point ({near})")
             lines.append(f"- Reference point vs scenario *{pos['scenario']}*: it {where} (errors {errs}).")
         parts = [self._md("\n".join(lines))]
-        parts.append(self._image(self.root / "figures" / f"residuals_{m}.png"))
+        parts.append(self._image(self.root / "figures" / f"residuals_{m}.png",
+                                 f"Residuals of each response surface of {self._label(m)} against fitted value, run order and normal quantiles"))
         return parts
 
     def uncertainty(self, m: str) -> list:
@@ -227,7 +318,8 @@ class ReportSections:
                           f"{_contr(first['robust_fraction_pct'], last['robust_fraction_pct'])} (robust)."]
             parts.append(self._md("\n".join(lines)))
         parts.append(self._md("**Tolerance sweep** — conclusions should not hang on one ε."))
-        parts.append(self._image(self.root / "figures" / f"sweep_{m}.png"))
+        parts.append(self._image(self.root / "figures" / f"sweep_{m}.png",
+                                 f"Feasible fraction and admissible widths of {self._label(m)} against the tolerance"))
         ranking = self._csv("observable_ranking.csv")
         if ranking is not None and len(ranking[ranking["material"] == m]):
             sub = ranking[ranking["material"] == m]
@@ -236,7 +328,8 @@ class ReportSections:
             parts.append(self._md("**Which experiment next.** Every observable set ranked by information gain "
                                   "(KL divergence from the uniform prior on Ω to the grid posterior, in bits).\n\n"
                                   + markdown_table(sub[cols]) + ("\n\n" + info["advice"] if info.get("advice") else "")))
-        parts.append(self._image(self.root / "figures" / f"posterior_{m}.png"))
+        parts.append(self._image(self.root / "figures" / f"posterior_{m}.png",
+                                 f"Marginal posterior densities of the factors of {self._label(m)}, one curve per observable set"))
         if info.get("notes"):
             parts.append(self._md("\n".join(f"- {n}" for n in info["notes"])))
         return parts
@@ -255,6 +348,49 @@ class ReportSections:
                          "domain (tables/next_domain.csv) with the earlier runs inside it plus these "
                          "(`design: {type: custom}`).\n\n" + markdown_table(sub.drop(columns="material")))]
 
+    def response_surfaces(self, m: str) -> list:
+        """Per response: equation (coded, actual), block ANOVA, coefficients, stationary point."""
+        from ..spec import MaterialSpec
+        from ..surrogate import fit_material
+        from .rsm import block_anova, coefficient_table, equation, stationary_point
+
+        table = self.root / "validated" / f"{m}.parquet"
+        if not table.is_file():
+            return []
+        spec = MaterialSpec.from_material(m, self.config["materials"][m])
+        letters = {f: chr(ord("A") + i) for i, f in enumerate(spec.factor_names)}
+        coding = None
+        lines = ["### Response-surface models", ""]
+        for fit in fit_material(read_parquet(table), spec):
+            coding = fit.coding
+            label = spec.response_labels.get(fit.response, fit.response)
+            coef = coefficient_table(fit)
+            coef.insert(1, "symbol", [_symbol_of(t, letters) for t in coef["term"]])
+            actual = fit.coefficients()["coefficient_actual"].to_numpy()
+            point = stationary_point(fit, [f.lower for f in spec.factors], [f.upper for f in spec.factors])
+            if point.kind.startswith("none"):
+                where = "The quadratic part is singular: the surface has no stationary point."
+            else:
+                at = ", ".join(f"{spec.factor(f).label} = {v:.4g}" for f, v in zip(fit.factors, point.actual))
+                where = (f"Stationary point: a {point.kind} at {at} (predicted {label} = {point.value:.4g}), "
+                         f"{'inside' if point.inside else 'outside'} the search range Ω.")
+            anova = block_anova(fit)
+            lines += [f"#### {label}", "",
+                      "Coded units (" + ", ".join(f"{letters[f]} = {spec.factor(f).label}"
+                                                   for f in spec.factor_names) + ", coded as below):", "",
+                      f"`{equation(fit.term_names, coef['estimate'].to_numpy(), letters, label)}`", "",
+                      "Actual units" + (" (log10 of log-scaled factors)" if spec.log_factors else "") + ":", "",
+                      f"`{equation(fit.term_names, actual, {f: spec.factor(f).label for f in spec.factor_names}, label)}`",
+                      "", where, "", "ANOVA (block sums of squares are partial: the increase of the residual sum of "
+                      "squares when the block is dropped from the full quadratic):", "",
+                      markdown_table(anova), "", "Coefficients in coded units:", "",
+                      markdown_table(coef), ""]
+        if coding is not None:
+            lines += ["Coding: " + "; ".join(
+                f"{letters[f]} = ({'log10 ' if f in spec.log_factors else ''}{spec.factor(f).label} − {c:.4g}) / {u:.4g}"
+                for f, c, u in zip(coding.factors, coding.center, coding.unit)) + " (±1 = factorial levels)."]
+        return [self._md("\n".join(lines))]
+
     def material(self, m: str) -> list:
         cfg = self.config["materials"][m]
         parts = [self._md(f"## {self._label(m)}")]
@@ -270,14 +406,19 @@ class ReportSections:
             parts.append(self._md(text))
             parts += self.transcription(info.get("transcription") or {})
         parts.append(self._md("**Admissible sets by scenario** (cells drawn without smoothing; ★ = reference point)."))
-        parts.append(self._image(self.root / "figures" / f"sets_{m}.png"))
-        parts.append(self._md("**Response surfaces** with design runs (○) and targets (dashed)."))
-        parts.append(self._image(self.root / "figures" / f"surface_{m}.png"))
+        parts.append(self._image(self.root / "figures" / f"sets_{m}.png",
+                                 f"Admissible sets of {self._label(m)} per observable scenario over the search range"))
+        parts.append(self._md("**Response surfaces** with design runs (○) and the target contour (dashed, where the target lies in "
+                                  "the plotted range); with more than two factors, a slice through the centre of the others, "
+                                  "showing only the runs on that slice."))
+        parts.append(self._image(self.root / "figures" / f"surface_{m}.png",
+                                 f"Fitted response surfaces of {self._label(m)} with design runs and target contours"))
         if cfg.get("pareto"):
             par = cfg["pareto"]
             parts.append(self._md(f"**Pareto trade-off**: relative error of {par['error_of']} vs predicted "
                                   f"{par['minimise']}."))
-            parts.append(self._image(self.root / "figures" / f"pareto_{m}.png"))
+            parts.append(self._image(self.root / "figures" / f"pareto_{m}.png",
+                                 f"Pareto trade-off of {self._label(m)}: target error against the minimised response"))
             pareto = self._csv(f"pareto_{m}.csv")
             if pareto is not None:
                 iv = pareto[pareto["kind"] == "interval"][["factor", "lower", "upper", "n_points"]]
@@ -286,9 +427,7 @@ class ReportSections:
         parts += self.criticism(m)
         parts += self.uncertainty(m)
         parts += self.next_wave(m)
-        anova = self.root / "fits" / f"{m}_anova.parquet"
-        if anova.is_file():
-            parts.append(self._md("**ANOVA with lack of fit**\n\n" + markdown_table(read_parquet(anova))))
+        parts += self.response_surfaces(m)
         diag = self.root / "fits" / f"{m}_diagnostics.parquet"
         if diag.is_file():
             parts.append(self._md("**Residual diagnostics** (Breusch–Pagan, RESET, Shapiro–Wilk p-values; "

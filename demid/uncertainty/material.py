@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 import pandas as pd
 
+from ..plots.labels import axis_label
 from ..plots.uncertainty import posterior_figure, tolerance_sweep_figure
 from ..sampling import uses_grid
 from ..spec import FALLBACK_TOLERANCE, as_spec
@@ -82,7 +83,7 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
     robust_sigma, robust_basis = measurement_sigmas(spec.sigma_config, observables, targets)
     post_sigma, post_basis = measurement_sigmas(spec.sigma_config, observables, targets, tolerance)
     labels = {r: spec.response_labels[r] for r in observables}
-    factor_labels = spec.factor_labels
+    factor_labels = {f.name: axis_label(f) for f in spec.factors}  # mathtext with unit, for the figures
 
     robust = sweep = None
     if scenarios:

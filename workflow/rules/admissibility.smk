@@ -16,6 +16,8 @@ rule admissibility:
             category="Response surfaces",
             caption="../report/surface.rst",
         ),
+        figure_svg=f"{RESULTS}/figures/sets_{{material}}.svg",
+        surface_svg=f"{RESULTS}/figures/surface_{{material}}.svg",
     params:
         spec=material_spec,
     resources:

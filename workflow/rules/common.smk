@@ -39,6 +39,7 @@ SUMMARY_TABLES = [
         "observable_ranking",
         "criticism",
         "calibration_residuals",
+        "columns",
     )
 ]
 
@@ -153,10 +154,15 @@ def config_json(wildcards):
     return json.dumps(config)  # keeps the config order of materials and responses
 
 
+def with_svg(figures):
+    """Every figure is written as PNG and as SVG (vector, for a paper)."""
+    return [f for png in figures for f in (png, png.removesuffix(".png") + ".svg")]
+
+
 def all_outputs():
     out = [o for m in MATERIALS for o in per_material_outputs(m)]
-    out += paper_figures()
-    out += report_figures()
+    out += with_svg(paper_figures())
+    out += with_svg(report_figures())
     out += SUMMARY_TABLES
     out += [f"{RESULTS}/criticism/{m}" for m in MATERIALS]
     out += next_wave_tables()

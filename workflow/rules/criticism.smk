@@ -12,6 +12,7 @@ rule criticize_material:
             category="Model criticism",
             caption="../report/residuals.rst",
         ),
+        figure_svg=f"{RESULTS}/figures/residuals_{{material}}.svg",
     params:
         spec=material_spec,
     resources:

@@ -1,12 +1,14 @@
 rule paper_figure:
     input:
         figure=paper_figure_source,
+        figure_svg=lambda wildcards: paper_figure_source(wildcards).removesuffix(".png") + ".svg",
     output:
         figure=report(
             f"{RESULTS}/figures/{{paper_figure}}_{{material}}.png",
             category="Paper figures",
             caption="../report/paper_figure.rst",
         ),
+        figure_svg=f"{RESULTS}/figures/{{paper_figure}}_{{material}}.svg",
     wildcard_constraints:
         paper_figure=paper_figure_pattern(),
     resources:
@@ -18,4 +20,4 @@ rule paper_figure:
     benchmark:
         "benchmarks/figures/{paper_figure}_{material}.tsv"
     shell:
-        "cp {input.figure} {output.figure} 2> {log}"
+        "(cp {input.figure} {output.figure} && cp {input.figure_svg} {output.figure_svg}) 2> {log}"

@@ -10,6 +10,7 @@ rule extract_pareto:
             category="Pareto trade-off",
             caption="../report/pareto.rst",
         ),
+        figure_svg=f"{RESULTS}/figures/pareto_{{material}}.svg",
     params:
         spec=material_spec,
     resources:

@@ -26,8 +26,10 @@ rule summary_tables:
         ranking=f"{RESULTS}/tables/observable_ranking.csv",
         findings=f"{RESULTS}/tables/criticism.csv",
         calibration=f"{RESULTS}/tables/calibration_residuals.csv",
+        columns=f"{RESULTS}/tables/columns.csv",
     params:
         materials=MATERIALS,
+        pareto_factors={m: [(f.name, f.unit) for f in SPECS[m].factors] for m in pareto_materials()},
     resources:
         mem_mb=1000,
     conda:

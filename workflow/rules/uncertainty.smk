@@ -17,6 +17,8 @@ rule analyse_uncertainty:
             category="Uncertainty",
             caption="../report/posterior.rst",
         ),
+        sweep_svg=f"{RESULTS}/figures/sweep_{{material}}.svg",
+        posterior_svg=f"{RESULTS}/figures/posterior_{{material}}.svg",
     params:
         spec=material_spec,
         z=config["robust_z"],

@@ -1,0 +1,194 @@
+"""The data dictionary ``tables/columns.csv``: every column of every CSV the pipeline writes.
+
+One row per table x column with its unit and a description a reader needs without the code.
+Units that depend on the study (factor and response columns) name where they are configured.
+"""
+
+from __future__ import annotations
+
+import pandas as pd
+
+FRACTION = "fraction (0.02 = 2 %)"
+PCT = "% of Ω"
+FACTOR_UNIT = "unit of the factor (config: factors.<name>.unit)"
+RESPONSE_UNIT = "unit of the response (config: responses.<name>.unit)"
+
+_COMMON = {
+    "material": ("–", "Material key in the config."),
+    "response": ("–", "Response (simulated observable) key in the config."),
+    "scenario": ("–", "Scenario key in the config: a set of observables with one tolerance."),
+    "observables": ("–", "Observables matched, joined with '+'."),
+    "tolerance": (FRACTION, "Relative tolerance ε: a prediction matches when |y − y*| ≤ ε·|y*|."),
+    "feasible_fraction_pct": (PCT, "Feasible fraction Φ: share of the search range Ω whose predictions match every "
+                                   "target within ε, in percent."),
+    "factor": ("–", "Factor (micro-parameter) key in the config."),
+    "lower": (FACTOR_UNIT, "Smallest admissible value of the factor."),
+    "upper": (FACTOR_UNIT, "Largest admissible value of the factor."),
+    "width": (FACTOR_UNIT, "upper − lower: the admissible span W of the factor."),
+    "n_observables": ("–", "Number of observables in the set."),
+    "information_gain_bits": ("bit", "Kullback–Leibler divergence from the uniform prior on Ω to the posterior; one "
+                                     "bit halves the plausible volume."),
+    "information_gain_error_bits": ("bit", "Numerical (grid) error estimate of information_gain_bits."),
+}
+
+_TABLES: dict[str, dict[str, tuple[str, str]]] = {
+    "surrogate_fit": {
+        "n_runs": ("–", "Simulation runs used in the fit."),
+        "r2": ("–", "Coefficient of determination R²."),
+        "adj_r2": ("–", "R² adjusted for the number of model terms."),
+        "rmse": (RESPONSE_UNIT, "√(SSE/n): root-mean-square residual."),
+        "resid_std": (RESPONSE_UNIT, "√(SSE/(n−p)): residual standard deviation."),
+        "q2": ("–", "1 − PRESS/SST: leave-one-out predictive R²."),
+        "lof_f": ("–", "Lack-of-fit F statistic (lack of fit vs pure error of replicated runs)."),
+        "lof_p": ("–", "p-value of the lack-of-fit F test."),
+    },
+    "identifiability": {},
+    "transcription_check": {
+        "statistic": ("–", "Published fit statistic checked (r2, rmse, …)."),
+        "published": ("as the statistic", "Value printed in the source."),
+        "reproduced": ("as the statistic", "Value recomputed from the table."),
+        "agrees": ("–", "True when the reproduced value rounds to the published one."),
+        "printed": ("–", "The published value as printed (digits kept)."),
+    },
+    "robust_identifiability": {
+        "z": ("–", "Standard deviations added to ε in the robust set (z = 2 covers about 95 %)."),
+        "strict_fraction_pct": (PCT, "Feasible fraction of the strict set (tolerance only)."),
+        "robust_fraction_pct": (PCT, "Feasible fraction of the robust (plausible) set: tolerance plus "
+                                     "z·√(se² + σ²)."),
+        "strict_lower": (FACTOR_UNIT, "Smallest factor value in the strict set."),
+        "strict_upper": (FACTOR_UNIT, "Largest factor value in the strict set."),
+        "strict_width": (FACTOR_UNIT, "strict_upper − strict_lower."),
+        "robust_lower": (FACTOR_UNIT, "Smallest factor value in the robust set."),
+        "robust_upper": (FACTOR_UNIT, "Largest factor value in the robust set."),
+        "robust_width": (FACTOR_UNIT, "robust_upper − robust_lower."),
+        "strict_fraction_error_pct": (PCT, "Sampling error of strict_fraction_pct (0 on a full grid)."),
+        "robust_fraction_error_pct": (PCT, "Sampling error of robust_fraction_pct (0 on a full grid)."),
+        "method": ("–", "How the set was evaluated (grid or Sobol points)."),
+    },
+    "tolerance_sweep": {
+        "fraction_error_pct": (PCT, "Sampling error of feasible_fraction_pct (0 on a full grid)."),
+    },
+    "information_gain": {
+        "credible_lower": (FACTOR_UNIT, "Lower end of the central credible interval of the factor."),
+        "credible_upper": (FACTOR_UNIT, "Upper end of the central credible interval of the factor."),
+        "posterior_mean": (FACTOR_UNIT, "Posterior mean of the factor."),
+        "credible_width": (FACTOR_UNIT, "credible_upper − credible_lower."),
+        "credible_level": (FRACTION, "Probability content of the credible interval (0.95)."),
+        "grid_points": ("–", "Grid points per axis of the posterior evaluation."),
+        "sigma_basis": ("–", "Where each observable's measurement σ came from: configured sigma/sigma_rel, or the "
+                             "default σ_rel = ε/2."),
+    },
+    "observable_ranking": {
+        "rank": ("–", "Rank by information gain (1 = most informative)."),
+        "contraction_pct_vs_best_subset": ("%", "How much smaller the admissible fraction is than that of "
+                                                "best_subset (100 % = nothing left)."),
+        "best_subset": ("–", "Most informative subset with one observable fewer ('(none)' for single observables)."),
+        "gain_vs_best_subset_bits": ("bit", "Information added by the extra observable over best_subset."),
+        "rank_by_fraction": ("–", "Rank by smallest feasible fraction instead."),
+    },
+    "criticism": {
+        "cause": ("–", "Named defect of the quadratic surrogate (missing_term, response_transform, outlier, drift, "
+                       "heteroscedasticity), or 'none' when every test came back clean."),
+        "detail": ("–", "What exactly: the missing term, the transform, the outlying run, …"),
+        "aliases": ("–", "Terms the design cannot tell apart from the missing term, ';'-separated."),
+        "p_value": ("–", "Family-wise adjusted p-value of the finding."),
+        "loo_rmse_baseline": (RESPONSE_UNIT, "Leave-one-out RMSE of the plain quadratic."),
+        "loo_rmse_extended": (RESPONSE_UNIT, "Leave-one-out RMSE with the finding's extension."),
+        "delta_aicc": ("–", "AICc of the extension minus AICc of the quadratic (negative = better)."),
+        "message": ("–", "The finding in words."),
+    },
+    "calibration_residuals": {
+        "observable": ("–", "Observable with a measured target."),
+        "target": (RESPONSE_UNIT, "Measured target y*."),
+        "at_best": (RESPONSE_UNIT, "Predicted value at the best point (smallest largest relative error)."),
+        "rel_error_best": (FRACTION, "(prediction − target)/target at the best point."),
+        "at_reference": (RESPONSE_UNIT, "Predicted value at the configured reference point."),
+        "rel_error_reference": (FRACTION, "(prediction − target)/target at the reference point."),
+        "within_tolerance": ("–", "|rel_error_best| ≤ tolerance."),
+        "within_tolerance_reference": ("–", "|rel_error_reference| ≤ tolerance (empty without reference point)."),
+        "bottleneck": ("–", "True for the observable that keeps the targets from being met together."),
+        "max_error_without": (FRACTION, "Best achievable largest relative error when this observable is left out."),
+        "implied_bias": (FRACTION, "Relative simulation bias this observable would need for all targets to be met "
+                                   "exactly at one point."),
+        "bias_candidate": ("–", "True when leaving this observable out makes every other target reachable: the "
+                                "simulation may be biased in it."),
+    },
+    "paper_comparison": {
+        "quantity": ("–", "Published number compared (paper table/figure and what)."),
+        "published": ("as the quantity", "Value in the paper."),
+        "reproduced": ("as the quantity", "Value computed here."),
+        "abs_diff": ("as the quantity", "|reproduced − published|."),
+        "rel_diff": (FRACTION, "abs_diff/|published|."),
+        "tolerance": ("–", "Agreement required, as text (absolute '±0.005' or relative '±2 % rel')."),
+        "pass": ("–", "True when the difference is within the tolerance."),
+    },
+}
+
+_PARETO = {
+    "kind": ("–", "'front': a Pareto-optimal grid point; 'interval': factor range over front points below "
+                  "max_error."),
+    "error": (FRACTION, "Relative error of the pareto.error_of response at the point."),
+    "objective": (RESPONSE_UNIT, "Predicted value of the pareto.minimise response."),
+    "factor": ("–", "Factor of an interval row."),
+    "lower": (FACTOR_UNIT, "Smallest factor value over front points with error below max_error."),
+    "upper": (FACTOR_UNIT, "Largest factor value over front points with error below max_error."),
+    "n_points": ("–", "Front points with error below max_error."),
+}
+
+#: Columns of each table in the order they are written (the common ones included).
+TABLE_COLUMNS = {
+    "surrogate_fit": ["material", "response", "n_runs", "r2", "adj_r2", "rmse", "resid_std", "q2", "lof_f", "lof_p"],
+    "identifiability": ["material", "scenario", "observables", "tolerance", "feasible_fraction_pct", "factor",
+                        "lower", "upper", "width"],
+    "transcription_check": ["material", "response", "statistic", "published", "reproduced", "agrees", "printed"],
+    "robust_identifiability": ["material", "scenario", "observables", "tolerance", "z", "factor",
+                               "strict_fraction_pct", "robust_fraction_pct", "strict_lower", "strict_upper",
+                               "strict_width", "robust_lower", "robust_upper", "robust_width",
+                               "strict_fraction_error_pct", "robust_fraction_error_pct", "method"],
+    "tolerance_sweep": ["material", "scenario", "observables", "tolerance", "feasible_fraction_pct", "factor", "lower",
+                        "upper", "width", "fraction_error_pct"],
+    "information_gain": ["material", "observables", "n_observables", "information_gain_bits", "factor",
+                         "credible_lower", "credible_upper", "posterior_mean", "credible_width", "credible_level",
+                         "information_gain_error_bits", "grid_points", "sigma_basis"],
+    "observable_ranking": ["material", "rank", "observables", "information_gain_bits", "feasible_fraction_pct",
+                           "contraction_pct_vs_best_subset", "n_observables", "best_subset",
+                           "gain_vs_best_subset_bits", "information_gain_error_bits", "tolerance", "rank_by_fraction"],
+    "criticism": ["material", "response", "cause", "detail", "aliases", "p_value", "loo_rmse_baseline",
+                  "loo_rmse_extended", "delta_aicc", "message"],
+    "calibration_residuals": ["material", "observable", "target", "at_best", "rel_error_best", "at_reference",
+                              "rel_error_reference", "tolerance", "within_tolerance", "within_tolerance_reference",
+                              "bottleneck", "max_error_without", "implied_bias", "bias_candidate"],
+    "paper_comparison": ["quantity", "material", "published", "reproduced", "abs_diff", "rel_diff", "tolerance",
+                         "pass"],
+}
+
+
+def _describe(table: str, column: str) -> tuple[str, str]:
+    own = _TABLES.get(table, {})
+    if column in own:
+        return own[column]
+    if column == "tolerance" and table == "paper_comparison":
+        return own["tolerance"]
+    return _COMMON[column]
+
+
+def columns_table(pareto_factors: dict[str, list[tuple[str, str]]]) -> pd.DataFrame:
+    """The data dictionary; ``pareto_factors`` maps each Pareto material to its (factor, unit) pairs."""
+    rows = []
+    for table, columns in TABLE_COLUMNS.items():
+        for column in columns:
+            unit, description = _describe(table, column)
+            rows.append((f"{table}.csv", column, unit, description))
+    for material, factors in pareto_factors.items():
+        table = f"pareto_{material}.csv"
+        rows.append((table, "kind", *_PARETO["kind"]))
+        for name, unit in factors:
+            rows.append((table, name, unit if unit and unit != "-" else "–",
+                         f"Factor {name} of a front point."))
+        for column in ("error", "objective", "factor", "lower", "upper", "n_points"):
+            rows.append((table, column, *_PARETO[column]))
+    rows.append(("columns.csv", "table", "–", "CSV file under tables/ that the row describes."))
+    rows.append(("columns.csv", "column", "–", "Column name in that file."))
+    rows.append(("columns.csv", "unit", "–", "Unit of the column's values ('–' for none or text)."))
+    rows.append(("columns.csv", "description", "–", "What the column holds."))
+    return pd.DataFrame(rows, columns=["table", "column", "unit", "description"])

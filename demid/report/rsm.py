@@ -1,0 +1,118 @@
+"""Response-surface output as Design-Expert and R's rsm print it, from one fitted quadratic.
+
+Per response: the fitted equation in coded and in actual units, the ANOVA by term block
+(linear, two-factor interaction, pure quadratic; each block's partial sum of squares, i.e. the
+extra sum of squares of dropping it from the full model), residual split into lack of fit and
+pure error, the coefficient table and the stationary point of the surface.  Everything is
+read off :class:`~demid.surrogate.SurrogateFit` (its statsmodels OLS in coded units).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+from scipy import stats
+
+BLOCKS = ("Linear", "Two-factor interaction", "Pure quadratic")
+
+
+def term_block(term: tuple[int, ...]) -> str:
+    """The block of one term: intercept, linear, two-factor interaction, pure quadratic, higher order."""
+    order = sum(term)
+    if order == 0:
+        return "Intercept"
+    if order == 1:
+        return "Linear"
+    if order == 2:
+        return "Pure quadratic" if max(term) == 2 else "Two-factor interaction"
+    return "Higher order"
+
+
+def block_anova(fit) -> pd.DataFrame:
+    """ANOVA: model and its blocks (partial SS), residual, lack of fit, pure error, total."""
+    res = fit.results
+    x = res.model.exog
+    y = res.model.endog
+    sse_full = float(res.ssr)
+    df_resid = int(round(res.df_resid))
+    mse = sse_full / df_resid if df_resid > 0 else np.nan
+    blocks = [term_block(t) for t in fit.terms]
+    lof = fit.anova()
+    rows = [("Model", lof.df_model, lof.ss_model)]
+    for block in dict.fromkeys(b for b in blocks if b != "Intercept"):
+        keep = [i for i, b in enumerate(blocks) if b != block]
+        beta, *_ = np.linalg.lstsq(x[:, keep], y, rcond=None)
+        sse_reduced = float(np.sum((y - x[:, keep] @ beta) ** 2))
+        rows.append((f"↳ {block}", len(blocks) - len(keep), sse_reduced - sse_full))
+    frame = pd.DataFrame(rows, columns=["source", "df", "sum_sq"])
+    frame["mean_sq"] = frame["sum_sq"] / frame["df"]
+    frame["F"] = frame["mean_sq"] / mse
+    frame["p_value"] = stats.f.sf(frame["F"], frame["df"], df_resid)
+    lof_f, lof_p = lof.lof_f
+    tail = pd.DataFrame([
+        ("Residual", lof.df_residual, lof.ss_residual, np.nan, np.nan),
+        ("↳ Lack of fit", lof.df_lof, lof.ss_lof, lof_f, lof_p),
+        ("↳ Pure error", lof.df_pure_error, lof.ss_pure_error, np.nan, np.nan),
+        ("Total (corrected)", lof.df_total, lof.ss_total, np.nan, np.nan),
+    ], columns=["source", "df", "sum_sq", "F", "p_value"])
+    tail["mean_sq"] = np.where(tail["df"] > 0, tail["sum_sq"] / tail["df"].clip(lower=1), np.nan)
+    return pd.concat([frame, tail], ignore_index=True)[["source", "df", "sum_sq", "mean_sq", "F", "p_value"]]
+
+
+def coefficient_table(fit) -> pd.DataFrame:
+    """Estimate (coded units), standard error, t and p per term."""
+    res = fit.results
+    return pd.DataFrame({"term": fit.term_names, "estimate": res.params.to_numpy(), "std_error": res.bse.to_numpy(),
+                         "t": res.tvalues.to_numpy(), "p_value": res.pvalues.to_numpy()})
+
+
+def _symbol(name: str, symbols: dict[str, str]) -> str:
+    return ":".join(symbols.get(p.split("^")[0], p.split("^")[0]) + ("²" if p.endswith("^2") else "")
+                    for p in name.split(":"))
+
+
+def equation(names: list[str], coefficients, symbols: dict[str, str], response: str, digits: int = 4) -> str:
+    """``y = b0 + b1·x1 − …`` with ``·`` between factors of a term."""
+    text = f"{response} = {coefficients[0]:.{digits}g}"
+    for name, b in zip(names[1:], coefficients[1:]):
+        text += f" {'−' if b < 0 else '+'} {abs(b):.{digits}g}·" + _symbol(name, symbols).replace(":", "·")
+    return text
+
+
+@dataclass(frozen=True)
+class StationaryPoint:
+    coded: np.ndarray
+    actual: np.ndarray
+    value: float
+    kind: str          # maximum, minimum, saddle point, none (singular quadratic part)
+    inside: bool       # within the search range Ω
+
+
+def stationary_point(fit, lower, upper) -> StationaryPoint:
+    """x_s = −½ B⁻¹ b of the coded quadratic; its kind from the eigenvalues of B; inside Ω or not."""
+    k = len(fit.factors)
+    params = fit.results.params.to_numpy()
+    b = np.zeros(k)
+    big_b = np.zeros((k, k))
+    for term, coef in zip(fit.terms, params):
+        idx = [i for i, p in enumerate(term) for _ in range(p)]
+        if len(idx) == 1:
+            b[idx[0]] = coef
+        elif len(idx) == 2:
+            i, j = idx
+            big_b[i, j] += coef if i == j else coef / 2
+            if i != j:
+                big_b[j, i] += coef / 2
+    eig = np.linalg.eigvalsh(big_b)
+    if np.min(np.abs(eig)) < 1e-12 * max(1.0, np.max(np.abs(eig))):
+        nan = np.full(k, np.nan)
+        return StationaryPoint(nan, nan, float("nan"), "none (singular quadratic part)", False)
+    xs = -0.5 * np.linalg.solve(big_b, b)
+    actual_model = fit.coding.to_actual(xs[None, :])[0]
+    actual = np.array([10 ** v if f in fit.log_factors else v for f, v in zip(fit.factors, actual_model)])
+    value = float(params[0] + 0.5 * b @ xs)
+    kind = "maximum" if np.all(eig < 0) else "minimum" if np.all(eig > 0) else "saddle point"
+    inside = bool(np.all(actual >= np.asarray(lower) - 1e-12) and np.all(actual <= np.asarray(upper) + 1e-12))
+    return StationaryPoint(xs, actual, value, kind, inside)

@@ -1,0 +1,123 @@
+"""The report's first section: per material, the answer a researcher acts on.
+
+A recommended parameter set, the admissible interval and a verdict per factor and scenario,
+the criticism verdicts in one line each and the next step.  Every number is read from the
+results tree; nothing is recomputed here.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pandas as pd
+
+#: Width of the admissible interval, as a fraction of the search range, up to which a factor is *identified*.
+IDENTIFIED_MAX_WIDTH = 0.10
+#: Width from which a factor is *unresolved*: the data leave (almost) the whole search range open.
+UNRESOLVED_MIN_WIDTH = 0.90
+#: Distance to a search bound, as a fraction of the range, within which the set *touches* the bound.
+BOUND_TOUCH = 0.005
+
+VERDICT_TEXT = (
+    f"**identified**: admissible interval at most {100 * IDENTIFIED_MAX_WIDTH:g} % of the search range wide and "
+    f"clear of both bounds; **bounded**: narrower than {100 * UNRESOLVED_MIN_WIDTH:g} % of the range and clear of "
+    f"both bounds; **unresolved**: {100 * UNRESOLVED_MIN_WIDTH:g} % of the range or more is admissible, the "
+    f"observables say (almost) nothing about the factor; **cut by the search range**: narrower than that but "
+    f"touching a search bound (within {100 * BOUND_TOUCH:g} % of the range), so the true interval may extend "
+    f"beyond it; **no admissible point**: no point of the domain meets every target. Widths are measured in "
+    f"search units (log10 for log-scaled factors)."
+)
+
+
+_SUPERSCRIPT = str.maketrans("-0123456789.", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹·")
+
+
+def unit_text(unit: str) -> str:
+    """A config unit for running text: ``J m^-2`` -> ``J m⁻²``; dimensionless -> ``–``."""
+    if not unit or unit.strip() == "-":
+        return "–"
+    return re.sub(r"\^\{?(-?[0-9.]+)\}?", lambda m: m.group(1).translate(_SUPERSCRIPT), unit)
+
+
+def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False) -> tuple[str, float]:
+    """Verdict and width (fraction of the search range) of one admissible interval."""
+    if not (np.isfinite(lower) and np.isfinite(upper)):
+        return "no admissible point", float("nan")
+    f = np.log10 if log else (lambda v: v)
+    lo, hi, blo, bhi = f(lower), f(upper), f(bound_lower), f(bound_upper)
+    span = bhi - blo
+    width = (hi - lo) / span
+    if width >= UNRESOLVED_MIN_WIDTH:
+        return "unresolved", width
+    cut = [side for side, gap in (("lower", lo - blo), ("upper", bhi - hi)) if gap <= BOUND_TOUCH * span]
+    if cut:
+        return f"cut by the search range ({' and '.join(cut)} bound)", width
+    return ("identified" if width <= IDENTIFIED_MAX_WIDTH else "bounded"), width
+
+
+def verdict_table(identifiability: pd.DataFrame, spec) -> pd.DataFrame:
+    """One row per scenario x factor: interval, width in % of the range and verdict."""
+    rows = []
+    for _, row in identifiability.iterrows():
+        factor = spec.factor(row["factor"])
+        verdict, width = factor_verdict(float(row["lower"]), float(row["upper"]), factor.lower, factor.upper, factor.log)
+        label = next((sc.label for sc in spec.scenarios if sc.name == row["scenario"]), row["scenario"])
+        rows.append({"scenario": label, "factor": factor.label, "unit": unit_text(factor.unit),
+                     "admissible interval": "–" if verdict == "no admissible point"
+                     else f"[{row['lower']:.4g}, {row['upper']:.4g}]",
+                     "width [% of range]": 100 * width, "verdict": verdict})
+    return pd.DataFrame(rows)
+
+
+def criticism_lines(info: dict, spec) -> list[str]:
+    """One line per response (surrogate vs runs) and one for simulation vs experiment."""
+    lines = []
+    level1 = info.get("level1", {})
+    for response in [r for r in spec.response_names if r in level1]:
+        res = level1[response]
+        label = spec.response_labels.get(response, response)
+        if res["messages"]:
+            lines.append(f"Surrogate of {label}: " + " ".join(res["messages"]))
+        else:
+            lines.append(f"Surrogate of {label}: no defect found — the quadratic fits the simulation runs.")
+    level2 = info.get("level2")
+    if level2:
+        tol = 100 * level2["tolerance"]
+        worst = 100 * level2["best_max_error"]
+        if level2["feasible"]:
+            lines.append(f"Simulation vs experiment: every target can be met within {tol:g} % "
+                         f"(best point misses by at most {worst:.2f} %).")
+        else:
+            lines.append(f"Simulation vs experiment: the targets cannot all be met within {tol:g} %; the best point "
+                         f"misses by {worst:.2f} %" + (f", limited by {level2['bottleneck']}" if level2.get("bottleneck")
+                                                        else "") + ".")
+        if level2.get("reference_max_error") is not None:
+            lines.append(f"Reference point: largest error {100 * level2['reference_max_error']:.2f} % "
+                         f"({'within' if level2['reference_max_error'] <= level2['tolerance'] else 'outside'} "
+                         f"the {tol:g} % tolerance).")
+    return lines
+
+
+def next_step(ranking: pd.DataFrame | None, verdicts: pd.DataFrame, spec) -> list[str]:
+    """Which observable to add (from the observable ranking) and which runs to simulate."""
+    steps = []
+    used = max((sc.observables for sc in spec.scenarios), key=len, default=())
+    if ranking is not None and len(ranking):
+        used_name = "+".join(used)
+        grow = ranking[(ranking["best_subset"] == used_name) & (ranking["n_observables"] == len(used) + 1)]
+        if len(grow):
+            best = grow.sort_values("gain_vs_best_subset_bits", ascending=False).iloc[0]
+            added = [o for o in best["observables"].split("+") if o not in used]
+            names = ", ".join(spec.response_labels.get(o, o) for o in added)
+            steps.append(f"Measure {names} as well: it adds {best['gain_vs_best_subset_bits']:.2f} bits of information "
+                         f"and leaves {best['feasible_fraction_pct']:.3g} % of the domain admissible.")
+        elif used:
+            steps.append("Every observable with a target is already used; a narrower set needs a new kind of "
+                         "measurement or a smaller tolerance (measurement uncertainty permitting).")
+    cut = verdicts[verdicts["verdict"].str.startswith("cut")]
+    for _, row in cut.drop_duplicates("factor").iterrows():
+        side = row["verdict"].split("(")[1].split(" bound")[0]
+        steps.append(f"Simulate runs beyond the {side} bound of {row['factor']}: the admissible set ends there "
+                     f"only because the design does.")
+    return steps
