@@ -62,7 +62,8 @@ def _identifiability_effect(surrogates: dict, extended, response: str, spec: Mat
 def reference_point_position(surrogates: dict, material, n: int) -> list[dict]:
     """Where the source's chosen point lies relative to each scenario's admissible set.
 
-    ``inside`` is evaluated at the point itself; ``nearest`` is the closest admissible grid node
+    ``inside`` is evaluated at the point itself; ``nearest`` is the closest admissible point (of the
+    exact set for polynomial surrogates, else the closest admissible grid node)
     (distance in units of the search ranges, in percent, so factors of different scale compare).
     ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry).
     """
@@ -79,9 +80,14 @@ def reference_point_position(surrogates: dict, material, n: int) -> list[dict]:
         name, obs = scen.name, scen.observables
         errors = {o: float((surrogates[o].predict(point)[0] - targets[o]) / abs(targets[o])) for o in obs}
         inside = max(abs(e) for e in errors.values()) <= scen.tolerance
-        aset = evaluate_set(surrogates, domain, obs, targets, scen.tolerance, n)
+        aset = evaluate_set(surrogates, domain, obs, targets, scen.tolerance, n, reference=ref)
         nearest, distance = None, None
-        if aset.mask.any():
+        if aset.exact is not None:
+            # the exact set: the nearest point of the set itself, not of a grid
+            if np.isfinite(aset.exact.reference_distance):  # inf: the set is empty
+                nearest = dict(zip(domain.factors, map(float, aset.exact.nearest_point)))
+                distance = 0.0 if inside else float(100 * aset.exact.reference_distance)
+        elif aset.mask.any():
             nodes = (aset.points if aset.points is not None else domain.grid(n))[aset.mask]
             u = (domain.to_search(nodes) - lo) / (hi - lo)
             k = int(np.argmin(np.sum((u - u_ref) ** 2, axis=1)))

@@ -13,6 +13,7 @@ import pandas as pd
 
 from ..plots.uncertainty import posterior_figure, tolerance_sweep_figure
 from ..sampling import uses_grid
+from ..sampling.evaluate import evaluate_set, uses_exact
 from ..spec import FALLBACK_TOLERANCE, as_spec
 from .posterior import INFORMATION_GAIN_COLUMNS, information_gain_frame, subset_posteriors
 from .ranking import RANKING_COLUMNS, next_measurement_advice, rank_observable_sets
@@ -84,18 +85,26 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
     labels = {r: spec.response_labels[r] for r in observables}
     factor_labels = spec.factor_labels
 
+    if strict_sets is None:
+        # each scenario's strict set, evaluated once and shared by robust table, sweep and ranking
+        strict_sets = {sc.name: evaluate_set(surrogates, domain, sc.observables, targets, sc.tolerance,
+                                             sizes["robust"]) for sc in spec.scenarios
+                       if uses_exact(surrogates, sc.observables, domain)}
+    by_observables = {frozenset(sc.observables): strict_sets[sc.name] for sc in spec.scenarios
+                      if sc.tolerance == tolerance and sc.name in strict_sets}
     robust = sweep = None
     if scenarios:
         robust = robust_identifiability_frame(surrogates, domain, scenarios, targets, sizes["robust"], z=z,
                                               sigma=robust_sigma, strict_sets=strict_sets,
                                               sobol_points=sizes["robust"], seed=seed)
         sweep = tolerance_sweep(surrogates, domain, scenarios, targets, tolerances, sizes["sweep"],
-                                sobol_points=sizes["sweep"], seed=seed)
+                                sobol_points=sizes["sweep"], seed=seed, strict_sets=strict_sets)
     points = sizes.get("posterior_points", 2 ** 16)
     posteriors = subset_posteriors(surrogates, domain, observables, targets, post_sigma, sizes["posterior"],
                                    sigma_basis=post_basis, sobol_points=points, seed=seed) if observables else {}
     ranking = (rank_observable_sets(surrogates, domain, observables, targets, post_sigma, tolerance,
-                                    sizes["posterior"], posteriors=posteriors, sobol_points=points)
+                                    sizes["posterior"], posteriors=posteriors, sobol_points=points,
+                                    strict_sets=by_observables)
                if observables else pd.DataFrame(columns=RANKING_COLUMNS))
     grid_word = "grid points per axis" if uses_grid(domain.dim) else "scrambled Sobol points"
     notes = [
