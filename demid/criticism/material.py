@@ -12,6 +12,7 @@ import pandas as pd
 
 from ..plots.criticism import residual_figure
 from ..sampling import evaluate_set, uses_grid
+from ..sampling.evaluate import uses_exact
 from ..spec import as_spec
 from ..surrogate import fit_response
 from .level1 import criticize
@@ -132,8 +133,11 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
     targets, domain = spec.targets, spec.domain
     level2 = None
     if targets:
+        with_targets = [r for r in targets if r in surrogates]
+        strict = (evaluate_set(surrogates, domain, with_targets, targets, spec.reference_tolerance, n_level2)
+                  if with_targets and uses_exact(surrogates, with_targets, domain) else None)
         level2 = calibration_check({r: surrogates[r] for r in targets}, domain, targets,
-                                   spec.reference_tolerance, n_level2, spec.reference_point)
+                                   spec.reference_tolerance, n_level2, spec.reference_point, strict_set=strict)
     calibration = level2.to_frame() if level2 is not None else pd.DataFrame()
     summary = {
         "level1": {r: {"findings": len(p["findings"]), "messages": [f["message"] for f in p["findings"]]}
