@@ -7,17 +7,19 @@ per published number with the reproduced value, the difference, a pass flag and
 ``printed_agrees``: whether the reproduction rounds to the printed value at the printed
 decimals (quoted numbers in ``published.yaml`` keep their trailing zeros).
 
-Tolerances (issue "demonstration dataset"):
+Tolerances: the smallest round bound that the demonstration meets with a margin, so a
+drift in any reproduced number shows (``printed_agrees`` says, in addition, whether the
+reproduction rounds to the printed digits):
 
-* R²: within 0.005 (absolute);
-* RMSE: within 2 % (relative);
-* feasible fractions: within 5 % (relative);
-* widths, interval ends and bounds: within 2 % (relative), or 0.005 (absolute) when the
-  published value is below 0.25 -- a grid step of the small parameters is of that order;
-* contractions: within 1 percentage point, recomputed from the *reproduced* fractions or
+* R²: within 0.0005 (absolute; half a unit of the printed third decimal);
+* RMSE: within 0.1 % (relative);
+* feasible fractions: within 0.1 % (relative);
+* widths, interval ends and bounds: within 0.5 % (relative), or 0.001 (absolute) when the
+  published value is below 0.25 (the paper's small bounds come from grids of about that step);
+* contractions: within 0.1 percentage point, recomputed from the *reproduced* fractions or
   widths as 100 (richer / simpler - 1);
 * tolerances epsilon of the scenarios: equal;
-* "unresolved over the full search interval": the admissible width is at least 98 % of the
+* "unresolved over the full search interval": the admissible width is at least 99.5 % of the
   search range.
 """
 
@@ -57,21 +59,21 @@ def rounds_to(reproduced: float, published, decimals: int) -> bool:
 def _rule(kind: str, published: float) -> tuple[str, callable]:
     """Readable tolerance and the test it stands for, by kind of number."""
     if kind == "r2":
-        return "±0.005", lambda d, r: d <= 0.005
+        return "±0.0005", lambda d, r: d <= 0.0005
     if kind == "rmse":
-        return "±2 % rel", lambda d, r: r <= 0.02
+        return "±0.1 % rel", lambda d, r: r <= 0.001
     if kind == "fraction":
-        return "±5 % rel", lambda d, r: r <= 0.05
+        return "±0.1 % rel", lambda d, r: r <= 0.001
     if kind == "width":
         if abs(published) < 0.25:
-            return "±0.005 abs (value < 0.25)", lambda d, r: d <= 0.005
-        return "±2 % rel", lambda d, r: r <= 0.02
+            return "±0.001 abs (value < 0.25)", lambda d, r: d <= 0.001
+        return "±0.5 % rel", lambda d, r: r <= 0.005
     if kind == "contraction":
-        return "±1 point", lambda d, r: d <= 1.0
+        return "±0.1 point", lambda d, r: d <= 0.1
     if kind == "tolerance":
         return "equal", lambda d, r: d <= 1e-12
     if kind == "unresolved":
-        return "≥ 98 % of the search range", lambda d, r: d <= 2.0
+        return "≥ 99.5 % of the search range", lambda d, r: d <= 0.5
     raise ValueError(f"unknown kind of published number '{kind}'")
 
 
