@@ -38,12 +38,13 @@ def evaluate_scenarios(surrogates: dict[str, Surrogate], material, n: int | None
     domain, targets = spec.domain, spec.targets
     frames, sets = [], {}
     for scen in spec.scenarios:
-        result = evaluate_set(surrogates, domain, scen.observables, targets, scen.tolerance, n, grid_predictions)
+        result = evaluate_set(surrogates, domain, scen.observables, targets, scen.tolerance, n, grid_predictions,
+                              grid=True, reference=spec.reference_point or None)
         frame = result.to_frame()
         frame.insert(0, "scenario", scen.name)
         frames.append(frame)
         sets[scen.name] = result
     columns = ["scenario", "observables", "tolerance", "feasible_fraction_pct", "factor", "lower", "upper",
-               "width", "node_fraction_pct", "n_admissible_nodes", "best_max_rel_error"]
+               "width", "node_fraction_pct", "n_admissible_nodes", "best_max_rel_error", "fraction_error_pct"]
     table = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=columns)
     return table[columns], sets

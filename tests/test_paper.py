@@ -94,14 +94,14 @@ def _tables():
 
 
 def _published(**changes):
-    pub = {"table2": {"m": {"y": {"r2": 0.953, "rmse": 2.03}}},
+    pub = {"table2": {"m": {"y": {"r2": 0.9503, "rmse": 2.001}}},
            "tolerances": {"m": {"a": 0.02}},
-           "table3": {"m": {"a": {"feasible_fraction_pct": 1.04, "width": {"x": 0.8, "z": 10.1}},
-                            "b": {"feasible_fraction_pct": 0.5, "width": {"x": 0.044}}}},
-           "contractions": [{"material": "m", "from": "a", "to": "b", "quantity": "fraction", "value": -50.5},
+           "table3": {"m": {"a": {"feasible_fraction_pct": 1.0005, "width": {"x": 0.8, "z": 10.04}},
+                            "b": {"feasible_fraction_pct": 0.5, "width": {"x": 0.0408}}}},
+           "contractions": [{"material": "m", "from": "a", "to": "b", "quantity": "fraction", "value": -50.05},
                             {"material": "m", "from": "a", "to": "b", "quantity": "width", "factor": "z",
                              "value": -80.0}],
-           "pareto": {"m": {"max_error": 0.02, "intervals": {"x": [0.052, 0.063]}}}}
+           "pareto": {"m": {"max_error": 0.02, "intervals": {"x": [0.0505, 0.0608]}}}}
     pub.update(changes)
     return pub
 
@@ -109,20 +109,33 @@ def _published(**changes):
 def test_tolerance_rules_on_hand_made_tables():
     table = paper_comparison(_published(), *_tables()).set_index("quantity")
     assert table["pass"].all(), table.to_string()
-    assert table.loc["Table 2 R² y", "abs_diff"] == pytest.approx(0.003)
-    assert table.loc["Table 2 RMSE y", "rel_diff"] == pytest.approx(0.03 / 2.03)
-    assert table.loc["Table 3 feasible fraction [%] a", "tolerance"] == "±5 % rel"
-    assert table.loc["Table 3 width x b", "tolerance"].startswith("±0.005 abs")   # 0.044 < 0.25: absolute rule
+    assert table.loc["Table 2 R² y", "abs_diff"] == pytest.approx(0.0003)
+    assert table.loc["Table 2 RMSE y", "rel_diff"] == pytest.approx(0.001 / 2.001)
+    assert table.loc["Table 3 feasible fraction [%] a", "tolerance"] == "±0.1 % rel"
+    assert table.loc["Table 3 width x b", "tolerance"].startswith("±0.001 abs")   # 0.0408 < 0.25: absolute rule
     assert table.loc["contraction [%] feasible fraction, a → b", "reproduced"] == pytest.approx(-50.0)
     assert table.loc["contraction [%] width z, a → b", "reproduced"] == pytest.approx(-80.0)
-    assert table.loc["Pareto interval x upper end (error < 0.02)", "abs_diff"] == pytest.approx(0.003)
+    assert table.loc["Pareto interval x upper end (error < 0.02)", "abs_diff"] == pytest.approx(0.0008)
+    # printed digits: 0.8 and -80.0 are met to the printed decimals, 10.04 and 0.0408 are not
+    assert table.loc["Table 3 width x a", "printed_agrees"]
+    assert table.loc["contraction [%] width z, a → b", "printed_agrees"]
+    assert not table.loc["Table 3 width z a", "printed_agrees"]
+    assert not table.loc["Table 3 width x b", "printed_agrees"]
+
+
+def test_printed_decimals_and_rounding():
+    from demid.paper import printed_decimals, rounds_to
+
+    assert [printed_decimals(v) for v in ("3.980", 0.0397, 11.755, 100, "0.0170")] == [3, 4, 3, 0, 4]
+    assert rounds_to(0.03604, 0.036, 3) and not rounds_to(0.03651, 0.036, 3)
+    assert rounds_to(3.9804, "3.980", 3) and not rounds_to(3.9806, "3.980", 3)
 
 
 def test_deviations_beyond_tolerance_fail():
-    pub = _published(table2={"m": {"y": {"r2": 0.944, "rmse": 2.05}}},
-                     table3={"m": {"a": {"feasible_fraction_pct": 1.06, "width": {"x": 0.8, "z": 10.3}},
-                                   "b": {"feasible_fraction_pct": 0.5, "width": {"x": 0.046}}}})
-    pub["contractions"][0]["value"] = -51.5
+    pub = _published(table2={"m": {"y": {"r2": 0.9507, "rmse": 2.003}}},
+                     table3={"m": {"a": {"feasible_fraction_pct": 1.002, "width": {"x": 0.8, "z": 10.06}},
+                                   "b": {"feasible_fraction_pct": 0.5, "width": {"x": 0.0412}}}})
+    pub["contractions"][0]["value"] = -50.2
     table = paper_comparison(pub, *_tables()).set_index("quantity")
     failing = set(table.index[~table["pass"]])
     assert failing == {"Table 2 R² y", "Table 2 RMSE y", "Table 3 feasible fraction [%] a", "Table 3 width z a",

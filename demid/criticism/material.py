@@ -12,6 +12,7 @@ import pandas as pd
 
 from ..plots.criticism import residual_figure
 from ..sampling import evaluate_set, uses_grid
+from ..sampling.evaluate import uses_exact
 from ..spec import as_spec
 from ..surrogate import fit_response
 from .level1 import criticize
@@ -42,14 +43,31 @@ def _effect_points(n: int, d: int) -> int:
     return min(n, 2 ** 14)
 
 
-def _identifiability_effect(surrogates: dict, extended, response: str, spec: MaterialSpec, n: int) -> list[dict]:
+class _ScenarioSets:
+    """Each scenario's strict set, evaluated on first use and then shared by every criticism step."""
+
+    def __init__(self, surrogates: dict, spec: MaterialSpec, n: int):
+        self.surrogates, self.spec, self.n = surrogates, spec, n
+        self.sets: dict = {}
+
+    def __call__(self, scen):
+        if scen.name not in self.sets:
+            self.sets[scen.name] = evaluate_set(self.surrogates, self.spec.domain, scen.observables,
+                                                self.spec.targets, scen.tolerance, self.n,
+                                                reference=self.spec.reference_point or None)
+        return self.sets[scen.name]
+
+
+def _identifiability_effect(surrogates: dict, extended, response: str, spec: MaterialSpec, n: int,
+                            scenario_sets: _ScenarioSets | None = None) -> list[dict]:
     """Feasible fraction and spans of every scenario that uses ``response``, before and after the extension."""
     domain, targets = spec.domain, spec.targets
+    scenario_sets = scenario_sets or _ScenarioSets(surrogates, spec, n)
     rows = []
     for scen in spec.scenarios:
         if response not in scen.observables:
             continue
-        before = evaluate_set(surrogates, domain, scen.observables, targets, scen.tolerance, n)
+        before = scenario_sets(scen)
         after = evaluate_set({**surrogates, response: extended}, domain, scen.observables, targets,
                             scen.tolerance, n)
         rows.append({"scenario": scen.name, "fraction_pct_before": 100 * before.fraction,
@@ -59,10 +77,12 @@ def _identifiability_effect(surrogates: dict, extended, response: str, spec: Mat
     return rows
 
 
-def reference_point_position(surrogates: dict, material, n: int) -> list[dict]:
+def reference_point_position(surrogates: dict, material, n: int,
+                             scenario_sets: _ScenarioSets | None = None) -> list[dict]:
     """Where the source's chosen point lies relative to each scenario's admissible set.
 
-    ``inside`` is evaluated at the point itself; ``nearest`` is the closest admissible grid node
+    ``inside`` is evaluated at the point itself; ``nearest`` is the closest admissible point (of the
+    exact set for polynomial surrogates, else the closest admissible grid node)
     (distance in units of the search ranges, in percent, so factors of different scale compare).
     ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry).
     """
@@ -71,6 +91,7 @@ def reference_point_position(surrogates: dict, material, n: int) -> list[dict]:
     if not ref:
         return []
     domain, targets = spec.domain, spec.targets
+    scenario_sets = scenario_sets or _ScenarioSets(surrogates, spec, n)
     point = np.array([[ref[f] for f in domain.factors]], dtype=float)
     lo, hi = domain.search_bounds()
     u_ref = (domain.to_search(point)[0] - lo) / (hi - lo)
@@ -79,9 +100,14 @@ def reference_point_position(surrogates: dict, material, n: int) -> list[dict]:
         name, obs = scen.name, scen.observables
         errors = {o: float((surrogates[o].predict(point)[0] - targets[o]) / abs(targets[o])) for o in obs}
         inside = max(abs(e) for e in errors.values()) <= scen.tolerance
-        aset = evaluate_set(surrogates, domain, obs, targets, scen.tolerance, n)
+        aset = scenario_sets(scen)
         nearest, distance = None, None
-        if aset.mask.any():
+        if aset.exact is not None:
+            # the exact set: the nearest point of the set itself, not of a grid
+            if np.isfinite(aset.exact.reference_distance):  # inf: the set is empty
+                nearest = dict(zip(domain.factors, map(float, aset.exact.nearest_point)))
+                distance = 0.0 if inside else float(100 * aset.exact.reference_distance)
+        elif aset.mask.any():
             nodes = (aset.points if aset.points is not None else domain.grid(n))[aset.mask]
             u = (domain.to_search(nodes) - lo) / (hi - lo)
             k = int(np.argmin(np.sum((u - u_ref) ** 2, axis=1)))
@@ -110,13 +136,14 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
     # comparison of two surrogates, and 3-factor grids would otherwise dominate the run time.
     n_effect = _effect_points(n, len(factors))
     n_level2 = n_effect if uses_grid(len(factors)) else max(5, int(2e5 ** (1 / len(factors))))
+    scenario_sets = _ScenarioSets(surrogates, spec, n_effect)
     response_json, frames, results, fits = {}, [], [], []
     for response in spec.response_names:
         result = criticize(table, factors, response, alpha=alpha, log_factors=log_factors)
         payload = result.to_json()
         if result.findings:
             payload["identifiability"] = _identifiability_effect(surrogates, result.extended_surrogate(), response,
-                                                                 spec, n_effect)
+                                                                 spec, n_effect, scenario_sets)
         response_json[response] = payload
         frame = result.to_frame()
         if frame.empty:  # says "checked, nothing found" rather than looking like a check that never ran
@@ -131,14 +158,21 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
     targets, domain = spec.targets, spec.domain
     level2 = None
     if targets:
+        with_targets = [r for r in targets if r in surrogates]
+        same = [sc for sc in spec.scenarios if set(sc.observables) == set(with_targets)
+                and sc.tolerance == spec.reference_tolerance]
+        strict = None
+        if with_targets and uses_exact(surrogates, with_targets, domain):
+            strict = (scenario_sets(same[0]) if same else
+                      evaluate_set(surrogates, domain, with_targets, targets, spec.reference_tolerance, n_level2))
         level2 = calibration_check({r: surrogates[r] for r in targets}, domain, targets,
-                                   spec.reference_tolerance, n_level2, spec.reference_point)
+                                   spec.reference_tolerance, n_level2, spec.reference_point, strict_set=strict)
     calibration = level2.to_frame() if level2 is not None else pd.DataFrame()
     summary = {
         "level1": {r: {"findings": len(p["findings"]), "messages": [f["message"] for f in p["findings"]]}
                    for r, p in response_json.items()},
         "level2": level2.to_json() if level2 is not None else None,
-        "reference_point": reference_point_position(surrogates, spec, n_effect),
+        "reference_point": reference_point_position(surrogates, spec, n_effect, scenario_sets),
     }
     return MaterialCriticism(response_json, findings, calibration, summary, residual_figure(fits, results, title,
                                                                                    units={r.name: r for r in spec.responses}))

@@ -1,11 +1,23 @@
-"""evaluate_set: one admissible set, on the grid or on Sobol points as :func:`uses_grid` decides."""
+"""evaluate_set: the one evaluator of a strict admissible set, used by every consumer.
+
+Polynomial surrogates in up to :data:`~demid.sampling.exact.MAX_EXACT_DIM` factors get the
+exact set (:mod:`demid.sampling.exact`: roots along lines, span ends by bisection); anything
+else (more factors, or fields that are not polynomials) gets the grid or Sobol estimator that
+:func:`~demid.sampling.domain.uses_grid` picks.  The grid is still evaluated when a caller
+needs its node mask (figures) or its closest approach; the numbers (fraction, its error,
+spans) then come from the exact set.
+"""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from .domain import uses_grid
-from .grid import admissible_set
+from .exact import MAX_EXACT_DIM, exact_set, polynomial_from_surrogate
+from .grid import AdmissibleSet, admissible_set
 from .sobol import sobol_admissible_set
 
 if TYPE_CHECKING:
@@ -13,13 +25,95 @@ if TYPE_CHECKING:
 
     from ..surrogate import Surrogate
     from .domain import Domain
-    from .grid import AdmissibleSet
+    from .exact import ExactSet
+
+#: Method names written next to the numbers.
+EXACT_METHOD = "exact (roots along lines, span ends by bisection)"
+
+
+def uses_exact(surrogates: dict, observables, domain: Domain) -> bool:
+    """True when the set of ``observables`` is computed exactly: polynomial surrogates on the
+    domain's factors (same log scales), at most :data:`MAX_EXACT_DIM` factors."""
+    from ..surrogate import Surrogate
+
+    if domain.dim > MAX_EXACT_DIM:
+        return False
+    log = {f for f, lg in zip(domain.factors, domain.log) if lg}
+    return all(isinstance(surrogates[o], Surrogate) and list(surrogates[o].factors) == list(domain.factors)
+               and set(surrogates[o].log_factors) == log for o in observables)
+
+
+def exact_set_on_domain(surrogates: dict, domain: Domain, observables, targets: dict[str, float],
+                        tolerance: float, reference: dict | None = None) -> ExactSet:
+    """The exact set of polynomial surrogates over ``domain`` (search units: log10 for log factors)."""
+    lo, hi = domain.search_bounds()
+    ref = None
+    if reference is not None:
+        ref = domain.to_search(np.array([[float(reference[f]) for f in domain.factors]]))[0]
+    return exact_set([polynomial_from_surrogate(surrogates[o]) for o in observables],
+                     [targets[o] for o in observables], tolerance, lo, hi, reference=ref,
+                     factors=domain.factors, log=domain.log)
+
+
+def _closest_approach(surrogates: dict, domain: Domain, observables, targets: dict[str, float],
+                      start: np.ndarray | None) -> tuple[float, np.ndarray]:
+    """min over the domain of max_k |relative residual| (Nelder-Mead in unit coordinates from
+    ``start``, actual units, or the best node of a small grid)."""
+    from scipy import optimize
+
+    lo, hi = domain.search_bounds()
+    obs = tuple(observables)
+
+    def worst(u):
+        x = domain.to_actual(lo + np.clip(np.atleast_2d(u), 0.0, 1.0) * (hi - lo))
+        return np.max(np.abs(np.stack([(surrogates[o].predict(x) - targets[o]) / abs(targets[o]) for o in obs])),
+                      axis=0)
+
+    if start is None:
+        nodes = (domain.to_search(domain.grid(21 if domain.dim <= 3 else 5)) - lo) / (hi - lo)
+        u0 = nodes[int(np.argmin(worst(nodes)))]
+    else:
+        u0 = (domain.to_search(np.atleast_2d(start))[0] - lo) / (hi - lo)
+    res = optimize.minimize(lambda u: float(worst(u)[0]) + float(np.sum(np.abs(u - np.clip(u, 0, 1)))), u0,
+                            method="Nelder-Mead", options={"xatol": 1e-10, "fatol": 1e-12, "maxfev": 2000})
+    u = np.clip(res.x, 0.0, 1.0)
+    value, point = float(worst(u)[0]), domain.to_actual(lo + u * (hi - lo))[0]
+    start_value = float(worst(u0)[0])
+    if start_value <= value:
+        return start_value, domain.to_actual(lo + u0 * (hi - lo))[0]
+    return value, point
+
 
 def evaluate_set(surrogates: dict[str, Surrogate], domain: Domain, observables, targets: dict[str, float],
-                 tolerance: float, n: int, predictions: pd.DataFrame | None = None) -> AdmissibleSet:
-    """The admissible set of ``observables`` at ``tolerance``: on the n-per-axis grid up to
-    :data:`MAX_GRID_DIM` factors, on n scrambled Sobol points beyond.  ``predictions`` are the
-    surrogates' values at those evaluation points when the caller already has them."""
-    if uses_grid(domain.dim):
-        return admissible_set(surrogates, domain, observables, targets, tolerance, n, grid_predictions=predictions)
-    return sobol_admissible_set(surrogates, domain, observables, targets, tolerance, n, predictions)
+                 tolerance: float, n: int, predictions: pd.DataFrame | None = None, *,
+                 grid: bool = False, reference: dict | None = None) -> AdmissibleSet:
+    """The strict admissible set of ``observables`` at ``tolerance``: exact for polynomial
+    surrogates in up to 3 factors, else on the n-per-axis grid (up to 3 factors) or n scrambled
+    Sobol points.  ``predictions`` are the surrogates' values at those evaluation points when
+    the caller already has them; ``grid`` asks for the node mask too (figures) when the set is
+    exact.  ``reference`` (actual units) is passed to the exact set for its distance.
+    """
+    observables = tuple(observables)
+    if not uses_exact(surrogates, observables, domain):
+        if uses_grid(domain.dim):
+            return admissible_set(surrogates, domain, observables, targets, tolerance, n, grid_predictions=predictions)
+        return sobol_admissible_set(surrogates, domain, observables, targets, tolerance, n, predictions)
+    exact = exact_set_on_domain(surrogates, domain, observables, targets, tolerance, reference)
+    spans = exact.spans
+    lower, upper = spans["lower"].to_numpy(dtype=float), spans["upper"].to_numpy(dtype=float)
+    if grid and uses_grid(domain.dim):
+        base = admissible_set(surrogates, domain, observables, targets, tolerance, n, grid_predictions=predictions)
+    else:
+        base = AdmissibleSet(observables=observables, tolerance=float(tolerance), factors=tuple(domain.factors),
+                             fraction=np.nan, node_fraction=np.nan, n_nodes=0, n_admissible_nodes=0,
+                             n_refined_cells=0, lower=lower, upper=upper, mask=np.zeros(0, dtype=bool))
+    best_error, best_point = base.best_error, base.best_point
+    if exact.fraction <= 0:
+        # closest approach of an empty set (the grid node, polished by a local search)
+        best_error, best_point = _closest_approach(surrogates, domain, observables, targets,
+                                                   best_point if len(best_point) else None)
+        if np.isfinite(base.best_error) and base.best_error < best_error:
+            best_error, best_point = base.best_error, base.best_point
+    return replace(base, fraction=float(exact.fraction), fraction_error=float(exact.fraction_error),
+                   lower=lower, upper=upper, best_error=float(best_error), best_point=np.asarray(best_point),
+                   method=EXACT_METHOD, exact=exact)

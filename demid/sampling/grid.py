@@ -56,6 +56,9 @@ class AdmissibleSet:
     evaluations: int = 0
     points: np.ndarray | None = field(default=None, repr=False)  # sample points (Sobol evaluation only)
     fraction_ci: tuple[float, float] | None = None
+    fraction_error: float = np.nan     # absolute error estimate of ``fraction`` (exact sets)
+    method: str = ""
+    exact: object = field(default=None, repr=False)  # the :class:`~demid.sampling.exact.ExactSet`, if exact
 
     @property
     def empty(self) -> bool:
@@ -77,6 +80,7 @@ class AdmissibleSet:
             "node_fraction_pct": 100.0 * self.node_fraction,
             "n_admissible_nodes": self.n_admissible_nodes,
             "best_max_rel_error": self.best_error,
+            "fraction_error_pct": 100.0 * self.fraction_error,
         })
 
 

@@ -42,7 +42,8 @@ def sobol_admissible_set(surrogates: dict[str, Surrogate], domain: Domain, obser
         node_fraction=float(mask.mean()), n_nodes=int(mask.size), n_admissible_nodes=int(mask.sum()),
         n_refined_cells=0, lower=np.asarray(est.lower), upper=np.asarray(est.upper), mask=mask,
         best_error=float(worst[best]), best_point=points[best], evaluations=int(est.evaluations + resid.size),
-        points=points, fraction_ci=(est.ci_lower, est.ci_upper))
+        points=points, fraction_ci=(est.ci_lower, est.ci_upper), fraction_error=(est.ci_upper - est.ci_lower) / 2,
+        method="scrambled Sobol")
 
 
 # =========================================================================== Sobol fraction

@@ -14,6 +14,7 @@ import pandas as pd
 from ..plots.labels import axis_label
 from ..plots.uncertainty import posterior_figure, tolerance_sweep_figure
 from ..sampling import uses_grid
+from ..sampling.evaluate import evaluate_set, uses_exact
 from ..spec import FALLBACK_TOLERANCE, as_spec
 from .posterior import INFORMATION_GAIN_COLUMNS, information_gain_frame, subset_posteriors
 from .ranking import RANKING_COLUMNS, next_measurement_advice, rank_observable_sets
@@ -85,18 +86,26 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
     labels = {r: spec.response_labels[r] for r in observables}
     factor_labels = {f.name: axis_label(f) for f in spec.factors}  # mathtext with unit, for the figures
 
+    if strict_sets is None:
+        # each scenario's strict set, evaluated once and shared by robust table, sweep and ranking
+        strict_sets = {sc.name: evaluate_set(surrogates, domain, sc.observables, targets, sc.tolerance,
+                                             sizes["robust"]) for sc in spec.scenarios
+                       if uses_exact(surrogates, sc.observables, domain)}
+    by_observables = {frozenset(sc.observables): strict_sets[sc.name] for sc in spec.scenarios
+                      if sc.tolerance == tolerance and sc.name in strict_sets}
     robust = sweep = None
     if scenarios:
         robust = robust_identifiability_frame(surrogates, domain, scenarios, targets, sizes["robust"], z=z,
                                               sigma=robust_sigma, strict_sets=strict_sets,
                                               sobol_points=sizes["robust"], seed=seed)
         sweep = tolerance_sweep(surrogates, domain, scenarios, targets, tolerances, sizes["sweep"],
-                                sobol_points=sizes["sweep"], seed=seed)
+                                sobol_points=sizes["sweep"], seed=seed, strict_sets=strict_sets)
     points = sizes.get("posterior_points", 2 ** 16)
     posteriors = subset_posteriors(surrogates, domain, observables, targets, post_sigma, sizes["posterior"],
                                    sigma_basis=post_basis, sobol_points=points, seed=seed) if observables else {}
     ranking = (rank_observable_sets(surrogates, domain, observables, targets, post_sigma, tolerance,
-                                    sizes["posterior"], posteriors=posteriors, sobol_points=points)
+                                    sizes["posterior"], posteriors=posteriors, sobol_points=points,
+                                    strict_sets=by_observables)
                if observables else pd.DataFrame(columns=RANKING_COLUMNS))
     grid_word = "grid points per axis" if uses_grid(domain.dim) else "scrambled Sobol points"
     notes = [
@@ -107,6 +116,10 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
         + (f"posteriors on {points} scrambled Sobol points ({sizes['posterior']} histogram bins)."
            if not uses_grid(domain.dim) else f"posteriors on {sizes['posterior']} grid points per axis."),
     ]
+    if strict_sets and all(a.exact is not None for a in strict_sets.values()):
+        notes.append("Strict sets (Table 3, the strict columns, the sweep and the ranking): exact for the fitted "
+                     "polynomials (roots along lines, span ends by bisection), one evaluation per scenario "
+                     "and tolerance.")
     if not scenarios:
         notes.append(f"No scenarios configured: ranking and default sigma use tolerance {FALLBACK_TOLERANCE:g}.")
     empty_robust = pd.DataFrame(columns=ROBUST_COLUMNS)

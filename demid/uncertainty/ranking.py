@@ -29,14 +29,15 @@ RANKING_COLUMNS = ["rank", "observables", "information_gain_bits", "feasible_fra
 def rank_observable_sets(surrogates: dict[str, Surrogate], domain: Domain, observables_with_targets,
                          targets: dict[str, float], sigma: dict[str, float], tolerance: float, n: int, *,
                          posteriors: dict | None = None, fraction_n: int | None = None,
-                         sobol_points: int = 2 ** 16) -> pd.DataFrame:
+                         sobol_points: int = 2 ** 16, strict_sets: dict | None = None) -> pd.DataFrame:
     """Rank every non-empty observable subset by information gain (bits), then by fraction.
 
     Columns: rank, observables, information_gain_bits, feasible_fraction_pct (strict, at
     ``tolerance``), contraction_pct_vs_best_subset = 100 (1 - Phi(S) / min_{T < S} Phi(T))
     over proper subsets T (the empty set is Omega, Phi = 1) and best_subset (that T), then
     gain_vs_best_subset_bits = IG(S) - max_{T < S} IG(T), n_observables, rank_by_fraction,
-    information_gain_error_bits.
+    information_gain_error_bits.  ``strict_sets`` (frozenset of observables -> strict set at
+    ``tolerance``) are reused instead of evaluating those subsets again.
     """
     observables = tuple(observables_with_targets)
     subsets = [c for size in range(1, len(observables) + 1) for c in combinations(observables, size)]
@@ -48,8 +49,10 @@ def rank_observable_sets(surrogates: dict[str, Surrogate], domain: Domain, obser
     frac = {(): 1.0}
     gain = {(): 0.0}
     for s in subsets:
+        given = (strict_sets or {}).get(frozenset(s))
         frac[s] = summarise_set(surrogates, domain, s, targets, tolerance, fn, polish=False, with_error=False,
-                                sobol_points=sobol_points, grid_predictions=grid).fraction
+                                sobol_points=sobol_points, grid_predictions=grid,
+                                grid_set=given if given is not None and given.exact is not None else None).fraction
         gain[s] = posteriors[s].information_gain_bits
     rows = []
     for s in subsets:

@@ -15,6 +15,7 @@ import numpy as np
 import pandas as pd
 
 from ..sampling import uses_grid
+from ..sampling.evaluate import evaluate_set, uses_exact
 from ..sampling.grid import admissible_set, fraction_with_error
 from ..sampling.polish import polish_spans
 from ..sampling.residuals import plausibility_fields
@@ -71,12 +72,19 @@ def summarise_set(surrogates: dict[str, Surrogate], domain: Domain, observables,
                   grid_predictions: pd.DataFrame | None = None, grid_set: AdmissibleSet | None = None) -> SetSummary:
     """One strict (z = 0) or plausible set by the method that suits the dimension.
 
-    Up to 3 factors: :func:`admissible_set` on the n-grid (``grid_set`` if already
+    Strict sets of polynomial surrogates in up to 3 factors: the exact set of
+    :func:`~demid.sampling.evaluate.evaluate_set` (``grid_set`` if already computed).
+    Otherwise up to 3 factors: :func:`admissible_set` on the n-grid (``grid_set`` if already
     computed), spans polished, error from :func:`fraction_with_error` (``grid_error``).
     More factors: :func:`sobol_fraction` with ``sobol_points`` points; the error is the
     half-width of its 95 % confidence interval.
     """
     observables = tuple(observables)
+    if z == 0 and uses_exact(surrogates, observables, domain):
+        # the strict set of polynomial surrogates: the one exact evaluator (or the set already computed)
+        aset = grid_set if grid_set is not None and grid_set.exact is not None else evaluate_set(
+            surrogates, domain, observables, targets, tolerance, n)
+        return SetSummary(aset.fraction, aset.fraction_error, aset.lower, aset.upper, aset.method)
     if not uses_grid(domain.dim):
         res = sobol_fraction(surrogates, domain, observables, targets, tolerance, sobol_points, seed,
                              z=z, sigma=sigma, polish=polish)
@@ -116,8 +124,8 @@ def robust_identifiability_frame(surrogates: dict[str, Surrogate], domain: Domai
         observables = tuple(observables)
         common = dict(polish=polish, sobol_points=sobol_points, seed=seed)
         given = (strict_sets or {}).get(name)
-        if given is not None and given.n_nodes != n ** domain.dim:
-            given = None  # computed on another grid: recompute so that both sets share one grid
+        if given is not None and given.exact is None and given.n_nodes != n ** domain.dim:
+            given = None  # a grid set on another grid: recompute so that both sets share one grid
         strict = summarise_set(surrogates, domain, observables, targets, tolerance, n, grid_set=given, **common)
         robust = summarise_set(surrogates, domain, observables, targets, tolerance, n, z=z, sigma=sigma, **common)
         frames.append(pd.DataFrame({

@@ -23,13 +23,15 @@ SWEEP_COLUMNS = ["scenario", "observables", "tolerance", "feasible_fraction_pct"
 def tolerance_sweep(surrogates: dict[str, Surrogate], domain: Domain, scenarios: dict,
                     targets: dict[str, float], tolerances, n: int, *, z: float = 0.0,
                     sigma: dict[str, float] | None = None, with_error: bool = True, polish: bool = False,
-                    sobol_points: int = 2 ** 14, seed: int = 0) -> pd.DataFrame:
+                    sobol_points: int = 2 ** 14, seed: int = 0, strict_sets: dict | None = None) -> pd.DataFrame:
     """Phi(eps) and spans for every scenario at every tolerance (long form, one row per factor).
 
     ``scenarios``: name -> (observables, nominal tolerance); the nominal tolerance is added
     to ``tolerances``.  Strict sets by default, plausible sets when ``z > 0``.  With
     ``with_error`` a trailing ``fraction_error_pct`` column bounds the numerical error of
     each fraction.  More than 3 factors: scrambled Sobol points instead of the grid.
+    ``strict_sets`` (name -> the scenario's strict set at its nominal tolerance) are reused
+    for the nominal row, so it repeats Table 3.
     """
     needed = sorted({o for obs, _ in scenarios.values() for o in obs})
     base = (predict_grid({o: surrogates[o] for o in needed}, domain, n)
@@ -38,8 +40,10 @@ def tolerance_sweep(surrogates: dict[str, Surrogate], domain: Domain, scenarios:
     for name, (observables, nominal) in scenarios.items():
         observables = tuple(observables)
         for eps in sorted(set(float(t) for t in tolerances) | {float(nominal)}):
+            given = (strict_sets or {}).get(name) if z == 0 and eps == float(nominal) else None
             res = summarise_set(surrogates, domain, observables, targets, eps, n, z=z, sigma=sigma, polish=polish,
-                                with_error=with_error, sobol_points=sobol_points, seed=seed, grid_predictions=base)
+                                with_error=with_error, sobol_points=sobol_points, seed=seed, grid_predictions=base,
+                                grid_set=given if given is not None and given.exact is not None else None)
             frame = pd.DataFrame({
                 "scenario": name, "observables": join_observables(observables), "tolerance": eps,
                 "feasible_fraction_pct": 100.0 * res.fraction, "factor": list(domain.factors),
