@@ -377,8 +377,8 @@ def test_bad_arguments():
 @pytest.fixture(scope="module")
 def demo():
     from demid.config import load_config
-    from demid.config import targets as material_targets
     from demid.data import validate_material
+    from demid.spec import MaterialSpec
     from demid.surrogate import fit_material
 
     config = load_config(ROOT / "config.yaml", base_dir=ROOT)
@@ -387,7 +387,7 @@ def demo():
         cfg = config["materials"][name]
         table = validate_material(name, cfg, base_dir=ROOT).table
         surrogates = {f.response: f.surrogate() for f in fit_material(table, cfg)}
-        return cfg, surrogates, material_targets(cfg)
+        return cfg, surrogates, MaterialSpec.from_material(name, cfg).targets
 
     return material
 
