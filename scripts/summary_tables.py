@@ -10,6 +10,7 @@ from demid.report.columns import columns_table  # noqa: E402
 
 inputs = {name: dict(zip(snakemake.params.materials, files))  # noqa: F821
           for name, files in snakemake.input.items()}  # noqa: F821
-write_csv(columns_table(snakemake.params.pareto_factors), snakemake.output.columns)  # noqa: F821
+write_csv(columns_table(snakemake.params.pareto_factors, snakemake.params.next_wave),  # noqa: F821
+          snakemake.output.columns)  # noqa: F821
 for name, table in summary_tables(inputs).items():
     write_csv(table, getattr(snakemake.output, name))  # noqa: F821

@@ -121,6 +121,17 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "rel_diff": (FRACTION, "abs_diff/|published|."),
         "tolerance": ("–", "Agreement required, as text (absolute '±0.005' or relative '±2 % rel')."),
         "pass": ("–", "True when the difference is within the tolerance."),
+        "printed_agrees": ("–", "True when the reproduction, rounded to the decimals the paper printed, equals "
+                                "the printed value."),
+    },
+    "next_domain": {
+        "lower": ("unit of the factor", "Lower end of the refocused search range for the next wave."),
+        "upper": ("unit of the factor", "Upper end of the refocused search range for the next wave."),
+    },
+    "next_runs": {
+        "proposal": ("–", "Number of the proposed run (1..count)."),
+        "purpose": ("–", "Why the run is proposed: a design run in the refocused box, or a run that separates "
+                         "terms the criticism found aliased."),
     },
 }
 
@@ -159,7 +170,7 @@ TABLE_COLUMNS = {
                               "rel_error_reference", "tolerance", "within_tolerance", "within_tolerance_reference",
                               "bottleneck", "max_error_without", "implied_bias", "bias_candidate"],
     "paper_comparison": ["quantity", "material", "published", "reproduced", "abs_diff", "rel_diff", "tolerance",
-                         "pass"],
+                         "pass", "printed_agrees"],
 }
 
 
@@ -172,9 +183,27 @@ def _describe(table: str, column: str) -> tuple[str, str]:
     return _COMMON[column]
 
 
-def columns_table(pareto_factors: dict[str, list[tuple[str, str]]]) -> pd.DataFrame:
-    """The data dictionary; ``pareto_factors`` maps each Pareto material to its (factor, unit) pairs."""
-    rows = []
+def _next_wave_rows(next_wave: dict) -> list[tuple]:
+    """Rows of the next-wave tables; ``next_wave`` maps factors and responses to their units."""
+    if not next_wave:
+        return []
+    rows = [("next_domain.csv", c, *(_describe("next_domain", c) if c in ("lower", "upper") else _COMMON[c]))
+            for c in ("material", "factor", "lower", "upper")]
+    rows += [("next_runs.csv", c, *(_COMMON[c] if c == "material" else _describe("next_runs", c)))
+             for c in ("material", "proposal")]
+    for name, unit in next_wave["factors"]:
+        rows.append(("next_runs.csv", name, unit if unit and unit != "-" else "–", f"Factor {name} of the run."))
+    rows.append(("next_runs.csv", "purpose", *_describe("next_runs", "purpose")))
+    for name, unit in next_wave["responses"]:
+        rows.append(("next_runs.csv", f"predicted_{name}", unit if unit and unit != "-" else "–",
+                     f"Surrogate prediction of {name} at the run."))
+    return rows
+
+
+def columns_table(pareto_factors: dict[str, list[tuple[str, str]]], next_wave: dict | None = None) -> pd.DataFrame:
+    """The data dictionary; ``pareto_factors`` maps each Pareto material to its (factor, unit) pairs;
+    ``next_wave`` holds the (name, unit) pairs of the factors and responses of next-wave materials."""
+    rows = _next_wave_rows(next_wave or {})
     for table, columns in TABLE_COLUMNS.items():
         for column in columns:
             unit, description = _describe(table, column)

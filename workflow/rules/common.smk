@@ -95,6 +95,17 @@ def next_wave_materials():
     return [m for m in MATERIALS if SPECS[m].next_runs]
 
 
+def next_wave_columns():
+    """(name, unit) of the factors and responses that appear in the next-wave tables."""
+    factors, responses = {}, {}
+    for m in next_wave_materials():
+        factors.update((f.name, f.unit) for f in SPECS[m].factors)
+        responses.update((r.name, r.unit) for r in SPECS[m].responses)
+    if not factors:
+        return {}
+    return {"factors": sorted(factors.items()), "responses": sorted(responses.items())}
+
+
 def next_wave_tables():
     """The next-wave tables exist only when some material asks for next_runs."""
     if not next_wave_materials():

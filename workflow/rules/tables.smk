@@ -30,6 +30,7 @@ rule summary_tables:
     params:
         materials=MATERIALS,
         pareto_factors={m: [(f.name, f.unit) for f in SPECS[m].factors] for m in pareto_materials()},
+        next_wave=next_wave_columns(),
     resources:
         mem_mb=1000,
     conda:
