@@ -1,0 +1,412 @@
+"""Mutation benchmark of the numerical core: how many small, plausible bugs does the test suite catch?
+
+Each mutant is one small change to one function of a core module (a comparison
+operator swapped, + and - swapped, an integer constant off by one, a term of a sum
+dropped, ``n - p`` turned into ``n``, ``sorted``/``sort_keys`` removed, a
+reassignment deleted, min and max swapped, ...).  The mutant is written into a
+private copy of the source tree (never into the working tree), the module's fast
+test subset from :data:`TABLE` runs against it, and the mutant is *killed* when a
+test fails (or times out) and *survives* when all pass.  Mutants named in
+:data:`EQUIVALENT` behave exactly like the original for every input the code can
+receive; they are listed, with the reason, and left out of the score.
+
+Score = killed / (mutants run - equivalent).  Run by hand (takes ~30 min on two
+cores at the default sample), not in CI::
+
+    python benchmarks/mutation.py                  # seeded sample, all modules
+    python benchmarks/mutation.py --list           # count the mutants per module, run nothing
+    python benchmarks/mutation.py --module demid/io.py --all
+    python benchmarks/mutation.py --sample 200 --seed 1 --jobs 1
+
+The module -> tests table below is by file path: when a module moves, update its
+row (path, functions, tests) and nothing else.
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import hashlib
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+# ----------------------------------------------------------------------------------------------------------
+# Module -> (functions to mutate, tests that guard them).  ``functions``: qualified names
+# ("Class.method" or "function"); None = every function and method in the file.
+# ``tests``: pytest arguments (files, node ids, -k expressions), run from the repository root.
+TABLE: dict[str, dict] = {
+    "demid/admissibility.py": {
+        "functions": None,
+        "tests": ["tests/test_admissibility.py", "tests/test_core_contracts.py",
+                  "tests/test_uncertainty.py::test_plane_band_fraction_matches_sampling",
+                  "tests/test_uncertainty.py::test_fraction_with_error_reports_grid_error_and_3d_shell",
+                  "tests/test_uncertainty.py::test_polish_spans_thin_set_without_admissible_nodes"],
+    },
+    "demid/uncertainty.py": {
+        "functions": ["FractionEstimate.relative_error", "fraction_with_error", "_start_points", "_polish",
+                      "polish_spans", "_extreme_points", "sobol_fraction"],
+        "tests": ["tests/test_uncertainty.py", "tests/test_core_contracts.py"],
+    },
+    "demid/surrogate.py": {
+        "functions": None,
+        "tests": ["tests/test_surrogate.py", "tests/test_core_contracts.py"],
+    },
+    "demid/criticism.py": {
+        "functions": ["infer_axial_distance", "_orth", "_residualize", "_hat", "_boxcox", "_inv_boxcox", "_aicc",
+                      "_f_logp", "_added_variable_stats", "_outlier_stats", "_outlier_logp", "_het_lr",
+                      "_boxcox_profile", "_stepdown_minp", "_Round._boxcox_bootstrap", "_Round._boxcox_lr",
+                      "_Round.rejected"],
+        # the level-2 and figure tests exercise other functions and take a third of the time
+        "tests": ["tests/test_criticism.py", "tests/test_core_contracts.py", "-knot level2 and not residual_figure"],
+    },
+    "demid/transcription.py": {
+        "functions": ["PrintedValue.half_width", "PrintedValue.agrees", "PrintedValue.misfit", "_decimals_of",
+                      "parse_printed", "_positional", "_printed_column", "single_cell_slips", "_statistics",
+                      "_lack_of_fit_p", "_precision", "_irregularity"],
+        "tests": ["tests/test_transcription.py", "tests/test_core_contracts.py"],
+    },
+    "demid/data.py": {
+        "functions": ["parse_number", "read_table", "infer_coding", "check_design", "check_bounds",
+                      "validate_material"],
+        "tests": ["tests/test_data.py", "tests/test_core_contracts.py"],
+    },
+    "demid/design.py": {
+        "functions": None,
+        "tests": ["tests/test_design.py", "tests/test_data.py", "tests/test_core_contracts.py"],
+    },
+    "demid/io.py": {
+        "functions": None,
+        "tests": ["tests/test_core_contracts.py"],
+    },
+}
+
+# ----------------------------------------------------------------------------------------------------------
+# Equivalent mutants: id -> reason.  An id is "path::function::original => mutated#k" (k counts identical
+# changes within the function), printed by this script for every surviving mutant.
+EQUIVALENT: dict[str, str] = {
+}
+
+# Files and folders copied into the private tree the mutants are written to.
+COPY = ["demid", "tests", "data", "scripts", "workflow", "config.yaml", "Snakefile", "pyproject.toml"]
+
+SWAP_COMPARE = {ast.Lt: ast.LtE, ast.LtE: ast.Lt, ast.Gt: ast.GtE, ast.GtE: ast.Gt, ast.Eq: ast.NotEq,
+                ast.NotEq: ast.Eq, ast.Is: ast.IsNot, ast.IsNot: ast.Is, ast.In: ast.NotIn, ast.NotIn: ast.In}
+SWAP_BINOP = {ast.Add: ast.Sub, ast.Sub: ast.Add, ast.Mult: ast.Div, ast.Div: ast.Mult, ast.FloorDiv: ast.Div,
+              ast.Pow: ast.Mult}
+SWAP_NAMES = {"min": "max", "max": "min", "minimum": "maximum", "maximum": "minimum", "all": "any",
+              "any": "all", "argmin": "argmax", "argmax": "argmin", "floor": "ceil", "ceil": "floor",
+              "nanmin": "nanmax", "nanmax": "nanmin"}
+DROP_CALLS = {"sorted", "abs", "round", "int", "float"}
+DROP_KEYWORDS = {"sort_keys", "metadata", "ddof", "preserve_index", "write_statistics", "kind", "float_format",
+                 "lineterminator", "index", "ensure_ascii", "keepdims", "rcond", "cutoff", "trim"}
+
+
+@dataclass
+class Mutant:
+    path: str
+    function: str
+    line: int
+    original: str
+    mutated: str
+    occurrence: int
+    # (start line, start col, end line, end col) of the replaced source segment and its replacement
+    span: tuple[int, int, int, int]
+    replacement: str
+
+    @property
+    def id(self) -> str:
+        return f"{self.path}::{self.function}::{self.original} => {self.mutated}#{self.occurrence}"
+
+
+# ---------------------------------------------------------------------------------------------- mutators
+def _variants(node: ast.AST):
+    """(mutated node, short description) for every mutation of ``node`` itself (children untouched)."""
+    import copy
+
+    def clone():
+        return copy.deepcopy(node)
+
+    if isinstance(node, ast.Compare):
+        for i, op in enumerate(node.ops):
+            if type(op) in SWAP_COMPARE:
+                m = clone()
+                m.ops[i] = SWAP_COMPARE[type(op)]()
+                yield m
+    elif isinstance(node, ast.BinOp):
+        if type(node.op) in SWAP_BINOP:
+            m = clone()
+            m.op = SWAP_BINOP[type(node.op)]()
+            yield m
+        if isinstance(node.op, (ast.Add, ast.Sub, ast.Mult, ast.Div)):
+            yield copy.deepcopy(node.left)  # drop the right term/factor (n - p -> n)
+        if isinstance(node.op, (ast.Add, ast.Mult)):
+            yield copy.deepcopy(node.right)
+    elif isinstance(node, ast.BoolOp):
+        m = clone()
+        m.op = ast.Or() if isinstance(node.op, ast.And) else ast.And()
+        yield m
+        if len(node.values) == 2:
+            yield copy.deepcopy(node.values[0])
+            yield copy.deepcopy(node.values[1])
+    elif isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.Not, ast.USub, ast.Invert)):
+        if not (isinstance(node.op, ast.USub) and isinstance(node.operand, ast.Constant)):
+            yield copy.deepcopy(node.operand)
+    elif isinstance(node, ast.Constant) and type(node.value) is int:
+        yield ast.Constant(node.value + 1)
+        yield ast.Constant(node.value - 1)
+    elif isinstance(node, ast.Constant) and type(node.value) is bool:
+        yield ast.Constant(not node.value)
+    elif isinstance(node, ast.Call):
+        func = node.func
+        name = func.id if isinstance(func, ast.Name) else func.attr if isinstance(func, ast.Attribute) else None
+        if name in SWAP_NAMES:
+            m = clone()
+            if isinstance(m.func, ast.Name):
+                m.func.id = SWAP_NAMES[name]
+            else:
+                m.func.attr = SWAP_NAMES[name]
+            yield m
+        if isinstance(func, ast.Name) and name in DROP_CALLS and len(node.args) == 1 and not node.keywords:
+            yield copy.deepcopy(node.args[0])
+        for i, kw in enumerate(node.keywords):
+            if kw.arg in DROP_KEYWORDS:
+                m = clone()
+                del m.keywords[i]
+                yield m
+
+
+def _is_reassignment(stmt: ast.stmt, assigned: set[str]) -> bool:
+    if isinstance(stmt, ast.AugAssign):
+        return True
+    if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1:
+        t = stmt.targets[0]
+        return (isinstance(t, ast.Name) and t.id in assigned) or isinstance(t, ast.Subscript)
+    return False
+
+
+def _functions(tree: ast.Module):
+    """(qualified name, node) of every function and method."""
+    for node in tree.body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            yield node.name, node
+        elif isinstance(node, ast.ClassDef):
+            for sub in node.body:
+                if isinstance(sub, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    yield f"{node.name}.{sub.name}", sub
+
+
+def _skip_nodes(func: ast.AST) -> set[int]:
+    """Nodes not to mutate: docstrings, f-strings, decorators, annotations, error messages."""
+    skip = set()
+    for node in ast.walk(func):
+        if isinstance(node, ast.JoinedStr) or isinstance(node, ast.Raise):
+            skip.update(id(n) for n in ast.walk(node))
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            for dec in node.decorator_list:
+                skip.update(id(n) for n in ast.walk(dec))
+            for arg in node.args.args + node.args.kwonlyargs:
+                if arg.annotation is not None:
+                    skip.update(id(n) for n in ast.walk(arg.annotation))
+            if node.returns is not None:
+                skip.update(id(n) for n in ast.walk(node.returns))
+        if isinstance(node, ast.AnnAssign):
+            skip.update(id(n) for n in ast.walk(node.annotation))
+        if isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Load) and isinstance(node.value, ast.Name) \
+                and node.value.id in {"dict", "list", "tuple"}:
+            skip.update(id(n) for n in ast.walk(node))
+    return skip
+
+
+def mutants_of(path: str, functions: list[str] | None) -> list[Mutant]:
+    source = (ROOT / path).read_text(encoding="utf-8")
+    tree = ast.parse(source)
+    out: list[Mutant] = []
+    for qualname, func in _functions(tree):
+        if functions is not None and qualname not in functions:
+            continue
+        skip = _skip_nodes(func)
+        seen: dict[tuple[str, str], int] = {}
+
+        def add(node, original, mutated, replacement):
+            key = (original, mutated)
+            seen[key] = seen.get(key, 0) + 1
+            out.append(Mutant(path, qualname, node.lineno, original, mutated, seen[key] - 1,
+                              (node.lineno, node.col_offset, node.end_lineno, node.end_col_offset), replacement))
+
+        assigned: set[str] = {a.arg for a in func.args.args + func.args.kwonlyargs}
+        for node in ast.walk(func):
+            if id(node) in skip or node is func or not hasattr(node, "lineno"):
+                continue
+            if isinstance(node, ast.stmt):
+                continue
+            original = ast.unparse(node)
+            for m in _variants(node):
+                mutated = ast.unparse(m)
+                if mutated != original:
+                    add(node, original, mutated, f"({mutated})")
+        # Statement deletion: reassignments and in-place updates (a step of an algorithm, e.g. a
+        # monotonicity step or a metadata strip), replaced by ``pass``.
+        for node in ast.walk(func):
+            if isinstance(node, ast.stmt) and node is not func and id(node) not in skip \
+                    and _is_reassignment(node, assigned):
+                add(node, ast.unparse(node).splitlines()[0], "pass", "pass")
+            if isinstance(node, (ast.Assign, ast.AugAssign, ast.AnnAssign, ast.For)):
+                targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+                for t in targets:
+                    assigned.update(n.id for n in ast.walk(t) if isinstance(n, ast.Name))
+    return out
+
+
+def apply(source: str, mutant: Mutant) -> str:
+    lines = source.splitlines(keepends=True)
+    l0, c0, l1, c1 = mutant.span
+    # ast offsets are in UTF-8 bytes
+    first = lines[l0 - 1].encode("utf-8")
+    last = lines[l1 - 1].encode("utf-8")
+    head = first[:c0].decode("utf-8")
+    tail = last[c1:].decode("utf-8")
+    text = "".join(lines[:l0 - 1]) + head + mutant.replacement + tail + "".join(lines[l1:])
+    ast.parse(text)  # a mutant must still be valid Python
+    return text
+
+
+# ---------------------------------------------------------------------------------------------- running
+def make_tree() -> Path:
+    tree = Path(tempfile.mkdtemp(prefix="demid-mutation-"))
+    for name in COPY:
+        src = ROOT / name
+        if src.is_dir():
+            shutil.copytree(src, tree / name, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+        elif src.exists():
+            shutil.copy2(src, tree / name)
+    return tree
+
+
+def existing(tests: list[str], tree: Path) -> list[str]:
+    """The test arguments whose file exists (a table row may name tests not written yet)."""
+    return [t for t in tests if t.startswith("-") or (tree / t.split("::")[0]).exists()]
+
+
+def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]:
+    env = dict(os.environ, PYTHONPATH=str(tree), PYTHONDONTWRITEBYTECODE="1", MPLBACKEND="Agg")
+    cmd = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider", "--no-header", "-o",
+           "addopts=", *tests]
+    start = time.perf_counter()
+    try:
+        proc = subprocess.run(cmd, cwd=tree, env=env, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return "killed (timeout)", time.perf_counter() - start
+    elapsed = time.perf_counter() - start
+    if proc.returncode == 0:
+        return "survived", elapsed
+    if proc.returncode == 1:
+        return "killed", elapsed
+    return f"error (pytest exit {proc.returncode})", elapsed
+
+
+def _draw(mutant_id: str, seed: int) -> float:
+    """A uniform number in [0, 1) fixed by the mutant id and the seed."""
+    digest = hashlib.sha256(f"{seed}:{mutant_id}".encode("utf-8")).digest()
+    return int.from_bytes(digest[:8], "big") / 2.0 ** 64
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--sample", type=int, default=200, help="mutants in the seeded sample (all modules)")
+    ap.add_argument("--seed", type=int, default=14)
+    ap.add_argument("--all", action="store_true", help="every mutant instead of a sample")
+    ap.add_argument("--module", action="append", help="only this module path (repeatable)")
+    ap.add_argument("--list", action="store_true", help="count mutants and exit")
+    ap.add_argument("--show", action="store_true", help="print every mutant id with --list")
+    args = ap.parse_args(argv)
+
+    modules = args.module or list(TABLE)
+    unknown = [m for m in modules if m not in TABLE]
+    if unknown:
+        ap.error(f"not in TABLE: {', '.join(unknown)}")
+    per_module = {m: mutants_of(m, TABLE[m]["functions"]) for m in modules}
+    total = sum(len(v) for v in per_module.values())
+    if args.list:
+        for m, muts in per_module.items():
+            print(f"{m:28s} {len(muts):5d} mutants")
+            if args.show:
+                for mu in muts:
+                    print(f"    line {mu.line}: {mu.id}")
+        print(f"{'total':28s} {total:5d}")
+        return 0
+
+    chosen: dict[str, list[Mutant]] = {}
+    for m, muts in per_module.items():
+        # The same share of every module (at least 10 mutants); a mutant is drawn by a hash of its id,
+        # so an edit elsewhere in a file does not change which of its mutants are drawn.
+        share = 1.0 if args.all else max(10 / max(len(muts), 1), args.sample / max(total, 1))
+        chosen[m] = [mu for mu in muts if _draw(mu.id, args.seed) < share]
+
+    tree = make_tree()
+    results: list[tuple[Mutant, str]] = []
+    try:
+        for m, muts in chosen.items():
+            tests = existing(TABLE[m]["tests"], tree)
+            status, base_time = run_tests(tree, tests, timeout=1800)
+            if status != "survived":
+                print(f"{m}: the unmutated tests do not pass ({status}); fix them first", flush=True)
+                return 2
+            timeout = max(60.0, 4.0 * base_time)
+            print(f"{m}: {len(muts)} mutants, tests take {base_time:.1f} s unmutated", flush=True)
+            target = tree / m
+            original = target.read_text(encoding="utf-8")
+            source = (ROOT / m).read_text(encoding="utf-8")
+            try:
+                for mu in muts:
+                    target.write_text(apply(source, mu), encoding="utf-8")
+                    status, took = run_tests(tree, tests, timeout)
+                    if status == "survived" and mu.id in EQUIVALENT:
+                        status = "equivalent"
+                    results.append((mu, status))
+                    print(f"  {status:18s} {took:6.1f}s  line {mu.line}: {mu.id}", flush=True)
+            finally:
+                target.write_text(original, encoding="utf-8")
+    finally:
+        shutil.rmtree(tree, ignore_errors=True)
+
+    print("\n=== summary ===")
+    print(f"{'module':28s} {'run':>5s} {'killed':>7s} {'survived':>9s} {'equiv':>6s} {'score':>7s}")
+    tot = {"run": 0, "killed": 0, "survived": 0, "equivalent": 0}
+    for m in chosen:
+        rs = [s for mu, s in results if mu.path == m]
+        k = sum(s.startswith("killed") or s.startswith("error") for s in rs)
+        sv = sum(s == "survived" for s in rs)
+        eq = sum(s == "equivalent" for s in rs)
+        for key, v in zip(tot, (len(rs), k, sv, eq)):
+            tot[key] += v
+        score = 100.0 * k / (k + sv) if k + sv else float("nan")
+        print(f"{m:28s} {len(rs):5d} {k:7d} {sv:9d} {eq:6d} {score:6.1f}%")
+    k, sv = tot["killed"], tot["survived"]
+    print(f"{'total':28s} {tot['run']:5d} {k:7d} {sv:9d} {tot['equivalent']:6d} "
+          f"{100.0 * k / max(k + sv, 1):6.1f}%")
+    scope = "all mutants" if args.all else f"{tot['run']} of {total} mutants, seed {args.seed}"
+    print(f"\nmutation score: {100.0 * k / max(k + sv, 1):.1f} % ({k} killed of {k + sv}; "
+          f"{tot['equivalent']} equivalent excluded; {scope})")
+    survivors = [mu for mu, s in results if s == "survived"]
+    if survivors:
+        print("\nsurviving mutants:")
+        for mu in survivors:
+            print(f"  line {mu.line}: {mu.id}")
+    eqs = [mu for mu, s in results if s == "equivalent"]
+    if eqs:
+        print("\nequivalent mutants (excluded):")
+        for mu in eqs:
+            print(f"  {mu.id}\n      {EQUIVALENT[mu.id]}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
