@@ -1,0 +1,248 @@
+"""Known answers for the numerical core where a plausible slip would otherwise go unseen.
+
+Each test pins one behaviour against an answer computed independently of the code under
+test: a closed-form admissible region, a hand-worked step-down example, statsmodels, or
+the writers' byte-level contracts (sorted JSON keys, no software/time metadata), so they
+hold across machines and library versions.  ``benchmarks/mutation.py`` measures how many
+small bugs of the core the suite catches.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import struct
+import types
+
+import numpy as np
+import pandas as pd
+import pyarrow.parquet as pq
+import pytest
+
+from demid.admissibility import Domain, admissible_set, plane_band_fraction
+from demid.data import validate_material
+from demid.design import ccd_points, model_matrix, quadratic_terms
+from demid.errors import InputError
+from demid.io import atomic_path, save_figure, to_json_text, write_csv, write_json, write_parquet
+from demid.surrogate import Surrogate
+from demid.transcription import parse_printed, single_cell_slips
+
+from .helpers import make_ccd_table
+
+TERMS2 = quadratic_terms(2)  # Intercept, a, b, a:b, a^2, b^2
+SQUARE = Domain(("a", "b"), (-1.0, -1.0), (1.0, 1.0))
+
+
+def _surrogate(coef) -> Surrogate:
+    return Surrogate("y", ["a", "b"], TERMS2, np.asarray(coef, float), np.zeros((6, 6)), 0.0, 7)
+
+
+# --------------------------------------------------------------------------- admissible sets
+PARABOLA = _surrogate([0, 0, 0, 0, 1.0, 0])  # y = a^2: admissible where T(1-eps) <= a^2 <= T(1+eps)
+
+
+def _parabola_fraction(target, eps):
+    return np.sqrt(target * (1 + eps)) - np.sqrt(target * (1 - eps))  # of a in [-1, 1], times b's full range
+
+
+@pytest.mark.parametrize("n", [4, 8])
+def test_coarse_grid_with_the_vertex_in_mid_cell(n):
+    """y = a^2 on an even grid: the middle cell's corners are equal and inside the band while the set
+    dips out of it at the vertex.  The plane through the corners is flat there (0/0 in the plane rule
+    before), and counting the cell as inside (no curvature margin) would give a third too much."""
+    target, eps = 1 / 9, 0.5
+    result = admissible_set({"y": PARABOLA}, SQUARE, ["y"], {"y": target}, eps, n)
+    exact = _parabola_fraction(target, eps)
+    assert np.isfinite(result.fraction)
+    assert result.fraction == pytest.approx(exact, abs=0.05)
+    outer = np.sqrt(target * (1 + eps))
+    assert result.lower[0] == pytest.approx(-outer, abs=2 / (n - 1) / 16 + 1e-9)
+    assert result.upper[0] == pytest.approx(outer, abs=2 / (n - 1) / 16 + 1e-9)
+
+
+def test_parabola_fraction_on_a_fine_grid():
+    target, eps = 0.3, 0.2
+    result = admissible_set({"y": PARABOLA}, SQUARE, ["y"], {"y": target}, eps, 400)
+    assert result.fraction == pytest.approx(_parabola_fraction(target, eps), rel=1e-3)
+
+
+def test_flat_cells_in_the_plane_rule_are_all_or_nothing():
+    center = np.array([0.0, 0.3, -0.3, 0.31, 0.1])
+    increments = np.array([[0.0, 0.0, 0.0, 0.0, 0.4], [0.0, 0.0, 0.0, 0.0, 0.0]])
+    # the last cell rises linearly from -0.1 to 0.3 along one axis: |.| <= 0.3 on all of it
+    assert plane_band_fraction(center, increments, 0.3) == pytest.approx([1.0, 1.0, 1.0, 0.0, 1.0], abs=1e-4)
+
+
+def test_band_thinner_than_the_grid_spacing_spans_its_whole_cell():
+    """y = a, band [a0(1-eps), a0(1+eps)] of width 0.001 between the nodes 0.3 and 0.4 (step 0.1):
+    no node or sub-point is admissible, the span is the cell that holds the band."""
+    dom = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0))
+    a0 = 0.3504
+    eps = 0.0005 / a0
+    result = admissible_set({"y": _surrogate([0, 1.0, 0, 0, 0, 0])}, dom, ["y"], {"y": a0}, eps, 11)
+    assert result.n_admissible_nodes == 0
+    assert result.fraction == pytest.approx(0.001, rel=1e-6)  # the plane rule is exact for a linear field
+    assert result.lower[0] <= a0 * (1 - eps) and result.upper[0] >= a0 * (1 + eps)
+    assert result.lower[0] == pytest.approx(0.3) and result.upper[0] == pytest.approx(0.4)
+    assert result.lower[1] == pytest.approx(0.0, abs=0.1 / 16) and result.upper[1] == pytest.approx(1.0, abs=0.1 / 16)
+
+
+# --------------------------------------------------------------------------- criticism: multiplicity control
+def test_stepdown_min_p_is_monotone_on_a_hand_worked_example():
+    """Westfall-Young step-down min-P on 3 hypotheses and 4 null draws, worked by hand.
+
+    Raw step p-values (1 + #{min over the remaining nulls <= observed}) / 5: step 1 (all three)
+    1 hit -> 0.4; step 2 (hypotheses 2, 3) no hit -> 0.2; step 3 (hypothesis 3) 2 hits -> 0.6.
+    Adjusted p-values are the running maximum: 0.4, 0.4, 0.6.
+    """
+    from demid.criticism import _stepdown_minp
+
+    obs = np.log([0.01, 0.02, 0.03])
+    null = np.array([[-5.0, 0.0, 0.0],
+                     [0.0, 0.0, -3.6],
+                     [0.0, 0.0, -3.55],
+                     [0.0, 0.0, 0.0]])
+    assert _stepdown_minp(obs, null) == pytest.approx([0.4, 0.4, 0.6])
+    perm = [2, 0, 1]  # the hypotheses' input order does not matter
+    assert _stepdown_minp(obs[perm], null[:, perm]) == pytest.approx([0.6, 0.4, 0.4])
+
+
+def test_box_cox_bootstrap_draws_sigma_with_n_minus_p_degrees_of_freedom():
+    """P(LR* >= LR | y* > 0) with y* = fitted + s N(0, 1), s^2 = SSE / (n - p), against an independent
+    simulation.  Near zero the positivity conditioning makes the answer depend on s: with
+    s^2 = SSE / n the p-value is ~0.17 instead of ~0.25 here."""
+    from demid.criticism import _orth, _Round
+
+    x = model_matrix(ccd_points(2, 1.41421, 5), TERMS2)
+    n, p = x.shape
+    q = _orth(x)
+    fitted = 2.0 + 0.3 * x[:, 1]
+    sd = 1.5
+    model = types.SimpleNamespace(ssr=sd ** 2 * (n - p), df_resid=n - p, fitted_z=fitted, y=fitted)
+    lr_obs = 3.0
+    rng = np.random.default_rng(5)
+    y = fitted[:, None] + sd * rng.standard_normal((n, 12_000))
+    y = y[:, np.all(y > 0, axis=0)]
+    expected = np.mean(_Round._boxcox_lr(y, q) >= lr_obs)
+    p_boot, used = _Round._boxcox_bootstrap(_Round.__new__(_Round), model, q, lr_obs, 3000,
+                                            np.random.default_rng(6))
+    assert used == 3000
+    assert p_boot == pytest.approx(expected, abs=0.035)
+
+
+# --------------------------------------------------------------------------- transcription
+def test_decimal_shift_slips_move_the_point_one_or_two_places():
+    slips = {value: kind for kind, _, value in single_cell_slips("1.234")}
+    for value in (0.01234, 0.1234, 12.34, 123.4):
+        assert slips.get(value) == "decimal_shift", value
+    assert 1234.0 not in slips or slips[1234.0] != "decimal_shift"
+
+
+def test_agreement_rule_is_the_rounding_interval_of_the_printed_digits():
+    printed = parse_printed("0.97")
+    values = [0.965, 0.975, 0.9651, 0.9749, 0.9751, 0.9649, np.nan, np.inf]
+    assert printed.agrees(values).tolist() == [True, True, True, True, False, False, False, False]
+    assert printed.misfit([0.98, 0.97, 0.96]) == pytest.approx([2.0, 0.0, 2.0])
+    below, above = parse_printed("<0.05"), parse_printed(">= 2")
+    assert below.agrees([0.05, 0.0499, 0.0501]).tolist() == [True, True, False]
+    assert above.agrees([2.0, 2.5, 1.9]).tolist() == [True, True, False]
+    assert below.misfit([0.07, 0.01]) == pytest.approx([4.0, 0.0])  # half-width 0.005
+    assert above.misfit([1.0, 3.0]) == pytest.approx([2.0, 0.0])  # half-width 0.5
+    assert parse_printed("12.50%").decimals == 4 and parse_printed("12.50%").value == pytest.approx(0.125)
+
+
+# --------------------------------------------------------------------------- data validation
+@pytest.mark.parametrize("failed, ok", [(7, False), (6, True)])
+def test_a_quadratic_in_two_factors_needs_seven_usable_runs(tmp_path, failed, ok):
+    """6 coefficients: exactly 6 usable runs leave no residual degree of freedom and are rejected."""
+    table = make_ccd_table(lambda x: {"y": 5 + x[:, 0] + x[:, 1] ** 2}, [0.1, 1.0], [0.9, 11.0], noise=0.1,
+                           seed=4)
+    table["status"] = "ok"
+    table.loc[table["run"] <= failed, ["y", "status"]] = [np.nan, "failed"]
+    path = tmp_path / "t.csv"
+    table.to_csv(path, index=False)
+    cfg = {"data": str(path), "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+           "factors": {"x1": {"lower": 0.1, "upper": 0.9}, "x2": {"lower": 1.0, "upper": 11.0}},
+           "responses": {"y": {"target": 10.0}}}
+    if ok:
+        assert len(validate_material("m", cfg).failed["y"]) == 6
+    else:
+        with pytest.raises(InputError, match="only 6 usable runs for a quadratic model with 6 coefficients"):
+            validate_material("m", cfg)
+
+
+# --------------------------------------------------------------------------- deterministic writers
+def _png_chunks(path):
+    data = path.read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, chunks = 8, []
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        chunks.append((kind.decode("ascii"), data[pos + 8:pos + 8 + length]))
+        pos += 12 + length
+    return chunks
+
+
+def test_json_text_has_sorted_keys_rounded_floats_and_null_for_nan():
+    obj = {"b": np.float64(0.1) + 0.2, "a": {"z": np.int64(3), "y": [np.nan, np.bool_(True)]},
+           "c": np.array([1.0, np.inf])}
+    assert to_json_text(obj) == ('{\n  "a": {\n    "y": [\n      null,\n      true\n    ],\n    "z": 3\n  },\n'
+                                 '  "b": 0.3,\n  "c": [\n    1.0,\n    null\n  ]\n}\n')
+
+
+def test_write_json_writes_exactly_the_sorted_text(tmp_path):
+    obj = {"zeta": 1, "alpha": {"y": 2, "x": 1}}
+    write_json(obj, tmp_path / "o.json")
+    text = (tmp_path / "o.json").read_text(encoding="utf-8")
+    assert text == to_json_text(obj)
+    assert list(json.loads(text)) == ["alpha", "zeta"] and list(json.loads(text)["alpha"]) == ["x", "y"]
+
+
+def test_png_has_no_software_or_time_metadata(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots()
+    ax.plot([0, 1], [1, 0])
+    save_figure(fig, tmp_path / "f.png", dpi=30)
+    chunks = _png_chunks(tmp_path / "f.png")
+    kinds = [k for k, _ in chunks]
+    assert kinds[0] == "IHDR" and kinds[-1] == "IEND"
+    assert "tIME" not in kinds
+    texts = [body for k, body in chunks if k in ("tEXt", "iTXt", "zTXt")]
+    assert not any(b"Software" in t or b"Date" in t or b"Creation" in t for t in texts), texts
+    assert struct.unpack(">II", chunks[0][1][:8]) == (int(6.4 * 30), int(4.8 * 30))  # dpi is honoured
+
+
+def test_parquet_has_no_key_value_metadata_or_statistics(tmp_path):
+    frame = pd.DataFrame({"a": [0.1, 0.2, np.nan], "name": ["x", "y", "x"]}, index=[5, 6, 7])
+    write_parquet(frame, tmp_path / "t.parquet")
+    meta = pq.ParquetFile(tmp_path / "t.parquet").metadata
+    # only Arrow's own schema: no pandas block (index, library versions) and no timestamps
+    assert set(meta.metadata or {}) <= {b"ARROW:schema"}
+    assert pq.read_schema(tmp_path / "t.parquet").metadata is None
+    row_group = meta.row_group(0)
+    assert all(not row_group.column(i).is_stats_set for i in range(row_group.num_columns))
+    back = pq.read_table(tmp_path / "t.parquet").to_pandas()
+    pd.testing.assert_frame_equal(back, frame.reset_index(drop=True))
+
+
+def test_csv_uses_ten_significant_digits_and_unix_newlines(tmp_path):
+    write_csv(pd.DataFrame({"x": [1 / 3, 2.0], "s": ["a", "b"]}), tmp_path / "t.csv")
+    assert (tmp_path / "t.csv").read_bytes() == b"x,s\n0.3333333333,a\n2,b\n"
+
+
+def test_atomic_path_leaves_nothing_behind_on_failure(tmp_path):
+    target = tmp_path / "sub" / "out.json"
+    write_json({"v": 1}, target)
+    with pytest.raises(RuntimeError):
+        with atomic_path(target) as tmp:
+            tmp.write_text("partial", encoding="utf-8")
+            raise RuntimeError("boom")
+    assert target.read_text(encoding="utf-8") == to_json_text({"v": 1})
+    assert sorted(p.name for p in target.parent.iterdir()) == ["out.json"]
+    umask = os.umask(0)
+    os.umask(umask)
+    assert target.stat().st_mode & 0o777 == 0o666 & ~umask
