@@ -185,15 +185,15 @@ def _png_chunks(path):
 
 def test_json_text_has_sorted_keys_rounded_floats_and_null_for_nan():
     obj = {"b": np.float64(0.1) + 0.2, "a": {"z": np.int64(3), "y": [np.nan, np.bool_(True)]},
-           "c": np.array([1.0, np.inf])}
+           "c": np.array([1.0, np.inf]), "d\u2085\u2080": "\u00b5m"}
     assert to_json_text(obj) == ('{\n  "a": {\n    "y": [\n      null,\n      true\n    ],\n    "z": 3\n  },\n'
-                                 '  "b": 0.3,\n  "c": [\n    1.0,\n    null\n  ]\n}\n')
+                                 '  "b": 0.3,\n  "c": [\n    1.0,\n    null\n  ],\n  "d\u2085\u2080": "\u00b5m"\n}\n')
 
 
 def test_write_json_writes_exactly_the_sorted_text(tmp_path):
     obj = {"zeta": 1, "alpha": {"y": 2, "x": 1}}
-    write_json(obj, tmp_path / "o.json")
-    text = (tmp_path / "o.json").read_text(encoding="utf-8")
+    write_json(obj, str(tmp_path / "new" / "dir" / "o.json"))  # a str path; missing folders are made
+    text = (tmp_path / "new" / "dir" / "o.json").read_text(encoding="utf-8")
     assert text == to_json_text(obj)
     assert list(json.loads(text)) == ["alpha", "zeta"] and list(json.loads(text)["alpha"]) == ["x", "y"]
 
@@ -214,6 +214,9 @@ def test_png_has_no_software_or_time_metadata(tmp_path):
     texts = [body for k, body in chunks if k in ("tEXt", "iTXt", "zTXt")]
     assert not any(b"Software" in t or b"Date" in t or b"Creation" in t for t in texts), texts
     assert struct.unpack(">II", chunks[0][1][:8]) == (int(6.4 * 30), int(4.8 * 30))  # dpi is honoured
+    fig = plt.figure(figsize=(1.0, 0.5))
+    save_figure(fig, tmp_path / "g.png")
+    assert struct.unpack(">II", _png_chunks(tmp_path / "g.png")[0][1][:8]) == (150, 75)  # default 150 dpi
 
 
 def test_parquet_has_no_key_value_metadata_or_statistics(tmp_path):
@@ -225,8 +228,17 @@ def test_parquet_has_no_key_value_metadata_or_statistics(tmp_path):
     assert pq.read_schema(tmp_path / "t.parquet").metadata is None
     row_group = meta.row_group(0)
     assert all(not row_group.column(i).is_stats_set for i in range(row_group.num_columns))
+    # floats byte-stream-split, everything else dictionary-encoded (the layout the readers are tuned for)
+    assert "BYTE_STREAM_SPLIT" in row_group.column(0).encodings
+    assert "RLE_DICTIONARY" not in row_group.column(0).encodings
+    assert "RLE_DICTIONARY" in row_group.column(1).encodings
     back = pq.read_table(tmp_path / "t.parquet").to_pandas()
     pd.testing.assert_frame_equal(back, frame.reset_index(drop=True))
+    no_floats = pd.DataFrame({"run": [3, 1, 2], "name": ["x", "y", "x"]})
+    write_parquet(no_floats, tmp_path / "i.parquet")
+    group = pq.ParquetFile(tmp_path / "i.parquet").metadata.row_group(0)
+    assert all("BYTE_STREAM_SPLIT" not in group.column(i).encodings for i in range(2))
+    pd.testing.assert_frame_equal(pq.read_table(tmp_path / "i.parquet").to_pandas(), no_floats)
 
 
 def test_csv_uses_ten_significant_digits_and_unix_newlines(tmp_path):
@@ -236,6 +248,7 @@ def test_csv_uses_ten_significant_digits_and_unix_newlines(tmp_path):
 
 def test_atomic_path_leaves_nothing_behind_on_failure(tmp_path):
     target = tmp_path / "sub" / "out.json"
+    target.parent.mkdir()
     write_json({"v": 1}, target)
     with pytest.raises(RuntimeError):
         with atomic_path(target) as tmp:
@@ -246,3 +259,17 @@ def test_atomic_path_leaves_nothing_behind_on_failure(tmp_path):
     umask = os.umask(0)
     os.umask(umask)
     assert target.stat().st_mode & 0o777 == 0o666 & ~umask
+
+
+def test_sobol_evaluation_points_are_stratified_in_search_units():
+    """Scrambled Sobol points of 2**m: every coordinate has exactly one point in each of the 2**m
+    equal slices of its search interval (log10 for log factors)."""
+    dom = Domain(("a", "b", "g", "c"), (0.0, 2.0, 1e-3, -1.0), (1.0, 6.0, 1e-1, 3.0), (False, False, True, False))
+    points = dom.sample(100)
+    assert points.shape == (128, 4)
+    lo, hi = np.array([0.0, 2.0, -3.0, -1.0]), np.array([1.0, 6.0, -1.0, 3.0])
+    u = dom.to_search(points)
+    slot = np.floor((u - lo) / (hi - lo) * 128).astype(int)
+    for i in range(4):
+        assert sorted(slot[:, i]) == list(range(128))
+    assert np.array_equal(dom.sample(100), points)  # deterministic

@@ -295,6 +295,18 @@ def test_extended_surrogate_feeds_admissible_set():
     before = admissible_set({"y": res.baseline_surrogate()}, domain, ["y"], {"y": target}, 0.05, 41)
     after = admissible_set({"y": sur}, domain, ["y"], {"y": target}, 0.05, 41)
     assert 0 < after.fraction < 1 and 0 < before.fraction < 1
+    # The set of the extended model is the set of exp(OLS fit of log y), fitted here independently
+    # (a quadratic in actual units spans the same space as one in coded units).
+    assert res.extended["transform"] == "log"
+
+    def quad(v):
+        return np.column_stack([np.ones(len(v)), v[:, 0], v[:, 1], v[:, 0] * v[:, 1], v[:, 0] ** 2, v[:, 1] ** 2])
+
+    log_fit = sm.OLS(np.log(table["y"].to_numpy(float)), quad(x)).fit()
+    nodes = domain.grid(41)
+    inside = np.abs(np.exp(quad(nodes) @ log_fit.params) - target) <= 0.05 * target
+    assert np.array_equal(after.mask, inside)
+    assert np.count_nonzero(before.mask != after.mask) >= 10  # the extension changes the set
 
 
 def test_json_and_frame_contract(tmp_path):
