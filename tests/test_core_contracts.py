@@ -87,6 +87,75 @@ def test_band_thinner_than_the_grid_spacing_spans_its_whole_cell():
     assert result.lower[1] == pytest.approx(0.0, abs=0.1 / 16) and result.upper[1] == pytest.approx(1.0, abs=0.1 / 16)
 
 
+@pytest.mark.parametrize("center, radius", [((0.05, -0.03), 0.3), ((0.31, 0.17), 0.45)])
+def test_span_ends_of_a_disk_on_a_coarse_grid_are_refined_within_the_outer_cells(center, radius):
+    """Disk |x - c| <= r on an 11-point grid (step 0.2): the outermost nodes are up to a step inside
+    the disk; the span ends are refined on a 16-point sub-grid of the outer cells (error <= 0.2/16)."""
+    a0, b0 = center
+    sur = _surrogate([a0 ** 2 + b0 ** 2, -2 * a0, -2 * b0, 0, 1.0, 1.0])
+    result = admissible_set({"y": sur}, SQUARE, ["y"], {"y": radius ** 2 / 2}, 0.999999, 11)
+    exact_lower, exact_upper = np.array(center) - radius, np.array(center) + radius
+    assert np.all(result.lower >= exact_lower) and np.all(result.lower <= exact_lower + 0.2 / 16)
+    assert np.all(result.upper <= exact_upper) and np.all(result.upper >= exact_upper - 0.2 / 16)
+
+
+def test_two_point_grid_measures_a_linear_band_exactly():
+    """One cell per axis: no curvature information, the plane rule is exact for y = a."""
+    dom = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0))
+    result = admissible_set({"y": _surrogate([0, 1.0, 0, 0, 0, 0])}, dom, ["y"], {"y": 0.5}, 0.2, 2)
+    assert result.fraction == pytest.approx(0.2, abs=1e-4)  # a in [0.4, 0.6]
+
+
+def test_lens_of_two_disks_fraction_and_extent():
+    """Two disks of radius R whose centres are 2d apart: lens area 2R^2 acos(d/R) - 2d sqrt(R^2 - d^2),
+    extent |a| <= R - d, |b| <= sqrt(R^2 - d^2).  Boundary cells where both observables are active
+    are sub-sampled."""
+    radius, d = 0.5, 0.2
+
+    def disk(a0):
+        return Surrogate("y", ["a", "b"], TERMS2, np.array([a0 ** 2, -2 * a0, 0, 0, 1.0, 1.0]), np.zeros((6, 6)),
+                         0.0, 7)
+
+    sur = {"p": disk(-d), "q": disk(d)}
+    targets = {"p": radius ** 2 / 2, "q": radius ** 2 / 2}
+    result = admissible_set(sur, SQUARE, ["p", "q"], targets, 0.999999, 41)
+    area = 2 * radius ** 2 * np.arccos(d / radius) - 2 * d * np.sqrt(radius ** 2 - d ** 2)
+    assert result.observables == ("p", "q")
+    assert result.fraction == pytest.approx(area / 4, rel=0.01)
+    half = np.array([radius - d, np.sqrt(radius ** 2 - d ** 2)])
+    step = 2 / 40
+    # sub-grid accuracy (step/16), coarser at the lens's pointed tips in b
+    assert np.all(result.lower >= -half) and np.all(result.lower <= -half + step / 8)
+    assert np.all(result.upper <= half) and np.all(result.upper >= half - step / 8)
+
+
+def test_scenarios_use_the_grid_up_to_three_factors_and_sobol_above():
+    """A spherical shell r^2 in [T(1-eps), T(1+eps)] around the cube's centre, volume
+    4/3 pi T^1.5 ((1+eps)^1.5 - (1-eps)^1.5)."""
+    from demid.admissibility import evaluate_scenarios
+
+    target, eps = 0.09, 0.2
+    for factors in (("a", "b", "c"), ("a", "b", "c", "d")):
+        k = len(factors)
+        terms = quadratic_terms(k)
+        coef = np.concatenate([[0.25 * k], -np.ones(k), np.zeros(k * (k - 1) // 2), np.ones(k)])
+        sur = {"y": Surrogate("y", list(factors), terms, coef, np.zeros((len(terms),) * 2), 0.0, 7)}
+        cfg = {"factors": {f: {"lower": 0, "upper": 1} for f in factors}, "responses": {"y": {"target": target}},
+               "scenarios": {"shell": {"observables": ["y"], "tolerance": eps}}}
+        table, sets = evaluate_scenarios(sur, cfg, 31 if k == 3 else 2 ** 12)
+        result = sets["shell"]
+        if k == 3:
+            exact = 4 / 3 * np.pi * target ** 1.5 * ((1 + eps) ** 1.5 - (1 - eps) ** 1.5)
+            assert result.fraction_ci is None and result.n_nodes == 31 ** 3
+            assert result.fraction == pytest.approx(exact, rel=0.01)
+        else:
+            exact = np.pi ** 2 / 2 * target ** 2 * ((1 + eps) ** 2 - (1 - eps) ** 2)
+            assert result.fraction_ci[0] <= exact <= result.fraction_ci[1]
+            assert result.fraction == pytest.approx(exact, rel=0.1)
+        assert list(table.index) == list(range(k))  # one row per factor
+        assert table["feasible_fraction_pct"].iloc[0] == pytest.approx(100 * result.fraction)
+
+
 # --------------------------------------------------------------------------- criticism: multiplicity control
 def test_stepdown_min_p_is_monotone_on_a_hand_worked_example():
     """Westfall-Young step-down min-P on 3 hypotheses and 4 null draws, worked by hand.
@@ -128,6 +197,18 @@ def test_box_cox_bootstrap_draws_sigma_with_n_minus_p_degrees_of_freedom():
                                             np.random.default_rng(6))
     assert used == 3000
     assert p_boot == pytest.approx(expected, abs=0.035)
+
+
+def test_fraction_estimate_relative_error():
+    from demid.uncertainty import FractionEstimate
+
+    def estimate(fraction, error):
+        return FractionEstimate(fraction=fraction, error=error, coarse_fraction=fraction, n=3, evaluations=1,
+                                analytic_cells=0, sampled_cells=0)
+
+    assert estimate(0.2, 0.01).relative_error == pytest.approx(0.05)
+    assert estimate(0.0, 0.0).relative_error == 0.0
+    assert estimate(0.0, 0.01).relative_error == np.inf
 
 
 # --------------------------------------------------------------------------- transcription

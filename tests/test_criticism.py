@@ -336,6 +336,7 @@ def test_too_few_runs_are_reported_not_tested():
     res = criticize(small, FACTORS[2], "y")
     assert res.findings == [] and res.catalogue == [] and "nothing could be tested" in res.summary
     assert res.extended == res.baseline
+    assert res.baseline["aicc"] is None  # AICc is undefined for n - k - 1 = 0: null in the JSON
 
 
 def test_residual_figure(tmp_path):

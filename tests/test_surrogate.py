@@ -98,6 +98,16 @@ def test_surrogate_round_trip_predicts_and_matches_statsmodels_se():
     frame = fit.results.get_prediction(model_matrix(coded, fit.terms)).summary_frame(alpha=0.05)
     assert sur.predict(pts) == pytest.approx(frame["mean"].to_numpy(), rel=1e-9)
     assert sur.se_mean(pts) == pytest.approx(frame["mean_se"].to_numpy(), rel=1e-6)
+    obs_se = np.sqrt(frame["mean_se"].to_numpy() ** 2 + fit.results.scale)  # statsmodels' se_obs
+    assert sur.se_prediction(pts) == pytest.approx(obs_se, rel=1e-6)
+    assert sur.resid_df == 13 - 6 and sur.resid_var == pytest.approx(fit.results.scale, rel=1e-12)
+
+
+def test_runs_are_numbered_from_one_without_a_run_column():
+    table = make_ccd_table(lambda x: {"y": 1 + x[:, 0]}, [0, 0], [1, 1], noise=0.1).drop(columns="run")
+    table.loc[2, "y"] = np.nan
+    fit = fit_response(table, ["x1", "x2"], "y", alpha=1.41421)
+    assert fit.runs.tolist() == list(range(1, 13))
 
 
 def test_failed_runs_are_dropped_from_that_response_only():
