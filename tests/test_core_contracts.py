@@ -67,10 +67,10 @@ def test_parabola_fraction_on_a_fine_grid():
 
 
 def test_flat_cells_in_the_plane_rule_are_all_or_nothing():
-    center = np.array([0.0, 0.3, -0.3, 0.31, 0.1])
-    increments = np.array([[0.0, 0.0, 0.0, 0.0, 0.4], [0.0, 0.0, 0.0, 0.0, 0.0]])
-    # the last cell rises linearly from -0.1 to 0.3 along one axis: |.| <= 0.3 on all of it
-    assert plane_band_fraction(center, increments, 0.3) == pytest.approx([1.0, 1.0, 1.0, 0.0, 1.0], abs=1e-4)
+    center = np.array([0.0, 0.3, -0.3, 0.31, 0.1, -0.3])
+    increments = np.array([[0.0, 0.0, 0.0, 0.0, 0.4, 0.4], [0.0, 0.0, 0.0, 0.0, 0.0, 0.0]])
+    # cell 5 rises from -0.1 to 0.3 along one axis (inside throughout); cell 6 from -0.5 to -0.1 (half inside)
+    assert plane_band_fraction(center, increments, 0.3) == pytest.approx([1.0, 1.0, 1.0, 0.0, 1.0, 0.5], abs=1e-4)
 
 
 def test_band_thinner_than_the_grid_spacing_spans_its_whole_cell():
@@ -217,6 +217,9 @@ def test_decimal_shift_slips_move_the_point_one_or_two_places():
     for value in (0.01234, 0.1234, 12.34, 123.4):
         assert slips.get(value) == "decimal_shift", value
     assert 1234.0 not in slips or slips[1234.0] != "decimal_shift"
+    assert slips.get(-1.234) == "sign_lost" and slips.get(1.2345) == "digit_dropped"
+    assert slips.get(1.243) == "transposition" and slips.get(1.334) == "digit_substitution"
+    assert {value: kind for kind, _, value in single_cell_slips("1.224")}.get(1.24) == "digit_doubled"
 
 
 def test_agreement_rule_is_the_rounding_interval_of_the_printed_digits():
@@ -230,6 +233,10 @@ def test_agreement_rule_is_the_rounding_interval_of_the_printed_digits():
     assert below.misfit([0.07, 0.01]) == pytest.approx([4.0, 0.0])  # half-width 0.005
     assert above.misfit([1.0, 3.0]) == pytest.approx([2.0, 0.0])  # half-width 0.5
     assert parse_printed("12.50%").decimals == 4 and parse_printed("12.50%").value == pytest.approx(0.125)
+    assert parse_printed({"value": "0.5", "decimals": 3}).decimals == 3
+    assert parse_printed(np.float64(0.97)).decimals == 2 and parse_printed(np.float64(0.97)).value == 0.97
+    with pytest.raises(InputError):
+        parse_printed({"decimals": 3})
 
 
 # --------------------------------------------------------------------------- data validation
@@ -250,6 +257,77 @@ def test_a_quadratic_in_two_factors_needs_seven_usable_runs(tmp_path, failed, ok
     else:
         with pytest.raises(InputError, match="only 6 usable runs for a quadratic model with 6 coefficients"):
             validate_material("m", cfg)
+
+
+def _ccd_csv(tmp_path, cells=None):
+    table = make_ccd_table(lambda x: {"y": 5 + x[:, 0] + x[:, 1] ** 2}, [0.1, 1.0], [0.9, 11.0], noise=0.1, seed=4)
+    table = table.astype({"y": object})
+    for (run, column), value in (cells or {}).items():
+        table.loc[table["run"] == run, column] = value
+    path = tmp_path / "t.csv"
+    table.to_csv(path, index=False)
+    return path
+
+
+def test_missing_columns_are_named(tmp_path):
+    from demid.data import read_table
+
+    path = _ccd_csv(tmp_path)
+    for needed in ("run", "x2", "y"):
+        text = path.read_text(encoding="utf-8").replace(needed, "other", 1)
+        (tmp_path / "m.csv").write_text(text, encoding="utf-8")
+        with pytest.raises(InputError, match=f"column '{needed}'.*missing column"):
+            read_table(tmp_path / "m.csv", ["x1", "x2"], ["y"])
+
+
+def test_nan_text_is_a_failed_run_and_an_empty_cell_needs_a_status(tmp_path):
+    from demid.data import read_table
+
+    table, warnings = read_table(_ccd_csv(tmp_path, {(3, "y"): "NaN"}), ["x1", "x2"], ["y"])
+    assert np.isnan(table.loc[table["run"] == 3, "y"].iloc[0]) and np.isfinite(table["y"]).sum() == 12
+    assert warnings == [f"{tmp_path / 't.csv'}, run 3, column 'y': value 'NaN' treated as a failed simulation"]
+    with pytest.raises(InputError, match=r"run 5, column 'y': empty cell; if this simulation failed, add a "
+                                         r"'status' column"):
+        read_table(_ccd_csv(tmp_path, {(5, "y"): ""}), ["x1", "x2"], ["y"])
+
+
+def test_off_level_value_names_its_run_and_the_nearest_level(tmp_path):
+    table = make_ccd_table(lambda x: {"y": 5 + x[:, 0]}, [0.1, 1.0], [0.9, 11.0], noise=0.1, seed=4)
+    row = int(np.flatnonzero(np.isclose(table["x1"], 0.5 + 0.4 / 1.41421))[0])  # a +1 level of x1
+    run = int(table["run"].iloc[row])
+    table.loc[row, "x1"] = 0.5 + 0.4 / 1.41421 * 1.3  # coded +1.3: between the levels +1 and +alpha
+    path = tmp_path / "t.csv"
+    table.to_csv(path, index=False)
+    cfg = {"data": str(path), "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+           "factors": {"x1": {"lower": 0.1, "upper": 0.9}, "x2": {"lower": 1.0, "upper": 11.0}},
+           "responses": {"y": {"target": 10.0}}}
+    with pytest.raises(InputError, match=rf"run {run}, column 'x1': value 0\.867696 is not a level of the declared "
+                                         r"ccd design \(coded \+1\.300\); nearest valid level: 0\.9 "
+                                         r"\(coded \+1\.414\)"):
+        validate_material("m", cfg)
+
+
+def test_bounds_tolerance_is_relative_to_the_range():
+    from demid.data import check_bounds
+
+    factors = {"x": {"lower": 1000.0, "upper": 1001.0}}
+    check_bounds(pd.DataFrame({"run": [1, 2], "x": [1000.0, 1001.0000005]}), factors, "t.csv")  # 5e-7 of range
+    with pytest.raises(InputError, match=r"run 2, column 'x': value 1001 lies outside the declared bounds"):
+        check_bounds(pd.DataFrame({"run": [1, 2], "x": [1000.0, 1001.00001]}), factors, "t.csv")
+    with pytest.raises(InputError, match=r"run 1, column 'x'"):
+        check_bounds(pd.DataFrame({"run": [1, 2], "x": [999.99999, 1001.0]}), factors, "t.csv")
+
+
+def test_design_description_and_cubic_terms():
+    from demid.design import DesignStructure, cubic_terms
+
+    assert DesignStructure(13, 4, 4, 5, 0, 1.414).describe() == "13 runs: 4 factorial, 4 axial, 5 centre"
+    assert DesignStructure(14, 4, 4, 5, 1, 1.414).describe() == "14 runs: 4 factorial, 4 axial, 5 centre, 1 other"
+    # the cubic terms of k factors: k pure cubes and k(k-1) + C(k, 3) mixed ones
+    for k in (1, 2, 3, 4):
+        terms = cubic_terms(k)
+        assert len(terms) == len(set(terms)) == k + k * (k - 1) + k * (k - 1) * (k - 2) // 6
+        assert all(sum(t) == 3 and len(t) == k for t in terms)
 
 
 # --------------------------------------------------------------------------- deterministic writers
