@@ -339,16 +339,36 @@ def test_too_few_runs_are_reported_not_tested():
     assert res.baseline["aicc"] is None  # AICc is undefined for n - k - 1 = 0: null in the JSON
 
 
-def test_residual_figure(tmp_path):
-    fits, results = [], []
+def test_residual_figure():
+    """The panels show statsmodels' fitted values and residuals; findings are drawn where they are."""
+    fits, results, tables, planted = [], [], [], []
     for name, kind, size in (("d5", "outlier", 30.0), ("d10", "drift", 14.0), ("d15", "clean", 0.0)):
-        table, _ = ccd_table(21, 2, kind, size, response=name)
+        table, plant = ccd_table(21, 2, kind, size, response=name)
         fits.append(fit_response(table, FACTORS[2], name, alpha=design(2)[3]))
         results.append(criticize(table, FACTORS[2], name))
+        tables.append(table)
+        planted.append(plant)
     fig = residual_figure(fits, results, "mortar")
-    assert len(fig.axes) == 9
-    fig.savefig(tmp_path / "r.png", dpi=40, metadata={"Software": None})
-    assert (tmp_path / "r.png").stat().st_size > 0
+    rows = np.array(fig.axes).reshape(3, 3)
+    for row, table, result in zip(rows, tables, results):
+        ols = quadratic_ols(table, FACTORS[2], response=result.response)
+        runs = table["run"].to_numpy(float)
+        vs_fitted = row[0].collections[0].get_offsets()
+        vs_run = row[1].collections[0].get_offsets()
+        np.testing.assert_allclose(sorted(map(tuple, vs_fitted)), sorted(zip(ols.fittedvalues, ols.resid)),
+                                   rtol=1e-9, atol=1e-9)
+        np.testing.assert_allclose(sorted(map(tuple, vs_run)), sorted(zip(runs, ols.resid)), rtol=1e-9, atol=1e-9)
+        qq = row[2].collections[0].get_offsets()
+        student = ols.get_influence().resid_studentized_external
+        np.testing.assert_allclose(np.sort(qq[:, 1]), np.sort(student), rtol=1e-9)
+        assert np.all(np.diff(qq[np.argsort(qq[:, 1]), 0]) > 0)  # QQ: quantiles in the order of the residuals
+    outlier_ring = rows[0][1].collections[1].get_offsets()
+    assert outlier_ring[:, 0].tolist() == [float(planted[0].run)]
+    assert results[1].findings[0].cause == "drift"
+    trend = rows[1][1].lines[-1]
+    slope, icpt = np.polyfit(tables[1]["run"].to_numpy(float), quadratic_ols(tables[1], FACTORS[2], "d10").resid, 1)
+    np.testing.assert_allclose(trend.get_ydata(), icpt + slope * trend.get_xdata(), rtol=1e-9)
+    assert rows[2][0].texts[0].get_text() == "nothing found"
 
 
 # --------------------------------------------------------------------------- level 2
