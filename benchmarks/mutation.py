@@ -126,6 +126,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism.py::_inv_boxcox::700 => 701#1": "overflow clip of exp(): differs only beyond e^700",
     "demid/criticism.py::_aicc::float('nan') => 'nan'#0":
         "the value is only read through _num(), which turns 'nan' and nan alike into None",
+    "demid/criticism.py::_het_lr::np.sum(r * r, axis=0) / n => np.sum(r * r, axis=0)#0":
+        "shifts every profile log-likelihood by the same 0.5 n log n; the statistic is a difference of two",
+    # --- uncertainty
+    "demid/uncertainty.py::_polish::0 => -1#6": "sign is +1.0 or -1.0: 'sign > 0' and 'sign > -1' agree",
+    # --- data
+    "demid/data.py::read_table::float(run_val) => run_val#0": "parse_number returns a float already",
     # --- io
     "demid/io.py::atomic_path::suffix or path.suffix => path.suffix#0": "no caller passes suffix",
     "demid/io.py::atomic_path::suffix or path.suffix => suffix#0":

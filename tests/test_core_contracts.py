@@ -211,6 +211,67 @@ def test_fraction_estimate_relative_error():
     assert estimate(0.0, 0.01).relative_error == np.inf
 
 
+def _ring(center):
+    a0, b0 = center
+    return _surrogate([a0 ** 2 + b0 ** 2, -2 * a0, -2 * b0, 0, 1.0, 1.0])
+
+
+def test_polished_spans_in_a_box_that_is_not_the_unit_square():
+    """Annulus around (0.9, 1.2) in [0, 2] x [-1, 3]: polishing works in scaled units and must map back."""
+    from demid.uncertainty import polish_spans
+
+    dom = Domain(("a", "b"), (0.0, -1.0), (2.0, 3.0))
+    center, r0, eps = np.array([0.9, 1.2]), 0.5, 0.05
+    sur = {"y": _ring(center)}
+    aset = admissible_set(sur, dom, ["y"], {"y": r0 ** 2}, eps, 21)
+    lower, upper = polish_spans(sur, dom, ["y"], {"y": r0 ** 2}, eps, aset)
+    outer = r0 * np.sqrt(1 + eps)
+    assert lower == pytest.approx(center - outer, abs=1e-7)
+    assert upper == pytest.approx(center + outer, abs=1e-7)
+
+
+def test_polishing_starts_from_the_admissible_nodes():
+    from demid.uncertainty import _residual_evaluator, _start_points
+
+    dom = Domain(("a", "b"), (0.0, -1.0), (2.0, 3.0))
+    sur = {"y": _ring([0.9, 1.2])}
+    aset = admissible_set(sur, dom, ["y"], {"y": 0.25}, 0.05, 21)
+    starts = _start_points(_residual_evaluator(sur, ("y",), {"y": 0.25}), dom, aset)
+    nodes = dom.grid(21)[aset.mask]
+    assert len(starts) == aset.n_admissible_nodes > 0
+    assert sorted(map(tuple, starts)) == pytest.approx(sorted(map(tuple, nodes)))
+
+
+def test_grid_error_bounds_the_error_of_the_reference_fraction():
+    """A reference fraction 0.05 off the exact annulus area: grid_error must cover that offset."""
+    import dataclasses
+
+    from demid.uncertainty import fraction_with_error
+
+    dom = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0))
+    r0, eps = 0.3, 0.05
+    sur = {"y": _ring([0.5, 0.5])}
+    exact = 2 * np.pi * r0 ** 2 * eps
+    grid = admissible_set(sur, dom, ["y"], {"y": r0 ** 2}, eps, 41)
+    off = dataclasses.replace(grid, fraction=exact + 0.05)
+    est = fraction_with_error(sur, dom, ["y"], {"y": r0 ** 2}, eps, 41, reference=off)
+    assert est.grid_fraction == exact + 0.05
+    assert est.grid_error >= 0.05 > est.error
+    assert abs(est.fraction - exact) <= est.error
+
+
+@pytest.mark.parametrize("lam", [None, 0.0, -0.5, 0.5, 2.0])
+def test_box_cox_back_transform_inverts_scipy(lam):
+    from scipy import special
+
+    from demid.criticism import _boxcox, _inv_boxcox
+
+    y = np.array([0.3, 1.0, 2.5, 40.0])
+    z = y if lam is None else special.boxcox(y, lam)
+    assert _boxcox(y, lam) == pytest.approx(z)
+    assert _inv_boxcox(z, lam) == pytest.approx(y, rel=1e-12)
+
+
 # --------------------------------------------------------------------------- transcription
 def test_decimal_shift_slips_move_the_point_one_or_two_places():
     slips = {value: kind for kind, _, value in single_cell_slips("1.234")}
@@ -316,6 +377,8 @@ def test_bounds_tolerance_is_relative_to_the_range():
         check_bounds(pd.DataFrame({"run": [1, 2], "x": [1000.0, 1001.00001]}), factors, "t.csv")
     with pytest.raises(InputError, match=r"run 1, column 'x'"):
         check_bounds(pd.DataFrame({"run": [1, 2], "x": [999.99999, 1001.0]}), factors, "t.csv")
+    # the tolerance is inclusive: exactly 1e-6 of the range outside is still accepted
+    check_bounds(pd.DataFrame({"run": [1, 2], "x": [-1e-6, 1 + 1e-6]}), {"x": {"lower": 0.0, "upper": 1.0}}, "t")
 
 
 def test_design_description_and_cubic_terms():
