@@ -130,6 +130,12 @@ EQUIVALENT: dict[str, str] = {
         "the value is only read through _num(), which turns 'nan' and nan alike into None",
     "demid/criticism.py::_het_lr::np.sum(r * r, axis=0) / n => np.sum(r * r, axis=0)#0":
         "shifts every profile log-likelihood by the same 0.5 n log n; the statistic is a difference of two",
+    "demid/criticism.py::_outlier_stats::1 - 1e-10 => 1#0":
+        "only runs with leverage in [1 - 1e-10, 1) change: their residual is of order (1 - h), so t is of "
+        "order sqrt(1 - h) < 1e-5 either way and never the maximum; h rounded to 1 is excluded by both",
+    # --- transcription
+    "demid/transcription.py::_statistics::n = np.broadcast_to(n, sse.shape) => pass#0":
+        "numpy broadcasts the scalar n in every later expression: the same arrays result",
     # --- uncertainty
     "demid/uncertainty.py::_polish::0 => -1#6": "sign is +1.0 or -1.0: 'sign > 0' and 'sign > -1' agree",
     # --- data
