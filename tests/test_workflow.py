@@ -11,7 +11,7 @@ import pytest
 
 from demid.io import read_parquet
 
-from .workflow_helpers import planned_jobs, run_snakemake, tree_hashes
+from .workflow_helpers import planned_jobs, run_snakemake, tree_hashes, writer_contract_violations
 
 pytestmark = pytest.mark.workflow
 
@@ -48,6 +48,11 @@ def test_self_made_study_runs_and_is_byte_identical(study_dir, tmp_path):
     assert both["feasible_fraction_pct"].iloc[0] <= one["feasible_fraction_pct"].iloc[0]
     grid = read_parquet(results / "grid" / "m.parquet")
     assert len(grid) == 101**2 and list(grid.columns) == ["a", "b", "y1", "y2"]
+
+    # Every output keeps the writers' contracts, which is what makes reruns on another machine or
+    # library version byte-identical: sorted JSON keys, no software/time metadata in PNG or parquet.
+    assert len(list(results.rglob("*.json"))) and len(list(results.rglob("*.png")))
+    assert writer_contract_violations(results) == []
 
     # A second clean run elsewhere gives byte-identical tables, parquet, JSON and PNG.
     second = run_snakemake(twin, twin / "study.yaml")
