@@ -140,6 +140,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty.py::_polish::0 => -1#6": "sign is +1.0 or -1.0: 'sign > 0' and 'sign > -1' agree",
     # --- data
     "demid/data.py::read_table::float(run_val) => run_val#0": "parse_number returns a float already",
+    # --- design
+    "demid/design.py::model_matrix::1 => 0#2":
+        "'elif power > 0' after 'if power == 1' selects the same powers as 'elif power > 1'",
     # --- io
     "demid/io.py::atomic_path::suffix or path.suffix => path.suffix#0": "no caller passes suffix",
     "demid/io.py::atomic_path::suffix or path.suffix => suffix#0":

@@ -393,6 +393,20 @@ def test_design_description_and_cubic_terms():
         assert all(sum(t) == 3 and len(t) == k for t in terms)
 
 
+def test_coding_from_levels_and_point_classes():
+    from demid.design import Coding, classify_points, replicate_groups
+
+    coding = Coding.from_levels(("a", "b", "c"), [[0.0, 10.0, 7.0], [2.0, 30.0, 7.0], [1.0, 20.0, 7.0]], alpha=2.0)
+    assert coding.center == (1.0, 20.0, 7.0) and coding.unit == (0.5, 5.0, 1.0)  # constant column: unit 1
+    alpha = 1.682
+    points = [[1, 1, 0], [1, 1, 0.5], [1, 0, 0], [0, 0, 0], [1, -1, 1], [0, -alpha, 0], [0, 1, -1]]
+    assert classify_points(np.array(points), alpha).tolist() == ["edge", "other", "other", "center", "factorial",
+                                                                 "axial", "edge"]
+    # replicates are equal to 6 decimals in coded units
+    groups = replicate_groups(np.array([[0.0, 0.0], [0.0, 2e-6], [0.0, 4e-7], [1.0, 1.0]]))
+    assert groups[0] == groups[2] and len(set(groups.tolist())) == 3
+
+
 # --------------------------------------------------------------------------- deterministic writers
 def _png_chunks(path):
     data = path.read_bytes()
