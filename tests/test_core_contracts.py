@@ -142,6 +142,8 @@ def test_scenarios_use_the_grid_up_to_three_factors_and_sobol_above():
         sur = {"y": Surrogate("y", list(factors), terms, coef, np.zeros((len(terms),) * 2), 0.0, 7)}
         cfg = {"factors": {f: {"lower": 0, "upper": 1} for f in factors}, "responses": {"y": {"target": target}},
                "scenarios": {"shell": {"observables": ["y"], "tolerance": eps}}}
+        if k == 3:
+            cfg["scenarios"]["wide"] = {"observables": ["y"], "tolerance": 2 * eps}
         table, sets = evaluate_scenarios(sur, cfg, 31 if k == 3 else 2 ** 12)
         result = sets["shell"]
         if k == 3:
@@ -152,7 +154,9 @@ def test_scenarios_use_the_grid_up_to_three_factors_and_sobol_above():
             exact = np.pi ** 2 / 2 * target ** 2 * ((1 + eps) ** 2 - (1 - eps) ** 2)
             assert result.fraction_ci[0] <= exact <= result.fraction_ci[1]
             assert result.fraction == pytest.approx(exact, rel=0.1)
-        assert list(table.index) == list(range(k))  # one row per factor
+        scenarios = list(cfg["scenarios"])
+        assert list(table.index) == list(range(len(scenarios) * k))  # one row per scenario and factor
+        assert table["scenario"].tolist() == [name for name in scenarios for _ in range(k)]
         assert table["feasible_fraction_pct"].iloc[0] == pytest.approx(100 * result.fraction)
 
 
