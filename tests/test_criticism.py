@@ -295,6 +295,18 @@ def test_extended_surrogate_feeds_admissible_set():
     before = admissible_set({"y": res.baseline_surrogate()}, domain, ["y"], {"y": target}, 0.05, 41)
     after = admissible_set({"y": sur}, domain, ["y"], {"y": target}, 0.05, 41)
     assert 0 < after.fraction < 1 and 0 < before.fraction < 1
+    # The set of the extended model is the set of exp(OLS fit of log y), fitted here independently
+    # (a quadratic in actual units spans the same space as one in coded units).
+    assert res.extended["transform"] == "log"
+
+    def quad(v):
+        return np.column_stack([np.ones(len(v)), v[:, 0], v[:, 1], v[:, 0] * v[:, 1], v[:, 0] ** 2, v[:, 1] ** 2])
+
+    log_fit = sm.OLS(np.log(table["y"].to_numpy(float)), quad(x)).fit()
+    nodes = domain.grid(41)
+    inside = np.abs(np.exp(quad(nodes) @ log_fit.params) - target) <= 0.05 * target
+    assert np.array_equal(after.mask, inside)
+    assert np.count_nonzero(before.mask != after.mask) >= 10  # the extension changes the set
 
 
 def test_json_and_frame_contract(tmp_path):
@@ -324,18 +336,39 @@ def test_too_few_runs_are_reported_not_tested():
     res = criticize(small, FACTORS[2], "y")
     assert res.findings == [] and res.catalogue == [] and "nothing could be tested" in res.summary
     assert res.extended == res.baseline
+    assert res.baseline["aicc"] is None  # AICc is undefined for n - k - 1 = 0: null in the JSON
 
 
-def test_residual_figure(tmp_path):
-    fits, results = [], []
+def test_residual_figure():
+    """The panels show statsmodels' fitted values and residuals; findings are drawn where they are."""
+    fits, results, tables, planted = [], [], [], []
     for name, kind, size in (("d5", "outlier", 30.0), ("d10", "drift", 14.0), ("d15", "clean", 0.0)):
-        table, _ = ccd_table(21, 2, kind, size, response=name)
+        table, plant = ccd_table(21, 2, kind, size, response=name)
         fits.append(fit_response(table, FACTORS[2], name, alpha=design(2)[3]))
         results.append(criticize(table, FACTORS[2], name))
+        tables.append(table)
+        planted.append(plant)
     fig = residual_figure(fits, results, "mortar")
-    assert len(fig.axes) == 9
-    fig.savefig(tmp_path / "r.png", dpi=40, metadata={"Software": None})
-    assert (tmp_path / "r.png").stat().st_size > 0
+    rows = np.array(fig.axes).reshape(3, 3)
+    for row, table, result in zip(rows, tables, results):
+        ols = quadratic_ols(table, FACTORS[2], response=result.response)
+        runs = table["run"].to_numpy(float)
+        vs_fitted = row[0].collections[0].get_offsets()
+        vs_run = row[1].collections[0].get_offsets()
+        np.testing.assert_allclose(sorted(map(tuple, vs_fitted)), sorted(zip(ols.fittedvalues, ols.resid)),
+                                   rtol=1e-9, atol=1e-9)
+        np.testing.assert_allclose(sorted(map(tuple, vs_run)), sorted(zip(runs, ols.resid)), rtol=1e-9, atol=1e-9)
+        qq = row[2].collections[0].get_offsets()
+        student = ols.get_influence().resid_studentized_external
+        np.testing.assert_allclose(np.sort(qq[:, 1]), np.sort(student), rtol=1e-9)
+        assert np.all(np.diff(qq[np.argsort(qq[:, 1]), 0]) > 0)  # QQ: quantiles in the order of the residuals
+    outlier_ring = rows[0][1].collections[1].get_offsets()
+    assert outlier_ring[:, 0].tolist() == [float(planted[0].run)]
+    assert results[1].findings[0].cause == "drift"
+    trend = rows[1][1].lines[-1]
+    slope, icpt = np.polyfit(tables[1]["run"].to_numpy(float), quadratic_ols(tables[1], FACTORS[2], "d10").resid, 1)
+    np.testing.assert_allclose(trend.get_ydata(), icpt + slope * trend.get_xdata(), rtol=1e-9)
+    assert rows[2][0].texts[0].get_text() == "nothing found"
 
 
 # --------------------------------------------------------------------------- level 2

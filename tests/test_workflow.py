@@ -11,7 +11,7 @@ import pytest
 
 from demid.io import read_parquet
 
-from .workflow_helpers import planned_jobs, run_snakemake, tree_hashes
+from .workflow_helpers import planned_jobs, run_snakemake, tree_hashes, writer_contract_violations
 
 pytestmark = pytest.mark.workflow
 
@@ -52,6 +52,11 @@ def test_self_made_study_runs_and_is_byte_identical(study_dir, tmp_path):
     sets = sets[sets["n_admissible_nodes"] > 0]
     nodes = sets["n_admissible_nodes"] / (sets["node_fraction_pct"] / 100)
     assert len(sets) and nodes.to_numpy() == pytest.approx(101**2) and not (results / "grid").exists()
+
+    # Every output keeps the writers' contracts, which is what makes reruns on another machine or
+    # library version byte-identical: sorted JSON keys, no software/time metadata in PNG or parquet.
+    assert len(list(results.rglob("*.json"))) and len(list(results.rglob("*.png")))
+    assert writer_contract_violations(results) == []
 
     # A second clean run elsewhere gives byte-identical tables, parquet, JSON and PNG.
     second = run_snakemake(twin, twin / "study.yaml")

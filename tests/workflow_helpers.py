@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import hashlib
+import json
 import os
+import struct
 import subprocess
 import sys
 from pathlib import Path
@@ -41,3 +43,44 @@ def planned_jobs(stdout: str) -> dict[str, int]:
         if parts[0] != "total":
             counts[parts[0]] = int(parts[1])
     return counts
+
+
+def _keys_sorted(obj) -> bool:
+    if isinstance(obj, dict):
+        return list(obj) == sorted(obj) and all(_keys_sorted(v) for v in obj.values())
+    if isinstance(obj, list):
+        return all(_keys_sorted(v) for v in obj)
+    return True
+
+
+def _png_metadata(path: Path) -> list[tuple[str, bytes]]:
+    """(chunk type, body) of every chunk that is not image data."""
+    data = Path(path).read_bytes()
+    pos, out = 8, []
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        if kind not in (b"IHDR", b"IDAT", b"IEND", b"PLTE", b"pHYs", b"tRNS"):
+            out.append((kind.decode("ascii"), data[pos + 8:pos + 8 + length]))
+        pos += 12 + length
+    return out
+
+
+def writer_contract_violations(root: Path) -> list[str]:
+    """Outputs that break the writers' contracts: JSON keys unsorted, PNG software/time metadata,
+    parquet key-value metadata beyond Arrow's schema (pandas block, timestamps)."""
+    import pyarrow.parquet as pq
+
+    bad = []
+    for path in sorted(Path(root).rglob("*")):
+        if path.suffix == ".json":
+            if not _keys_sorted(json.loads(path.read_text(encoding="utf-8"))):
+                bad.append(f"{path}: keys not sorted")
+        elif path.suffix == ".png":
+            for kind, body in _png_metadata(path):
+                if kind == "tIME" or b"Software" in body or b"Date" in body or b"Creation" in body:
+                    bad.append(f"{path}: {kind} chunk {body[:40]!r}")
+        elif path.suffix == ".parquet":
+            meta = pq.ParquetFile(path).metadata.metadata or {}
+            if set(meta) - {b"ARROW:schema"} or pq.read_schema(path).metadata:
+                bad.append(f"{path}: key-value metadata {sorted(meta)}")
+    return bad

@@ -128,7 +128,15 @@ def plane_band_fraction(center: np.ndarray, increments: np.ndarray, eps: float) 
     """
     widths = np.abs(increments)
     start = center - widths.sum(axis=0) / 2.0
-    return _box_cdf(eps - start, widths) - _box_cdf(-eps - start, widths)
+    flat = widths.sum(axis=0) == 0
+    if not flat.any():
+        return _box_cdf(eps - start, widths) - _box_cdf(-eps - start, widths)
+    # A constant field is inside the band everywhere or nowhere (the CDF formula would give 0/0).
+    out = (np.abs(center) <= eps).astype(float)
+    sloped = ~flat
+    out[sloped] = (_box_cdf(eps - start[sloped], widths[:, sloped])
+                   - _box_cdf(-eps - start[sloped], widths[:, sloped]))
+    return out
 
 
 @dataclass
@@ -172,7 +180,11 @@ def cell_count(resid: np.ndarray, eps: float, domain: Domain, step: np.ndarray, 
         outside |= out_j
         n_active += active
         which[active] = j
-        suspicious |= active & ((hi < -eps) | (lo > eps))
+        # The plane through the corners only sees a band edge that the corners straddle: where all
+        # corners lie on one side of both edges (the set may only dip in or out between them, e.g. at
+        # a vertex in mid-cell), the plane is blind to it and the cell is sub-sampled.
+        corners_inside = (lo >= -eps) & (hi <= eps)
+        suspicious |= active & ((hi < -eps) | (lo > eps) | corners_inside)
     frac = inside.astype(float)
     candidate = ~inside & ~outside
     analytic = candidate & (n_active == 1) & ~suspicious

@@ -1,0 +1,575 @@
+"""Mutation benchmark of the numerical core: how many small, plausible bugs does the test suite catch?
+
+Each mutant is one small change to one function of a core module (a comparison
+operator swapped, + and - swapped, an integer constant off by one, a term of a sum
+dropped, ``n - p`` turned into ``n``, ``sorted``/``sort_keys`` removed, a
+reassignment deleted, min and max swapped, ...).  The mutant is written into a
+private copy of the source tree (never into the working tree), the module's fast
+test subset from :data:`TABLE` runs against it, and the mutant is *killed* when a
+test fails (or times out) and *survives* when all pass.  Mutants named in
+:data:`EQUIVALENT` behave exactly like the original for every input the code can
+receive; they are listed, with the reason, and left out of the score.
+
+Score = killed / (mutants run - equivalent).  The sample is drawn by a hash of each
+mutant's id, so the same mutants are drawn before and after a change to the tests
+(about 95 at the default --sample 60, at least 10 per module).  One mutant at a time:
+each run forks a process with numpy/scipy/statsmodels/pandas already imported.  Run
+by hand, not in CI (the default sample took ~35 min on a loaded two-core machine)::
+
+    python benchmarks/mutation.py                  # hashed sample, all modules
+    python benchmarks/mutation.py --list           # count the mutants per module, run nothing
+    python benchmarks/mutation.py --list --show    # ... and print every mutant id
+    python benchmarks/mutation.py --module demid/io.py --all
+    python benchmarks/mutation.py --sample 200 --seed 1
+
+The module -> tests table below is by file path: when a module moves, update its
+row (path, functions, tests) and nothing else.
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import hashlib
+import os
+import shutil
+import signal
+import sys
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+# ----------------------------------------------------------------------------------------------------------
+# Module -> (functions to mutate, tests that guard them).  ``functions``: qualified names
+# ("Class.method" or "function"); None = every function and method in the file.
+# ``tests``: pytest arguments (files, node ids, -k expressions), run from the repository root.
+TABLE: dict[str, dict] = {
+    "demid/sampling/grid.py": {
+        "functions": None,
+        "tests": ["tests/test_admissibility.py", "tests/test_core_contracts.py",
+                  "tests/test_uncertainty.py::test_plane_band_fraction_matches_sampling",
+                  "tests/test_uncertainty.py::test_fraction_with_error_reports_grid_error_and_3d_shell",
+                  "tests/test_uncertainty.py::test_polish_spans_thin_set_without_admissible_nodes"],
+    },
+    "demid/sampling/domain.py": {
+        "functions": None,
+        "tests": ["tests/test_admissibility.py", "tests/test_core_contracts.py", "tests/test_uncertainty.py"],
+    },
+    "demid/sampling/residuals.py": {
+        "functions": ["relative_residuals"],
+        "tests": ["tests/test_admissibility.py", "tests/test_core_contracts.py"],
+    },
+    "demid/sampling/sobol.py": {
+        "functions": ["sobol_admissible_set", "_extreme_points", "sobol_fraction"],
+        "tests": ["tests/test_uncertainty.py", "tests/test_admissibility.py", "tests/test_core_contracts.py"],
+    },
+    "demid/sampling/polish.py": {
+        "functions": ["_start_points", "_polish", "polish_spans"],
+        "tests": ["tests/test_uncertainty.py", "tests/test_core_contracts.py"],
+    },
+    "demid/surrogate.py": {
+        "functions": None,
+        "tests": ["tests/test_surrogate.py", "tests/test_core_contracts.py"],
+    },
+    "demid/criticism/models.py": {
+        "functions": ["infer_axial_distance", "_orth", "_residualize", "_hat", "_boxcox", "_inv_boxcox", "_aicc"],
+        "tests": ["tests/test_criticism.py", "tests/test_core_contracts.py",
+                  "-knot level2 and not residual_figure and not 3f"],
+    },
+    "demid/criticism/catalogue.py": {
+        "functions": ["_f_logp", "_added_variable_stats", "_outlier_stats", "_outlier_logp", "_het_lr",
+                      "_boxcox_profile", "_stepdown_minp", "_Round._boxcox_bootstrap", "_Round._boxcox_lr",
+                      "_Round.rejected"],
+        # the level-2 and figure tests exercise other functions; the 3-factor planted effects repeat the
+        # 2-factor ones at four times the cost
+        "tests": ["tests/test_criticism.py", "tests/test_core_contracts.py",
+                  "-knot level2 and not residual_figure and not 3f"],
+    },
+    "demid/transcription/printed.py": {
+        "functions": ["PrintedValue.half_width", "PrintedValue.agrees", "PrintedValue.misfit", "_decimals_of",
+                      "parse_printed", "_positional", "_printed_column", "_precision", "_irregularity"],
+        "tests": ["tests/test_transcription.py", "tests/test_core_contracts.py"],
+    },
+    "demid/transcription/typos.py": {
+        "functions": ["single_cell_slips"],
+        "tests": ["tests/test_transcription.py", "tests/test_core_contracts.py"],
+    },
+    "demid/transcription/engine.py": {
+        "functions": ["_statistics", "_lack_of_fit_p"],
+        "tests": ["tests/test_transcription.py", "tests/test_core_contracts.py"],
+    },
+    "demid/data.py": {
+        "functions": ["parse_number", "read_table", "infer_coding", "check_design", "check_bounds",
+                      "validate_material"],
+        "tests": ["tests/test_data.py", "tests/test_core_contracts.py"],
+    },
+    "demid/design.py": {
+        "functions": None,
+        "tests": ["tests/test_design.py", "tests/test_data.py", "tests/test_core_contracts.py"],
+    },
+    "demid/io.py": {
+        "functions": None,
+        "tests": ["tests/test_core_contracts.py", "-kjson or png or parquet or csv or atomic"],
+    },
+}
+
+# ----------------------------------------------------------------------------------------------------------
+# Equivalent mutants: id -> reason.  An id is "path::function::original => mutated#k" (k counts identical
+# changes within the function), printed by this script for every surviving mutant.
+_NUMPY_FLOAT = "np.float64 is a float subclass: the value and every later use are the same"
+EQUIVALENT: dict[str, str] = {
+    # --- admissibility
+    "demid/sampling/domain.py::Domain.from_config::float(factors_cfg[f]['lower']) => factors_cfg[f]['lower']#0":
+        "bounds are schema-validated numbers and only enter float arithmetic (model_units copies to float)",
+    "demid/sampling/domain.py::Domain.from_config::float(factors_cfg[f]['upper']) => factors_cfg[f]['upper']#0":
+        "bounds are schema-validated numbers and only enter float arithmetic (model_units copies to float)",
+    "demid/sampling/domain.py::Domain.sobol::0 => 1#0":
+        "the default scramble seed: any fixed seed gives an equally stratified, equally deterministic sample",
+    "demid/sampling/grid.py::_curvature_margin::float(np.max(np.abs(d2))) => np.max(np.abs(d2))#0": _NUMPY_FLOAT,
+    "demid/sampling/grid.py::admissible_set::abs(targets[o]) => targets[o]#0":
+        "the band |r| <= eps is symmetric: dividing by -|y*| instead of |y*| flips the sign of r only",
+    "demid/sampling/grid.py::_refine_span_ends::cell_lo + 1e-12 * abs(step[i]) => cell_lo#0":
+        "a round-off guard in a skip test: without it an end that already lies on the cell edge is re-sampled "
+        "and found again",
+    "demid/sampling/sobol.py::sobol_admissible_set::int(est.evaluations + resid.size) => "
+    "est.evaluations + resid.size#0": "both terms are Python ints already",
+    # --- surrogate
+    "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
+    "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",
+    "demid/surrogate.py::Surrogate.predict::65536 => 65535#0": "chunk size of a vectorised loop",
+    "demid/surrogate.py::Surrogate.predict::65536 => 65537#0": "chunk size of a vectorised loop",
+    "demid/surrogate.py::SurrogateFit._coded_to_actual_matrix::0 => -1#0":
+        "the fallback degree of an empty term list; a model always has terms",
+    "demid/surrogate.py::SurrogateFit._coded_to_actual_matrix::0 => 1#0":
+        "the fallback degree of an empty term list; a model always has terms",
+    "demid/surrogate.py::surrogates_to_frame::True => False#0":
+        "the frame's index is never used: it is written by write_parquet, which drops it, and read by groupby",
+    # --- criticism
+    "demid/criticism/models.py::_inv_boxcox::700 => 699#0": "overflow clip of exp(): differs only beyond e^699",
+    "demid/criticism/models.py::_inv_boxcox::700 => 699#1": "overflow clip of exp(): differs only beyond e^699",
+    "demid/criticism/models.py::_inv_boxcox::700 => 701#0": "overflow clip of exp(): differs only beyond e^700",
+    "demid/criticism/models.py::_inv_boxcox::700 => 701#1": "overflow clip of exp(): differs only beyond e^700",
+    "demid/criticism/models.py::_aicc::float('nan') => 'nan'#0":
+        "the value is only read through _num(), which turns 'nan' and nan alike into None",
+    "demid/criticism/catalogue.py::_het_lr::np.sum(r * r, axis=0) / n => np.sum(r * r, axis=0)#0":
+        "shifts every profile log-likelihood by the same 0.5 n log n; the statistic is a difference of two",
+    "demid/criticism/catalogue.py::_outlier_stats::1 - 1e-10 => 1#0":
+        "only runs with leverage in [1 - 1e-10, 1) change: their residual is of order (1 - h), so t is of "
+        "order sqrt(1 - h) < 1e-5 either way and never the maximum; h rounded to 1 is excluded by both",
+    # --- transcription
+    "demid/transcription/engine.py::_statistics::n = np.broadcast_to(n, sse.shape) => pass#0":
+        "numpy broadcasts the scalar n in every later expression: the same arrays result",
+    # --- uncertainty
+    "demid/sampling/polish.py::_polish::0 => -1#6": "sign is +1.0 or -1.0: 'sign > 0' and 'sign > -1' agree",
+    # --- data
+    "demid/data.py::read_table::float(run_val) => run_val#0": "parse_number returns a float already",
+    # --- design
+    "demid/design.py::model_matrix::1 => 0#2":
+        "'elif power > 0' after 'if power == 1' selects the same powers as 'elif power > 1'",
+    # --- io
+    "demid/io.py::atomic_path::suffix or path.suffix => path.suffix#0": "no caller passes suffix",
+    "demid/io.py::atomic_path::suffix or path.suffix => suffix#0":
+        "only the temporary file's name changes: every writer names its format explicitly",
+    "demid/io.py::atomic_path::suffix or path.suffix => suffix and path.suffix#0":
+        "only the temporary file's name changes: every writer names its format explicitly",
+    "demid/io.py::atomic_path::0 => 1#0":
+        "os.umask(x) is only called to read the current umask, which is restored on the next line",
+    "demid/io.py::atomic_path::0 => -1#0":
+        "os.umask(x) is only called to read the current umask, which is restored on the next line",
+    "demid/io.py::write_parquet::pa.Table.from_pandas(frame.reset_index(drop=True), preserve_index=False) => "
+    "pa.Table.from_pandas(frame.reset_index(drop=True))#0":
+        "after reset_index the index is a RangeIndex, which Arrow keeps only as pandas schema metadata, "
+        "and that metadata is dropped on the next line",
+    "demid/io.py::write_parquet::floats or False => floats#0":
+        "use_byte_stream_split=[] and =False both mean no column is split",
+    "demid/io.py::write_csv::frame.to_csv(tmp, index=False, float_format=FLOAT_FORMAT, lineterminator='\\n') => "
+    "frame.to_csv(tmp, index=False, float_format=FLOAT_FORMAT)#0":
+        "pandas' default line terminator is os.linesep, '\\n' on the POSIX systems demid runs on",
+    "demid/io.py::_clean::float(obj) => obj#0": _NUMPY_FLOAT,
+}
+
+# Files and folders copied into the private tree the mutants are written to.
+COPY = ["demid", "tests", "data", "scripts", "workflow", "config.yaml", "Snakefile", "pyproject.toml"]
+
+SWAP_COMPARE = {ast.Lt: ast.LtE, ast.LtE: ast.Lt, ast.Gt: ast.GtE, ast.GtE: ast.Gt, ast.Eq: ast.NotEq,
+                ast.NotEq: ast.Eq, ast.Is: ast.IsNot, ast.IsNot: ast.Is, ast.In: ast.NotIn, ast.NotIn: ast.In}
+SWAP_BINOP = {ast.Add: ast.Sub, ast.Sub: ast.Add, ast.Mult: ast.Div, ast.Div: ast.Mult, ast.FloorDiv: ast.Div,
+              ast.Pow: ast.Mult}
+SWAP_NAMES = {"min": "max", "max": "min", "minimum": "maximum", "maximum": "minimum", "all": "any",
+              "any": "all", "argmin": "argmax", "argmax": "argmin", "floor": "ceil", "ceil": "floor",
+              "nanmin": "nanmax", "nanmax": "nanmin"}
+DROP_CALLS = {"sorted", "abs", "round", "int", "float"}
+DROP_KEYWORDS = {"sort_keys", "metadata", "ddof", "preserve_index", "write_statistics", "kind", "float_format",
+                 "lineterminator", "index", "ensure_ascii", "keepdims", "rcond", "cutoff", "trim"}
+
+
+@dataclass
+class Mutant:
+    path: str
+    function: str
+    line: int
+    original: str
+    mutated: str
+    occurrence: int
+    # (start line, start col, end line, end col) of the replaced source segment and its replacement
+    span: tuple[int, int, int, int]
+    replacement: str
+
+    @property
+    def id(self) -> str:
+        return f"{self.path}::{self.function}::{self.original} => {self.mutated}#{self.occurrence}"
+
+
+# ---------------------------------------------------------------------------------------------- mutators
+def _variants(node: ast.AST):
+    """(mutated node, short description) for every mutation of ``node`` itself (children untouched)."""
+    import copy
+
+    def clone():
+        return copy.deepcopy(node)
+
+    if isinstance(node, ast.Compare):
+        for i, op in enumerate(node.ops):
+            if type(op) in SWAP_COMPARE:
+                m = clone()
+                m.ops[i] = SWAP_COMPARE[type(op)]()
+                yield m
+    elif isinstance(node, ast.BinOp):
+        if type(node.op) in SWAP_BINOP:
+            m = clone()
+            m.op = SWAP_BINOP[type(node.op)]()
+            yield m
+        if isinstance(node.op, (ast.Add, ast.Sub, ast.Mult, ast.Div)):
+            yield copy.deepcopy(node.left)  # drop the right term/factor (n - p -> n)
+        if isinstance(node.op, (ast.Add, ast.Mult)):
+            yield copy.deepcopy(node.right)
+    elif isinstance(node, ast.BoolOp):
+        m = clone()
+        m.op = ast.Or() if isinstance(node.op, ast.And) else ast.And()
+        yield m
+        if len(node.values) == 2:
+            yield copy.deepcopy(node.values[0])
+            yield copy.deepcopy(node.values[1])
+    elif isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.Not, ast.USub, ast.Invert)):
+        if not (isinstance(node.op, ast.USub) and isinstance(node.operand, ast.Constant)):
+            yield copy.deepcopy(node.operand)
+    elif isinstance(node, ast.Constant) and type(node.value) is int:
+        yield ast.Constant(node.value + 1)
+        yield ast.Constant(node.value - 1)
+    elif isinstance(node, ast.Constant) and type(node.value) is bool:
+        yield ast.Constant(not node.value)
+    elif isinstance(node, ast.Call):
+        func = node.func
+        name = func.id if isinstance(func, ast.Name) else func.attr if isinstance(func, ast.Attribute) else None
+        if name in SWAP_NAMES:
+            m = clone()
+            if isinstance(m.func, ast.Name):
+                m.func.id = SWAP_NAMES[name]
+            else:
+                m.func.attr = SWAP_NAMES[name]
+            yield m
+        if isinstance(func, ast.Name) and name in DROP_CALLS and len(node.args) == 1 and not node.keywords:
+            yield copy.deepcopy(node.args[0])
+        for i, kw in enumerate(node.keywords):
+            if kw.arg in DROP_KEYWORDS:
+                m = clone()
+                del m.keywords[i]
+                yield m
+
+
+def _is_reassignment(stmt: ast.stmt, assigned: set[str]) -> bool:
+    if isinstance(stmt, ast.AugAssign):
+        return True
+    if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1:
+        t = stmt.targets[0]
+        return (isinstance(t, ast.Name) and t.id in assigned) or isinstance(t, ast.Subscript)
+    return False
+
+
+def _functions(tree: ast.Module):
+    """(qualified name, node) of every function and method."""
+    for node in tree.body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            yield node.name, node
+        elif isinstance(node, ast.ClassDef):
+            for sub in node.body:
+                if isinstance(sub, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    yield f"{node.name}.{sub.name}", sub
+
+
+def _skip_nodes(func: ast.AST) -> set[int]:
+    """Nodes not to mutate: docstrings, f-strings, decorators, annotations, error messages."""
+    skip = set()
+    for node in ast.walk(func):
+        if isinstance(node, ast.JoinedStr) or isinstance(node, ast.Raise):
+            skip.update(id(n) for n in ast.walk(node))
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            for dec in node.decorator_list:
+                skip.update(id(n) for n in ast.walk(dec))
+            for arg in node.args.args + node.args.kwonlyargs:
+                if arg.annotation is not None:
+                    skip.update(id(n) for n in ast.walk(arg.annotation))
+            if node.returns is not None:
+                skip.update(id(n) for n in ast.walk(node.returns))
+        if isinstance(node, ast.AnnAssign):
+            skip.update(id(n) for n in ast.walk(node.annotation))
+        if isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Load) and isinstance(node.value, ast.Name) \
+                and node.value.id in {"dict", "list", "tuple"}:
+            skip.update(id(n) for n in ast.walk(node))
+    return skip
+
+
+def mutants_of(path: str, functions: list[str] | None) -> list[Mutant]:
+    source = (ROOT / path).read_text(encoding="utf-8")
+    tree = ast.parse(source)
+    out: list[Mutant] = []
+    for qualname, func in _functions(tree):
+        if functions is not None and qualname not in functions:
+            continue
+        skip = _skip_nodes(func)
+        seen: dict[tuple[str, str], int] = {}
+
+        def add(node, original, mutated, replacement):
+            key = (original, mutated)
+            seen[key] = seen.get(key, 0) + 1
+            out.append(Mutant(path, qualname, node.lineno, original, mutated, seen[key] - 1,
+                              (node.lineno, node.col_offset, node.end_lineno, node.end_col_offset), replacement))
+
+        assigned: set[str] = {a.arg for a in func.args.args + func.args.kwonlyargs}
+        for node in ast.walk(func):
+            if id(node) in skip or node is func or not hasattr(node, "lineno"):
+                continue
+            if isinstance(node, ast.stmt):
+                continue
+            original = ast.unparse(node)
+            for m in _variants(node):
+                mutated = ast.unparse(m)
+                if mutated != original:
+                    add(node, original, mutated, f"({mutated})")
+        # Statement deletion: reassignments and in-place updates (a step of an algorithm, e.g. a
+        # monotonicity step or a metadata strip), replaced by ``pass``.
+        for node in ast.walk(func):
+            if isinstance(node, ast.stmt) and node is not func and id(node) not in skip \
+                    and _is_reassignment(node, assigned):
+                add(node, ast.unparse(node).splitlines()[0], "pass", "pass")
+            if isinstance(node, (ast.Assign, ast.AugAssign, ast.AnnAssign, ast.For)):
+                targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+                for t in targets:
+                    assigned.update(n.id for n in ast.walk(t) if isinstance(n, ast.Name))
+    return out
+
+
+def apply(source: str, mutant: Mutant) -> str:
+    lines = source.splitlines(keepends=True)
+    l0, c0, l1, c1 = mutant.span
+    # ast offsets are in UTF-8 bytes
+    first = lines[l0 - 1].encode("utf-8")
+    last = lines[l1 - 1].encode("utf-8")
+    head = first[:c0].decode("utf-8")
+    tail = last[c1:].decode("utf-8")
+    text = "".join(lines[:l0 - 1]) + head + mutant.replacement + tail + "".join(lines[l1:])
+    ast.parse(text)  # a mutant must still be valid Python
+    return text
+
+
+# ---------------------------------------------------------------------------------------------- running
+def make_tree() -> Path:
+    tree = Path(tempfile.mkdtemp(prefix="demid-mutation-"))
+    for name in COPY:
+        src = ROOT / name
+        if src.is_dir():
+            shutil.copytree(src, tree / name, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+        elif src.exists():
+            shutil.copy2(src, tree / name)
+    return tree
+
+
+def existing(tests: list[str], tree: Path) -> list[str]:
+    """The test arguments whose file exists (a table row may name tests not written yet)."""
+    return [t for t in tests if t.startswith("-") or (tree / t.split("::")[0]).exists()]
+
+
+PRELOAD = ["numpy", "pandas", "scipy.stats", "scipy.optimize", "scipy.linalg", "statsmodels.api",
+           "statsmodels.stats.diagnostic", "pyarrow.parquet", "matplotlib", "jsonschema", "yaml", "pytest"]
+
+
+def preload() -> None:
+    """Import the heavy third-party libraries once; every mutant's test run is a fork of this process.
+
+    demid itself is never imported here, so each fork imports the (mutated) copy afresh.
+    """
+    import importlib
+
+    os.environ.setdefault("MPLBACKEND", "Agg")
+    for name in PRELOAD:
+        try:
+            importlib.import_module(name)
+        except ImportError:
+            pass
+    assert not any(m == "demid" or m.startswith("demid.") for m in sys.modules)
+
+
+_CHILDREN: set[int] = set()
+
+
+def _stop_children(*_):
+    for pid in list(_CHILDREN):
+        try:
+            os.kill(pid, 9)
+        except ProcessLookupError:
+            pass
+    raise SystemExit(1)
+
+
+def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]:
+    """Run pytest on ``tests`` against the copy in ``tree`` in a forked child; (status, seconds)."""
+    start = time.perf_counter()
+    pid = os.fork()
+    _CHILDREN.add(pid)
+    if pid == 0:  # child
+        code = 3
+        try:
+            os.chdir(tree)
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, 1)
+            os.dup2(devnull, 2)
+            os.environ.update(PYTHONPATH=str(tree), PYTHONDONTWRITEBYTECODE="1")
+            sys.dont_write_bytecode = True
+            sys.path[:] = [str(tree)] + [p for p in sys.path if Path(p or ".").resolve() != ROOT]
+            import pytest
+
+            code = int(pytest.main(["-x", "-q", "-p", "no:cacheprovider", "--no-header", "-o", "addopts=",
+                                    *tests]))
+        finally:
+            os._exit(code)
+    while True:
+        done, status = os.waitpid(pid, os.WNOHANG)
+        if done:
+            break
+        if time.perf_counter() - start > timeout:
+            os.kill(pid, 9)
+            os.waitpid(pid, 0)
+            _CHILDREN.discard(pid)
+            return "killed (timeout)", time.perf_counter() - start
+        time.sleep(0.05)
+    _CHILDREN.discard(pid)
+    elapsed = time.perf_counter() - start
+    code = os.waitstatus_to_exitcode(status)
+    if code == 0:
+        return "survived", elapsed
+    if code == 1:
+        return "killed", elapsed
+    return f"error (pytest exit {code})", elapsed
+
+
+def _draw(mutant_id: str, seed: int) -> float:
+    """A uniform number in [0, 1) fixed by the mutant id and the seed."""
+    digest = hashlib.sha256(f"{seed}:{mutant_id}".encode("utf-8")).digest()
+    return int.from_bytes(digest[:8], "big") / 2.0 ** 64
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--sample", type=int, default=60, help="approximate sample size over all modules")
+    ap.add_argument("--seed", type=int, default=14)
+    ap.add_argument("--all", action="store_true", help="every mutant instead of a sample")
+    ap.add_argument("--module", action="append", help="only this module path (repeatable)")
+    ap.add_argument("--list", action="store_true", help="count mutants and exit")
+    ap.add_argument("--show", action="store_true", help="print every mutant id with --list")
+    args = ap.parse_args(argv)
+
+    modules = args.module or list(TABLE)
+    unknown = [m for m in modules if m not in TABLE]
+    if unknown:
+        ap.error(f"not in TABLE: {', '.join(unknown)}")
+    per_module = {m: mutants_of(m, TABLE[m]["functions"]) for m in modules}
+    total = sum(len(v) for v in per_module.values())
+    # the sample share is fixed by all modules, so one module run alone draws the same mutants
+    everything = total if set(modules) == set(TABLE) else sum(
+        len(mutants_of(m, TABLE[m]["functions"])) for m in TABLE)
+    if args.list:
+        for m, muts in per_module.items():
+            print(f"{m:28s} {len(muts):5d} mutants")
+            if args.show:
+                for mu in muts:
+                    print(f"    line {mu.line}: {mu.id}")
+        print(f"{'total':28s} {total:5d}")
+        return 0
+
+    chosen: dict[str, list[Mutant]] = {}
+    for m, muts in per_module.items():
+        # The same share of every module (at least 10 mutants); a mutant is drawn by a hash of its id,
+        # so an edit elsewhere in a file does not change which of its mutants are drawn.
+        share = 1.0 if args.all else max(10 / max(len(muts), 1), args.sample / max(everything, 1))
+        chosen[m] = [mu for mu in muts if _draw(mu.id, args.seed) < share]
+
+    stale = [key for key in EQUIVALENT if key.split("::")[0] in TABLE
+             and key not in {mu.id for muts in per_module.values() for mu in muts}
+             and key.split("::")[0] in per_module]
+    for key in stale:
+        print(f"note: equivalent mutant no longer generated (code moved or changed?): {key}")
+    signal.signal(signal.SIGTERM, _stop_children)
+    preload()
+    tree = make_tree()
+    results: list[tuple[Mutant, str]] = []
+    try:
+        for m, muts in chosen.items():
+            tests = existing(TABLE[m]["tests"], tree)
+            status, base_time = run_tests(tree, tests, timeout=1800)
+            if status != "survived":
+                print(f"{m}: the unmutated tests do not pass ({status}); fix them first", flush=True)
+                return 2
+            timeout = max(60.0, 4.0 * base_time)
+            print(f"{m}: {len(muts)} mutants, tests take {base_time:.1f} s unmutated", flush=True)
+            target = tree / m
+            original = target.read_text(encoding="utf-8")
+            source = (ROOT / m).read_text(encoding="utf-8")
+            try:
+                for mu in muts:
+                    target.write_text(apply(source, mu), encoding="utf-8")
+                    status, took = run_tests(tree, tests, timeout)
+                    if status == "survived" and mu.id in EQUIVALENT:
+                        status = "equivalent"
+                    results.append((mu, status))
+                    print(f"  {status:18s} {took:6.1f}s  line {mu.line}: {mu.id}", flush=True)
+            finally:
+                target.write_text(original, encoding="utf-8")
+    finally:
+        shutil.rmtree(tree, ignore_errors=True)
+
+    print("\n=== summary ===")
+    print(f"{'module':28s} {'run':>5s} {'killed':>7s} {'survived':>9s} {'equiv':>6s} {'score':>7s}")
+    tot = {"run": 0, "killed": 0, "survived": 0, "equivalent": 0}
+    for m in chosen:
+        rs = [s for mu, s in results if mu.path == m]
+        k = sum(s.startswith("killed") or s.startswith("error") for s in rs)
+        sv = sum(s == "survived" for s in rs)
+        eq = sum(s == "equivalent" for s in rs)
+        for key, v in zip(tot, (len(rs), k, sv, eq)):
+            tot[key] += v
+        score = 100.0 * k / (k + sv) if k + sv else float("nan")
+        print(f"{m:28s} {len(rs):5d} {k:7d} {sv:9d} {eq:6d} {score:6.1f}%")
+    k, sv = tot["killed"], tot["survived"]
+    print(f"{'total':28s} {tot['run']:5d} {k:7d} {sv:9d} {tot['equivalent']:6d} "
+          f"{100.0 * k / max(k + sv, 1):6.1f}%")
+    scope = "all mutants" if args.all else f"{tot['run']} of {total} mutants, seed {args.seed}"
+    print(f"\nmutation score: {100.0 * k / max(k + sv, 1):.1f} % ({k} killed of {k + sv}; "
+          f"{tot['equivalent']} equivalent excluded; {scope})")
+    survivors = [mu for mu, s in results if s == "survived"]
+    if survivors:
+        print("\nsurviving mutants:")
+        for mu in survivors:
+            print(f"  line {mu.line}: {mu.id}")
+    eqs = [mu for mu, s in results if s == "equivalent"]
+    if eqs:
+        print("\nequivalent mutants (excluded):")
+        for mu in eqs:
+            print(f"  {mu.id}\n      {EQUIVALENT[mu.id]}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
