@@ -360,6 +360,20 @@ def test_nan_text_is_a_failed_run_and_an_empty_cell_needs_a_status(tmp_path):
         read_table(_ccd_csv(tmp_path, {(5, "y"): ""}), ["x1", "x2"], ["y"])
 
 
+def test_a_failed_run_keeps_numbers_and_its_nan_text_is_not_warned_twice(tmp_path):
+    from demid.data import read_table
+
+    table = make_ccd_table(lambda x: {"y": 5 + x[:, 0], "z": 1 + x[:, 1]}, [0.1, 1.0], [0.9, 11.0], seed=4)
+    table = table.astype({"y": object})
+    table["status"] = "ok"
+    table.loc[table["run"] == 2, ["y", "z", "status"]] = ["nan", 12.5, "failed"]
+    table.to_csv(tmp_path / "t.csv", index=False)
+    read, warnings = read_table(tmp_path / "t.csv", ["x1", "x2"], ["y", "z"])
+    row = read[read["run"] == 2].iloc[0]
+    assert np.isnan(row["y"]) and row["z"] == 12.5
+    assert len(warnings) == 1 and "run 2: marked 'failed'" in warnings[0]
+
+
 def test_off_level_value_names_its_run_and_the_nearest_level(tmp_path):
     table = make_ccd_table(lambda x: {"y": 5 + x[:, 0]}, [0.1, 1.0], [0.9, 11.0], noise=0.1, seed=4)
     row = int(np.flatnonzero(np.isclose(table["x1"], 0.5 + 0.4 / 1.41421))[0])  # a +1 level of x1
