@@ -27,7 +27,8 @@ def tolerance_sweep(surrogates: dict[str, Surrogate], domain: Domain, scenarios:
     """Phi(eps) and spans for every scenario at every tolerance (long form, one row per factor).
 
     ``scenarios``: name -> (observables, nominal tolerance); the nominal tolerance is added
-    to ``tolerances``.  Strict sets by default, plausible sets when ``z > 0``.  With
+    to ``tolerances``.  Strict sets by default (exact for polynomial surrogates in up to 3
+    factors, see :func:`~demid.sampling.evaluate.evaluate_set`), plausible sets when ``z > 0``.  With
     ``with_error`` a trailing ``fraction_error_pct`` column bounds the numerical error of
     each fraction.  More than 3 factors: scrambled Sobol points instead of the grid.
     ``strict_sets`` (name -> the scenario's strict set at its nominal tolerance) are reused
