@@ -360,17 +360,21 @@ def test_nan_text_is_a_failed_run_and_an_empty_cell_needs_a_status(tmp_path):
         read_table(_ccd_csv(tmp_path, {(5, "y"): ""}), ["x1", "x2"], ["y"])
 
 
-def test_a_failed_run_keeps_numbers_and_its_nan_text_is_not_warned_twice(tmp_path):
+def test_a_failed_run_with_a_number_left_in_a_cell_is_refused_and_nan_text_is_warned_once(tmp_path):
     from demid.data import read_table
 
     table = make_ccd_table(lambda x: {"y": 5 + x[:, 0], "z": 1 + x[:, 1]}, [0.1, 1.0], [0.9, 11.0], seed=4)
-    table = table.astype({"y": object})
+    table = table.astype({"y": object, "z": object})
     table["status"] = "ok"
     table.loc[table["run"] == 2, ["y", "z", "status"]] = ["nan", 12.5, "failed"]
     table.to_csv(tmp_path / "t.csv", index=False)
+    with pytest.raises(InputError, match=r"run 2, column 'z'.*marked 'failed'"):
+        read_table(tmp_path / "t.csv", ["x1", "x2"], ["y", "z"])
+    table.loc[table["run"] == 2, "z"] = ""
+    table.to_csv(tmp_path / "t.csv", index=False)
     read, warnings = read_table(tmp_path / "t.csv", ["x1", "x2"], ["y", "z"])
     row = read[read["run"] == 2].iloc[0]
-    assert np.isnan(row["y"]) and row["z"] == 12.5
+    assert np.isnan(row["y"]) and np.isnan(row["z"])
     assert len(warnings) == 1 and "run 2: marked 'failed'" in warnings[0]
 
 
