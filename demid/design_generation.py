@@ -134,12 +134,16 @@ def _check_counts(design_type: str, n_factors: int, center_runs: int) -> None:
         raise InputError(f"--type box_behnken: needs 3 to 5 factors, found {n_factors}")
     if design_type == "factorial" and center_runs < 1:
         raise InputError("--center-runs: a 3^k factorial contains its centre point, so at least 1")
+    if center_runs < 1:
+        # without a centre run the intercept and the squared terms cannot be told apart when every run
+        # lies on one sphere (rotatable CCD, Box-Behnken), and the pipeline refuses such a table
+        raise InputError(f"--center-runs: a {design_type} design needs at least 1 centre run, found 0")
     if not 1 <= n_factors <= 6:
         raise InputError(f"--factor: 1 to 6 factors are supported, found {n_factors}")
 
 
 def _check_recoverable(sheet: RunSheet) -> None:
-    """The pipeline infers the design centre as the most frequent level of each factor; make sure it can."""
+    """The pipeline infers the design's levels from the table; make sure it recovers this sheet's coding."""
     from .data import infer_coding
 
     frame = sheet.to_frame()
@@ -149,8 +153,8 @@ def _check_recoverable(sheet: RunSheet) -> None:
     except InputError:
         inferred = None
     if inferred is None or not np.allclose(inferred.center, sheet.coding.center, rtol=1e-9, atol=1e-12):
-        raise InputError(f"--center-runs {sheet.center_runs}: too few centre runs for the pipeline to find the "
-                         f"design centre (it must be the most frequent level of every factor); "
+        raise InputError(f"--center-runs {sheet.center_runs}: the pipeline cannot recover this "
+                         f"design's centre from the sheet; "
                          f"use at least {_min_center_runs(sheet)}")
 
 

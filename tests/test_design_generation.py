@@ -93,7 +93,9 @@ def test_cli_sheet_validates_as_its_design(tmp_path, args):
     rng = np.random.default_rng(0)
     sheet["y"] = 1.0 + sheet[names].sum(axis=1) ** 2 + 0.01 * rng.standard_normal(len(sheet))  # filled in
     sheet.to_csv(tmp_path / "sheet.csv", index=False)
-    config = validate_schema(yaml.safe_load((tmp_path / "study.yaml").read_text()))
+    fragment = yaml.safe_load((tmp_path / "study.yaml").read_text())
+    fragment["materials"]["study"]["responses"]["y"]["target"] = 2.0  # the measurement the user adds
+    config = validate_schema(fragment)
     check_semantics(config, base_dir=tmp_path)
     vt = validate_material("study", config["materials"]["study"], base_dir=tmp_path)
     counts = vt.summary("study")["point_types"]
@@ -114,7 +116,9 @@ def test_a_sheet_with_a_moved_point_does_not_validate(tmp_path):
     i = int(np.flatnonzero(sheet["std_order"] == 1)[0])
     sheet.loc[i, "a"] += 0.07
     sheet.to_csv(tmp_path / "sheet.csv", index=False)
-    config = validate_schema(yaml.safe_load((tmp_path / "study.yaml").read_text()))
+    fragment = yaml.safe_load((tmp_path / "study.yaml").read_text())
+    fragment["materials"]["study"]["responses"]["y"]["target"] = 2.0  # the measurement the user adds
+    config = validate_schema(fragment)
     with pytest.raises(InputError, match="not a level"):
         validate_material("study", config["materials"]["study"], base_dir=tmp_path)
 
