@@ -117,8 +117,8 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
            if not uses_grid(domain.dim) else f"posteriors on {sizes['posterior']} grid points per axis."),
     ]
     if strict_sets and all(a.exact is not None for a in strict_sets.values()):
-        notes.append("Strict sets (Table 3, the strict columns, the sweep and the ranking): exact for the fitted "
-                     "polynomials (roots along lines, span ends by bisection), one evaluation per scenario "
+        notes.append("Strict sets (identifiability table, the strict columns, the sweep and the ranking): "
+                     "exact for the fitted polynomials (roots along lines, span ends by bisection), one evaluation per scenario "
                      "and tolerance.")
     if not scenarios:
         notes.append(f"No scenarios configured: ranking and default sigma use tolerance {FALLBACK_TOLERANCE:g}.")
