@@ -536,3 +536,20 @@ def test_sobol_evaluation_points_are_stratified_in_search_units():
     for i in range(4):
         assert sorted(slot[:, i]) == list(range(128))
     assert np.array_equal(dom.sample(100), points)  # deterministic
+
+
+def test_aicc_is_undefined_without_spare_degrees_of_freedom():
+    """AICc = -2 llf + 2k + 2k(k+1)/(n-k-1): a number for n > k + 1, NaN (not +-inf) otherwise."""
+    from demid.criticism.models import _aicc
+
+    assert _aicc(-10.0, 20, 6) == pytest.approx(20.0 + 12.0 + 2 * 6 * 7 / 13)
+    assert np.isnan(_aicc(-10.0, 7, 6)) and np.isnan(_aicc(-10.0, 5, 6))
+
+
+def test_small_and_large_values_are_written_positionally():
+    """Slip generation works on the printed digits, so exponents must never reach it."""
+    from demid.transcription.printed import _positional
+
+    assert _positional(1e-05) == "0.00001"
+    assert _positional(2.5e16) == "25000000000000000"
+    assert _positional(33.49) == "33.49"
