@@ -553,3 +553,25 @@ def test_small_and_large_values_are_written_positionally():
     assert _positional(1e-05) == "0.00001"
     assert _positional(2.5e16) == "25000000000000000"
     assert _positional(33.49) == "33.49"
+
+
+def test_sobol_fraction_of_two_slabs_in_a_scaled_box():
+    """y1 = a and y2 = b/2, both within 25 % of 1, in [0,2]x[0,4]x[0,1]^2: a in [0.75, 1.25] and b in
+    [1.5, 2.5] at once cover (1/4)(1/4) = 1/16 of the box (either slab alone: 7/16)."""
+    from demid.sampling.sobol import sobol_fraction
+
+    factors = ("a", "b", "c", "d")
+    terms = quadratic_terms(4)
+    domain = Domain(factors, (0.0, 0.0, 0.0, 0.0), (2.0, 4.0, 1.0, 1.0))
+
+    def linear(response, factor, slope):
+        coef = np.zeros(len(terms))
+        coef[1 + factors.index(factor)] = slope
+        return Surrogate(response, list(factors), terms, coef, np.zeros((len(terms),) * 2), 0.0, 7)
+
+    surrogates = {"y1": linear("y1", "a", 1.0), "y2": linear("y2", "b", 0.5)}
+    res = sobol_fraction(surrogates, domain, ["y1", "y2"], {"y1": 1.0, "y2": 1.0}, 0.25, 2 ** 14, 3)
+    assert res.ci_lower <= 1 / 16 <= res.ci_upper
+    assert res.fraction == pytest.approx(1 / 16, rel=0.03)
+    np.testing.assert_allclose(res.lower, [0.75, 1.5, 0.0, 0.0], atol=1e-6)
+    np.testing.assert_allclose(res.upper, [1.25, 2.5, 1.0, 1.0], atol=1e-6)
