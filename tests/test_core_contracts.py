@@ -575,3 +575,12 @@ def test_sobol_fraction_of_two_slabs_in_a_scaled_box():
     assert res.fraction == pytest.approx(1 / 16, rel=0.03)
     np.testing.assert_allclose(res.lower, [0.75, 1.5, 0.0, 0.0], atol=1e-6)
     np.testing.assert_allclose(res.upper, [1.25, 2.5, 1.0, 1.0], atol=1e-6)
+
+
+def test_relative_residuals_divide_by_the_magnitude_of_the_target():
+    """A negative target keeps the sign of y - y*: -9 against -10 lies 10 % above, -11 10 % below."""
+    from demid.sampling.residuals import relative_residuals
+
+    res = relative_residuals({"y": np.array([-9.0, -11.0]), "z": np.array([4.0, 6.0])}, {"y": -10.0, "z": 5.0},
+                             ["y", "z"])
+    np.testing.assert_allclose(res, [[0.1, -0.1], [-0.2, 0.2]])
