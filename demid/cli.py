@@ -167,6 +167,17 @@ def _one_line_error(message: str):
 _DATA_HELP = "CSV table of the design runs: one column per factor and response"
 
 
+def _table_arguments(p: argparse.ArgumentParser, response_flag: str, response_help: str) -> None:
+    """The options shared by the commands that read one design table."""
+    p.add_argument("--data", required=True, help=_DATA_HELP)
+    p.add_argument("--factors", required=True, help="comma-separated factor columns, in order")
+    p.add_argument(response_flag, required=True, help=response_help)
+    p.add_argument("--alpha", type=float, default=None, help="CCD axial distance (default: inferred)")
+    p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"],
+                   help="design family: sets the coding (axial points only in a ccd)")
+    p.add_argument("--out", required=True, help="JSON file to write")
+
+
 def build_parser() -> argparse.ArgumentParser:
     from . import __version__
 
@@ -176,13 +187,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
 
     p = sub.add_parser("fit", help="quadratic OLS fit statistics and coefficients as JSON")
-    p.add_argument("--data", required=True, help=_DATA_HELP)
-    p.add_argument("--factors", required=True, help="comma-separated factor columns, in order")
-    p.add_argument("--responses", required=True, help="comma-separated response columns")
-    p.add_argument("--alpha", type=float, default=None, help="CCD axial distance (default: inferred)")
-    p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"],
-                   help="design family: sets the coding (axial points only in a ccd)")
-    p.add_argument("--out", required=True, help="JSON file to write")
+    _table_arguments(p, "--responses", "comma-separated response columns")
     p.set_defaults(func=cmd_fit)
 
     p = sub.add_parser("validate", help="check a config and its tables without running anything")
@@ -190,24 +195,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=cmd_validate)
 
     p = sub.add_parser("criticize", help="what the quadratic surrogate gets wrong, why, and the gain of a fix")
-    p.add_argument("--data", required=True, help=_DATA_HELP)
-    p.add_argument("--factors", required=True, help="comma-separated factor columns, in order")
-    p.add_argument("--response", required=True, help="the response column to criticise")
-    p.add_argument("--alpha", type=float, default=None, help="CCD axial distance (default: inferred)")
-    p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"],
-                   help="design family: sets the coding (axial points only in a ccd)")
-    p.add_argument("--out", required=True, help="JSON file to write")
+    _table_arguments(p, "--response", "the response column to criticise")
     p.set_defaults(func=cmd_criticize)
 
     p = sub.add_parser("check-transcription", help="hold a table against its published statistics")
-    p.add_argument("--data", required=True, help=_DATA_HELP)
-    p.add_argument("--factors", required=True, help="comma-separated factor columns, in order")
-    p.add_argument("--response", required=True, help="the response column the statistics belong to")
+    _table_arguments(p, "--response", "the response column the statistics belong to")
     p.add_argument("--published", required=True, help="published statistics, e.g. r2=0.9617,lof_f=90.33")
-    p.add_argument("--alpha", type=float, default=None, help="CCD axial distance (default: inferred)")
-    p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"],
-                   help="design type of the table (default: ccd)")
-    p.add_argument("--out", required=True, help="JSON file to write")
     p.set_defaults(func=cmd_check_transcription)
 
     p = sub.add_parser("design", help="a randomised run sheet (CCD, Box-Behnken, 3^k factorial) and its config")
