@@ -82,3 +82,25 @@ def test_r2_from_printed_sums_of_squares_agrees():
     assert not check_transcription(MONTGOMERY, ["x1", "x2"], "y", {"r2": "0.9830"}, alpha=1.414).consistent
     wrong = dict(printed, r2="0.9803")  # digits swapped: no rounding of the printed sums gives it
     assert not check_transcription(MONTGOMERY, ["x1", "x2"], "y", wrong, alpha=1.414).consistent
+
+
+def test_table_cells_keep_six_significant_digits_and_the_printed_precision(tmp_path):
+    """A statistic printed with 7 significant digits is judged at its printed decimals, but its table cell
+    (like every number in the tables) carries at most 6; trailing zeros of short values are kept."""
+    from demid.io import write_csv
+
+    exact = check_transcription(MONTGOMERY, ["x1", "x2"], "y", {"ss_residual": "0.50"}, alpha=1.414)
+    residual = exact.reproduced["ss_residual"]
+    seven = f"{10000 * residual:.3f}"  # the same data in other units: 7 significant digits, 3 decimals
+    scaled = MONTGOMERY.assign(y=MONTGOMERY["y"] * 100.0)
+    result = check_transcription(scaled, ["x1", "x2"], "y", {"ss_residual": seven, "r2": "0.9830"},
+                                 alpha=1.414)
+    assert len(seven.replace(".", "").lstrip("0")) == 7
+    frame = result.to_frame().set_index("statistic")
+    assert frame.loc["ss_residual", "printed_decimals"] == 3
+    assert frame.loc["ss_residual", "printed"] == f"{float(seven):.6g}"
+    assert frame.loc["r2", "printed"] == "0.9830" and frame.loc["r2", "printed_decimals"] == 4
+    write_csv(frame.reset_index(), tmp_path / "t.csv")
+    for cell in pd.read_csv(tmp_path / "t.csv", dtype=str).to_numpy().ravel():
+        digits = str(cell).lstrip("-<>").split("e")[0].replace(".", "").rstrip("%").lstrip("0")
+        assert not digits.isdigit() or len(digits) <= 6, cell

@@ -48,7 +48,10 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "published": ("as the statistic", "Value printed in the source."),
         "reproduced": ("as the statistic", "Value recomputed from the table."),
         "agrees": ("–", "True when the reproduced value rounds to the published one."),
-        "printed": ("–", "The published value as printed (digits kept)."),
+        "printed": ("–", "The published value as printed: trailing zeros and relation (<, >) kept; a value "
+                         "printed with more than 6 significant digits is shown rounded to 6."),
+        "printed_decimals": ("–", "Decimals the source printed; agreement means the reproduction lies within "
+                                  "half a unit of that last printed digit."),
     },
     "robust_identifiability": {
         "z": ("–", "Standard deviations added to ε in the robust set (z = 2 covers about 95 %)."),
@@ -151,7 +154,8 @@ TABLE_COLUMNS = {
     "surrogate_fit": ["material", "response", "n_runs", "r2", "adj_r2", "rmse", "resid_std", "q2", "lof_f", "lof_p"],
     "identifiability": ["material", "scenario", "observables", "tolerance", "feasible_fraction_pct", "factor",
                         "lower", "upper", "width"],
-    "transcription_check": ["material", "response", "statistic", "published", "reproduced", "agrees", "printed"],
+    "transcription_check": ["material", "response", "statistic", "published", "reproduced", "agrees", "printed",
+                            "printed_decimals"],
     "robust_identifiability": ["material", "scenario", "observables", "tolerance", "z", "factor",
                                "strict_fraction_pct", "robust_fraction_pct", "strict_lower", "strict_upper",
                                "strict_width", "robust_lower", "robust_upper", "robust_width",

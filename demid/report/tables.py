@@ -19,7 +19,8 @@ IDENTIFIABILITY_COLUMNS = ["material", "scenario", "observables", "tolerance", "
                            "lower", "upper", "width"]
 
 
-TRANSCRIPTION_COLUMNS = ["material", "response", "statistic", "published", "reproduced", "agrees", "printed"]
+TRANSCRIPTION_COLUMNS = ["material", "response", "statistic", "published", "reproduced", "agrees", "printed",
+                         "printed_decimals"]
 
 
 def summary_tables(inputs: dict[str, dict[str, str | Path]]) -> dict[str, pd.DataFrame]:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -10,11 +11,12 @@ import pandas as pd
 
 from ..design import Coding, quadratic_terms
 from ..errors import InputError
+from ..io import CSV_SIGNIFICANT_DIGITS
 from ..spec import as_spec
 from .engine import (_ALPHA_SLACK, _DesignFit, _coded_to_actual_matrix, _design_levels, _evaluate_designs,
                      _lack_of_fit_p, _levels_for_cell, _numeric, _runs)
 from .printed import (_agreement, _cell_texts, _format, _irregularity, _jsonable, _parse_published,
-                      _precision_elsewhere)
+                      _precision_elsewhere, parse_printed)
 from .typos import _KIND_RANK, single_cell_slips
 
 
@@ -79,10 +81,33 @@ class TranscriptionResult:
         }
 
     def to_frame(self) -> pd.DataFrame:
-        """One row per published statistic: response, statistic, published, reproduced, agrees, printed."""
+        """One row per published statistic: response, statistic, published, reproduced, agrees, printed,
+        printed_decimals."""
         rows = [(self.response, name, self.published[name], self.reproduced[name], bool(self.agrees[name]),
-                 self.printed.get(name, "")) for name in self.published]
-        return pd.DataFrame(rows, columns=["response", "statistic", "published", "reproduced", "agrees", "printed"])
+                 *_printed_cells(self.printed.get(name, ""))) for name in self.published]
+        return pd.DataFrame(rows, columns=TRANSCRIPTION_FRAME_COLUMNS)
+
+
+TRANSCRIPTION_FRAME_COLUMNS = ["response", "statistic", "published", "reproduced", "agrees", "printed",
+                               "printed_decimals"]
+
+
+def _printed_cells(text: str) -> tuple[str, float]:
+    """The printed text for a table cell and its decimals.
+
+    Every number in the tables carries at most 6 significant digits, so a value printed with
+    more (an RMSE of 7579.048) is shown rounded; ``printed_decimals`` keeps the precision the
+    agreement was judged at.  Trailing zeros of shorter values are kept (``0.970``)."""
+    if not text:
+        return "", float("nan")
+    decimals = float(parse_printed(text).decimals)
+    number = re.search(r"\d[\d.]*", text)
+    digits = number.group(0).replace(".", "").lstrip("0") if number else ""
+    if len(digits) > CSV_SIGNIFICANT_DIGITS:
+        rounded = np.format_float_positional(float(number.group(0)), precision=CSV_SIGNIFICANT_DIGITS,
+                                             unique=False, fractional=False, trim="-")
+        text = text[:number.start()] + rounded + text[number.end():]
+    return text, decimals
 
 
 # --------------------------------------------------------------------------- the check
@@ -358,6 +383,6 @@ def check_material(validated, material, printed: pd.DataFrame | None = None) -> 
 
 def transcription_frame(results: list[TranscriptionResult]) -> pd.DataFrame:
     """Rows of tables/transcription_check.csv (without the material column)."""
-    columns = ["response", "statistic", "published", "reproduced", "agrees", "printed"]
+    columns = TRANSCRIPTION_FRAME_COLUMNS
     frames = [r.to_frame() for r in results]
     return pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=columns)
