@@ -18,7 +18,7 @@ grid = predict_grid(surrogates, spec.domain, n)
 table, sets = evaluate_scenarios(surrogates, spec, n, grid)
 table.insert(0, "material", snakemake.wildcards.material)  # noqa: F821
 write_parquet(table, snakemake.output.scenarios)  # noqa: F821
-save_figure(sets_figure(spec, sets, n), snakemake.output.figure)  # noqa: F821
+save_figure(sets_figure(spec, sets, n, surrogates), snakemake.output.figure)  # noqa: F821
 del grid, sets  # the surface panels predict their own slice; free the dense grid first
 save_figure(surface_figure_from_surrogates(surrogates, spec, read_parquet(snakemake.input.table)),  # noqa: F821
             snakemake.output.surface)  # noqa: F821

@@ -17,6 +17,8 @@ from matplotlib.patches import Patch, Rectangle
 from .labels import axis_label
 from .style import MAX_PIXELS, plt, SCENARIO_COLORS, _axis_scale, _extent
 
+ZOOM_PIXELS = 600  # nodes per side of the zoom panel's own grid (the panel is ~4 in wide at 300 dpi)
+
 if TYPE_CHECKING:
     from ..sampling import AdmissibleSet
     from ..spec import MaterialSpec
@@ -85,8 +87,25 @@ def _zoom_box(domain, sets: dict, n: int, thin: float = 0.35, keep=None):
     return out
 
 
-def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> plt.Figure:
-    """Overlay of every scenario's admissible set (pairwise projections for d > 2)."""
+def _zoom_mask(surrogates, spec, result, box, pixels: int = ZOOM_PIXELS) -> np.ndarray:
+    """The scenario's admissible nodes on a fine grid over the zoom box (rows = y), so the zoomed
+    panel is drawn at the figure's resolution rather than the evaluation grid's."""
+    (x0, x1), (y0, y1) = box
+    xs, ys = np.linspace(x0, x1, pixels), np.linspace(y0, y1, pixels)
+    gx, gy = np.meshgrid(xs, ys)
+    points = spec.domain.to_actual(np.column_stack([gx.ravel(), gy.ravel()]))
+    targets = spec.targets
+    worst = np.max([np.abs(surrogates[o].predict(points) - targets[o]) / abs(targets[o])
+                    for o in result.observables], axis=0)
+    return (worst <= result.tolerance).reshape(pixels, pixels)
+
+
+def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, surrogates: dict | None = None
+                ) -> plt.Figure:
+    """Overlay of every scenario's admissible set (pairwise projections for d > 2).
+
+    With ``surrogates``, the zoom panel of a thin 2-factor set is redrawn from the surrogates on a
+    fine grid over the zoomed box instead of enlarging the evaluation grid's cells."""
     domain, reference_point, title = spec.domain, spec.reference_point, spec.label
     scenario_labels = {sc.name: sc.label for sc in spec.scenarios}
     d = domain.dim
@@ -122,8 +141,15 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int) -> p
             if not img.any():
                 continue
             cmap = ListedColormap([(0, 0, 0, 0), color])
-            ax.imshow(img.astype(float), origin="lower", extent=_extent(domain, i, j), aspect="auto",
-                      cmap=cmap, vmin=0, vmax=1, interpolation="nearest")
+            for k, ax_k in enumerate([ax] if zoom is None else [axes[0][0], axes[0][1]]):
+                extent = _extent(domain, i, j)
+                if k == 1 and surrogates is not None:
+                    img = _zoom_mask(surrogates, spec, result, zoom)
+                    extent = (*zoom[0], *zoom[1])
+                ax_k.imshow(img.astype(float), origin="lower", extent=extent, aspect="auto",
+                            cmap=cmap, vmin=0, vmax=1, interpolation="nearest")
+            if zoom is not None:
+                break  # the pair is drawn in both panels above
     names = list(domain.factors)
     for ax, (i, j) in zip(axes[0], pairs):
         ax.set_xlabel(axis_label(spec.factor(names[i])))

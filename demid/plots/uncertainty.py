@@ -15,17 +15,23 @@ if TYPE_CHECKING:
 
 
 # =========================================================================== figures
-def tolerance_sweep_figure(frame: pd.DataFrame, title: str, *, factor_labels: dict[str, str] | None = None):
-    """Phi(eps) on a log scale (one curve per observable set) and one span panel per factor."""
+def tolerance_sweep_figure(frame: pd.DataFrame, title: str, *, factor_labels: dict[str, str] | None = None,
+                           scenario_labels: dict[str, str] | None = None):
+    """Phi(eps) on a log scale (one curve per observable set) and one span panel per factor.
+
+    ``scenario_labels`` are the legend texts (the configured scenario labels); a scenario
+    without one is named by its key and observables."""
     from matplotlib.figure import Figure
+    from matplotlib.ticker import FixedLocator, FuncFormatter, NullFormatter
 
     factor_labels = factor_labels or {}
+    scenario_labels = scenario_labels or {}
     factors = list(dict.fromkeys(frame["factor"]))
     fig = Figure(figsize=(4.2 * (1 + len(factors)), 3.6), layout="constrained")
     axes = fig.subplots(1, 1 + len(factors), squeeze=False)[0]
     for k, (scenario, rows) in enumerate(frame.groupby("scenario", sort=False)):
         color = PALETTE[k % len(PALETTE)]
-        label = f"{scenario}: {rows['observables'].iloc[0]}"
+        label = scenario_labels.get(scenario) or f"{scenario}: {rows['observables'].iloc[0]}"
         first = rows.drop_duplicates("tolerance").sort_values("tolerance")
         tol_pct = 100 * first["tolerance"].to_numpy()
         frac = first["feasible_fraction_pct"].to_numpy()
@@ -49,8 +55,13 @@ def tolerance_sweep_figure(frame: pd.DataFrame, title: str, *, factor_labels: di
     for ax, factor in zip(axes[1:], factors):
         ax.set_xlabel("tolerance ε [%]")
         ax.set_ylabel(f"admissible width of {factor_labels.get(factor, factor)}")
+    swept = sorted(set(100 * frame["tolerance"].astype(float)))
     for ax in axes:
         ax.set_xscale("log")
+        if len(swept) <= 10:  # ticks at the swept tolerances, written as plain percentages (2, not 2x10^0)
+            ax.xaxis.set_major_locator(FixedLocator(swept))
+            ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+            ax.xaxis.set_minor_formatter(NullFormatter())
         ax.grid(True, which="both", alpha=0.3)
     fig.suptitle(title)
     return fig

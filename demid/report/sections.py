@@ -30,6 +30,27 @@ def markdown_table(frame: pd.DataFrame, digits: int = 4) -> str:
     return "\n".join(lines)
 
 
+# Report headers of observable_ranking.csv: what the column says, with its unit.
+RANKING_HEADERS = {
+    "rank": "rank",
+    "observables": "observables",
+    "information_gain_bits": "information gain [bit]",
+    "information_gain_error_bits": "± numerical error [bit]",
+    "best_subset": "best smaller set",
+    "gain_vs_best_subset_bits": "added to the best smaller set [bit]",
+    "feasible_fraction_pct": "admissible share of Ω [%]",
+}
+
+
+def ranking_display(ranking: pd.DataFrame) -> pd.DataFrame:
+    """observable_ranking.csv rows for a reader: plain headers with units, '–' where there is no smaller set."""
+    columns = [c for c in RANKING_HEADERS if c in ranking.columns]
+    shown = ranking[columns].rename(columns=RANKING_HEADERS)
+    if "best smaller set" in shown:
+        shown["best smaller set"] = shown["best smaller set"].replace({"(none)": "–"})
+    return shown
+
+
 def _symbol_of(term: str, letters: dict[str, str]) -> str:
     from .rsm import _symbol
 
@@ -323,11 +344,13 @@ class ReportSections:
         ranking = self._csv("observable_ranking.csv")
         if ranking is not None and len(ranking[ranking["material"] == m]):
             sub = ranking[ranking["material"] == m]
-            cols = [c for c in ["rank", "observables", "information_gain_bits", "feasible_fraction_pct",
-                                "contraction_pct_vs_best_subset"] if c in sub.columns]
-            parts.append(self._md("**Which experiment next.** Every observable set ranked by information gain "
-                                  "(KL divergence from the uniform prior on Ω to the grid posterior, in bits).\n\n"
-                                  + markdown_table(sub[cols]) + ("\n\n" + info["advice"] if info.get("advice") else "")))
+            parts.append(self._md("**Which experiment next.** Every observable set ranked by the information it "
+                                  "adds: how far it narrows the parameters, in bits (1 bit = the plausible region "
+                                  "halves; the Kullback–Leibler divergence from the uniform prior on Ω to the "
+                                  "posterior). *Added to the best smaller set* is what the last observable brings "
+                                  "beyond the best set without it.\n\n"
+                                  + markdown_table(ranking_display(sub))
+                                  + ("\n\n" + info["advice"] if info.get("advice") else "")))
         parts.append(self._image(self.root / "figures" / f"posterior_{m}.png",
                                  f"Marginal posterior densities of the factors of {self._label(m)}, one curve per observable set"))
         if info.get("notes"):

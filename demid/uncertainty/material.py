@@ -54,9 +54,11 @@ class MaterialUncertainty:
     posteriors: dict
     notes: list[str]
     factor_labels: dict[str, str] = field(default_factory=dict)
+    scenario_labels: dict[str, str] = field(default_factory=dict)
 
     def sweep_figure(self, title: str):
-        return tolerance_sweep_figure(self.sweep, title, factor_labels=self.factor_labels)
+        return tolerance_sweep_figure(self.sweep, title, factor_labels=self.factor_labels,
+                                      scenario_labels=self.scenario_labels)
 
     def posterior_figure(self, title: str):
         return posterior_figure(self.posteriors, title, factor_labels=self.factor_labels)
@@ -129,4 +131,5 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
         information_gain=information_gain_frame(posteriors) if posteriors else
         pd.DataFrame(columns=INFORMATION_GAIN_COLUMNS),
         ranking=ranking, advice=next_measurement_advice(ranking, labels) if len(ranking) else "",
-        posteriors=posteriors, notes=notes, factor_labels=factor_labels)
+        posteriors=posteriors, notes=notes, factor_labels=factor_labels,
+        scenario_labels={sc.name: sc.label for sc in spec.scenarios if sc.label != sc.name})
