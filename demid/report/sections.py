@@ -57,6 +57,29 @@ def _symbol_of(term: str, letters: dict[str, str]) -> str:
     return "–" if term == "Intercept" else _symbol(term, letters).replace(":", "·")
 
 
+def typeset_labels(text: str, labels: list[str]) -> str:
+    """Configured labels written with ``_`` and ``^`` (``μ_r,Po``, ``J m^-2``) shown with HTML sub- and
+    superscripts in the report's prose and tables; code spans and other text are left alone."""
+    import html
+    import re
+
+    pretty = {}
+    for label in labels:
+        if "_" not in label and "^" not in label or "$" in label:
+            continue
+        base, _, sub = label.partition("_")
+        shown = html.escape(base) + (f"<sub>{html.escape(sub.replace('_', ','))}</sub>" if sub else "")
+        pretty[label] = re.sub(r"\^\{?(-?[0-9.]+)\}?", r"<sup>\1</sup>", shown)
+    if not pretty:
+        return text
+    pattern = re.compile(r"(?<!\w)(?:" + "|".join(re.escape(k) for k in pretty) + r")(?!\w)")
+    # Odd-numbered pieces of a split on backticks are code spans: keep them verbatim.
+    pieces = text.split("`")
+    for k in range(0, len(pieces), 2):
+        pieces[k] = pattern.sub(lambda m: pretty[m.group(0)], pieces[k])
+    return "`".join(pieces)
+
+
 class ReportSections:
     """Builds the report's displayable parts from the results folder; optional parts are skipped."""
 
@@ -69,7 +92,17 @@ class ReportSections:
     def _md(self, text: str):
         from IPython.display import Markdown
 
-        return Markdown(text)
+        return Markdown(typeset_labels(text, self._plain_labels))
+
+    @property
+    def _plain_labels(self) -> list[str]:
+        """Every configured factor/response label and unit, longest first (so d_10 wins over d_1)."""
+        found = set()
+        for material in self.config.get("materials", {}).values():
+            for group in ("factors", "responses"):
+                for item in (material.get(group) or {}).values():
+                    found.update(t for t in (item.get("label"), item.get("unit")) if t)
+        return sorted(found, key=len, reverse=True)
 
     def _image(self, path: Path, alt: str = ""):
         """The PNG inline at the page's full width, with alt text and a link to its SVG twin."""
