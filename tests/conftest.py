@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import shutil
+
 import pytest
 
 from .helpers import make_ccd_table
@@ -39,3 +41,26 @@ def study_dir(tmp_path):
         encoding="utf-8",
     )
     return tmp_path
+
+
+@pytest.fixture(scope="session")
+def demo_run(tmp_path_factory):
+    """The demo study run once per test session exactly as a user runs it (configured grids), in a
+    temporary folder.  Read it, never edit it: tests that change inputs work on :func:`demo_copy`."""
+    from .workflow_helpers import REPO, run_snakemake
+
+    root = tmp_path_factory.mktemp("demo_run")
+    shutil.copytree(REPO / "data", root / "data")
+    shutil.copy(REPO / "config.yaml", root / "config.yaml")
+    proc = run_snakemake(root, root / "config.yaml", timeout=1200)
+    assert proc.returncode == 0, proc.stderr[-4000:]
+    return root
+
+
+@pytest.fixture(scope="module")
+def demo_copy(demo_run, tmp_path_factory):
+    """A private copy of the finished demo run (inputs, results and Snakemake's records, with their
+    modification times), for tests that edit inputs and ask what would rerun."""
+    root = tmp_path_factory.mktemp("demo_copy") / "study"
+    shutil.copytree(demo_run, root, symlinks=True)
+    return root
