@@ -136,7 +136,8 @@ class ReportSections:
             crit = criticism_lines(info, spec)
             if crit:
                 lines += ["", "**What the models get wrong:**", ""] + [f"- {c}" for c in crit]
-            steps = next_step(ranking[ranking["material"] == m] if ranking is not None else None, verdicts, spec)
+            steps = next_step(ranking[ranking["material"] == m] if ranking is not None else None, verdicts, spec,
+                              level2)
             if steps:
                 lines += ["", "**Next step:**", ""] + [f"- {s}" for s in steps]
             parts.append(self._md("\n".join(lines)))
@@ -263,6 +264,9 @@ class ReportSections:
                 lines += [f"- `{response}`: " + " ".join(res["messages"])]
             else:
                 lines += [f"- `{response}`: nothing found — the quadratic is adequate for these runs."]
+        run_order = info.get("run_order") or {}
+        if run_order.get("drift_tested") is False:
+            lines += [f"- Run order: {run_order['message']}"]
         findings = self._csv("criticism.csv")
         if findings is not None and "cause" in findings.columns:
             findings = findings[findings["cause"] != "none"]
@@ -324,9 +328,14 @@ class ReportSections:
         if ranking is not None and len(ranking[ranking["material"] == m]):
             sub = ranking[ranking["material"] == m]
             cols = [c for c in ["rank", "observables", "information_gain_bits", "feasible_fraction_pct",
-                                "contraction_pct_vs_best_subset"] if c in sub.columns]
+                                "contraction_pct_vs_best_subset", "targets_reachable"] if c in sub.columns]
+            out_of_reach = ("targets_reachable" in sub.columns
+                            and not sub["targets_reachable"].astype(str).str.lower().eq("true").all())
             parts.append(self._md("**Which experiment next.** Every observable set ranked by information gain "
-                                  "(KL divergence from the uniform prior on Ω to the grid posterior, in bits).\n\n"
+                                  "(KL divergence from the uniform prior on Ω to the grid posterior, in bits)"
+                                  + ("; sets with a target out of reach (targets_reachable false) come last, "
+                                     "without a gain: their posterior measures a discrepancy between simulation "
+                                     "and experiment, not information" if out_of_reach else "") + ".\n\n"
                                   + markdown_table(sub[cols]) + ("\n\n" + info["advice"] if info.get("advice") else "")))
         parts.append(self._image(self.root / "figures" / f"posterior_{m}.png",
                                  f"Marginal posterior densities of the factors of {self._label(m)}, one curve per observable set"))
