@@ -76,6 +76,7 @@ def run(reps: dict[int, int], seed0: int = 0) -> pd.DataFrame:
                     counts[key] += v
             rows.append({"design": f"{k}-factor CCD ({len(table)} runs)", "kind": kind, "size": size,
                          "order": order, "reps": n_reps, **{key: v / n_reps for key, v in counts.items()}})
+            print(rows[-1], flush=True)  # progress: a long benchmark keeps what it has
     return pd.DataFrame(rows)
 
 
