@@ -45,6 +45,6 @@ def evaluate_scenarios(surrogates: dict[str, Surrogate], material, n: int | None
         frames.append(frame)
         sets[scen.name] = result
     columns = ["scenario", "observables", "tolerance", "feasible_fraction_pct", "factor", "lower", "upper",
-               "width", "node_fraction_pct", "n_admissible_nodes", "best_max_rel_error", "fraction_error_pct"]
+               "width", "node_fraction_pct", "n_admissible_nodes", "best_max_rel_error", "fraction_error_pct", "at_bound"]
     table = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=columns)
     return table[columns], sets

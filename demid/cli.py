@@ -104,7 +104,7 @@ def cmd_criticize(args) -> int:
     table = _load_table(args.data, factors, [args.response])
     _require_estimable(table, factors, args.response, _alpha(table, factors, args.alpha, args.design), args.data)
     alpha = args.alpha if args.alpha is not None or args.design == "ccd" else 1.0  # None: criticize infers it
-    result = criticize(table, factors, args.response, alpha=alpha)
+    result = criticize(table, factors, args.response, alpha=alpha, run_order=args.run_order)
     write_json(result.to_json(), args.out)
     return 0
 
@@ -196,6 +196,13 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("criticize", help="what the quadratic surrogate gets wrong, why, and the gain of a fix")
     _table_arguments(p, "--response", "the response column to criticise")
+    from .config import material_property
+
+    run_order = material_property("run_order")
+    p.add_argument("--run-order", choices=run_order["enum"], default=run_order["default"],
+                   help="what the run column records: the order the runs were performed in (drift is tested "
+                        "unless the column follows the response or the design's standard order) or unknown "
+                        "(drift is not tested); default %(default)s")
     p.set_defaults(func=cmd_criticize)
 
     p = sub.add_parser("check-transcription", help="hold a table against its published statistics")

@@ -20,6 +20,16 @@ def load_schema(path: Path | str = SCHEMA_PATH) -> dict:
         return yaml.safe_load(fh)
 
 
+def material_property(key: str) -> dict:
+    """The schema of a ``materials`` entry key (its enum, default, description)."""
+    return copy.deepcopy(load_schema()["definitions"]["material"]["properties"][key])
+
+
+def material_default(key: str):
+    """The schema's default of a ``materials`` entry key (for specs built from bare, unvalidated entries)."""
+    return material_property(key)["default"]
+
+
 def _key_path(parts) -> str:
     return ".".join(str(p) for p in parts) or "(top level)"
 

@@ -210,6 +210,16 @@ class MaterialSpec:
             return FALLBACK_TOLERANCE
         return min(self.scenarios, key=lambda sc: (-len(sc.observables), sc.tolerance)).tolerance
 
+    @property
+    def run_order(self) -> str:
+        """Declared order of the ``run`` column: ``performed`` (drift is tested where the order can be
+        believed) or ``unknown`` (never tested)."""
+        if "run_order" in self._material:
+            return self._material["run_order"]
+        from .config import material_default
+
+        return material_default("run_order")
+
     @cached_property
     def confirmed_values(self) -> tuple[tuple[int, str], ...]:
         """(run, response column) cells confirmed correct although they look like a typo, in config order."""

@@ -60,6 +60,20 @@ def test_unreachable_material_and_braces_still_give_every_output(study_dir):
             assert (results / "figures" / f"{figure}_{material}.png").is_file()
     identifiability = pd.read_csv(results / "tables" / "identifiability.csv")
     assert (identifiability.loc[identifiability["material"] == "n", "feasible_fraction_pct"] == 0).all()
+    assert set(identifiability["at_bound"]) <= {"none", "lower", "upper", "both"}
+    # issue 11: a set with the out-of-reach y2 target is a discrepancy, not information
+    ranking = pd.read_csv(results / "tables" / "observable_ranking.csv")
+    for material, rows in ranking.groupby("material"):
+        reachable = ~rows["observables"].str.contains("y2") if material == "n" else rows["observables"].notna()
+        assert list(rows["targets_reachable"]) == list(reachable), material
+        assert rows.loc[~reachable, "information_gain_bits"].isna().all()
+        assert rows.loc[reachable, "information_gain_bits"].notna().all()
+        assert rows.loc[~reachable, "rank"].min() > rows.loc[reachable, "rank"].max()
+    gains = pd.read_csv(results / "tables" / "information_gain.csv")
+    assert gains.loc[(gains["material"] == "n") & gains["observables"].str.contains("y2"),
+                     "information_gain_bits"].isna().all()
+    report = (results / "report" / "report.html").read_text(encoding="utf-8")
+    assert "a discrepancy between simulation and experiment" in report
 
 
 def _one_line_stop(study_dir, config):

@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from demid.design import quadratic_terms
 from demid.io import save_figure
-from demid.surrogate import fit_response
+from demid.sampling.domain import Domain
+from demid.surrogate import Surrogate, fit_response
 from demid.uncertainty import analyse_material
+from demid.uncertainty.ranking import reachable_targets
 
 from .helpers import make_ccd_table
 
@@ -34,3 +37,56 @@ def test_every_target_out_of_reach_still_draws_sweep_and_posterior(tmp_path):
     save_figure(result.posterior_figure("unreachable"), tmp_path / "posterior.png")
     assert (tmp_path / "sweep.png").stat().st_size > 0 and (tmp_path / "posterior.png").stat().st_size > 0
     assert np.isfinite(result.ranking.select_dtypes("number").to_numpy(dtype=float)).any()
+    # y1's target (ten times its largest run) is out of reach: no set with it carries information
+    with_y1 = result.ranking["observables"].str.contains("y1")
+    assert not result.ranking.loc[with_y1, "targets_reachable"].any()
+    assert result.ranking.loc[with_y1, "information_gain_bits"].isna().all()
+
+
+def _linear(name: str, j: int) -> Surrogate:
+    """y = 10 + 10 x_j on [0, 1]^2: reaches exactly [10, 20]."""
+    coef = np.zeros(6)
+    coef[0], coef[1 + j] = 10.0, 10.0
+    return Surrogate(name, ["x", "w"], quadratic_terms(2), coef, np.zeros((6, 6)), 0.0, 7)
+
+
+def _linear_material(y1_target: float) -> tuple[dict, dict]:
+    surrogates = {"y1": _linear("y1", 0), "y2": _linear("y2", 1)}
+    cfg = {"data": "t.csv", "design": {"type": "ccd", "alpha": 1.0, "center_runs": 1},
+           "factors": {"x": {"lower": 0.0, "upper": 1.0}, "w": {"lower": 0.0, "upper": 1.0}},
+           "responses": {"y1": {"target": y1_target}, "y2": {"target": 15.0}},
+           "scenarios": {"both": {"observables": ["y1", "y2"], "tolerance": 0.02}}}
+    return surrogates, cfg
+
+
+def test_reachability_is_the_closest_approach_within_tolerance():
+    surrogates, _ = _linear_material(21.0)
+    domain = Domain(("x", "w"), (0.0, 0.0), (1.0, 1.0))
+    # closest approaches: 21 -> |20 - 21| / 21 = 4.8 % > 2 %; 20.3 -> 1.5 % <= 2 % (a set 1 % of the range thin)
+    for target, reachable in ((21.0, False), (20.3, True), (20.4, True), (20.5, False)):
+        found = reachable_targets(surrogates, domain, ["y1", "y2"], {"y1": target, "y2": 15.0}, 0.02,
+                                  {"y1": 0.0, "y2": 0.06})  # a sample that missed the y1 set entirely
+        assert found == {"y1": reachable, "y2": True}, target
+
+
+def test_sets_with_an_unreachable_target_rank_last_without_a_gain():
+    surrogates, cfg = _linear_material(21.0)
+    result = analyse_material(surrogates, cfg, tolerances=[0.02, 0.1])
+    ranking = result.ranking.set_index("observables")
+    assert ranking.loc["y2", "targets_reachable"] and ranking.loc["y2", "rank"] == 1
+    for name in ("y1", "y1+y2"):
+        assert not ranking.loc[name, "targets_reachable"]
+        assert np.isnan(ranking.loc[name, "information_gain_bits"])
+        assert np.isnan(ranking.loc[name, "gain_vs_best_subset_bits"])
+        assert ranking.loc[name, "rank"] > 1
+    assert list(result.ranking.columns[-1:]) == ["targets_reachable"]
+    gains = result.information_gain
+    assert gains.loc[gains["observables"].str.contains("y1"), "information_gain_bits"].isna().all()
+    assert gains.loc[gains["observables"] == "y2", "information_gain_bits"].notna().all()
+    assert "discrepancy between simulation and experiment" in result.advice
+    assert "y1" not in result.advice.split("\n", 1)[1]  # the advice proper leaves the unreachable target out
+    assert result.unreachable == ("y1", "y1+y2")
+    reachable, _ = _linear_material(19.0)
+    ranked = analyse_material(reachable, _linear_material(19.0)[1], tolerances=[0.02]).ranking
+    assert ranked["targets_reachable"].all() and ranked["information_gain_bits"].notna().all()
+    assert "discrepancy" not in analyse_material(reachable, _linear_material(19.0)[1], tolerances=[0.02]).advice

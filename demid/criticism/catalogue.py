@@ -176,8 +176,8 @@ class _Round:
             h.null_logp = _f_logp(_added_variable_stats(e_null, c.direction, df - 1), df - 1)
             self.hypotheses.append(h)
 
-        # --- drift
-        if not spec.drift:
+        # --- drift (only where the run order can be believed: criticism.run_order)
+        if not spec.drift and data.drift_tested:
             col = m.run_column(m.keep) * m.sw
             r = _residualize(q, col[:, None])[:, 0]
             if np.linalg.norm(r) > 1e-7 * max(np.linalg.norm(col), 1e-300):

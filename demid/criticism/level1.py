@@ -21,6 +21,7 @@ from .catalogue import _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _
 from .messages import _CAUSE_WORDS, _message
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
                      infer_axial_distance)
+from .run_order import RunOrder, assess_run_order
 
 if TYPE_CHECKING:
     from ..surrogate import SurrogateFit
@@ -77,10 +78,11 @@ class CriticismResult:
     residuals: pd.DataFrame = field(repr=False, default=None)
     _extended_model: _Model = field(repr=False, default=None)
     _baseline_model: _Model = field(repr=False, default=None)
+    run_order: RunOrder | None = None
 
     def to_json(self) -> dict:
         """JSON-ready dict: response, baseline, findings, extended, gain (+ alias sets, catalogue, summary)."""
-        return {
+        out = {
             "response": self.response,
             "baseline": self.baseline,
             "findings": [f.to_json() for f in self.findings],
@@ -92,6 +94,9 @@ class CriticismResult:
             "catalogue": self.catalogue,
             "runs": self._runs_json(),
         }
+        if self.run_order is not None:
+            out["run_order"] = self.run_order.to_json()
+        return out
 
     def _runs_json(self) -> list[dict]:
         if self.residuals is None:
@@ -191,15 +196,21 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
 
 def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: float | None = None,
               family_alpha: float = 0.05, log_factors: tuple[str, ...] = (), max_findings: int = 3,
-              n_null: int = 1999, seed: int = 0) -> CriticismResult:
+              n_null: int = 1999, seed: int = 0, run_order: str | RunOrder = "performed") -> CriticismResult:
     """Level-1 model criticism of the quadratic surrogate of one response.
 
     ``alpha`` is the CCD axial distance used for coding (None: inferred from the
     levels).  Runs with a missing response are dropped.  ``n_null`` Monte Carlo
     draws of the joint null (seeded with ``seed``: results are reproducible) give
-    the family-adjusted p-values.  See the package docstring (demid.criticism) for the catalogue.
+    the family-adjusted p-values.  ``run_order`` is the declared order of the ``run`` column
+    (``performed`` or ``unknown``), or the material's :class:`~demid.criticism.run_order.RunOrder`
+    already assessed: drift is tested only where it can be believed.  See the package docstring
+    (demid.criticism) for the catalogue.
     """
     data, fit = _prepare(table, list(factors), response, alpha, tuple(log_factors))
+    if not isinstance(run_order, RunOrder):
+        run_order = assess_run_order(data.runs, data.coded, {response: data.y}, run_order)
+    data = replace(data, drift_tested=run_order.drift_tested)
     rng = np.random.default_rng(seed)
     base_model = _Model(data, _Spec())
     model = base_model
@@ -224,10 +235,12 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
 
     baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
     summary = _summary(data, findings, catalogue, family_alpha, gain)
+    if not run_order.drift_tested:
+        summary += " " + run_order.message
     return CriticismResult(response=response, factors=list(factors), baseline=baseline, findings=findings,
                            extended=extended, gain=gain, alias_sets=alias_sets, catalogue=catalogue,
                            summary=summary, family_alpha=family_alpha, residuals=_residual_frame(fit),
-                           _extended_model=model, _baseline_model=base_model)
+                           _extended_model=model, _baseline_model=base_model, run_order=run_order)
 
 
 def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tuple:

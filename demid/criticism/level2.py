@@ -8,12 +8,13 @@ the errors there and at the reference point, the bottleneck observable, and bias
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
 from scipy import optimize
 
+from .edges import extrapolation_warnings, touching, widen_advice
 from .messages import _level2_message
 from .models import _num
 
@@ -49,6 +50,10 @@ class Level2Result:
     shared_bias: dict
     extensions: list[dict]
     message: str
+    best_at_bound: dict[str, str] = field(default_factory=dict)  # factor -> none/lower/upper/both
+    set_at_bound: dict[str, str] | None = None  # of the strict set, when it was given and is not empty
+    widen: dict[str, list[str]] = field(default_factory=dict)  # factor -> bounds to move outwards
+    extrapolation: list[str] = field(default_factory=list)
 
     @property
     def reference_max_error(self) -> float | None:
@@ -89,6 +94,8 @@ class Level2Result:
             "implied_bias": clean(self.implied_bias), "bias_candidates": list(self.bias_candidates),
             "biased_observable": self.biased_observable, "shared_bias": self.shared_bias,
             "extensions": self.extensions, "message": self.message,
+            "best_point_at_bound": dict(self.best_at_bound), "set_at_bound": self.set_at_bound,
+            "widen": {f: list(v) for f, v in self.widen.items()}, "extrapolation": list(self.extrapolation),
         }
 
 
@@ -165,7 +172,7 @@ def _minimax(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, 
 
 
 def calibration_check(surrogates: dict, domain, targets: dict[str, float], tolerance: float, n: int,
-                      reference_point: dict | None = None, strict_set=None) -> Level2Result:
+                      reference_point: dict | None = None, strict_set=None, runs=None) -> Level2Result:
     """Level-2 criticism: can any point of the domain meet every target, and if not, why not?
 
     ``surrogates`` maps observable -> object with ``predict(points_actual)``;
@@ -175,7 +182,11 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     bottleneck), a shared relative bias on all, a bias on each (saturated).
     ``strict_set`` (the strict set of these observables at ``tolerance``, from
     :func:`~demid.sampling.evaluate.evaluate_set`) decides feasibility when it is exact, so that
-    level 2 and Table 3 never disagree on whether the set is empty.
+    level 2 and Table 3 never disagree on whether the set is empty, and its ``at_bound`` says whether
+    the set reaches a search bound.  ``runs`` (the design runs' factor values, actual units, in
+    ``domain`` order) locate search bounds and reference point relative to the simulated region.
+    The message says "widen the range of X" when the best point or the set sits on a bound of X,
+    and warns of extrapolation.
     """
     observables = [o for o in targets if o in surrogates]
     if not observables:
@@ -240,7 +251,15 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
         reference_values=ref_values, reference_errors=ref_errors, bottleneck=bottleneck, without=without,
         implied_bias=implied, bias_candidates=candidates, biased_observable=biased, shared_bias=shared,
         extensions=extensions, message="")
-    result.message = _level2_message(result)
+    result.best_at_bound = dict(zip(factors, domain.at_bound(best_x, best_x)))
+    if feasible and getattr(strict_set, "at_bound", ()):
+        result.set_at_bound = dict(zip(factors, strict_set.at_bound))
+    best_touch, set_touch = touching(result.best_at_bound), touching(result.set_at_bound or {})
+    result.widen = {f: sorted(set(best_touch.get(f, ())) | set(set_touch.get(f, ())), key=("lower", "upper").index)
+                    for f in factors if f in best_touch or f in set_touch}
+    result.extrapolation = extrapolation_warnings(domain, runs, reference_point)
+    result.message = " ".join([_level2_message(result), *widen_advice(domain, best_touch, set_touch),
+                               *result.extrapolation])
     return result
 
 

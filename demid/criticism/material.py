@@ -17,6 +17,7 @@ from ..spec import as_spec
 from ..surrogate import fit_response
 from .level1 import criticize
 from .level2 import calibration_check
+from .run_order import assess_run_order
 
 if TYPE_CHECKING:
     from ..spec import MaterialSpec
@@ -118,6 +119,17 @@ def reference_point_position(surrogates: dict, material, n: int,
     return rows
 
 
+def material_run_order(table: pd.DataFrame, spec: MaterialSpec, coding):
+    """The material's run order, assessed once on every run and response (criticism.run_order)."""
+    from ..design import model_units
+
+    coded = coding.to_coded(model_units(table[spec.factor_names].to_numpy(dtype=float), spec.factor_names,
+                                        spec.log_factors))
+    runs = table["run"].to_numpy() if "run" in table.columns else np.arange(1, len(table) + 1)
+    responses = {r: table[r].to_numpy(dtype=float) for r in spec.response_names if r in table.columns}
+    return assess_run_order(runs, coded, responses, spec.run_order)
+
+
 def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int | None = None,
                        title: str | None = None) -> MaterialCriticism:
     """Level 1 for every response (with the identifiability effect of any extension) and level 2.
@@ -132,6 +144,7 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
     title = spec.label if title is None else title
     factors, log_factors, alpha = spec.factor_names, spec.log_factors, spec.axial_alpha
     coding = infer_coding(table, factors, spec.design, spec.data, log_factors)
+    run_order = material_run_order(table, spec, coding)
     # Identifiability before/after is evaluated on a coarser grid than the main one: it is a
     # comparison of two surrogates, and 3-factor grids would otherwise dominate the run time.
     n_effect = _effect_points(n, len(factors))
@@ -139,7 +152,7 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
     scenario_sets = _ScenarioSets(surrogates, spec, n_effect)
     response_json, frames, results, fits = {}, [], [], []
     for response in spec.response_names:
-        result = criticize(table, factors, response, alpha=alpha, log_factors=log_factors)
+        result = criticize(table, factors, response, alpha=alpha, log_factors=log_factors, run_order=run_order)
         payload = result.to_json()
         if result.findings:
             payload["identifiability"] = _identifiability_effect(surrogates, result.extended_surrogate(), response,
@@ -165,14 +178,17 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
         if with_targets and uses_exact(surrogates, with_targets, domain):
             strict = (scenario_sets(same[0]) if same else
                       evaluate_set(surrogates, domain, with_targets, targets, spec.reference_tolerance, n_level2))
+        simulated = table[[r for r in spec.response_names if r in table.columns]].notna().any(axis=1)
         level2 = calibration_check({r: surrogates[r] for r in targets}, domain, targets,
-                                   spec.reference_tolerance, n_level2, spec.reference_point, strict_set=strict)
+                                   spec.reference_tolerance, n_level2, spec.reference_point, strict_set=strict,
+                                   runs=table.loc[simulated, factors].to_numpy(dtype=float))
     calibration = level2.to_frame() if level2 is not None else pd.DataFrame()
     summary = {
         "level1": {r: {"findings": len(p["findings"]), "messages": [f["message"] for f in p["findings"]]}
                    for r, p in response_json.items()},
         "level2": level2.to_json() if level2 is not None else None,
         "reference_point": reference_point_position(surrogates, spec, n_effect, scenario_sets),
+        "run_order": run_order.to_json(),
     }
     return MaterialCriticism(response_json, findings, calibration, summary, residual_figure(fits, results, title,
                                                                                    units={r.name: r for r in spec.responses}))

@@ -111,6 +111,7 @@ class _Data:
     alpha: float
     log_factors: tuple[str, ...]
     base_terms: list[Term]
+    drift_tested: bool = True  # False when the run column is not the performed order (criticism.run_order)
 
     @property
     def n(self) -> int:

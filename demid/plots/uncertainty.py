@@ -67,9 +67,11 @@ def tolerance_sweep_figure(frame: pd.DataFrame, title: str, *, factor_labels: di
     return fig
 
 
-def posterior_figure(posteriors: dict, title: str, *, factor_labels: dict[str, str] | None = None):
+def posterior_figure(posteriors: dict, title: str, *, factor_labels: dict[str, str] | None = None,
+                     unreachable=()):
     """Marginal posterior densities per factor, one curve per observable set; the 95 % credible
-    intervals as bars below zero, in the same order and colours."""
+    intervals as bars below zero, in the same order and colours.  Sets named in ``unreachable``
+    (``d5+d10``) have a target out of reach: labelled so, without an information gain."""
     from matplotlib.figure import Figure
 
     factor_labels = factor_labels or {}
@@ -79,7 +81,9 @@ def posterior_figure(posteriors: dict, title: str, *, factor_labels: dict[str, s
     axes = fig.subplots(1, len(factors), squeeze=False)[0]
     intervals = [[] for _ in factors]
     for k, post in enumerate(posts):
-        label = f"{join_observables(post.observables)} ({post.information_gain_bits:.2f} bits)"
+        name = join_observables(post.observables)
+        label = (f"{name} (target out of reach: misfit)" if name in unreachable
+                 else f"{name} ({post.information_gain_bits:.2f} bits)")
         for i, ax in enumerate(axes):
             x = post.axes_actual[i]
             color = PALETTE[k % len(PALETTE)]

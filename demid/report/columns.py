@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import pandas as pd
 
+from ..sampling.domain import BOUND_TOUCH
+
 FRACTION = "fraction (0.02 = 2 %)"
 PCT = "% of Ω"
 FACTOR_UNIT = "unit of the factor (config: factors.<name>.unit)"
@@ -42,7 +44,11 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "lof_f": ("–", "Lack-of-fit F statistic (lack of fit vs pure error of replicated runs)."),
         "lof_p": ("–", "p-value of the lack-of-fit F test."),
     },
-    "identifiability": {},
+    "identifiability": {
+        "at_bound": ("–", f"Which ends of the factor's search range the admissible set reaches (within "
+                          f"{100 * BOUND_TOUCH:g} % of the range): none, lower, upper or both. A set that reaches "
+                          f"a bound may extend beyond it: widen the range there. none when the set is empty."),
+    },
     "transcription_check": {
         "statistic": ("–", "Published fit statistic checked (r2, rmse, …)."),
         "published": ("as the statistic", "Value printed in the source."),
@@ -88,6 +94,10 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "best_subset": ("–", "Most informative subset with one observable fewer ('(none)' for single observables)."),
         "gain_vs_best_subset_bits": ("bit", "Information added by the extra observable over best_subset."),
         "rank_by_fraction": ("–", "Rank by smallest feasible fraction instead."),
+        "targets_reachable": ("–", "False when the surrogate of some observable of the set cannot meet its target "
+                                   "anywhere in Ω within the tolerance: the set then measures a discrepancy between "
+                                   "simulation and experiment, not information (information_gain_bits empty), and "
+                                   "ranks after every set with reachable targets."),
     },
     "criticism": {
         "cause": ("–", "Named defect of the quadratic surrogate (missing_term, response_transform, outlier, drift, "
@@ -153,7 +163,7 @@ _PARETO = {
 TABLE_COLUMNS = {
     "surrogate_fit": ["material", "response", "n_runs", "r2", "adj_r2", "rmse", "resid_std", "q2", "lof_f", "lof_p"],
     "identifiability": ["material", "scenario", "observables", "tolerance", "feasible_fraction_pct", "factor",
-                        "lower", "upper", "width"],
+                        "lower", "upper", "width", "at_bound"],
     "transcription_check": ["material", "response", "statistic", "published", "reproduced", "agrees", "printed",
                             "printed_decimals"],
     "robust_identifiability": ["material", "scenario", "observables", "tolerance", "z", "factor",
@@ -167,7 +177,8 @@ TABLE_COLUMNS = {
                          "information_gain_error_bits", "grid_points", "sigma_basis"],
     "observable_ranking": ["material", "rank", "observables", "information_gain_bits", "feasible_fraction_pct",
                            "contraction_pct_vs_best_subset", "n_observables", "best_subset",
-                           "gain_vs_best_subset_bits", "information_gain_error_bits", "tolerance", "rank_by_fraction"],
+                           "gain_vs_best_subset_bits", "information_gain_error_bits", "tolerance", "rank_by_fraction",
+                           "targets_reachable"],
     "criticism": ["material", "response", "cause", "detail", "aliases", "p_value", "loo_rmse_baseline",
                   "loo_rmse_extended", "delta_aicc", "message"],
     "calibration_residuals": ["material", "observable", "target", "at_best", "rel_error_best", "at_reference",

@@ -39,12 +39,15 @@ RANKING_HEADERS = {
     "best_subset": "best smaller set",
     "gain_vs_best_subset_bits": "added to the best smaller set [bit]",
     "feasible_fraction_pct": "admissible share of Ω [%]",
+    "targets_reachable": "targets reachable",
 }
 
 
 def ranking_display(ranking: pd.DataFrame) -> pd.DataFrame:
     """observable_ranking.csv rows for a reader: plain headers with units, '–' where there is no smaller set."""
     columns = [c for c in RANKING_HEADERS if c in ranking.columns]
+    if "targets_reachable" in columns and ranking["targets_reachable"].astype(str).str.lower().eq("true").all():
+        columns.remove("targets_reachable")  # a column of "True" only says something when one is False
     shown = ranking[columns].rename(columns=RANKING_HEADERS)
     if "best smaller set" in shown:
         shown["best smaller set"] = shown["best smaller set"].replace({"(none)": "–"})
@@ -190,7 +193,8 @@ class ReportSections:
             crit = criticism_lines(info, spec)
             if crit:
                 lines += ["", "**What the models get wrong:**", ""] + [f"- {c}" for c in crit]
-            steps = next_step(ranking[ranking["material"] == m] if ranking is not None else None, verdicts, spec)
+            steps = next_step(ranking[ranking["material"] == m] if ranking is not None else None, verdicts, spec,
+                              level2)
             if steps:
                 lines += ["", "**Next step:**", ""] + [f"- {s}" for s in steps]
             parts.append(self._md("\n".join(lines)))
@@ -317,6 +321,9 @@ class ReportSections:
                 lines += [f"- `{response}`: " + " ".join(res["messages"])]
             else:
                 lines += [f"- `{response}`: nothing found — the quadratic is adequate for these runs."]
+        run_order = info.get("run_order") or {}
+        if run_order.get("drift_tested") is False:
+            lines += [f"- Run order: {run_order['message']}"]
         findings = self._csv("criticism.csv")
         if findings is not None and "cause" in findings.columns:
             findings = findings[findings["cause"] != "none"]
@@ -377,11 +384,16 @@ class ReportSections:
         ranking = self._csv("observable_ranking.csv")
         if ranking is not None and len(ranking[ranking["material"] == m]):
             sub = ranking[ranking["material"] == m]
+            out_of_reach = ("targets_reachable" in sub.columns
+                            and not sub["targets_reachable"].astype(str).str.lower().eq("true").all())
             parts.append(self._md("**Which experiment next.** Every observable set ranked by the information it "
                                   "adds: how far it narrows the parameters, in bits (1 bit = the plausible region "
                                   "halves; the Kullback–Leibler divergence from the uniform prior on Ω to the "
                                   "posterior). *Added to the best smaller set* is what the last observable brings "
-                                  "beyond the best set without it.\n\n"
+                                  "beyond the best set without it"
+                                  + ("; sets with a target out of reach come last, without a gain: their "
+                                     "posterior measures a discrepancy between simulation and experiment, not "
+                                     "information" if out_of_reach else "") + ".\n\n"
                                   + markdown_table(ranking_display(sub))
                                   + ("\n\n" + info["advice"] if info.get("advice") else "")))
         parts.append(self._image(self.root / "figures" / f"posterior_{m}.png",

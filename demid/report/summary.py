@@ -12,12 +12,12 @@ import re
 import numpy as np
 import pandas as pd
 
+from ..sampling.domain import BOUND_TOUCH, Domain
+
 #: Width of the admissible interval, as a fraction of the search range, up to which a factor is *identified*.
 IDENTIFIED_MAX_WIDTH = 0.10
 #: Width from which a factor is *unresolved*: the data leave (almost) the whole search range open.
 UNRESOLVED_MIN_WIDTH = 0.90
-#: Distance to a search bound, as a fraction of the range, within which the set *touches* the bound.
-BOUND_TOUCH = 0.005
 
 VERDICT_TEXT = (
     f"**identified**: admissible interval at most {100 * IDENTIFIED_MAX_WIDTH:g} % of the search range wide and "
@@ -40,19 +40,25 @@ def unit_text(unit: str) -> str:
     return re.sub(r"\^\{?(-?[0-9.]+)\}?", lambda m: m.group(1).translate(_SUPERSCRIPT), unit)
 
 
-def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False) -> tuple[str, float]:
-    """Verdict and width (fraction of the search range) of one admissible interval."""
+def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False,
+                   at_bound: str | None = None) -> tuple[str, float]:
+    """Verdict and width (fraction of the search range) of one admissible interval.
+
+    ``at_bound`` is the interval's ``at_bound`` value from the identifiability table (which
+    ends of the search range the set reaches); without it, it is derived the same way
+    (:meth:`~demid.sampling.domain.Domain.at_bound`).
+    """
     if not (np.isfinite(lower) and np.isfinite(upper)):
         return "no admissible point", float("nan")
     f = np.log10 if log else (lambda v: v)
-    lo, hi, blo, bhi = f(lower), f(upper), f(bound_lower), f(bound_upper)
-    span = bhi - blo
-    width = (hi - lo) / span
+    width = (f(upper) - f(lower)) / (f(bound_upper) - f(bound_lower))
     if width >= UNRESOLVED_MIN_WIDTH:
         return "unresolved", width
-    cut = [side for side, gap in (("lower", lo - blo), ("upper", bhi - hi)) if gap <= BOUND_TOUCH * span]
-    if cut:
-        return f"cut by the search range ({' and '.join(cut)} bound)", width
+    if at_bound is None:
+        at_bound = Domain(("x",), (bound_lower,), (bound_upper,), (log,)).at_bound([lower], [upper])[0]
+    if at_bound != "none":
+        sides = "lower and upper" if at_bound == "both" else at_bound
+        return f"cut by the search range ({sides} bound)", width
     return ("identified" if width <= IDENTIFIED_MAX_WIDTH else "bounded"), width
 
 
@@ -61,7 +67,8 @@ def verdict_table(identifiability: pd.DataFrame, spec) -> pd.DataFrame:
     rows = []
     for _, row in identifiability.iterrows():
         factor = spec.factor(row["factor"])
-        verdict, width = factor_verdict(float(row["lower"]), float(row["upper"]), factor.lower, factor.upper, factor.log)
+        verdict, width = factor_verdict(float(row["lower"]), float(row["upper"]), factor.lower, factor.upper, factor.log,
+                                        row.get("at_bound"))
         label = next((sc.label for sc in spec.scenarios if sc.name == row["scenario"]), row["scenario"])
         rows.append({"scenario": label, "factor": factor.label, "unit": unit_text(factor.unit),
                      "admissible interval": "–" if verdict == "no admissible point"
@@ -81,6 +88,9 @@ def criticism_lines(info: dict, spec) -> list[str]:
             lines.append(f"Surrogate of {label}: " + " ".join(res["messages"]))
         else:
             lines.append(f"Surrogate of {label}: no defect found — the quadratic fits the simulation runs.")
+    run_order = info.get("run_order") or {}
+    if run_order.get("drift_tested") is False:
+        lines.append(f"Run order: {run_order['message']}")
     level2 = info.get("level2")
     if level2:
         tol = 100 * level2["tolerance"]
@@ -96,15 +106,36 @@ def criticism_lines(info: dict, spec) -> list[str]:
             lines.append(f"Reference point: largest error {100 * level2['reference_max_error']:.2f} % "
                          f"({'within' if level2['reference_max_error'] <= level2['tolerance'] else 'outside'} "
                          f"the {tol:g} % tolerance).")
+        on_bound = {f: v for f, v in (level2.get("best_point_at_bound") or {}).items() if v != "none"}
+        if on_bound:
+            lines.append("The best point lies on the search range's " + "; ".join(
+                f"{'lower and upper' if v == 'both' else v} bound of {spec.factor(f).label}" for f, v in on_bound.items())
+                + ": the best match may lie outside the searched range.")
+        lines += list(level2.get("extrapolation") or [])
     return lines
 
 
-def next_step(ranking: pd.DataFrame | None, verdicts: pd.DataFrame, spec) -> list[str]:
-    """Which observable to add (from the observable ranking) and which runs to simulate."""
+def next_step(ranking: pd.DataFrame | None, verdicts: pd.DataFrame, spec, level2: dict | None = None) -> list[str]:
+    """Which observable to add (from the observable ranking) and which runs to simulate.
+
+    "Widen the range of X" where an admissible set reaches a bound of X (the verdicts, from the
+    ``at_bound`` column) or the best point of level 2 lies on one (``level2``: the criticism JSON's
+    level-2 entry).
+    """
     steps = []
     used = max((sc.observables for sc in spec.scenarios), key=len, default=())
     if ranking is not None and len(ranking):
         used_name = "+".join(used)
+        if "targets_reachable" in ranking.columns:
+            reachable = ranking["targets_reachable"].astype(str).str.lower() == "true"
+            singles = ranking[(ranking["n_observables"] == 1) & ~reachable]["observables"].tolist()
+            if singles:
+                names = ", ".join(spec.response_labels.get(o, o) for o in singles)
+                steps.append(f"Check the target of {names} and the simulation of it: the surrogate cannot meet it "
+                             f"anywhere in the search range within the tolerance. That is a discrepancy between "
+                             f"simulation and experiment, not information; observable sets with it are ranked last "
+                             f"and get no information gain.")
+            ranking = ranking[reachable]
         grow = ranking[(ranking["best_subset"] == used_name) & (ranking["n_observables"] == len(used) + 1)]
         if len(grow):
             best = grow.sort_values("gain_vs_best_subset_bits", ascending=False).iloc[0]
@@ -115,9 +146,32 @@ def next_step(ranking: pd.DataFrame | None, verdicts: pd.DataFrame, spec) -> lis
         elif used:
             steps.append("Every observable with a target is already used; a narrower set needs a new kind of "
                          "measurement or a smaller tolerance (measurement uncertainty permitting).")
-    cut = verdicts[verdicts["verdict"].str.startswith("cut")]
-    for _, row in cut.drop_duplicates("factor").iterrows():
-        side = row["verdict"].split("(")[1].split(" bound")[0]
-        steps.append(f"Simulate runs beyond the {side} bound of {row['factor']}: the admissible set ends there "
-                     f"only because the design does.")
+    steps += widen_steps(verdicts, spec, level2)
+    return steps
+
+
+def widen_steps(verdicts: pd.DataFrame, spec, level2: dict | None = None) -> list[str]:
+    """One "widen the range" step per factor whose admissible set or best point sits on a search bound."""
+    sides: dict[str, set] = {}
+    why: dict[str, list[str]] = {}
+    label_to_name = {f.label: f.name for f in spec.factors}
+    cut = verdicts[verdicts["verdict"].str.startswith("cut")] if len(verdicts) else verdicts
+    for _, row in cut.iterrows():
+        name = label_to_name.get(row["factor"], row["factor"])
+        found = row["verdict"].split("(")[1].split(" bound")[0]
+        sides.setdefault(name, set()).update(found.split(" and "))
+        why.setdefault(name, []).append("the admissible set ends there only because the search range does")
+    for name, value in ((level2 or {}).get("best_point_at_bound") or {}).items():
+        if value != "none":
+            sides.setdefault(name, set()).update(["lower", "upper"] if value == "both" else [value])
+            why.setdefault(name, []).append("the best point lies on it")
+    steps = []
+    for f in spec.factors:
+        if f.name not in sides:
+            continue
+        ends = [s for s in ("lower", "upper") if s in sides[f.name]]
+        unit = f" {unit_text(f.unit)}" if f.unit != "-" else ""
+        where = " and ".join(f"{s} bound ({(f.lower if s == 'lower' else f.upper):.4g}{unit})" for s in ends)
+        steps.append(f"Widen the range of {f.label} beyond its {where} and simulate runs there: "
+                     f"{'; '.join(dict.fromkeys(why[f.name]))}.")
     return steps

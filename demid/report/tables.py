@@ -16,7 +16,7 @@ SURROGATE_FIT_COLUMNS = ["material", "response", "n_runs", "r2", "adj_r2", "rmse
 
 
 IDENTIFIABILITY_COLUMNS = ["material", "scenario", "observables", "tolerance", "feasible_fraction_pct", "factor",
-                           "lower", "upper", "width"]
+                           "lower", "upper", "width", "at_bound"]
 
 
 TRANSCRIPTION_COLUMNS = ["material", "response", "statistic", "published", "reproduced", "agrees", "printed",

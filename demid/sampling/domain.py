@@ -13,6 +13,12 @@ from ..design import model_units
 #: Up to this many factors Omega is evaluated on a full grid; beyond it on scrambled Sobol points.
 MAX_GRID_DIM = 3
 
+#: Distance to a search bound, as a fraction of the search range, within which a set or point *touches* it.
+BOUND_TOUCH = 0.005
+
+#: Values of the ``at_bound`` column: which ends of the search range a set reaches, per factor.
+AT_BOUND = ("none", "lower", "upper", "both")
+
 
 def uses_grid(dim: int) -> bool:
     """True when a ``dim``-factor domain is evaluated on a full grid, False for Sobol points.
@@ -42,6 +48,18 @@ class Domain:
     def search_bounds(self) -> tuple[np.ndarray, np.ndarray]:
         lo, hi = self.to_search(np.array([self.lower, self.upper]))
         return lo, hi
+
+    def at_bound(self, lower, upper) -> tuple[str, ...]:
+        """Per factor, which ends of the search range the span [lower, upper] (actual units) reaches:
+        ``none``, ``lower``, ``upper`` or ``both`` (within :data:`BOUND_TOUCH` of the range, in search
+        units); ``none`` for an empty span (NaN).  A point is the span [point, point]."""
+        lo, hi = self.search_bounds()
+        with np.errstate(invalid="ignore", divide="ignore"):
+            ends = self.to_search(np.array([lower, upper], dtype=float))
+        tol = BOUND_TOUCH * (hi - lo)
+        low = ends[0] <= lo + tol
+        high = ends[1] >= hi - tol
+        return tuple(AT_BOUND[int(a) + 2 * int(b)] for a, b in zip(low, high))
 
     def to_actual(self, u: np.ndarray) -> np.ndarray:
         u = np.array(u, dtype=float, copy=True, ndmin=2)

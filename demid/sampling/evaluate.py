@@ -91,8 +91,14 @@ def evaluate_set(surrogates: dict[str, Surrogate], domain: Domain, observables, 
     surrogates in up to 3 factors, else on the n-per-axis grid (up to 3 factors) or n scrambled
     Sobol points.  ``predictions`` are the surrogates' values at those evaluation points when
     the caller already has them; ``grid`` asks for the node mask too (figures) when the set is
-    exact.  ``reference`` (actual units) is passed to the exact set for its distance.
+    exact.  ``reference`` (actual units) is passed to the exact set for its distance.  ``at_bound``
+    of the result says, per factor, which ends of the search range the set's spans reach.
     """
+    aset = _evaluate_set(surrogates, domain, observables, targets, tolerance, n, predictions, grid, reference)
+    return replace(aset, at_bound=domain.at_bound(aset.lower, aset.upper))
+
+
+def _evaluate_set(surrogates, domain, observables, targets, tolerance, n, predictions, grid, reference):
     observables = tuple(observables)
     if not uses_exact(surrogates, observables, domain):
         if uses_grid(domain.dim):

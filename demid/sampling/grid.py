@@ -59,6 +59,7 @@ class AdmissibleSet:
     fraction_error: float = np.nan     # absolute error estimate of ``fraction`` (exact sets)
     method: str = ""
     exact: object = field(default=None, repr=False)  # the :class:`~demid.sampling.exact.ExactSet`, if exact
+    at_bound: tuple[str, ...] = ()  # per factor, the ends of the search range the spans reach (evaluate_set)
 
     @property
     def empty(self) -> bool:
@@ -69,7 +70,7 @@ class AdmissibleSet:
         return self.upper - self.lower
 
     def to_frame(self) -> pd.DataFrame:
-        return pd.DataFrame({
+        frame = pd.DataFrame({
             "observables": "+".join(self.observables),
             "tolerance": self.tolerance,
             "feasible_fraction_pct": 100.0 * self.fraction,
@@ -82,6 +83,9 @@ class AdmissibleSet:
             "best_max_rel_error": self.best_error,
             "fraction_error_pct": 100.0 * self.fraction_error,
         })
+        if self.at_bound:
+            frame["at_bound"] = list(self.at_bound)
+        return frame
 
 
 def _corner_views(arr: np.ndarray):

@@ -55,13 +55,15 @@ class MaterialUncertainty:
     notes: list[str]
     factor_labels: dict[str, str] = field(default_factory=dict)
     scenario_labels: dict[str, str] = field(default_factory=dict)
+    unreachable: tuple[str, ...] = ()  # observable sets (d5+d10) with a target out of reach
 
     def sweep_figure(self, title: str):
         return tolerance_sweep_figure(self.sweep, title, factor_labels=self.factor_labels,
                                       scenario_labels=self.scenario_labels)
 
     def posterior_figure(self, title: str):
-        return posterior_figure(self.posteriors, title, factor_labels=self.factor_labels)
+        return posterior_figure(self.posteriors, title, factor_labels=self.factor_labels,
+                                unreachable=self.unreachable)
 
 
 def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2.0,
@@ -109,6 +111,13 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
                                     sizes["posterior"], posteriors=posteriors, sobol_points=points,
                                     strict_sets=by_observables)
                if observables else pd.DataFrame(columns=RANKING_COLUMNS))
+    unreachable = (tuple(ranking.loc[~ranking["targets_reachable"].astype(bool), "observables"])
+                   if "targets_reachable" in ranking.columns else ())
+    information_gain = (information_gain_frame(posteriors) if posteriors else
+                        pd.DataFrame(columns=INFORMATION_GAIN_COLUMNS))
+    # one number: a set with a target out of reach has no information gain, in every table
+    information_gain.loc[information_gain["observables"].isin(unreachable),
+                         ["information_gain_bits", "information_gain_error_bits"]] = float("nan")
     grid_word = "grid points per axis" if uses_grid(domain.dim) else "scrambled Sobol points"
     notes = [
         f"Robust sets: z = {z:g}; " + "; ".join(f"{o}: {robust_basis[o]}" for o in observables) + ".",
@@ -122,14 +131,18 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
         notes.append("Strict sets (identifiability table, the strict columns, the sweep and the ranking): "
                      "exact for the fitted polynomials (roots along lines, span ends by bisection), one evaluation per scenario "
                      "and tolerance.")
+    if unreachable:
+        notes.append("Sets with a target out of reach (" + ", ".join(unreachable) + "): no point of the search range "
+                     "meets that target within the tolerance, so their posterior measures the misfit (a discrepancy "
+                     "between simulation and experiment), not information; no information gain is given and they "
+                     "rank last.")
     if not scenarios:
         notes.append(f"No scenarios configured: ranking and default sigma use tolerance {FALLBACK_TOLERANCE:g}.")
     empty_robust = pd.DataFrame(columns=ROBUST_COLUMNS)
     return MaterialUncertainty(
         robust=robust if robust is not None else empty_robust,
         sweep=sweep if sweep is not None else pd.DataFrame(columns=SWEEP_COLUMNS),
-        information_gain=information_gain_frame(posteriors) if posteriors else
-        pd.DataFrame(columns=INFORMATION_GAIN_COLUMNS),
+        information_gain=information_gain,
         ranking=ranking, advice=next_measurement_advice(ranking, labels) if len(ranking) else "",
-        posteriors=posteriors, notes=notes, factor_labels=factor_labels,
+        posteriors=posteriors, notes=notes, factor_labels=factor_labels, unreachable=unreachable,
         scenario_labels={sc.name: sc.label for sc in spec.scenarios if sc.label != sc.name})

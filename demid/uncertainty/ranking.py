@@ -11,6 +11,7 @@ import numpy as np
 import pandas as pd
 
 from ..sampling import uses_grid
+from ..sampling.evaluate import _closest_approach
 from ..sampling.grid import predict_grid
 from ..spec import join_observables
 from .posterior import NO_OBSERVABLE, subset_posteriors
@@ -36,8 +37,13 @@ def rank_observable_sets(surrogates: dict[str, Surrogate], domain: Domain, obser
     ``tolerance``), contraction_pct_vs_best_subset = 100 (1 - Phi(S) / min_{T < S} Phi(T))
     over proper subsets T (the empty set is Omega, Phi = 1) and best_subset (that T), then
     gain_vs_best_subset_bits = IG(S) - max_{T < S} IG(T), n_observables, rank_by_fraction,
-    information_gain_error_bits.  ``strict_sets`` (frozenset of observables -> strict set at
-    ``tolerance``) are reused instead of evaluating those subsets again.
+    information_gain_error_bits, targets_reachable.  ``strict_sets`` (frozenset of observables ->
+    strict set at ``tolerance``) are reused instead of evaluating those subsets again.
+
+    A set whose target some surrogate cannot reach anywhere in the domain within ``tolerance``
+    (``targets_reachable`` False, :func:`reachable_targets`) has no information gain (NaN): its
+    posterior piles up at the closest approach and measures the misfit, a discrepancy between
+    simulation and experiment.  Such sets rank after every set whose targets are reachable.
     """
     observables = tuple(observables_with_targets)
     subsets = [c for size in range(1, len(observables) + 1) for c in combinations(observables, size)]
@@ -54,6 +60,12 @@ def rank_observable_sets(surrogates: dict[str, Surrogate], domain: Domain, obser
                                 sobol_points=sobol_points, grid_predictions=grid,
                                 grid_set=given if given is not None and given.exact is not None else None).fraction
         gain[s] = posteriors[s].information_gain_bits
+    reachable = reachable_targets(surrogates, domain, observables, targets, tolerance,
+                                  {o: frac[(o,)] for o in observables})
+    reachable_set = {s: all(reachable[o] for o in s) for s in subsets}
+    for s in subsets:
+        if not reachable_set[s]:
+            gain[s] = np.nan
     rows = []
     for s in subsets:
         proper = [t for size in range(len(s)) for t in combinations(s, size)]
@@ -64,15 +76,35 @@ def rank_observable_sets(surrogates: dict[str, Surrogate], domain: Domain, obser
             "feasible_fraction_pct": 100.0 * frac[s], "contraction_pct_vs_best_subset": contraction,
             "n_observables": len(s), "best_subset": join_observables(best) or NO_OBSERVABLE,
             "gain_vs_best_subset_bits": gain[s] - max(gain[t] for t in proper),
-            "information_gain_error_bits": posteriors[s].information_gain_error_bits,
+            "information_gain_error_bits": (posteriors[s].information_gain_error_bits if np.isfinite(gain[s])
+                                            else np.nan),
             "tolerance": float(tolerance),
         })
     frame = pd.DataFrame(rows)
     frame["rank_by_fraction"] = frame["feasible_fraction_pct"].rank(method="min").astype(int)
-    frame = frame.sort_values(["information_gain_bits", "feasible_fraction_pct"],
-                              ascending=[False, True], kind="stable").reset_index(drop=True)
+    frame["targets_reachable"] = [reachable_set[s] for s in subsets]
+    frame = frame.sort_values(["targets_reachable", "information_gain_bits", "feasible_fraction_pct"],
+                              ascending=[False, False, True], kind="stable", na_position="last").reset_index(drop=True)
     frame.insert(0, "rank", np.arange(1, len(frame) + 1))
     return frame
+
+
+def reachable_targets(surrogates: dict[str, Surrogate], domain: Domain, observables, targets: dict[str, float],
+                      tolerance: float, fractions: dict[str, float]) -> dict[str, bool]:
+    """Per observable: can its surrogate meet its target within ``tolerance`` somewhere in the domain?
+
+    ``fractions`` are the observables' own strict feasible fractions; a positive one settles it,
+    otherwise the closest approach (min over the domain of the relative error) decides, so that
+    a set too thin for a grid or Sobol sample is not taken for an unreachable target.
+    """
+    out = {}
+    for o in observables:
+        if fractions[o] > 0:
+            out[o] = True
+            continue
+        closest, _ = _closest_approach(surrogates, domain, (o,), targets, None)
+        out[o] = bool(closest <= tolerance * (1 + 1e-9))
+    return out
 
 
 def _pct(value: float) -> str:
@@ -98,14 +130,25 @@ def next_measurement_advice(ranking: pd.DataFrame, labels: dict[str, str] | None
     sets[()] = (0.0, 100.0)
     by_members = {frozenset(k): k for k in sets}
     lines = []
+    unreachable = [o for o in order if (o,) in sets and not np.isfinite(sets[(o,)][0])]
+    if unreachable:
+        many = len(unreachable) > 1
+        lines.append(f"The target{'s' if many else ''} of {name(unreachable)} cannot be met anywhere in the search "
+                     f"range within the tolerance: a discrepancy between simulation and experiment (see level 2), "
+                     f"not information. Sets with {'them' if many else 'it'} get no information gain and rank last; "
+                     f"the advice below leaves {'them' if many else 'it'} out.")
     for size in range(len(order)):
         for start in combinations(order, size):
             base_gain, base_frac = sets[by_members[frozenset(start)]]
+            if not np.isfinite(base_gain):
+                continue
             options = []
             for o in order:
                 if o in start or frozenset(start) | {o} not in by_members:
                     continue
                 g, f = sets[by_members[frozenset(start) | {o}]]
+                if not np.isfinite(g):
+                    continue
                 options.append((g - base_gain, f, o, g))
             if not options:
                 continue

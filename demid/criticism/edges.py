@@ -1,0 +1,95 @@
+"""Where level 2 stands on the edge of what was searched or simulated.
+
+Two things make a calibration answer less than it seems: the best point or the admissible
+set sitting on a bound of the search range (the answer may lie beyond it: widen the range),
+and search bounds or a reference point outside the region the design runs cover (the
+surrogate's predictions there are extrapolated).  Touching a bound is
+:meth:`~demid.sampling.domain.Domain.at_bound`, the same test as the identifiability
+table's ``at_bound`` column.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+from scipy import optimize
+
+from .models import _g
+
+if TYPE_CHECKING:
+    from ..sampling.domain import Domain
+
+_SIDES = {"lower": ("lower",), "upper": ("upper",), "both": ("lower", "upper"), "none": ()}
+
+
+def touching(at_bound) -> dict[str, tuple[str, ...]]:
+    """{factor: sides} of an ``at_bound`` mapping (factor -> none/lower/upper/both), touching factors only."""
+    return {f: _SIDES[v] for f, v in at_bound.items() if _SIDES[v]}
+
+
+def widen_advice(domain: Domain, best: dict[str, tuple[str, ...]], aset: dict[str, tuple[str, ...]]) -> list[str]:
+    """"Widen the range of X" sentences: per factor whose best point or admissible set sits on a bound."""
+    out = []
+    for i, f in enumerate(domain.factors):
+        sides = sorted(set(best.get(f, ())) | set(aset.get(f, ())), key=("lower", "upper").index)
+        if not sides:
+            continue
+        what = []
+        if best.get(f):
+            what.append(f"the best point lies on its {' and '.join(best[f])} bound, so a better match may lie "
+                        f"outside the searched range")
+        if aset.get(f):
+            what.append(f"the admissible set reaches its {' and '.join(aset[f])} bound and may extend beyond it")
+        beyond = " and ".join(f"{'below' if s == 'lower' else 'above'} "
+                              f"{_g(domain.lower[i] if s == 'lower' else domain.upper[i])}" for s in sides)
+        out.append(f"Widen the range of {f}: {'; '.join(what)}. Simulate runs {beyond} and search there.")
+    return out
+
+
+def extrapolation_warnings(domain: Domain, runs: np.ndarray | None, reference_point: dict | None) -> list[str]:
+    """Search bounds beyond the runs' range of a factor, and a reference point outside the runs' region.
+
+    ``runs`` are the design runs in actual units (rows, factor columns in ``domain`` order).  The
+    region the runs cover is their range per factor and, for the reference point, their convex hull
+    (in search units: log10 for log factors).
+    """
+    if runs is None or not len(runs):
+        return []
+    lo, hi = domain.search_bounds()
+    span = np.where(hi > lo, hi - lo, 1.0)
+    z = (domain.to_search(np.asarray(runs, dtype=float)) - lo) / span
+    z_lo, z_hi = z.min(axis=0), z.max(axis=0)
+    tol = 1e-3
+    out = []
+    run_lo, run_hi = domain.to_actual(lo + z_lo * span)[0], domain.to_actual(lo + z_hi * span)[0]
+    for i, f in enumerate(domain.factors):
+        sides = [s for s, beyond in (("lower", z_lo[i] > tol), ("upper", z_hi[i] < 1 - tol)) if beyond]
+        if sides:
+            out.append(f"Extrapolation: the search range of {f}, {_g(domain.lower[i])} to {_g(domain.upper[i])}, "
+                       f"reaches beyond the runs, which cover {_g(run_lo[i])} to {_g(run_hi[i])}; predictions beyond "
+                       f"them are the quadratic's extrapolation, not backed by any simulation. Narrow the range to "
+                       f"the runs, or simulate runs out to the {' and '.join(sides)} bound.")
+    if reference_point:
+        ref = np.array([[float(reference_point[f]) for f in domain.factors]])
+        u = (domain.to_search(ref)[0] - lo) / span
+        outside = [f"{f} = {_g(float(reference_point[f]))} (runs: {_g(run_lo[i])} to {_g(run_hi[i])})"
+                   for i, f in enumerate(domain.factors) if u[i] < z_lo[i] - tol or u[i] > z_hi[i] + tol]
+        if outside:
+            out.append(f"Extrapolation: the reference point lies outside the range of the runs ({'; '.join(outside)}); "
+                       f"its predicted values are extrapolated and its errors are not evidence about the simulation.")
+        elif not _in_hull(z, u, tol):
+            out.append("Extrapolation: the reference point lies outside the region the design runs cover (their "
+                       "convex hull), although within each factor's range; its predicted values are extrapolated.")
+    return out
+
+
+def _in_hull(points: np.ndarray, u: np.ndarray, tol: float) -> bool:
+    """True when u is within ``tol`` (per coordinate) of the convex hull of ``points`` (linear program)."""
+    n, d = points.shape
+    # lambda >= 0, sum lambda = 1, |points^T lambda - u| <= tol
+    a_ub = np.vstack([points.T, -points.T])
+    b_ub = np.concatenate([u + tol, -(u - tol)])
+    res = optimize.linprog(np.zeros(n), A_ub=a_ub, b_ub=b_ub, A_eq=np.ones((1, n)), b_eq=[1.0],
+                           bounds=[(0, None)] * n, method="highs")
+    return bool(res.status == 0)
