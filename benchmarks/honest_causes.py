@@ -15,7 +15,9 @@ three runs, an unrecorded factor entering as a cubic, noise proportional to the 
 right   the first cause is the right one: ``factor_level`` naming a slipped run and its factor; for
         ``multiplicative`` noise unequal scatter or a transform;
 wrong   a catalogue cause was named first and it is not right (``unexplained`` is never wrong);
-        ``wrong_lenient`` also accepts, for a plateau, a missing term in the plateau factor;
+        ``wrong_lenient`` also accepts an outlier finding on a run the defect really moved (a slipped
+        run, a run of the batch, of the step, or moved by the hidden factor by 3 noise SDs or more) and,
+        for a plateau, a missing term in the plateau factor;
 unexpl  ``unexplained`` reported first;
 detect  anything reported (finding or ``unexplained``);
 lof     the classical lack-of-fit F test (pure error from the centre runs) rejects at 5 %.
@@ -60,12 +62,19 @@ def first_cause(result) -> tuple[str | None, object, list, dict]:
 
 
 def _judge(kind: str, planted, cause, detail, aliases, info) -> tuple[bool, bool, bool]:
-    """(right, wrong, wrong_lenient) of the first cause for an off-catalogue defect."""
+    """(right, wrong, wrong_lenient) of the first cause for an off-catalogue defect.
+
+    An ``outlier`` finding on a run the defect really moved (a slipped run, a run of the shifted batch,
+    of the step or moved by the hidden factor by 3 noise SDs or more) says something true about that
+    run: it is counted wrong strictly and not wrong leniently.
+    """
     if cause in (None, "unexplained"):
         return False, False, False
-    if kind == "slip":
-        right = cause == "factor_level" and detail in planted.runs and info.get("factor") == planted.factor
+    if kind == "slip" and cause == "factor_level":
+        right = detail in planted.runs and info.get("factor") == planted.factor
         return right, not right, not right
+    if cause == "outlier" and detail in planted.runs:
+        return False, True, False
     if kind == "multiplicative":
         right = cause in ("heteroscedasticity", "response_transform")
         return right, not right, not right

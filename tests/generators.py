@@ -185,8 +185,8 @@ OFF_CATALOGUE = ("slip", "plateau", "step", "batch", "hidden", "multiplicative")
 
 
 def off_catalogue_table(seed: int, n_factors: int = 2, kind: str = "slip", size: float = 1.0, *,
-                        n_slipped: int = 1, slip: float = 0.1, noise: float = 1.0,
-                        response: str = "y") -> tuple[pd.DataFrame, Planted]:
+                        n_slipped: int = 1, slip: float = 0.1, noise: float = 1.0, factor: str | None = None,
+                        rows: tuple[int, ...] | None = None, response: str = "y") -> tuple[pd.DataFrame, Planted]:
     """One CCD table (rows in run order) with a defect that is not one of :data:`KINDS`.
 
     ``slip``            ``n_slipped`` runs were simulated at ``slip`` times the recorded value of one
@@ -202,6 +202,9 @@ def off_catalogue_table(seed: int, n_factors: int = 2, kind: str = "slip", size:
     ``hidden``          an unrecorded factor u ~ U(-1, 1), varied between the non-centre runs (the centre
                         runs repeat its nominal value 0), enters as ``size * noise * u^3``.
     ``multiplicative``  noise proportional to the mean, sd ``size`` % of the response (mean ~100).
+
+    For ``step``, ``batch`` and ``hidden``, ``Planted.runs`` are the runs moved by three noise SDs or more.
+    ``factor`` and ``rows`` (indices into the standard-order design) fix the slipped factor and runs.
     """
     rng = np.random.default_rng(seed)
     factors, coding, coded, alpha = design(n_factors)
@@ -215,8 +218,8 @@ def off_catalogue_table(seed: int, n_factors: int = 2, kind: str = "slip", size:
     planted = Planted(kind, size)
     extra = np.zeros(n)
     if kind == "slip":
-        j = int(rng.integers(n_factors))
-        rows = rng.choice(n, size=n_slipped, replace=False)
+        j = int(rng.integers(n_factors)) if factor is None else factors.index(factor)
+        rows = rng.choice(n, size=n_slipped, replace=False) if rows is None else np.asarray(rows)
         slipped = actual.copy()
         slipped[rows, j] *= slip
         true_coded = coding.to_coded(slipped)
@@ -235,6 +238,8 @@ def off_catalogue_table(seed: int, n_factors: int = 2, kind: str = "slip", size:
         extra = size * noise * rng.uniform(-1, 1, size=n) ** 3 * np.any(coded != 0, axis=1)
     elif kind != "multiplicative":
         raise ValueError(f"unknown kind {kind!r}")
+    if kind in ("step", "batch", "hidden"):  # the runs the defect moved by three noise SDs or more
+        planted = Planted(kind, size, runs=tuple(int(r) for r in run_of_row[np.abs(extra) >= 3 * noise]))
     mean = model_matrix(true_coded, terms) @ coef
     y = mean + extra + (mean * size / 100 * eps if kind == "multiplicative" else noise * eps)
     table = pd.DataFrame(actual, columns=factors)

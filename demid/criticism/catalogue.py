@@ -32,6 +32,7 @@ MISFIT_TESTS = ("lack_of_fit",)
 # Slips of a recorded factor value tried by ``factor_level``: a decimal point or unit prefix off by one
 # to three places (x 10^k); on log-scaled factors the same slips shift log10 by k.
 _SLIP_POWERS = (-3, -2, -1, 1, 2, 3)
+_SLIP_PRIOR = {1: 0.5, 2: 0.25, 3: 0.25}
 
 
 # Further convenient lambdas, tried when the data reject none of the named ones.
@@ -282,7 +283,8 @@ class _Round:
         p_obs = (1.0 + b - np.searchsorted(sorted_null, t_obs - 1e-12, side="left")) / (b + 1.0)
         p_null = (1.0 + b - np.searchsorted(sorted_null, null - 1e-12, side="left")) / (b + 1.0)
         c = cands[int(best[0])]
-        h = _Hypothesis("factor_level", c, [], float(t_obs), math.log(p_obs), info=_slip_fit(m, c))
+        c, info = _slip_fit(m, [d for d in cands if d.row == c.row], len(data.factors))
+        h = _Hypothesis("factor_level", c, [], float(t_obs), math.log(p_obs), info=info)
         h.null_logp = np.log(p_null)
         self.hypotheses.append(h)
 
@@ -417,10 +419,18 @@ def _slip_ratios(m: _Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[
     return best, arg
 
 
-def _slip_fit(m: _Model, c: SlipCandidate) -> dict:
-    """How well the moved run fits: its standardised prediction error from the other runs (t),
-    and the same for the recorded level."""
-    pos = int(np.flatnonzero(np.flatnonzero(m.keep) == c.row)[0])
+def _slip_fit(m: _Model, same_run: list[SlipCandidate], n_factors: int) -> tuple[SlipCandidate, dict]:
+    """The most probable slip of the run, how well it fits, and the Bayes factor of "a slip" against
+    "a mean shift" for the run.
+
+    t_moved / t_recorded: the run's prediction error from the other runs (in standard errors) at the
+    slipped and at the recorded value.  The Bayes factor compares the run's response given the other
+    runs under a slip (prior over the slips: half on one decimal place, a quarter each on two and three,
+    spread evenly over factors and directions) with a mean shift of unknown size, uniform over the
+    observed range of the response; one run can only favour a slip when it lands close to what a
+    slip predicts, compared with how many slips there are and how wide the responses range.
+    """
+    pos = int(np.flatnonzero(np.flatnonzero(m.keep) == same_run[0].row)[0])
     x = m.x
     others = np.ones(len(m.z), dtype=bool)
     others[pos] = False
@@ -428,7 +438,13 @@ def _slip_fit(m: _Model, c: SlipCandidate) -> dict:
     beta = a @ (x[others].T @ m.z[others])
     resid = m.z[others] - x[others] @ beta
     s = math.sqrt(float(resid @ resid) / max(int(others.sum()) - m.rank, 1))
-    r = _moved_rows(m, [c])[0]
-    t_moved = float((m.z[pos] - r @ beta) / (s * math.sqrt(1.0 + r @ a @ r)))
+    rows = _moved_rows(m, same_run)
+    se = s * np.sqrt(1.0 + np.einsum("kp,pq,kq->k", rows, a, rows))
+    t = (m.z[pos] - rows @ beta) / se
+    weight = np.array([_SLIP_PRIOR[abs(d.power)] / (2 * n_factors) for d in same_run])
+    mass = weight * stats.norm.pdf(t) / se
+    spread = float(np.ptp(m.z))
+    k = int(np.argmax(mass))  # the slip that best explains the run, a priori simpler slips first
     t_recorded = float((m.z[pos] - x[pos] @ beta) / (s * math.sqrt(1.0 + x[pos] @ a @ x[pos])))
-    return {"t_moved": t_moved, "t_recorded": t_recorded}
+    return same_run[k], {"t_moved": float(t[k]), "t_recorded": t_recorded,
+                         "bayes_factor": float(np.sum(mass)) * spread if spread > 0 else 0.0}

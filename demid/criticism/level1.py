@@ -18,7 +18,7 @@ from ..design import Coding, model_matrix, model_units, quadratic_terms, term_na
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .catalogue import _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
-from .verdict import RESIDUAL_MISFIT_LEVEL, SLIP_FIT_T, unexplained_evidence, verdict_of
+from .verdict import RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, unexplained_evidence, verdict_of
 from .messages import _CAUSE_WORDS, _message
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
                      infer_axial_distance)
@@ -170,7 +170,7 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
         row[c.factor] = c.coded
         info.update(factor=data.factors[c.factor], recorded_value=recorded,
                     fitting_value=float(data.to_actual(row)[0, c.factor]), slip=f"x1e{c.power:+d}",
-                    t_moved=h.info["t_moved"],
+                    t_moved=h.info["t_moved"], bayes_factor=h.info["bayes_factor"],
                     t_recorded=h.info["t_recorded"], observed=float(data.y[c.row]))
         return replace(spec, moved=spec.moved + ((c.row, c.factor, c.coded),)), info
     if h.cause == "outlier":
@@ -247,7 +247,10 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
         rejected = rnd.rejected(family_alpha)
         if not rejected or rnd_index == max_findings:
             break
-        h, spec, info, new, alternatives = _name_cause(data, model, rejected)
+        named = _name_cause(data, model, rejected)
+        if named is None:  # only a slip fits, and too weakly to be named: misfit without a cause
+            break
+        h, spec, info, new, alternatives = named
         if findings and not new.loo_rmse_on(new.keep) < model.loo_rmse_on(new.keep):
             break  # a further extension must also predict left-out runs better
         findings.append(_finding(data, response, model, h, spec, info, new, alternatives))
@@ -304,22 +307,31 @@ def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tupl
     for cand in rejected:
         cand_spec, cand_info = _apply(data, model, cand)
         fitted_alternatives.append((cand, cand_spec, cand_info, _Model(data, cand_spec)))
-    best = 0
-    if rejected[0].cause in ("heteroscedasticity", "outlier"):
+    # A run that fits a slipped value of one factor explains its misfit without an added parameter, but
+    # one run is weak evidence: the slip is named only when its Bayes factor against a mean shift of the
+    # run reaches SLIP_BAYES_FACTOR and no other extension beats it by more than its added parameters.
+    slips = [i for i, alt in enumerate(fitted_alternatives) if alt[0].cause == "factor_level"]
+    if slips:
+        i = slips[0]
+        slip_model = fitted_alternatives[i][3]
+        others = [alt[3].loglik - alt[3].n_params + slip_model.n_params
+                  for j, alt in enumerate(fitted_alternatives)
+                  if j != i and alt[0].cause not in ("outlier", "heteroscedasticity")]
+        if fitted_alternatives[i][0].info["bayes_factor"] >= SLIP_BAYES_FACTOR and \
+                (not others or slip_model.loglik >= max(others) - 1.0):
+            return _with_alternatives(data, fitted_alternatives, i)
+    named = [i for i, alt in enumerate(fitted_alternatives) if alt[0].cause != "factor_level"]
+    if not named:
+        return None
+    best = named[0]
+    if fitted_alternatives[best][0].cause in ("heteroscedasticity", "outlier"):
         rivals = [i for i, alt in enumerate(fitted_alternatives)
                   if alt[0].cause in ("heteroscedasticity", "outlier")]
         best = max(rivals, key=lambda i: (round(fitted_alternatives[i][3].loglik, 9), -i))
-    # A run that fits a slipped value of one factor explains its misfit without any added parameter.
-    # It is named when the moved run fits within the noise (|t| <= SLIP_FIT_T from the other runs) and
-    # no other extension beats it by more than its one added parameter (AIC units).
-    slips = [i for i, alt in enumerate(fitted_alternatives) if alt[0].cause == "factor_level"]
-    if slips and abs(fitted_alternatives[slips[0]][0].info["t_moved"]) <= SLIP_FIT_T:
-        i = slips[0]
-        score = fitted_alternatives[i][3].loglik
-        others = [alt[3].loglik - alt[3].n_params + fitted_alternatives[i][3].n_params
-                  for j, alt in enumerate(fitted_alternatives) if j != i]
-        if not others or score >= max(others) - 1.0:
-            best = i
+    return _with_alternatives(data, fitted_alternatives, best)
+
+
+def _with_alternatives(data: _Data, fitted_alternatives: list, best: int) -> tuple:
     h, spec, info, new = fitted_alternatives[best]
     alternatives = [{"cause": c.cause, "detail": _detail_json(data, c) if c.cause != "response_transform"
                      else _transform_name(sp.lam), "p_value": _num(c.p_family),
@@ -351,7 +363,7 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
     public_info = {k: v for k, v in info.items() if k in ("lambda_hat", "lambda_ci", "sd_ratio",
                                                           "drift_per_run", "observed", "predicted_without",
                                                           "factor", "recorded_value", "fitting_value", "slip",
-                                                          "t_moved", "t_recorded")}
+                                                          "t_moved", "t_recorded", "bayes_factor")}
     if alternatives:
         public_info["alternatives"] = alternatives
     return Finding(

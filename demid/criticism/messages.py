@@ -86,7 +86,8 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
                 f"{_g(info['recorded_value'])} ({info['slip'].replace('x1e', 'x 10^')}: a unit or decimal slip in the "
                 f"simulation input?): observed {_g(info['observed'])}, the other runs predict it within "
                 f"{abs(info['t_moved']):.1f} standard errors at {f} = {_g(info['fitting_value'])} and "
-                f"{abs(info['t_recorded']):.1f} at the recorded value. Check the input of that run; using "
+                f"{abs(info['t_recorded']):.1f} at the recorded value (Bayes factor {info['bayes_factor']:.1f} "
+                f"against a shift of that run alone). Check the input of that run; using "
                 f"{f} = {_g(info['fitting_value'])} for it {gain}.")
     if h.cause == "drift":
         slope = info.get("drift_per_run", float("nan"))

@@ -31,9 +31,10 @@ VERDICTS = ("adequate", "defect", "unexplained", "does_not_predict")
 #: leaves a false residual alarm in about one table in a hundred).
 RESIDUAL_MISFIT_LEVEL = 0.2
 
-#: A slipped factor value is named only when the moved run fits within the noise: its prediction from
-#: the other runs is within this many standard errors (about 95 %).
-SLIP_FIT_T = 2.0
+#: A slipped factor value is named only when the run's response is at least this many times more probable
+#: under the slips than under a mean shift of unknown size (Bayes factor, see catalogue._slip_fit): with
+#: equal prior odds, the more probable explanation of the run is named and the other listed with it.
+SLIP_BAYES_FACTOR = 1.0
 
 #: Power at which the detectable size of a defect is quoted.
 POWER = 0.8
