@@ -49,6 +49,7 @@ class Planted:
     term: str | None = None
     run: int | None = None
     factor: str | None = None
+    runs: tuple[int, ...] = ()  # every run a ``slip`` defect touched
 
 
 def design(n_factors: int, alpha: float | None = None, replicates: int = 1
@@ -176,3 +177,72 @@ def mortar_case(seed: int, biased: str | None = None, shift: float = 4.0,
         targets[biased] *= 1.0 + rng.choice([-1.0, 1.0]) * shift * tolerance
     domain = Domain(tuple(factors), tuple(lo), tuple(hi))
     return Level2Case(surrogates, domain, targets, tolerance, dict(zip(factors, map(float, x0))), biased)
+
+
+# --------------------------------------------------------------------------- defects outside the catalogue
+#: Defects the level-1 catalogue has no cause for (``slip`` has one: ``factor_level``).
+OFF_CATALOGUE = ("slip", "plateau", "step", "batch", "hidden", "multiplicative")
+
+
+def off_catalogue_table(seed: int, n_factors: int = 2, kind: str = "slip", size: float = 1.0, *,
+                        n_slipped: int = 1, slip: float = 0.1, noise: float = 1.0, factor: str | None = None,
+                        rows: tuple[int, ...] | None = None, response: str = "y") -> tuple[pd.DataFrame, Planted]:
+    """One CCD table (rows in run order) with a defect that is not one of :data:`KINDS`.
+
+    ``slip``            ``n_slipped`` runs were simulated at ``slip`` times the recorded value of one
+                        factor (a unit or decimal slip in the simulation input); the table records the
+                        design value.  ``Planted.runs`` are the slipped runs,
+                        ``Planted.factor`` the factor; ``size`` is unused.
+    ``plateau``         the response rises along one factor and saturates: ``size * noise * min(a, 0.3)``
+                        (coded units, then flat).
+    ``step``            a jump of ``size * noise`` where the coded factors sum to more than 0.5 (a regime
+                        change in one corner region of the design).
+    ``batch``           three random non-centre runs (unrelated to the run order) shifted by ``size * noise``
+                        (an unrecorded change of software, seed family or hardware for a batch of runs).
+    ``hidden``          an unrecorded factor u ~ U(-1, 1), varied between the non-centre runs (the centre
+                        runs repeat its nominal value 0), enters as ``size * noise * u^3``.
+    ``multiplicative``  noise proportional to the mean, sd ``size`` % of the response (mean ~100).
+
+    For ``step``, ``batch`` and ``hidden``, ``Planted.runs`` are the runs moved by three noise SDs or more.
+    ``factor`` and ``rows`` (indices into the standard-order design) fix the slipped factor and runs.
+    """
+    rng = np.random.default_rng(seed)
+    factors, coding, coded, alpha = design(n_factors)
+    n = len(coded)
+    run_of_row = rng.permutation(n) + 1
+    terms = quadratic_terms(n_factors)
+    coef = random_quadratic(rng, n_factors)
+    eps = rng.normal(size=n)
+    actual = coding.to_actual(coded)
+    true_coded = coded.copy()
+    planted = Planted(kind, size)
+    extra = np.zeros(n)
+    if kind == "slip":
+        j = int(rng.integers(n_factors)) if factor is None else factors.index(factor)
+        rows = rng.choice(n, size=n_slipped, replace=False) if rows is None else np.asarray(rows)
+        slipped = actual.copy()
+        slipped[rows, j] *= slip
+        true_coded = coding.to_coded(slipped)
+        planted = Planted(kind, slip, run=int(run_of_row[rows[0]]), factor=factors[j],
+                          runs=tuple(int(run_of_row[r]) for r in rows))
+    elif kind == "plateau":
+        j = int(rng.integers(n_factors))
+        extra = size * noise * np.minimum(coded[:, j], 0.3)
+        planted = Planted(kind, size, factor=factors[j])
+    elif kind == "step":
+        extra = size * noise * (coded.sum(axis=1) > 0.5)
+    elif kind == "batch":
+        outer = np.flatnonzero(np.any(coded != 0, axis=1))
+        extra[rng.choice(outer, size=3, replace=False)] = size * noise
+    elif kind == "hidden":
+        extra = size * noise * rng.uniform(-1, 1, size=n) ** 3 * np.any(coded != 0, axis=1)
+    elif kind != "multiplicative":
+        raise ValueError(f"unknown kind {kind!r}")
+    if kind in ("step", "batch", "hidden"):  # the runs the defect moved by three noise SDs or more
+        planted = Planted(kind, size, runs=tuple(int(r) for r in run_of_row[np.abs(extra) >= 3 * noise]))
+    mean = model_matrix(true_coded, terms) @ coef
+    y = mean + extra + (mean * size / 100 * eps if kind == "multiplicative" else noise * eps)
+    table = pd.DataFrame(actual, columns=factors)
+    table.insert(0, "run", run_of_row)
+    table[response] = y
+    return table.sort_values("run").reset_index(drop=True), planted

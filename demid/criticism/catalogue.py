@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import stats
 
-from ..design import cubic_terms, term_name
+from ..design import cubic_terms, model_matrix, term_name
 from ..surrogate import round_off_only
 from .aliasing import _term_classes
 from .models import _orth, _residualize
@@ -24,7 +24,15 @@ if TYPE_CHECKING:
     from .models import _Data, _Model
 
 
-CAUSES = ("missing_term", "response_transform", "outlier", "drift", "heteroscedasticity")
+CAUSES = ("missing_term", "response_transform", "outlier", "drift", "heteroscedasticity", "factor_level")
+
+#: Family members that show misfit without naming a cause.
+MISFIT_TESTS = ("lack_of_fit",)
+
+# Slips of a recorded factor value tried by ``factor_level``: a decimal point or unit prefix off by one
+# to three places (x 10^k); on log-scaled factors the same slips shift log10 by k.
+_SLIP_POWERS = (-3, -2, -1, 1, 2, 3)
+_SLIP_PRIOR = {1: 0.5, 2: 0.25, 3: 0.25}
 
 
 # Further convenient lambdas, tried when the data reject none of the named ones.
@@ -163,7 +171,7 @@ class _Round:
         e_obs = m.resid_w[:, None]
 
         # --- missing terms (alias classes on the current model)
-        coded = data.coded[m.keep]
+        coded = m.coded
         extra = m.run_column(m.keep)[:, None] if spec.drift else None
         candidates = [t for t in cubic_terms(len(data.factors)) if t not in spec.extra_terms]
         self.classes = _term_classes(coded, m.mean_terms, candidates, extra, m.w)
@@ -205,6 +213,15 @@ class _Round:
                 h.null_logp = _f_logp((df - 1) * np.expm1(_het_lr(e_null, m.x, v) / n), df - 1)
                 self.hypotheses.append(h)
 
+        # --- lack of fit against pure error (replicated runs): a function of the errors alone, so it
+        # joins the family exactly; it shows misfit but names no cause.
+        if spec.weight_on is None:
+            self._lack_of_fit(m, e_obs, e_null)
+
+        # --- a run that fits another value of one factor (unit or decimal slip in the simulation input)
+        if spec.lam is None and spec.weight_on is None:
+            self._factor_level(data, m, eps)
+
         # --- Box-Cox: parametric bootstrap from the fitted model, conditional on positive responses;
         # joined to the family as an independent uniform (conservative under positive dependence).
         if spec.lam is None and spec.weight_on is None and np.all(m.y > 0):
@@ -223,6 +240,53 @@ class _Round:
                                  np.column_stack([h.null_logp for h in self.hypotheses]))
             for h, p in zip(self.hypotheses, adj):
                 h.p_family = float(p)
+
+    def _lack_of_fit(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+        _, group = np.unique(np.round(m.coded, 9), axis=0, return_inverse=True)
+        group = group.ravel()
+        n_groups = int(group.max()) + 1
+        df_pe = len(group) - n_groups
+        df_lof = m.df_resid - df_pe
+        if df_pe < 1 or df_lof < 1:
+            return
+        onehot = np.zeros((len(group), n_groups))
+        onehot[np.arange(len(group)), group] = 1.0
+        onehot /= np.sqrt(onehot.sum(axis=0))
+
+        def f_stat(e):
+            ss_pe = np.sum(e * e, axis=0) - np.sum((onehot.T @ e) ** 2, axis=0)
+            ss_lof = np.sum(e * e, axis=0) - ss_pe
+            with np.errstate(divide="ignore", invalid="ignore"):
+                return (ss_lof / df_lof) / np.maximum(ss_pe / df_pe, 1e-300 * np.sum(e * e, axis=0) + 1e-300)
+
+        f_obs = float(f_stat(e_obs)[0])
+        h = _Hypothesis("lack_of_fit", None, [], f_obs, float(stats.f.logsf(f_obs, df_lof, df_pe)),
+                        info={"df": [df_lof, df_pe]})
+        h.null_logp = stats.f.logsf(f_stat(e_null), df_lof, df_pe)
+        self.hypotheses.append(h)
+
+    def _factor_level(self, data: _Data, m: _Model, eps: np.ndarray) -> None:
+        """Largest drop of the residual sum of squares when one run is moved to a slipped value of one
+        factor (no parameter added); null by a parametric bootstrap from the fitted model that shares
+        its normal draws with the rest of the family."""
+        cands = slip_candidates(data, m)
+        if not cands:
+            return
+        sigma = math.sqrt(m.ssr / m.df_resid)
+        y_all = np.column_stack([m.z, m.fitted_z[:, None] + sigma * eps])
+        ratio, best = _slip_ratios(m, cands, y_all)
+        t_obs = ratio[0]
+        null = ratio[1:]
+        b = len(null)
+        sorted_null = np.sort(null)
+        # p-values from the bootstrap distribution itself (Westfall-Young with an empirical margin)
+        p_obs = (1.0 + b - np.searchsorted(sorted_null, t_obs - 1e-12, side="left")) / (b + 1.0)
+        p_null = (1.0 + b - np.searchsorted(sorted_null, null - 1e-12, side="left")) / (b + 1.0)
+        c = cands[int(best[0])]
+        c, info = _slip_fit(m, [d for d in cands if d.row == c.row], len(data.factors))
+        h = _Hypothesis("factor_level", c, [], float(t_obs), math.log(p_obs), info=info)
+        h.null_logp = np.log(p_null)
+        self.hypotheses.append(h)
 
     def _boxcox_bootstrap(self, m: _Model, q: np.ndarray, lr_obs: float, n_null: int,
                           rng: np.random.Generator, max_batches: int = 20) -> tuple[float, int]:
@@ -267,5 +331,120 @@ class _Round:
         return out
 
     def rejected(self, family_alpha: float) -> list[_Hypothesis]:
-        rej = [h for h in self.hypotheses if h.p_family <= family_alpha]
+        """Rejected causes, strongest evidence first (misfit tests that name no cause left out)."""
+        rej = [h for h in self.hypotheses if h.p_family <= family_alpha and h.cause in CAUSES]
         return sorted(rej, key=lambda h: (h.rank_key, CAUSES.index(h.cause)))
+
+    def misfit(self, family_alpha: float) -> list[_Hypothesis]:
+        """Every rejected family member, causes and misfit tests alike."""
+        return [h for h in self.hypotheses if h.p_family <= family_alpha]
+
+
+# =========================================================================== factor-level slips
+@dataclass(frozen=True)
+class SlipCandidate:
+    """Run ``row`` (index into the data) with factor ``factor`` at ``coded`` instead of its recorded level."""
+
+    row: int
+    factor: int
+    power: int
+    coded: float
+
+
+def slip_candidates(data: _Data, m: _Model) -> list[SlipCandidate]:
+    """Every kept run x factor x decimal slip whose value differs from the recorded one."""
+    model_units = data.coding.to_actual(m.coded)
+    out = []
+    for pos, row in enumerate(np.flatnonzero(m.keep)):
+        for j, name in enumerate(data.factors):
+            v = model_units[pos, j]
+            for k in _SLIP_POWERS:
+                moved = v + k if name in data.log_factors else v * 10.0 ** k
+                if moved == v or not np.isfinite(moved):
+                    continue
+                point = model_units[pos].copy()
+                point[j] = moved
+                out.append(SlipCandidate(int(row), j, k, float(data.coding.to_coded(point[None, :])[0, j])))
+    return out
+
+
+def _moved_rows(m: _Model, cands: list[SlipCandidate]) -> np.ndarray:
+    """Model-matrix rows (K, p) of the candidates (run-order column unchanged)."""
+    pos = {int(r): i for i, r in enumerate(np.flatnonzero(m.keep))}
+    coded = np.array([m.coded[pos[c.row]] for c in cands])
+    coded[np.arange(len(cands)), [c.factor for c in cands]] = [c.coded for c in cands]
+    rows = model_matrix(coded, m.mean_terms)
+    if m.spec.drift:
+        rows = np.column_stack([rows, m.x[[pos[c.row] for c in cands], -1]])
+    return rows
+
+
+def _slip_ratios(m: _Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per column of y (n, B): max over candidates of SSE / SSE(run moved), and the arg max.
+
+    Moving run i changes one row of the model matrix; with the fit without run i (beta_(i),
+    A = (X_(i)'X_(i))^-1), SSE(moved) = SSE_(i) + (y_i - x' beta_(i))^2 / (1 + x' A x').
+    """
+    x = m.x
+    rows = _moved_rows(m, cands)
+    pos_of = {int(r): i for i, r in enumerate(np.flatnonzero(m.keep))}
+    q = _orth(x)
+    sse0 = np.sum(_residualize(q, y) ** 2, axis=0)
+    best = np.zeros(y.shape[1])
+    arg = np.zeros(y.shape[1], dtype=int)
+    by_run: dict[int, list[int]] = {}
+    for k, c in enumerate(cands):
+        by_run.setdefault(pos_of[c.row], []).append(k)
+    for i, ks in by_run.items():
+        if m.hat[i] > 1 - 1e-8:
+            continue
+        others = np.ones(len(y), dtype=bool)
+        others[i] = False
+        a = np.linalg.pinv(x[others].T @ x[others])
+        beta = a @ (x[others].T @ y[others])
+        e_i = y[i] - x[i] @ beta
+        g_i = float(x[i] @ a @ x[i])
+        sse_without = np.maximum(sse0 - e_i ** 2 / (1.0 + g_i), 0.0)
+        r = rows[ks]
+        g = np.einsum("kp,pq,kq->k", r, a, r)
+        e_moved = y[i][None, :] - r @ beta
+        sse_moved = sse_without[None, :] + e_moved ** 2 / (1.0 + g)[:, None]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = sse0[None, :] / np.maximum(sse_moved, 1e-300 * np.maximum(sse0[None, :], 1e-300))
+        top = np.argmax(ratio, axis=0)
+        val = ratio[top, np.arange(y.shape[1])]
+        better = val > best
+        best = np.where(better, val, best)
+        arg = np.where(better, np.asarray(ks)[top], arg)
+    return best, arg
+
+
+def _slip_fit(m: _Model, same_run: list[SlipCandidate], n_factors: int) -> tuple[SlipCandidate, dict]:
+    """The most probable slip of the run, how well it fits, and the Bayes factor of "a slip" against
+    "a mean shift" for the run.
+
+    t_moved / t_recorded: the run's prediction error from the other runs (in standard errors) at the
+    slipped and at the recorded value.  The Bayes factor compares the run's response given the other
+    runs under a slip (prior over the slips: half on one decimal place, a quarter each on two and three,
+    spread evenly over factors and directions) with a mean shift of unknown size, uniform over the
+    observed range of the response; one run can only favour a slip when it lands close to what a
+    slip predicts, compared with how many slips there are and how wide the responses range.
+    """
+    pos = int(np.flatnonzero(np.flatnonzero(m.keep) == same_run[0].row)[0])
+    x = m.x
+    others = np.ones(len(m.z), dtype=bool)
+    others[pos] = False
+    a = np.linalg.pinv(x[others].T @ x[others])
+    beta = a @ (x[others].T @ m.z[others])
+    resid = m.z[others] - x[others] @ beta
+    s = math.sqrt(float(resid @ resid) / max(int(others.sum()) - m.rank, 1))
+    rows = _moved_rows(m, same_run)
+    se = s * np.sqrt(1.0 + np.einsum("kp,pq,kq->k", rows, a, rows))
+    t = (m.z[pos] - rows @ beta) / se
+    weight = np.array([_SLIP_PRIOR[abs(d.power)] / (2 * n_factors) for d in same_run])
+    mass = weight * stats.norm.pdf(t) / se
+    spread = float(np.ptp(m.z))
+    k = int(np.argmax(mass))  # the slip that best explains the run, a priori simpler slips first
+    t_recorded = float((m.z[pos] - x[pos] @ beta) / (s * math.sqrt(1.0 + x[pos] @ a @ x[pos])))
+    return same_run[k], {"t_moved": float(t[k]), "t_recorded": t_recorded,
+                         "bayes_factor": float(np.sum(mass)) * spread if spread > 0 else 0.0}

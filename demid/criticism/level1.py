@@ -18,6 +18,7 @@ from ..design import Coding, model_matrix, model_units, quadratic_terms, term_na
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .catalogue import _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
+from .verdict import RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, unexplained_evidence, verdict_of
 from .messages import _CAUSE_WORDS, _message
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
                      infer_axial_distance)
@@ -75,6 +76,10 @@ class CriticismResult:
     catalogue: list[dict]
     summary: str
     family_alpha: float
+    unexplained: dict | None = None
+    verdict: str = "adequate"
+    verdict_detail: dict = field(default_factory=dict)
+    naming: dict = field(default_factory=dict)
     residuals: pd.DataFrame = field(repr=False, default=None)
     _extended_model: _Model = field(repr=False, default=None)
     _baseline_model: _Model = field(repr=False, default=None)
@@ -93,6 +98,9 @@ class CriticismResult:
             "alias_sets": [a.to_json() for a in self.alias_sets],
             "catalogue": self.catalogue,
             "runs": self._runs_json(),
+            "verdict": self.verdict,
+            "verdict_detail": self.verdict_detail,
+            "unexplained": self.unexplained,
         }
         if self.run_order is not None:
             out["run_order"] = self.run_order.to_json()
@@ -109,13 +117,25 @@ class CriticismResult:
         return json.dumps(self.to_json(), indent=2, allow_nan=False)
 
     def to_frame(self) -> pd.DataFrame:
+        """One row per finding (or one ``unexplained`` row); ``verdict`` repeats the response's verdict."""
         cols = ["response", "cause", "detail", "aliases", "p_value", "loo_rmse_baseline",
-                "loo_rmse_extended", "delta_aicc", "message"]
+                "loo_rmse_extended", "delta_aicc", "message", "verdict"]
         rows = [{"response": self.response, "cause": f.cause, "detail": str(f.detail),
                  "aliases": ";".join(f.aliases), "p_value": f.p_value,
                  "loo_rmse_baseline": f.loo_rmse_baseline, "loo_rmse_extended": f.loo_rmse_extended,
-                 "delta_aicc": f.delta_aicc, "message": f.message} for f in self.findings]
+                 "delta_aicc": f.delta_aicc, "message": f.message, "verdict": self.verdict} for f in self.findings]
+        if self.unexplained:
+            u = self.unexplained
+            rows.append({"response": self.response, "cause": "unexplained", "detail": u["detail"], "aliases": "",
+                         "p_value": u["p_value"], "loo_rmse_baseline": self.baseline.get("loo_rmse"),
+                         "loo_rmse_extended": self.baseline.get("loo_rmse"), "delta_aicc": 0.0,
+                         "message": u["message"], "verdict": self.verdict})
         return pd.DataFrame(rows, columns=cols)
+
+    @property
+    def verdict_message(self) -> str:
+        """The verdict in words: what the user can do with this surrogate."""
+        return self.verdict_detail.get("message", "")
 
     def extended_surrogate(self) -> ExtendedSurrogate:
         """Predictor of the extended model (the baseline quadratic when nothing was found)."""
@@ -148,6 +168,16 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
         return replace(spec, extra_terms=spec.extra_terms + (h.detail.terms[0],)), info
     if h.cause == "drift":
         return replace(spec, drift=True), info
+    if h.cause == "factor_level":
+        c = h.detail
+        row = model.coded[int(np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0])].copy()
+        recorded = float(data.to_actual(row)[0, c.factor])
+        row[c.factor] = c.coded
+        info.update(factor=data.factors[c.factor], recorded_value=recorded,
+                    fitting_value=float(data.to_actual(row)[0, c.factor]), slip=f"x1e{c.power:+d}",
+                    t_moved=h.info["t_moved"], bayes_factor=h.info["bayes_factor"],
+                    t_recorded=h.info["t_recorded"], observed=float(data.y[c.row]))
+        return replace(spec, moved=spec.moved + ((c.row, c.factor, c.coded),)), info
     if h.cause == "outlier":
         i = int(h.detail)
         pos = int(np.flatnonzero(np.flatnonzero(model.keep) == i)[0])
@@ -217,29 +247,65 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     findings: list[Finding] = []
     catalogue: list[dict] = []
     alias_sets: list[AliasSet] = []
-    for rnd_index in range(max_findings):
+    first_round = last_round = None
+    for rnd_index in range(max_findings + 1):
         rnd = _Round(data, model, n_null, rng)
+        last_round = rnd
         if rnd_index == 0:
+            first_round = rnd
             alias_sets = _alias_sets(data, rnd)
             catalogue = [_catalogue_entry(data, h) for h in rnd.hypotheses]
         rejected = rnd.rejected(family_alpha)
-        if not rejected:
+        if not rejected or rnd_index == max_findings:
             break
-        h, spec, info, new, alternatives = _name_cause(data, model, rejected)
+        named = _name_cause(data, model, rejected)
+        if named is None:  # only a slip fits, and too weakly to be named: misfit without a cause
+            break
+        h, spec, info, new, alternatives = named
         if findings and not new.loo_rmse_on(new.keep) < model.loo_rmse_on(new.keep):
             break  # a further extension must also predict left-out runs better
         findings.append(_finding(data, response, model, h, spec, info, new, alternatives))
         model = new
+        last_round = None
         if model.df_resid - 1 < 3 or model.spec.weight_on is not None:
             break  # too few spare runs, or estimated weights (further tests would not be exact)
 
+    # Honest causes: the named causes must leave no misfit behind.  Misfit that no catalogue cause
+    # answers (lack of fit alone), or that remains after the named extensions (any family member still
+    # rejected at the stricter residual level), is reported as unexplained instead of a confident cause.
+    unexplained = None
+    naming: dict = {}
+    if findings and last_round is not None and last_round.hypotheses:
+        naming["residual_min_p"] = min(h.p_family for h in last_round.hypotheses)
+        naming["residual_tests"] = [_catalogue_entry(data, h) for h in last_round.hypotheses
+                                    if h.p_family <= family_alpha]
+    if findings:
+        alts = findings[0].info.get("alternatives", [])
+        naming["first_alternatives"] = alts
+        naming["first_cause"] = findings[0].cause
+        naming["first_detail"] = findings[0].detail
+    if first_round is not None:
+        residual = []
+        if findings and last_round is not None:
+            residual = [h for h in last_round.hypotheses if h.p_family <= RESIDUAL_MISFIT_LEVEL * family_alpha]
+        if (not findings and first_round.misfit(family_alpha)) or residual:
+            unexplained = unexplained_evidence(
+                response, [_catalogue_entry(data, h) for h in first_round.misfit(family_alpha)],
+                [{"cause": f.cause, "detail": f.detail} for f in findings],
+                [_catalogue_entry(data, h) for h in residual], family_alpha)
+            findings, model = [], base_model
+
     baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
     summary = _summary(data, findings, catalogue, family_alpha, gain)
+    if unexplained:
+        summary = unexplained["message"]
     if not run_order.drift_tested:
         summary += " " + run_order.message
+    verdict, verdict_detail = verdict_of(data, fit, findings, unexplained, catalogue, family_alpha)
     return CriticismResult(response=response, factors=list(factors), baseline=baseline, findings=findings,
                            extended=extended, gain=gain, alias_sets=alias_sets, catalogue=catalogue,
-                           summary=summary, family_alpha=family_alpha, residuals=_residual_frame(fit),
+                           summary=summary, family_alpha=family_alpha, unexplained=unexplained, verdict=verdict,
+                           verdict_detail=verdict_detail, naming=naming, residuals=_residual_frame(fit),
                            _extended_model=model, _baseline_model=base_model, run_order=run_order)
 
 
@@ -254,11 +320,31 @@ def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tupl
     for cand in rejected:
         cand_spec, cand_info = _apply(data, model, cand)
         fitted_alternatives.append((cand, cand_spec, cand_info, _Model(data, cand_spec)))
-    best = 0
-    if rejected[0].cause in ("heteroscedasticity", "outlier"):
+    # A run that fits a slipped value of one factor explains its misfit without an added parameter, but
+    # one run is weak evidence: the slip is named only when its Bayes factor against a mean shift of the
+    # run reaches SLIP_BAYES_FACTOR and no other extension beats it by more than its added parameters.
+    slips = [i for i, alt in enumerate(fitted_alternatives) if alt[0].cause == "factor_level"]
+    if slips:
+        i = slips[0]
+        slip_model = fitted_alternatives[i][3]
+        others = [alt[3].loglik - alt[3].n_params + slip_model.n_params
+                  for j, alt in enumerate(fitted_alternatives)
+                  if j != i and alt[0].cause not in ("outlier", "heteroscedasticity")]
+        if fitted_alternatives[i][0].info["bayes_factor"] >= SLIP_BAYES_FACTOR and \
+                (not others or slip_model.loglik >= max(others) - 1.0):
+            return _with_alternatives(data, fitted_alternatives, i)
+    named = [i for i, alt in enumerate(fitted_alternatives) if alt[0].cause != "factor_level"]
+    if not named:
+        return None
+    best = named[0]
+    if fitted_alternatives[best][0].cause in ("heteroscedasticity", "outlier"):
         rivals = [i for i, alt in enumerate(fitted_alternatives)
                   if alt[0].cause in ("heteroscedasticity", "outlier")]
         best = max(rivals, key=lambda i: (round(fitted_alternatives[i][3].loglik, 9), -i))
+    return _with_alternatives(data, fitted_alternatives, best)
+
+
+def _with_alternatives(data: _Data, fitted_alternatives: list, best: int) -> tuple:
     h, spec, info, new = fitted_alternatives[best]
     alternatives = [{"cause": c.cause, "detail": _detail_json(data, c) if c.cause != "response_transform"
                      else _transform_name(sp.lam), "p_value": _num(c.p_family),
@@ -288,7 +374,9 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
                     + ".")
     detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
     public_info = {k: v for k, v in info.items() if k in ("lambda_hat", "lambda_ci", "sd_ratio",
-                                                          "drift_per_run", "observed", "predicted_without")}
+                                                          "drift_per_run", "observed", "predicted_without",
+                                                          "factor", "recorded_value", "fitting_value", "slip",
+                                                          "t_moved", "t_recorded", "bayes_factor")}
     if alternatives:
         public_info["alternatives"] = alternatives
     return Finding(
@@ -337,6 +425,10 @@ def _drift_per_run(model: _Model) -> float:
 def _detail_json(data: _Data, h: _Hypothesis):
     if h.cause == "missing_term":
         return h.aliases[0]
+    if h.cause == "factor_level":
+        return _run_value(data.runs[h.detail.row])
+    if h.cause == "lack_of_fit":
+        return ""
     if h.cause == "outlier":
         return _run_value(data.runs[int(h.detail)])
     if h.cause == "response_transform":

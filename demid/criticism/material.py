@@ -161,7 +161,7 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
         frame = result.to_frame()
         if frame.empty:  # says "checked, nothing found" rather than looking like a check that never ran
             frame = pd.DataFrame([{"response": response, "cause": "none", "detail": "", "aliases": "",
-                                   "message": "No defect found: the quadratic is adequate for these runs."}],
+                                   "message": result.verdict_message, "verdict": result.verdict}],
                                  columns=frame.columns)
         frames.append(frame)
         results.append(result)
@@ -184,7 +184,9 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
                                    runs=table.loc[simulated, factors].to_numpy(dtype=float))
     calibration = level2.to_frame() if level2 is not None else pd.DataFrame()
     summary = {
-        "level1": {r: {"findings": len(p["findings"]), "messages": [f["message"] for f in p["findings"]]}
+        "level1": {r: {"findings": len(p["findings"]), "messages": [f["message"] for f in p["findings"]],
+                       "verdict": p["verdict"], "verdict_message": p["verdict_detail"].get("message", ""),
+                       "scenarios": [sc.name for sc in spec.scenarios if r in sc.observables]}
                    for r, p in response_json.items()},
         "level2": level2.to_json() if level2 is not None else None,
         "reference_point": reference_point_position(surrogates, spec, n_effect, scenario_sets),

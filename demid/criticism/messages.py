@@ -16,7 +16,8 @@ if TYPE_CHECKING:
 
 
 _CAUSE_WORDS = {"missing_term": "missing term", "response_transform": "transform", "outlier": "outlier run",
-                "drift": "drift with", "heteroscedasticity": "unequal scatter with"}
+                "drift": "drift with", "heteroscedasticity": "unequal scatter with",
+                "factor_level": "another factor level at run"}
 
 
 def _gain_phrase(before: float, after: float) -> str:
@@ -78,6 +79,16 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
                 f"the other runs predict {_g(info['predicted_without'])}, externally studentised "
                 f"residual {h.statistic:.1f}); a transcription or export error is the usual cause, "
                 f"check that run. Refitting without it {gain} on the other {n_compared} runs.")
+    if h.cause == "factor_level":
+        run = _run_value(data.runs[h.detail.row])
+        f = info["factor"]
+        return (f"{r}: run {run} fits {f} = {_g(info['fitting_value'])} instead of the recorded "
+                f"{_g(info['recorded_value'])} ({info['slip'].replace('x1e', 'x 10^')}: a unit or decimal slip in the "
+                f"simulation input?): observed {_g(info['observed'])}, the other runs predict it within "
+                f"{abs(info['t_moved']):.1f} standard errors at {f} = {_g(info['fitting_value'])} and "
+                f"{abs(info['t_recorded']):.1f} at the recorded value (Bayes factor {info['bayes_factor']:.1f} "
+                f"against a shift of that run alone). Check the input of that run; using "
+                f"{f} = {_g(info['fitting_value'])} for it {gain}.")
     if h.cause == "drift":
         slope = info.get("drift_per_run", float("nan"))
         span = slope * float(np.ptp(data.runs.astype(float)))

@@ -140,6 +140,8 @@ class _Spec:
     weight_on: str | None = None
     weight_gamma: float = 0.0
     weight_values: tuple[float, ...] = ()
+    # (run index, factor index, coded value): runs whose response fits another value of one factor
+    moved: tuple[tuple[int, int, float], ...] = ()
 
     @property
     def n_extra_params(self) -> int:
@@ -157,7 +159,11 @@ class _Model:
         self.keep = keep
         self.y = data.y[keep]
         self.z = _boxcox(self.y, spec.lam)
-        coded = data.coded[keep]
+        all_coded = data.coded.copy()
+        for i, j, value in spec.moved:
+            all_coded[i, j] = value
+        self.coded = all_coded[keep]
+        coded = self.coded
         self.mean_terms = list(data.base_terms) + list(spec.extra_terms)
         x = model_matrix(coded, self.mean_terms)
         names = [term_name(t, data.factors) for t in self.mean_terms]

@@ -101,14 +101,20 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
     },
     "criticism": {
         "cause": ("–", "Named defect of the quadratic surrogate (missing_term, response_transform, outlier, drift, "
-                       "heteroscedasticity), or 'none' when every test came back clean."),
-        "detail": ("–", "What exactly: the missing term, the transform, the outlying run, …"),
+                       "heteroscedasticity, factor_level), 'unexplained' when the runs show misfit that no "
+                       "catalogued cause accounts for, or 'none' when every test came back clean."),
+        "detail": ("–", "What exactly: the missing term, the transform, the outlying run, the run that fits another "
+                        "factor level (factor_level), the tests that fired (unexplained, ';'-separated), …"),
         "aliases": ("–", "Terms the design cannot tell apart from the missing term, ';'-separated."),
         "p_value": ("–", "Family-wise adjusted p-value of the finding."),
         "loo_rmse_baseline": (RESPONSE_UNIT, "Leave-one-out RMSE of the plain quadratic."),
         "loo_rmse_extended": (RESPONSE_UNIT, "Leave-one-out RMSE with the finding's extension."),
         "delta_aicc": ("–", "AICc of the extension minus AICc of the quadratic (negative = better)."),
         "message": ("–", "The finding in words."),
+        "verdict": ("–", "What the evidence supports for this response (repeated on each of its rows): 'adequate' "
+                         "(no test fired; the message says what size of defect could have been missed), 'defect' "
+                         "(cause named), 'unexplained' (misfit, cause not singled out) or 'does_not_predict' "
+                         "(Q² < 0: do not use the surrogate to decide admissibility)."),
     },
     "calibration_residuals": {
         "observable": ("–", "Observable with a measured target."),
@@ -180,7 +186,7 @@ TABLE_COLUMNS = {
                            "gain_vs_best_subset_bits", "information_gain_error_bits", "tolerance", "rank_by_fraction",
                            "targets_reachable"],
     "criticism": ["material", "response", "cause", "detail", "aliases", "p_value", "loo_rmse_baseline",
-                  "loo_rmse_extended", "delta_aicc", "message"],
+                  "loo_rmse_extended", "delta_aicc", "message", "verdict"],
     "calibration_residuals": ["material", "observable", "target", "at_best", "rel_error_best", "at_reference",
                               "rel_error_reference", "tolerance", "within_tolerance", "within_tolerance_reference",
                               "bottleneck", "max_error_without", "implied_bias", "bias_candidate"],

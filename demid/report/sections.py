@@ -316,14 +316,22 @@ class ReportSections:
                  "catalogue of causes (a missing cubic or mixed term, a response transform, an outlying run, "
                  "run-order drift, non-constant variance) with family-wise error control; a finding is kept only "
                  "with its extension and the measured gain (leave-one-out RMSE, AICc)."]
+        from ..spec import MaterialSpec
+        from .summary import VERDICT_WORDS, unreliable_surrogate_lines
+
         for response, res in info["level1"].items():
-            if res["messages"]:
+            if res.get("verdict_message"):
+                lines += [f"- `{response}` — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
+                          + res["verdict_message"]]
+            elif res["messages"]:
                 lines += [f"- `{response}`: " + " ".join(res["messages"])]
             else:
-                lines += [f"- `{response}`: nothing found — the quadratic is adequate for these runs."]
+                lines += [f"- `{response}`: nothing found by the catalogue tests."]
         run_order = info.get("run_order") or {}
         if run_order.get("drift_tested") is False:
             lines += [f"- Run order: {run_order['message']}"]
+        spec = MaterialSpec.from_material(m, self.config["materials"][m])
+        lines += [f"- {w}" for w in unreliable_surrogate_lines(info, spec)]
         findings = self._csv("criticism.csv")
         if findings is not None and "cause" in findings.columns:
             findings = findings[findings["cause"] != "none"]
@@ -483,8 +491,19 @@ class ReportSections:
                                  f"Fitted response surfaces of {self._label(m)} with design runs and target contours"))
         if cfg.get("pareto"):
             par = cfg["pareto"]
-            parts.append(self._md(f"**Pareto trade-off**: relative error of {par['error_of']} vs predicted "
-                                  f"{par['minimise']}."))
+            text = f"**Pareto trade-off**: relative error of {par['error_of']} vs predicted {par['minimise']}."
+            crit_path = self.root / "criticism" / f"{m}.json"
+            if crit_path.is_file():
+                import json
+
+                from .summary import unpredictive_responses
+
+                bad = [r for r in dict.fromkeys((par["error_of"], par["minimise"]))
+                       if r in unpredictive_responses(json.loads(crit_path.read_text(encoding="utf-8")))]
+                if bad:
+                    text += (f" ⚠ It relies on the surrogate of {', '.join(bad)}, which does not predict left-out "
+                             f"runs (Q² < 0): treat the front as indicative only.")
+            parts.append(self._md(text))
             parts.append(self._image(self.root / "figures" / f"pareto_{m}.png",
                                  f"Pareto trade-off of {self._label(m)}: target error against the minimised response"))
             pareto = self._csv(f"pareto_{m}.csv")

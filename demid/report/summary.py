@@ -77,6 +77,35 @@ def verdict_table(identifiability: pd.DataFrame, spec) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
+#: The criticism verdicts in the report's words.
+VERDICT_WORDS = {"adequate": "adequate (within the tests' power)", "defect": "defect named",
+                 "unexplained": "misfit unexplained", "does_not_predict": "does not predict"}
+
+
+def unpredictive_responses(info: dict) -> list[str]:
+    """Responses whose surrogate does not predict left-out runs (verdict ``does_not_predict``)."""
+    return [r for r, res in (info.get("level1") or {}).items() if res.get("verdict") == "does_not_predict"]
+
+
+def unreliable_surrogate_lines(info: dict, spec) -> list[str]:
+    """One warning per scenario (and the Pareto front) that relies on a surrogate that does not predict."""
+    bad = unpredictive_responses(info)
+    lines = []
+    for sc in spec.scenarios:
+        used = [r for r in sc.observables if r in bad]
+        if used:
+            names = ", ".join(spec.response_labels.get(r, r) for r in used)
+            lines.append(f"⚠ Scenario *{sc.label}* uses {names}, whose surrogate does not predict left-out runs "
+                         f"(Q² < 0): its admissible set should not be used to decide admissibility.")
+    pareto = spec.pareto
+    used = [r for r in (pareto.error_of, pareto.minimise) if r in bad] if pareto is not None else []
+    if used:
+        names = ", ".join(spec.response_labels.get(r, r) for r in dict.fromkeys(used))
+        lines.append(f"⚠ The Pareto front uses {names}, whose surrogate does not predict left-out runs (Q² < 0): "
+                     f"treat the front as indicative only.")
+    return lines
+
+
 def criticism_lines(info: dict, spec) -> list[str]:
     """One line per response (surrogate vs runs) and one for simulation vs experiment."""
     lines = []
@@ -84,13 +113,17 @@ def criticism_lines(info: dict, spec) -> list[str]:
     for response in [r for r in spec.response_names if r in level1]:
         res = level1[response]
         label = spec.response_labels.get(response, response)
-        if res["messages"]:
+        if res.get("verdict_message"):
+            lines.append(f"Surrogate of {label} — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
+                         + res["verdict_message"])
+        elif res["messages"]:
             lines.append(f"Surrogate of {label}: " + " ".join(res["messages"]))
         else:
             lines.append(f"Surrogate of {label}: no defect found — the quadratic fits the simulation runs.")
     run_order = info.get("run_order") or {}
     if run_order.get("drift_tested") is False:
         lines.append(f"Run order: {run_order['message']}")
+    lines += unreliable_surrogate_lines(info, spec)
     level2 = info.get("level2")
     if level2:
         tol = 100 * level2["tolerance"]

@@ -1,0 +1,136 @@
+"""What the evidence supports, per response: a verdict the user can act on.
+
+``adequate``          no test of the family fired; always said with the power caveat (the size of a
+                      single-run departure the tests find with 80 % probability, so smaller defects may
+                      remain);
+``defect``            a catalogue cause is named and its extension leaves no misfit behind;
+``unexplained``       the runs show misfit (a catalogue test or lack of fit against replicated runs) but no
+                      catalogue cause accounts for it: the tests that fired are the evidence;
+``does_not_predict``  the quadratic predicts left-out runs worse than their mean (Q² < 0): whatever the
+                      cause, the surrogate should not be used to decide admissibility.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+from scipy import optimize, stats
+
+from .models import _g, _num
+
+if TYPE_CHECKING:
+    from ..surrogate import SurrogateFit
+    from .models import _Data
+
+VERDICTS = ("adequate", "defect", "unexplained", "does_not_predict")
+
+#: After the named extensions, a family member still rejected at this fraction of the family level
+#: means misfit the named causes do not explain (1 % for the default 5 %: a correct extension then
+#: leaves a false residual alarm in about one table in a hundred).
+RESIDUAL_MISFIT_LEVEL = 0.2
+
+#: A slipped factor value is named only when the run's response is at least this many times more probable
+#: under the slips than under a mean shift of unknown size (Bayes factor, see catalogue._slip_fit): with
+#: equal prior odds, the more probable explanation of the run is named and the other listed with it.
+SLIP_BAYES_FACTOR = 1.0
+
+#: Power at which the detectable size of a defect is quoted.
+POWER = 0.8
+
+_TEST_WORDS = {"lack_of_fit": "lack of fit against the replicated runs", "missing_term": "missing term",
+               "response_transform": "response transform", "outlier": "outlying run", "drift": "run-order drift",
+               "heteroscedasticity": "unequal scatter with", "factor_level": "run fitting another factor level"}
+
+
+def _entry_text(e: dict) -> str:
+    words = _TEST_WORDS.get(e["cause"], e["cause"])
+    detail = e.get("detail")
+    if e["cause"] in ("outlier", "factor_level") and detail not in (None, ""):
+        words += f" (run {detail})"
+    elif detail not in (None, "", "boxcox", "run"):
+        words += f" {detail}"
+    p = e.get("p_family")
+    return words + (f" (family-wise p = {p:.3g})" if p is not None else "")
+
+
+def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], remaining: list[dict],
+                         family_alpha: float) -> dict:
+    """The evidence of misfit that no catalogue cause accounts for, and its message."""
+    p_values = [e["p_family"] for e in fired + remaining if e.get("p_family") is not None]
+    text = (f"{response}: the runs show misfit that no catalogued cause accounts for. Tests that fired at the "
+            f"family-wise {100 * family_alpha:g} % level: " + "; ".join(_entry_text(e) for e in fired) + ".")
+    if tried:
+        text += (" The best catalogue explanation, " + ", then ".join(
+            f"{_TEST_WORDS.get(t['cause'], t['cause'])} {t['detail']}" for t in tried)
+            + ", leaves misfit behind (" + "; ".join(_entry_text(e) for e in remaining) + "), so it is not named.")
+    text += (" Look for what differs between the runs that misfit (a factor value entered differently in the "
+             "simulation, a change of version or settings, a regime the quadratic cannot follow) before "
+             "trusting the surrogate.")
+    detail = ";".join(dict.fromkeys(e["cause"] for e in fired))
+    return {"detail": detail, "p_value": min(p_values) if p_values else None, "tests": fired,
+            "tried": tried, "remaining": remaining, "message": text}
+
+
+def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power: float = POWER) -> float | None:
+    """Size, in residual standard deviations, of a one-degree-of-freedom departure (a shifted run, an
+    omitted term's contribution) that the family finds with probability ``power``.
+
+    Bonferroni over the family's tests (conservative: the step-down min-P test is at least as
+    powerful), noncentral F with 1 and df - 1 degrees of freedom.
+    """
+    df = df_resid - 1
+    if df < 2 or n_tests < 1:
+        return None
+    crit = stats.f.ppf(1.0 - family_alpha / n_tests, 1, df)
+
+    def gap(lam):
+        return stats.ncf.sf(crit, 1, df, lam) - power
+
+    lam = optimize.brentq(gap, 1e-6, 1e4)
+    return math.sqrt(lam)
+
+
+def power_caveat(response: str, n_runs: int, df_resid: int, n_tests: int, family_alpha: float,
+                 resid_std: float) -> dict:
+    k = detectable_departure(df_resid, n_tests, family_alpha)
+    if k is None:
+        return {"detectable_sd": None, "detectable": None,
+                "message": f"{response}: adequate as far as can be told, but with {n_runs} runs too few spare "
+                           f"runs remain to test the quadratic at all."}
+    size = k * resid_std if np.isfinite(resid_std) else float("nan")
+    return {"detectable_sd": k, "detectable": _num(size), "power": POWER,
+            "message": f"{response}: adequate — none of the {n_tests} tests fired at the family-wise "
+                       f"{100 * family_alpha:g} % level. With {n_runs} runs the tests find a departure of about "
+                       f"{k:.1f} residual standard deviations ({_g(size, 3)} in response units: one shifted run, "
+                       f"or an omitted term of that size) with {100 * POWER:.0f} % probability; smaller defects "
+                       f"may be present."}
+
+
+def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
+               family_alpha: float) -> tuple[str, dict]:
+    """The verdict and what supports it (numbers for the JSON, a message for the report)."""
+    st = fit.statistics()
+    n = st.n_runs
+    loo = math.sqrt(st.press / n) if np.isfinite(st.press) else float("nan")
+    detail = {"q2": _num(st.q2), "loo_rmse": _num(loo), "rmse": _num(st.rmse), "lof_p": _num(st.lof_p)}
+    r = data.response
+    if np.isfinite(st.q2) and st.q2 < 0:
+        why = ("" if not (findings or unexplained) else
+               f" Criticism: {'; '.join(f'{f.cause} ({f.detail})' for f in findings) or 'misfit unexplained'}.")
+        detail["message"] = (f"{r}: does not predict — the quadratic predicts left-out runs worse than their mean "
+                             f"(Q² = {st.q2:.2f}; leave-one-out error {_g(loo)} against a residual RMSE of "
+                             f"{_g(st.rmse)}). Do not use this surrogate to decide admissibility; scenarios that "
+                             f"use {r} inherit its error.{why}")
+        return "does_not_predict", detail
+    if findings:
+        detail["message"] = f"{r}: defect named — " + " ".join(f.message for f in findings)
+        return "defect", detail
+    if unexplained:
+        detail["message"] = unexplained["message"]
+        return "unexplained", detail
+    caveat = power_caveat(r, n, n - st.n_params, len(catalogue), family_alpha, st.resid_std)
+    detail.update({k: v for k, v in caveat.items() if k != "message"})
+    detail["message"] = caveat["message"]
+    return "adequate", detail
