@@ -140,3 +140,17 @@ def test_polished_spans_of_a_set_in_two_pieces():
     reach = 0.3 * np.sqrt(1.2)
     np.testing.assert_allclose(lower, [0.5 - reach, 0.0], atol=1e-7)
     np.testing.assert_allclose(upper, [0.5 + reach, 1.0], atol=1e-7)
+
+
+def test_polished_spans_of_a_set_between_the_nodes():
+    """y1 = a within 0.4 % of 0.5 and y2 = max(b, 0.4) within 0.4 % of 0.5125: the rectangle
+    0.498 <= a <= 0.502, 0.5125 (1 -+ 0.004) for b, which holds no node of the 21-point grid.  Below
+    b = 0.4, y2 is flat, 22 % off its target (no gradient leads out): polishing starts from the nodes
+    that violate the bands least, and reaches the rectangle's edges."""
+    fields = {"y1": along(0), "y2": Field(lambda x: np.maximum(x[:, 1], 0.4))}
+    targets = {"y1": 0.5, "y2": 0.5125}
+    grid = admissible_set(fields, SQUARE, ["y1", "y2"], targets, 0.004, 21)
+    assert grid.n_admissible_nodes == 0
+    lower, upper = polish_spans(fields, SQUARE, ["y1", "y2"], targets, 0.004, grid)
+    np.testing.assert_allclose(lower, [0.498, 0.5125 * 0.996], atol=1e-7)
+    np.testing.assert_allclose(upper, [0.502, 0.5125 * 1.004], atol=1e-7)
