@@ -1,10 +1,30 @@
-"""Shared fixtures: small synthetic CCD studies written to temporary folders."""
+"""Shared fixtures: small synthetic CCD studies written to temporary folders, and the demo study
+run once per session."""
 
 from __future__ import annotations
+
+import shutil
 
 import pytest
 
 from .helpers import make_ccd_table
+from .workflow_helpers import REPO, run_snakemake
+
+
+@pytest.fixture(scope="session")
+def demo_run(tmp_path_factory):
+    """The demo study run once as a user runs it (configured grids), in a temporary folder.
+
+    Shared by every test module that reads the demo's results, so the suite runs the full
+    workflow once.  Treat it as read-only: a test that edits inputs works on
+    :func:`~tests.workflow_helpers.copy_of_run`.
+    """
+    root = tmp_path_factory.mktemp("demo_run")
+    shutil.copytree(REPO / "data", root / "data")
+    shutil.copy(REPO / "config.yaml", root / "config.yaml")
+    proc = run_snakemake(root, root / "config.yaml", timeout=1200)
+    assert proc.returncode == 0, proc.stderr[-4000:]
+    return root
 
 
 @pytest.fixture

@@ -1,32 +1,26 @@
-"""The demo study as a user runs it (coarse grids to keep the suite fast): a one-cell edit of the mortar
-table reruns only mortar jobs and the cross-material outputs; a no-op rerun schedules nothing."""
+"""The demo study as a user runs it (configured grids; the session's one run, see conftest): a
+one-cell edit of the mortar table reruns only mortar jobs and the cross-material outputs; a no-op
+rerun schedules nothing."""
 
 from __future__ import annotations
 
 import re
-import shutil
 
 import pytest
 
-from .workflow_helpers import REPO, planned_jobs, run_snakemake
+from .workflow_helpers import copy_of_run, planned_jobs, run_snakemake
 
 pytestmark = pytest.mark.workflow
 
-COARSE = ["--config", "grid_points=101", "grid_points_3d=21"]
-
 
 @pytest.fixture(scope="module")
-def demo_copy(tmp_path_factory):
-    root = tmp_path_factory.mktemp("demo")
-    shutil.copytree(REPO / "data", root / "data")
-    shutil.copy(REPO / "config.yaml", root / "config.yaml")
-    proc = run_snakemake(root, root / "config.yaml", *COARSE, timeout=900)
-    assert proc.returncode == 0, proc.stderr[-4000:]
-    return root
+def demo_copy(demo_run, tmp_path_factory):
+    """A copy of the session's demo run: the tests here edit its inputs."""
+    return copy_of_run(demo_run, tmp_path_factory.mktemp("demo") / "run")
 
 
 def test_noop_rerun_schedules_nothing(demo_copy):
-    proc = run_snakemake(demo_copy, demo_copy / "config.yaml", "-n", *COARSE)
+    proc = run_snakemake(demo_copy, demo_copy / "config.yaml", "-n")
     assert proc.returncode == 0, proc.stderr[-2000:]
     assert planned_jobs(proc.stdout) == {}, proc.stdout[-3000:]
 
@@ -40,7 +34,7 @@ def test_mortar_edit_reruns_only_mortar_and_summaries(demo_copy):
     cells[col] = f"{float(cells[col]) + 0.01:.4f}"
     lines[1] = ",".join(cells)
     path.write_text("\n".join(lines) + "\n", encoding="utf-8")
-    proc = run_snakemake(demo_copy, demo_copy / "config.yaml", "-n", *COARSE)
+    proc = run_snakemake(demo_copy, demo_copy / "config.yaml", "-n")
     assert proc.returncode == 0, proc.stderr[-2000:]
     jobs = planned_jobs(proc.stdout)
     assert jobs.get("validate_table") == 1 and jobs.get("fit_surrogates") == 1, proc.stdout[-3000:]

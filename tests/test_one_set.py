@@ -11,14 +11,13 @@ lines restricted to the span (two resolutions bound the rule's error).
 
 from __future__ import annotations
 
-import shutil
 
 import numpy as np
 import pandas as pd
 import pytest
 import yaml
 
-from .workflow_helpers import REPO, run_snakemake
+from .workflow_helpers import REPO
 
 pytestmark = pytest.mark.workflow
 
@@ -30,13 +29,9 @@ FRACTION_RTOL = 1e-3
 
 
 @pytest.fixture(scope="module")
-def demo(tmp_path_factory):
-    """The demo study run as a user runs it (configured grids), in a temporary folder."""
-    root = tmp_path_factory.mktemp("one_set")
-    shutil.copytree(REPO / "data", root / "data")
-    shutil.copy(REPO / "config.yaml", root / "config.yaml")
-    proc = run_snakemake(root, root / "config.yaml", timeout=1200)
-    assert proc.returncode == 0, proc.stderr[-4000:]
+def demo(demo_run):
+    """The demo study run as a user runs it (configured grids; the session's one run)."""
+    root = demo_run
     tables = root / "results" / "tables"
     return {"root": root, "identifiability": pd.read_csv(tables / "identifiability.csv"),
             "robust": pd.read_csv(tables / "robust_identifiability.csv"),

@@ -5,6 +5,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import shutil
 import struct
 import subprocess
 import sys
@@ -18,6 +19,12 @@ def run_snakemake(workdir: Path, configfile: Path, *args: str, timeout: int = 30
            *args]
     env = dict(os.environ, PYTHONWARNINGS="ignore")
     return subprocess.run(cmd, cwd=REPO, capture_output=True, text=True, timeout=timeout, env=env)
+
+
+def copy_of_run(run: Path, destination: Path) -> Path:
+    """A copy of a finished run (inputs, results and Snakemake's records, modification times kept)."""
+    shutil.copytree(run, destination, symlinks=True)
+    return destination
 
 
 def sha256(path: Path) -> str:
