@@ -46,17 +46,28 @@ ROOT = Path(__file__).resolve().parents[1]
 # Module -> (functions to mutate, tests that guard them).  ``functions``: qualified names
 # ("Class.method" or "function"); None = every function and method in the file.
 # ``tests``: pytest arguments (files, node ids, -k expressions), run from the repository root.
+# the fast tests of tests/test_stranger_tables.py that read and validate tables (the others run criticism)
+_READ_TABLE_TESTS = [f"tests/test_stranger_tables.py::{name}" for name in (
+    "test_valid_designs_validate_and_are_coded_by_their_geometry",
+    "test_mistyped_factor_cell_is_located_not_absorbed_into_the_coding",
+    "test_spherical_ccd_whose_centre_runs_all_failed_is_refused",
+    "test_failed_run_with_a_value_left_in_its_cell_is_an_error",
+    "test_partial_failure_is_written_as_nan_with_status_ok",
+    "test_ambiguous_thousands_separator_is_not_silently_read_as_decimal_comma",
+    "test_line_numbers_count_comment_and_blank_lines",
+    "test_numbers_written_1e_minus_6_are_read_as_numbers")]
 TABLE: dict[str, dict] = {
     "demid/sampling/grid.py": {
         "functions": None,
-        "tests": ["tests/test_admissibility.py", "tests/test_core_contracts.py",
+        "tests": ["tests/test_set_estimators.py", "tests/test_admissibility.py", "tests/test_core_contracts.py",
                   "tests/test_uncertainty.py::test_plane_band_fraction_matches_sampling",
                   "tests/test_uncertainty.py::test_fraction_with_error_reports_grid_error_and_3d_shell",
                   "tests/test_uncertainty.py::test_polish_spans_thin_set_without_admissible_nodes"],
     },
     "demid/sampling/domain.py": {
         "functions": None,
-        "tests": ["tests/test_admissibility.py", "tests/test_core_contracts.py", "tests/test_uncertainty.py"],
+        "tests": ["tests/test_set_estimators.py", "tests/test_admissibility.py", "tests/test_core_contracts.py",
+                  "tests/test_uncertainty.py"],
     },
     "demid/sampling/residuals.py": {
         "functions": ["relative_residuals"],
@@ -64,19 +75,20 @@ TABLE: dict[str, dict] = {
     },
     "demid/sampling/sobol.py": {
         "functions": ["sobol_admissible_set", "_extreme_points", "sobol_fraction"],
-        "tests": ["tests/test_uncertainty.py", "tests/test_admissibility.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/test_set_estimators.py", "tests/test_uncertainty.py", "tests/test_admissibility.py",
+                  "tests/test_core_contracts.py"],
     },
     "demid/sampling/polish.py": {
         "functions": ["_start_points", "_polish", "polish_spans"],
-        "tests": ["tests/test_uncertainty.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/test_set_estimators.py", "tests/test_uncertainty.py", "tests/test_core_contracts.py"],
     },
     "demid/surrogate.py": {
         "functions": None,
-        "tests": ["tests/test_surrogate.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/test_surrogate.py", "tests/test_statistics_known_answers.py", "tests/test_core_contracts.py"],
     },
     "demid/criticism/models.py": {
         "functions": ["infer_axial_distance", "_orth", "_residualize", "_hat", "_boxcox", "_inv_boxcox", "_aicc"],
-        "tests": ["tests/test_criticism.py", "tests/test_core_contracts.py",
+        "tests": ["tests/test_statistics_known_answers.py", "tests/test_criticism.py", "tests/test_core_contracts.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/catalogue.py": {
@@ -91,7 +103,8 @@ TABLE: dict[str, dict] = {
     "demid/transcription/printed.py": {
         "functions": ["PrintedValue.half_width", "PrintedValue.agrees", "PrintedValue.misfit", "_decimals_of",
                       "parse_printed", "_positional", "_printed_column", "_precision", "_irregularity"],
-        "tests": ["tests/test_transcription.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/test_transcription.py", "tests/test_statistics_known_answers.py",
+                  "tests/test_transcription_printed_inputs.py", "tests/test_core_contracts.py"],
     },
     "demid/transcription/typos.py": {
         "functions": ["single_cell_slips"],
@@ -104,11 +117,12 @@ TABLE: dict[str, dict] = {
     "demid/data.py": {
         "functions": ["parse_number", "read_table", "infer_coding", "check_design", "check_bounds",
                       "validate_material"],
-        "tests": ["tests/test_data.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/test_data.py", "tests/test_core_contracts.py", *_READ_TABLE_TESTS],
     },
     "demid/design.py": {
         "functions": None,
-        "tests": ["tests/test_design.py", "tests/test_data.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/test_design.py", "tests/test_data.py", "tests/test_core_contracts.py",
+                  "tests/test_stranger_tables.py::test_valid_designs_validate_and_are_coded_by_their_geometry"],
     },
     "demid/io.py": {
         "functions": None,
@@ -122,10 +136,6 @@ TABLE: dict[str, dict] = {
 _NUMPY_FLOAT = "np.float64 is a float subclass: the value and every later use are the same"
 EQUIVALENT: dict[str, str] = {
     # --- admissibility
-    "demid/sampling/domain.py::Domain.from_config::float(factors_cfg[f]['lower']) => factors_cfg[f]['lower']#0":
-        "bounds are schema-validated numbers and only enter float arithmetic (model_units copies to float)",
-    "demid/sampling/domain.py::Domain.from_config::float(factors_cfg[f]['upper']) => factors_cfg[f]['upper']#0":
-        "bounds are schema-validated numbers and only enter float arithmetic (model_units copies to float)",
     "demid/sampling/domain.py::Domain.sobol::0 => 1#0":
         "the default scramble seed: any fixed seed gives an equally stratified, equally deterministic sample",
     "demid/sampling/grid.py::_curvature_margin::float(np.max(np.abs(d2))) => np.max(np.abs(d2))#0": _NUMPY_FLOAT,
@@ -136,6 +146,17 @@ EQUIVALENT: dict[str, str] = {
         "and found again",
     "demid/sampling/sobol.py::sobol_admissible_set::int(est.evaluations + resid.size) => "
     "est.evaluations + resid.size#0": "both terms are Python ints already",
+    "demid/sampling/domain.py::Domain.sobol::1 => 0#0":
+        "max(1, m) -> max(0, m): m = ceil(log2(max(n, 2))) is at least 1 already",
+    "demid/sampling/grid.py::cell_count::1 => 2#5":
+        "reshape(-2, d): numpy takes any negative size as the one unknown dimension, so the shape is the same "
+        "(checked with numpy 2.4.6)",
+    "demid/sampling/grid.py::admissible_set::float(worst.ravel()[best]) => worst.ravel()[best]#0":
+        _NUMPY_FLOAT + " (best_error only enters a float column of to_frame and a comparison in evaluate_set)",
+    "demid/sampling/sobol.py::sobol_admissible_set::float(mask.mean()) => mask.mean()#0":
+        _NUMPY_FLOAT + " (node_fraction only enters a float column of to_frame)",
+    "demid/sampling/sobol.py::sobol_fraction::float(means.mean()) => means.mean()#0":
+        _NUMPY_FLOAT + " (the fraction enters arithmetic, max/min, float columns and JSON through _clean)",
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",
@@ -152,6 +173,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/models.py::_inv_boxcox::700 => 699#1": "overflow clip of exp(): differs only beyond e^699",
     "demid/criticism/models.py::_inv_boxcox::700 => 701#0": "overflow clip of exp(): differs only beyond e^700",
     "demid/criticism/models.py::_inv_boxcox::700 => 701#1": "overflow clip of exp(): differs only beyond e^700",
+    "demid/criticism/models.py::infer_axial_distance::float(np.max(col)) => np.max(col)#0":
+        _NUMPY_FLOAT + " (col is a float array; hi is only compared and used in arithmetic)",
     "demid/criticism/models.py::_aicc::float('nan') => 'nan'#0":
         "the value is only read through _num(), which turns 'nan' and nan alike into None",
     "demid/criticism/catalogue.py::_het_lr::np.sum(r * r, axis=0) / n => np.sum(r * r, axis=0)#0":
@@ -160,6 +183,13 @@ EQUIVALENT: dict[str, str] = {
         "only runs with leverage in [1 - 1e-10, 1) change: their residual is of order (1 - h), so t is of "
         "order sqrt(1 - h) < 1e-5 either way and never the maximum; h rounded to 1 is excluded by both",
     # --- transcription
+    "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
+        "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
+        "groups); each group mean is then the run's own value (a product with a 0/1 matrix, exact), so "
+        "ss_pe == 0 exactly and 'ss_pe > 0' already gives NaN",
+    "demid/transcription/printed.py::_positional::'e' in text or 'E' in text => 'e' in text#0":
+        "text is repr(float), which writes an exponent with a lower-case 'e' only (and _positional is only "
+        "called with finite values)",
     "demid/transcription/engine.py::_statistics::n = np.broadcast_to(n, sse.shape) => pass#0":
         "numpy broadcasts the scalar n in every later expression: the same arrays result",
     # --- uncertainty
@@ -188,8 +218,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/io.py::write_parquet::False => True#2":
         "with no float column every column is dictionary-encoded, which byte-stream-split does not touch: "
         "the file's bytes are identical (checked with pyarrow 26)",
-    "demid/io.py::write_csv::frame.to_csv(tmp, index=False, float_format=FLOAT_FORMAT, lineterminator='\\n') => "
-    "frame.to_csv(tmp, index=False, float_format=FLOAT_FORMAT)#0":
+    "demid/io.py::write_csv::round_significant(frame).to_csv(tmp, index=False, "
+    "float_format=f'%.{CSV_SIGNIFICANT_DIGITS}g', lineterminator='\\n') => round_significant(frame).to_csv(tmp, "
+    "index=False, float_format=f'%.{CSV_SIGNIFICANT_DIGITS}g')#0":
         "pandas' default line terminator is os.linesep, '\\n' on the POSIX systems demid runs on",
     "demid/io.py::_clean::float(obj) => obj#0": _NUMPY_FLOAT,
 }
