@@ -280,13 +280,20 @@ class SurrogateFit:
             # 0/0: residuals and their scale are both round-off, their ratio is noise (up to 1e136)
             frame["student_resid"] = np.nan
             frame["cooks_d"] = np.nan
+        # A run of leverage 1 is fitted exactly whatever its value: its residual is round-off and
+        # dividing it by 1 - h (leave-one-out residual, studentised residual, Cook's distance) gives
+        # noise of any size (Cook's d ~ 2e4 seen), not a statistic.  Undefined, so NaN.
+        exact = self.hat_diag > 1 - 1e-9
+        frame.loc[exact, ["student_resid", "cooks_d"]] = np.nan
+        with np.errstate(divide="ignore", invalid="ignore"):
+            loo = np.where(exact, np.nan, self.results.resid.to_numpy() / (1 - self.hat_diag))
         out = pd.DataFrame({
             "response": self.response,
             "run": self.runs,
             "observed": self.y,
             "fitted": self.results.fittedvalues.to_numpy(),
             "residual": self.results.resid.to_numpy(),
-            "loo_residual": self.results.resid.to_numpy() / (1 - self.hat_diag),
+            "loo_residual": loo,
             "student_resid": frame["student_resid"].to_numpy(),
             "leverage": frame["hat_diag"].to_numpy(),
             "cooks_d": frame["cooks_d"].to_numpy(),

@@ -97,3 +97,25 @@ def test_printed_bounds_admit_their_own_value_up_to_round_off():
     at_most, at_least = parse_printed("<=0.3"), parse_printed(">=0.3")
     assert at_most.agrees(0.1 + 0.2) and at_least.agrees(0.7 - 0.4)
     assert not at_most.agrees(0.300001) and not at_least.agrees(0.299999)
+
+
+def test_runs_fitted_exactly_have_no_influence_statistics():
+    """A run of leverage 1 is reproduced whatever its value: its leave-one-out residual and Cook's
+    distance are undefined (NaN), not round-off divided by round-off; other runs keep statsmodels'."""
+    table = MONTGOMERY.drop(index=[9, 10, 11])
+    fit = fit_response(table, ["x1", "x2"], "y", alpha=1.414)
+    x1, x2 = table["x1"].to_numpy(float), table["x2"].to_numpy(float)
+    exog = np.column_stack([np.ones(len(table)), x1, x2, x1 * x2, x1 ** 2, x2 ** 2])
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore")
+        reference = OLSInfluence(sm.OLS(table["y"].to_numpy(float), exog).fit())
+        leverage, cooks, resid = reference.hat_matrix_diag, reference.cooks_distance[0], reference.resid
+        influence = fit.influence()
+        max_cooks = fit.diagnostics().max_cooks_d
+    exact = leverage > 1 - 1e-9
+    assert exact.sum() == 5
+    assert influence.loc[exact, ["loo_residual", "cooks_d", "student_resid"]].isna().all().all()
+    np.testing.assert_allclose(influence.loc[~exact, "cooks_d"], cooks[~exact], rtol=1e-9)
+    np.testing.assert_allclose(influence.loc[~exact, "loo_residual"], resid[~exact] / (1 - leverage[~exact]),
+                               rtol=1e-9)
+    assert max_cooks == pytest.approx(np.max(cooks[~exact]), rel=1e-9)
