@@ -12,7 +12,6 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
-from scipy import stats
 
 from ..design import model_matrix, nominal_levels, replicate_groups
 from ..errors import InputError
@@ -40,6 +39,9 @@ def _lack_of_fit_p(out: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
     lof_p = np.full(lof_f.shape, np.nan)
     ok = np.isfinite(lof_f)
     if ok.any():
+        # scipy on first use: the workflow's parse-time typo screen imports this package
+        from scipy import stats
+
         lof_p[ok] = stats.f.sf(lof_f[ok], out["_df_lof"][ok], out["_df_pe"][ok])
     out["lof_p"] = lof_p
     return out
