@@ -21,7 +21,7 @@ if TYPE_CHECKING:
 
 @dataclass
 class ValidatedMaterial:
-    """Outputs of ``validate_table``: the checked table, the transcription check, the summary JSON."""
+    """The validation half of ``validate_and_fit``: the checked table, the transcription check, the summary JSON."""
 
     table: pd.DataFrame
     transcription: pd.DataFrame
