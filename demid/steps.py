@@ -68,7 +68,8 @@ def admissibility_step(surrogates: dict, spec: MaterialSpec, table: pd.DataFrame
     from .sampling.stored import set_state_frame
 
     n = spec.grid_points
-    grid = predict_grid(surrogates, spec.domain, n)
+    observed = {o for scen in spec.scenarios for o in scen.observables}  # (not, e.g., a Pareto objective)
+    grid = predict_grid({r: s for r, s in surrogates.items() if r in observed}, spec.domain, n)
     frame, sets = evaluate_scenarios(surrogates, spec, n, grid)
     del grid  # the figures need only the node masks; free the dense predictions first
     frame.insert(0, "material", spec.name)
