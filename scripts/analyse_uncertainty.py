@@ -15,6 +15,6 @@ result = analyse_material(surrogates, spec, z=params.z, tolerances=params.tolera
                           strict_sets=stored_strict_sets(read_parquet(inp.scenarios), surrogates, spec))
 for name in ("robust", "sweep", "information_gain", "ranking"):
     write_parquet(getattr(result, name), getattr(out, name))
-write_json({"advice": result.advice, "notes": result.notes}, out.summary)
+write_json(result.summary, out.summary)
 save_figure(result.sweep_figure(spec.label), out.sweep_figure)
 save_figure(result.posterior_figure(spec.label), out.posterior_figure)

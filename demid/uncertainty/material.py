@@ -55,6 +55,11 @@ class MaterialUncertainty:
     notes: list[str]
     factor_labels: dict[str, str] = field(default_factory=dict)
 
+    @property
+    def summary(self) -> dict:
+        """``uncertainty/{material}.json``: the next-measurement advice and the notes on sizes and sigmas."""
+        return {"advice": self.advice, "notes": self.notes}
+
     def sweep_figure(self, title: str):
         return tolerance_sweep_figure(self.sweep, title, factor_labels=self.factor_labels)
 
