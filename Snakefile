@@ -10,7 +10,6 @@ if not workflow.overwrite_configfiles:
 
 
 include: "workflow/rules/common.smk"
-include: "workflow/rules/validate.smk"
 include: "workflow/rules/fit.smk"
 include: "workflow/rules/admissibility.smk"
 include: "workflow/rules/pareto.smk"

@@ -16,8 +16,10 @@ SCHEMA_PATH = Path(__file__).resolve().parent / "schemas" / "config.schema.yaml"
 
 
 def load_schema(path: Path | str = SCHEMA_PATH) -> dict:
+    # libyaml's safe loader when built (same YAML rules, ~10x faster): every parse of the workflow reads this
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
     with open(path, encoding="utf-8") as fh:
-        return yaml.safe_load(fh)
+        return yaml.load(fh, Loader=loader)  # noqa: S506 (a safe loader)
 
 
 def material_property(key: str) -> dict:

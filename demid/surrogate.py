@@ -199,12 +199,13 @@ class SurrogateFit:
         self.log_factors = tuple(log_factors)
         # statsmodels is imported here, not at module level: grid and scenario jobs only need
         # the light Surrogate predictor and should not pay for its import.
-        import statsmodels.api as sm
+        # (the OLS class itself: statsmodels.api would also import its graphics and time-series modules)
+        from statsmodels.regression.linear_model import OLS
 
         self.coded = coding.to_coded(model_units(self.x_actual, self.factors, self.log_factors))
         exog = pd.DataFrame(model_matrix(self.coded, self.terms), columns=self.term_names)
         endog = pd.Series(self.y, name=response)
-        self.results = sm.OLS(endog, exog).fit()
+        self.results = OLS(endog, exog).fit()
 
     @property
     def term_names(self) -> list[str]:

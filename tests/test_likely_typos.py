@@ -39,3 +39,39 @@ def test_planted_slip_is_flagged_and_clean_table_is_silent(tmp_path, seed, slip)
     flags = likely_typos(vt, _cfg(path), read_printed(path, vt.table))
     assert [(f["run"], f["column"]) for f in flags] == [(5, "y")]
     assert flags[0]["suggested"] == pytest.approx(true_value)
+
+
+@pytest.mark.parametrize("df", [1, 2, 3, 4, 5, 8, 13, 40, 121])
+def test_two_sided_t_p_matches_scipy(df):
+    import numpy as np
+    from scipy import stats
+
+    from demid.transcription.typos import two_sided_t_p
+
+    t = np.concatenate([[0.0, np.nan, np.inf], np.geomspace(1e-3, 200.0, 60), -np.geomspace(0.5, 30.0, 7)])
+    expected = 2 * stats.t.sf(np.abs(t), df)
+    got = two_sided_t_p(t, df)
+    assert np.isnan(got[1])
+    finite = ~np.isnan(t)
+    np.testing.assert_allclose(got[finite], expected[finite], rtol=0, atol=1e-13)
+    small = finite & (expected > 1e-8) & (expected < 1e-2)  # the Bonferroni thresholds live here
+    np.testing.assert_allclose(got[small], expected[small], rtol=1e-6)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_studentised_residuals_match_statsmodels(tmp_path, seed):
+    import numpy as np
+
+    from demid.design import quadratic_terms
+    from demid.surrogate import fit_response
+    from demid.transcription.typos import studentised_residuals
+
+    table = make_ccd_table(lambda x: {"y": 100 + 20 * x[:, 0] - 3 * x[:, 1] + 8 * x[:, 0] ** 2},
+                           [0.1, 1], [0.9, 11], noise=0.3, seed=seed, decimals=2)
+    table.loc[table["run"] == 4, "y"] += 9.0  # one outlying run
+    fit = fit_response(table, ["x1", "x2"], "y")
+    got = studentised_residuals(fit.coded, fit.y, quadratic_terms(2))
+    reference = fit.results.get_influence()
+    np.testing.assert_allclose(got["student_resid"], reference.resid_studentized_external, rtol=1e-9)
+    np.testing.assert_allclose(got["leverage"], reference.hat_matrix_diag, rtol=1e-9)
+    np.testing.assert_allclose(got["residual"], fit.results.resid, rtol=1e-9, atol=1e-9)

@@ -30,3 +30,20 @@ def test_analytic_front_on_a_line():
     assert (res.front["y"] == 0).all() and (res.front["x"] >= 0.5 - 1e-12).all()
     iv = res.intervals.set_index("factor")
     assert iv.loc["x", "lower"] == pytest.approx(0.5) and iv.loc["x", "upper"] == pytest.approx(0.59)
+
+
+def test_sort_order_is_the_two_key_lexsort_with_ties():
+    """The front's sort (one quicksort, full sort of tied runs only) equals lexsort((second, first))."""
+    import numpy as np
+
+    from demid.pareto import _by_first_then_second
+
+    rng = np.random.default_rng(7)
+    for _ in range(100):
+        n = int(rng.integers(1, 400))
+        first = rng.integers(0, 8, n) * 0.25  # many ties in both objectives
+        second = rng.integers(0, 5, n).astype(float)
+        first[rng.random(n) < 0.05] = np.nan
+        first[rng.random(n) < 0.05] = -0.0
+        idx = np.flatnonzero(np.isfinite(first))
+        assert np.array_equal(_by_first_then_second(first, second, idx), idx[np.lexsort((second[idx], first[idx]))])

@@ -131,11 +131,12 @@ def material_run_order(table: pd.DataFrame, spec: MaterialSpec, coding):
 
 
 def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int | None = None,
-                       title: str | None = None) -> MaterialCriticism:
+                       title: str | None = None, strict_sets: dict | None = None) -> MaterialCriticism:
     """Level 1 for every response (with the identifiability effect of any extension) and level 2.
 
     ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry); ``n`` and
-    ``title`` default to its evaluation size and label.
+    ``title`` default to its evaluation size and label.  ``strict_sets`` (scenario name -> the
+    exact strict set the admissibility step stored, with its reference distance) are reused.
     """
     from ..data import infer_coding
 
@@ -150,6 +151,7 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
     n_effect = _effect_points(n, len(factors))
     n_level2 = n_effect if uses_grid(len(factors)) else max(5, int(2e5 ** (1 / len(factors))))
     scenario_sets = _ScenarioSets(surrogates, spec, n_effect)
+    scenario_sets.sets.update(strict_sets or {})
     response_json, frames, results, fits = {}, [], [], []
     for response in spec.response_names:
         result = criticize(table, factors, response, alpha=alpha, log_factors=log_factors, run_order=run_order)

@@ -10,8 +10,8 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
-import statsmodels.api as sm
 from scipy import special
+from statsmodels.regression import linear_model as sm  # OLS, WLS: statsmodels.api would add its graphics and tsa
 from statsmodels.tools.eval_measures import aicc as _sm_aicc
 
 from ..design import model_matrix, model_units, term_name

@@ -18,7 +18,6 @@ import numpy as np
 from .domain import uses_grid
 from .exact import MAX_EXACT_DIM, exact_set, polynomial_from_surrogate
 from .grid import AdmissibleSet, admissible_set
-from .sobol import sobol_admissible_set
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -103,6 +102,8 @@ def _evaluate_set(surrogates, domain, observables, targets, tolerance, n, predic
     if not uses_exact(surrogates, observables, domain):
         if uses_grid(domain.dim):
             return admissible_set(surrogates, domain, observables, targets, tolerance, n, grid_predictions=predictions)
+        from .sobol import sobol_admissible_set  # scipy.stats: only above 3 factors
+
         return sobol_admissible_set(surrogates, domain, observables, targets, tolerance, n, predictions)
     exact = exact_set_on_domain(surrogates, domain, observables, targets, tolerance, reference)
     spans = exact.spans

@@ -10,7 +10,6 @@ import warnings
 from typing import TYPE_CHECKING
 
 import numpy as np
-from scipy import optimize
 
 from .residuals import _fields, _residual_evaluator
 
@@ -37,6 +36,8 @@ def _start_points(evaluate, domain: Domain, aset: AdmissibleSet) -> np.ndarray:
 def _polish(evaluate, domain: Domain, eps: float, lower: np.ndarray, upper: np.ndarray,
             candidates: np.ndarray, starts: int) -> tuple[np.ndarray, np.ndarray]:
     """Extend span ends by SLSQP from the most extreme candidate points (actual units)."""
+    from scipy import optimize  # on first use: exact sets never polish
+
     lo_u, hi_u = domain.search_bounds()
     scale = hi_u - lo_u
 

@@ -10,8 +10,6 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
-from scipy import stats
-from scipy.stats import qmc
 
 from .grid import AdmissibleSet, predict_grid
 from .polish import _polish
@@ -89,6 +87,10 @@ def sobol_fraction(surrogates: dict[str, Surrogate], domain: Domain, observables
     Points are uniform in search units.  With ``polish`` the spans are extended to the
     exact boundary from the extreme admissible points as in :func:`polish_spans`.
     """
+    # scipy.stats on first use: importing the sampling package (every set job) stays light
+    from scipy import stats
+    from scipy.stats import qmc
+
     observables = tuple(observables)
     eps = float(tolerance)
     fields = _fields(surrogates, observables, targets, eps, z, sigma)

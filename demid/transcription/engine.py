@@ -12,7 +12,6 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
-from scipy import stats
 
 from ..design import model_matrix, nominal_levels, replicate_groups
 from ..errors import InputError
@@ -40,7 +39,11 @@ def _lack_of_fit_p(out: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
     lof_p = np.full(lof_f.shape, np.nan)
     ok = np.isfinite(lof_f)
     if ok.any():
-        lof_p[ok] = stats.f.sf(lof_f[ok], out["_df_lof"][ok], out["_df_pe"][ok])
+        # F survival from scipy.special (what scipy.stats.f.sf calls), imported on first use:
+        # scipy.stats costs a second at every start-up and the parse-time typo screen imports this package
+        from scipy.special import fdtrc
+
+        lof_p[ok] = fdtrc(out["_df_lof"][ok], out["_df_pe"][ok], lof_f[ok])
     out["lof_p"] = lof_p
     return out
 

@@ -228,11 +228,11 @@ def _f_ratio(ss_a, ss_b, df_a, df_b):
 
 
 def _f_tail(f, df_a, df_b):
-    from scipy import stats
+    from scipy.special import fdtrc  # scipy.stats.f.sf itself, without importing scipy.stats
 
     with np.errstate(invalid="ignore"):
-        return np.where((df_a > 0) & (df_b > 0) & np.isfinite(f), stats.f.sf(f, np.maximum(df_a, 1),
-                                                                           np.maximum(df_b, 1)), np.nan)
+        return np.where((df_a > 0) & (df_b > 0) & np.isfinite(f), fdtrc(np.maximum(df_a, 1), np.maximum(df_b, 1), f),
+                        np.nan)
 
 
 _FROM_PRINTED = (

@@ -82,6 +82,56 @@ def single_cell_slips(text: str) -> list[tuple[str, str, float]]:
     return [(kind, candidate, value) for value, (kind, candidate) in best.items()]
 
 
+def two_sided_t_p(t, df: int) -> np.ndarray:
+    """P(|T| >= |t|) for Student's t with integer ``df`` >= 1.
+
+    The finite series in cos(theta), theta = atan(|t| / sqrt(df)) (Abramowitz & Stegun
+    26.7.3-4), so the typo screen, which runs when the workflow is parsed, needs no scipy.
+    The absolute error is a few 1e-16: ample for a threshold at family_alpha / n.
+    """
+    t = np.abs(np.asarray(t, dtype=float))
+    theta = np.arctan(t / math.sqrt(df))
+    sin, cos2 = np.sin(theta), np.cos(theta) ** 2
+    term = np.ones_like(t)
+    series = np.ones_like(t)
+    if df % 2 == 0:
+        for k in range(1, df // 2):
+            term = term * cos2 * (2 * k - 1) / (2 * k)
+            series = series + term
+        inside = sin * series
+    elif df == 1:
+        inside = 2 * theta / math.pi
+    else:
+        for k in range(1, (df - 1) // 2):
+            term = term * cos2 * (2 * k) / (2 * k + 1)
+            series = series + term
+        inside = 2 / math.pi * (theta + sin * np.sqrt(cos2) * series)
+    return np.clip(1.0 - inside, 0.0, 1.0)
+
+
+def studentised_residuals(coded: np.ndarray, y: np.ndarray, terms) -> dict[str, np.ndarray]:
+    """Leverage, residual and externally studentised residual of every run of an OLS fit.
+
+    Plain numpy (pseudo-inverse, as statsmodels' OLS), so the screen imports neither scipy nor
+    statsmodels; the definitions are statsmodels' ``get_influence()``: the residual over the
+    scale without the run, s_(i)^2 = (SSE - e_i^2 / (1 - h_i)) / (n - rank - 1).
+    """
+    from ..design import model_matrix
+    from ..surrogate import round_off_only
+
+    x = model_matrix(coded, terms)
+    pinv = np.linalg.pinv(x)
+    residual = y - x @ (pinv @ y)
+    leverage = np.einsum("ij,ji->i", x, pinv)
+    dof = len(y) - np.linalg.matrix_rank(x) - 1
+    with np.errstate(divide="ignore", invalid="ignore"):
+        scale_without = (np.sum(residual ** 2) - residual ** 2 / (1 - leverage)) / dof
+        student = residual / np.sqrt(scale_without * (1 - leverage))
+    if round_off_only(residual, y):
+        student = np.full_like(residual, np.nan)  # 0/0: round-off over round-off is noise
+    return {"leverage": leverage, "residual": residual, "student_resid": student}
+
+
 def likely_typos(validated, material, printed: pd.DataFrame | None = None, *,
                  family_alpha: float = 0.05, kinds=("transposition", "decimal_shift", "sign_lost")) -> list[dict]:
     """Response cells that look mistyped even without published statistics.
@@ -92,33 +142,35 @@ def likely_typos(validated, material, printed: pd.DataFrame | None = None, *,
     leave-one-out standard errors of the prediction from the other runs.  Both
     conditions together keep this silent on clean tables.
     """
-    from scipy import stats as _stats
-
-    from ..surrogate import fit_response
+    from ..design import model_units, quadratic_terms
 
     spec = as_spec(material)
     factors, log_factors = spec.factor_names, spec.log_factors
+    terms = quadratic_terms(len(factors))
     table = validated.table
     flags = []
     for response in spec.response_names:
-        fit = fit_response(table, factors, response, coding=validated.coding, log_factors=log_factors)
-        n, p = fit.n_runs, fit.n_params
+        ok = np.isfinite(table[response].to_numpy(dtype=float))  # failed runs do not enter the fit
+        sub = table.loc[ok]
+        n, p = len(sub), len(terms)
         df = n - p - 1
         if df < 1:
             continue
-        infl = fit.influence()
-        pvals = 2 * _stats.t.sf(np.abs(infl["student_resid"].to_numpy()), df) * n
+        observed = sub[response].to_numpy(dtype=float)
+        coded = validated.coding.to_coded(model_units(sub[factors].to_numpy(dtype=float), factors, log_factors))
+        infl = studentised_residuals(coded, observed, terms)
+        runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, n + 1)
+        pvals = two_sided_t_p(infl["student_resid"], df) * n
         for i in np.flatnonzero(pvals < family_alpha):
-            row = infl.iloc[i]
-            h = row["leverage"]
-            loo_pred = row["observed"] - row["residual"] / (1 - h)
-            s_loo = abs(row["residual"] / row["student_resid"]) / np.sqrt(1 - h) if row["student_resid"] else 0.0
+            h, residual, student = infl["leverage"][i], infl["residual"][i], infl["student_resid"][i]
+            loo_pred = observed[i] - residual / (1 - h)
+            s_loo = abs(residual / student) / np.sqrt(1 - h) if student else 0.0
             se = s_loo * np.sqrt(1 + h / (1 - h))  # prediction error of the run from the others
-            run = row["run"]
+            run = runs[i]
             if printed is not None:
                 text = printed.loc[table["run"].to_numpy() == run, response].iloc[0]
             else:
-                text = repr(float(row["observed"]))
+                text = repr(float(observed[i]))
             best = None
             for kind, suggested_text, value in single_cell_slips(str(text)):
                 if kind not in kinds:
@@ -127,11 +179,11 @@ def likely_typos(validated, material, printed: pd.DataFrame | None = None, *,
                 if distance <= 3 * se and (best is None or distance < best[0]):
                     best = (distance, kind, value)
             if best is not None:
-                flags.append({"run": _jsonable(run), "column": response, "found": float(row["observed"]),
-                              "suggested": best[2], "kind": best[1], "student_resid": float(row["student_resid"]),
+                flags.append({"run": _jsonable(run), "column": response, "found": float(observed[i]),
+                              "suggested": best[2], "kind": best[1], "student_resid": float(student),
                               "predicted_from_other_runs": float(loo_pred),
                               "message": f"{spec.data}, run {_jsonable(run)}, column '{response}': "
                                          f"{text} is far from the fit of the other runs (studentised residual "
-                                         f"{row['student_resid']:.1f}, predicted {loo_pred:.4g}); "
+                                         f"{student:.1f}, predicted {loo_pred:.4g}); "
                                          f"{best[2]:g} ({best[1].replace('_', ' ')}) would fit — likely typo"})
     return flags

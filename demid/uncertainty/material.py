@@ -57,6 +57,11 @@ class MaterialUncertainty:
     scenario_labels: dict[str, str] = field(default_factory=dict)
     unreachable: tuple[str, ...] = ()  # observable sets (d5+d10) with a target out of reach
 
+    @property
+    def summary(self) -> dict:
+        """``uncertainty/{material}.json``: the next-measurement advice and the notes on sizes and sigmas."""
+        return {"advice": self.advice, "notes": self.notes}
+
     def sweep_figure(self, title: str):
         return tolerance_sweep_figure(self.sweep, title, factor_labels=self.factor_labels,
                                       scenario_labels=self.scenario_labels)

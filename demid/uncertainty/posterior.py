@@ -15,8 +15,6 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
-from scipy import interpolate
-from scipy.stats import qmc
 
 from ..sampling import uses_grid
 from ..spec import join_observables
@@ -129,6 +127,8 @@ def _quantiles(axis: np.ndarray, density: np.ndarray, probs) -> np.ndarray:
     cdf = np.concatenate([[0.0], np.cumsum(h * (density[:-1] + density[1:]) / 2)])
     cdf -= h[0] ** 2 / 12 * (slope - slope[0])
     cdf = np.maximum.accumulate(np.maximum(cdf, 0.0))
+    from scipy import interpolate  # on first use: the uncertainty step's start-up stays light
+
     spline = interpolate.CubicHermiteSpline(axis, cdf / cdf[-1], density / cdf[-1])
     out = []
     for q in probs:
@@ -259,6 +259,8 @@ def _qmc_posteriors(surrogates, domain: Domain, observables, targets, sigma, sub
     uniform scrambled-Sobol points; its error is the standard error over 8 independent
     scrambles.  Checked against a closed-form truncated-normal case in 4 factors.
     """
+    from scipy.stats import qmc  # only above 3 factors: scipy.stats is a slow import
+
     replicates = 8
     m = max(4, int(round(np.log2(max(points / replicates, 16)))))
     rng = np.random.default_rng(seed)

@@ -158,11 +158,13 @@ def report_figures():
     return out
 
 
-def config_json(wildcards):
+def report_config_json(wildcards):
+    """What the report reads of the config: the materials (labels, units, scenarios) and the
+    published-values file.  A function, not a string: Snakemake would read braces in labels or
+    units as wildcards."""
     import json
 
-    # A function, not a string: Snakemake would read braces in labels or units as wildcards.
-    return json.dumps(config)  # keeps the config order of materials and responses
+    return json.dumps({"materials": config["materials"], "published": config.get("published")})
 
 
 def with_svg(figures):

@@ -2,6 +2,7 @@ rule criticize_material:
     input:
         table=f"{RESULTS}/validated/{{material}}.parquet",
         fits=f"{RESULTS}/fits/{{material}}.parquet",
+        scenarios=f"{RESULTS}/scenarios/{{material}}.parquet",
     output:
         responses=directory(f"{RESULTS}/criticism/{{material}}"),
         findings=f"{RESULTS}/criticism/{{material}}_findings.parquet",

@@ -1,7 +1,12 @@
-rule fit_surrogates:
+# Validation and the fit share one job: each is a fraction of a second of work, less than a
+# Python start-up with pandas and statsmodels.  Both keep their parquet intermediates.
+rule validate_and_fit:
     input:
-        table=f"{RESULTS}/validated/{{material}}.parquet",
+        data=material_data,
     output:
+        table=f"{RESULTS}/validated/{{material}}.parquet",
+        summary=f"{RESULTS}/validated/{{material}}.json",
+        transcription=f"{RESULTS}/validated/{{material}}_transcription.parquet",
         fits=f"{RESULTS}/fits/{{material}}.parquet",
         statistics=f"{RESULTS}/fits/{{material}}_statistics.parquet",
         anova=f"{RESULTS}/fits/{{material}}_anova.parquet",
@@ -13,8 +18,8 @@ rule fit_surrogates:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/fit/{material}.log",
+        "logs/validate_and_fit/{material}.log",
     benchmark:
-        "benchmarks/fit/{material}.tsv"
+        "benchmarks/validate_and_fit/{material}.tsv"
     script:
-        "../../scripts/fit_surrogates.py"
+        "../../scripts/validate_and_fit.py"

@@ -7,7 +7,7 @@ rule report:
         notebook=f"{RESULTS}/report/report.ipynb",
         html=f"{RESULTS}/report/report.html",
     params:
-        config_json=config_json,
+        config_json=report_config_json,
     resources:
         mem_mb=2000,
     conda:

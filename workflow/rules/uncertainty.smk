@@ -1,6 +1,7 @@
 rule analyse_uncertainty:
     input:
         fits=f"{RESULTS}/fits/{{material}}.parquet",
+        scenarios=f"{RESULTS}/scenarios/{{material}}.parquet",
     output:
         robust=f"{RESULTS}/uncertainty/{{material}}_robust.parquet",
         sweep=f"{RESULTS}/uncertainty/{{material}}_sweep.parquet",
