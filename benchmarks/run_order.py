@@ -12,8 +12,8 @@ tables).  Tables with drift planted (``size`` noise SDs from the first to the la
 randomised order) give the power: ``drift`` = share with a drift finding, ``first`` = share
 whose first finding is drift.  ``untested`` is the share where drift was not tested
 (criticism.run_order; absent before that module existed).  Tables with a missing cubic term
-(``term``, ``size`` noise SDs) printed in standard order show how misfit poses as drift there:
-``drift`` is then the share whose misfit was blamed (at least partly) on drift.
+(``term``, ``size`` noise SDs) printed in standard order check whether misfit poses as drift
+there: ``drift`` is then the share whose misfit was blamed (at least partly) on drift.
 
     python benchmarks/run_order.py --reps 100          # this tree
     PYTHONPATH=/path/to/older/tree python benchmarks/run_order.py --reps 100   # before
