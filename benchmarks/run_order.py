@@ -11,7 +11,9 @@ standard    the design's standard order (factorial in Yates order, axial, centre
 tables).  Tables with drift planted (``size`` noise SDs from the first to the last run, in
 randomised order) give the power: ``drift`` = share with a drift finding, ``first`` = share
 whose first finding is drift.  ``untested`` is the share where drift was not tested
-(criticism.run_order; absent before that module existed).
+(criticism.run_order; absent before that module existed).  Tables with a missing cubic term
+(``term``, ``size`` noise SDs) printed in standard order check whether misfit poses as drift
+there: ``drift`` is then the share whose misfit was blamed (at least partly) on drift.
 
     python benchmarks/run_order.py --reps 100          # this tree
     PYTHONPATH=/path/to/older/tree python benchmarks/run_order.py --reps 100   # before
@@ -37,6 +39,7 @@ from generators import FACTORS, ccd_table, design  # noqa: E402
 from demid.criticism import criticize  # noqa: E402
 
 DRIFT_SIZES = (4, 8, 12)
+TERM_SIZE = 6
 
 
 def renumber(table: pd.DataFrame, seed: int, n_factors: int, order: str) -> pd.DataFrame:
@@ -61,12 +64,14 @@ def one(table: pd.DataFrame, factors: list[str]) -> dict:
             "untested": bool(order is not None and not order.drift_tested)}
 
 
-def run(reps: dict[int, int], seed0: int = 0) -> pd.DataFrame:
+def run(reps: dict[int, int], seed0: int = 0, kinds=("clean", "drift", "term")) -> pd.DataFrame:
     rows = []
     for k, n_reps in reps.items():
         factors = FACTORS[k]
         cells = [("clean", 0, order) for order in ("random", "sorted", "standard")]
         cells += [("drift", size, "random") for size in DRIFT_SIZES]
+        cells += [("term", TERM_SIZE, order) for order in ("random", "standard")]
+        cells = [c for c in cells if c[0] in kinds]
         for kind, size, order in cells:
             counts = {"drift": 0, "first": 0, "untested": 0}
             for r in range(n_reps):
@@ -84,9 +89,11 @@ def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--reps", type=int, default=100, help="tables per cell, 2-factor CCD")
     parser.add_argument("--reps3", type=int, default=None, help="tables per cell, 3-factor CCD (default: --reps)")
+    parser.add_argument("--kinds", default="clean,drift,term", help="table kinds to run (clean, drift, term)")
     args = parser.parse_args(argv)
     start = time.time()
-    frame = run({2: args.reps, 3: args.reps3 if args.reps3 is not None else args.reps})
+    frame = run({2: args.reps, 3: args.reps3 if args.reps3 is not None else args.reps},
+                kinds=tuple(args.kinds.split(",")))
     with pd.option_context("display.width", 200, "display.max_columns", 20):
         print(frame.to_string(index=False, float_format=lambda v: f"{v:.3f}"))
     print(f"\nelapsed {time.time() - start:.0f} s")

@@ -90,10 +90,25 @@ def cmd_validate(args) -> int:
         for flag in confirmed:
             print(f"demid: note: {mat['data']}, run {flag['run']}, column '{flag['column']}': value confirmed "
                   f"in confirmed_values although it looks like a typo", file=sys.stderr)
+        order = _run_order_note(vt, name, mat)
+        if order:
+            print(f"demid: note: {mat['data']}: {order}", file=sys.stderr)
         counts = ", ".join(f"{v} {k}" for k, v in vt.summary(name)["point_types"].items())
         print(f"{name}: {mat['data']} OK ({len(vt.table)} runs: {counts})")
     print(f"{args.config}: configuration and {len(config['materials'])} table(s) valid")
     return 0
+
+
+def _run_order_note(vt, name: str, mat: dict) -> str:
+    """Why drift will not be tested, when the run column cannot be the performed order ("" otherwise)."""
+    from .criticism.material import material_run_order
+    from .spec import MaterialSpec
+
+    spec = MaterialSpec.from_material(name, mat)
+    if spec.run_order == "unknown":
+        return ""
+    why = material_run_order(vt.table, spec, vt.coding).why
+    return f"drift will not be tested: {why}" if why else ""
 
 
 def cmd_criticize(args) -> int:

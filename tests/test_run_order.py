@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -159,3 +160,23 @@ def test_config_key_default_and_validation(tmp_path):
     assert MaterialSpec.from_config("m", unknown).run_order == "unknown"
     with pytest.raises(InputError, match="run_order"):
         load_config(_config(tmp_path, "    run_order: random\n"), base_dir=tmp_path)
+
+
+def test_validate_notes_a_run_column_sorted_by_a_response(tmp_path, capsys):
+    import yaml
+
+    repo = Path(__file__).resolve().parents[1]
+    config = yaml.safe_load((repo / "config.yaml").read_text(encoding="utf-8"))
+    mortar = config["materials"]["mortar"]
+    table = pd.read_csv(repo / mortar["data"])
+    table.to_csv(tmp_path / "randomised.csv", index=False)
+    table.assign(run=table["d10"].rank(method="first").astype(int)).sort_values("run").to_csv(
+        tmp_path / "sorted.csv", index=False)
+    for data, declared, note in (("randomised.csv", "performed", False), ("sorted.csv", "performed", True),
+                                 ("sorted.csv", "unknown", False)):
+        path = tmp_path / f"{data}.{declared}.yaml"
+        path.write_text(yaml.safe_dump({"materials": {"mortar": {**mortar, "data": data, "run_order": declared}}}),
+                        encoding="utf-8")
+        assert main(["validate", "--config", str(path)]) == 0
+        err = capsys.readouterr().err
+        assert ("drift will not be tested: the run order looks sorted by d10" in err) == note, (data, declared, err)

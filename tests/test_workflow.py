@@ -97,7 +97,8 @@ def test_failed_run_and_unreachable_target_complete(study_dir):
     scenarios = read_parquet(study_dir / "results" / "scenarios" / "m.parquet")
     assert (scenarios.loc[scenarios["scenario"] == "both", "best_max_rel_error"] > 0.5).all()
     assert list(ident.columns) == ["material", "scenario", "observables", "tolerance", "feasible_fraction_pct",
-                                   "factor", "lower", "upper", "width"]
+                                   "factor", "lower", "upper", "width", "at_bound"]
+    assert (both["at_bound"] == "none").all()  # an empty set reaches no bound
     summary = (study_dir / "results" / "validated" / "m.json").read_text(encoding="utf-8")
     assert '"y1": [\n      2\n    ]' in summary and "failed" in summary
     report = (study_dir / "results" / "report" / "report.html").read_text(encoding="utf-8")

@@ -49,7 +49,11 @@ class RunOrder:
     reason: str  # "", "declared_unknown", "sorted_by_response", "standard_order"
     correlation: float | None = None  # the rank correlation behind the reason
     response: str | None = None  # the response the run column follows
-    message: str = ""
+    why: str = ""  # why drift is not tested and what to supply, without the verdict
+
+    @property
+    def message(self) -> str:
+        return f"Drift was not tested: {self.why}" if self.why else ""
 
     def to_json(self) -> dict:
         return {"declared": self.declared, "drift_tested": self.drift_tested, "reason": self.reason or None,
@@ -69,20 +73,20 @@ def assess_run_order(runs, coded: np.ndarray, responses: dict[str, np.ndarray],
         raise ValueError(f"run_order must be one of {', '.join(RUN_ORDERS)}, not {declared!r}")
     runs = np.asarray(runs, dtype=float)
     if declared == "unknown":
-        return RunOrder(declared, False, "declared_unknown", message=(
-            "Drift was not tested: the run order is declared unknown (run_order: unknown). To test it, supply "
+        return RunOrder(declared, False, "declared_unknown", why=(
+            "the run order is declared unknown (run_order: unknown). To test it, supply "
             "the order the runs were performed in as the run column and declare it (run_order: performed)."))
     follows = _follows_response(runs, responses)
     if follows is not None:
         name, rho = follows
-        return RunOrder(declared, False, "sorted_by_response", rho, name, message=(
-            f"Drift was not tested: the run order looks sorted by {name} (Spearman rank correlation of run and "
+        return RunOrder(declared, False, "sorted_by_response", rho, name, why=(
+            f"the run order looks sorted by {name} (Spearman rank correlation of run and "
             f"{name} {rho:+.2f}), so a trend with it would only repeat the response. Supply the order the runs "
             f"were performed in as the run column, or declare it unknown (run_order: unknown; --run-order unknown)."))
     rho = standard_order_correlation(runs, coded)
     if rho >= STANDARD_ORDER_CORRELATION:
-        return RunOrder(declared, False, "standard_order", rho, message=(
-            f"Drift was not tested: the run order reproduces the design's standard order (rank correlation "
+        return RunOrder(declared, False, "standard_order", rho, why=(
+            f"the run order reproduces the design's standard order (rank correlation "
             f"{rho:.2f}: factorial points in Yates order, then axial, then centre runs, or a similar systematic "
             f"order), which is how tables are printed, not how randomised runs are made; a trend with it would "
             f"be confounded with the design's structure. Supply the order the runs were performed in as the run "

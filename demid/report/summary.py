@@ -54,7 +54,7 @@ def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: 
     width = (f(upper) - f(lower)) / (f(bound_upper) - f(bound_lower))
     if width >= UNRESOLVED_MIN_WIDTH:
         return "unresolved", width
-    if at_bound is None:
+    if not isinstance(at_bound, str):  # not given (or an older table without the column)
         at_bound = Domain(("x",), (bound_lower,), (bound_upper,), (log,)).at_bound([lower], [upper])[0]
     if at_bound != "none":
         sides = "lower and upper" if at_bound == "both" else at_bound
