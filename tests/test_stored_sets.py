@@ -55,6 +55,7 @@ def test_rebuilt_sets_equal_a_fresh_evaluation(material):
         assert got.exact.reference_distance == fresh.exact.reference_distance
         assert np.array_equal(got.exact.nearest_point, fresh.exact.nearest_point)
         assert got.method == fresh.method
+        assert got.at_bound == fresh.at_bound and len(got.at_bound) == spec.domain.dim  # level 2 reads it
 
 
 def test_rebuilt_sets_carry_the_stored_numbers_not_new_ones(material):

@@ -73,5 +73,7 @@ def stored_strict_sets(frame: pd.DataFrame, surrogates: dict, spec: MaterialSpec
             fraction=float(exact.fraction), node_fraction=np.nan, n_nodes=0, n_admissible_nodes=0,
             n_refined_cells=0, lower=spans["lower"].to_numpy(dtype=float), upper=spans["upper"].to_numpy(dtype=float),
             mask=np.zeros(0, dtype=bool), best_error=float(rows["best_max_rel_error"].iloc[0]),
-            fraction_error=float(exact.fraction_error), method=EXACT_METHOD, exact=exact)
+            fraction_error=float(exact.fraction_error), method=EXACT_METHOD, exact=exact,
+            at_bound=(tuple(rows["at_bound"]) if "at_bound" in rows.columns
+                      else tuple(domain.at_bound(spans["lower"].to_numpy(float), spans["upper"].to_numpy(float)))))
     return sets
