@@ -48,7 +48,8 @@ def study_dir(tmp_path):
 def demo_run(tmp_path_factory):
     """The demo study run once per test session exactly as a user runs it (configured grids), in a
     temporary folder.  Read it, never edit it: tests that change inputs work on :func:`demo_copy`."""
-    
+    from .workflow_helpers import REPO, run_snakemake
+
     root = tmp_path_factory.mktemp("demo_run")
     shutil.copytree(REPO / "data", root / "data")
     shutil.copy(REPO / "config.yaml", root / "config.yaml")
