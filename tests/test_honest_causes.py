@@ -207,3 +207,27 @@ def test_report_warns_about_scenarios_using_a_surrogate_that_does_not_predict():
     assert len(warnings) == 1 and "both" in warnings[0]
     assert any(line.startswith("⚠ The Pareto front uses S") for line in lines)
     assert "the quadratic fits the simulation runs" not in text
+
+
+def test_cli_json_carries_the_verdict_and_the_slip(tmp_path):
+    """`demid criticize` JSON: the earlier keys plus verdict, verdict_detail and unexplained."""
+    import json
+    import subprocess
+    import sys
+
+    table, planted = off_catalogue_table(4, 3, "slip", factor="mu_s", rows=(7,))
+    path = tmp_path / "t.csv"
+    table.to_csv(path, index=False)
+    out = tmp_path / "c.json"
+    proc = subprocess.run([sys.executable, "-m", "demid", "criticize", "--data", str(path), "--factors",
+                           ",".join(FACTORS[3]), "--response", "y", "--out", str(out)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    result = json.loads(out.read_text())
+    for key in ("response", "baseline", "findings", "extended", "gain", "summary", "catalogue", "runs"):
+        assert key in result
+    assert result["verdict"] in ("defect", "does_not_predict")
+    first = result["findings"][0]
+    assert first["cause"] == "factor_level" and first["detail"] == planted.runs[0] and first["factor"] == "mu_s"
+    assert "factor_level" in {c["cause"] for c in result["catalogue"]}
+    assert result["unexplained"] is None and result["verdict_detail"]["message"]

@@ -214,9 +214,9 @@ class _Round:
                 self.hypotheses.append(h)
 
         # --- lack of fit against pure error (replicated runs): a function of the errors alone, so it
-        # joins the family exactly; it shows misfit but names no cause.
-        if spec.weight_on is None:
-            self._lack_of_fit(m, e_obs, e_null)
+        # joins the family exactly; it shows misfit but names no cause.  (Weights depend on a factor or
+        # the fitted value only, so replicated runs share them and whitened pure error stays pure error.)
+        self._lack_of_fit(m, e_obs, e_null)
 
         # --- a run that fits another value of one factor (unit or decimal slip in the simulation input)
         if spec.lam is None and spec.weight_on is None:

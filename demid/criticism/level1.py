@@ -256,8 +256,12 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
         findings.append(_finding(data, response, model, h, spec, info, new, alternatives))
         model = new
         last_round = None
-        if model.df_resid - 1 < 3 or model.spec.weight_on is not None:
-            break  # too few spare runs, or estimated weights (further tests would not be exact)
+        if model.df_resid - 1 < 3:
+            break  # too few spare runs
+        if model.spec.weight_on is not None:
+            # estimated weights: no further cause is named, but what is left is still checked
+            last_round = _Round(data, model, n_null, rng)
+            break
 
     # Honest causes: the named causes must leave no misfit behind.  Misfit that no catalogue cause
     # answers (lack of fit alone), or that remains after the named extensions (any family member still
@@ -316,7 +320,7 @@ def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tupl
         slip_model = fitted_alternatives[i][3]
         others = [alt[3].loglik - alt[3].n_params + slip_model.n_params
                   for j, alt in enumerate(fitted_alternatives)
-                  if j != i and alt[0].cause not in ("outlier", "heteroscedasticity")]
+                  if j != i and alt[0].cause != "outlier"]
         if fitted_alternatives[i][0].info["bayes_factor"] >= SLIP_BAYES_FACTOR and \
                 (not others or slip_model.loglik >= max(others) - 1.0):
             return _with_alternatives(data, fitted_alternatives, i)
