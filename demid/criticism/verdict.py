@@ -36,6 +36,11 @@ RESIDUAL_MISFIT_LEVEL = 1.0
 #: equal prior odds, the more probable explanation of the run is named and the other listed with it.
 SLIP_BAYES_FACTOR = 1.0
 
+#: A named cause must beat every rejected cause of another kind by this much AICc (its extension against
+#: theirs); closer than that, both explain the runs about equally well (Burnham and Anderson: a
+#: difference below 2 is substantial support for both) and the cause is reported as unexplained.
+CAUSE_MARGIN = 2.0
+
 #: Power at which the detectable size of a defect is quoted.
 POWER = 0.8
 
@@ -55,6 +60,13 @@ def _entry_text(e: dict) -> str:
     return words + (f" (family-wise p = {p:.3g})" if p is not None else "")
 
 
+def _rival_text(e: dict) -> str:
+    if e.get("aicc_vs_named") is not None:
+        return (f"{_TEST_WORDS.get(e['cause'], e['cause'])} {e.get('detail', '')} explains the runs about as well, "
+                f"AICc {e['aicc_vs_named']:+.1f}").replace("  ", " ")
+    return "still fired after it: " + _entry_text(e)
+
+
 def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], remaining: list[dict],
                          family_alpha: float) -> dict:
     """The evidence of misfit that no catalogue cause accounts for, and its message."""
@@ -64,7 +76,8 @@ def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], re
     if tried:
         text += (" The best catalogue explanation, " + ", then ".join(
             f"{_TEST_WORDS.get(t['cause'], t['cause'])} {t['detail']}" for t in tried)
-            + ", leaves misfit behind (" + "; ".join(_entry_text(e) for e in remaining) + "), so it is not named.")
+            + ", is not clearly better supported than the rest (" + "; ".join(_rival_text(e) for e in remaining)
+            + "), so it is not named.")
     text += (" Look for what differs between the runs that misfit (a factor value entered differently in the "
              "simulation, a change of version or settings, a regime the quadratic cannot follow) before "
              "trusting the surrogate.")
