@@ -256,12 +256,8 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
         findings.append(_finding(data, response, model, h, spec, info, new, alternatives))
         model = new
         last_round = None
-        if model.df_resid - 1 < 3:
-            break  # too few spare runs
-        if model.spec.weight_on is not None:
-            # estimated weights: no further cause is named, but what is left is still checked
-            last_round = _Round(data, model, n_null, rng)
-            break
+        if model.df_resid - 1 < 3 or model.spec.weight_on is not None:
+            break  # too few spare runs, or estimated weights (further tests would not be exact)
 
     # Honest causes: the named causes must leave no misfit behind.  Misfit that no catalogue cause
     # answers (lack of fit alone), or that remains after the named extensions (any family member still
