@@ -18,7 +18,7 @@ from ..design import Coding, model_matrix, model_units, quadratic_terms, term_na
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .catalogue import _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
-from .verdict import CAUSE_MARGIN, RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, unexplained_evidence, verdict_of
+from .verdict import RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, unexplained_evidence, verdict_of
 from .messages import _CAUSE_WORDS, _message
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
                      infer_axial_distance)
@@ -277,15 +277,11 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
         residual = []
         if findings and last_round is not None:
             residual = [h for h in last_round.hypotheses if h.p_family <= RESIDUAL_MISFIT_LEVEL * family_alpha]
-        rivals = _close_rivals(findings[0]) if findings else []
-        if rivals:  # another kind of cause explains the runs about as well: the data do not single one out
-            residual = residual + [{"cause": a["cause"], "detail": a["detail"], "p_family": a["p_value"],
-                                    "aicc_vs_named": a["aicc_vs_named"]} for a in rivals]
         if (not findings and first_round.misfit(family_alpha)) or residual:
             unexplained = unexplained_evidence(
                 response, [_catalogue_entry(data, h) for h in first_round.misfit(family_alpha)],
                 [{"cause": f.cause, "detail": f.detail} for f in findings],
-                [h if isinstance(h, dict) else _catalogue_entry(data, h) for h in residual], family_alpha)
+                [_catalogue_entry(data, h) for h in residual], family_alpha)
             findings, model = [], base_model
 
     baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
@@ -298,22 +294,6 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
                            summary=summary, family_alpha=family_alpha, unexplained=unexplained, verdict=verdict,
                            verdict_detail=verdict_detail, naming=naming, residuals=_residual_frame(fit),
                            _extended_model=model, _baseline_model=base_model)
-
-
-def _close_rivals(first: Finding) -> list[dict]:
-    """Rejected causes of another kind whose extension is within CAUSE_MARGIN of the named one (AICc).
-
-    Between an outlier and a slip of the same run the Bayes factor has already decided.
-    """
-    out = []
-    for a in first.info.get("alternatives", []):
-        if a["cause"] == first.cause or a.get("aicc_vs_named") is None:
-            continue
-        if {a["cause"], first.cause} == {"outlier", "factor_level"} and a["detail"] == first.detail:
-            continue
-        if a["aicc_vs_named"] < CAUSE_MARGIN:
-            out.append(a)
-    return out
 
 
 def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tuple:
