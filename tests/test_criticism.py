@@ -324,7 +324,7 @@ def test_json_and_frame_contract(tmp_path):
     assert isinstance(doc["findings"][0]["detail"], int)
     frame = res.to_frame()
     assert list(frame.columns) == ["response", "cause", "detail", "aliases", "p_value", "loo_rmse_baseline",
-                                   "loo_rmse_extended", "delta_aicc", "message"]
+                                   "loo_rmse_extended", "delta_aicc", "message", "verdict"]
     frame.to_csv(tmp_path / "criticism.csv", index=False)
     assert len(pd.read_csv(tmp_path / "criticism.csv")) == len(res.findings)
 

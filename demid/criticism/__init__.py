@@ -16,6 +16,19 @@ concrete one-parameter extension:
 ``drift``               a linear term in run order (``run`` column); added-variable F-test.
 ``heteroscedasticity``  likelihood ratio of a log-linear variance, var = s^2 exp(g v), with
                         v each factor and the fitted values; extension: maximum-likelihood WLS.
+``factor_level``        a run whose response fits another value of one factor (a unit or decimal
+                        slip in the simulation input, x 10^+-1..3, within twice the design's reach):
+                        largest drop of the residual sum of squares when the run is moved, null by a
+                        parametric bootstrap sharing the family's draws; named over an outlier when
+                        its Bayes factor against a shift of the run is at least 1; extension: the
+                        run at the value that fits (no added parameter).
+``lack_of_fit``         (a misfit test, no cause) F of lack of fit against pure error of replicated runs.
+
+Honest causes (:mod:`.verdict`).  Misfit that no cause answers (only lack of fit fired), misfit left
+after the named extensions (the family run again on the extended model), or a rival cause of another
+kind within 2 AICc of the named one: the cause is ``unexplained``, with the tests that fired.  Every
+response gets a verdict: ``adequate`` (with the size of defect the tests find with 80 % power),
+``defect``, ``unexplained`` or ``does_not_predict`` (Q^2 < 0).
 
 Family-wise error.  The catalogue is one family.  Every statistic except
 Box-Cox's is a function of the error vector alone, whose distribution (normal
@@ -52,7 +65,7 @@ cost in parameters and what the measurements can and cannot identify.
 
 Modules: ``models`` (data, models, extended surrogate), ``aliasing``, ``catalogue``
 (the causes and their family-wise test), ``level1``, ``level2``, ``messages`` (findings in
-words) and ``material`` (the per-material step); the figure is :mod:`demid.plots.criticism`.
+words), ``verdict`` (what the evidence supports) and ``material`` (the per-material step); the figure is :mod:`demid.plots.criticism`.
 
 Verified against statsmodels (``compare_f_test``, ``outlier_test``, OLS/WLS
 log-likelihoods, influence PRESS residuals, ``eval_measures.aicc``) and scipy

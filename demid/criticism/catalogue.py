@@ -33,6 +33,9 @@ MISFIT_TESTS = ("lack_of_fit",)
 # to three places (x 10^k); on log-scaled factors the same slips shift log10 by k.
 _SLIP_POWERS = (-3, -2, -1, 1, 2, 3)
 _SLIP_PRIOR = {1: 0.5, 2: 0.25, 3: 0.25}
+# A slip is only judged where the runs can predict: moved values beyond this multiple of the design's
+# reach (its largest coded level) would be quadratic extrapolation, which fits a wild run by chance.
+_SLIP_REACH = 2.0
 
 
 # Further convenient lambdas, tried when the data reject none of the named ones.
@@ -214,9 +217,9 @@ class _Round:
                 self.hypotheses.append(h)
 
         # --- lack of fit against pure error (replicated runs): a function of the errors alone, so it
-        # joins the family exactly; it shows misfit but names no cause.
-        if spec.weight_on is None:
-            self._lack_of_fit(m, e_obs, e_null)
+        # joins the family exactly; it shows misfit but names no cause.  (Weights depend on a factor or
+        # the fitted value only, so replicated runs share them and whitened pure error stays pure error.)
+        self._lack_of_fit(m, e_obs, e_null)
 
         # --- a run that fits another value of one factor (unit or decimal slip in the simulation input)
         if spec.lam is None and spec.weight_on is None:
@@ -354,6 +357,7 @@ class SlipCandidate:
 def slip_candidates(data: _Data, m: _Model) -> list[SlipCandidate]:
     """Every kept run x factor x decimal slip whose value differs from the recorded one."""
     model_units = data.coding.to_actual(m.coded)
+    reach = _SLIP_REACH * float(np.max(np.abs(data.coded)))
     out = []
     for pos, row in enumerate(np.flatnonzero(m.keep)):
         for j, name in enumerate(data.factors):
@@ -364,7 +368,9 @@ def slip_candidates(data: _Data, m: _Model) -> list[SlipCandidate]:
                     continue
                 point = model_units[pos].copy()
                 point[j] = moved
-                out.append(SlipCandidate(int(row), j, k, float(data.coding.to_coded(point[None, :])[0, j])))
+                coded = float(data.coding.to_coded(point[None, :])[0, j])
+                if abs(coded) <= reach:
+                    out.append(SlipCandidate(int(row), j, k, coded))
     return out
 
 

@@ -329,7 +329,7 @@ def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tupl
         slip_model = fitted_alternatives[i][3]
         others = [alt[3].loglik - alt[3].n_params + slip_model.n_params
                   for j, alt in enumerate(fitted_alternatives)
-                  if j != i and alt[0].cause not in ("outlier", "heteroscedasticity")]
+                  if j != i and alt[0].cause != "outlier"]
         if fitted_alternatives[i][0].info["bayes_factor"] >= SLIP_BAYES_FACTOR and \
                 (not others or slip_model.loglik >= max(others) - 1.0):
             return _with_alternatives(data, fitted_alternatives, i)
@@ -348,7 +348,7 @@ def _with_alternatives(data: _Data, fitted_alternatives: list, best: int) -> tup
     h, spec, info, new = fitted_alternatives[best]
     alternatives = [{"cause": c.cause, "detail": _detail_json(data, c) if c.cause != "response_transform"
                      else _transform_name(sp.lam), "p_value": _num(c.p_family),
-                     "loglik_vs_named": _num(mo.loglik - new.loglik)}
+                     "loglik_vs_named": _num(mo.loglik - new.loglik), "aicc_vs_named": _num(mo.aicc - new.aicc)}
                     for c, sp, _, mo in fitted_alternatives if c is not h]
     return h, spec, info, new, alternatives
 

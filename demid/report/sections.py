@@ -317,12 +317,12 @@ class ReportSections:
                  "run-order drift, non-constant variance) with family-wise error control; a finding is kept only "
                  "with its extension and the measured gain (leave-one-out RMSE, AICc)."]
         from ..spec import MaterialSpec
-        from .summary import VERDICT_WORDS, unreliable_surrogate_lines
+        from .summary import VERDICT_WORDS, unreliable_surrogate_lines, verdict_sentence
 
         for response, res in info["level1"].items():
             if res.get("verdict_message"):
                 lines += [f"- `{response}` — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
-                          + res["verdict_message"]]
+                          + verdict_sentence(response, res)]
             elif res["messages"]:
                 lines += [f"- `{response}`: " + " ".join(res["messages"])]
             else:

@@ -82,6 +82,15 @@ VERDICT_WORDS = {"adequate": "adequate (within the tests' power)", "defect": "de
                  "unexplained": "misfit unexplained", "does_not_predict": "does not predict"}
 
 
+def verdict_sentence(response: str, res: dict) -> str:
+    """The verdict message without its leading "<response>: <verdict> — " (the report names both)."""
+    text = res.get("verdict_message", "")
+    head = f"{response}: "
+    if text.startswith(head) and " — " in text:
+        return text.split(" — ", 1)[1]
+    return text[len(head):] if text.startswith(head) else text
+
+
 def unpredictive_responses(info: dict) -> list[str]:
     """Responses whose surrogate does not predict left-out runs (verdict ``does_not_predict``)."""
     return [r for r, res in (info.get("level1") or {}).items() if res.get("verdict") == "does_not_predict"]
@@ -115,7 +124,7 @@ def criticism_lines(info: dict, spec) -> list[str]:
         label = spec.response_labels.get(response, response)
         if res.get("verdict_message"):
             lines.append(f"Surrogate of {label} — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
-                         + res["verdict_message"])
+                         + verdict_sentence(response, res))
         elif res["messages"]:
             lines.append(f"Surrogate of {label}: " + " ".join(res["messages"]))
         else:
