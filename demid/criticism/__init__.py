@@ -24,9 +24,9 @@ concrete one-parameter extension:
                         run at the value that fits (no added parameter).
 ``lack_of_fit``         (a misfit test, no cause) F of lack of fit against pure error of replicated runs.
 
-Honest causes (:mod:`.verdict`).  Misfit that no cause answers (only lack of fit fired), misfit left
-after the named extensions (the family run again on the extended model), or a rival cause of another
-kind within 2 AICc of the named one: the cause is ``unexplained``, with the tests that fired.  Every
+Honest causes (:mod:`.verdict`).  Misfit that no cause answers (only lack of fit fired, or only a slip
+too weak to name), or misfit left after the named extensions (the family run again on the extended
+model, at 1 %): the cause is ``unexplained``, with the tests that fired.  Every
 response gets a verdict: ``adequate`` (with the size of defect the tests find with 80 % power),
 ``defect``, ``unexplained`` or ``does_not_predict`` (Q^2 < 0).
 
