@@ -1,4 +1,4 @@
-"""The demo study as a user runs it (the session's shared run, copied): a one-cell edit of the mortar
+"""The demo study as a user runs it (the test session's shared run, copied): a one-cell edit of the mortar
 table reruns only mortar jobs and the cross-material outputs; a no-op rerun schedules nothing."""
 
 from __future__ import annotations

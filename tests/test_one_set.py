@@ -30,7 +30,7 @@ FRACTION_RTOL = 1e-3
 
 @pytest.fixture(scope="module")
 def demo(demo_run):
-    """The demo study run as a user runs it (configured grids): the session's shared run."""
+    """The demo study run as a user runs it (configured grids): the test session's shared run."""
     root = demo_run
     tables = root / "results" / "tables"
     return {"root": root, "identifiability": pd.read_csv(tables / "identifiability.csv"),
