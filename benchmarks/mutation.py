@@ -67,7 +67,8 @@ TABLE: dict[str, dict] = {
     "demid/sampling/domain.py": {
         "functions": None,
         "tests": ["tests/test_set_estimators.py", "tests/test_admissibility.py", "tests/test_core_contracts.py",
-                  "tests/test_uncertainty.py"],
+                  "tests/test_uncertainty.py", "tests/test_edges.py::test_at_bound_of_closed_form_exact_sets",
+                  "tests/test_edges.py::test_at_bound_tolerance_is_relative_to_the_range_and_in_log_units"],
     },
     "demid/sampling/residuals.py": {
         "functions": ["relative_residuals"],

@@ -64,6 +64,8 @@ def test_at_bound_tolerance_is_relative_to_the_range_and_in_log_units():
     # scaled: a range of 1000 units, 4 units from the bound touches (0.4 %), 6 do not
     wide = Domain(("a",), (0.0,), (1000.0,))
     assert wide.at_bound([4.0], [500.0]) == ("lower",) and wide.at_bound([6.0], [500.0]) == ("none",)
+    # "within 0.5 %" includes 0.5 % itself, at both ends
+    assert wide.at_bound([5.0], [995.0]) == ("both",)
 
 
 def test_at_bound_on_the_sobol_path():
