@@ -198,3 +198,30 @@ def test_paper_comparison_passes_and_says_whether_printed_digits_agree(demo):
     for material, scenario in TWO_FACTOR:
         row = paper[(paper["material"] == material) & (paper["quantity"] == f"Table 3 feasible fraction [%] {scenario}")]
         assert len(row) == 1 and bool(row["printed_agrees"].iloc[0])
+
+
+def _significant_digits(cell: str) -> int:
+    """Significant digits of a number as written ('0.00120' -> 3, '7579.048' -> 7, '1.5e-05' -> 2); 0 for text."""
+    text = cell.strip().lstrip("+-<>").rstrip("%")
+    mantissa = text.split("e")[0].split("E")[0]
+    if not mantissa or not all(ch.isdigit() or ch == "." for ch in mantissa) or mantissa.count(".") > 1:
+        return 0
+    digits = mantissa.replace(".", "").lstrip("0")
+    if "." not in mantissa:
+        digits = digits.rstrip("0")  # 1200 carries 2 significant digits as far as the writer is concerned
+    return len(digits)
+
+
+def test_no_number_in_any_demo_table_has_more_than_six_significant_digits(demo):
+    """Every CSV of the demo run, every cell, as written (text columns such as `printed` included)."""
+    import csv
+
+    assert _significant_digits("7579.048") == 7 and _significant_digits("0.970") == 3
+    tables = sorted((demo["root"] / "results" / "tables").glob("*.csv"))
+    assert len(tables) >= 10
+    for path in tables:
+        with path.open(encoding="utf-8", newline="") as handle:
+            for row_number, row in enumerate(csv.reader(handle), start=1):
+                for cell in row:
+                    for token in cell.replace(";", " ").replace(",", " ").replace("(", " ").replace(")", " ").split():
+                        assert _significant_digits(token) <= 6, (path.name, row_number, cell)
