@@ -226,12 +226,18 @@ class SurrogateFit:
         return np.sum(q * q, axis=1)
 
     @cached_property
+    def fitted_exactly(self) -> np.ndarray:
+        """Runs of leverage 1 (to round-off): reproduced whatever their value, so their leave-one-out
+        statistics are round-off over round-off, i.e. undefined."""
+        return self.hat_diag >= 1 - 1e-10
+
+    @cached_property
     def press(self) -> float:
         h = self.hat_diag
         resid = self.results.resid.to_numpy()
         with np.errstate(divide="ignore", invalid="ignore"):
             loo = resid / (1.0 - h)
-        return float(np.sum(loo ** 2)) if np.all(h < 1 - 1e-10) else np.nan
+        return np.nan if self.fitted_exactly.any() else float(np.sum(loo ** 2))
 
     def anova(self) -> LackOfFitAnova:
         res = self.results
@@ -281,10 +287,9 @@ class SurrogateFit:
             # 0/0: residuals and their scale are both round-off, their ratio is noise (up to 1e136)
             frame["student_resid"] = np.nan
             frame["cooks_d"] = np.nan
-        # A run of leverage 1 is fitted exactly whatever its value: its residual is round-off and
-        # dividing it by 1 - h (leave-one-out residual, studentised residual, Cook's distance) gives
-        # noise of any size (Cook's d ~ 2e4 seen), not a statistic.  Undefined, so NaN.
-        exact = self.hat_diag > 1 - 1e-9
+        # Dividing a leverage-1 run's round-off residual by 1 - h gives noise of any size (Cook's
+        # d ~ 2e4 seen), not a statistic.
+        exact = self.fitted_exactly
         frame.loc[exact, ["student_resid", "cooks_d"]] = np.nan
         with np.errstate(divide="ignore", invalid="ignore"):
             loo = np.where(exact, np.nan, self.results.resid.to_numpy() / (1 - self.hat_diag))

@@ -59,9 +59,10 @@ def test_replicates_equal_to_working_precision_have_no_pure_error():
 
 
 # --------------------------------------------------------------------------- influence
-def test_largest_studentised_residual_skips_runs_the_model_fits_exactly():
+def _fit_with_exactly_fitted_runs():
     """Without three of the axial runs, the four factorial runs and the remaining axial run have
-    leverage 1 (their studentised residual is 0/0); the largest of the others is statsmodels'."""
+    leverage 1.  Returns demid's fit and statsmodels' influence statistics of the same model (read
+    inside the warning guard: 0/0 at those runs)."""
     table = MONTGOMERY.drop(index=[9, 10, 11])
     fit = fit_response(table, ["x1", "x2"], "y", alpha=1.414)
     x1, x2 = table["x1"].to_numpy(float), table["x2"].to_numpy(float)
@@ -69,14 +70,39 @@ def test_largest_studentised_residual_skips_runs_the_model_fits_exactly():
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore")
         influence = OLSInfluence(sm.OLS(table["y"].to_numpy(float), exog).fit())
-        leverage = influence.hat_matrix_diag
-        student = influence.resid_studentized_external
+        reference = {"leverage": influence.hat_matrix_diag, "student": influence.resid_studentized_external,
+                     "cooks": influence.cooks_distance[0], "resid": influence.resid}
+    return fit, reference
+
+
+def test_largest_studentised_residual_skips_runs_the_model_fits_exactly():
+    """Leverage-1 runs have a studentised residual of 0/0; the largest of the others is statsmodels'."""
+    fit, reference = _fit_with_exactly_fitted_runs()
+    leverage, student = reference["leverage"], reference["student"]
     assert np.sum(leverage > 1 - 1e-9) == 5
     expected = np.max(np.abs(student[leverage < 1 - 1e-9]))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         got = fit.diagnostics().max_abs_student_resid
     assert got == pytest.approx(expected, rel=1e-9)
+
+
+def test_runs_fitted_exactly_have_no_influence_statistics():
+    """A run of leverage 1 is reproduced whatever its value: its leave-one-out residual and Cook's
+    distance are undefined (NaN), not round-off divided by round-off; other runs keep statsmodels'."""
+    fit, reference = _fit_with_exactly_fitted_runs()
+    leverage, cooks, resid = reference["leverage"], reference["cooks"], reference["resid"]
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore")
+        influence = fit.influence()
+        max_cooks = fit.diagnostics().max_cooks_d
+    exact = leverage > 1 - 1e-9
+    assert exact.sum() == 5
+    assert influence.loc[exact, ["loo_residual", "cooks_d", "student_resid"]].isna().all().all()
+    np.testing.assert_allclose(influence.loc[~exact, "cooks_d"], cooks[~exact], rtol=1e-9)
+    np.testing.assert_allclose(influence.loc[~exact, "loo_residual"], resid[~exact] / (1 - leverage[~exact]),
+                               rtol=1e-9)
+    assert max_cooks == pytest.approx(np.max(cooks[~exact]), rel=1e-9)
 
 
 # --------------------------------------------------------------------------- linear algebra of criticism
@@ -97,25 +123,3 @@ def test_printed_bounds_admit_their_own_value_up_to_round_off():
     at_most, at_least = parse_printed("<=0.3"), parse_printed(">=0.3")
     assert at_most.agrees(0.1 + 0.2) and at_least.agrees(0.7 - 0.4)
     assert not at_most.agrees(0.300001) and not at_least.agrees(0.299999)
-
-
-def test_runs_fitted_exactly_have_no_influence_statistics():
-    """A run of leverage 1 is reproduced whatever its value: its leave-one-out residual and Cook's
-    distance are undefined (NaN), not round-off divided by round-off; other runs keep statsmodels'."""
-    table = MONTGOMERY.drop(index=[9, 10, 11])
-    fit = fit_response(table, ["x1", "x2"], "y", alpha=1.414)
-    x1, x2 = table["x1"].to_numpy(float), table["x2"].to_numpy(float)
-    exog = np.column_stack([np.ones(len(table)), x1, x2, x1 * x2, x1 ** 2, x2 ** 2])
-    with warnings.catch_warnings(), np.errstate(all="ignore"):
-        warnings.simplefilter("ignore")
-        reference = OLSInfluence(sm.OLS(table["y"].to_numpy(float), exog).fit())
-        leverage, cooks, resid = reference.hat_matrix_diag, reference.cooks_distance[0], reference.resid
-        influence = fit.influence()
-        max_cooks = fit.diagnostics().max_cooks_d
-    exact = leverage > 1 - 1e-9
-    assert exact.sum() == 5
-    assert influence.loc[exact, ["loo_residual", "cooks_d", "student_resid"]].isna().all().all()
-    np.testing.assert_allclose(influence.loc[~exact, "cooks_d"], cooks[~exact], rtol=1e-9)
-    np.testing.assert_allclose(influence.loc[~exact, "loo_residual"], resid[~exact] / (1 - leverage[~exact]),
-                               rtol=1e-9)
-    assert max_cooks == pytest.approx(np.max(cooks[~exact]), rel=1e-9)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from functools import cached_property
 from pathlib import Path
 
 import pandas as pd
@@ -97,7 +98,7 @@ class ReportSections:
 
         return Markdown(typeset_labels(text, self._plain_labels))
 
-    @property
+    @cached_property
     def _plain_labels(self) -> list[str]:
         """Every configured factor/response label and unit, longest first (so d_10 wins over d_1)."""
         found = set()

@@ -68,12 +68,12 @@ def stored_strict_sets(frame: pd.DataFrame, surrogates: dict, spec: MaterialSpec
             exact.__dict__["_nearest"] = (float(rows["reference_distance"].iloc[0]),
                                           rows["nearest_unit"].to_numpy(dtype=float))
         spans = exact.spans
+        lower, upper = spans["lower"].to_numpy(dtype=float), spans["upper"].to_numpy(dtype=float)
         sets[scen.name] = AdmissibleSet(
             observables=tuple(scen.observables), tolerance=float(scen.tolerance), factors=tuple(domain.factors),
             fraction=float(exact.fraction), node_fraction=np.nan, n_nodes=0, n_admissible_nodes=0,
-            n_refined_cells=0, lower=spans["lower"].to_numpy(dtype=float), upper=spans["upper"].to_numpy(dtype=float),
+            n_refined_cells=0, lower=lower, upper=upper,
             mask=np.zeros(0, dtype=bool), best_error=float(rows["best_max_rel_error"].iloc[0]),
             fraction_error=float(exact.fraction_error), method=EXACT_METHOD, exact=exact,
-            at_bound=(tuple(rows["at_bound"]) if "at_bound" in rows.columns
-                      else tuple(domain.at_bound(spans["lower"].to_numpy(float), spans["upper"].to_numpy(float)))))
+            at_bound=domain.at_bound(lower, upper))  # evaluate_set's test on the same spans: level 2 reads it
     return sets
