@@ -40,9 +40,15 @@ Holm.  Box-Cox's null depends on the unknown mean, so its p-value comes from a
 parametric bootstrap of the fitted model (conditional on positive responses) and
 it joins the family as an independent uniform, which is conservative when it
 correlates positively with the others.  A clean table yields a finding with
-probability at most ``family_alpha``.
+probability at most ``family_alpha``.  Where replicated runs give pure error, the
+classical lack-of-fit test holds ``LOF_SHARE`` (65 %) of the level and the specific tests
+share the rest (weighted min-P), so that the family detects misfit as often as the
+lack-of-fit test alone.
 
-Naming.  The rejected cause with the smallest nominal p-value is named, except
+Naming.  A cause is named only when it is singled out: its test is more significant
+(nominal p) than lack of fit and every test of another kind, or its p-value is below
+``OVERWHELMING_P``; otherwise the misfit is ``unexplained`` and the message names the
+candidate and its rival.  The rejected cause with the smallest nominal p-value is named, except
 that one wild run may read as an outlier or as scatter growing towards its
 corner of the design: between those two (and between variance covariates) the
 better-fitting extension (higher likelihood) is named.  Its extension is added and

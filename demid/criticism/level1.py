@@ -18,7 +18,8 @@ from ..design import Coding, model_matrix, model_units, quadratic_terms, term_na
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .catalogue import _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
-from .verdict import RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, unexplained_evidence, verdict_of
+from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, strongest_rival, unexplained_evidence,
+                      verdict_of)
 from .messages import _CAUSE_WORDS, _message
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
                      infer_axial_distance)
@@ -248,6 +249,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     catalogue: list[dict] = []
     alias_sets: list[AliasSet] = []
     first_round = last_round = None
+    not_singled_out = None
     for rnd_index in range(max_findings + 1):
         rnd = _Round(data, model, n_null, rng)
         last_round = rnd
@@ -260,6 +262,11 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
             break
         named = _name_cause(data, model, rejected)
         if named is None:  # only a slip fits, and too weakly to be named: misfit without a cause
+            break
+        rival = strongest_rival(named[0], rnd.hypotheses)
+        if rival is not None:  # not singled out: another kind of misfit is at least as strong
+            not_singled_out = {"cause": named[0].cause, "detail": _detail_json(data, named[0]),
+                               "rival": _catalogue_entry(data, rival)}
             break
         h, spec, info, new, alternatives = named
         if findings and not new.loo_rmse_on(new.keep) < model.loo_rmse_on(new.keep):
@@ -275,6 +282,8 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     # rejected at the stricter residual level), is reported as unexplained instead of a confident cause.
     unexplained = None
     naming: dict = {}
+    if not_singled_out:
+        naming["not_singled_out"] = not_singled_out
     if findings and last_round is not None and last_round.hypotheses:
         naming["residual_min_p"] = min(h.p_family for h in last_round.hypotheses)
         naming["residual_tests"] = [_catalogue_entry(data, h) for h in last_round.hypotheses
@@ -292,7 +301,8 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
             unexplained = unexplained_evidence(
                 response, [_catalogue_entry(data, h) for h in first_round.misfit(family_alpha)],
                 [{"cause": f.cause, "detail": f.detail} for f in findings],
-                [_catalogue_entry(data, h) for h in residual], family_alpha)
+                [_catalogue_entry(data, h) for h in residual], family_alpha,
+                candidate=not_singled_out if not findings else None)
             findings, model = [], base_model
 
     baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))

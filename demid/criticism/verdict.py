@@ -42,6 +42,16 @@ SLIP_BAYES_FACTOR = 1.0
 #: log transforms, outliers and cubic terms (the strongest test is right more often than the best AICc
 #: at a dozen runs) for 1 % fewer wrong causes.  The rivals are listed in each finding's alternatives.
 
+#: A cause is named only when its test is the strongest evidence of misfit in its round: more significant
+#: (nominal p) than the lack-of-fit test and than every test of another kind, unless its own nominal p is
+#: below OVERWHELMING_P.  Off-catalogue defects (a batch of shifted runs, an unrecorded factor, a plateau)
+#: fire several tests about equally; a catalogued defect concentrates its evidence in its own test.  In
+#: benchmarks/honest_causes.py this halved... see the issue note: confidently wrong causes 0.30 -> 0.22 at
+#: a cost of 0.02 in catalogue naming.  Outliers and slipped runs of the same run are not rivals.
+OVERWHELMING_P = 1e-4
+
+_RIVAL_KIND = {"outlier": "one run", "factor_level": "one run"}
+
 #: Power at which the detectable size of a defect is quoted.
 POWER = 0.8
 
@@ -66,8 +76,23 @@ def _entry_text(e: dict) -> str:
     return words + (f" (family-wise p = {p:.3g})" if p is not None else "")
 
 
+def strongest_rival(named, hypotheses) -> object | None:
+    """The test of another kind at least as significant as the named cause's, or None when the cause is
+    singled out (see OVERWHELMING_P).  The Box-Cox test's bootstrap p-value is floored at 1/(B+1) and is
+    not compared.  Outliers and slips of one run are one kind: the run's evidence is its strongest test."""
+    if named.cause == "response_transform":
+        return None
+    kind = _RIVAL_KIND.get(named.cause, named.cause)
+    # A run's evidence is its strongest test: the slip's bootstrap p-value is floored at 1/(B+1) too.
+    own = min(g.logp for g in hypotheses if _RIVAL_KIND.get(g.cause, g.cause) == kind)
+    if own <= math.log(OVERWHELMING_P):
+        return None
+    rivals = [g for g in hypotheses if _RIVAL_KIND.get(g.cause, g.cause) != kind and g.logp < own]
+    return min(rivals, key=lambda g: g.logp) if rivals else None
+
+
 def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], remaining: list[dict],
-                         family_alpha: float) -> dict:
+                         family_alpha: float, candidate: dict | None = None) -> dict:
     """The evidence of misfit that no catalogue cause accounts for, and its message."""
     p_values = [e["p_family"] for e in fired + remaining if e.get("p_family") is not None]
     text = (f"{response}: the runs show misfit that no catalogued cause accounts for. Tests that fired at the "
@@ -76,12 +101,17 @@ def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], re
         text += (" The best catalogue explanation, " + ", then ".join(
             f"{_TEST_WORDS.get(t['cause'], t['cause'])} {t['detail']}" for t in tried)
             + ", leaves misfit behind (" + "; ".join(_entry_text(e) for e in remaining) + "), so it is not named.")
+    if candidate:
+        rival = candidate["rival"]
+        text += (f" The strongest catalogue candidate, {_entry_text({'cause': candidate['cause'], 'detail': candidate['detail']})},"
+                 f" is not singled out: {_entry_text({**rival, 'p_family': None})} is at least as significant"
+                 f" (nominal p = {rival['p_nominal']:.2g}), so no cause is named.")
     text += (" Look for what differs between the runs that misfit (a factor value entered differently in the "
              "simulation, a change of version or settings, a regime the quadratic cannot follow) before "
              "trusting the surrogate.")
     detail = ";".join(dict.fromkeys(e["cause"] for e in fired))
     return {"detail": detail, "p_value": min(p_values) if p_values else None, "tests": fired,
-            "tried": tried, "remaining": remaining, "message": text}
+            "tried": tried, "remaining": remaining, "candidate": candidate, "message": text}
 
 
 def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power: float = POWER) -> float | None:
@@ -103,9 +133,18 @@ def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power
     return math.sqrt(lam)
 
 
+def _specific_share(causes: list[str]) -> float:
+    """Share of the family's level one specific test gets, times the number of tests (1 for equal weights)."""
+    from .catalogue import family_weights
+    weights = family_weights(causes)
+    specific = [w for c, w in zip(causes, weights) if c != "lack_of_fit"]
+    return float(min(specific)) if specific else 1.0
+
+
 def power_caveat(response: str, n_runs: int, df_resid: int, n_tests: int, family_alpha: float,
-                 resid_std: float) -> dict:
-    k = detectable_departure(df_resid, n_tests, family_alpha)
+                 resid_std: float, specific_share: float = 1.0) -> dict:
+    # One specific test (a shifted run, an omitted term) is run at family_alpha * share / n_tests.
+    k = detectable_departure(df_resid, n_tests / specific_share, family_alpha)
     if k is None:
         return {"detectable_sd": None, "detectable": None,
                 "message": f"{response}: adequate as far as can be told, but with {n_runs} runs too few spare "
@@ -142,7 +181,8 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
     if unexplained:
         detail["message"] = unexplained["message"]
         return "unexplained", detail
-    caveat = power_caveat(r, n, n - st.n_params, len(catalogue), family_alpha, st.resid_std)
+    caveat = power_caveat(r, n, n - st.n_params, len(catalogue), family_alpha, st.resid_std,
+                          specific_share=_specific_share([e["cause"] for e in catalogue]))
     detail.update({k: v for k, v in caveat.items() if k != "message"})
     detail["message"] = caveat["message"]
     return "adequate", detail
