@@ -584,3 +584,26 @@ def test_relative_residuals_divide_by_the_magnitude_of_the_target():
     res = relative_residuals({"y": np.array([-9.0, -11.0]), "z": np.array([4.0, 6.0])}, {"y": -10.0, "z": 5.0},
                              ["y", "z"])
     np.testing.assert_allclose(res, [[0.1, -0.1], [-0.2, 0.2]])
+
+
+def test_lack_of_fit_holds_its_share_of_the_family_level():
+    """Weighted step-down min-P against the exact answer for independent tests: with lack of fit at nominal
+    p and nine other members at p = 0.5, lack of fit's adjusted p-value is P(min_j U_j / s_j <= p / s_lof)
+    = 1 - prod_j (1 - min(1, s_j p / s_lof)), shares s_lof = LOF_SHARE and (1 - LOF_SHARE) / 9 each.
+    Without replicated runs (no lack-of-fit member) the weights are equal."""
+    from demid.criticism.catalogue import LOF_SHARE, family_weights, weighted_stepdown
+
+    causes = ["lack_of_fit"] + ["missing_term"] * 9
+    rng = np.random.default_rng(7)
+    null = np.log(rng.uniform(size=(200_000, 10)))
+    p = 0.02
+    obs = np.log(np.r_[p, np.full(9, 0.5)])
+    shares = np.r_[LOF_SHARE, np.full(9, (1 - LOF_SHARE) / 9)]
+    exact = 1 - np.prod(1 - np.minimum(1, shares * p / LOF_SHARE))
+    adjusted = weighted_stepdown(causes, obs, null)[0]
+    assert adjusted == pytest.approx(exact, abs=4 * np.sqrt(exact * (1 - exact) / 200_000))
+    equal = weighted_stepdown(["missing_term"] * 10, obs, null)[0]  # 1 - (1 - p)^10 = 0.18
+    assert equal == pytest.approx(1 - (1 - p) ** 10, abs=0.005)
+    assert adjusted < 0.05 < equal
+    assert np.all(family_weights(["outlier", "drift", "missing_term"]) == 1.0)
+    assert family_weights(causes).mean() == pytest.approx(1.0)

@@ -157,6 +157,12 @@ def family_weights(causes: list[str]) -> np.ndarray:
     return np.array([LOF_SHARE * m if c == "lack_of_fit" else (1 - LOF_SHARE) * m / (m - 1) for c in causes])
 
 
+def weighted_stepdown(causes: list[str], obs: np.ndarray, null: np.ndarray) -> np.ndarray:
+    """Family-adjusted p-values: step-down min-P on p / weight (:func:`family_weights`)."""
+    shift = np.log(family_weights(causes))
+    return _stepdown_minp(obs - shift, null - shift)
+
+
 def _stepdown_minp(obs: np.ndarray, null: np.ndarray) -> np.ndarray:
     """Westfall-Young step-down min-P adjusted p-values from log p-values (m,) and (B, m)."""
     b = null.shape[0]
@@ -255,9 +261,8 @@ class _Round:
             self.hypotheses.append(h)
 
         if self.hypotheses:
-            shift = np.log(family_weights([h.cause for h in self.hypotheses]))
-            adj = _stepdown_minp(np.array([h.logp for h in self.hypotheses]) - shift,
-                                 np.column_stack([h.null_logp for h in self.hypotheses]) - shift)
+            adj = weighted_stepdown([h.cause for h in self.hypotheses], np.array([h.logp for h in self.hypotheses]),
+                                    np.column_stack([h.null_logp for h in self.hypotheses]))
             for h, p in zip(self.hypotheses, adj):
                 h.p_family = float(p)
 
