@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import optimize, stats
 
+from .catalogue import family_weights
 from .models import _g, _num
 
 if TYPE_CHECKING:
@@ -84,7 +85,6 @@ def strongest_rival(named, hypotheses) -> object | None:
     if named.cause == "response_transform":
         return None
     kind = _RIVAL_KIND.get(named.cause, named.cause)
-    # A run's evidence is its strongest test: the slip's bootstrap p-value is floored at 1/(B+1) too.
     own = min(g.logp for g in hypotheses if _RIVAL_KIND.get(g.cause, g.cause) == kind)
     if own <= math.log(OVERWHELMING_P):
         return None
@@ -104,8 +104,9 @@ def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], re
             + ", leaves misfit behind (" + "; ".join(_entry_text(e) for e in remaining) + "), so it is not named.")
     if candidate:
         rival = candidate["rival"]
-        text += (f" The strongest catalogue candidate, {_entry_text({'cause': candidate['cause'], 'detail': candidate['detail']})},"
-                 f" is not singled out: {_entry_text({**rival, 'p_family': None})} is at least as significant"
+        named = _entry_text({"cause": candidate["cause"], "detail": candidate["detail"]})
+        text += (f" The strongest catalogue candidate, {named}, is not singled out: "
+                 f"{_entry_text({**rival, 'p_family': None})} is at least as significant"
                  f" (nominal p = {rival['p_nominal']:.2g}), so no cause is named.")
     text += (" Look for what differs between the runs that misfit (a factor value entered differently in the "
              "simulation, a change of version or settings, a regime the quadratic cannot follow) before "
@@ -136,7 +137,6 @@ def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power
 
 def _specific_share(causes: list[str]) -> float:
     """Share of the family's level one specific test gets, times the number of tests (1 for equal weights)."""
-    from .catalogue import family_weights
     weights = family_weights(causes)
     specific = [w for c, w in zip(causes, weights) if c != "lack_of_fit"]
     return float(min(specific)) if specific else 1.0
