@@ -140,6 +140,8 @@ def report_tables():
     out = list(SUMMARY_TABLES)
     out += [f"{RESULTS}/tables/pareto_{m}.csv" for m in pareto_materials()]
     out += [f"{RESULTS}/validated/{m}.json" for m in MATERIALS]
+    out += [f"{RESULTS}/validated/{m}.parquet" for m in MATERIALS]  # with the stored fits: the rsm tables
+    out += [f"{RESULTS}/fits/{m}.parquet" for m in MATERIALS]
     out += [f"{RESULTS}/fits/{m}_anova.parquet" for m in MATERIALS]
     out += [f"{RESULTS}/fits/{m}_diagnostics.parquet" for m in MATERIALS]
     if config.get("published"):
