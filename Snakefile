@@ -10,13 +10,9 @@ if not workflow.overwrite_configfiles:
 
 
 include: "workflow/rules/common.smk"
-include: "workflow/rules/fit.smk"
-include: "workflow/rules/admissibility.smk"
-include: "workflow/rules/pareto.smk"
+include: "workflow/rules/material.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/tables.smk"
-include: "workflow/rules/uncertainty.smk"
-include: "workflow/rules/criticism.smk"
 include: "workflow/rules/next_wave.smk"
 include: "workflow/rules/report.smk"
 

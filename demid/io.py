@@ -39,21 +39,33 @@ def atomic_path(path: Path | str, suffix: str = ""):
             os.remove(tmp)
 
 
-def write_parquet(frame: pd.DataFrame, path: Path | str) -> None:
-    """Parquet without pandas' index metadata or creation timestamps."""
+def _write_parquet_to(frame: pd.DataFrame, where) -> None:
     table = pa.Table.from_pandas(frame.reset_index(drop=True), preserve_index=False)
     table = table.replace_schema_metadata(None)
+    # Byte-stream-split floats compress better and read ~2x faster than dictionary pages
+    # for the large grid tables; no statistics keeps the bytes independent of writer details.
+    floats = [f.name for f in table.schema if pa.types.is_floating(f.type)]
+    pq.write_table(table, where, compression="zstd", use_dictionary=[f.name for f in table.schema
+                                                                    if f.name not in floats],
+                   use_byte_stream_split=floats or False, write_statistics=False)
+
+
+def write_parquet(frame: pd.DataFrame, path: Path | str) -> None:
+    """Parquet without pandas' index metadata or creation timestamps."""
     with atomic_path(path) as tmp:
-        # Byte-stream-split floats compress better and read ~2x faster than dictionary pages
-        # for the large grid tables; no statistics keeps the bytes independent of writer details.
-        floats = [f.name for f in table.schema if pa.types.is_floating(f.type)]
-        pq.write_table(table, tmp, compression="zstd", use_dictionary=[f.name for f in table.schema
-                                                                      if f.name not in floats],
-                       use_byte_stream_split=floats or False, write_statistics=False)
+        _write_parquet_to(frame, tmp)
 
 
 def read_parquet(path: Path | str) -> pd.DataFrame:
     return pq.read_table(path).to_pandas()
+
+
+def as_stored(frame: pd.DataFrame) -> pd.DataFrame:
+    """``frame`` exactly as :func:`read_parquet` returns it after :func:`write_parquet` (a round trip
+    in memory): a step that writes an intermediate and uses it itself sees what a later step reads."""
+    sink = pa.BufferOutputStream()
+    _write_parquet_to(frame, sink)
+    return pq.read_table(pa.BufferReader(sink.getvalue())).to_pandas()
 
 
 def round_significant(frame: pd.DataFrame, digits: int = CSV_SIGNIFICANT_DIGITS) -> pd.DataFrame:
@@ -110,12 +122,14 @@ def save_figure(fig, path: Path | str, dpi: int = FIGURE_DPI) -> None:
     import matplotlib
     import matplotlib.pyplot as plt
 
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=dpi, metadata={"Software": None}, format="png")
-    if fig.get_layout_engine() is not None:
-        # The PNG's draw placed the axes; the SVG keeps that layout instead of solving it again
-        # (a constrained layout measures every label: a third of a figure's rendering time).
-        fig.set_layout_engine("none")
-    with matplotlib.rc_context({"svg.hashsalt": "demid"}), atomic_path(svg_path(path)) as tmp:
-        fig.savefig(tmp, metadata={"Date": None, "Creator": None}, format="svg")
+    # drawn under the rcParams it was built with (demid.plots.style.styled), if any
+    with matplotlib.rc_context(getattr(fig, "figure_style", None)):
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, dpi=dpi, metadata={"Software": None}, format="png")
+        if fig.get_layout_engine() is not None:
+            # The PNG's draw placed the axes; the SVG keeps that layout instead of solving it again
+            # (a constrained layout measures every label: a third of a figure's rendering time).
+            fig.set_layout_engine("none")
+        with matplotlib.rc_context({"svg.hashsalt": "demid"}), atomic_path(svg_path(path)) as tmp:
+            fig.savefig(tmp, metadata={"Date": None, "Creator": None}, format="svg")
     plt.close(fig)

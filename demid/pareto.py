@@ -18,7 +18,7 @@ def pareto_front(first: np.ndarray, second: np.ndarray) -> np.ndarray:
     first = np.asarray(first, dtype=float)
     second = np.asarray(second, dtype=float)
     ok = np.isfinite(first) & np.isfinite(second)
-    idx = np.flatnonzero(ok)
+    idx = _within_front_box(first, second, np.flatnonzero(ok))
     order = _by_first_then_second(first, second, idx)
     s = second[order]
     running = np.minimum.accumulate(s)
@@ -27,6 +27,23 @@ def pareto_front(first: np.ndarray, second: np.ndarray) -> np.ndarray:
         keep[0] = True
         keep[1:] = s[1:] < running[:-1]
     return order[keep]
+
+
+def _within_front_box(first: np.ndarray, second: np.ndarray, idx: np.ndarray) -> np.ndarray:
+    """The points of ``idx`` the front can contain, before sorting (on a dense grid most are not).
+
+    The first point in sorted order (least ``first``, ties by ``second``, then index) is on the
+    front, and every other front point has a smaller ``second``; a point with a larger ``first``
+    than the least-``second`` point is dominated by it.  Dropping the rest changes neither which
+    points :func:`pareto_front` keeps nor their order: none of them precedes a kept point with a
+    smaller ``second`` than the first point's."""
+    if len(idx) == 0:
+        return idx
+    f, s = first[idx], second[idx]
+    tied = idx[f == f.min()]
+    head = tied[np.lexsort((tied, second[tied]))[0]]
+    inside = (s < second[head]) & (f <= f[s == s.min()].min())
+    return idx[inside | (idx == head)]
 
 
 def _by_first_then_second(first: np.ndarray, second: np.ndarray, idx: np.ndarray) -> np.ndarray:

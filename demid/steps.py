@@ -1,10 +1,13 @@
-"""The per-material steps of the workflow that have no result object of their own elsewhere.
+"""The per-material step of the workflow and the parts it chains.
 
-Each step takes a :class:`~demid.spec.MaterialSpec` and what its rule reads, and returns one
-result whose fields are named after the rule's outputs, so every ``scripts/*.py`` is read ->
-step -> write.  (The fit, uncertainty and criticism steps return theirs from
-:func:`demid.surrogate.fit_frames`, :func:`demid.uncertainty.analyse_material` and
-:func:`demid.criticism.criticize_material`.)
+:func:`material_step` takes a :class:`~demid.spec.MaterialSpec` and the material's table and
+returns one :class:`MaterialAnalysis` whose parts are named after the rule's outputs, so
+``scripts/analyse_material.py`` is read -> step -> write.  It chains validation, the fit
+(:func:`demid.surrogate.fit_frames`), the scenario sets, the Pareto front, the uncertainty
+analysis (:func:`demid.uncertainty.analyse_material`) and the criticism
+(:func:`demid.criticism.criticize_material`) in one process: each part is less work than a
+Python start-up with the scientific stack.  Every intermediate a later part uses goes through
+a parquet round trip first (:func:`demid.io.as_stored`), so it sees exactly the stored file.
 """
 
 from __future__ import annotations
@@ -59,24 +62,30 @@ class MaterialSets:
     scenarios: pd.DataFrame
     figure: object
     surface: object
+    pareto: MaterialPareto | None = None
 
 
 def admissibility_step(surrogates: dict, spec: MaterialSpec, table: pd.DataFrame) -> MaterialSets:
-    """Every scenario's strict set on the evaluation grid, its overlay figure and the response surfaces."""
+    """Every scenario's strict set on the evaluation grid, its overlay figure and the response surfaces
+    (and, for a material that declares ``pareto``, its front from the same grid predictions)."""
     from .admissibility import evaluate_scenarios, predict_grid
     from .plots import sets_figure, surface_figure_from_surrogates
     from .sampling.stored import set_state_frame
 
     n = spec.grid_points
-    observed = {o for scen in spec.scenarios for o in scen.observables}  # (not, e.g., a Pareto objective)
-    grid = predict_grid({r: s for r, s in surrogates.items() if r in observed}, spec.domain, n)
+    used = {o for scen in spec.scenarios for o in scen.observables}
+    if spec.pareto:
+        used |= {spec.pareto.error_of, spec.pareto.minimise}
+    # the responses in the order of the surrogates, whichever subset is predicted: one column each
+    grid = predict_grid({r: s for r, s in surrogates.items() if r in used}, spec.domain, n)
     frame, sets = evaluate_scenarios(surrogates, spec, n, grid)
+    pareto = pareto_step(surrogates, spec, grid) if spec.pareto else None
     del grid  # the figures need only the node masks; free the dense predictions first
     frame.insert(0, "material", spec.name)
     frame = pd.concat([frame, set_state_frame(sets)], axis=1)
     figure = sets_figure(spec, sets, n, surrogates)
     del sets
-    return MaterialSets(frame, figure, surface_figure_from_surrogates(surrogates, spec, table))
+    return MaterialSets(frame, figure, surface_figure_from_surrogates(surrogates, spec, table), pareto)
 
 
 @dataclass
@@ -87,14 +96,66 @@ class MaterialPareto:
     figure: object
 
 
-def pareto_step(surrogates: dict, spec: MaterialSpec) -> MaterialPareto:
-    """Non-dominated grid points (error of one observable vs a second objective) and their figure."""
+def pareto_step(surrogates: dict, spec: MaterialSpec, grid: pd.DataFrame | None = None) -> MaterialPareto:
+    """Non-dominated grid points (error of one observable vs a second objective) and their figure;
+    ``grid`` holds the surrogates' predictions on the evaluation grid when already computed."""
     from .admissibility import predict_grid
     from .pareto import pareto_analysis
     from .plots import pareto_figure
 
     par = spec.pareto
-    grid = predict_grid(surrogates, spec.domain, spec.grid_points)
+    if grid is None:
+        grid = predict_grid(surrogates, spec.domain, spec.grid_points)
     result = pareto_analysis(grid, spec.factor_names, par.error_of, spec.targets[par.error_of], par.minimise,
                              par.max_error)
     return MaterialPareto(result.to_frame(), pareto_figure(grid, result.front, spec))
+
+
+@dataclass
+class MaterialAnalysis:
+    """Outputs of ``analyse_material``, keyed by the rule's output names: tables written as parquet
+    (``parquet``) or CSV (``csv``), JSON documents, figures (PNG with an SVG next to it), and the
+    criticism's per-response JSON files (``responses``, written into the ``criticism`` folder)."""
+
+    parquet: dict[str, pd.DataFrame]
+    csv: dict[str, pd.DataFrame]
+    json: dict[str, dict]
+    figures: dict[str, object]
+    responses: dict[str, dict]
+    warnings: list[str]
+
+
+def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances) -> MaterialAnalysis:
+    """One material from its transcribed table to every per-material output: validation and the
+    transcription check, the fit, the scenario sets (and Pareto front), uncertainty and criticism."""
+    from .criticism import criticize_material
+    from .io import as_stored
+    from .sampling.stored import stored_strict_sets
+    from .surrogate import fit_frames, fit_material, surrogates_from_frame
+    from .uncertainty import analyse_material
+
+    validated = validate_step(spec, data)
+    table = as_stored(validated.table)
+    fits = fit_frames(fit_material(table, spec))
+    surrogates = surrogates_from_frame(as_stored(fits["fits"]), spec.factor_names)
+    sets = admissibility_step(surrogates, spec, table)
+    scenarios = as_stored(sets.scenarios)
+    uncertainty = analyse_material(surrogates, spec, z=z, tolerances=tolerances,
+                                   strict_sets=stored_strict_sets(scenarios, surrogates, spec))
+    criticism = criticize_material(table, surrogates, spec,
+                                   strict_sets=stored_strict_sets(scenarios, surrogates, spec, reference=True))
+    figures = {"sets_figure": sets.figure, "surface_figure": sets.surface,
+               "sweep_figure": uncertainty.sweep_figure(spec.label),
+               "posterior_figure": uncertainty.posterior_figure(spec.label),
+               "residuals_figure": criticism.figure}
+    csv = {}
+    if sets.pareto is not None:
+        figures["pareto_figure"] = sets.pareto.figure
+        csv["pareto"] = sets.pareto.table
+    parquet = {"table": validated.table, "transcription": validated.transcription, **fits,
+               "scenarios": sets.scenarios, "robust": uncertainty.robust, "sweep": uncertainty.sweep,
+               "information_gain": uncertainty.information_gain, "ranking": uncertainty.ranking,
+               "findings": criticism.findings, "calibration": criticism.calibration}
+    json = {"validation_summary": validated.summary, "uncertainty_summary": uncertainty.summary,
+            "criticism_summary": criticism.summary}
+    return MaterialAnalysis(parquet, csv, json, figures, criticism.response_json, validated.warnings)

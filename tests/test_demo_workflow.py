@@ -31,7 +31,7 @@ def test_mortar_edit_reruns_only_mortar_and_summaries(demo_copy):
     proc = run_snakemake(demo_copy, demo_copy / "config.yaml", "-n")
     assert proc.returncode == 0, proc.stderr[-2000:]
     jobs = planned_jobs(proc.stdout)
-    assert jobs.get("validate_and_fit") == 1, proc.stdout[-3000:]
+    assert jobs.get("analyse_material") == 1 and "analyse_material_with_pareto" not in jobs, proc.stdout[-3000:]
     assert re.search(r"material=mortar\b", proc.stdout)
     assert not re.search(r"material=(poraver|paste)\b", proc.stdout), proc.stdout[-3000:]
     assert jobs.get("report") == 1

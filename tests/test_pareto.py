@@ -21,6 +21,24 @@ def test_front_matches_brute_force():
     assert idx == brute
 
 
+
+@pytest.mark.parametrize("seed", range(5))
+def test_front_with_ties_and_gaps_matches_brute_force_in_order(seed):
+    """Tied values, exact duplicates, NaN and inf: the non-dominated points (of duplicates the first),
+    in order of increasing first objective, ties by the second, then by index."""
+    rng = np.random.default_rng(seed)
+    for _ in range(300):
+        n, levels = int(rng.integers(0, 40)), int(rng.integers(1, 6))
+        a = rng.integers(0, levels, n).astype(float)
+        b = rng.integers(0, levels, n).astype(float)
+        a[rng.random(n) < 0.05] = np.nan
+        b[rng.random(n) < 0.05] = np.inf
+        ok = [i for i in range(n) if np.isfinite(a[i]) and np.isfinite(b[i])]
+        front = [i for i in ok
+                 if not any((a[j] <= a[i] and b[j] <= b[i] and (a[j] < a[i] or b[j] < b[i]))
+                            or (a[j] == a[i] and b[j] == b[i] and j < i) for j in ok)]
+        assert pareto_front(a, b).tolist() == sorted(front, key=lambda i: (a[i], b[i], i))
+
 def test_analytic_front_on_a_line():
     # error = |x - 0.5|/0.5 relative to target 0.5 of D = x; objective S = y + (1 - x)
     x, y = np.meshgrid(np.linspace(0, 1, 101), np.linspace(0, 1, 101), indexing="ij")

@@ -189,3 +189,62 @@ def test_figures_are_png_at_300_dpi_and_svg_byte_identical_on_rerun(tmp_path):
         assert image.size == (600, 450)
     svg = (tmp_path / "a.svg").read_text(encoding="utf-8")
     assert "<dc:date>" not in svg and "Matplotlib v" not in svg
+
+
+@pytest.mark.parametrize("log_factor", [False, True])
+def test_stored_fit_prints_what_a_refit_prints(log_factor):
+    """The report reads the fits the fit step stored (parquet round trip) instead of fitting again:
+    block ANOVA, coefficients, actual-unit coefficients and stationary point are the same numbers, bit
+    for bit, as from the statsmodels fit itself (a failed run of y2 included)."""
+    from demid.io import as_stored
+    from demid.report.rsm import stored_fits
+    from demid.spec import MaterialSpec
+    from demid.surrogate import fit_frames, fit_material
+
+    def responses(x):
+        a, b = x[:, 0], x[:, 1]
+        return {"y1": 50 + 8 * a - 3 * b + 4 * a * b - 6 * a**2 - 2 * b**2, "y2": 20 + a + 5 * b**2}
+
+    table = make_ccd_table(responses, [1.0, 2.0], [3.0, 6.0], noise=0.4, seed=7, decimals=4)
+    table.loc[3, "y2"] = np.nan
+    material = {"data": "t.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+                "factors": {"x1": {"lower": 1.0, "upper": 3.0, "scale": "log" if log_factor else "linear"},
+                            "x2": {"lower": 2.0, "upper": 6.0}},
+                "responses": {"y1": {}, "y2": {}}, "scenarios": {}}
+    spec = MaterialSpec.from_material("m", material)
+    table = as_stored(table)
+    refits = fit_material(table, spec)
+    frames = {name: as_stored(frame) for name, frame in fit_frames(refits).items()}
+    stored = stored_fits(frames["fits"], frames["anova"], table, spec)
+    assert [f.response for f in stored] == ["y1", "y2"]
+    bounds = ([1.0, 2.0], [3.0, 6.0])
+    for refit, fit in zip(refits, stored):
+        pd.testing.assert_frame_equal(block_anova(fit), block_anova(refit), check_exact=True)
+        pd.testing.assert_frame_equal(coefficient_table(fit), coefficient_table(refit), check_exact=True)
+        assert np.array_equal(fit.coefficients()["coefficient_actual"], refit.coefficients()["coefficient_actual"])
+        mine, theirs = stationary_point(fit, *bounds), stationary_point(refit, *bounds)
+        assert (mine.kind, mine.inside, mine.value) == (theirs.kind, theirs.inside, theirs.value)
+        assert np.array_equal(mine.actual, theirs.actual) and fit.coding == refit.coding
+
+
+def test_report_parameters_injected_after_the_parameters_cell():
+    """As papermill injects them: a tagged cell right after the one tagged ``parameters``, replacing an
+    earlier injection, whose code assigns the values exactly (quotes, backslashes, non-ASCII)."""
+    import nbformat
+
+    from demid.report.render import with_parameters
+
+    nb = nbformat.v4.new_notebook(cells=[
+        nbformat.v4.new_markdown_cell("title"),
+        nbformat.v4.new_code_cell('x = "default"', metadata={"tags": ["parameters"]}),
+        nbformat.v4.new_code_cell("old = 1", metadata={"tags": ["injected-parameters"]}),
+        nbformat.v4.new_code_cell("print(x)")])
+    value = 'braces {x}, "quotes", back\\slash, μ_r,Po ®\nline'
+    out = with_parameters(nb, {"x": value, "results_dir": "results"})
+    tags = [c.metadata.get("tags", []) for c in out.cells]
+    assert tags == [[], ["parameters"], ["injected-parameters"], []]
+    scope = {}
+    exec(out.cells[2].source, scope)
+    assert scope["x"] == value and scope["results_dir"] == "results"
+    assert out.cells[2].id == "injected-parameters"
+    nbformat.validate(out)

@@ -75,7 +75,7 @@ def test_self_made_study_runs_and_is_byte_identical(study_dir, tmp_path):
     table.to_csv(path, index=False)
     edit = run_snakemake(study_dir, study_dir / "study.yaml", "-n")
     jobs = planned_jobs(edit.stdout)
-    assert jobs.get("validate_and_fit") == 1, edit.stdout
+    assert jobs.get("analyse_material") == 1, edit.stdout
     assert re.search(r"material=n\b", edit.stdout)
     assert not re.search(r"material=m\b", edit.stdout), edit.stdout
     assert jobs.get("summary_tables") == 1 and jobs.get("report") == 1

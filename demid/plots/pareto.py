@@ -7,13 +7,14 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .labels import PALETTE, axis_label, tex_label
-from .style import plt
+from .style import plt, styled
 
 if TYPE_CHECKING:
     from ..spec import MaterialSpec
     import pandas as pd
 
 
+@styled
 def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, spec: MaterialSpec, cloud_points: int = 60_000) -> plt.Figure:
     """Objective cloud (a seeded random subsample of the grid) and the Pareto front, with a zoom on
     the low-error end where the front's intervals are read."""

@@ -15,7 +15,7 @@ from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch, Rectangle
 
 from .labels import axis_label
-from .style import MAX_PIXELS, plt, SCENARIO_COLORS, _axis_scale, _extent
+from .style import MAX_PIXELS, plt, SCENARIO_COLORS, _axis_scale, _extent, styled
 
 ZOOM_PIXELS = 600  # nodes per side of the zoom panel's own grid (the panel is ~4 in wide at 300 dpi)
 
@@ -100,6 +100,7 @@ def _zoom_mask(surrogates, spec, result, box, pixels: int = ZOOM_PIXELS) -> np.n
     return (worst <= result.tolerance).reshape(pixels, pixels)
 
 
+@styled
 def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, surrogates: dict | None = None
                 ) -> plt.Figure:
     """Overlay of every scenario's admissible set (pairwise projections for d > 2).

@@ -1,11 +1,12 @@
 """Shared figure style: the Agg backend, rcParams, scenario colours and axis helpers.
 
-Imported by the set, surface and Pareto figures only, so the uncertainty and
-criticism figures keep matplotlib's defaults exactly as before.
+Used by the set, surface and Pareto figures only (:func:`styled`); the uncertainty and
+criticism figures keep matplotlib's defaults.
 """
 
 from __future__ import annotations
 
+import functools
 from typing import TYPE_CHECKING
 
 import matplotlib
@@ -19,10 +20,26 @@ if TYPE_CHECKING:
     from ..sampling import Domain
 
 
-plt.rcParams.update({
+#: rcParams of the set, surface and Pareto figures.  Applied per figure (:func:`styled`), not to the
+#: process: the uncertainty and criticism figures, drawn in the same process, keep matplotlib's defaults.
+STYLE = {
     "figure.dpi": 150, "axes.prop_cycle": matplotlib.cycler(color=PALETTE), "font.size": 9, "axes.titlesize": 10, "axes.labelsize": 9,
     "legend.fontsize": 8, "svg.hashsalt": "demid", "axes.spines.top": False, "axes.spines.right": False,
-})
+}
+
+
+def styled(make):
+    """Build the figure under :data:`STYLE` and remember it there (``figure_style``), so that
+    :func:`demid.io.save_figure` draws it under the same rcParams (tick labels are made at draw time)."""
+
+    @functools.wraps(make)
+    def build(*args, **kwargs):
+        with matplotlib.rc_context(STYLE):
+            fig = make(*args, **kwargs)
+        fig.figure_style = STYLE
+        return fig
+
+    return build
 
 # Scenarios are drawn in order over each other (a later, larger observable set is a subset),
 # in the colour-blind-safe palette.

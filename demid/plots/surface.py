@@ -9,12 +9,13 @@ import pandas as pd
 
 from ..sampling import Domain
 from .labels import axis_label, tex_label, tex_unit
-from .style import plt, _axis_scale
+from .style import plt, styled, _axis_scale
 
 if TYPE_CHECKING:
     from ..spec import MaterialSpec
 
 
+@styled
 def surface_figure(domain: Domain, spec: MaterialSpec, grid: pd.DataFrame, n: int,
                    table: pd.DataFrame | None = None, title: str = "") -> plt.Figure:
     """Contour panel per response over the first two factors (others at their mid-range)."""
@@ -80,6 +81,7 @@ def runs_on_slice(table: pd.DataFrame | None, domain: Domain, held: np.ndarray) 
     return table[(off < 1e-3).all(axis=1)]
 
 
+@styled
 def surface_figure_from_surrogates(surrogates: dict, spec: MaterialSpec, table: pd.DataFrame | None,
                                    n: int = 201) -> plt.Figure:
     """Surface panels on an n x n slice through the first two factors (others at mid-range)."""

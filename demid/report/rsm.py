@@ -4,16 +4,17 @@ Per response: the fitted equation in coded and in actual units, the ANOVA by ter
 (linear, two-factor interaction, pure quadratic; each block's partial sum of squares, i.e. the
 extra sum of squares of dropping it from the full model), residual split into lack of fit and
 pure error, the coefficient table and the stationary point of the surface.  Everything is
-read off :class:`~demid.surrogate.SurrogateFit` (its statsmodels OLS in coded units).
+read off :class:`~demid.surrogate.SurrogateFit` (its statsmodels OLS in coded units) or, in the
+report, off :class:`StoredFit`: the same numbers as the fit step stored them, without a refit.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from types import SimpleNamespace
 
 import numpy as np
 import pandas as pd
-from scipy import stats
 
 BLOCKS = ("Linear", "Two-factor interaction", "Pure quadratic")
 
@@ -28,6 +29,66 @@ def term_block(term: tuple[int, ...]) -> str:
     if order == 2:
         return "Pure quadratic" if max(term) == 2 else "Two-factor interaction"
     return "Higher order"
+
+
+def f_survival(f, dfn, dfd) -> np.ndarray:
+    """``scipy.stats.f.sf(f, dfn, dfd)``: its survival function is ``scipy.special.fdtrc`` (1 left of
+    the support), here without importing scipy.stats, a second of the report kernel's start-up."""
+    from scipy.special import fdtrc
+
+    with np.errstate(invalid="ignore"):
+        return fdtrc(dfn, dfd, np.maximum(np.asarray(f, dtype=float), 0.0))
+
+
+class StoredFit:
+    """One response's quadratic as the fit step stored it (``fits/{m}.parquet`` and
+    ``fits/{m}_anova.parquet``), with the parts of :class:`~demid.surrogate.SurrogateFit` this
+    module reads: the report prints the fits without fitting again (nor importing statsmodels).
+    The design matrix is rebuilt from the validated table exactly as the fit built it."""
+
+    def __init__(self, response: str, factors: list[str], coding, log_factors: tuple[str, ...],
+                 coefficients: pd.DataFrame, anova: pd.DataFrame, table: pd.DataFrame):
+        from ..design import model_matrix, model_units, parse_term
+
+        self.response, self.factors, self.coding = response, list(factors), coding
+        self.log_factors = tuple(log_factors)
+        self._coefficients = coefficients.reset_index(drop=True)
+        self.term_names = self._coefficients["term"].tolist()
+        self.terms = [parse_term(n, self.factors) for n in self.term_names]
+        rows = {r.source: r for r in anova.itertuples(index=False)}
+        sub = table.loc[np.isfinite(table[response].to_numpy(dtype=float))]  # the runs fitted (fit_response)
+        coded = coding.to_coded(model_units(sub[self.factors].to_numpy(dtype=float), self.factors, self.log_factors))
+        column = {name: pd.Series(self._coefficients[name].to_numpy(), index=self.term_names)
+                  for name in ("coefficient_coded", "std_err_coded", "t_value", "p_value")}
+        residual = rows["Residual"]
+        self.results = SimpleNamespace(
+            params=column["coefficient_coded"], bse=column["std_err_coded"], tvalues=column["t_value"],
+            pvalues=column["p_value"], ssr=float(residual.sum_sq), df_resid=float(residual.df),
+            model=SimpleNamespace(exog=model_matrix(coded, self.terms), endog=sub[response].to_numpy(dtype=float)))
+        lof = rows["Lack of fit"]
+        self._anova = SimpleNamespace(
+            df_model=int(rows["Model"].df), ss_model=float(rows["Model"].sum_sq),
+            df_residual=int(residual.df), ss_residual=float(residual.sum_sq),
+            df_lof=int(lof.df), ss_lof=float(lof.sum_sq), lof_f=(float(lof.F), float(lof.p_value)),
+            df_pure_error=int(rows["Pure error"].df), ss_pure_error=float(rows["Pure error"].sum_sq),
+            df_total=int(rows["Total (corrected)"].df), ss_total=float(rows["Total (corrected)"].sum_sq))
+
+    def coefficients(self) -> pd.DataFrame:
+        return self._coefficients
+
+    def anova(self):
+        return self._anova
+
+
+def stored_fits(fits: pd.DataFrame, anova: pd.DataFrame, table: pd.DataFrame, spec) -> list[StoredFit]:
+    """Every response's :class:`StoredFit`, in the order of ``spec``'s responses (as the fit step
+    fitted them), with the coding inferred from the validated table as the fit step inferred it."""
+    from ..data import infer_coding
+
+    coding = infer_coding(table, spec.factor_names, spec.design, spec.data, spec.log_factors)
+    return [StoredFit(r, spec.factor_names, coding, spec.log_factors, fits[fits["response"] == r],
+                      anova[anova["response"] == r], table)
+            for r in spec.response_names if (fits["response"] == r).any()]
 
 
 def block_anova(fit) -> pd.DataFrame:
@@ -49,7 +110,7 @@ def block_anova(fit) -> pd.DataFrame:
     frame = pd.DataFrame(rows, columns=["source", "df", "sum_sq"])
     frame["mean_sq"] = frame["sum_sq"] / frame["df"]
     frame["F"] = frame["mean_sq"] / mse
-    frame["p_value"] = stats.f.sf(frame["F"], frame["df"], df_resid)
+    frame["p_value"] = f_survival(frame["F"], frame["df"], df_resid)
     lof_f, lof_p = lof.lof_f
     tail = pd.DataFrame([
         ("Residual", lof.df_residual, lof.ss_residual, np.nan, np.nan),

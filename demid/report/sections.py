@@ -428,17 +428,18 @@ class ReportSections:
     def response_surfaces(self, m: str) -> list:
         """Per response: equation (coded, actual), block ANOVA, coefficients, stationary point."""
         from ..spec import MaterialSpec
-        from ..surrogate import fit_material
-        from .rsm import block_anova, coefficient_table, equation, stationary_point
+        from .rsm import block_anova, coefficient_table, equation, stationary_point, stored_fits
 
         table = self.root / "validated" / f"{m}.parquet"
-        if not table.is_file():
+        fits, anova = self.root / "fits" / f"{m}.parquet", self.root / "fits" / f"{m}_anova.parquet"
+        if not (table.is_file() and fits.is_file() and anova.is_file()):
             return []
         spec = MaterialSpec.from_material(m, self.config["materials"][m])
         letters = {f: chr(ord("A") + i) for i, f in enumerate(spec.factor_names)}
         coding = None
         lines = ["### Response-surface models", ""]
-        for fit in fit_material(read_parquet(table), spec):
+        # the stored fits, as the fit step wrote them: the report does not fit again
+        for fit in stored_fits(read_parquet(fits), read_parquet(anova), read_parquet(table), spec):
             coding = fit.coding
             label = spec.response_labels.get(fit.response, fit.response)
             coef = coefficient_table(fit)

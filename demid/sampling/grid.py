@@ -28,10 +28,12 @@ if TYPE_CHECKING:
 
 def predict_grid(surrogates: dict[str, Surrogate], domain: Domain, n: int) -> pd.DataFrame:
     """Surrogate predictions at every evaluation point (grid node, or Sobol point above 3 factors)."""
+    from ..surrogate import predict_all
+
     points = domain.sample(n)
     frame = pd.DataFrame(points, columns=list(domain.factors))
-    for name, sur in surrogates.items():
-        frame[name] = sur.predict(points)
+    for name, values in predict_all(surrogates, points).items():
+        frame[name] = values
     return frame
 
 

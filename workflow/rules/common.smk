@@ -1,3 +1,4 @@
+import os
 import sys
 from pathlib import Path
 
@@ -24,6 +25,12 @@ try:
 except InputError as err:
     sys.exit(f"demid: error: {err}")
 
+
+# The jobs allocate short-lived arrays of hundreds of MB (paste's grid has 8.1 million nodes).  numpy
+# asks the kernel to back them with transparent huge pages, and where the kernel compacts memory to
+# find them (THP defrag "madvise") each fault stalls: on the 2-core demo machine that was about a
+# third of the paste job's system time.  Jobs inherit this; a value set by the user wins.
+os.environ.setdefault("NUMPY_MADVISE_HUGEPAGE", "0")
 
 RESULTS = config["results_dir"]
 MATERIALS = list(config["materials"])
@@ -70,6 +77,12 @@ def evaluation_mem_mb(wildcards):
 
 def pareto_materials():
     return [m for m in MATERIALS if config["materials"][m].get("pareto")]
+
+
+def material_pattern(pareto):
+    """The materials with (or without) a Pareto front, as a wildcard constraint (none: matches nothing)."""
+    names = [m for m in MATERIALS if bool(config["materials"][m].get("pareto")) == pareto]
+    return "|".join(names) if names else "(?!x)x"
 
 
 def paper_figures():
@@ -134,6 +147,8 @@ def report_tables():
     out = list(SUMMARY_TABLES)
     out += [f"{RESULTS}/tables/pareto_{m}.csv" for m in pareto_materials()]
     out += [f"{RESULTS}/validated/{m}.json" for m in MATERIALS]
+    out += [f"{RESULTS}/validated/{m}.parquet" for m in MATERIALS]  # with the stored fits: the rsm tables
+    out += [f"{RESULTS}/fits/{m}.parquet" for m in MATERIALS]
     out += [f"{RESULTS}/fits/{m}_anova.parquet" for m in MATERIALS]
     out += [f"{RESULTS}/fits/{m}_diagnostics.parquet" for m in MATERIALS]
     if config.get("published"):
@@ -170,6 +185,50 @@ def report_config_json(wildcards):
 def with_svg(figures):
     """Every figure is written as PNG and as SVG (vector, for a paper)."""
     return [f for png in figures for f in (png, png.removesuffix(".png") + ".svg")]
+
+
+def material_outputs(pareto=False):
+    """Named outputs of a material's job (analyse_material): every per-material file; with
+    ``pareto`` also the front's table and figure."""
+    out = dict(
+        table=f"{RESULTS}/validated/{{material}}.parquet",
+        validation_summary=f"{RESULTS}/validated/{{material}}.json",
+        transcription=f"{RESULTS}/validated/{{material}}_transcription.parquet",
+        fits=f"{RESULTS}/fits/{{material}}.parquet",
+        statistics=f"{RESULTS}/fits/{{material}}_statistics.parquet",
+        anova=f"{RESULTS}/fits/{{material}}_anova.parquet",
+        diagnostics=f"{RESULTS}/fits/{{material}}_diagnostics.parquet",
+        scenarios=f"{RESULTS}/scenarios/{{material}}.parquet",
+        sets_figure=report(f"{RESULTS}/figures/sets_{{material}}.png", category="Admissible sets",
+                           caption="../report/sets.rst"),
+        surface_figure=report(f"{RESULTS}/figures/surface_{{material}}.png", category="Response surfaces",
+                              caption="../report/surface.rst"),
+        robust=f"{RESULTS}/uncertainty/{{material}}_robust.parquet",
+        sweep=f"{RESULTS}/uncertainty/{{material}}_sweep.parquet",
+        information_gain=f"{RESULTS}/uncertainty/{{material}}_information_gain.parquet",
+        ranking=f"{RESULTS}/uncertainty/{{material}}_ranking.parquet",
+        uncertainty_summary=f"{RESULTS}/uncertainty/{{material}}.json",
+        sweep_figure=report(f"{RESULTS}/figures/sweep_{{material}}.png", category="Uncertainty",
+                            caption="../report/sweep.rst"),
+        posterior_figure=report(f"{RESULTS}/figures/posterior_{{material}}.png", category="Uncertainty",
+                                caption="../report/posterior.rst"),
+        criticism=directory(f"{RESULTS}/criticism/{{material}}"),
+        findings=f"{RESULTS}/criticism/{{material}}_findings.parquet",
+        calibration=f"{RESULTS}/criticism/{{material}}_calibration.parquet",
+        criticism_summary=f"{RESULTS}/criticism/{{material}}.json",
+        residuals_figure=report(f"{RESULTS}/figures/residuals_{{material}}.png", category="Model criticism",
+                                caption="../report/residuals.rst"),
+    )
+    if pareto:
+        out.update(
+            pareto=f"{RESULTS}/tables/pareto_{{material}}.csv",
+            pareto_figure=report(f"{RESULTS}/figures/pareto_{{material}}.png", category="Pareto trade-off",
+                                 caption="../report/pareto.rst"),
+        )
+    # save_figure writes each PNG's SVG next to it
+    out.update({name.removesuffix("_figure") + "_svg": with_svg([str(path)])[1]
+                for name, path in out.items() if name.endswith("_figure")})
+    return out
 
 
 def all_outputs():
