@@ -1,4 +1,4 @@
-"""Snakemake script: execute the report notebook (nbclient) and render it as HTML."""
+"""Snakemake script: execute the report notebook with papermill and render it as HTML."""
 
 import sys
 from pathlib import Path

@@ -225,26 +225,3 @@ def test_stored_fit_prints_what_a_refit_prints(log_factor):
         mine, theirs = stationary_point(fit, *bounds), stationary_point(refit, *bounds)
         assert (mine.kind, mine.inside, mine.value) == (theirs.kind, theirs.inside, theirs.value)
         assert np.array_equal(mine.actual, theirs.actual) and fit.coding == refit.coding
-
-
-def test_report_parameters_injected_after_the_parameters_cell():
-    """As papermill injects them: a tagged cell right after the one tagged ``parameters``, replacing an
-    earlier injection, whose code assigns the values exactly (quotes, backslashes, non-ASCII)."""
-    import nbformat
-
-    from demid.report.render import with_parameters
-
-    nb = nbformat.v4.new_notebook(cells=[
-        nbformat.v4.new_markdown_cell("title"),
-        nbformat.v4.new_code_cell('x = "default"', metadata={"tags": ["parameters"]}),
-        nbformat.v4.new_code_cell("old = 1", metadata={"tags": ["injected-parameters"]}),
-        nbformat.v4.new_code_cell("print(x)")])
-    value = 'braces {x}, "quotes", back\\slash, μ_r,Po ®\nline'
-    out = with_parameters(nb, {"x": value, "results_dir": "results"})
-    tags = [c.metadata.get("tags", []) for c in out.cells]
-    assert tags == [[], ["parameters"], ["injected-parameters"], []]
-    scope = {}
-    exec(out.cells[2].source, scope)
-    assert scope["x"] == value and scope["results_dir"] == "results"
-    assert out.cells[2].id == "injected-parameters"
-    nbformat.validate(out)

@@ -1,7 +1,7 @@
 """Cross-material tables and the HTML report.
 
 ``tables`` (the CSVs under tables/), ``sections`` (the report's text, read by the
-notebook) and ``render`` (notebook execution and HTML).
+notebook) and ``render`` (papermill execution and HTML).
 """
 
 from .render import execute_report, render_html

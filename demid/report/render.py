@@ -1,4 +1,4 @@
-"""Executing the report notebook (nbclient, parameters injected as papermill does) and rendering it as HTML."""
+"""Executing the report notebook (papermill) and rendering it as HTML."""
 
 from __future__ import annotations
 
@@ -31,37 +31,18 @@ def _kernel_stderr_to_log():
 
 
 def execute_report(notebook: str | Path, output: str | Path, *, results_dir: str, config_json: str) -> None:
-    """Run the report notebook in a fresh kernel, its parameters injected as papermill injects them
-    (a cell tagged ``injected-parameters`` after the one tagged ``parameters``).  nbclient runs it:
-    papermill's own import pulls in cloud-storage clients, more than a second of start-up."""
-    import nbformat
-    from nbclient import NotebookClient
+    """Run the report notebook with papermill (the kernel is this Python)."""
+    import papermill as pm
 
-    from ..io import atomic_path
-
-    nb = with_parameters(nbformat.read(str(notebook), as_version=4),
-                         {"results_dir": results_dir, "config_json": config_json})
+    Path(output).parent.mkdir(parents=True, exist_ok=True)
     with _kernel_stderr_to_log():
-        NotebookClient(nb, kernel_name="python3", resources={"metadata": {"path": str(Path.cwd())}}).execute()
-    with atomic_path(output) as tmp:
-        nbformat.write(nb, str(tmp))
+        _execute(pm, notebook, output, results_dir, config_json)
 
 
-def with_parameters(nb, parameters: dict):
-    """``nb`` with a code cell assigning ``parameters`` (as Python literals) after the cell tagged
-    ``parameters`` (first, if none is), replacing an earlier injected cell."""
-    import json
-
-    import nbformat
-
-    cells = [c for c in nb.cells if "injected-parameters" not in c.get("metadata", {}).get("tags", [])]
-    tagged = [i for i, c in enumerate(cells) if "parameters" in c.get("metadata", {}).get("tags", [])]
-    source = "# Parameters\n" + "".join(f"{name} = {json.dumps(value)}\n" for name, value in parameters.items())
-    cell = nbformat.v4.new_code_cell(source, metadata={"tags": ["injected-parameters"]})
-    cell["id"] = "injected-parameters"  # papermill's is random, and the HTML carries it: two runs would differ
-    cells.insert(tagged[0] + 1 if tagged else 0, cell)
-    nb.cells = cells
-    return nb
+def _execute(pm, notebook, output, results_dir, config_json) -> None:
+    pm.execute_notebook(str(notebook), str(output), parameters={"results_dir": results_dir,
+                                                                  "config_json": config_json},
+                        kernel_name="python3", progress_bar=False, log_output=False, cwd=str(Path.cwd()))
 
 
 def render_html(notebook: str | Path, output: str | Path) -> None:
@@ -73,6 +54,11 @@ def render_html(notebook: str | Path, output: str | Path) -> None:
 
     exporter = HTMLExporter(exclude_input=True, exclude_input_prompt=True, exclude_output_prompt=True)
     nb = nbformat.read(str(notebook), as_version=4)
+    for cell in nb.cells:
+        if "injected-parameters" in cell.get("metadata", {}).get("tags", []):
+            # papermill gives the cell it inserts a random id, which the HTML carries: a fixed one
+            # keeps two clean runs' reports byte-identical
+            cell["id"] = "injected-parameters"
     body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": "demid — identifiability report"}})
     with atomic_path(output) as tmp:
         Path(tmp).write_text(body, encoding="utf-8")
