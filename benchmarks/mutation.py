@@ -180,9 +180,6 @@ EQUIVALENT: dict[str, str] = {
         "the value is only read through _num(), which turns 'nan' and nan alike into None",
     "demid/criticism/catalogue.py::_het_lr::np.sum(r * r, axis=0) / n => np.sum(r * r, axis=0)#0":
         "shifts every profile log-likelihood by the same 0.5 n log n; the statistic is a difference of two",
-    "demid/criticism/catalogue.py::_outlier_stats::1 - 1e-10 => 1#0":
-        "only runs with leverage in [1 - 1e-10, 1) change: their residual is of order (1 - h), so t is of "
-        "order sqrt(1 - h) < 1e-5 either way and never the maximum; h rounded to 1 is excluded by both",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "

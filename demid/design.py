@@ -16,6 +16,10 @@ Term = tuple[int, ...]
 
 INTERCEPT = "Intercept"
 
+#: A run whose leverage reaches this (1 to round-off) is fitted exactly whatever its value: its
+#: leave-one-out residual, studentised residual and Cook's distance are round-off over round-off.
+LEVERAGE_ONE = 1 - 1e-10
+
 
 def term_name(term: Term, factors: list[str]) -> str:
     parts = []

@@ -19,17 +19,20 @@ from typing import TYPE_CHECKING
 import pandas as pd
 
 if TYPE_CHECKING:
+    from .design import Coding
     from .spec import MaterialSpec
 
 
 @dataclass
 class ValidatedMaterial:
-    """The validation half of ``validate_and_fit``: the checked table, the transcription check, the summary JSON."""
+    """The validation part of a material's job: the checked table, the transcription check, the summary JSON
+    and the design coding."""
 
     table: pd.DataFrame
     transcription: pd.DataFrame
     summary: dict
     warnings: list[str]
+    coding: Coding  # the design coding validation inferred; the fit and criticism reuse it
 
 
 def validate_step(spec: MaterialSpec, data: str | Path) -> ValidatedMaterial:
@@ -51,7 +54,7 @@ def validate_step(spec: MaterialSpec, data: str | Path) -> ValidatedMaterial:
     summary["likely_typos"] = typos
     summary["transcription"] = {r.response: r.to_json() for r in checks}
     return ValidatedMaterial(validated.to_frame(), transcription_frame(checks), summary,
-                             list(validated.warnings) + [flag["message"] for flag in typos])
+                             list(validated.warnings) + [flag["message"] for flag in typos], validated.coding)
 
 
 @dataclass
@@ -136,13 +139,13 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances)
 
     validated = validate_step(spec, data)
     table = as_stored(validated.table)
-    fits = fit_frames(fit_material(table, spec))
+    fits = fit_frames(fit_material(table, spec, coding=validated.coding))
     surrogates = surrogates_from_frame(as_stored(fits["fits"]), spec.factor_names)
     sets = admissibility_step(surrogates, spec, table)
     scenarios = as_stored(sets.scenarios)
     uncertainty = analyse_material(surrogates, spec, z=z, tolerances=tolerances,
                                    strict_sets=stored_strict_sets(scenarios, surrogates, spec))
-    criticism = criticize_material(table, surrogates, spec,
+    criticism = criticize_material(table, surrogates, spec, coding=validated.coding,
                                    strict_sets=stored_strict_sets(scenarios, surrogates, spec, reference=True))
     figures = {"sets_figure": sets.figure, "surface_figure": sets.surface,
                "sweep_figure": uncertainty.sweep_figure(spec.label),

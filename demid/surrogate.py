@@ -15,7 +15,7 @@ from functools import cached_property
 import numpy as np
 import pandas as pd
 
-from .design import Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, replicate_groups, term_name
+from .design import LEVERAGE_ONE, Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, replicate_groups, term_name
 
 
 # Residuals smaller than this share of the response's magnitude are floating-point round-off
@@ -158,11 +158,7 @@ class Surrogate:
         return model_units(points, self.factors, self.log_factors)
 
     def predict(self, points, chunk: int = 65_536) -> np.ndarray:
-        z = self.model_units(points)
-        out = np.empty(z.shape[0])
-        for start in range(0, z.shape[0], chunk):
-            out[start:start + chunk] = model_matrix(z[start:start + chunk], self.terms) @ self.coefficients
-        return out
+        return predict_all({self.response: self}, points, chunk)[self.response]
 
     def se_mean(self, points, chunk: int = 65_536) -> np.ndarray:
         """Standard error of the fitted mean (statsmodels' ``mean_se``)."""
@@ -253,15 +249,17 @@ class SurrogateFit:
     def fitted_exactly(self) -> np.ndarray:
         """Runs of leverage 1 (to round-off): reproduced whatever their value, so their leave-one-out
         statistics are round-off over round-off, i.e. undefined."""
-        return self.hat_diag >= 1 - 1e-10
+        return self.hat_diag >= LEVERAGE_ONE
+
+    @cached_property
+    def loo_residuals(self) -> np.ndarray:
+        """Leave-one-out (PRESS) residuals e / (1 - h); NaN for runs fitted exactly."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(self.fitted_exactly, np.nan, self.results.resid.to_numpy() / (1.0 - self.hat_diag))
 
     @cached_property
     def press(self) -> float:
-        h = self.hat_diag
-        resid = self.results.resid.to_numpy()
-        with np.errstate(divide="ignore", invalid="ignore"):
-            loo = resid / (1.0 - h)
-        return np.nan if self.fitted_exactly.any() else float(np.sum(loo ** 2))
+        return np.nan if self.fitted_exactly.any() else float(np.sum(self.loo_residuals ** 2))
 
     def anova(self) -> LackOfFitAnova:
         res = self.results
@@ -313,17 +311,14 @@ class SurrogateFit:
             frame["cooks_d"] = np.nan
         # Dividing a leverage-1 run's round-off residual by 1 - h gives noise of any size (Cook's
         # d ~ 2e4 seen), not a statistic.
-        exact = self.fitted_exactly
-        frame.loc[exact, ["student_resid", "cooks_d"]] = np.nan
-        with np.errstate(divide="ignore", invalid="ignore"):
-            loo = np.where(exact, np.nan, self.results.resid.to_numpy() / (1 - self.hat_diag))
+        frame.loc[self.fitted_exactly, ["student_resid", "cooks_d"]] = np.nan
         out = pd.DataFrame({
             "response": self.response,
             "run": self.runs,
             "observed": self.y,
             "fitted": self.results.fittedvalues.to_numpy(),
             "residual": self.results.resid.to_numpy(),
-            "loo_residual": loo,
+            "loo_residual": self.loo_residuals,
             "student_resid": frame["student_resid"].to_numpy(),
             "leverage": frame["hat_diag"].to_numpy(),
             "cooks_d": frame["cooks_d"].to_numpy(),
@@ -449,17 +444,19 @@ def surrogates_from_frame(frame: pd.DataFrame, factors: list[str]) -> dict[str, 
 
 
 # --------------------------------------------------------------------------- per-material step
-def fit_material(table: pd.DataFrame, material) -> list[SurrogateFit]:
+def fit_material(table: pd.DataFrame, material, coding: Coding | None = None) -> list[SurrogateFit]:
     """Quadratic fit of every response of a validated table, in the declared design's coding.
 
-    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry).
+    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry); ``coding``
+    is the one validation inferred (None: inferred here the same way).
     """
     from .data import infer_coding
     from .spec import as_spec
 
     spec = as_spec(material)
     factors, log_factors = spec.factor_names, spec.log_factors
-    coding = infer_coding(table, factors, spec.design, spec.data, log_factors)
+    if coding is None:
+        coding = infer_coding(table, factors, spec.design, spec.data, log_factors)
     return [fit_response(table, factors, r, coding=coding, log_factors=log_factors) for r in spec.response_names]
 
 

@@ -20,6 +20,7 @@ from .level2 import calibration_check
 from .run_order import assess_run_order
 
 if TYPE_CHECKING:
+    from ..design import Coding
     from ..spec import MaterialSpec
 
 
@@ -131,12 +132,14 @@ def material_run_order(table: pd.DataFrame, spec: MaterialSpec, coding):
 
 
 def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int | None = None,
-                       title: str | None = None, strict_sets: dict | None = None) -> MaterialCriticism:
+                       title: str | None = None, strict_sets: dict | None = None,
+                       coding: Coding | None = None) -> MaterialCriticism:
     """Level 1 for every response (with the identifiability effect of any extension) and level 2.
 
     ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry); ``n`` and
     ``title`` default to its evaluation size and label.  ``strict_sets`` (scenario name -> the
-    exact strict set the admissibility step stored, with its reference distance) are reused.
+    exact strict set the admissibility step stored, with its reference distance) are reused, and so
+    is ``coding``, the one validation inferred (None: inferred here the same way).
     """
     from ..data import infer_coding
 
@@ -144,7 +147,8 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
     n = spec.grid_points if n is None else n
     title = spec.label if title is None else title
     factors, log_factors, alpha = spec.factor_names, spec.log_factors, spec.axial_alpha
-    coding = infer_coding(table, factors, spec.design, spec.data, log_factors)
+    if coding is None:
+        coding = infer_coding(table, factors, spec.design, spec.data, log_factors)
     run_order = material_run_order(table, spec, coding)
     # Identifiability before/after is evaluated on a coarser grid than the main one: it is a
     # comparison of two surrogates, and 3-factor grids would otherwise dominate the run time.

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (after selecting the backend)
+import matplotlib.pyplot as plt  # noqa: E402,F401  (after selecting the backend; the figure modules import it from here)
 
 from .labels import PALETTE  # noqa: E402
 

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
-from ..design import model_matrix, nominal_levels, replicate_groups
+from ..design import LEVERAGE_ONE, model_matrix, nominal_levels, replicate_groups
 from ..errors import InputError
 from .printed import _jsonable
 
@@ -124,7 +124,7 @@ class _DesignFit:
         sse = np.sum(resid ** 2, axis=0)
         sst = np.sum((y - y.mean(axis=0)) ** 2, axis=0)
         ss_pe = np.sum((y - self.group_mean @ y) ** 2, axis=0)
-        if np.all(self.hat < 1 - 1e-10):
+        if np.all(self.hat < LEVERAGE_ONE):
             press = np.sum((resid / (1.0 - self.hat)[:, None]) ** 2, axis=0)
         else:
             press = np.full(sse.shape, np.nan)
@@ -151,7 +151,7 @@ def _evaluate_designs(coded: np.ndarray, y: np.ndarray, terms: list[Term], to_ac
     sse = np.sum(resid ** 2, axis=1)
     sst = np.full(m, np.sum((y - y.mean()) ** 2))
     with np.errstate(divide="ignore", invalid="ignore"):
-        press = np.where(np.all(hat < 1 - 1e-10, axis=1), np.sum((resid / (1.0 - hat)) ** 2, axis=1), np.nan)
+        press = np.where(np.all(hat < LEVERAGE_ONE, axis=1), np.sum((resid / (1.0 - hat)) ** 2, axis=1), np.nan)
     # Replicates: same coded point after rounding to 6 decimals, as demid.design.replicate_groups.
     keys = np.round(coded, 6)
     same = np.all(keys[:, :, None, :] == keys[:, None, :, :], axis=3)
