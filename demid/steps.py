@@ -139,13 +139,15 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances)
 
     validated = validate_step(spec, data)
     table = as_stored(validated.table)
-    fits = fit_frames(fit_material(table, spec, coding=validated.coding))
+    fitted = fit_material(table, spec, coding=validated.coding)
+    fits = fit_frames(fitted)
     surrogates = surrogates_from_frame(as_stored(fits["fits"]), spec.factor_names)
     sets = admissibility_step(surrogates, spec, table)
     scenarios = as_stored(sets.scenarios)
     uncertainty = analyse_material(surrogates, spec, z=z, tolerances=tolerances,
                                    strict_sets=stored_strict_sets(scenarios, surrogates, spec))
     criticism = criticize_material(table, surrogates, spec, coding=validated.coding,
+                                   fits={fit.response: fit for fit in fitted},
                                    strict_sets=stored_strict_sets(scenarios, surrogates, spec, reference=True))
     figures = {"sets_figure": sets.figure, "surface_figure": sets.surface,
                "sweep_figure": uncertainty.sweep_figure(spec.label),

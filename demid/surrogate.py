@@ -415,7 +415,8 @@ def fit_response(table: pd.DataFrame, factors: list[str], response: str, *, alph
 
 # --------------------------------------------------------------------------- parquet round trip
 def surrogates_to_frame(fits: list[SurrogateFit]) -> pd.DataFrame:
-    """Long table: one row per response x term, coefficients and covariance in actual units."""
+    """Long table: one row per response x term, coefficients and covariance in actual units, and the
+    design coding the fit used (``center:<factor>``, ``unit:<factor>``; see :func:`coding_from_frame`)."""
     frames = []
     for fit in fits:
         coef = fit.coefficients()
@@ -424,8 +425,18 @@ def surrogates_to_frame(fits: list[SurrogateFit]) -> pd.DataFrame:
         coef["resid_var"] = sur.resid_var
         coef["resid_df"] = sur.resid_df
         coef["log_factors"] = ",".join(sur.log_factors)
+        for factor, center, unit in zip(fit.coding.factors, fit.coding.center, fit.coding.unit):
+            coef[f"center:{factor}"] = center
+            coef[f"unit:{factor}"] = unit
         frames.append(pd.concat([coef.reset_index(drop=True), cov], axis=1))
     return pd.concat(frames, ignore_index=True)
+
+
+def coding_from_frame(frame: pd.DataFrame, factors: list[str]) -> Coding:
+    """The design coding stored with the fits (one coding per material: validation's)."""
+    first = frame.iloc[0]
+    return Coding(tuple(factors), tuple(float(first[f"center:{f}"]) for f in factors),
+                  tuple(float(first[f"unit:{f}"]) for f in factors))
 
 
 def surrogates_from_frame(frame: pd.DataFrame, factors: list[str]) -> dict[str, Surrogate]:

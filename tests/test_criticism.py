@@ -144,6 +144,29 @@ def test_baseline_numbers_match_the_surrogate_fit_and_statsmodels():
     assert res.baseline["lof_p"] == pytest.approx(st.lof_p)
 
 
+
+def test_criticism_reuses_the_material_fit_and_its_coding():
+    """Given the material's fit, criticism works in that fit's coding (validation's), not in a second
+    coding of its own: same coded design, same residual table, and the coding changes what it reports."""
+    table, _ = ccd_table(3, 2)
+    factors, alpha = FACTORS[2], design(2)[3]
+    own = Coding.from_levels(factors, table[factors].to_numpy(), alpha)
+    shifted = Coding(own.factors, tuple(c + 0.25 * u for c, u in zip(own.center, own.unit)),
+                     tuple(1.2 * u for u in own.unit))
+    fit = fit_response(table, factors, "y", coding=shifted)
+    res = criticize(table, factors, "y", alpha=alpha, fit=fit)
+    assert res._baseline_model.data.coding == shifted
+    assert np.array_equal(res._baseline_model.data.coded, shifted.to_coded(table[factors].to_numpy()))
+    pd.testing.assert_frame_equal(res.residuals, fit.influence())
+    plain = criticize(table, factors, "y", alpha=alpha)
+    assert plain._baseline_model.data.coding == own
+    # the scatter-by-factor statistics use the coded factor values: a different coding gives different ones
+    by_factor = [e["statistic"] for e in res.catalogue if e["cause"] == "heteroscedasticity" and e["detail"] in factors]
+    plain_by_factor = [e["statistic"] for e in plain.catalogue
+                       if e["cause"] == "heteroscedasticity" and e["detail"] in factors]
+    assert by_factor and by_factor != pytest.approx(plain_by_factor)
+
+
 # --------------------------------------------------------------------------- hidden effects
 PLANTS = [  # (kind, n_factors, size, extra generator arguments)
     ("term", 2, 8.0, {}),

@@ -8,7 +8,7 @@ import statsmodels.formula.api as smf
 from statsmodels.stats.anova import anova_lm
 
 from demid.design import quadratic_terms
-from demid.surrogate import fit_response, surrogates_from_frame, surrogates_to_frame
+from demid.surrogate import coding_from_frame, fit_response, surrogates_from_frame, surrogates_to_frame
 
 from .helpers import make_ccd_table
 
@@ -91,7 +91,9 @@ def test_statistics_definitions_against_statsmodels():
 def test_surrogate_round_trip_predicts_and_matches_statsmodels_se():
     table = make_ccd_table(lambda x: {"y": 1 + x[:, 0] - x[:, 1] ** 2}, [0.1, 1.0], [0.9, 5.0], noise=0.1, seed=2)
     fit = fit_response(table, ["x1", "x2"], "y", alpha=1.41421)
-    sur = surrogates_from_frame(surrogates_to_frame([fit]), ["x1", "x2"])["y"]
+    frame = surrogates_to_frame([fit])
+    sur = surrogates_from_frame(frame, ["x1", "x2"])["y"]
+    assert coding_from_frame(frame, ["x1", "x2"]) == fit.coding  # stored exactly, read back, never re-inferred
     pts = np.array([[0.3, 2.0], [0.7, 4.5], [0.5, 3.0]])
     coded = fit.coding.to_coded(pts)
     from demid.design import model_matrix

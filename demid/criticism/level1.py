@@ -147,13 +147,17 @@ class CriticismResult:
 
 
 def _prepare(table: pd.DataFrame, factors: list[str], response: str, alpha: float | None,
-             log_factors: tuple[str, ...]) -> tuple[_Data, SurrogateFit]:
+             log_factors: tuple[str, ...], fit: SurrogateFit | None = None) -> tuple[_Data, SurrogateFit]:
+    """The data in coded units and the baseline fit: ``fit`` (the material's, in validation's coding)
+    when given, else a fit in a coding from the table's extremes."""
     z = model_units(table[factors].to_numpy(), factors, log_factors)
     ok = np.isfinite(table[response].to_numpy(dtype=float))
     if alpha is None:
         alpha = infer_axial_distance(z[ok])
-    coding = Coding.from_levels(factors, z, alpha)
-    fit = fit_response(table, factors, response, alpha=alpha, coding=coding, log_factors=tuple(log_factors))
+    if fit is None:
+        fit = fit_response(table, factors, response, alpha=alpha,
+                           coding=Coding.from_levels(factors, z, alpha), log_factors=tuple(log_factors))
+    coding = fit.coding
     sub = table.loc[ok]
     runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, int(ok.sum()) + 1)
     data = _Data(response, list(factors), fit.coded, fit.y, runs, coding, float(alpha),
@@ -227,7 +231,8 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
 
 def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: float | None = None,
               family_alpha: float = 0.05, log_factors: tuple[str, ...] = (), max_findings: int = 3,
-              n_null: int = 1999, seed: int = 0, run_order: str | RunOrder = "performed") -> CriticismResult:
+              n_null: int = 1999, seed: int = 0, run_order: str | RunOrder = "performed",
+              fit: SurrogateFit | None = None) -> CriticismResult:
     """Level-1 model criticism of the quadratic surrogate of one response.
 
     ``alpha`` is the CCD axial distance used for coding (None: inferred from the
@@ -235,10 +240,11 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     draws of the joint null (seeded with ``seed``: results are reproducible) give
     the family-adjusted p-values.  ``run_order`` is the declared order of the ``run`` column
     (``performed`` or ``unknown``), or the material's :class:`~demid.criticism.run_order.RunOrder`
-    already assessed: drift is tested only where it can be believed.  See the package docstring
-    (demid.criticism) for the catalogue.
+    already assessed: drift is tested only where it can be believed.  ``fit`` is the response's
+    quadratic fit already made (its coding is then the one used; None: fitted here).  See the package
+    docstring (demid.criticism) for the catalogue.
     """
-    data, fit = _prepare(table, list(factors), response, alpha, tuple(log_factors))
+    data, fit = _prepare(table, list(factors), response, alpha, tuple(log_factors), fit)
     if not isinstance(run_order, RunOrder):
         run_order = assess_run_order(data.runs, data.coded, {response: data.y}, run_order)
     data = replace(data, drift_tested=run_order.drift_tested)

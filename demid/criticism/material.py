@@ -133,13 +133,14 @@ def material_run_order(table: pd.DataFrame, spec: MaterialSpec, coding):
 
 def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int | None = None,
                        title: str | None = None, strict_sets: dict | None = None,
-                       coding: Coding | None = None) -> MaterialCriticism:
+                       coding: Coding | None = None, fits: dict | None = None) -> MaterialCriticism:
     """Level 1 for every response (with the identifiability effect of any extension) and level 2.
 
     ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry); ``n`` and
     ``title`` default to its evaluation size and label.  ``strict_sets`` (scenario name -> the
     exact strict set the admissibility step stored, with its reference distance) are reused, and so
-    is ``coding``, the one validation inferred (None: inferred here the same way).
+    are ``coding``, the one validation inferred (None: inferred here the same way), and ``fits``
+    (response -> its SurrogateFit in that coding; None: fitted here).
     """
     from ..data import infer_coding
 
@@ -156,9 +157,14 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
     n_level2 = n_effect if uses_grid(len(factors)) else max(5, int(2e5 ** (1 / len(factors))))
     scenario_sets = _ScenarioSets(surrogates, spec, n_effect)
     scenario_sets.sets.update(strict_sets or {})
-    response_json, frames, results, fits = {}, [], [], []
+    fits = dict(fits or {})
     for response in spec.response_names:
-        result = criticize(table, factors, response, alpha=alpha, log_factors=log_factors, run_order=run_order)
+        if response not in fits:
+            fits[response] = fit_response(table, factors, response, coding=coding, log_factors=log_factors)
+    response_json, frames, results = {}, [], []
+    for response in spec.response_names:
+        result = criticize(table, factors, response, alpha=alpha, log_factors=log_factors, run_order=run_order,
+                           fit=fits[response])
         payload = result.to_json()
         if result.findings:
             payload["identifiability"] = _identifiability_effect(surrogates, result.extended_surrogate(), response,
@@ -171,7 +177,6 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
                                  columns=frame.columns)
         frames.append(frame)
         results.append(result)
-        fits.append(fit_response(table, factors, response, coding=coding, log_factors=log_factors))
     findings = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame()
 
     targets, domain = spec.targets, spec.domain
@@ -198,5 +203,5 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
         "reference_point": reference_point_position(surrogates, spec, n_effect, scenario_sets),
         "run_order": run_order.to_json(),
     }
-    return MaterialCriticism(response_json, findings, calibration, summary, residual_figure(fits, results, title,
+    return MaterialCriticism(response_json, findings, calibration, summary, residual_figure([fits[r] for r in spec.response_names], results, title,
                                                                                    units={r.name: r for r in spec.responses}))

@@ -82,10 +82,10 @@ class StoredFit:
 
 def stored_fits(fits: pd.DataFrame, anova: pd.DataFrame, table: pd.DataFrame, spec) -> list[StoredFit]:
     """Every response's :class:`StoredFit`, in the order of ``spec``'s responses (as the fit step
-    fitted them), with the coding inferred from the validated table as the fit step inferred it."""
-    from ..data import infer_coding
+    fitted them), in the coding the fit step stored with them (validation's)."""
+    from ..surrogate import coding_from_frame
 
-    coding = infer_coding(table, spec.factor_names, spec.design, spec.data, spec.log_factors)
+    coding = coding_from_frame(fits, spec.factor_names)
     return [StoredFit(r, spec.factor_names, coding, spec.log_factors, fits[fits["response"] == r],
                       anova[anova["response"] == r], table)
             for r in spec.response_names if (fits["response"] == r).any()]
