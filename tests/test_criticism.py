@@ -92,6 +92,19 @@ def test_alias_sets_of_a_three_factor_and_a_face_centred_ccd():
     assert len(pts) == 1 and np.abs(pts[0, 0]) == pytest.approx(0.5)
 
 
+def test_separating_runs_do_not_flip_to_the_mirror_point_on_round_off():
+    """Mirror-image candidates separate equally well; which one is suggested must not depend on the last
+    bits of the coding (one coding or another of the same design gives the same suggested run)."""
+    coded, _ = coded_of(ccd_table(1, 2)[0], FACTORS[2])
+    members = [parse_term("mu_r^3", FACTORS[2]), parse_term("mu_r:gamma^2", FACTORS[2])]
+    alpha = design(2)[3]
+    reference = separating_runs(coded, quadratic_terms(2), members, alpha)
+    rng = np.random.default_rng(5)
+    for _ in range(6):
+        nudged = coded * (1 + 1e-7 * rng.standard_normal(coded.shape))
+        assert np.array_equal(separating_runs(nudged, quadratic_terms(2), members, alpha), reference)
+
+
 # --------------------------------------------------------------------------- statistics vs statsmodels
 def test_catalogue_statistics_match_statsmodels():
     table, _ = ccd_table(7, 2, "term", 3.0, term="gamma^3")

@@ -80,6 +80,11 @@ def _term_classes(coded: np.ndarray, base_terms: list[Term], candidates: list[Te
     return classes + [_TermClass([t], None) for t in inestimable]
 
 
+#: Log pseudo-determinants closer than this are a tie (candidate order decides); distinct candidates
+#: differ by tenths.
+_TIE = 1e-4
+
+
 def _candidate_points(n_factors: int, alpha: float) -> np.ndarray:
     levels = sorted({-alpha, -1.0, -0.5, 0.0, 0.5, 1.0, alpha})
     return np.array(list(product(levels, repeat=n_factors)), dtype=float)
@@ -121,7 +126,9 @@ def _separating_runs_cached(coded_bytes: bytes, shape: tuple, base_terms: tuple,
         best, best_key = None, (rank, -np.inf)
         for c in cands:
             key = _separation_criterion(np.vstack([current, c]), base_terms, members)
-            if key > best_key:
+            # Mirror-image candidates tie up to round-off: the first in candidate order wins a tie, so a
+            # last-bit change of the coding does not flip the suggestion to the mirror point.
+            if key[0] > best_key[0] or (key[0] == best_key[0] and key[1] > best_key[1] + _TIE):
                 best, best_key = c, key
         if best is None or best_key[0] <= rank:
             break
