@@ -15,7 +15,7 @@ def _cfg(path):
 
 
 @pytest.mark.parametrize("seed", range(5))
-@pytest.mark.parametrize("slip", ["decimal", "transposition"])
+@pytest.mark.parametrize("slip", ["decimal", "decimal_up", "transposition"])
 def test_planted_slip_is_flagged_and_clean_table_is_silent(tmp_path, seed, slip):
     table = make_ccd_table(lambda x: {"y": 100 + 20 * x[:, 0] - 3 * x[:, 1] + 8 * x[:, 0] ** 2},
                            [0.1, 1], [0.9, 11], noise=0.3, seed=seed, decimals=2)
@@ -28,6 +28,8 @@ def test_planted_slip_is_flagged_and_clean_table_is_silent(tmp_path, seed, slip)
     text = f"{true_value:.2f}"
     if slip == "decimal":
         typo = f"{true_value / 10:.3f}"
+    elif slip == "decimal_up":  # the point one place right: also a digit swap of other cells' shape
+        typo = f"{true_value * 10:.1f}"
     else:  # swap the first two digits: 1xy.zz -> x1y.zz
         typo = text[1] + text[0] + text[2:]
         if typo == text:
@@ -39,6 +41,7 @@ def test_planted_slip_is_flagged_and_clean_table_is_silent(tmp_path, seed, slip)
     flags = likely_typos(vt, _cfg(path), read_printed(path, vt.table))
     assert [(f["run"], f["column"]) for f in flags] == [(5, "y")]
     assert flags[0]["suggested"] == pytest.approx(true_value)
+    assert flags[0]["kind"] == ("transposition" if slip == "transposition" else "decimal_shift")
 
 
 @pytest.mark.parametrize("df", [1, 2, 3, 4, 5, 8, 13, 40, 121])
@@ -75,3 +78,18 @@ def test_studentised_residuals_match_statsmodels(tmp_path, seed):
     np.testing.assert_allclose(got["student_resid"], reference.resid_studentized_external, rtol=1e-9)
     np.testing.assert_allclose(got["leverage"], reference.hat_matrix_diag, rtol=1e-9)
     np.testing.assert_allclose(got["residual"], fit.results.resid, rtol=1e-9, atol=1e-9)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_a_shifted_point_is_not_read_as_a_swap_with_a_leading_zero(tmp_path, seed):
+    """500.3 typed for 50.03: the point moved one place.  Swapping its first two digits gives 050.3 = 50.3,
+    which may land closer to the prediction, but no table prints 050.3; the shift is the repair named."""
+    table = make_ccd_table(lambda x: {"y": 50.15 + 0.0 * x[:, 0]}, [0.1, 1], [0.9, 11], noise=0.15, seed=seed,
+                           decimals=2)
+    path = tmp_path / "t.csv"
+    lines = table.to_csv(index=False).splitlines()
+    lines = [ln if not ln.startswith("5,") else ",".join(ln.split(",")[:-1] + ["500.3"]) for ln in lines]
+    path.write_text("\n".join(lines) + "\n")
+    vt = validate_material("m", _cfg(path))
+    flags = likely_typos(vt, _cfg(path), read_printed(path, vt.table))
+    assert [(f["run"], f["kind"], f["suggested"]) for f in flags] == [(5, "decimal_shift", 50.03)]

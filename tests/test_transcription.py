@@ -112,6 +112,9 @@ def test_single_cell_slips_cover_every_kind():
     values = [v for _, _, v in single_cell_slips("79.5")]
     assert len(values) == len(set(values)) and 79.5 not in values
     assert {k for k, _, _ in single_cell_slips("-0.0445")} == set(KINDS)
+    # no table prints a leading zero: "500.3" was not typed for "050.3"
+    assert not [t for _, t, _ in single_cell_slips("500.3") if t.lstrip("-").startswith("0") and t[1:2] != "."]
+    assert ("decimal_shift", "50.03") in {(k, t) for k, t, _ in single_cell_slips("500.3")}
 
 
 # --------------------------------------------------------------------------- statistics

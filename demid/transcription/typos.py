@@ -70,6 +70,8 @@ def single_cell_slips(text: str) -> list[tuple[str, str, float]]:
     best: dict[float, tuple[str, str]] = {}
     found_value = float(found)
     for kind, candidate in out:
+        if candidate.lstrip("-")[:1] == "0" and candidate.lstrip("-")[1:2].isdigit():
+            continue  # "050.3": no table prints a leading zero, so no slip produced the cell from it
         try:
             number = Decimal(candidate)
         except InvalidOperation:
@@ -171,13 +173,12 @@ def likely_typos(validated, material, printed: pd.DataFrame | None = None, *,
                 text = printed.loc[table["run"].to_numpy() == run, response].iloc[0]
             else:
                 text = repr(float(observed[i]))
-            best = None
-            for kind, suggested_text, value in single_cell_slips(str(text)):
-                if kind not in kinds:
-                    continue
-                distance = abs(value - loo_pred)
-                if distance <= 3 * se and (best is None or distance < best[0]):
-                    best = (distance, kind, value)
+            # Of the repairs that fit, the commonest slip (KINDS order), then the closest: a centre run's
+            # 500.3 is 50.03 with the point shifted even if a digit swap, 50.3, happens to land closer.
+            fitting = [(_KIND_RANK[kind], abs(value - loo_pred), kind, value)
+                       for kind, _, value in single_cell_slips(str(text))
+                       if kind in kinds and abs(value - loo_pred) <= 3 * se]
+            best = min(fitting)[1:] if fitting else None
             if best is not None:
                 flags.append({"run": _jsonable(run), "column": response, "found": float(observed[i]),
                               "suggested": best[2], "kind": best[1], "student_resid": float(student),
