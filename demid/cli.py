@@ -85,7 +85,7 @@ def cmd_validate(args) -> int:
     for name, mat in config["materials"].items():
         vt = validate_material(name, mat, base_dir=base_dir)
         confirmed = refuse_likely_typos(vt, name, mat, base_dir=base_dir)
-        for w in vt.warnings:
+        for w in vt.warnings + _outside_the_runs(vt, name, mat):
             print(f"demid: warning: {w}", file=sys.stderr)
         for flag in confirmed:
             print(f"demid: note: {mat['data']}, run {flag['run']}, column '{flag['column']}': value confirmed "
@@ -97,6 +97,18 @@ def cmd_validate(args) -> int:
         print(f"{name}: {mat['data']} OK ({len(vt.table)} runs: {counts})")
     print(f"{args.config}: configuration and {len(config['materials'])} table(s) valid")
     return 0
+
+
+def _outside_the_runs(vt, name: str, mat: dict) -> list[str]:
+    """Search bounds, a reference point or targets beyond what the runs simulated (the results would rest
+    on extrapolation, or a slip in the config), said before anything runs."""
+    from .criticism.edges import extrapolation_warnings, target_warnings
+    from .spec import MaterialSpec
+
+    spec = MaterialSpec.from_material(name, mat)
+    runs = vt.table[spec.factor_names].to_numpy(dtype=float)
+    return [f"{mat['data']}: {w}" for w in extrapolation_warnings(spec.domain, runs, spec.reference_point)
+            + target_warnings(vt.table, spec.targets)]
 
 
 def _run_order_note(vt, name: str, mat: dict) -> str:

@@ -91,6 +91,15 @@ def _numbers_written_as_strings(config: dict, validator) -> dict:
         node[err.absolute_path[-1]] = value
 
 
+def _hint(err) -> str:
+    """What a likely slip meant: a tolerance written in percent (5 for 0.05)."""
+    key = str(err.absolute_path[-1]) if err.absolute_path else ""
+    in_tolerances = key == "tolerance" or (len(err.absolute_path) > 1 and err.absolute_path[-2] == "sweep_tolerances")
+    if in_tolerances and err.validator in ("maximum", "exclusiveMaximum") and isinstance(err.instance, (int, float)):
+        return f"; tolerances are fractions: {err.instance:g} % is {err.instance / 100:g}"
+    return ""
+
+
 def validate_schema(config: dict, source: str = "config") -> dict:
     """Validate against the schema, fill defaults, return a new dict.  Raises InputError."""
     import jsonschema  # only validation needs it, not the per-material jobs
@@ -102,7 +111,7 @@ def validate_schema(config: dict, source: str = "config") -> dict:
     if errors:
         err = errors[0]
         more = f" (and {len(errors) - 1} more problem(s))" if len(errors) > 1 else ""
-        raise InputError(f"config key {_key_path(err.absolute_path)}: {err.message}{more}", source=source)
+        raise InputError(f"config key {_key_path(err.absolute_path)}: {err.message}{_hint(err)}{more}", source=source)
     config = copy.deepcopy(config)
     _fill_defaults(config, schema, schema)
     return config

@@ -325,6 +325,30 @@ def check_bounds(table: pd.DataFrame, factors_cfg: dict, src: str, rel_tol: floa
                              f"(config factors.{f})", source=src, run=int(r["run"]), column=f)
 
 
+_SLIP_WORDS = {"decimal_shift": "the decimal point shifted", "transposition": "two adjacent digits swapped",
+               "sign_lost": "its sign lost"}
+
+
+def check_bound_slips(table: pd.DataFrame, material: str, factors_cfg: dict, src: str) -> None:
+    """A search bound beyond the runs that a one-keystroke slip turns into the runs' own extreme value
+    (upper 9.24264 where the largest run is 0.924264) is a typo, not a wider search: refuse it.  Only
+    bounds beyond the runs by a tenth of their range are considered (a bound rounded outwards, 2.9289 for
+    2.92893, is no slip), and only the slips that move a value far: point, swap, sign."""
+    from .transcription.typos import single_cell_slips
+
+    for f, fc in factors_cfg.items():
+        values = table[f].to_numpy(dtype=float)
+        margin = 0.1 * (values.max() - values.min())
+        for side, bound, extreme in (("lower", fc["lower"], values.min()), ("upper", fc["upper"], values.max())):
+            if (bound > extreme - margin) if side == "lower" else (bound < extreme + margin):
+                continue
+            for kind, _, value in single_cell_slips(repr(float(bound))):
+                if kind in _SLIP_WORDS and np.isclose(value, extreme, rtol=1e-6, atol=0.0):
+                    raise InputError(f"config key materials.{material}.factors.{f}.{side}: {bound:g} lies beyond the "
+                                     f"runs, whose {'smallest' if side == 'lower' else 'largest'} {f} is {extreme:g}, "
+                                     f"and looks like {value:g} with {_SLIP_WORDS[kind]}; fix the bound", source=src)
+
+
 def require_estimable(coded: np.ndarray, usable: np.ndarray, point_types: np.ndarray | None, src: str,
                       column: str) -> None:
     """The full quadratic must be estimable, with residual degrees of freedom, from the usable runs.
@@ -375,6 +399,7 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
             raise InputError("a log-scale factor needs positive values", source=src,
                              run=int(bad["run"].iloc[0]), column=f)
     check_bounds(table, mat_cfg["factors"], src)
+    check_bound_slips(table, material, mat_cfg["factors"], src)
     p = len(quadratic_terms(len(factors)))
     for r in responses:
         ok = np.isfinite(table[r].to_numpy())

@@ -315,3 +315,70 @@ def test_material_without_any_target_is_refused_at_validation(tmp_path):
         del c["materials"]["paste"]["pareto"]
     with pytest.raises(InputError, match=r"config key materials\.paste\.responses: no response has a target"):
         _load(tmp_path, mutate)
+
+
+# ----------------------------------------------------------------------------- slips in the config
+@pytest.mark.parametrize("bound, value", [("upper", 9.24264), ("upper", 92.4264), ("lower", 0.75736),
+                                          ("lower", -0.075736)])
+def test_a_search_bound_one_slip_from_the_runs_extreme_is_refused(tmp_path, bound, value):
+    """A bound beyond the runs that a shifted point, swapped digits or a lost sign turn into the runs'
+    own extreme value is a slip in the config: one line naming the key and the value it looks like."""
+    if value > 0.924264 or value < 0.075736:
+        config = _load(tmp_path, lambda c: c["materials"]["poraver"]["factors"]["e"].update({bound: value}))
+        with pytest.raises(InputError, match=rf"materials\.poraver\.factors\.e\.{bound}: {value:g} lies beyond the "
+                                             rf"runs.*looks like {0.924264 if bound == 'upper' else 0.075736:g}"):
+            validate_material("poraver", config["materials"]["poraver"], base_dir=REPO)
+    else:  # a bound inside the runs is the runs-outside-bounds error, located at the run
+        config = _load(tmp_path, lambda c: c["materials"]["poraver"]["factors"]["e"].update({bound: value}))
+        with pytest.raises(InputError, match="outside the declared bounds"):
+            validate_material("poraver", config["materials"]["poraver"], base_dir=REPO)
+
+
+def test_a_deliberately_wider_search_range_is_accepted_and_warned_about(tmp_path):
+    path = tmp_path / "c.yaml"
+    raw = _demo_config()
+    raw["materials"] = {"poraver": raw["materials"]["poraver"]}
+    raw["materials"]["poraver"]["data"] = str(REPO / raw["materials"]["poraver"]["data"])
+    raw["published"] = str(REPO / raw["published"])
+    raw["materials"]["poraver"]["factors"]["e"]["upper"] = 1.0
+    path.write_text(yaml.safe_dump(raw, allow_unicode=True), encoding="utf-8")
+    run = _cli("validate", "--config", str(path))
+    assert run.returncode == 0, run.stderr
+    assert "search range of e, 0.07574 to 1, reaches beyond the runs" in run.stderr
+
+
+@pytest.mark.parametrize("target, looks_like", [(264.0, "26.4 with the decimal point shifted"),
+                                                (-26.4, "26.4 with its sign lost"),
+                                                (2640.0, "26.4 with the decimal point shifted"),
+                                                (900.0, None)])
+def test_a_target_far_outside_every_simulated_value_is_said_before_the_run(tmp_path, target, looks_like):
+    from demid.criticism.edges import target_warnings
+
+    table = validate_material("poraver", _demo_config()["materials"]["poraver"], base_dir=REPO).table
+    assert target_warnings(table, {"aor": 26.4, "shape": 154.75}) == []  # the demo's targets: silent
+    (warning,) = target_warnings(table, {"aor": target, "shape": 154.75})
+    assert f"the target of aor, {target:g}, lies far outside every simulated value" in warning
+    if looks_like:
+        assert f"looks like {looks_like}" in warning
+    else:
+        assert "looks like" not in warning and "discrepancy" in warning
+    assert target_warnings(table, {"aor": 60.0}) == []  # beyond the runs, but by less than their spread
+
+
+@pytest.mark.parametrize("where", ["scenario", "sweep"])
+def test_a_tolerance_written_in_percent_gets_the_fraction_as_hint(where):
+    raw = _demo_config()
+    if where == "scenario":
+        raw["materials"]["poraver"]["scenarios"]["aor_only"]["tolerance"] = 5
+        key = r"materials\.poraver\.scenarios\.aor_only\.tolerance"
+    else:
+        raw["sweep_tolerances"] = [0.01, 2.5]
+        key = r"sweep_tolerances\.1"
+    with pytest.raises(InputError, match=rf"config key {key}: .*; tolerances are fractions: .* % is 0\.0\d+$"):
+        validate_schema(raw)
+    raw["robust_z"] = 0  # other range errors get no tolerance hint
+    raw["materials"]["poraver"]["scenarios"]["aor_only"]["tolerance"] = 0.01
+    raw["sweep_tolerances"] = [0.01]
+    with pytest.raises(InputError) as err:
+        validate_schema(raw)
+    assert "tolerances are fractions" not in str(err.value)
