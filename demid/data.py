@@ -325,8 +325,8 @@ def check_bounds(table: pd.DataFrame, factors_cfg: dict, src: str, rel_tol: floa
                              f"(config factors.{f})", source=src, run=int(r["run"]), column=f)
 
 
-_SLIP_WORDS = {"decimal_shift": "the decimal point shifted", "transposition": "two adjacent digits swapped",
-               "sign_lost": "its sign lost"}
+#: The slips that move a bound far (point, swap, sign): a bound rounded outwards is none of them.
+_BOUND_SLIPS = ("decimal_shift", "transposition", "sign_lost")
 
 
 def check_bound_slips(table: pd.DataFrame, material: str, factors_cfg: dict, src: str) -> None:
@@ -334,7 +334,7 @@ def check_bound_slips(table: pd.DataFrame, material: str, factors_cfg: dict, src
     (upper 9.24264 where the largest run is 0.924264) is a typo, not a wider search: refuse it.  Only
     bounds beyond the runs by a tenth of their range are considered (a bound rounded outwards, 2.9289 for
     2.92893, is no slip), and only the slips that move a value far: point, swap, sign."""
-    from .transcription.typos import single_cell_slips
+    from .transcription.typos import SLIP_WORDS, single_cell_slips
 
     for f, fc in factors_cfg.items():
         values = table[f].to_numpy(dtype=float)
@@ -343,10 +343,10 @@ def check_bound_slips(table: pd.DataFrame, material: str, factors_cfg: dict, src
             if (bound > extreme - margin) if side == "lower" else (bound < extreme + margin):
                 continue
             for kind, _, value in single_cell_slips(repr(float(bound))):
-                if kind in _SLIP_WORDS and np.isclose(value, extreme, rtol=1e-6, atol=0.0):
+                if kind in _BOUND_SLIPS and np.isclose(value, extreme, rtol=1e-6, atol=0.0):
                     raise InputError(f"config key materials.{material}.factors.{f}.{side}: {bound:g} lies beyond the "
                                      f"runs, whose {'smallest' if side == 'lower' else 'largest'} {f} is {extreme:g}, "
-                                     f"and looks like {value:g} with {_SLIP_WORDS[kind]}; fix the bound", source=src)
+                                     f"and looks like {value:g} with {SLIP_WORDS[kind]}; fix the bound", source=src)
 
 
 def require_estimable(coded: np.ndarray, usable: np.ndarray, point_types: np.ndarray | None, src: str,
@@ -424,13 +424,6 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
                           log_factors=log_factors)
 
 
-_SLIP_WORDING = {
-    "decimal_shift": "with the decimal point shifted",
-    "transposition": "with two adjacent digits swapped",
-    "sign_lost": "with its sign lost",
-}
-
-
 def _shortest(value: float) -> str:
     return np.format_float_positional(float(value), trim="-")
 
@@ -449,6 +442,7 @@ def refuse_likely_typos(validated: ValidatedTable, material: str, mat_cfg: dict,
     returned so they can still be shown.  Raises InputError naming the file, run and column.
     """
     from .transcription import likely_typos
+    from .transcription.typos import SLIP_WORDS
 
     src = str(Path(mat_cfg["data"]))
     key = f"materials.{material}.confirmed_values"
@@ -470,7 +464,7 @@ def refuse_likely_typos(validated: ValidatedTable, material: str, mat_cfg: dict,
             continue
         found = printed.loc[validated.table["run"].to_numpy() == run, column].iloc[0]
         raise InputError(f"{found} looks like {_shortest(flag['suggested'])} "
-                         f"{_SLIP_WORDING.get(flag['kind'], 'mistyped')}; fix the cell, or confirm the value "
+                         f"with {SLIP_WORDS[flag['kind']]}; fix the cell, or confirm the value "
                          f"with confirmed_values: [{{run: {run}, column: {column}}}]",
                          source=src, run=run, column=column)
     return flags

@@ -364,3 +364,44 @@ def test_unusable_input_raises_input_error(tables):
     bad.loc[4, "y"] = "2,68"
     with pytest.raises(InputError, match="run 5, column 'y'"):
         check_transcription(bad, factors, "y", published, alpha=alpha)
+
+
+def _slipped(text: str, slip: str) -> str:
+    """``text`` as a typist would have mistyped it (the slip that :func:`single_cell_slips` undoes)."""
+    from decimal import Decimal
+
+    if slip == "decimal_shift":
+        return format(Decimal(text).scaleb(1), "f")
+    if slip == "sign_lost":
+        return "-" + text
+    i = next(i for i in range(len(text) - 1, 0, -1) if text[i].isdigit() and text[i - 1].isdigit()
+             and (slip == "digit_doubled" or text[i] != text[i - 1]))
+    if slip == "digit_doubled":
+        return text[:i] + text[i] + text[i:]
+    return text[:i - 1] + text[i] + text[i - 1] + text[i + 1:]  # transposition
+
+
+@pytest.mark.parametrize("k", [2, 3])
+@pytest.mark.parametrize("statistic, slip", [("rmse", "decimal_shift"), ("r2", "transposition"),
+                                             ("adj_r2", "digit_doubled"), ("rmse", "sign_lost")])
+def test_a_slip_in_one_printed_statistic_is_located_in_the_statistic_not_the_table(tables, k, statistic, slip):
+    """Every other statistic agrees and a one-keystroke slip of the disagreeing one's printed text rounds to
+    the refit: the slip is in the printed statistic.  The table is not blamed and no cell is suspected."""
+    printed, factors, alpha, published = tables[k]
+    true_text = published[statistic]
+    wrong = _slipped(true_text, slip)
+    result = check_transcription(numeric(printed), factors, "y", {**published, statistic: wrong}, alpha=alpha,
+                                 printed=printed)
+    assert not result.consistent and result.suspects == [] and result.explained is False
+    assert result.printed_slip == {"statistic": statistic, "printed": wrong, "looks_like": true_text, "kind": slip}
+    assert f"the printed {statistic}, {wrong}, looks like {true_text}" in result.message
+    assert json.loads(json.dumps(result.to_json()))["printed_slip"]["looks_like"] == true_text
+
+
+def test_a_single_published_statistic_off_is_not_blamed_on_the_print_alone(tables):
+    """With one published number there is nothing that agrees to vouch for the table: no printed slip is
+    claimed, and the message allows both readings."""
+    printed, factors, alpha, published = tables[2]
+    result = check_transcription(numeric(printed), factors, "y", {"r2": "0.1234"}, alpha=alpha, printed=printed)
+    assert result.printed_slip is None and not result.consistent
+    assert "or the printed value is itself wrong" in result.message

@@ -84,15 +84,15 @@ def extrapolation_warnings(domain: Domain, runs: np.ndarray | None, reference_po
     return out
 
 
-_TARGET_SLIPS = {"decimal_shift": "the decimal point shifted", "transposition": "two adjacent digits swapped",
-                 "sign_lost": "its sign lost"}
+#: The slips that move a target far (point, swap, sign).
+_TARGET_SLIPS = ("decimal_shift", "transposition", "sign_lost")
 
 
 def target_warnings(table, targets: dict) -> list[str]:
     """Targets farther outside every simulated value of their response than the simulated values spread
     (more than one range beyond the nearest run): said before anything runs, naming a one-keystroke slip
     that would bring the target among the simulated values (264 for 26.4)."""
-    from ..transcription.typos import single_cell_slips
+    from ..transcription.typos import SLIP_WORDS, single_cell_slips
 
     out = []
     for response, target in targets.items():
@@ -109,7 +109,7 @@ def target_warnings(table, targets: dict) -> list[str]:
                  if kind in _TARGET_SLIPS and lo <= value <= hi]
         if slips:
             value, kind = slips[0]
-            out.append(f"{where} and looks like {_g(value)} with {_TARGET_SLIPS[kind]}; check the target. As given, "
+            out.append(f"{where} and looks like {_g(value)} with {SLIP_WORDS[kind]}; check the target. As given, "
                        "no simulated setting comes near it and level 2 will report a discrepancy.")
         else:
             out.append(f"{where}; no simulated setting comes near it, so level 2 will report a discrepancy "

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
@@ -17,7 +17,7 @@ from .engine import (_ALPHA_SLACK, _DesignFit, _coded_to_actual_matrix, _design_
                      _lack_of_fit_p, _levels_for_cell, _numeric, _runs)
 from .printed import (_agreement, _cell_texts, _format, _irregularity, _jsonable, _parse_published,
                       _precision_elsewhere, parse_printed)
-from .typos import _KIND_RANK, single_cell_slips
+from .typos import _KIND_RANK, KINDS, SLIP_WORDS, single_cell_slips
 
 
 # --------------------------------------------------------------------------- results
@@ -48,7 +48,10 @@ class TranscriptionResult:
     ``coef_coded[a:b]`` or ``coef_actual[a:b]``); ``printed`` keeps each published
     value as printed.  ``explained`` is None when consistent, True when a
     single-cell repair restores every published statistic, False otherwise.
-    ``n_candidates`` counts the single-cell hypotheses evaluated.
+    ``n_candidates`` counts the single-cell hypotheses evaluated.  ``printed_slip`` is set when the
+    table reproduces every published statistic but one, and a one-keystroke slip of that printed
+    statistic gives the reproduced value (``statistic``, ``printed``, ``looks_like``, ``kind``): the slip
+    is then in the printed (or transcribed) statistic, not in the table.
     """
 
     response: str
@@ -61,6 +64,7 @@ class TranscriptionResult:
     message: str
     printed: dict[str, str] = field(default_factory=dict)
     n_candidates: int = 0
+    printed_slip: dict | None = None
 
     @property
     def n_published(self) -> int:
@@ -77,6 +81,7 @@ class TranscriptionResult:
             "printed": dict(self.printed),
             "n_published": self.n_published,
             "explained": self.explained,
+            "printed_slip": self.printed_slip,
             "message": self.message,
         }
 
@@ -182,11 +187,19 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
         to_actual = [_coded_to_actual_matrix(c, terms) for c in repaired_codings] if need_actual else None
         blocks.append(_evaluate_designs(np.stack(repaired), y, terms, to_actual, coef_index))
 
+    # A slip in one printed statistic is considered only when no slip in the table explains everything.
+    slip = _printed_slip(targets, reproduced, agrees)
+    if slip is not None:
+        slip_result = replace(result(False, [], False, _printed_slip_message(response, slip, n_pub, n_agree),
+                                     len(records)), printed_slip=slip)
     if not records:
-        return result(False, [], False, _unexplained_message(response, targets, reproduced, agrees, 0, 0), 0)
+        return slip_result if slip is not None else result(
+            False, [], False, _unexplained_message(response, targets, reproduced, agrees, 0, 0), 0)
     restores, misfit, order = _rank_repairs(records, blocks, targets, table.columns)
     full = order[restores[order] == n_pub]
     explained = bool(full.size)
+    if not explained and slip is not None:
+        return slip_result
     chosen = full if explained else order[restores[order] > n_agree]
     chosen = chosen[: max_suspects if explained else min(max_suspects, 5)]
     runs = _runs(table)
@@ -324,6 +337,37 @@ def _rank_repairs(records: list[tuple], blocks: list[dict], targets: dict, colum
     return restores, misfit, order
 
 
+#: Slips of a printed statistic that are looked for: each moves the value far, so a repair that rounds
+#: to the reproduced value is not a coincidence (a substituted digit could be).
+_STATISTIC_SLIPS = ("sign_lost", "decimal_shift", "transposition", "digit_doubled", "digit_dropped")
+
+
+def _printed_slip(targets: dict, reproduced: dict, agrees: dict) -> dict | None:
+    """The one disagreeing statistic, when every other agrees and a slip of its printed text rounds to the
+    reproduced value (0.898 printed for 0.989)."""
+    off = [name for name in targets if not agrees[name]]
+    if len(targets) < 2 or len(off) != 1 or targets[off[0]].relation != "=" or "%" in targets[off[0]].text:
+        return None
+    name = off[0]
+    printed_decimals = targets[name].decimals
+    # a candidate with more decimals than printed would explain any near miss by "a digit dropped" at the end
+    fitting = sorted((_KIND_RANK[kind], text) for kind, text, _ in single_cell_slips(targets[name].text)
+                     if kind in _STATISTIC_SLIPS
+                     and (kind != "digit_dropped" or parse_printed(text).decimals <= printed_decimals)
+                     and bool(parse_printed(text).agrees(reproduced[name])))
+    if not fitting:
+        return None
+    rank, text = fitting[0]
+    return {"statistic": name, "printed": targets[name].text, "looks_like": text, "kind": KINDS[rank]}
+
+
+def _printed_slip_message(response: str, slip: dict, n_pub: int, n_agree: int) -> str:
+    return (f"the table reproduces {n_agree} of {n_pub} published statistics of '{response}'; the printed "
+            f"{slip['statistic']}, {slip['printed']}, looks like {slip['looks_like']} "
+            f"with {SLIP_WORDS[slip['kind']]}: the slip is in the printed or transcribed statistic, not in the "
+            f"table — check the source's value")
+
+
 def _explained_message(response: str, best: Suspect, n_pub: int, n_agree: int, n_full: int) -> str:
     message = (f"the table does not reproduce {n_pub - n_agree} of {n_pub} published statistics of "
                f"'{response}'; a single-cell slip explains it: run {best.run}, column '{best.column}' "
@@ -340,7 +384,7 @@ def _unexplained_message(response, targets, reproduced, agrees, n_partial, best_
            for name in targets if not agrees[name]]
     message = (f"'{response}' disagrees with the source ({'; '.join(off)}). No single-cell slip explains the "
                "disagreement: the table or the model differs from the source's in a bigger way "
-               "(a different model, a dropped run, more than one typo)")
+               "(a different model, a dropped run, more than one typo), or the printed value is itself wrong")
     unreproducible = [name for name in targets if not np.isfinite(reproduced[name])]
     if unreproducible:
         message += (f"; {', '.join(unreproducible)} cannot be computed from this table "

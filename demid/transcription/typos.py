@@ -26,6 +26,11 @@ KINDS = ("sign_lost", "decimal_shift", "transposition", "digit_doubled", "digit_
 
 _KIND_RANK = {kind: i for i, kind in enumerate(KINDS)}
 
+#: Each slip in words, as messages say what a value "looks like ... with".
+SLIP_WORDS = {"sign_lost": "its sign lost", "decimal_shift": "the decimal point shifted",
+              "transposition": "two adjacent digits swapped", "digit_doubled": "a digit doubled",
+              "digit_dropped": "a digit dropped", "digit_substitution": "a digit mistyped"}
+
 
 _ALL_DIGITS = "0123456789"
 
