@@ -439,6 +439,27 @@ def test_level2_best_point_is_the_minimax_point():
     assert res.best_max_error == pytest.approx(worst(x0[None, :])[0])
 
 
+def test_implied_bias_is_the_smallest_bias_when_the_other_targets_leave_a_curve():
+    """Two readings, two parameters: meeting A leaves a line of points, and B's bias along it is not one
+    number.  A = 10 + x1 (target 10.5: the line x1 = 0.5); B = 10 + 0.5 x1 + x2 (target 20, unreachable):
+    along the line B runs from 10.25 to 11.25, so the smallest bias B needs is (11.25 - 20) / 20 = -0.4375
+    (exact).  When every target can be met, no bias is implied."""
+    from demid.surrogate import Surrogate
+
+    factors = ["x1", "x2"]
+    terms = quadratic_terms(2)
+    zeros = np.zeros((6, 6))
+    a = Surrogate("A", factors, terms, np.array([10.0, 1.0, 0, 0, 0, 0]), zeros, 1.0, 7)
+    b = Surrogate("B", factors, terms, np.array([10.0, 0.5, 1.0, 0, 0, 0]), zeros, 1.0, 7)
+    domain = Domain(tuple(factors), (0.0, 0.0), (1.0, 1.0))
+    res = calibration_check({"A": a, "B": b}, domain, {"A": 10.5, "B": 20.0}, 0.02, 41, None)
+    assert not res.feasible and res.without["B"] == pytest.approx(0.0, abs=1e-9)
+    # (A is held within a thousandth of the tolerance of its best, which moves B by at most 1e-5)
+    assert res.implied_bias["B"] == pytest.approx(-0.4375, abs=1e-5)
+    met = calibration_check({"A": a, "B": b}, domain, {"A": 10.5, "B": 10.5}, 0.02, 41, None)
+    assert met.feasible and max(abs(v) for v in met.implied_bias.values()) < 1e-6
+
+
 @pytest.mark.parametrize("shift", [4.0, 6.0])
 def test_level2_hidden_bias_is_named_with_a_spare_measurement(shift):
     """Four readings, two parameters: the biased reading is the bottleneck; at 6 tolerances it is

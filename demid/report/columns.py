@@ -127,8 +127,8 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "within_tolerance_reference": ("–", "|rel_error_reference| ≤ tolerance (empty without reference point)."),
         "bottleneck": ("–", "True for the observable that keeps the targets from being met together."),
         "max_error_without": (FRACTION, "Best achievable largest relative error when this observable is left out."),
-        "implied_bias": (FRACTION, "Relative simulation bias this observable would need for all targets to be met "
-                                   "exactly at one point."),
+        "implied_bias": (FRACTION, "Smallest relative simulation bias this observable would need while the other "
+                                   "targets are met as well as they can be (0 when every target is met together)."),
         "bias_candidate": ("–", "True when leaving this observable out makes every other target reachable: the "
                                 "simulation may be biased in it."),
     },
