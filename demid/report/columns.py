@@ -128,7 +128,8 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "bottleneck": ("–", "True for the observable that keeps the targets from being met together."),
         "max_error_without": (FRACTION, "Best achievable largest relative error when this observable is left out."),
         "implied_bias": (FRACTION, "Smallest relative simulation bias this observable would need while the other "
-                                   "targets are met as well as they can be (0 when every target is met together)."),
+                                   "targets are met as well as they can be (0 when every target can be met within "
+                                   "the tolerance together)."),
         "bias_candidate": ("–", "True when leaving this observable out makes every other target reachable: the "
                                 "simulation may be biased in it."),
     },
