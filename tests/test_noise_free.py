@@ -44,6 +44,19 @@ def test_exact_quadratic_gives_no_findings_and_undefined_lack_of_fit(k, seed, sc
     result = criticize(table, factors, "y", n_null=199)
     assert result.to_frame().empty
     assert result.to_json()["baseline"]["lof_f"] is None  # undefined, not infinite
+    # the verdict says why nothing was tested, not that there were too few runs
+    assert result.verdict == "adequate" and "goes through every run to round-off" in result.verdict_detail["message"]
+    assert "too few spare runs" not in result.verdict_detail["message"]
+
+
+@pytest.mark.parametrize("k,value", [(2, 30.0), (3, 0.125)])
+def test_a_response_that_never_changes_is_said_to_identify_nothing(k, value):
+    table = _exact_table(k, 7, 1.0)
+    table["y"] = value
+    result = criticize(table, [f"x{i + 1}" for i in range(k)], "y", n_null=199)
+    assert result.to_frame().empty and result.verdict == "adequate"
+    message = result.verdict_detail["message"]
+    assert f"the same value ({value:g}) in every run" in message and "cannot identify any of them" in message
 
 
 @pytest.mark.parametrize("seed", [5, 6])

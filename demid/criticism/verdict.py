@@ -160,6 +160,23 @@ def power_caveat(response: str, n_runs: int, df_resid: int, n_tests: int, family
                        f"may be present."}
 
 
+def _exact_fit_message(response: str, fit: SurrogateFit) -> str:
+    """What an adequate verdict means when the runs leave no scatter to test against ("" otherwise): the
+    response never changes, or the quadratic goes through every run to round-off (a deterministic
+    simulation of an exactly quadratic response)."""
+    from ..surrogate import round_off_floor, round_off_only
+
+    y = np.asarray(fit.y, dtype=float)
+    if np.ptp(y) <= round_off_floor(y):
+        return (f"{response}: the same value ({_g(float(y[0]))}) in every run — within the design's range no factor "
+                "moves it, so it cannot identify any of them, and there is no scatter to criticise.")
+    if round_off_only(fit.results.resid, y):
+        return (f"{response}: the quadratic goes through every run to round-off (a deterministic simulation of an "
+                "exactly quadratic response): no defect shows at the runs, and with no scatter there is nothing "
+                "to test against; between the runs the quadratic is not checked.")
+    return ""
+
+
 def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
                family_alpha: float) -> tuple[str, dict]:
     """The verdict and what supports it (numbers for the JSON, a message for the report)."""
@@ -182,6 +199,10 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
     if unexplained:
         detail["message"] = unexplained["message"]
         return "unexplained", detail
+    exact = _exact_fit_message(r, fit)
+    if exact:
+        detail.update({"detectable_sd": None, "detectable": None, "message": exact})
+        return "adequate", detail
     caveat = power_caveat(r, n, n - st.n_params, len(catalogue), family_alpha, st.resid_std,
                           specific_share=_specific_share([e["cause"] for e in catalogue]))
     detail.update({k: v for k, v in caveat.items() if k != "message"})
