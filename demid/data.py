@@ -410,6 +410,12 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
     coded = coding.to_coded(model_units(table[factors].to_numpy(), factors, log_factors))
     for r in responses:
         require_estimable(coded, np.isfinite(table[r].to_numpy()), types, src, r)
+    for r in responses:
+        values = table[r].to_numpy(dtype=float)
+        values = values[np.isfinite(values)]
+        if len(values) and np.ptp(values) == 0:
+            warnings.append(f"{src}, column '{r}': the same value ({values[0]:g}) in every run, so it cannot "
+                            "identify any factor (a column filled in by mistake?)")
     failed: dict[str, list] = {}
     for r in responses:
         ok = np.isfinite(table[r].to_numpy())

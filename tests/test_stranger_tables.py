@@ -382,3 +382,17 @@ def test_a_tolerance_written_in_percent_gets_the_fraction_as_hint(where):
     with pytest.raises(InputError) as err:
         validate_schema(raw)
     assert "tolerances are fractions" not in str(err.value)
+
+
+def test_a_response_with_the_same_value_in_every_run_is_warned_about(tmp_path):
+    table = (REPO / "data/ccd/poraver.csv").read_text(encoding="utf-8").splitlines()
+    header = table[0].split(",")
+    col = header.index("shape")
+    rows = [",".join(v if i != col else "150" for i, v in enumerate(line.split(","))) for line in table[1:]]
+    path = tmp_path / "t.csv"
+    path.write_text("\n".join([table[0], *rows]) + "\n", encoding="utf-8")
+    mat = {**_demo_config()["materials"]["poraver"], "data": str(path)}
+    warnings = validate_material("poraver", mat, base_dir=REPO).warnings
+    assert [w for w in warnings if "column 'shape': the same value (150) in every run" in w]
+    assert not [w for w in validate_material("poraver", _demo_config()["materials"]["poraver"], base_dir=REPO).warnings
+                if "the same value" in w]

@@ -101,7 +101,7 @@ def target_warnings(table, targets: dict) -> list[str]:
         if not len(y):
             continue
         lo, hi = float(y.min()), float(y.max())
-        if lo - (hi - lo) <= target <= hi + (hi - lo):
+        if lo == hi or lo - (hi - lo) <= target <= hi + (hi - lo):  # a constant column is warned of apart
             continue
         where = (f"the target of {response}, {_g(target)}, lies far outside every simulated value "
                  f"({_g(lo)} to {_g(hi)})")

@@ -171,34 +171,49 @@ def _minimax(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, 
     return best_val, best_s, best_delta
 
 
-#: Weight of the observable whose bias is sought, against the others, in the minimax of
-#: :func:`_smallest_bias`: the others are then met to within this fraction of that bias.
+#: Weight of the bias sought against the others' largest error in :func:`_smallest_bias`: the others are met
+#: to within this fraction of the range the bias could take.
 _BIAS_WEIGHT = 1e-5
 
 
-class _Weighted:
-    """A :class:`_Level2Problem` whose errors are scaled row by row (a weighted minimax)."""
-
-    def __init__(self, problem: _Level2Problem, weights: np.ndarray):
-        self.problem, self.weights = problem, np.asarray(weights, dtype=float)[:, None]
-
-    def errors(self, s: np.ndarray) -> np.ndarray:
-        return self.problem.errors(s) * self.weights
-
-
 def _smallest_bias(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, row: int,
-                   others: list[int]) -> float:
+                   others: list[int], starts: int = 4) -> float:
     """The relative error of observable ``row`` closest to zero among the points that meet the ``others``
-    best.  With fewer other observables than parameters those points form a curve or a surface, and the
-    error at one arbitrary point of it is no bias the data imply; the smallest is.  Solved as the minimax
-    of the others' errors and ``_BIAS_WEIGHT`` times this one's (the others are met to within that
-    fraction of the bias; where they cannot be met, their best point decides).
+    best.  With fewer other observables than parameters those points form a curve or a surface (or, where
+    the others do not change, the whole domain), and the error at one arbitrary point of it is no bias the
+    data imply; the smallest is.  Solved as min t + w u subject to |e_j| <= t (others), |e_row| <= u, with
+    w = ``_BIAS_WEIGHT``: always feasible, so SLSQP needs no feasible start.
     """
-    weights = np.ones(len(grid_err))
-    weights[row] = _BIAS_WEIGHT
-    rows = sorted([row, *others])
-    _, s, _ = _minimax(_Weighted(problem, weights), grid_s, grid_err * weights[:, None], rows)
-    return float(problem.errors(s)[row, 0])
+    d = grid_s.shape[1]
+    score = np.max(np.abs(grid_err[others]), axis=0) + _BIAS_WEIGHT * np.abs(grid_err[row])
+    order = np.argsort(score, kind="stable")
+    picks = [order[0]]
+    for i in order[1:]:
+        if len(picks) >= starts:
+            break
+        if np.min(np.max(np.abs(grid_s[picks] - grid_s[i]), axis=1)) > 0.1:
+            picks.append(i)
+
+    def cons(v):
+        e = problem.errors(v[:d])[:, 0]
+        return np.concatenate([v[d] - e[others], v[d] + e[others], [v[d + 1] - e[row], v[d + 1] + e[row]]])
+
+    best_score, best_s = np.inf, grid_s[order[0]]
+    for i in picks:
+        e0 = problem.errors(grid_s[i])[:, 0]
+        x0 = np.concatenate([grid_s[i], [np.max(np.abs(e0[others])), abs(e0[row])]])
+        with warnings.catch_warnings(), np.errstate(all="ignore"):
+            warnings.simplefilter("ignore")
+            res = optimize.minimize(lambda v: v[d] + _BIAS_WEIGHT * v[d + 1], x0, method="SLSQP",
+                                    bounds=[(0.0, 1.0)] * d + [(0.0, None), (0.0, None)],
+                                    constraints=[{"type": "ineq", "fun": cons}],
+                                    options={"maxiter": 300, "ftol": 1e-15})
+        s = np.clip(res.x[:d], 0.0, 1.0)
+        e = problem.errors(s)[:, 0]
+        value = np.max(np.abs(e[others])) + _BIAS_WEIGHT * abs(e[row])
+        if value < best_score:
+            best_score, best_s = value, s
+    return float(problem.errors(best_s)[row, 0])
 
 
 def calibration_check(surrogates: dict, domain, targets: dict[str, float], tolerance: float, n: int,
