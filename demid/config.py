@@ -94,7 +94,8 @@ def _numbers_written_as_strings(config: dict, validator) -> dict:
 def _hint(err) -> str:
     """What a likely slip meant: a tolerance written in percent (5 for 0.05)."""
     key = str(err.absolute_path[-1]) if err.absolute_path else ""
-    in_tolerances = key == "tolerance" or (len(err.absolute_path) > 1 and err.absolute_path[-2] == "sweep_tolerances")
+    path = list(err.absolute_path)
+    in_tolerances = key == "tolerance" or (len(path) > 1 and path[-2] == "sweep_tolerances")
     if in_tolerances and err.validator in ("maximum", "exclusiveMaximum") and isinstance(err.instance, (int, float)):
         return f"; tolerances are fractions: {err.instance:g} % is {err.instance / 100:g}"
     return ""

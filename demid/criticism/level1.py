@@ -18,7 +18,7 @@ from ..design import Coding, model_matrix, model_units, quadratic_terms, term_na
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .catalogue import _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
-from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, _exact_fit_message, strongest_rival,
+from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, strongest_rival,
                       unexplained_evidence, verdict_of)
 from .messages import _CAUSE_WORDS, _message
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
@@ -312,7 +312,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
             findings, model = [], base_model
 
     baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
-    summary = _summary(data, findings, catalogue, family_alpha, gain, _exact_fit_message(response, fit))
+    summary = _summary(data, findings, catalogue, family_alpha, gain, exact_fit_message(response, fit))
     if unexplained:
         summary = unexplained["message"]
     if not run_order.drift_tested:

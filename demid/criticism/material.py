@@ -203,5 +203,6 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
         "reference_point": reference_point_position(surrogates, spec, n_effect, scenario_sets),
         "run_order": run_order.to_json(),
     }
-    return MaterialCriticism(response_json, findings, calibration, summary, residual_figure([fits[r] for r in spec.response_names], results, title,
-                                                                                   units={r.name: r for r in spec.responses}))
+    figure = residual_figure([fits[r] for r in spec.response_names], results, title,
+                             units={r.name: r for r in spec.responses})
+    return MaterialCriticism(response_json, findings, calibration, summary, figure)

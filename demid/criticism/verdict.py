@@ -160,7 +160,7 @@ def power_caveat(response: str, n_runs: int, df_resid: int, n_tests: int, family
                        f"may be present."}
 
 
-def _exact_fit_message(response: str, fit: SurrogateFit) -> str:
+def exact_fit_message(response: str, fit: SurrogateFit) -> str:
     """What an adequate verdict means when the runs leave no scatter to test against ("" otherwise): the
     response never changes, or the quadratic goes through every run to round-off (a deterministic
     simulation of an exactly quadratic response)."""
@@ -199,7 +199,7 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
     if unexplained:
         detail["message"] = unexplained["message"]
         return "unexplained", detail
-    exact = _exact_fit_message(r, fit)
+    exact = exact_fit_message(r, fit)
     if exact:
         detail.update({"detectable_sd": None, "detectable": None, "message": exact})
         return "adequate", detail
