@@ -288,6 +288,7 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
     snapped = np.array([[levels[np.argmin(np.abs(levels - c))] for c in row] for row in coded])
     types = classify_points(snapped, alpha)
     k = len(factors)
+    _refuse_misplaced_points(table, factors, design, snapped, types, levels, coding, log_factors, src)
     if dtype == "ccd":
         expected = {"factorial": 2 ** k, "axial": 2 * k,
                     "center": int(design.get("center_runs", 0))}
@@ -297,10 +298,6 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
                 raise InputError(f"config key {config_key}.design: expected {n} {t} run(s) for a {k}-factor CCD "
                                  f"with {design.get('center_runs', 0)} centre runs, found {found[t]} "
                                  f"({len(table)} runs in the table)", source=src)
-        bad = np.flatnonzero(~np.isin(types, ["factorial", "axial", "center"]))
-        if len(bad):
-            raise InputError("point is neither factorial, axial nor centre in the declared CCD", source=src,
-                             run=int(table["run"].iloc[bad[0]]))
     elif dtype == "factorial":
         n_center = int(np.sum(types == "center"))
         if n_center != int(design.get("center_runs", 0)):
@@ -312,6 +309,54 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
             raise InputError(f"config key {config_key}.design.center_runs: expected "
                              f"{design.get('center_runs', 0)} centre runs, found {n_center}", source=src)
     return coding, types
+
+
+_DESIGN_POINTS = {"ccd": ("factorial", "axial", "center"), "box_behnken": ("edge", "center")}
+_POINT_WORDS = {"factorial": "factorial", "axial": "axial", "center": "centre", "edge": "edge-midpoint"}
+
+
+def _expected_counts(design: dict, k: int) -> dict[str, int]:
+    centre = int(design.get("center_runs", 0))
+    if design["type"] == "ccd":
+        return {"factorial": 2 ** k, "axial": 2 * k, "center": centre}
+    return {"edge": 2 * k * (k - 1), "center": centre}
+
+
+def _refuse_misplaced_points(table, factors, design, snapped, types, levels, coding, log_factors, src) -> None:
+    """A run whose factor levels make no point of the declared design (a centre run with one factor at a
+    factorial level): one line naming the run and, where exactly one factor value would restore a point
+    the design is short of, that column and value (another run's level typed by mistake)."""
+    allowed = _DESIGN_POINTS.get(design["type"])
+    if allowed is None:
+        return
+    bad = np.flatnonzero(~np.isin(types, allowed))
+    if not len(bad):
+        return
+    i = int(bad[0])
+    counts = {t: int(np.sum(types == t)) for t in allowed}
+    short = {t for t, n in _expected_counts(design, len(factors)).items() if counts.get(t, 0) < n}
+    alpha = float(design.get("alpha", 1.0))
+    repairs = []
+    for j, f in enumerate(factors):
+        for level in levels:
+            point = snapped[i].copy()
+            point[j] = level
+            kind = classify_points(point[None, :], alpha)[0]
+            # a factorial, axial or edge point appears once in the design: one already present is no repair
+            present = kind != "center" and np.any(np.all(np.isclose(np.delete(snapped, i, axis=0), point), axis=1))
+            if level != snapped[i, j] and kind in short and not present:
+                value = coding.to_actual(point)[j]
+                repairs.append((f, 10 ** value if f in log_factors else value, kind))
+    where = ", ".join(f"{f} {table[f].iloc[i]:g}" for f in factors)
+    names = [_POINT_WORDS[t] for t in allowed]
+    what = (f"the point ({where}) is not a {', '.join(names[:-1])} or {names[-1]} point of the declared "
+            f"{design['type']} design")
+    run = int(table["run"].iloc[i])
+    if len(repairs) == 1:
+        f, value, kind = repairs[0]
+        raise InputError(f"{what}; with {f} = {value:.6g} it would be the {_POINT_WORDS[kind]} run the "
+                         "design is short of (another run's level typed by mistake?)", source=src, run=run, column=f)
+    raise InputError(what, source=src, run=run)
 
 
 def check_bounds(table: pd.DataFrame, factors_cfg: dict, src: str, rel_tol: float = 1e-6) -> None:

@@ -396,3 +396,35 @@ def test_a_response_with_the_same_value_in_every_run_is_warned_about(tmp_path):
     assert [w for w in warnings if "column 'shape': the same value (150) in every run" in w]
     assert not [w for w in validate_material("poraver", _demo_config()["materials"]["poraver"], base_dir=REPO).warnings
                 if "the same value" in w]
+
+
+@pytest.mark.parametrize("design_name", ["ccd2", "ccd3", "bbd3"])
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_factor_cell_typed_as_another_runs_level_is_located(tmp_path, design_name, seed):
+    """One factor cell of one run holds a level another run uses: every value is a level, but the run is no
+    point of the design.  The error names that run, the column and the value that completes the design."""
+    from demid.design_generation import box_behnken_points
+
+    k = int(design_name[-1])
+    if design_name.startswith("ccd"):
+        alpha = round((2 ** k) ** 0.25, 5)
+        coded, design = ccd_points(k, alpha, 3), {"type": "ccd", "alpha": alpha, "center_runs": 3}
+    else:
+        coded, design = box_behnken_points(k, 3), {"type": "box_behnken", "center_runs": 3}
+    cfg, coded_order, unit, centre = _write_design(tmp_path, coded, [0.1] * k, [0.9] * k, design, seed=seed)
+    rng = np.random.default_rng(seed)
+    # a non-centre run (ccd: factorial or axial; bbd: edge) with one nonzero coordinate set to 0 or to the
+    # other factorial level gives a point of no type; a centre run with one factor at +1 likewise
+    row = int(rng.choice(np.flatnonzero(np.abs(coded_order).sum(axis=1) == 0)))
+    j = int(rng.integers(k))
+    path = Path(cfg["data"])
+    lines = path.read_text().splitlines()
+    cells = lines[row + 1].split(",")
+    truth = cells[1 + j]
+    cells[1 + j] = f"{centre[j] + unit[j]:.6f}"
+    lines[row + 1] = ",".join(cells)
+    path.write_text("\n".join(lines) + "\n")
+    with pytest.raises(InputError, match=rf"run {row + 1}, column 'x{j + 1}': the point \(.*\) is not a .* point of "
+                                         rf"the declared {design['type']} design; with x{j + 1} = {float(truth):g} it "
+                                         r"would be the centre run the design is short of"):
+        validate_material("m", cfg)
