@@ -359,6 +359,24 @@ def _refuse_misplaced_points(table, factors, design, snapped, types, levels, cod
     raise InputError(what, source=src, run=run)
 
 
+def _odd_level_values(table: pd.DataFrame, factors: list[str], snapped: np.ndarray, src: str) -> list[str]:
+    """A factor value that differs from the value every other run at its level has (0.924246 where the
+    others read 0.924264): close enough to be the level, so it is fitted as recorded, but likely a typo."""
+    out = []
+    for j, f in enumerate(factors):
+        values = table[f].to_numpy(dtype=float)
+        for level in np.unique(snapped[:, j]):
+            rows = np.flatnonzero(snapped[:, j] == level)
+            distinct, counts = np.unique(values[rows], return_counts=True)
+            if len(distinct) < 2 or counts.max() < 2 or (counts == counts.max()).sum() > 1:
+                continue
+            usual = distinct[np.argmax(counts)]
+            for i in rows[values[rows] != usual]:
+                out.append(f"{src}, run {int(table['run'].iloc[i])}, column '{f}': {values[i]:.10g}, where the other "
+                           f"{int(counts.max())} runs at this level read {usual:.10g} (fitted as recorded; a typo?)")
+    return out
+
+
 def check_bounds(table: pd.DataFrame, factors_cfg: dict, src: str, rel_tol: float = 1e-6) -> None:
     for f, fc in factors_cfg.items():
         lo, hi = float(fc["lower"]), float(fc["upper"])
@@ -453,6 +471,10 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
                              f"at least {p + 1} are needed", source=src, column=r)
     coding, types = check_design(table, factors, mat_cfg["design"], src, f"materials.{material}", log_factors)
     coded = coding.to_coded(model_units(table[factors].to_numpy(), factors, log_factors))
+    levels = nominal_levels(mat_cfg["design"]["type"], float(mat_cfg["design"].get("alpha", 1.0)))
+    if len(levels):
+        snapped = levels[np.argmin(np.abs(coded[:, :, None] - levels[None, None, :]), axis=2)]
+        warnings.extend(_odd_level_values(table, factors, snapped, src))
     for r in responses:
         require_estimable(coded, np.isfinite(table[r].to_numpy()), types, src, r)
     for r in responses:

@@ -428,3 +428,23 @@ def test_a_factor_cell_typed_as_another_runs_level_is_located(tmp_path, design_n
                                          rf"the declared {design['type']} design; with x{j + 1} = {float(truth):g} it "
                                          r"would be the centre run the design is short of"):
         validate_material("m", cfg)
+
+
+def test_a_level_value_that_differs_from_the_other_runs_at_its_level_is_warned_about(tmp_path):
+    """0.5003 where every other run at the centre level reads 0.5: on the level (fitted as recorded), but a
+    typo is likely; a table whose levels are printed consistently gets no such warning."""
+    cfg, coded_order, unit, centre = _write_design(tmp_path, ccd_points(2, 1.41421, 3), [0.1, 1.0], [0.9, 5.0],
+                                                   {"type": "ccd", "alpha": 1.41421, "center_runs": 3})
+    assert not [w for w in validate_material("m", cfg).warnings if "a typo?" in w]
+    row = int(np.flatnonzero(np.all(coded_order == 0, axis=1))[0])
+    path = Path(cfg["data"])
+    lines = path.read_text().splitlines()
+    cells = lines[row + 1].split(",")
+    usual = cells[1]
+    cells[1] = f"{float(cells[1]) + 0.0003:.6f}"
+    lines[row + 1] = ",".join(cells)
+    path.write_text("\n".join(lines) + "\n")
+    (warning,) = [w for w in validate_material("m", cfg).warnings if "a typo?" in w]
+    # the centre level of x1: 3 centre runs and the 2 axial runs of x2, 4 of them unchanged
+    assert f"run {row + 1}, column 'x1': {float(cells[1]):.10g}, where the other 4 runs at this level read " \
+           f"{float(usual):.10g}" in warning
