@@ -58,7 +58,7 @@ def test_self_made_study_runs_and_is_byte_identical(study_dir, tmp_path):
     assert len(list(results.rglob("*.json"))) and len(list(results.rglob("*.png")))
     assert writer_contract_violations(results) == []
 
-    # A second clean run elsewhere gives byte-identical tables, parquet, JSON and PNG.
+    # A second clean run elsewhere gives byte-identical tables, parquet, JSON, PNG, SVG and the report.
     second = run_snakemake(twin, twin / "study.yaml")
     assert second.returncode == 0, second.stderr[-3000:]
     assert tree_hashes(results) == tree_hashes(twin / "results")

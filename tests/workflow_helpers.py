@@ -24,7 +24,7 @@ def sha256(path: Path) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
-def tree_hashes(root: Path, suffixes=(".csv", ".parquet", ".json", ".png")) -> dict[str, str]:
+def tree_hashes(root: Path, suffixes=(".csv", ".parquet", ".json", ".png", ".svg", ".html", ".ipynb")) -> dict[str, str]:
     return {str(p.relative_to(root)): sha256(p) for p in sorted(root.rglob("*")) if p.suffix in suffixes}
 
 

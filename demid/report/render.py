@@ -37,6 +37,33 @@ def execute_report(notebook: str | Path, output: str | Path, *, results_dir: str
     Path(output).parent.mkdir(parents=True, exist_ok=True)
     with _kernel_stderr_to_log():
         _execute(pm, notebook, output, results_dir, config_json)
+    _drop_run_details(output)
+
+
+#: Per-run details papermill and the kernel record: clock times, durations, and the path the notebook was
+#: read from (a temporary copy under Snakemake).  Dropped, so that two clean runs write the same notebook.
+_TIMES = ("start_time", "end_time", "duration")
+
+
+def _drop_run_details(path: str | Path) -> None:
+    import nbformat
+
+    from ..io import atomic_path
+
+    nb = nbformat.read(str(path), as_version=4)
+    run = nb.metadata.get("papermill", {})
+    for key in _TIMES:
+        run.pop(key, None)
+    if "input_path" in run:
+        run["input_path"] = Path(run["input_path"]).name
+    for cell in nb.cells:
+        cell.metadata.pop("execution", None)
+        for key in _TIMES:
+            cell.metadata.get("papermill", {}).pop(key, None)
+        if "injected-parameters" in cell.metadata.get("tags", []):
+            cell["id"] = "injected-parameters"  # papermill gives the cell it inserts a random id
+    with atomic_path(path) as tmp:
+        nbformat.write(nb, str(tmp))
 
 
 def _execute(pm, notebook, output, results_dir, config_json) -> None:
