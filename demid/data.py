@@ -377,6 +377,35 @@ def _odd_level_values(table: pd.DataFrame, factors: list[str], snapped: np.ndarr
     return out
 
 
+def far_target_warnings(table: pd.DataFrame, targets: dict, src: str) -> list[str]:
+    """Targets farther outside every simulated value of their response than the simulated values spread
+    (more than one range beyond the nearest run), naming a one-keystroke slip that would bring the target
+    among the simulated values (264 for 26.4).  A constant column is warned of on its own."""
+    from .transcription.typos import SLIP_WORDS, single_cell_slips
+
+    out = []
+    for response, target in targets.items():
+        y = table[response].to_numpy(dtype=float)
+        y = y[np.isfinite(y)]
+        if not len(y):
+            continue
+        lo, hi = float(y.min()), float(y.max())
+        if lo == hi or lo - (hi - lo) <= target <= hi + (hi - lo):
+            continue
+        where = (f"{src}, column '{response}': the target {target:.6g} lies far outside every simulated value "
+                 f"({lo:.4g} to {hi:.4g})")
+        slips = [(value, kind) for kind, _, value in single_cell_slips(repr(float(target)))
+                 if kind in _BOUND_SLIPS and lo <= value <= hi]
+        if slips:
+            value, kind = slips[0]
+            out.append(f"{where} and looks like {value:.6g} with {SLIP_WORDS[kind]}; check the target. As given, "
+                       "no simulated setting comes near it and level 2 will report a discrepancy.")
+        else:
+            out.append(f"{where}; no simulated setting comes near it, so level 2 will report a discrepancy "
+                       "between simulation and measurement, not a calibration.")
+    return out
+
+
 def check_bounds(table: pd.DataFrame, factors_cfg: dict, src: str, rel_tol: float = 1e-6) -> None:
     for f, fc in factors_cfg.items():
         lo, hi = float(fc["lower"]), float(fc["upper"])
@@ -388,7 +417,7 @@ def check_bounds(table: pd.DataFrame, factors_cfg: dict, src: str, rel_tol: floa
                              f"(config factors.{f})", source=src, run=int(r["run"]), column=f)
 
 
-#: The slips that move a bound far (point, swap, sign): a bound rounded outwards is none of them.
+#: The slips that move a bound or a target far (point, swap, sign): a bound rounded outwards is none of them.
 _BOUND_SLIPS = ("decimal_shift", "transposition", "sign_lost")
 
 
@@ -483,6 +512,8 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
         if len(values) and np.ptp(values) == 0:
             warnings.append(f"{src}, column '{r}': the same value ({values[0]:g}) in every run, so it cannot "
                             "identify any factor (a column filled in by mistake?)")
+    targets = {r: float(c["target"]) for r, c in mat_cfg["responses"].items() if c.get("target") is not None}
+    warnings.extend(far_target_warnings(table, targets, src))
     failed: dict[str, list] = {}
     for r in responses:
         ok = np.isfinite(table[r].to_numpy())

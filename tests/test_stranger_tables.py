@@ -352,17 +352,22 @@ def test_a_deliberately_wider_search_range_is_accepted_and_warned_about(tmp_path
                                                 (2640.0, "26.4 with the decimal point shifted"),
                                                 (900.0, None)])
 def test_a_target_far_outside_every_simulated_value_is_said_before_the_run(tmp_path, target, looks_like):
-    from demid.criticism.edges import target_warnings
+    from demid.data import far_target_warnings
 
     table = validate_material("poraver", _demo_config()["materials"]["poraver"], base_dir=REPO).table
-    assert target_warnings(table, {"aor": 26.4, "shape": 154.75}) == []  # the demo's targets: silent
-    (warning,) = target_warnings(table, {"aor": target, "shape": 154.75})
-    assert f"the target of aor, {target:g}, lies far outside every simulated value" in warning
+    assert far_target_warnings(table, {"aor": 26.4, "shape": 154.75}, "t.csv") == []  # the demo's targets: silent
+    (warning,) = far_target_warnings(table, {"aor": target, "shape": 154.75}, "t.csv")
+    assert f"t.csv, column 'aor': the target {target:g} lies far outside every simulated value" in warning
     if looks_like:
         assert f"looks like {looks_like}" in warning
     else:
         assert "looks like" not in warning and "discrepancy" in warning
-    assert target_warnings(table, {"aor": 60.0}) == []  # beyond the runs, but by less than their spread
+    assert far_target_warnings(table, {"aor": 60.0}, "t.csv") == []  # beyond the runs, by less than their spread
+    # validation itself carries it (the validation summary, the report and demid validate show it)
+    config = _load(tmp_path, lambda c: c["materials"]["poraver"]["responses"]["aor"].update({"target": target}))
+    src = config["materials"]["poraver"]["data"]
+    assert warning.replace("t.csv", src) in validate_material("poraver", config["materials"]["poraver"],
+                                                              base_dir=REPO).warnings
 
 
 @pytest.mark.parametrize("where", ["scenario", "sweep"])

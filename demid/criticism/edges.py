@@ -84,39 +84,6 @@ def extrapolation_warnings(domain: Domain, runs: np.ndarray | None, reference_po
     return out
 
 
-#: The slips that move a target far (point, swap, sign).
-_TARGET_SLIPS = ("decimal_shift", "transposition", "sign_lost")
-
-
-def target_warnings(table, targets: dict) -> list[str]:
-    """Targets farther outside every simulated value of their response than the simulated values spread
-    (more than one range beyond the nearest run): said before anything runs, naming a one-keystroke slip
-    that would bring the target among the simulated values (264 for 26.4)."""
-    from ..transcription.typos import SLIP_WORDS, single_cell_slips
-
-    out = []
-    for response, target in targets.items():
-        y = table[response].to_numpy(dtype=float)
-        y = y[np.isfinite(y)]
-        if not len(y):
-            continue
-        lo, hi = float(y.min()), float(y.max())
-        if lo == hi or lo - (hi - lo) <= target <= hi + (hi - lo):  # a constant column is warned of apart
-            continue
-        where = (f"the target of {response}, {_g(target)}, lies far outside every simulated value "
-                 f"({_g(lo)} to {_g(hi)})")
-        slips = [(value, kind) for kind, _, value in single_cell_slips(repr(float(target)))
-                 if kind in _TARGET_SLIPS and lo <= value <= hi]
-        if slips:
-            value, kind = slips[0]
-            out.append(f"{where} and looks like {_g(value)} with {SLIP_WORDS[kind]}; check the target. As given, "
-                       "no simulated setting comes near it and level 2 will report a discrepancy.")
-        else:
-            out.append(f"{where}; no simulated setting comes near it, so level 2 will report a discrepancy "
-                       "between simulation and measurement, not a calibration.")
-    return out
-
-
 def _in_hull(points: np.ndarray, u: np.ndarray, tol: float) -> bool:
     """True when u is within ``tol`` (per coordinate) of the convex hull of ``points`` (linear program)."""
     n, d = points.shape
