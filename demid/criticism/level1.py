@@ -18,8 +18,8 @@ from ..design import Coding, model_matrix, model_units, quadratic_terms, term_na
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .catalogue import _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
-from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, strongest_rival, unexplained_evidence,
-                      verdict_of)
+from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, rests_on_one_run, strongest_rival,
+                      unexplained_evidence, verdict_of)
 from .messages import _CAUSE_WORDS, _message
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
                      infer_axial_distance)
@@ -267,6 +267,12 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
         if rival is not None:  # not singled out: another kind of misfit is at least as strong
             not_singled_out = {"cause": named[0].cause, "detail": _detail_json(data, named[0]),
                                "rival": _catalogue_entry(data, rival)}
+            break
+        one_run = rests_on_one_run(data, model, named[0])
+        if one_run is not None:  # not singled out: the evidence hinges on one run
+            not_singled_out = {"cause": named[0].cause, "detail": _detail_json(data, named[0]),
+                               "one_run": {"run": _run_value(data.runs[one_run.row]),
+                                           "p_without": one_run.p_without}}
             break
         h, spec, info, new, alternatives = named
         if findings and not new.loo_rmse_on(new.keep) < model.loo_rmse_on(new.keep):
