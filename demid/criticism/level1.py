@@ -18,8 +18,8 @@ from ..design import Coding, model_matrix, model_units, quadratic_terms, term_na
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .catalogue import _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
-from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, strongest_rival,
-                      unexplained_evidence, verdict_of)
+from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, rests_on_one_run,
+                      strongest_rival, unexplained_evidence, verdict_of)
 from .messages import _CAUSE_WORDS, _message
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
                      infer_axial_distance)
@@ -269,10 +269,8 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
         named = _name_cause(data, model, rejected)
         if named is None:  # only a slip fits, and too weakly to be named: misfit without a cause
             break
-        rival = strongest_rival(named[0], rnd.hypotheses)
-        if rival is not None:  # not singled out: another kind of misfit is at least as strong
-            not_singled_out = {"cause": named[0].cause, "detail": _detail_json(data, named[0]),
-                               "rival": _catalogue_entry(data, rival)}
+        not_singled_out = _not_singled_out(data, model, named[0], rnd.hypotheses)
+        if not_singled_out is not None:
             break
         h, spec, info, new, alternatives = named
         if findings and not new.loo_rmse_on(new.keep) < model.loo_rmse_on(new.keep):
@@ -323,6 +321,19 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
                            summary=summary, family_alpha=family_alpha, unexplained=unexplained, verdict=verdict,
                            verdict_detail=verdict_detail, naming=naming, residuals=_residual_frame(fit),
                            _extended_model=model, _baseline_model=base_model, run_order=run_order)
+
+
+def _not_singled_out(data: _Data, model: _Model, h: _Hypothesis, hypotheses: list[_Hypothesis]) -> dict | None:
+    """Why cause h is not named, or None: another kind of misfit is at least as strong, or the evidence
+    hinges on one run (verdict.strongest_rival, verdict.rests_on_one_run)."""
+    why = {"cause": h.cause, "detail": _detail_json(data, h)}
+    rival = strongest_rival(h, hypotheses)
+    if rival is not None:
+        return {**why, "rival": _catalogue_entry(data, rival)}
+    one_run = rests_on_one_run(data, model, h)
+    if one_run is not None:
+        return {**why, "one_run": {"run": _run_value(data.runs[one_run.row]), "p_without": one_run.p_without}}
+    return None
 
 
 def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tuple:
