@@ -103,6 +103,9 @@ def test_failed_run_and_unreachable_target_complete(study_dir):
     assert '"y1": [\n      2\n    ]' in summary and "failed" in summary
     report = (study_dir / "results" / "report" / "report.html").read_text(encoding="utf-8")
     assert "no point of the domain meets every target" in report
+    # the summary recommends no parameter set and shows no empty intervals
+    assert "No parameter set meets every target." in report and "Recommended parameter set" not in report
+    assert "nan, nan" not in report and "so there are no admissible intervals" in report
     stats = read_parquet(study_dir / "results" / "fits" / "m_statistics.parquet").set_index("response")
     assert stats.loc["y1", "n_runs"] == 12 and stats.loc["y2", "n_runs"] == 12
 

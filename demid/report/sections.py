@@ -176,16 +176,24 @@ class ReportSections:
                 point = ", ".join(f"{spec.factor(f).label} = {best[f]:.4g}" + (f" {unit_text(spec.factor(f).unit)}"
                                                                               if spec.factor(f).unit != "-" else "")
                                   for f in spec.factor_names if f in best)
-                lines.append(f"**Recommended parameter set** (the point with the smallest largest relative error "
-                             f"over {', '.join(spec.response_labels.get(o, o) for o in level2['observables'])}): "
-                             f"{point}; largest error {100 * level2['best_max_error']:.2f} %.")
+                over = ", ".join(spec.response_labels.get(o, o) for o in level2["observables"])
+                if level2.get("feasible", True):
+                    lines.append(f"**Recommended parameter set** (the point with the smallest largest relative "
+                                 f"error over {over}): {point}; largest error {100 * level2['best_max_error']:.2f} %.")
+                else:  # nothing meets every target: the closest point is no calibration to recommend
+                    lines.append(f"**No parameter set meets every target.** The closest point (smallest largest "
+                                 f"relative error over {over}) is {point}, and it still misses by "
+                                 f"{100 * level2['best_max_error']:.2f} %; see the level-2 criticism below.")
             if len(rows):
                 widest = max(spec.scenarios, key=lambda sc: len(sc.observables))
                 last = rows[rows["scenario"] == widest.name]
-                if len(last):
+                if len(last) and last["lower"].notna().any():
                     iv = "; ".join(f"{spec.factor(r['factor']).label} ∈ [{r['lower']:.4g}, {r['upper']:.4g}]"
                                    for _, r in last.iterrows())
                     lines.append(f"Admissible intervals with every observable of *{widest.label}*: {iv}.")
+                elif len(last):
+                    lines.append(f"With every observable of *{widest.label}* no point of the search range is "
+                                 "admissible, so there are no admissible intervals.")
                 loose = verdicts[(verdicts["scenario"] == widest.label) & (verdicts["verdict"] == "unresolved")]
                 if len(loose):
                     lines.append(f"The data do not single out this point: {', '.join(loose['factor'])} can take any "
