@@ -349,7 +349,8 @@ def _refuse_misplaced_points(table, factors, design, snapped, types, levels, cod
                 repairs.append((f, 10 ** value if f in log_factors else value, kind))
     where = ", ".join(f"{f} {table[f].iloc[i]:g}" for f in factors)
     names = [_POINT_WORDS[t] for t in allowed]
-    what = (f"the point ({where}) is not a {', '.join(names[:-1])} or {names[-1]} point of the declared "
+    article = "an" if names[0][0] in "aeiou" else "a"
+    what = (f"the point ({where}) is not {article} {', '.join(names[:-1])} or {names[-1]} point of the declared "
             f"{design['type']} design")
     run = int(table["run"].iloc[i])
     if len(repairs) == 1:
@@ -360,8 +361,9 @@ def _refuse_misplaced_points(table, factors, design, snapped, types, levels, cod
 
 
 def _odd_level_values(table: pd.DataFrame, factors: list[str], snapped: np.ndarray, src: str) -> list[str]:
-    """A factor value that differs from the value every other run at its level has (0.924246 where the
-    others read 0.924264): close enough to be the level, so it is fitted as recorded, but likely a typo."""
+    """A factor value that differs from the value the other runs at its level have (0.5003 where four others
+    read 0.5): close enough to be the level, so it is fitted as recorded, but likely a typo.  A level with one
+    run (an axial point) has nothing to compare with."""
     out = []
     for j, f in enumerate(factors):
         values = table[f].to_numpy(dtype=float)
