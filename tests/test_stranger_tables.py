@@ -429,7 +429,7 @@ def test_a_factor_cell_typed_as_another_runs_level_is_located(tmp_path, design_n
     cells[1 + j] = f"{centre[j] + unit[j]:.6f}"
     lines[row + 1] = ",".join(cells)
     path.write_text("\n".join(lines) + "\n")
-    with pytest.raises(InputError, match=rf"run {row + 1}, column 'x{j + 1}': the point \(.*\) is not a .* point of "
+    with pytest.raises(InputError, match=rf"run {row + 1}, column 'x{j + 1}': the point \(.*\) is not an? .* point of "
                                          rf"the declared {design['type']} design; with x{j + 1} = {float(truth):g} it "
                                          r"would be the centre run the design is short of"):
         validate_material("m", cfg)
