@@ -97,6 +97,21 @@ def _corner_views(arr: np.ndarray):
         yield arr[tuple(slice(o, o + s - 1) for o, s in zip(offs, arr.shape))]
 
 
+def _cell_range(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Smallest and largest corner value of every grid cell of a node array.
+
+    The minimum over a cell's 2**d corners is taken one axis at a time (d passes over the grid
+    instead of 2**d - 1 over stacked copies): the same numbers, a fraction of the memory traffic.
+    """
+    lo = hi = values
+    for axis in range(values.ndim):
+        first = tuple(slice(None, -1) if a == axis else slice(None) for a in range(values.ndim))
+        second = tuple(slice(1, None) if a == axis else slice(None) for a in range(values.ndim))
+        lo = np.minimum(lo[first], lo[second])
+        hi = np.maximum(hi[first], hi[second])
+    return lo, hi
+
+
 def _curvature_margin(values: np.ndarray) -> float:
     """Bound on how far a smooth field can leave its corner range inside a cell (1/8 sum |d2|)."""
     margin = 0.0
@@ -175,9 +190,7 @@ def cell_count(resid: np.ndarray, eps: float, domain: Domain, step: np.ndarray, 
     which = np.zeros(cells, dtype=np.int16)
     suspicious = np.zeros(cells, dtype=bool)
     for j, r in enumerate(resid):
-        views = list(_corner_views(r))
-        lo = np.minimum.reduce(views)
-        hi = np.maximum.reduce(views)
+        lo, hi = _cell_range(r)
         m = _curvature_margin(r)
         in_j = (lo - m >= -eps) & (hi + m <= eps)
         out_j = (hi + m < -eps) | (lo - m > eps)
