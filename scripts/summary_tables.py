@@ -1,4 +1,5 @@
-"""Snakemake script: the cross-material tables (Table 2, Table 3, transcription, uncertainty, criticism)."""
+"""Snakemake script: the cross-material tables (Table 2, Table 3, transcription, uncertainty, criticism)
+and, where the config names a published-values file, every published number against its reproduction."""
 
 import sys
 
@@ -8,9 +9,23 @@ from demid.io import write_csv  # noqa: E402
 from demid.report import summary_tables  # noqa: E402
 from demid.report.columns import columns_table  # noqa: E402
 
-inputs = {name: dict(zip(snakemake.params.materials, files))  # noqa: F821
-          for name, files in snakemake.input.items()}  # noqa: F821
-write_csv(columns_table(snakemake.params.pareto_factors, snakemake.params.next_wave),  # noqa: F821
-          snakemake.output.columns)  # noqa: F821
-for name, table in summary_tables(inputs).items():
-    write_csv(table, getattr(snakemake.output, name))  # noqa: F821
+inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
+per_material = {name: dict(zip(params.materials, files))
+                for name, files in inp.items() if name not in ("published", "pareto")}
+write_csv(columns_table(params.pareto_factors, params.next_wave), out.columns)
+for name, table in summary_tables(per_material).items():
+    write_csv(table, getattr(out, name))
+
+if "paper_comparison" in out.keys():
+    import pandas as pd
+    import yaml
+
+    from demid.paper import paper_comparison
+    from demid.report import pareto_intervals
+
+    with open(inp.published, encoding="utf-8") as fh:
+        published = yaml.safe_load(fh)
+    intervals = {m: pareto_intervals(p) for m, p in zip(params.pareto_materials, inp.pareto)}
+    # compared as written: the tables a reader sees, rounded as they are
+    table = paper_comparison(published, pd.read_csv(out.surrogate_fit), pd.read_csv(out.identifiability), intervals)
+    write_csv(table, out.paper_comparison)

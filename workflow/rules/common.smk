@@ -143,6 +143,39 @@ def per_material_outputs(material):
     return out
 
 
+SUMMARY_INPUTS = {
+    "statistics": "fits/{material}_statistics.parquet",
+    "scenarios": "scenarios/{material}.parquet",
+    "transcription": "validated/{material}_transcription.parquet",
+    "robust": "uncertainty/{material}_robust.parquet",
+    "sweep": "uncertainty/{material}_sweep.parquet",
+    "information_gain": "uncertainty/{material}_information_gain.parquet",
+    "ranking": "uncertainty/{material}_ranking.parquet",
+    "findings": "criticism/{material}_findings.parquet",
+    "calibration": "criticism/{material}_calibration.parquet",
+}
+
+
+def summary_inputs():
+    """Named inputs of summary_tables: each per-material intermediate it stacks, and, where the
+    config names a published-values file, that file and the Pareto tables it is compared with."""
+    out = {name: [f"{RESULTS}/{path.format(material=m)}" for m in MATERIALS] for name, path in SUMMARY_INPUTS.items()}
+    if config.get("published"):
+        out["published"] = config["published"]
+        out["pareto"] = [f"{RESULTS}/tables/pareto_{m}.csv" for m in pareto_materials()]
+    return out
+
+
+def summary_outputs():
+    """Named outputs of summary_tables: the cross-material tables, and the paper comparison where
+    the config names a published-values file (one job: it reads two of those tables back)."""
+    out = dict(zip(("surrogate_fit", "identifiability", "transcription", "robust", "sweep", "information_gain",
+                    "ranking", "findings", "calibration", "columns"), SUMMARY_TABLES))
+    if config.get("published"):
+        out["paper_comparison"] = f"{RESULTS}/tables/paper_comparison.csv"
+    return out
+
+
 def report_tables():
     out = list(SUMMARY_TABLES)
     out += [f"{RESULTS}/tables/pareto_{m}.csv" for m in pareto_materials()]
