@@ -186,57 +186,20 @@ class _Round:
         self.classes: list[_TermClass] = []
         m = model
         spec = m.spec
-        df = m.df_resid
         n = len(m.y)
-        if df < 3 or round_off_only(m.resid_w, m.z):  # an exact fit: round-off is not evidence
+        if m.df_resid < 3 or round_off_only(m.resid_w, m.z):  # an exact fit: round-off is not evidence
             return
         eps = rng.standard_normal((n, n_null))
         q = _orth(m.xw)
         e_null = _residualize(q, eps)
         e_obs = m.resid_w[:, None]
 
-        # --- missing terms (alias classes on the current model)
-        coded = m.coded
-        extra = m.run_column(m.keep)[:, None] if spec.drift else None
-        candidates = [t for t in cubic_terms(len(data.factors)) if t not in spec.extra_terms]
-        self.classes = _term_classes(coded, m.mean_terms, candidates, extra, m.w)
-        for c in self.classes:
-            names = [term_name(t, data.factors) for t in c.terms]
-            if c.direction is None:
-                continue
-            f_obs = float(_added_variable_stats(e_obs, c.direction, df - 1)[0])
-            h = _Hypothesis("missing_term", c, names, f_obs, float(_f_logp(f_obs, df - 1)))
-            h.null_logp = _f_logp(_added_variable_stats(e_null, c.direction, df - 1), df - 1)
-            self.hypotheses.append(h)
-
-        # --- drift (only where the run order can be believed: criticism.run_order)
-        if not spec.drift and data.drift_tested:
-            col = m.run_column(m.keep) * m.sw
-            r = _residualize(q, col[:, None])[:, 0]
-            if np.linalg.norm(r) > 1e-7 * max(np.linalg.norm(col), 1e-300):
-                u = r / np.linalg.norm(r)
-                f_obs = float(_added_variable_stats(e_obs, u, df - 1)[0])
-                h = _Hypothesis("drift", "run", [], f_obs, float(_f_logp(f_obs, df - 1)))
-                h.null_logp = _f_logp(_added_variable_stats(e_null, u, df - 1), df - 1)
-                self.hypotheses.append(h)
-
-        # --- outlier
-        t_obs = _outlier_stats(e_obs, m.hat, df)[:, 0]
-        i = int(np.argmax(np.abs(t_obs)))
-        h = _Hypothesis("outlier", int(np.flatnonzero(m.keep)[i]), [], float(t_obs[i]),
-                        float(_outlier_logp(abs(t_obs[i]), n, df)))
-        h.null_logp = _outlier_logp(np.max(np.abs(_outlier_stats(e_null, m.hat, df)), axis=0), n, df)
-        self.hypotheses.append(h)
-
-        # --- heteroscedasticity against each factor and the fitted values (likelihood ratio of a
-        # log-linear variance model; p-values on the F scale, (df-1)(exp(LR/n)-1) ~ F(1, df-1),
-        # which only sets the ranking: the family test uses the simulated joint null)
+        self._missing_terms(data, m, e_obs, e_null)
+        if not spec.drift and data.drift_tested:  # only where the run order can be believed (run_order)
+            self._drift(m, q, e_obs, e_null)
+        self._outlier(m, e_obs, e_null)
         if spec.weight_on is None:
-            for name, v in self.covariates().items():
-                lr = float(_het_lr(e_obs, m.x, v)[0])
-                h = _Hypothesis("heteroscedasticity", name, [], lr, float(_f_logp((df - 1) * np.expm1(lr / n), df - 1)))
-                h.null_logp = _f_logp((df - 1) * np.expm1(_het_lr(e_null, m.x, v) / n), df - 1)
-                self.hypotheses.append(h)
+            self._heteroscedasticity(m, e_obs, e_null)
 
         # --- lack of fit against pure error (replicated runs): a function of the errors alone, so it
         # joins the family exactly; it shows misfit but names no cause.  (Weights depend on a factor or
@@ -247,24 +210,75 @@ class _Round:
         if spec.lam is None and spec.weight_on is None:
             self._factor_level(data, m, eps)
 
-        # --- Box-Cox: parametric bootstrap from the fitted model, conditional on positive responses;
-        # joined to the family as an independent uniform (conservative under positive dependence).
         if spec.lam is None and spec.weight_on is None and np.all(m.y > 0):
-            lr_obs = float(self._boxcox_lr(m.y[:, None], q)[0])
-            p_boot, n_used = self._boxcox_bootstrap(m, q, lr_obs, n_null, rng)
-            h = _Hypothesis("response_transform", None, [], lr_obs, math.log(p_boot),
-                            info={"bootstrap_draws": n_used})
-            # Ranked against the other causes by the F form of the likelihood ratio, which is close
-            # to calibrated at a dozen runs (chi-square(1) is far too liberal there).
-            h.strength = float(_f_logp((df - 1) * np.expm1(lr_obs / n), df - 1))
-            h.null_logp = np.log(rng.uniform(size=n_null))
-            self.hypotheses.append(h)
+            self._response_transform(m, q, n_null, rng)
 
         if self.hypotheses:
             adj = weighted_stepdown([h.cause for h in self.hypotheses], np.array([h.logp for h in self.hypotheses]),
                                     np.column_stack([h.null_logp for h in self.hypotheses]))
             for h, p in zip(self.hypotheses, adj):
                 h.p_family = float(p)
+
+    def _missing_terms(self, data: _Data, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+        """A missing cubic term: one hypothesis per alias class of candidates on the current model."""
+        df = m.df_resid
+        extra = m.run_column(m.keep)[:, None] if m.spec.drift else None
+        candidates = [t for t in cubic_terms(len(data.factors)) if t not in m.spec.extra_terms]
+        self.classes = _term_classes(m.coded, m.mean_terms, candidates, extra, m.w)
+        for c in self.classes:
+            names = [term_name(t, data.factors) for t in c.terms]
+            if c.direction is None:
+                continue
+            f_obs = float(_added_variable_stats(e_obs, c.direction, df - 1)[0])
+            h = _Hypothesis("missing_term", c, names, f_obs, float(_f_logp(f_obs, df - 1)))
+            h.null_logp = _f_logp(_added_variable_stats(e_null, c.direction, df - 1), df - 1)
+            self.hypotheses.append(h)
+
+    def _drift(self, m: _Model, q: np.ndarray, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+        """Drift: the run number as an added variable."""
+        df = m.df_resid
+        col = m.run_column(m.keep) * m.sw
+        r = _residualize(q, col[:, None])[:, 0]
+        if np.linalg.norm(r) > 1e-7 * max(np.linalg.norm(col), 1e-300):
+            u = r / np.linalg.norm(r)
+            f_obs = float(_added_variable_stats(e_obs, u, df - 1)[0])
+            h = _Hypothesis("drift", "run", [], f_obs, float(_f_logp(f_obs, df - 1)))
+            h.null_logp = _f_logp(_added_variable_stats(e_null, u, df - 1), df - 1)
+            self.hypotheses.append(h)
+
+    def _outlier(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+        """The run with the largest externally studentised residual."""
+        df, n = m.df_resid, len(m.y)
+        t_obs = _outlier_stats(e_obs, m.hat, df)[:, 0]
+        i = int(np.argmax(np.abs(t_obs)))
+        h = _Hypothesis("outlier", int(np.flatnonzero(m.keep)[i]), [], float(t_obs[i]),
+                        float(_outlier_logp(abs(t_obs[i]), n, df)))
+        h.null_logp = _outlier_logp(np.max(np.abs(_outlier_stats(e_null, m.hat, df)), axis=0), n, df)
+        self.hypotheses.append(h)
+
+    def _heteroscedasticity(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+        """Unequal scatter against each factor and the fitted values: likelihood ratio of a log-linear
+        variance model; p-values on the F scale, (df-1)(exp(LR/n)-1) ~ F(1, df-1), which only set the
+        ranking (the family test uses the simulated joint null)."""
+        df, n = m.df_resid, len(m.y)
+        for name, v in self.covariates().items():
+            lr = float(_het_lr(e_obs, m.x, v)[0])
+            h = _Hypothesis("heteroscedasticity", name, [], lr, float(_f_logp((df - 1) * np.expm1(lr / n), df - 1)))
+            h.null_logp = _f_logp((df - 1) * np.expm1(_het_lr(e_null, m.x, v) / n), df - 1)
+            self.hypotheses.append(h)
+
+    def _response_transform(self, m: _Model, q: np.ndarray, n_null: int, rng: np.random.Generator) -> None:
+        """Box-Cox: parametric bootstrap from the fitted model, conditional on positive responses;
+        joined to the family as an independent uniform (conservative under positive dependence)."""
+        df, n = m.df_resid, len(m.y)
+        lr_obs = float(self._boxcox_lr(m.y[:, None], q)[0])
+        p_boot, n_used = self._boxcox_bootstrap(m, q, lr_obs, n_null, rng)
+        h = _Hypothesis("response_transform", None, [], lr_obs, math.log(p_boot), info={"bootstrap_draws": n_used})
+        # Ranked against the other causes by the F form of the likelihood ratio, which is close
+        # to calibrated at a dozen runs (chi-square(1) is far too liberal there).
+        h.strength = float(_f_logp((df - 1) * np.expm1(lr_obs / n), df - 1))
+        h.null_logp = np.log(rng.uniform(size=n_null))
+        self.hypotheses.append(h)
 
     def _lack_of_fit(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         _, group = np.unique(np.round(m.coded, 9), axis=0, return_inverse=True)
