@@ -1,0 +1,95 @@
+"""Wall time of a clean demo run, per rule and in all, optionally against an earlier commit.
+
+Each revision is cloned into a temporary folder and run there with its own package on PYTHONPATH:
+``--runs`` clean ``snakemake -c2`` runs (results/ and .snakemake/ removed before each), then ``--runs``
+dry runs.  Per rule, the median wall and CPU seconds of its Snakemake ``benchmark:`` files.  With
+``--against REV`` the same for REV, and the ratios (this / REV): the clean-run goal is stated on one
+machine, and a ratio carries over to another.
+
+    python benchmarks/clean_run.py --runs 3 --against f6b9132
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import subprocess
+import tempfile
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+
+
+def _timed(cmd: list[str], cwd: Path, env: dict) -> float:
+    start = time.perf_counter()
+    subprocess.run(cmd, cwd=cwd, env=env, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return time.perf_counter() - start
+
+
+def _rule_times(clone: Path) -> dict[str, tuple[float, float]]:
+    """(wall s, cpu s) per benchmark file of the last run, named by rule folder and file."""
+    out = {}
+    for tsv in sorted((clone / "benchmarks").glob("*/*.tsv")):
+        header, *rows = tsv.read_text().splitlines()
+        last = dict(zip(header.split("\t"), rows[-1].split("\t")))
+        out[f"{tsv.parent.name}/{tsv.stem}"] = (float(last["s"]), float(last["cpu_time"]))
+    return out
+
+
+def measure(rev: str, runs: int) -> dict:
+    with tempfile.TemporaryDirectory(prefix="demid-bench-") as tmp:
+        clone = Path(tmp) / "clone"
+        subprocess.run(["git", "clone", "-q", str(REPO), str(clone)], check=True)
+        subprocess.run(["git", "checkout", "-q", rev], cwd=clone, check=True)
+        env = dict(os.environ, PYTHONPATH=str(clone))
+        walls, per_rule = [], []
+        for _ in range(runs):
+            subprocess.run(["rm", "-rf", "results", ".snakemake"], cwd=clone, check=True)
+            for tsv in (clone / "benchmarks").glob("*/*.tsv"):
+                tsv.unlink()
+            walls.append(_timed(["snakemake", "-c2", "-q"], clone, env))
+            per_rule.append(_rule_times(clone))
+        dry = [_timed(["snakemake", "-n", "-q"], clone, env) for _ in range(runs)]
+        size = sum(f.stat().st_size for f in (clone / "results").rglob("*") if f.is_file())
+    rules = {name: (statistics.median(r[name][0] for r in per_rule), statistics.median(r[name][1] for r in per_rule))
+             for name in per_rule[0] if all(name in r for r in per_rule)}
+    return {"rev": rev, "walls": walls, "dry": dry, "rules": rules, "mb": size / 1e6}
+
+
+def _print(result: dict, base: dict | None) -> None:
+    def line(label, now, before):
+        ratio = f"{now / before:6.2f}" if before else ""
+        print(f"{label:40s} {now:9.2f} {before if before is not None else '':>9} {ratio}")
+
+    print(f"{'':40s} {result['rev'][:9]:>9} {base['rev'][:9] if base else '':>9} {'ratio' if base else ''}")
+    line("clean snakemake -c2, wall s (median)", statistics.median(result["walls"]),
+         round(statistics.median(base["walls"]), 2) if base else None)
+    line("snakemake -n, wall s (median)", statistics.median(result["dry"]),
+         round(statistics.median(base["dry"]), 2) if base else None)
+    line("results/, MB", result["mb"], round(base["mb"], 1) if base else None)
+    print("runs:", ", ".join(f"{w:.2f}" for w in result["walls"]),
+          *(["| base:", ", ".join(f"{w:.2f}" for w in base["walls"])] if base else []))
+    print(f"\n{'rule (median wall s / cpu s)':40s} {'this':>15}")
+    for name, (wall, cpu) in result["rules"].items():
+        print(f"{name:40s} {wall:7.2f} / {cpu:5.2f}")
+    if base:
+        print(f"\n{'rule of ' + base['rev'][:9]:40s}")
+        for name, (wall, cpu) in base["rules"].items():
+            print(f"{name:40s} {wall:7.2f} / {cpu:5.2f}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--rev", default="HEAD", help="the revision measured (default: HEAD)")
+    parser.add_argument("--against", help="an earlier revision to compare with")
+    args = parser.parse_args()
+    result = measure(args.rev, args.runs)
+    base = measure(args.against, args.runs) if args.against else None
+    _print(result, base)
+
+
+if __name__ == "__main__":
+    main()
