@@ -26,3 +26,11 @@ rule all:
 rule smoke:
     input:
         smoke_outputs(),
+
+
+onsuccess:
+    cancel_scheduler_timers()
+
+
+onerror:
+    cancel_scheduler_timers()

@@ -279,3 +279,14 @@ def all_outputs():
 
 def smoke_outputs():
     return per_material_outputs(config.get("smoke_material") or MATERIALS[0])
+
+
+def cancel_scheduler_timers():
+    """Let Snakemake exit as soon as the run is done.  Its scheduler looks at the queue again on a
+    one-second timer (--max-jobs-per-timespan) and sets one more after the last job; Python waits for
+    that timer before exiting, which added up to a second to every run."""
+    import threading
+
+    for thread in threading.enumerate():
+        if isinstance(thread, threading.Timer):
+            thread.cancel()
