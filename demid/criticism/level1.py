@@ -281,9 +281,31 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
         if model.df_resid - 1 < 3 or model.spec.weight_on is not None:
             break  # too few spare runs, or estimated weights (further tests would not be exact)
 
-    # Honest causes: the named causes must leave no misfit behind.  Misfit that no catalogue cause
-    # answers (lack of fit alone), or that remains after the named extensions (any family member still
-    # rejected at the stricter residual level), is reported as unexplained instead of a confident cause.
+    findings, model, unexplained, naming = _honest_causes(data, response, findings, model, base_model, first_round,
+                                                          last_round, not_singled_out, family_alpha)
+
+    baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
+    summary = _summary(data, findings, catalogue, family_alpha, gain, exact_fit_message(response, fit))
+    if unexplained:
+        summary = unexplained["message"]
+    if not run_order.drift_tested:
+        summary += " " + run_order.message
+    verdict, verdict_detail = verdict_of(data, fit, findings, unexplained, catalogue, family_alpha)
+    return CriticismResult(response=response, factors=list(factors), baseline=baseline, findings=findings,
+                           extended=extended, gain=gain, alias_sets=alias_sets, catalogue=catalogue,
+                           summary=summary, family_alpha=family_alpha, unexplained=unexplained, verdict=verdict,
+                           verdict_detail=verdict_detail, naming=naming, residuals=_residual_frame(fit),
+                           _extended_model=model, _baseline_model=base_model, run_order=run_order)
+
+
+def _honest_causes(data: _Data, response: str, findings: list, model: _Model, base_model: _Model, first_round,
+                   last_round, not_singled_out: dict | None, family_alpha: float):
+    """(findings, model, unexplained, naming): the named causes must leave no misfit behind.
+
+    Misfit that no catalogue cause answers (lack of fit alone), or that remains after the named
+    extensions (any family member still rejected at the stricter residual level), is reported as
+    unexplained instead of a confident cause; the findings are then dropped and the model is the base one.
+    """
     unexplained = None
     naming: dict = {}
     if not_singled_out:
@@ -308,19 +330,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
                 [_catalogue_entry(data, h) for h in residual], family_alpha,
                 candidate=not_singled_out if not findings else None)
             findings, model = [], base_model
-
-    baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
-    summary = _summary(data, findings, catalogue, family_alpha, gain, exact_fit_message(response, fit))
-    if unexplained:
-        summary = unexplained["message"]
-    if not run_order.drift_tested:
-        summary += " " + run_order.message
-    verdict, verdict_detail = verdict_of(data, fit, findings, unexplained, catalogue, family_alpha)
-    return CriticismResult(response=response, factors=list(factors), baseline=baseline, findings=findings,
-                           extended=extended, gain=gain, alias_sets=alias_sets, catalogue=catalogue,
-                           summary=summary, family_alpha=family_alpha, unexplained=unexplained, verdict=verdict,
-                           verdict_detail=verdict_detail, naming=naming, residuals=_residual_frame(fit),
-                           _extended_model=model, _baseline_model=base_model, run_order=run_order)
+    return findings, model, unexplained, naming
 
 
 def _not_singled_out(data: _Data, model: _Model, h: _Hypothesis, hypotheses: list[_Hypothesis]) -> dict | None:
