@@ -216,6 +216,40 @@ def _smallest_bias(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.nda
     return float(problem.errors(best_s)[row, 0])
 
 
+def _reference_errors(surrogates, targets, observables, factors, reference_point):
+    """(values, relative errors) of the observables at the reference point, or (None, None)."""
+    if reference_point is None:
+        return None, None
+    x_ref = np.array([[float(reference_point[f]) for f in factors]])
+    vals = np.stack([np.asarray(surrogates[o].predict(x_ref), dtype=float) for o in observables])[:, 0]
+    ref_values = dict(zip(observables, vals.tolist()))
+    return ref_values, {o: (v - targets[o]) / abs(targets[o]) for o, v in ref_values.items()}
+
+
+def _bottleneck(problem: _Level2Problem, grid_s, grid_err, tolerance: float, feasible: bool):
+    """(without, implied, bottleneck, candidates, biased): per observable the smallest error left when it
+    is dropped and the bias it would need; where no point meets every target, the observable whose
+    target is the bottleneck, those whose bias alone would restore feasibility, and that one if unique."""
+    observables = problem.observables
+    every = list(range(len(observables)))
+    without, implied = {}, {}
+    if len(observables) > 1:
+        for i, o in enumerate(observables):
+            others = [j for j in every if j != i]
+            val, _, _ = _minimax(problem, grid_s, grid_err, others)
+            without[o] = val
+            # where every target is met within the tolerance, no observable needs a bias
+            implied[o] = 0.0 if feasible else _smallest_bias(problem, grid_s, grid_err, i, others)
+    if feasible:
+        return without, implied, None, [], None
+    # Smallest error left when the observable is dropped; near-ties (common when the rest is
+    # exactly solvable) go to the observable needing the smallest bias.
+    bottleneck = (min(without, key=lambda o: (round(without[o] / (1e-3 * tolerance)), abs(implied[o])))
+                  if without else observables[0])
+    candidates = [o for o in observables if without.get(o, np.inf) <= tolerance + 1e-12]
+    return without, implied, bottleneck, candidates, candidates[0] if len(candidates) == 1 else None
+
+
 def calibration_check(surrogates: dict, domain, targets: dict[str, float], tolerance: float, n: int,
                       reference_point: dict | None = None, strict_set=None, runs=None) -> Level2Result:
     """Level-2 criticism: can any point of the domain meet every target, and if not, why not?
@@ -259,31 +293,8 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     best_values = dict(zip(observables, problem.values(best_s)[:, 0].tolist()))
     best_errors = dict(zip(observables, problem.errors(best_s)[:, 0].tolist()))
 
-    ref_values = ref_errors = None
-    if reference_point is not None:
-        x_ref = np.array([[float(reference_point[f]) for f in factors]])
-        vals = np.stack([np.asarray(surrogates[o].predict(x_ref), dtype=float) for o in observables])[:, 0]
-        ref_values = dict(zip(observables, vals.tolist()))
-        ref_errors = {o: (v - targets[o]) / abs(targets[o]) for o, v in ref_values.items()}
-
-    without, implied = {}, {}
-    if k > 1:
-        for i, o in enumerate(observables):
-            others = [j for j in every if j != i]
-            val, _, _ = _minimax(problem, grid_s, grid_err, others)
-            without[o] = val
-            # where every target is met within the tolerance, no observable needs a bias
-            implied[o] = 0.0 if feasible else _smallest_bias(problem, grid_s, grid_err, i, others)
-    bottleneck = None
-    candidates: list[str] = []
-    biased = None
-    if not feasible:
-        # Smallest error left when the observable is dropped; near-ties (common when the rest is
-        # exactly solvable) go to the observable needing the smallest bias.
-        bottleneck = (min(without, key=lambda o: (round(without[o] / (1e-3 * tolerance)), abs(implied[o])))
-                      if without else observables[0])
-        candidates = [o for o in observables if without.get(o, np.inf) <= tolerance + 1e-12]
-        biased = candidates[0] if len(candidates) == 1 else None
+    ref_values, ref_errors = _reference_errors(surrogates, targets, observables, factors, reference_point)
+    without, implied, bottleneck, candidates, biased = _bottleneck(problem, grid_s, grid_err, tolerance, feasible)
 
     shared_val, shared_s, shared_delta = _minimax(problem, grid_s, grid_err, every, shared=True)
     shared = {"delta": _num(shared_delta), "max_error": _num(shared_val),
