@@ -47,5 +47,5 @@ def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, spec: MaterialSpec, c
             ax.set_title("objective cloud")
     if title:
         fig.suptitle(title)
-    fig.tight_layout()
+    fig.set_layout_engine("tight")  # laid out when drawn (demid.io.save_figure), once
     return fig

@@ -175,5 +175,6 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, surr
     fig.legend(handles=handles, loc="lower center", ncol=1, frameon=False, bbox_to_anchor=(0.5, 0.0))
     if title:
         fig.suptitle(title)
-    fig.tight_layout(rect=(0, (0.035 + 0.045 * len(handles)) / nrow, 1, 1))
+    # laid out when drawn (demid.io.save_figure), once, at the resolution it is saved at
+    fig.set_layout_engine("tight", rect=(0, (0.035 + 0.045 * len(handles)) / nrow, 1, 1))
     return fig

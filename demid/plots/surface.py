@@ -62,7 +62,8 @@ def surface_figure(domain: Domain, spec: MaterialSpec, grid: pd.DataFrame, n: in
     sub = "" if d <= 2 else f" (other factors at mid-range: {', '.join(names[2:])})"
     if title or sub:
         fig.suptitle(f"{title}{sub}")
-    fig.tight_layout(rect=(0, 0.08 / nrow if handles else 0, 1, 1))
+    # laid out when drawn (demid.io.save_figure), once, at the resolution it is saved at
+    fig.set_layout_engine("tight", rect=(0, 0.08 / nrow if handles else 0, 1, 1))
     if handles:  # below the panels, never over a run
         fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=len(handles), frameon=False)
     return fig
