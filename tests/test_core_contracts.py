@@ -607,3 +607,31 @@ def test_lack_of_fit_holds_its_share_of_the_family_level():
     assert adjusted < 0.05 < equal
     assert np.all(family_weights(["outlier", "drift", "missing_term"]) == 1.0)
     assert family_weights(causes).mean() == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("layout", ["constrained", "tight"])
+def test_figure_drawn_once_has_the_pixels_savefig_gives(tmp_path, layout):
+    """save_figure lays the figure out and renders it in one draw: the PNG must show what matplotlib's
+    own savefig (a hidden layout draw, then the render) shows, labels and titles placed alike."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+    from PIL import Image
+
+    def build():
+        fig = Figure(figsize=(4, 2.5), layout=layout)
+        axes = fig.subplots(1, 2)
+        for ax in axes:
+            ax.plot([0, 1e4], [0, 1])
+            ax.set_xlabel(r"a long label with mathtext $\mu_{\mathrm{r}}$ [J m$^{-2}$]")
+            ax.set_title("title\nsecond line")
+        fig.suptitle("suptitle")
+        return fig
+
+    save_figure(build(), tmp_path / "ours.png", dpi=60)
+    build().savefig(tmp_path / "theirs.png", dpi=60, format="png")
+    ours = np.asarray(Image.open(tmp_path / "ours.png").convert("RGBA"))
+    theirs = np.asarray(Image.open(tmp_path / "theirs.png").convert("RGBA"))
+    assert ours.shape == theirs.shape and np.array_equal(ours, theirs)
+    assert (tmp_path / "ours.svg").read_text().count("<svg") == 1

@@ -154,3 +154,20 @@ def test_polished_spans_of_a_set_between_the_nodes():
     lower, upper = polish_spans(fields, SQUARE, ["y1", "y2"], targets, 0.004, grid)
     np.testing.assert_allclose(lower, [0.498, 0.5125 * 0.996], atol=1e-7)
     np.testing.assert_allclose(upper, [0.502, 0.5125 * 1.004], atol=1e-7)
+
+
+@pytest.mark.parametrize("shape", [(7,), (5, 6), (4, 5, 3), (3, 4, 3, 2)])
+def test_cell_corner_ranges_equal_the_min_and_max_over_every_corner(shape):
+    """Each cell's smallest and largest corner value, taken axis by axis, against a plain loop over
+    the cells and their 2**d corners."""
+    from itertools import product
+
+    from demid.sampling.grid import _cell_range
+
+    values = np.random.default_rng(len(shape)).normal(size=shape)
+    lo, hi = _cell_range(values)
+    cells = tuple(n - 1 for n in shape)
+    assert lo.shape == hi.shape == cells
+    for cell in np.ndindex(*cells):
+        corners = [values[tuple(c + o for c, o in zip(cell, offset))] for offset in product((0, 1), repeat=len(shape))]
+        assert lo[cell] == min(corners) and hi[cell] == max(corners)
