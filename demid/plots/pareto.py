@@ -43,9 +43,11 @@ def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, spec: MaterialSpec, c
             ax.set_ylim(lo - pad, hi + 4 * pad)
             ax.set_title(f"zoom: error ≤ {xmax:g} %")
         else:
-            ax.legend(frameon=False, loc="upper right")
             ax.set_title("objective cloud")
+    # below the panels, never over the cloud
+    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False, markerscale=6,
+               bbox_to_anchor=(0.5, 0.0))
     if title:
         fig.suptitle(title)
-    fig.set_layout_engine("tight")  # laid out when drawn (demid.io.save_figure), once
+    fig.set_layout_engine("tight", rect=(0, 0.07, 1, 1))  # laid out when drawn (demid.io.save_figure), once
     return fig
