@@ -246,6 +246,54 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
         design = mat["design"]
         if design["type"] == "ccd" and design.get("alpha", 1.0) < 1.0:
             raise InputError(f"config key {key}.design.alpha: a CCD needs alpha >= 1", source=source)
+        _check_published_ranges(key, responses, source)
+        _check_scenario_labels(key, mat.get("scenarios") or {}, source)
+
+
+#: Published statistics with a bounded range: (lowest, highest, name).  R² of a least-squares fit with an
+#: intercept and a p-value lie in [0, 1]; adjusted R² and Q² can be negative but never exceed 1.
+_PUBLISHED_RANGES = {"r2": (0.0, 1.0, "R²"), "adj_r2": (-np.inf, 1.0, "adjusted R²"), "q2": (-np.inf, 1.0, "Q²"),
+                     "lof_p": (0.0, 1.0, "lack-of-fit p-value")}
+
+
+def _printed_float(value) -> float | None:
+    """The number a published value stands for (a bound "<0.001" by its bound, "98.9 %" as 0.989)."""
+    if isinstance(value, bool):
+        return None
+    if isinstance(value, (int, float)):
+        return float(value)
+    text = str(value).strip().replace("\u2212", "-").lstrip("<>=≤≥ ")
+    scale = 0.01 if text.endswith("%") else 1.0
+    try:
+        return float(text.rstrip("% ")) * scale
+    except ValueError:
+        return None
+
+
+def _check_published_ranges(key: str, responses: dict, source: str) -> None:
+    """A published R² of 1.5 cannot be what the source printed: a slip (often a percentage) stops here."""
+    for rname, resp in responses.items():
+        for stat, raw in (resp.get("published") or {}).items():
+            if stat not in _PUBLISHED_RANGES:
+                continue
+            low, high, name = _PUBLISHED_RANGES[stat]
+            value = _printed_float(raw)
+            if value is None or low <= value <= high:
+                continue
+            hint = (f"; written in percent? {value:g} % is {value / 100:g}" if 1 < value <= 100 else "")
+            raise InputError(f"config key {key}.responses.{rname}.published.{stat}: {raw} is not a possible {name} "
+                             f"(it lies between {low:g} and {high:g}){hint}", source=source)
+
+
+def _check_scenario_labels(key: str, scenarios: dict, source: str) -> None:
+    """Two scenarios with the same label could not be told apart in the tables, figures and report."""
+    seen: dict[str, str] = {}
+    for sname, scen in scenarios.items():
+        label = (scen.get("label") or "").strip()
+        if label and label in seen:
+            raise InputError(f"config key {key}.scenarios.{sname}.label: '{label}' is also the label of scenario "
+                             f"'{seen[label]}'; give each scenario its own label", source=source)
+        seen.setdefault(label, sname)
 
 
 def load_config(path: Path | str, base_dir: Path | str | None = None) -> dict:

@@ -82,8 +82,19 @@ def read_raw_numbered(path: Path | str) -> tuple[list[str], list[list[str]], lis
         raise InputError("the file is empty", source=str(path))
     delim = _sniff_delimiter(numbered[0][1])
     rows = [next(csv.reader([ln], delimiter=delim)) for _, ln in numbered]
-    header = [h.strip() for h in rows[0]]
-    return header, rows[1:], [no for no, _ in numbered[1:]]
+    header, rows = _drop_trailing_empty_columns([h.strip() for h in rows[0]], rows[1:])
+    return header, rows, [no for no, _ in numbered[1:]]
+
+
+def _drop_trailing_empty_columns(header: list[str], rows: list[list[str]]) -> tuple[list[str], list[list[str]]]:
+    """Spreadsheets often export empty columns after the last one used (``run,a,b,,``): columns at the end
+    with no name and no value in any row are not part of the table."""
+    width = len(header)
+    while width and header[width - 1] == "" and all(len(r) < width or not r[width - 1].strip() for r in rows):
+        width -= 1
+    if width == len(header):
+        return header, rows
+    return header[:width], [r[:width] if len(r) > width else r for r in rows]
 
 
 def read_raw(path: Path | str) -> tuple[list[str], list[list[str]], str]:
@@ -124,8 +135,10 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
     needed = ["run"] + list(factors) + list(responses)
     for col in needed:
         if col not in header:
-            close = difflib.get_close_matches(col, header, n=1, cutoff=0.6)
-            hint = f"; found '{close[0]}' — misspelled?" if close else f"; columns found: {', '.join(header)}"
+            same = [h for h in header if h.casefold() == col.casefold()]
+            close = same or difflib.get_close_matches(col, header, n=1, cutoff=0.6)
+            hint = (f"; found '{same[0]}', which differs only in upper/lower case" if same
+                    else f"; found '{close[0]}' — misspelled?" if close else f"; columns found: {', '.join(header)}")
             raise InputError(f"missing column (expected columns: {', '.join(needed)}){hint}", source=src, column=col)
     dup_cols = {h for h in header if header.count(h) > 1}
     if dup_cols:

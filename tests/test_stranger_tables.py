@@ -453,3 +453,50 @@ def test_a_level_value_that_differs_from_the_other_runs_at_its_level_is_warned_a
     # the centre level of x1: 3 centre runs and the 2 axial runs of x2, 4 of them unchanged
     assert f"run {row + 1}, column 'x1': {float(cells[1]):.10g}, where the other 4 runs at this level read " \
            f"{float(usual):.10g}" in warning
+
+
+def test_empty_columns_a_spreadsheet_adds_after_the_last_are_ignored(tmp_path):
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok,,", "2,0.2,2,7.5,ok,,", "3,0.3,3,6.0,ok,,"], header="run,x1,x2,y,status,,")
+    table, _ = read_table(path, ["x1", "x2"], ["y"])
+    assert list(table["y"]) == [5.0, 7.5, 6.0]
+    # an unnamed column that holds a value is still refused: it is data without a name
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok,,", "2,0.2,2,7.5,ok,,9", "3,0.3,3,6.0,ok,,"], header="run,x1,x2,y,status,,")
+    with pytest.raises(InputError):
+        read_table(path, ["x1", "x2"], ["y"])
+
+
+def test_a_column_name_in_another_case_is_named_in_the_error(tmp_path):
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok"], header="run,X1,x2,y,status")
+    with pytest.raises(InputError, match=r"column 'x1': missing column .*found 'X1', which differs only in upper/lower"):
+        read_table(path, ["x1", "x2"], ["y"])
+
+
+@pytest.mark.parametrize("stat,value,match", [
+    ("r2", 98.9, r"published\.r2: 98\.9 is not a possible R² .*written in percent\? 98\.9 % is 0\.989"),
+    ("r2", -0.1, r"published\.r2: -0\.1 is not a possible R²"),
+    ("adj_r2", 1.2, r"published\.adj_r2: 1\.2 is not a possible adjusted R²"),
+    ("lof_p", 5, r"published\.lof_p: 5 is not a possible lack-of-fit p-value .*5 % is 0\.05"),
+])
+def test_an_impossible_published_statistic_is_refused(tmp_path, stat, value, match):
+    def mutate(c):
+        c["materials"]["mortar"]["responses"]["d5"].setdefault("published", {})[stat] = value
+    with pytest.raises(InputError, match=rf"config key materials\.mortar\.responses\.d5\.{match}"):
+        _load(tmp_path, mutate)
+
+
+@pytest.mark.parametrize("stat,value", [("r2", "98.9%"), ("adj_r2", -0.3), ("lof_p", "<0.0001"), ("q2", -1.48)])
+def test_possible_published_statistics_pass(tmp_path, stat, value):
+    def mutate(c):
+        c["materials"]["mortar"]["responses"]["d5"].setdefault("published", {})[stat] = value
+    assert "mortar" in _load(tmp_path, mutate)["materials"]
+
+
+def test_two_scenarios_with_one_label_are_refused(tmp_path):
+    def mutate(c):
+        scenarios = c["materials"]["mortar"]["scenarios"]
+        first = next(iter(scenarios.values()))
+        scenarios["again"] = {"observables": list(first["observables"]), "tolerance": 0.03, "label": first["label"]}
+    # (which of the two is named depends on the order of the keys in the file)
+    with pytest.raises(InputError, match=r"materials\.mortar\.scenarios\.\w+\.label: '.+' is also the label of "
+                                         r"scenario '\w+'; give each scenario its own label"):
+        _load(tmp_path, mutate)
