@@ -13,3 +13,43 @@ def test_labels_get_sub_and_superscripts():
 def test_code_spans_words_and_unlabelled_text_are_untouched():
     text = "`d_10` stays; xd_1 and d_1x are other words; plain stays plain"
     assert typeset_labels(text, LABELS) == text
+
+
+def _mortar_spec():
+    from pathlib import Path
+
+    import yaml
+
+    from demid.config import validate_schema
+    from demid.spec import MaterialSpec
+
+    repo = Path(__file__).resolve().parent.parent
+    config = validate_schema(yaml.safe_load((repo / "config.yaml").read_text(encoding="utf-8")))
+    return MaterialSpec.from_config("mortar", config)
+
+
+def _ranking_of_the_full_set(spec):
+    import pandas as pd
+
+    used = max((sc.observables for sc in spec.scenarios), key=len)
+    return pd.DataFrame({"observables": ["+".join(used)], "n_observables": [len(used)], "best_subset": [""],
+                         "gain_vs_best_subset_bits": [1.0], "feasible_fraction_pct": [0.0],
+                         "targets_reachable": [True]})
+
+
+def test_next_step_settles_a_discrepancy_before_asking_for_a_narrower_set():
+    """Where no point meets every target, "a narrower set needs a new kind of measurement" means nothing:
+    the next step names the observable that limits the best match, by its label."""
+    import pandas as pd
+
+    from demid.report.summary import next_step
+
+    spec = _mortar_spec()
+    verdicts = pd.DataFrame(columns=["scenario", "factor", "verdict"])
+    level2 = {"feasible": False, "tolerance": 0.02, "bottleneck": "d10", "best_point_at_bound": {}}
+    steps = next_step(_ranking_of_the_full_set(spec), verdicts, spec, level2)
+    assert not any("narrower set" in s for s in steps)
+    label = spec.response_labels["d10"]
+    assert any(s.startswith("No parameter set meets every target within 2 %") and label in s for s in steps), steps
+    feasible = next_step(_ranking_of_the_full_set(spec), verdicts, spec, {**level2, "feasible": True})
+    assert any("narrower set" in s for s in feasible)

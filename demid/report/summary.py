@@ -142,8 +142,8 @@ def criticism_lines(info: dict, spec) -> list[str]:
                          f"(best point misses by at most {worst:.2f} %).")
         else:
             lines.append(f"Simulation vs experiment: the targets cannot all be met within {tol:g} %; the best point "
-                         f"misses by {worst:.2f} %" + (f", limited by {level2['bottleneck']}" if level2.get("bottleneck")
-                                                        else "") + ".")
+                         f"misses by {worst:.2f} %" + (f", limited by {spec.response_labels.get(limit, limit)}"
+                                                        if (limit := level2.get("bottleneck")) else "") + ".")
         if level2.get("reference_max_error") is not None:
             lines.append(f"Reference point: largest error {100 * level2['reference_max_error']:.2f} % "
                          f"({'within' if level2['reference_max_error'] <= level2['tolerance'] else 'outside'} "
@@ -185,6 +185,13 @@ def next_step(ranking: pd.DataFrame | None, verdicts: pd.DataFrame, spec, level2
             names = ", ".join(spec.response_labels.get(o, o) for o in added)
             steps.append(f"Measure {names} as well: it adds {best['gain_vs_best_subset_bits']:.2f} bits of information "
                          f"and leaves {best['feasible_fraction_pct']:.3g} % of the domain admissible.")
+        elif used and level2 and not level2.get("feasible", True):
+            # a narrower set means nothing while no point meets every target: the discrepancy comes first
+            limit = level2.get("bottleneck")
+            which = (f"the target and the simulation of {spec.response_labels.get(limit, limit)}, the observable "
+                     f"that limits the best match" if limit else "the targets and their simulation")
+            steps.append(f"No parameter set meets every target within {100 * level2['tolerance']:g} %: settle that "
+                         f"first. Check {which}, or widen the search range where the best point lies on a bound.")
         elif used:
             steps.append("Every observable with a target is already used; a narrower set needs a new kind of "
                          "measurement or a smaller tolerance (measurement uncertainty permitting).")
