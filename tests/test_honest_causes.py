@@ -414,3 +414,28 @@ def test_one_run_rule_gives_fewer_wrong_causes_on_a_batch_of_shifted_runs():
             verdict.ONE_RUN_CAUSES = saved
     assert sum(with_rule) < sum(without_rule), (sum(with_rule), sum(without_rule))
     assert all(b for a, b in zip(with_rule, without_rule) if a)
+
+
+def test_a_three_factor_interaction_says_that_the_corner_runs_alone_carry_it():
+    """On a CCD, x1*x2*x3 is carried by the 8 corner runs alone, where it is the only pattern the quadratic
+    cannot follow: a regime change in part of the corner region looks exactly like it.  The finding says so;
+    a pure cubic term (carried by the axial runs too) gets no such caveat."""
+    import numpy as np
+
+    from demid.criticism.messages import _corner_only_caveat
+    from demid.design import ccd_points
+
+    class Runs:  # the caveat reads the coded runs and their number only
+        def __init__(self, coded):
+            self.coded, self.n = coded, len(coded)
+
+    coded = ccd_points(3, 1.68179, 6)
+    caveat = _corner_only_caveat(Runs(coded), (1, 1, 1))
+    assert caveat.startswith(" Only the 8 corner runs carry this term")
+    assert _corner_only_caveat(Runs(coded), (3, 0, 0)) == ""
+    assert _corner_only_caveat(Runs(coded), (2, 1, 0)) == ""
+    # the claim itself: on the corners, main effects, two-factor interactions and x1*x2*x3 span every pattern
+    corners = coded[np.all(np.abs(coded) == 1, axis=1)]
+    x = np.column_stack([np.ones(8), corners, corners[:, [0]] * corners[:, [1]], corners[:, [0]] * corners[:, [2]],
+                         corners[:, [1]] * corners[:, [2]], np.prod(corners, axis=1)])
+    assert np.linalg.matrix_rank(x) == 8

@@ -46,6 +46,22 @@ def _describe_term(term: Term, factors: list[str]) -> str:
     return f"a change of the {sq} curvature with {lin}"
 
 
+def _corner_only_caveat(data: _Data, term) -> str:
+    """A product of three or more factors is carried by the factorial (corner) runs alone, where main
+    effects, two-factor interactions and that product span every pattern: any difference between the
+    corners the quadratic cannot follow, e.g. a change of regime where several factors are high, looks
+    exactly like the product on these runs.  Said, so the term is not read as proven physics."""
+    if sum(1 for p in term if p) < 3 or any(p > 1 for p in term):
+        return ""
+    column = np.prod(np.asarray(data.coded, float) ** np.asarray(term), axis=1)
+    carried = int(np.sum(np.abs(column) > 1e-9))
+    if carried == 0 or carried > data.n / 2:
+        return ""
+    return (f" Only the {carried} corner runs carry this term: any difference between them that the quadratic "
+            f"cannot follow, such as a change of regime where several factors are high, looks exactly like it "
+            f"on these runs.")
+
+
 def _points_text(points: list[dict]) -> str:
     return " and ".join("(" + ", ".join(f"{k}={v:g}" for k, v in p.items()) + ")" for p in points)
 
@@ -63,7 +79,7 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
         if others and extra_runs:
             what = "the two" if len(h.aliases) == 2 else f"the {len(h.aliases)}"
             text += f" Extra runs at {_points_text(extra_runs)} would tell {what} apart."
-        return text
+        return text + _corner_only_caveat(data, h.detail.terms[0])
     if h.cause == "response_transform":
         lam = info["lam"]
         scale = {"log": "log", "sqrt": "square-root", "inverse": "reciprocal"}.get(_transform_name(lam))
