@@ -94,7 +94,8 @@ def _drop_trailing_empty_columns(header: list[str], rows: list[list[str]]) -> tu
         width -= 1
     if width == len(header):
         return header, rows
-    return header[:width], [r[:width] if len(r) > width else r for r in rows]
+    # a row with a value beyond the header keeps its length, so that its cell count is refused as before
+    return header[:width], [r[:width] if not any(c.strip() for c in r[width:]) else r for r in rows]
 
 
 def read_raw(path: Path | str) -> tuple[list[str], list[list[str]], str]:

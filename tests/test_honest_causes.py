@@ -434,6 +434,8 @@ def test_a_three_factor_interaction_says_that_the_corner_runs_alone_carry_it():
     assert caveat.startswith(" Only the 8 corner runs carry this term")
     assert _corner_only_caveat(Runs(coded), (3, 0, 0)) == ""
     assert _corner_only_caveat(Runs(coded), (2, 1, 0)) == ""
+    # with four factors other products share the corners: no such claim
+    assert _corner_only_caveat(Runs(ccd_points(4, 2.0, 12)), (1, 1, 1, 0)) == ""
     # the claim itself: on the corners, main effects, two-factor interactions and x1*x2*x3 span every pattern
     corners = coded[np.all(np.abs(coded) == 1, axis=1)]
     x = np.column_stack([np.ones(8), corners, corners[:, [0]] * corners[:, [1]], corners[:, [0]] * corners[:, [2]],

@@ -500,3 +500,9 @@ def test_two_scenarios_with_one_label_are_refused(tmp_path):
     with pytest.raises(InputError, match=r"materials\.mortar\.scenarios\.\w+\.label: '.+' is also the label of "
                                          r"scenario '\w+'; give each scenario its own label"):
         _load(tmp_path, mutate)
+
+
+def test_a_value_beyond_the_header_is_not_dropped_with_the_empty_columns(tmp_path):
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok,,", "2,0.2,2,7.5,ok,,,9", "3,0.3,3,6.0,ok,,"], header="run,x1,x2,y,status,,")
+    with pytest.raises(InputError, match=r"line 3 has 8 cells, the header has 5"):
+        read_table(path, ["x1", "x2"], ["y"])

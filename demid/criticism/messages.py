@@ -47,11 +47,12 @@ def _describe_term(term: Term, factors: list[str]) -> str:
 
 
 def _corner_only_caveat(data: _Data, term) -> str:
-    """A product of three or more factors is carried by the factorial (corner) runs alone, where main
-    effects, two-factor interactions and that product span every pattern: any difference between the
-    corners the quadratic cannot follow, e.g. a change of regime where several factors are high, looks
-    exactly like the product on these runs.  Said, so the term is not read as proven physics."""
-    if sum(1 for p in term if p) < 3 or any(p > 1 for p in term):
+    """In a 3-factor design, x1*x2*x3 is carried by the factorial (corner) runs alone, where main effects,
+    two-factor interactions and that product span all 8 patterns: any difference between the corners the
+    quadratic cannot follow, e.g. a change of regime where several factors are high, looks exactly like the
+    product on these runs.  Said, so the term is not read as proven physics.  (With more factors other
+    products share the corners, and the claim would not hold.)"""
+    if len(term) != 3 or any(p != 1 for p in term):
         return ""
     column = np.prod(np.asarray(data.coded, float) ** np.asarray(term), axis=1)
     carried = int(np.sum(np.abs(column) > 1e-9))
