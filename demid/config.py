@@ -256,29 +256,19 @@ _PUBLISHED_RANGES = {"r2": (0.0, 1.0, "R²"), "adj_r2": (-np.inf, 1.0, "adjusted
                      "lof_p": (0.0, 1.0, "lack-of-fit p-value")}
 
 
-def _printed_float(value) -> float | None:
-    """The number a published value stands for (a bound "<0.001" by its bound, "98.9 %" as 0.989)."""
-    if isinstance(value, bool):
-        return None
-    if isinstance(value, (int, float)):
-        return float(value)
-    text = str(value).strip().replace("\u2212", "-").lstrip("<>=≤≥ ")
-    scale = 0.01 if text.endswith("%") else 1.0
-    try:
-        return float(text.rstrip("% ")) * scale
-    except ValueError:
-        return None
-
-
 def _check_published_ranges(key: str, responses: dict, source: str) -> None:
-    """A published R² of 1.5 cannot be what the source printed: a slip (often a percentage) stops here."""
+    """A published R² of 1.5 cannot be what the source printed: a slip (often a percentage) stops here.
+    Values are read as the transcription check reads them ("98.9%" is 0.989, "<0.0001" its bound)."""
     for rname, resp in responses.items():
-        for stat, raw in (resp.get("published") or {}).items():
-            if stat not in _PUBLISHED_RANGES:
-                continue
+        published = {stat: raw for stat, raw in (resp.get("published") or {}).items() if stat in _PUBLISHED_RANGES}
+        if not published:
+            continue
+        from .transcription.printed import parse_printed  # only where a study gives published statistics
+
+        for stat, raw in published.items():
             low, high, name = _PUBLISHED_RANGES[stat]
-            value = _printed_float(raw)
-            if value is None or low <= value <= high:
+            value = parse_printed(raw, where=f"{source}: config key {key}.responses.{rname}.published.{stat}").value
+            if low <= value <= high:
                 continue
             hint = (f"; written in percent? {value:g} % is {value / 100:g}" if 1 < value <= 100 else "")
             raise InputError(f"config key {key}.responses.{rname}.published.{stat}: {raw} is not a possible {name} "

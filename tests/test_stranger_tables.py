@@ -484,7 +484,8 @@ def test_an_impossible_published_statistic_is_refused(tmp_path, stat, value, mat
         _load(tmp_path, mutate)
 
 
-@pytest.mark.parametrize("stat,value", [("r2", "98.9%"), ("adj_r2", -0.3), ("lof_p", "<0.0001"), ("q2", -1.48)])
+@pytest.mark.parametrize("stat,value", [("r2", "98.9%"), ("adj_r2", -0.3), ("lof_p", "<0.0001"), ("q2", -1.48),
+                                        ("q2", "\u22121.48")])
 def test_possible_published_statistics_pass(tmp_path, stat, value):
     def mutate(c):
         c["materials"]["mortar"]["responses"]["d5"].setdefault("published", {})[stat] = value

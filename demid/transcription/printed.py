@@ -101,7 +101,7 @@ def parse_printed(value, decimals: int | None = None, *, where: str = "published
     else:
         raise InputError(f"expected a number, got {value!r}", source=where)
     relation = "="
-    body = text.replace(" ", "")
+    body = text.replace(" ", "").replace("\u2212", "-")  # a typeset minus, as the schema and the tables allow
     for prefix, rel in (("<=", "<"), (">=", ">"), ("≤", "<"), ("≥", ">"), ("<", "<"), (">", ">")):
         if body.startswith(prefix):
             relation, body = rel, body[len(prefix):]
