@@ -177,6 +177,12 @@ def _stepdown_minp(obs: np.ndarray, null: np.ndarray) -> np.ndarray:
     return adj
 
 
+def _lr_f_logp(lr, df: int, n: int):
+    """Log p of a one-parameter likelihood ratio on the F scale, (df-1)(exp(LR/n)-1) ~ F(1, df-1): close to
+    calibrated at a dozen runs, where chi-square(1) is far too liberal."""
+    return _f_logp((df - 1) * np.expm1(lr / n), df - 1)
+
+
 class _Round:
     """One round of the catalogue on the current model: observed statistics and joint null."""
 
@@ -258,13 +264,12 @@ class _Round:
 
     def _heteroscedasticity(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         """Unequal scatter against each factor and the fitted values: likelihood ratio of a log-linear
-        variance model; p-values on the F scale, (df-1)(exp(LR/n)-1) ~ F(1, df-1), which only set the
-        ranking (the family test uses the simulated joint null)."""
+        variance model; its F-scale p-values only set the ranking (the family test uses the simulated joint null)."""
         df, n = m.df_resid, len(m.y)
         for name, v in self.covariates().items():
             lr = float(_het_lr(e_obs, m.x, v)[0])
-            h = _Hypothesis("heteroscedasticity", name, [], lr, float(_f_logp((df - 1) * np.expm1(lr / n), df - 1)))
-            h.null_logp = _f_logp((df - 1) * np.expm1(_het_lr(e_null, m.x, v) / n), df - 1)
+            h = _Hypothesis("heteroscedasticity", name, [], lr, float(_lr_f_logp(lr, df, n)))
+            h.null_logp = _lr_f_logp(_het_lr(e_null, m.x, v), df, n)
             self.hypotheses.append(h)
 
     def _response_transform(self, m: _Model, q: np.ndarray, n_null: int, rng: np.random.Generator) -> None:
@@ -274,9 +279,8 @@ class _Round:
         lr_obs = float(self._boxcox_lr(m.y[:, None], q)[0])
         p_boot, n_used = self._boxcox_bootstrap(m, q, lr_obs, n_null, rng)
         h = _Hypothesis("response_transform", None, [], lr_obs, math.log(p_boot), info={"bootstrap_draws": n_used})
-        # Ranked against the other causes by the F form of the likelihood ratio, which is close
-        # to calibrated at a dozen runs (chi-square(1) is far too liberal there).
-        h.strength = float(_f_logp((df - 1) * np.expm1(lr_obs / n), df - 1))
+        # ranked against the other causes by the F form of the likelihood ratio
+        h.strength = float(_lr_f_logp(lr_obs, df, n))
         h.null_logp = np.log(rng.uniform(size=n_null))
         self.hypotheses.append(h)
 
