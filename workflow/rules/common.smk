@@ -34,21 +34,20 @@ os.environ.setdefault("NUMPY_MADVISE_HUGEPAGE", "0")
 
 RESULTS = config["results_dir"]
 MATERIALS = list(config["materials"])
-SUMMARY_TABLES = [
-    f"{RESULTS}/tables/{name}.csv"
-    for name in (
-        "surrogate_fit",
-        "identifiability",
-        "transcription_check",
-        "robust_identifiability",
-        "tolerance_sweep",
-        "information_gain",
-        "observable_ranking",
-        "criticism",
-        "calibration_residuals",
-        "columns",
-    )
-]
+# The cross-material tables: summary_tables' output name -> file under tables/.
+SUMMARY_TABLE_FILES = {
+    "surrogate_fit": "surrogate_fit",
+    "identifiability": "identifiability",
+    "transcription": "transcription_check",
+    "robust": "robust_identifiability",
+    "sweep": "tolerance_sweep",
+    "information_gain": "information_gain",
+    "ranking": "observable_ranking",
+    "findings": "criticism",
+    "calibration": "calibration_residuals",
+    "columns": "columns",
+}
+SUMMARY_TABLES = [f"{RESULTS}/tables/{stem}.csv" for stem in SUMMARY_TABLE_FILES.values()]
 
 
 wildcard_constraints:
@@ -169,8 +168,7 @@ def summary_inputs():
 def summary_outputs():
     """Named outputs of summary_tables: the cross-material tables, and the paper comparison where
     the config names a published-values file (one job: it reads two of those tables back)."""
-    out = dict(zip(("surrogate_fit", "identifiability", "transcription", "robust", "sweep", "information_gain",
-                    "ranking", "findings", "calibration", "columns"), SUMMARY_TABLES))
+    out = {name: f"{RESULTS}/tables/{stem}.csv" for name, stem in SUMMARY_TABLE_FILES.items()}
     if config.get("published"):
         out["paper_comparison"] = f"{RESULTS}/tables/paper_comparison.csv"
     return out
