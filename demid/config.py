@@ -154,24 +154,31 @@ def _label_keys(mname: str, mat: dict):
 
 
 def _check_labels(config: dict, source: str) -> None:
-    """Labels with $...$ are drawn as matplotlib mathtext: a typo there would only fail in a late job."""
-    math = [(key, text) for mname, mat in config["materials"].items() for key, text in _label_keys(mname, mat)
-            if text.count("$") - text.count(r"\$") >= 2]
+    """Labels drawn as matplotlib mathtext ($...$, or `_`/`^` typeset by demid): a typo would only fail in a late job."""
+    from .plots.labels import tex_label, tex_unit
+
+    # Checked as drawn: demid typesets `_` and `^` itself, so a label without `$` can become mathtext too.
+    drawn = [(key, text, tex_unit(text) if key.endswith(".unit") else tex_label(text))
+             for mname, mat in config["materials"].items() for key, text in _label_keys(mname, mat)]
+    math = [(key, text, shown) for key, text, shown in drawn if shown.count("$") - shown.count(r"\$") >= 2]
     if not math:
         return
     from matplotlib import cbook
     from matplotlib.mathtext import MathTextParser
 
     parser = MathTextParser("path")
-    for key, text in math:
-        if not cbook.is_math_text(text):
+    for key, text, shown in math:
+        if not cbook.is_math_text(shown):
             continue
         try:
-            parser.parse(text)
+            parser.parse(shown)
         except ValueError as exc:
             reason = " ".join(str(exc).split())
-            raise InputError(f"config key {key}: '{text}' is not valid matplotlib mathtext ({reason}); fix it or "
-                             r"write \$ for a literal dollar sign", source=source) from None
+            if len(reason) > 90:  # pyparsing lists every construct it expected
+                reason = reason[:87] + "..."
+            raise InputError(f"config key {key}: '{text}' is not valid matplotlib mathtext ({reason}); fix it "
+                             r"(`^` and `_` need something after them; write \$ for a literal dollar sign)",
+                             source=source) from None
 
 
 def check_semantics(config: dict, source: str = "config", base_dir: Path | str = ".") -> None:
@@ -197,6 +204,11 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
             raise InputError(f"config key {key}.responses: no response has a target; give at least one measured "
                              f"value (e.g. {key}.responses.{next(iter(responses))}.target), or there is nothing "
                              "to calibrate against", source=source)
+        if not mat.get("scenarios"):
+            targeted = [r for r, resp in responses.items() if "target" in resp]
+            raise InputError(f"config key {key}.scenarios: no scenario; admissible sets need at least one, e.g. "
+                             f"scenarios: {{all: {{observables: [{', '.join(targeted)}], tolerance: 0.05}}}}",
+                             source=source)
         path = base_dir / mat["data"]
         if not path.is_file():
             raise InputError(f"config key {key}.data: data file '{mat['data']}' does not exist", source=source)

@@ -182,7 +182,8 @@ def fragment_yaml(sheet: RunSheet, material: str, data_path: str, responses=()) 
 
     body = yaml.safe_dump({"materials": {material: sheet.material_config(data_path, responses)}},
                           sort_keys=False, default_flow_style=None)
-    note = ("# Generated with the run sheet; add a target to each response that is measured.\n"
+    scenarios = "# and `scenarios:` (e.g. all: {observables: [...], tolerance: 0.05}) before running the pipeline.\n"
+    note = ("# Generated with the run sheet; add a target to each response that is measured,\n"
             if responses else "# Generated with the run sheet; add `responses:` (one per simulated response "
-                              "column, with targets) before running the pipeline.\n")
+                              "column, with targets),\n") + scenarios
     return note + body

@@ -95,6 +95,7 @@ def test_cli_sheet_validates_as_its_design(tmp_path, args):
     sheet.to_csv(tmp_path / "sheet.csv", index=False)
     fragment = yaml.safe_load((tmp_path / "study.yaml").read_text())
     fragment["materials"]["study"]["responses"]["y"]["target"] = 2.0  # the measurement the user adds
+    fragment["materials"]["study"]["scenarios"] = {"y": {"observables": ["y"], "tolerance": 0.05}}  # and a scenario
     config = validate_schema(fragment)
     check_semantics(config, base_dir=tmp_path)
     vt = validate_material("study", config["materials"]["study"], base_dir=tmp_path)
@@ -118,6 +119,7 @@ def test_a_sheet_with_a_moved_point_does_not_validate(tmp_path):
     sheet.to_csv(tmp_path / "sheet.csv", index=False)
     fragment = yaml.safe_load((tmp_path / "study.yaml").read_text())
     fragment["materials"]["study"]["responses"]["y"]["target"] = 2.0  # the measurement the user adds
+    fragment["materials"]["study"]["scenarios"] = {"y": {"observables": ["y"], "tolerance": 0.05}}  # and a scenario
     config = validate_schema(fragment)
     with pytest.raises(InputError, match="not a level"):
         validate_material("study", config["materials"]["study"], base_dir=tmp_path)

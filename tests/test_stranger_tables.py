@@ -223,6 +223,24 @@ def test_mathtext_typo_in_a_label_names_the_config_key(tmp_path, where, label):
         _load(tmp_path, mutate)
 
 
+@pytest.mark.parametrize("where,label", [
+    (("factors", "mu_r", "label"), "x^"),            # demid typesets ^ and _ itself: no $ needed to fail
+    (("responses", "d5", "label"), "a^b^c"),
+    (("factors", "gamma", "label"), "T_^"),
+])
+def test_label_typo_without_dollars_names_the_config_key(tmp_path, where, label):
+    def mutate(c):
+        c["materials"]["mortar"][where[0]][where[1]][where[2]] = label
+    key = re.escape(f"materials.mortar.{'.'.join(where)}")
+    with pytest.raises(InputError, match=rf"config key {key}: .* is not valid matplotlib mathtext"):
+        _load(tmp_path, mutate)
+
+
+def test_material_without_scenarios_is_refused_at_validation(tmp_path):
+    with pytest.raises(InputError, match=r"materials\.mortar\.scenarios: no scenario; .*observables: \[d"):
+        _load(tmp_path, lambda c: c["materials"]["mortar"].pop("scenarios"))
+
+
 def test_valid_mathtext_and_dollar_free_labels_pass(tmp_path):
     def mutate(c):
         c["materials"]["mortar"]["factors"]["mu_r"]["label"] = r"$\mu_{r}$ (M)"
