@@ -147,7 +147,8 @@ def _config(tmp_path, extra: str = "") -> str:
     path = tmp_path / "c.yaml"
     path.write_text("materials:\n  m:\n    data: t.csv\n    design: {type: ccd, alpha: 1.41421, center_runs: 5}\n"
                     "    factors: {a: {lower: 0, upper: 1}, b: {lower: 0, upper: 1}}\n"
-                    "    responses: {y: {target: 1}}\n" + extra, encoding="utf-8")
+                    "    responses: {y: {target: 1}}\n"
+                    "    scenarios: {y: {observables: [y], tolerance: 0.05}}\n" + extra, encoding="utf-8")
     return str(path)
 
 

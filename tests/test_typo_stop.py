@@ -25,6 +25,7 @@ materials:
     responses:
       y1: {{target: 60}}
       y2: {{target: 40}}
+    scenarios: {{both: {{observables: [y1, y2], tolerance: 0.05}}}}
 {extra}"""
 
 
