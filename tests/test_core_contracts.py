@@ -289,6 +289,12 @@ def test_decimal_shift_slips_move_the_point_one_or_two_places():
     assert {value: kind for kind, _, value in single_cell_slips("1.224")}.get(1.24) == "digit_doubled"
 
 
+def test_a_typeset_minus_is_read_as_a_minus_by_the_slip_search():
+    # U+2212, as copied from a PDF: the table reader accepts it, so its repairs must be found too
+    slips = {value: kind for kind, _, value in single_cell_slips("\u2212120.4")}
+    assert slips.get(120.4) == "sign_lost" and slips.get(-12.04) == "decimal_shift"
+
+
 def test_agreement_rule_is_the_rounding_interval_of_the_printed_digits():
     printed = parse_printed("0.97")
     values = [0.965, 0.975, 0.9651, 0.9749, 0.9751, 0.9649, np.nan, np.inf]

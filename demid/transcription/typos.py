@@ -44,7 +44,7 @@ def single_cell_slips(text: str) -> list[tuple[str, str, float]]:
     ``decimal_shift`` moves the point by 1 or 2 places.  Repairs that give the
     same number are kept once, under the kind listed first in :data:`KINDS`.
     """
-    raw = text.strip()
+    raw = text.strip().replace("\u2212", "-")  # a typeset minus, which the table reader accepts
     try:
         found = Decimal(raw)
     except InvalidOperation:
