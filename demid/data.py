@@ -483,6 +483,13 @@ def require_estimable(coded: np.ndarray, usable: np.ndarray, point_types: np.nda
         why += (f" (all {n_centre} centre run(s) failed); at least one centre run is needed" if n_centre
                 else "; the design needs at least one centre run")
         raise InputError(f"the quadratic model cannot be estimated: {why}", source=src, column=column)
+    if point_types is not None and np.any(point_types == "axial"):
+        centre = point_types == "center"
+        if centre.any() and not np.any(centre & usable):
+            # Off the sphere the fit still runs, but its centre is extrapolated from runs at radius >= 1.
+            raise InputError(f"the quadratic model cannot be trusted: all {int(centre.sum())} centre run(s) failed, "
+                             "so its value at the design centre would be extrapolated from the factorial and axial "
+                             "runs; at least one centre run is needed", source=src, column=column)
     matrix = model_matrix(x, terms)
     singular = np.linalg.svd(matrix, compute_uv=False)
     rank = int(np.sum(singular > 1e-8 * singular[0]))

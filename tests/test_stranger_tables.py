@@ -92,8 +92,10 @@ def test_mistyped_factor_cell_is_located_not_absorbed_into_the_coding(tmp_path):
         validate_material("m", cfg)
 
 
-@pytest.mark.parametrize("k,alpha", [(2, 1.41421), (3, 1.73205)])
-def test_spherical_ccd_whose_centre_runs_all_failed_is_refused(tmp_path, k, alpha):
+@pytest.mark.parametrize("k,alpha", [(2, 1.41421), (3, 1.73205), (3, 1.68179), (2, 1.0)])
+def test_ccd_whose_centre_runs_all_failed_is_refused(tmp_path, k, alpha):
+    # On the sphere the intercept cannot be estimated; off it (rotatable 3-factor, face-centred) it would
+    # be extrapolated to the centre from runs at radius >= 1.
     cfg, _, _, _ = _write_design(tmp_path, ccd_points(k, alpha, 3), [0.1] * k, [0.9] * k,
                                  {"type": "ccd", "alpha": alpha, "center_runs": 3})
     path = Path(cfg["data"])
@@ -104,8 +106,11 @@ def test_spherical_ccd_whose_centre_runs_all_failed_is_refused(tmp_path, k, alph
         centre = all(abs(float(v) - 0.5) < 1e-9 for v in cells[1:1 + k])
         out.append(",".join(cells[:-1] + ["", "failed"]) if centre else line + ",ok")
     path.write_text("\n".join(out) + "\n")
-    with pytest.raises(InputError, match=r"column 'y': the quadratic model cannot be estimated.*all 3 centre "
-                                         r"run\(s\) failed\); at least one centre run is needed"):
+    spherical = abs(alpha - np.sqrt(k)) < 1e-3
+    message = (r"cannot be estimated.*all 3 centre run\(s\) failed\); at least" if spherical else
+               r"cannot be trusted: all 3 centre run\(s\) failed, so its value at the design centre would be "
+               r"extrapolated")
+    with pytest.raises(InputError, match=r"column 'y': the quadratic model " + message):
         validate_material("m", cfg)
 
 
