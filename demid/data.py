@@ -276,9 +276,53 @@ def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str
     return Coding(tuple(factors), tuple(centers), tuple(units))
 
 
+def _ccd_alpha_of_table(table: pd.DataFrame, factors: list[str], log_factors=()) -> float | None:
+    """The axial distance the runs themselves show, when every factor has the five (or three) levels of
+    a CCD, symmetric about the centre, with one ratio of axial to factorial half-range; else None."""
+    z = model_units(table[factors].to_numpy(), factors, log_factors)
+    ratios = []
+    for i in range(len(factors)):
+        values = np.unique(np.round(z[:, i], 9))
+        if len(values) not in (3, 5):
+            return None
+        spread = values[-1] - values[0]
+        if not spread > 0 or abs(values[0] + values[-1] - 2 * values[len(values) // 2]) > 1e-3 * spread:
+            return None
+        inner = values[3] - values[1] if len(values) == 5 else spread
+        ratios.append(spread / inner)
+    if max(ratios) - min(ratios) > 1e-3 * max(ratios):
+        return None
+    return float(np.mean(ratios))
+
+
 def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str, config_key: str,
                  log_factors=(), level_tol: float = 0.02) -> tuple[Coding, np.ndarray]:
     """Check that factor values sit on the declared design's levels and the point counts match."""
+    try:
+        return _check_design(table, factors, design, src, config_key, log_factors, level_tol)
+    except InputError as error:
+        shown = _ccd_alpha_of_table(table, factors, log_factors) if design["type"] == "ccd" else None
+        declared = float(design.get("alpha", 1.0))
+        # A wrong design.alpha puts every axial run off its level: name the key, not the first such cell.
+        if shown is None or abs(shown - declared) <= 1e-3 * shown or not _passes(
+                table, factors, {**design, "alpha": shown}, src, config_key, log_factors, level_tol):
+            raise error
+    geometry = ("the axial runs sit on the faces, at the factorial levels" if abs(shown - 1) < 1e-3 else
+                f"in every factor the axial levels lie {shown:.6g} times as far from the centre as the factorial ones")
+    raise InputError(f"config key {config_key}.design.alpha: the runs form a CCD with alpha = {shown:.6g} "
+                     f"({geometry}), not the declared {declared:g}; set design.alpha: {shown:.6g}", source=src)
+
+
+def _passes(*args) -> bool:
+    try:
+        _check_design(*args)
+    except InputError:
+        return False
+    return True
+
+
+def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str, config_key: str,
+                  log_factors=(), level_tol: float = 0.02) -> tuple[Coding, np.ndarray]:
     dtype = design["type"]
     alpha = float(design.get("alpha", 1.0))
     coding = infer_coding(table, factors, design, src, log_factors)
@@ -295,6 +339,8 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
                 near_actual = coding.to_actual(np.where(np.arange(len(factors)) == i, nearest, 0.0))[i]
                 if f in log_factors:
                     near_actual = 10 ** near_actual
+                printed = table[f].to_numpy(dtype=float)[np.abs(coded[:, i] - nearest) <= level_tol]
+                near_actual = printed[0] if printed.size else near_actual  # as the other runs print it
                 found = table.loc[table["run"] == r, f].iloc[0]
                 raise InputError(f"value {found:g} is not a level of the declared {dtype} design "
                                  f"(coded {c:+.3f}); nearest valid level: {near_actual:.6g} (coded {nearest:+.4g})",

@@ -20,6 +20,12 @@ INTERCEPT = "Intercept"
 #: leave-one-out residual, studentised residual and Cook's distance are round-off over round-off.
 LEVERAGE_ONE = 1 - 1e-10
 
+#: A run at or above this leverage is one the other runs all but fail to determine the model at: a lone
+#: centre run of a rotatable CCD has leverage 1, and 1 - 1e-4 once its printed levels are rounded.
+#: Its leave-one-out error, residual / (1 - h), is then over ten residual standard deviations of noise
+#: driven by the last printed digit of the levels, so it says nothing about the fit (Q² of -1e5 seen).
+LEVERAGE_UNPREDICTABLE = 0.99
+
 
 def term_name(term: Term, factors: list[str]) -> str:
     parts = []

@@ -15,7 +15,7 @@ from functools import cached_property
 import numpy as np
 import pandas as pd
 
-from .design import LEVERAGE_ONE, Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, replicate_groups, term_name
+from .design import LEVERAGE_UNPREDICTABLE, Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, replicate_groups, term_name
 
 
 # Residuals smaller than this share of the response's magnitude are floating-point round-off
@@ -247,9 +247,9 @@ class SurrogateFit:
 
     @cached_property
     def fitted_exactly(self) -> np.ndarray:
-        """Runs of leverage 1 (to round-off): reproduced whatever their value, so their leave-one-out
-        statistics are round-off over round-off, i.e. undefined."""
-        return self.hat_diag >= LEVERAGE_ONE
+        """Runs the others do not predict (leverage 1, or 1 blurred by rounded levels): the fit follows
+        them whatever their value, so their leave-one-out statistics are undefined."""
+        return self.hat_diag >= LEVERAGE_UNPREDICTABLE
 
     @cached_property
     def loo_residuals(self) -> np.ndarray:

@@ -88,7 +88,8 @@ def test_mistyped_factor_cell_is_located_not_absorbed_into_the_coding(tmp_path):
     cells[2] = f"{float(cells[2]) * 1.1:.6f}"  # off every level, still inside the bounds
     lines[4] = ",".join(cells)
     path.write_text("\n".join(lines) + "\n")
-    with pytest.raises(InputError, match=r"run 4, column 'x2': value .* is not a level of the declared ccd"):
+    with pytest.raises(InputError, match=r"run 4, column 'x2': value 3\.3 is not a level of the declared ccd design "
+                                         r"\(coded \+0\.252\); nearest valid level: 3 \(coded \+0\)$"):
         validate_material("m", cfg)
 
 
@@ -530,3 +531,26 @@ def test_a_value_beyond_the_header_is_not_dropped_with_the_empty_columns(tmp_pat
     path = _tiny(tmp_path, ["1,0.1,1,5.0,ok,,", "2,0.2,2,7.5,ok,,,9", "3,0.3,3,6.0,ok,,"], header="run,x1,x2,y,status,,")
     with pytest.raises(InputError, match=r"line 3 has 8 cells, the header has 5"):
         read_table(path, ["x1", "x2"], ["y"])
+
+
+@pytest.mark.parametrize("k, table_alpha, declared", [(2, 1.41421, 1.682), (2, 1.41421, 1.0), (3, 1.68179, 1.41421),
+                                                      (2, 1.0, 1.41421), (3, 1.0, 1.68179), (4, 2.0, 1.68179)])
+def test_a_wrong_design_alpha_names_the_key_and_the_alpha_the_runs_show(tmp_path, k, table_alpha, declared):
+    cfg, _, _, _ = _write_design(tmp_path, ccd_points(k, table_alpha, 3), [0.1] * k, [0.9] * k,
+                                 {"type": "ccd", "alpha": declared, "center_runs": 3}, seed=k)
+    with pytest.raises(InputError, match=rf"config key materials\.m\.design\.alpha: the runs form a CCD with "
+                                         rf"alpha = {table_alpha:.6g} .*not the declared {declared:g}; set "
+                                         rf"design\.alpha: {table_alpha:.6g}$"):
+        validate_material("m", cfg)
+    validate_material("m", {**cfg, "design": {**cfg["design"], "alpha": table_alpha}})  # the hint validates
+
+
+def test_one_axial_cell_off_its_level_still_names_the_cell_not_alpha(tmp_path):
+    cfg, _, _, _ = _write_design(tmp_path, ccd_points(2, 1.41421, 3), [0.1, 0.1], [0.9, 0.9],
+                                 {"type": "ccd", "alpha": 1.41421, "center_runs": 3})
+    path = Path(cfg["data"])
+    text = path.read_text()
+    assert text.count("0.900000") == 2  # the two +alpha cells, one per factor
+    path.write_text(text.replace("0.900000", "0.850000", 1))  # inside the bounds, off every level
+    with pytest.raises(InputError, match=r"run \d+, column 'x\d': value 0\.85 is not a level.*\(coded \+1\.414\)$"):
+        validate_material("m", cfg)

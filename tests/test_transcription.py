@@ -405,3 +405,23 @@ def test_a_single_published_statistic_off_is_not_blamed_on_the_print_alone(table
     result = check_transcription(numeric(printed), factors, "y", {"r2": "0.1234"}, alpha=alpha, printed=printed)
     assert result.printed_slip is None and not result.consistent
     assert "or the printed value is itself wrong" in result.message
+
+
+def test_a_slip_that_a_coarse_statistic_cannot_locate_is_not_called_located(tables):
+    """With R² alone, printed to two decimals, a repair in many cells restores it: the message says the
+    published statistics do not locate the slip, instead of naming the first lead as the slip."""
+    printed, factors, alpha, published = tables[2]
+    mutated = printed.copy()
+    row = 3
+    whole, frac = printed.loc[row, "y"].split(".")
+    mutated.loc[row, "y"] = f"{whole}{frac[0]}.{frac[1:]}"  # decimal point shifted one place: far off
+    fit = fit_response(numeric(printed), factors, "y", alpha=alpha)
+    coarse = {"r2": f"{fit.statistics().r2:.2f}"}
+    result = check_transcription(numeric(mutated), factors, "y", coarse, alpha=alpha, printed=mutated)
+    full = [s for s in result.suspects if s.restores == 1]
+    assert not result.consistent and result.explained and len(full) > 1
+    assert "do not locate the slip" in result.message and "a single-cell slip explains it" not in result.message
+    # Every statistic printed: one repair restores them all, and that one is named as the slip.
+    located = check_transcription(numeric(mutated), factors, "y", published, alpha=alpha, printed=mutated)
+    assert "a single-cell slip explains it" in located.message
+    assert (located.suspects[0].run, located.suspects[0].column) == (row + 1, "y")

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..design import model_matrix
+from ..design import LEVERAGE_UNPREDICTABLE, model_matrix
 from .models import _orth, _residualize
 
 if TYPE_CHECKING:
@@ -67,8 +67,9 @@ def _term_classes(coded: np.ndarray, base_terms: list[Term], candidates: list[Te
             inestimable.append(t)
             continue
         u = resid[:, j] / norm
-        if np.max(hat + u * u) > 1 - 1e-6:
-            # The term would only fit one run exactly (leverage 1): not a curvature the runs can show.
+        if np.max(hat + u * u) >= LEVERAGE_UNPREDICTABLE:
+            # The term would all but fit one run exactly (leverage 1, or 1 blurred by rounded levels): not a
+            # curvature the runs can show.
             inestimable.append(t)
             continue
         for c in classes:

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import stats
 
-from ..design import LEVERAGE_ONE, cubic_terms, model_matrix, term_name
+from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, model_matrix, term_name
 from ..surrogate import round_off_only
 from .aliasing import _term_classes
 from .models import _orth, _residualize
@@ -86,7 +86,7 @@ def _added_variable_stats(e: np.ndarray, u: np.ndarray, df2: int):
 
 def _outlier_stats(e: np.ndarray, hat: np.ndarray, df: int):
     """Externally studentised residuals t (n, B) of residuals e (n, B)."""
-    ok = hat < LEVERAGE_ONE
+    ok = hat < LEVERAGE_UNPREDICTABLE  # the others cannot tell such a run's value (rounded levels suffice)
     h = np.where(ok, hat, 0.0)[:, None]
     sse = np.sum(e * e, axis=0)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -442,7 +442,7 @@ def _slip_ratios(m: _Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[
     for k, c in enumerate(cands):
         by_run.setdefault(pos_of[c.row], []).append(k)
     for i, ks in by_run.items():
-        if m.hat[i] > 1 - 1e-8:
+        if m.hat[i] >= LEVERAGE_UNPREDICTABLE:
             continue
         others = np.ones(len(y), dtype=bool)
         others[i] = False

@@ -273,7 +273,8 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
         if not_singled_out is not None:
             break
         h, spec, info, new, alternatives = named
-        if findings and not new.loo_rmse_on(new.keep) < model.loo_rmse_on(new.keep):
+        both = new.predictable & model.predictable
+        if findings and not new.loo_rmse_on(both) < model.loo_rmse_on(both):
             break  # a further extension must also predict left-out runs better
         findings.append(_finding(data, response, model, h, spec, info, new, alternatives))
         model = new
@@ -397,7 +398,7 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
         info["lam"] = spec.lam
     if h.cause == "drift":
         info["drift_per_run"] = _drift_per_run(new)
-    same = new.keep
+    same = new.predictable & model.predictable
     before = model.loo_rmse_on(same)
     after = new.loo_rmse_on(same)
     extra_runs = []
@@ -440,7 +441,7 @@ def _gain(table: pd.DataFrame, factors: list[str], response: str, data: _Data, f
             extended.update(lof_f=_num(st.lof_f), lof_p=_num(st.lof_p))
     else:
         extended = dict(baseline)
-    same = model.keep
+    same = model.predictable & base_model.predictable
     loo_base_same = base_model.loo_rmse_on(same)
     loo_ext = model.loo_rmse_on(same)
     gain = {

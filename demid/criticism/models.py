@@ -14,7 +14,7 @@ from scipy import special
 from statsmodels.regression import linear_model as sm  # OLS, WLS: statsmodels.api would add its graphics and tsa
 from statsmodels.tools.eval_measures import aicc as _sm_aicc
 
-from ..design import model_matrix, model_units, term_name
+from ..design import LEVERAGE_UNPREDICTABLE, model_matrix, model_units, term_name
 
 if TYPE_CHECKING:
     from ..design import Coding, Term
@@ -222,16 +222,26 @@ class _Model:
 
     @property
     def loo_errors(self) -> np.ndarray:
-        """Exact leave-one-out prediction errors on the original scale, at the kept runs."""
+        """Exact leave-one-out prediction errors on the original scale, at the kept runs (NaN at runs
+        the others do not predict, see :data:`~demid.design.LEVERAGE_UNPREDICTABLE`)."""
         with np.errstate(divide="ignore", invalid="ignore"):
             press_z = self.resid_w / (1.0 - self.hat) / self.sw
-        return self.y - _inv_boxcox(self.z - press_z, self.spec.lam)
+            err = self.y - _inv_boxcox(self.z - press_z, self.spec.lam)
+        return np.where(self.hat < LEVERAGE_UNPREDICTABLE, err, np.nan)
+
+    @property
+    def predictable(self) -> np.ndarray:
+        """Runs (of all n) that this model keeps and that the other kept runs predict."""
+        out = np.zeros(self.data.n, dtype=bool)
+        out[self.keep] = self.hat < LEVERAGE_UNPREDICTABLE
+        return out
 
     def loo_rmse_on(self, keep_mask: np.ndarray) -> float:
-        """Leave-one-out RMSE over the runs in keep_mask (a subset of this model's runs)."""
+        """Leave-one-out RMSE over the runs in keep_mask that this model predicts."""
         err = np.full(self.data.n, np.nan)
         err[self.keep] = self.loo_errors
-        return float(np.sqrt(np.mean(err[keep_mask] ** 2)))
+        chosen = err[keep_mask & self.predictable]
+        return float(np.sqrt(np.mean(chosen ** 2))) if chosen.size else float("nan")
 
     def summary(self) -> dict:
         y, f = self.y, self.fitted

@@ -207,9 +207,30 @@ def exact_fit_message(response: str, fit: SurrogateFit) -> str:
     return ""
 
 
+def unpredictable_runs_message(fit: SurrogateFit) -> str:
+    """What cannot be checked where a run alone fixes the quadratic ("" when no run does)."""
+    runs = [int(r) for r in np.asarray(fit.runs)[fit.fitted_exactly]]
+    if not runs:
+        return ""
+    which = f"Run {runs[0]} alone fixes" if len(runs) == 1 else f"Runs {', '.join(map(str, runs))} alone fix"
+    return (f" {which} the quadratic at {'its point' if len(runs) == 1 else 'their points'} (leverage "
+            f"{float(np.max(fit.hat_diag[fit.fitted_exactly])):.4f}; a lone centre run does): the fit is not checked "
+            f"there and Q² is undefined; a replicate of {'that run' if len(runs) == 1 else 'those runs'} would check it.")
+
+
 def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
                family_alpha: float) -> tuple[str, dict]:
     """The verdict and what supports it (numbers for the JSON, a message for the report)."""
+    verdict, detail = _verdict(data, fit, findings, unexplained, catalogue, family_alpha)
+    lone = unpredictable_runs_message(fit)
+    if lone:
+        detail["unpredictable_runs"] = [int(r) for r in np.asarray(fit.runs)[fit.fitted_exactly]]
+        detail["message"] += lone
+    return verdict, detail
+
+
+def _verdict(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
+             family_alpha: float) -> tuple[str, dict]:
     st = fit.statistics()
     n = st.n_runs
     loo = math.sqrt(st.press / n) if np.isfinite(st.press) else float("nan")

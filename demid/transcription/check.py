@@ -369,14 +369,16 @@ def _printed_slip_message(response: str, slip: dict, n_pub: int, n_agree: int) -
 
 
 def _explained_message(response: str, best: Suspect, n_pub: int, n_agree: int, n_full: int) -> str:
-    message = (f"the table does not reproduce {n_pub - n_agree} of {n_pub} published statistics of "
-               f"'{response}'; a single-cell slip explains it: run {best.run}, column '{best.column}' "
-               f"reads {best.found_text} where {best.suggested_text} restores all {n_pub} "
-               f"({best.kind.replace('_', ' ')})")
-    if n_full > 1:
-        message += (f"; {n_full} single-cell repairs restore all of them, so the published statistics "
-                    "do not single one out (best match to the printed values first)")
-    return message
+    head = f"the table does not reproduce {n_pub - n_agree} of {n_pub} published statistics of '{response}'"
+    cell = (f"run {best.run}, column '{best.column}' reads {best.found_text} where {best.suggested_text} restores "
+            f"all {n_pub} ({best.kind.replace('_', ' ')})")
+    if n_full == 1:
+        return f"{head}; a single-cell slip explains it: {cell}"
+    # Many repairs fitting equally is what a published statistic too weak to locate anything looks like:
+    # naming the first as "the" slip would send the user to a cell the evidence does not single out.
+    return (f"{head}; a single-cell slip could explain it, but {n_full} different single-cell repairs restore "
+            f"all of them, so the published statistics do not locate the slip; the closest to the printed "
+            f"values: {cell} (all listed as leads; check them against the source)")
 
 
 def _unexplained_message(response, targets, reproduced, agrees, n_partial, best_restores) -> str:
