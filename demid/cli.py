@@ -38,6 +38,16 @@ def _alpha(table, factors, alpha, design="ccd"):
     return float(abs(coding.to_coded(table[factors].to_numpy(dtype=float))).max())
 
 
+def _check_structure(table, factors, design, alpha, source):
+    """The table must be the declared design: every cell on one of its levels, every run one of its points
+    (run counts are not checked: a table may leave out failed runs)."""
+    if design == "custom":
+        return
+    from .data import check_design
+
+    check_design(table, factors, {"type": design, "alpha": alpha}, source, None, counts=False)
+
+
 def _require_estimable(table, factors, response, alpha, source):
     """Refuse a saturated or rank-deficient quadratic: its R² is 1 or arbitrary, its residuals meaningless."""
     import numpy as np
@@ -57,6 +67,7 @@ def cmd_fit(args) -> int:
     factors, responses = _split(args.factors), _split(args.responses)
     table = _load_table(args.data, factors, responses)
     alpha = _alpha(table, factors, args.alpha, args.design)
+    _check_structure(table, factors, args.design, alpha, args.data)
     out = {}
     for r in responses:
         _require_estimable(table, factors, r, alpha, args.data)
@@ -128,7 +139,9 @@ def cmd_criticize(args) -> int:
 
     factors = _split(args.factors)
     table = _load_table(args.data, factors, [args.response])
-    _require_estimable(table, factors, args.response, _alpha(table, factors, args.alpha, args.design), args.data)
+    coding_alpha = _alpha(table, factors, args.alpha, args.design)
+    _check_structure(table, factors, args.design, coding_alpha, args.data)
+    _require_estimable(table, factors, args.response, coding_alpha, args.data)
     alpha = args.alpha if args.alpha is not None or args.design == "ccd" else 1.0  # None: criticize infers it
     result = criticize(table, factors, args.response, alpha=alpha, run_order=args.run_order)
     write_json(result.to_json(), args.out)

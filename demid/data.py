@@ -224,7 +224,7 @@ def _level_coding(values: np.ndarray, counts: np.ndarray, levels: np.ndarray,
     """Centre and unit that put the most runs on the nominal ``levels`` (coded units).
 
     Every pair of distinct values is tried against every pair of levels; ties go to the most
-    symmetric placement (lowest and highest level found equally far from the centre).  A single
+    symmetric placement (lowest and highest level found equally far from the centre), then the narrowest.  A single
     mistyped cell sits on no level, so it cannot move the coding; no value is privileged by how
     often it occurs (a 3x3 factorial or a CCD with one centre run is coded like any other).
     """
@@ -236,7 +236,10 @@ def _level_coding(values: np.ndarray, counts: np.ndarray, levels: np.ndarray,
             coded = (values - centre) / unit
             nearest = np.abs(coded[:, None] - levels[None, :]).argmin(axis=1)
             on = np.abs(coded - levels[nearest]) <= tol
-            key = (int(counts[on].sum()), -round(abs(coded[on].max() + coded[on].min()), 6), int(on.sum()))
+            # Last, the narrowest placement: three values of a CCD factor are its factorial levels and the
+            # centre (a CCD has no factor without factorial points), not its axial levels.
+            key = (int(counts[on].sum()), -round(abs(coded[on].max() + coded[on].min()), 6), int(on.sum()),
+                   -round(float(np.abs(coded[on]).max()), 6))
             if best_key is None or key > best_key:
                 best_key, best = key, (on, levels[nearest])
     if best is None:
@@ -295,22 +298,26 @@ def _ccd_alpha_of_table(table: pd.DataFrame, factors: list[str], log_factors=())
     return float(np.mean(ratios))
 
 
-def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str, config_key: str,
-                 log_factors=(), level_tol: float = 0.02) -> tuple[Coding, np.ndarray]:
-    """Check that factor values sit on the declared design's levels and the point counts match."""
+def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str, config_key: str | None,
+                 log_factors=(), level_tol: float = 0.02, counts: bool = True) -> tuple[Coding, np.ndarray]:
+    """Check that factor values sit on the declared design's levels, every run is a point of the design
+    and (``counts``) the point counts match.  ``config_key`` None: the design came from the command line."""
+    args = (table, factors, design, src, config_key, log_factors, level_tol, counts)
     try:
-        return _check_design(table, factors, design, src, config_key, log_factors, level_tol)
+        return _check_design(*args)
     except InputError as error:
         shown = _ccd_alpha_of_table(table, factors, log_factors) if design["type"] == "ccd" else None
         declared = float(design.get("alpha", 1.0))
         # A wrong design.alpha puts every axial run off its level: name the key, not the first such cell.
         if shown is None or abs(shown - declared) <= 1e-3 * shown or not _passes(
-                table, factors, {**design, "alpha": shown}, src, config_key, log_factors, level_tol):
+                table, factors, {**design, "alpha": shown}, *args[3:]):
             raise error
     geometry = ("the axial runs sit on the faces, at the factorial levels" if abs(shown - 1) < 1e-3 else
                 f"in every factor the axial levels lie {shown:.6g} times as far from the centre as the factorial ones")
-    raise InputError(f"config key {config_key}.design.alpha: the runs form a CCD with alpha = {shown:.6g} "
-                     f"({geometry}), not the declared {declared:g}; set design.alpha: {shown:.6g}", source=src)
+    key, fix = ((f"config key {config_key}.design.alpha", f"set design.alpha: {shown:.6g}") if config_key else
+                ("--alpha", f"pass --alpha {shown:.6g}"))
+    raise InputError(f"{key}: the runs form a CCD with alpha = {shown:.6g} ({geometry}), not the declared "
+                     f"{declared:g}; {fix}", source=src)
 
 
 def _passes(*args) -> bool:
@@ -321,8 +328,8 @@ def _passes(*args) -> bool:
     return True
 
 
-def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str, config_key: str,
-                  log_factors=(), level_tol: float = 0.02) -> tuple[Coding, np.ndarray]:
+def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str, config_key: str | None,
+                  log_factors=(), level_tol: float = 0.02, counts: bool = True) -> tuple[Coding, np.ndarray]:
     dtype = design["type"]
     alpha = float(design.get("alpha", 1.0))
     coding = infer_coding(table, factors, design, src, log_factors)
@@ -349,6 +356,8 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
     types = classify_points(snapped, alpha)
     k = len(factors)
     _refuse_misplaced_points(table, factors, design, snapped, types, levels, coding, log_factors, src)
+    if not counts:
+        return coding, types
     if dtype == "ccd":
         expected = {"factorial": 2 ** k, "axial": 2 * k,
                     "center": int(design.get("center_runs", 0))}

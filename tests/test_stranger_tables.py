@@ -554,3 +554,31 @@ def test_one_axial_cell_off_its_level_still_names_the_cell_not_alpha(tmp_path):
     path.write_text(text.replace("0.900000", "0.850000", 1))  # inside the bounds, off every level
     with pytest.raises(InputError, match=r"run \d+, column 'x\d': value 0\.85 is not a level.*\(coded \+1\.414\)$"):
         validate_material("m", cfg)
+
+
+@pytest.mark.parametrize("command", ["fit", "criticize"])
+@pytest.mark.parametrize("design, table_points, message", [
+    ("box_behnken", ccd_points(3, 1.68179, 3), r"is not a level of the declared box_behnken design"),
+    ("factorial", ccd_points(2, 1.41421, 3), r"is not a level of the declared factorial design"),
+    ("ccd", np.array([p for p in _full_factorial(3, [-1, 0, 1]) if np.sum(np.abs(p)) == 2] + [[0, 0, 0]] * 3),
+     r"is not a factorial, axial or centre point of the declared ccd design"),
+])
+def test_fit_and_criticize_refuse_a_table_that_is_not_the_declared_design(tmp_path, command, design, table_points,
+                                                                            message):
+    k = table_points.shape[1]
+    cfg, _, _, _ = _write_design(tmp_path, table_points, [0.1] * k, [0.9] * k, {"type": design})
+    names = ",".join(f"x{i + 1}" for i in range(k))
+    response_flag = "--responses" if command == "fit" else "--response"
+    out = tmp_path / "o.json"
+    proc = _cli(command, "--data", cfg["data"], "--factors", names, response_flag, "y", "--design", design,
+                "--out", str(out))
+    assert proc.returncode == 2 and re.search(message, proc.stderr), proc.stderr
+    assert proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr and not out.exists()
+
+
+def test_a_wrong_alpha_on_the_command_line_names_the_option(tmp_path):
+    cfg, _, _, _ = _write_design(tmp_path, ccd_points(2, 1.41421, 3), [0.1, 0.1], [0.9, 0.9], {"type": "ccd"})
+    proc = _cli("criticize", "--data", cfg["data"], "--factors", "x1,x2", "--response", "y", "--alpha", "1.682",
+                "--out", str(tmp_path / "o.json"))
+    assert proc.returncode == 2
+    assert re.search(r"--alpha: the runs form a CCD with alpha = 1\.41421 .*; pass --alpha 1\.41421$", proc.stderr.strip())
