@@ -57,7 +57,7 @@ def _require_estimable(table, factors, response, alpha, source):
 
     x = table[factors].to_numpy(dtype=float)
     coded = Coding.from_levels(factors, x, alpha).to_coded(x)
-    require_estimable(coded, np.isfinite(table[response].to_numpy(dtype=float)), None, source, response)
+    require_estimable(coded, np.isfinite(table[response].to_numpy(dtype=float)), None, source, response, factors)
 
 
 def cmd_fit(args) -> int:

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .design import Coding, classify_points, model_matrix, model_units, nominal_levels, quadratic_terms
+from .design import Coding, classify_points, model_matrix, model_units, nominal_levels, quadratic_terms, term_name
 from .errors import InputError
 from .spec import as_spec
 
@@ -513,7 +513,7 @@ def check_bound_slips(table: pd.DataFrame, material: str, factors_cfg: dict, src
 
 
 def require_estimable(coded: np.ndarray, usable: np.ndarray, point_types: np.ndarray | None, src: str,
-                      column: str) -> None:
+                      column: str, factors: list[str] | None = None) -> None:
     """The full quadratic must be estimable, with residual degrees of freedom, from the usable runs.
 
     Runs that all lie on one sphere about the design centre (a spherical CCD whose centre runs
@@ -546,12 +546,28 @@ def require_estimable(coded: np.ndarray, usable: np.ndarray, point_types: np.nda
                              "so its value at the design centre would be extrapolated from the factorial and axial "
                              "runs; at least one centre run is needed", source=src, column=column)
     matrix = model_matrix(x, terms)
-    singular = np.linalg.svd(matrix, compute_uv=False)
+    _, singular, vt = np.linalg.svd(matrix)
     rank = int(np.sum(singular > 1e-8 * singular[0]))
     if rank < p:
-        raise InputError(f"the quadratic model cannot be estimated (rank {rank} of {p} terms): the usable runs "
-                         "do not vary enough to estimate every term (e.g. a factor at only two levels)",
-                         source=src, column=column)
+        raise InputError(f"the quadratic model cannot be estimated (rank {rank} of {p} terms): "
+                         f"{_confounded_terms(vt[rank:], terms, x, factors)}", source=src, column=column)
+
+
+def _confounded_terms(null_space: np.ndarray, terms, coded: np.ndarray, factors: list[str] | None) -> str:
+    """Which terms the runs cannot tell apart, and what design change would separate them."""
+    factors = factors or [f"x{i + 1}" for i in range(coded.shape[1])]
+    names = ["intercept" if sum(t) == 0 else term_name(t, factors) for t in terms]
+    involved = [n for n, w in zip(names, np.abs(null_space).max(axis=0)) if w > 1e-6]
+    few = [f for i, f in enumerate(factors) if len(np.unique(np.round(coded[:, i], 6))) < 3]
+    listed = ", ".join(involved[:-1]) + f" and {involved[-1]}" if len(involved) > 1 else involved[0]
+    text = f"the usable runs cannot tell {listed} apart"
+    if few:
+        return text + f" ({', '.join(few)} at fewer than three levels: a squared term needs three)"
+    squares = [n for n in involved if n.endswith("^2")]
+    if len(squares) > 1:
+        return text + (" (every run away from the centre has its squared terms equal, as in a two-level factorial "
+                       "with centre runs); axial runs (a CCD) or a three-level factorial separate them")
+    return text
 
 
 def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") -> ValidatedTable:
@@ -583,7 +599,7 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
         snapped = levels[np.argmin(np.abs(coded[:, :, None] - levels[None, None, :]), axis=2)]
         warnings.extend(_odd_level_values(table, factors, snapped, src))
     for r in responses:
-        require_estimable(coded, np.isfinite(table[r].to_numpy()), types, src, r)
+        require_estimable(coded, np.isfinite(table[r].to_numpy()), types, src, r, factors)
     for r in responses:
         values = table[r].to_numpy(dtype=float)
         values = values[np.isfinite(values)]

@@ -582,3 +582,22 @@ def test_a_wrong_alpha_on_the_command_line_names_the_option(tmp_path):
                 "--out", str(tmp_path / "o.json"))
     assert proc.returncode == 2
     assert re.search(r"--alpha: the runs form a CCD with alpha = 1\.41421 .*; pass --alpha 1\.41421$", proc.stderr.strip())
+
+
+@pytest.mark.parametrize("k", [2, 3])
+def test_a_two_level_factorial_with_centre_runs_is_told_why_its_squares_cannot_be_fitted(tmp_path, k):
+    coded = np.vstack([_full_factorial(k, [-1, 1]), np.zeros((4, k))])
+    cfg, _, _, _ = _write_design(tmp_path, coded, [0.1] * k, [0.9] * k, {"type": "factorial", "center_runs": 4})
+    squares = " and ".join([", ".join(f"x{i + 1}^2" for i in range(k - 1)), f"x{k}^2"])
+    with pytest.raises(InputError, match=rf"column 'y': the quadratic model cannot be estimated \(rank "
+                                         rf"{(k + 1) * (k + 2) // 2 - k + 1} of {(k + 1) * (k + 2) // 2} terms\): the "
+                                         rf"usable runs cannot tell {re.escape(squares)} apart .*axial runs \(a CCD\)"):
+        validate_material("m", cfg)
+
+
+def test_the_readme_factorial_line_validates_a_three_level_factorial(tmp_path):
+    line = next(ln for ln in (REPO / "README.md").read_text().splitlines() if ln.startswith("design: {type: factorial"))
+    design = yaml.safe_load(line.split("#")[0])["design"]
+    coded = _full_factorial(2, [-1, 0, 1])
+    cfg, _, _, _ = _write_design(tmp_path, coded, [0.1, 0.1], [0.9, 0.9], design)
+    validate_material("m", cfg)
