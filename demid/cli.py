@@ -6,6 +6,7 @@ User errors print one line (``demid: error: ...``) and exit with status 2; no tr
 from __future__ import annotations
 
 import argparse
+import difflib
 import sys
 from pathlib import Path
 
@@ -149,16 +150,26 @@ def cmd_criticize(args) -> int:
 
 
 def _parse_published(text: str) -> dict:
+    """``key=value`` pairs read as the config's ``published`` block reads them (bounds such as ``<0.0001``
+    and percentages allowed, impossible values and unknown or repeated keys refused)."""
+    from .transcription import STATISTICS
+    from .transcription.printed import impossible_published
+
     out = {}
     for item in _split(text):
-        key, sep, value = item.partition("=")
+        key, sep, value = (part.strip() for part in item.partition("="))
         if not sep:
             raise InputError(f"--published: expected key=value, found '{item}'")
-        try:
-            float(value)
-        except ValueError:
-            raise InputError(f"--published: '{key}' needs a number, found '{value}'") from None
-        out[key.strip()] = value.strip()  # kept as text so printed decimals (trailing zeros) survive
+        if key not in STATISTICS:
+            close = difflib.get_close_matches(key, STATISTICS, n=1)
+            hint = f"did you mean '{close[0]}'? " if close else ""
+            raise InputError(f"--published: unknown statistic '{key}'; {hint}known: {', '.join(STATISTICS)}")
+        if key in out:
+            raise InputError(f"--published: '{key}' is given twice ({out[key]} and {value}); keep the printed one")
+        why = impossible_published(key, value, where=f"--published {key}")
+        if why:
+            raise InputError(f"--published {key}: {why}")
+        out[key] = value  # kept as text so printed decimals (trailing zeros) survive
     return out
 
 

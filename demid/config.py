@@ -262,29 +262,16 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
         _check_scenario_labels(key, mat.get("scenarios") or {}, source)
 
 
-#: Published statistics with a bounded range: (lowest, highest, name).  R² of a least-squares fit with an
-#: intercept and a p-value lie in [0, 1]; adjusted R² and Q² can be negative but never exceed 1.
-_PUBLISHED_RANGES = {"r2": (0.0, 1.0, "R²"), "adj_r2": (-np.inf, 1.0, "adjusted R²"), "q2": (-np.inf, 1.0, "Q²"),
-                     "lof_p": (0.0, 1.0, "lack-of-fit p-value")}
-
-
 def _check_published_ranges(key: str, responses: dict, source: str) -> None:
-    """A published R² of 1.5 cannot be what the source printed: a slip (often a percentage) stops here.
-    Values are read as the transcription check reads them ("98.9%" is 0.989, "<0.0001" its bound)."""
+    """A published R² of 1.5 cannot be what the source printed: a slip (often a percentage) stops here."""
     for rname, resp in responses.items():
-        published = {stat: raw for stat, raw in (resp.get("published") or {}).items() if stat in _PUBLISHED_RANGES}
-        if not published:
-            continue
-        from .transcription.printed import parse_printed  # only where a study gives published statistics
+        for stat, raw in (resp.get("published") or {}).items():
+            where = f"config key {key}.responses.{rname}.published.{stat}"
+            from .transcription.printed import impossible_published  # only where a study gives published statistics
 
-        for stat, raw in published.items():
-            low, high, name = _PUBLISHED_RANGES[stat]
-            value = parse_printed(raw, where=f"{source}: config key {key}.responses.{rname}.published.{stat}").value
-            if low <= value <= high:
-                continue
-            hint = (f"; written in percent? {value:g} % is {value / 100:g}" if 1 < value <= 100 else "")
-            raise InputError(f"config key {key}.responses.{rname}.published.{stat}: {raw} is not a possible {name} "
-                             f"(it lies between {low:g} and {high:g}){hint}", source=source)
+            why = impossible_published(stat, raw, where=f"{source}: {where}")
+            if why:
+                raise InputError(f"{where}: {why}", source=source)
 
 
 def _check_scenario_labels(key: str, scenarios: dict, source: str) -> None:

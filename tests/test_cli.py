@@ -80,3 +80,38 @@ def test_check_transcription_cli_consistent_exit_0(tmp_path):
     assert proc.returncode == 0, proc.stderr
     result = json.loads(out.read_text())
     assert result["consistent"] is True and result["suspects"] == []
+
+
+@pytest.mark.parametrize("published", ["r2=98.27%,lof_p=>0.05", "r2=0.9827,lof_p=>=0.05", "r2=98.27 %"])
+def test_check_transcription_cli_reads_bounds_and_percentages_as_the_config_does(tmp_path, published):
+    from .test_surrogate import MONTGOMERY
+
+    path = tmp_path / "m.csv"
+    MONTGOMERY.to_csv(path, index=False)
+    out = tmp_path / "out.json"
+    proc = _run("check-transcription", "--data", str(path), "--factors", "x1,x2", "--response", "y",
+                "--published", published, "--out", str(out))
+    assert proc.returncode == 0, proc.stderr
+    result = json.loads(out.read_text())
+    assert result["consistent"] is True and result["published"]["r2"] == pytest.approx(0.9827)
+
+
+@pytest.mark.parametrize("published, message", [
+    ("r2=98.27", r"--published r2: 98.27 is not a possible R² .*written in percent\? 98.27 % is 0.9827"),
+    ("lof_p=1.7", r"--published lof_p: 1.7 is not a possible lack-of-fit p-value"),
+    ("r2=0.98,r2=0.99", r"--published: 'r2' is given twice \(0.98 and 0.99\)"),
+    ("rr2=0.98", r"--published: unknown statistic 'rr2'; did you mean 'r2'\?"),
+    ("lof_f=1,78", r"--published: expected key=value, found '78'"),
+])
+def test_check_transcription_cli_refuses_an_impossible_repeated_or_unknown_statistic(tmp_path, published, message):
+    import re
+
+    from .test_surrogate import MONTGOMERY
+
+    path = tmp_path / "m.csv"
+    MONTGOMERY.to_csv(path, index=False)
+    out = tmp_path / "out.json"
+    proc = _run("check-transcription", "--data", str(path), "--factors", "x1,x2", "--response", "y",
+                "--published", published, "--out", str(out))
+    assert proc.returncode == 2 and re.search(message, proc.stderr), proc.stderr
+    assert proc.stderr.count("\n") == 1 and not out.exists()

@@ -27,6 +27,11 @@ STATISTICS = ("r2", "adj_r2", "rmse", "resid_std", "q2", "lof_f", "lof_p",
 
 _MISFIT_CAP = 1e6  # distance charged for a statistic that cannot be reproduced (NaN)
 
+#: Published statistics with a bounded range: (lowest, highest, name).  R² of a least-squares fit with an
+#: intercept and a p-value lie in [0, 1]; adjusted R² and Q² can be negative but never exceed 1.
+_PUBLISHED_RANGES = {"r2": (0.0, 1.0, "R²"), "adj_r2": (-np.inf, 1.0, "adjusted R²"), "q2": (-np.inf, 1.0, "Q²"),
+                     "lof_p": (0.0, 1.0, "lack-of-fit p-value")}
+
 
 # --------------------------------------------------------------------------- printed values
 @dataclass(frozen=True)
@@ -294,3 +299,17 @@ def _cell_texts(table: pd.DataFrame, printed: pd.DataFrame | None, columns: list
         else:
             out[name] = _printed_column(values)
     return out
+
+
+def impossible_published(stat: str, raw, *, where: str) -> str:
+    """Why a published statistic cannot be what the source printed ("" when it can): a value outside its
+    range (an R² of 95.5, often a percentage).  Read as the transcription check reads it ("98.9%" is 0.989,
+    "<0.0001" its bound); unreadable values raise :class:`InputError` naming ``where``."""
+    if stat not in STATISTICS:
+        return ""  # coefficients and decimals are read with the coefficients
+    value = parse_printed(raw, where=where).value
+    low, high, name = _PUBLISHED_RANGES.get(stat, (-np.inf, np.inf, stat))
+    if low <= value <= high:
+        return ""
+    hint = f"; written in percent? {value:g} % is {value / 100:g}" if 1 < value <= 100 else ""
+    return f"{raw} is not a possible {name} (it lies between {low:g} and {high:g}){hint}"
