@@ -181,11 +181,68 @@ def _check_labels(config: dict, source: str) -> None:
                              source=source) from None
 
 
+#: Where relative paths in a config point: said whenever a file is not found there.
+_RELATIVE_TO = ("paths in the config are relative to the folder the pipeline runs in (snakemake --directory), or "
+                "to the config's own folder for python -m demid validate")
+
+
+def _check_published_file(published: str, base_dir: Path, source: str) -> None:
+    """The published-values file must exist and hold a YAML mapping, before any job is scheduled."""
+    if not published:
+        return
+    path = base_dir / published
+    if not path.is_file():
+        raise InputError(f"config key published: file '{published}' does not exist (looked for {path.resolve()}; "
+                         f"{_RELATIVE_TO})", source=source)
+    try:
+        content = load_yaml(path)
+    except InputError as err:
+        raise InputError(f"config key published: {err}", source=source) from None
+    if not isinstance(content, dict):
+        raise InputError(f"config key published: '{published}' must hold a mapping (material -> published "
+                         "numbers)", source=source)
+
+
+class _UniqueKeyLoader(yaml.SafeLoader):
+    """SafeLoader that refuses a key given twice in one mapping (YAML keeps the last one silently)."""
+
+
+def _construct_unique_mapping(loader, node, deep=False):
+    seen = {}
+    for key_node, _ in node.value:
+        key = loader.construct_object(key_node, deep=deep)
+        if isinstance(key, (str, int, float, bool)) and key in seen:
+            raise InputError(f"line {key_node.start_mark.line + 1}: key '{key}' is given twice in one mapping (first "
+                             f"at line {seen[key]}); YAML would silently keep only the last, so remove one")
+        seen[key] = key_node.start_mark.line + 1
+    return loader.construct_mapping(node, deep=deep)
+
+
+_UniqueKeyLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_unique_mapping)
+
+
+def load_yaml(path: Path | str):
+    """A YAML file as Python objects; unreadable text, invalid YAML and repeated keys raise InputError."""
+    path = Path(path)
+    try:
+        with open(path, encoding="utf-8-sig") as fh:
+            return yaml.load(fh, Loader=_UniqueKeyLoader)  # noqa: S506 (a SafeLoader subclass)
+    except UnicodeDecodeError as exc:
+        raise InputError(f"not UTF-8 text (byte {exc.start}); save it as UTF-8", source=str(path)) from None
+    except InputError as err:
+        raise InputError(str(err), source=str(path)) from None
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        where = f" at line {mark.line + 1}" if mark is not None else ""
+        raise InputError(f"not valid YAML{where}: {getattr(exc, 'problem', exc)}", source=str(path)) from None
+
+
 def check_semantics(config: dict, source: str = "config", base_dir: Path | str = ".") -> None:
     """Cross-references the schema cannot check: names, targets, bounds, files."""
     base_dir = Path(base_dir)
     _check_results_dir(config, source)
     _check_grid_sizes(config, source)
+    _check_published_file(config.get("published") or "", base_dir, source)
     _check_labels(config, source)
     materials = config["materials"]
     smoke = config.get("smoke_material") or ""
@@ -211,7 +268,8 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
                              source=source)
         path = base_dir / mat["data"]
         if not path.is_file():
-            raise InputError(f"config key {key}.data: data file '{mat['data']}' does not exist", source=source)
+            raise InputError(f"config key {key}.data: data file '{mat['data']}' does not exist (looked for "
+                             f"{path.resolve()}; {_RELATIVE_TO})", source=source)
         for fname, fac in factors.items():
             if not fac["lower"] < fac["upper"]:
                 raise InputError(f"config key {key}.factors.{fname}: lower ({fac['lower']}) must be below "
@@ -290,15 +348,7 @@ def load_config(path: Path | str, base_dir: Path | str | None = None) -> dict:
     path = Path(path)
     if not path.is_file():
         raise InputError("config file does not exist", source=str(path))
-    try:
-        with open(path, encoding="utf-8-sig") as fh:
-            raw = yaml.safe_load(fh)
-    except UnicodeDecodeError as exc:
-        raise InputError(f"not UTF-8 text (byte {exc.start}); save the config as UTF-8", source=str(path)) from None
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        where = f" at line {mark.line + 1}" if mark is not None else ""
-        raise InputError(f"not valid YAML{where}: {getattr(exc, 'problem', exc)}", source=str(path)) from None
+    raw = load_yaml(path)
     if not isinstance(raw, dict):
         raise InputError("expected a mapping with a 'materials' key", source=str(path))
     config = validate_schema(raw, source=str(path))

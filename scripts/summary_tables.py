@@ -18,13 +18,12 @@ for name, table in summary_tables(per_material).items():
 
 if "paper_comparison" in out.keys():
     import pandas as pd
-    import yaml
 
+    from demid.config import load_yaml
     from demid.paper import paper_comparison
     from demid.report import pareto_intervals
 
-    with open(inp.published, encoding="utf-8") as fh:
-        published = yaml.safe_load(fh)
+    published = load_yaml(inp.published)
     intervals = {m: pareto_intervals(p) for m, p in zip(params.pareto_materials, inp.pareto)}
     # compared as written: the tables a reader sees, rounded as they are
     table = paper_comparison(published, pd.read_csv(out.surrogate_fit), pd.read_csv(out.identifiability), intervals)

@@ -94,6 +94,14 @@ def _missing_file(t, c):
     return t, c.replace("data: data/m.csv", "data: data/missing.csv")
 
 
+def _repeated_key(t, c):
+    return t, c.replace("      y2: {target: 95}\n", "      y2: {target: 95}\n      y1: {target: 120}\n")
+
+
+def _missing_published(t, c):
+    return t, "published: paper_numbers.yaml\n" + c
+
+
 CASES = [
     ("misspelled column", _misspelled, [r"data/m\.csv", r"column 'y2'", r"y_2"]),
     ("non-numeric cell", _non_numeric, [r"data/m\.csv", r"run 4", r"column 'y1'", r"12x\.5"]),
@@ -109,7 +117,11 @@ CASES = [
     ("tolerance zero", _bad_tolerance, [r"study\.yaml", r"materials\.m\.scenarios\.y1_only\.tolerance"]),
     ("tolerance above one", _tolerance_one, [r"study\.yaml", r"materials\.m\.scenarios\.both\.tolerance"]),
     ("bounds reversed", _bounds_reversed, [r"study\.yaml", r"materials\.m\.factors\.b", r"lower"]),
-    ("missing data file", _missing_file, [r"study\.yaml", r"materials\.m\.data", r"missing\.csv"]),
+    ("missing data file", _missing_file, [r"study\.yaml", r"materials\.m\.data", r"missing\.csv",
+                                          r"looked for /\S+/data/missing\.csv"]),
+    ("repeated config key", _repeated_key, [r"study\.yaml", r"line 12: key 'y1' is given twice", r"first at line 10"]),
+    ("missing published file", _missing_published, [r"study\.yaml", r"config key published",
+                                                     r"paper_numbers\.yaml' does not exist"]),
 ]
 
 

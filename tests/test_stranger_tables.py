@@ -182,7 +182,7 @@ def _load(tmp_path, mutate, encoding="utf-8"):
 
 
 def test_cp1252_config_is_one_clear_line(tmp_path):
-    with pytest.raises(InputError, match=r"c\.yaml: not UTF-8 text \(byte \d+\); save the config as UTF-8"):
+    with pytest.raises(InputError, match=r"c\.yaml: not UTF-8 text \(byte \d+\); save it as UTF-8"):
         _load(tmp_path, lambda c: None, encoding="cp1252")
 
 
@@ -601,3 +601,25 @@ def test_the_readme_factorial_line_validates_a_three_level_factorial(tmp_path):
     coded = _full_factorial(2, [-1, 0, 1])
     cfg, _, _, _ = _write_design(tmp_path, coded, [0.1, 0.1], [0.9, 0.9], design)
     validate_material("m", cfg)
+
+
+@pytest.mark.parametrize("content, match", [
+    ("- 0.97\n- 0.95\n", r"config key published: '.*numbers\.yaml' must hold a mapping"),
+    ("poraver: {r2: 0.97}\nporaver: {r2: 0.95}\n", r"config key published: .*numbers\.yaml: line 2: key 'poraver' "
+                                                   r"is given twice in one mapping \(first at line 1\)"),
+    ("poraver: {r2: [0.97\n", r"config key published: .*numbers\.yaml: not valid YAML"),
+])
+def test_a_published_values_file_that_cannot_be_read_is_refused_at_validation(tmp_path, content, match):
+    (tmp_path / "numbers.yaml").write_text(content, encoding="utf-8")
+    with pytest.raises(InputError, match=match):
+        _load(tmp_path, lambda c: c.update(published=str(tmp_path / "numbers.yaml")))
+
+
+def test_a_repeated_key_in_the_config_is_refused_with_both_lines(tmp_path):
+    path = tmp_path / "c.yaml"
+    text = yaml.safe_dump(_demo_config(), allow_unicode=True)
+    path.write_text(text + "grid_points: 51\n" if "grid_points:" in text else text + "results_dir: a\nresults_dir: b\n",
+                    encoding="utf-8")
+    with pytest.raises(InputError, match=r"c\.yaml: line \d+: key '(grid_points|results_dir)' is given twice in one "
+                                         r"mapping \(first at line \d+\)"):
+        load_config(path, base_dir=REPO)

@@ -2,7 +2,7 @@ import os
 import sys
 from pathlib import Path
 
-from demid.config import check_semantics, validate_schema
+from demid.config import check_semantics, load_yaml, validate_schema
 from demid.data import refuse_likely_typos, validate_material
 from demid.errors import InputError
 from demid.next_wave import check_next_runs
@@ -15,6 +15,9 @@ from demid.spec import MaterialSpec
 CONFIG_SOURCE = ", ".join(str(p) for p in workflow.overwrite_configfiles) or "config.yaml"
 
 try:
+    for _configfile in workflow.overwrite_configfiles or ["config.yaml"]:
+        if Path(_configfile).is_file():
+            load_yaml(_configfile)  # Snakemake's own reading keeps the last of a repeated key silently
     _checked = validate_schema(dict(config), source=CONFIG_SOURCE)
     config.clear()
     config.update(_checked)
