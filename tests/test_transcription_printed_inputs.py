@@ -104,3 +104,29 @@ def test_table_cells_keep_six_significant_digits_and_the_printed_precision(tmp_p
     for cell in pd.read_csv(tmp_path / "t.csv", dtype=str).to_numpy().ravel():
         digits = str(cell).lstrip("-<>").split("e")[0].replace(".", "").rstrip("%").lstrip("0")
         assert not digits.isdigit() or len(digits) <= 6, cell
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_adjusted_r2_residual_sd_and_rmse_from_printed_sums_of_squares_agree(seed):
+    """adj. R², residual SD and RMSE a source computed from its own sums of squares printed to one decimal
+    agree, even where the exact refit rounds otherwise; a digit slip in one of them still disagrees."""
+    rng = np.random.default_rng(seed)
+    table = MONTGOMERY.assign(y=np.round(MONTGOMERY["y"] * 10 + rng.normal(0, 4, len(MONTGOMERY)), 1))
+    every = ("ss_residual", "ss_total", "ss_model", "adj_r2", "resid_std", "rmse")
+    exact = check_transcription(table, ["x1", "x2"], "y", dict.fromkeys(every, "0"), alpha=1.414).reproduced
+    n, p = len(table), 6
+    res, tot = round(exact["ss_residual"], 1), round(exact["ss_total"], 1)  # printed to one decimal
+    model = round(exact["ss_model"], 1)
+    from_printed = {"adj_r2": 1 - (res / (n - p)) / (tot / (n - 1)), "resid_std": np.sqrt(res / (n - p)),
+                    "rmse": np.sqrt(res / n)}
+    printed = {"ss_residual": f"{res:.1f}", "ss_total": f"{tot:.1f}", "ss_model": f"{model:.1f}",
+               **{k: f"{v:.6f}" for k, v in from_printed.items()}}
+    # the premise: at six decimals the exact refit does not round to what the printed sums give
+    assert any(round(exact[k], 6) != round(v, 6) for k, v in from_printed.items())
+    result = check_transcription(table, ["x1", "x2"], "y", printed, alpha=1.414)
+    assert result.consistent, result.message
+    for name in from_printed:
+        alone = check_transcription(table, ["x1", "x2"], "y", {name: printed[name]}, alpha=1.414)
+        assert alone.consistent == (round(exact[name], 6) == round(from_printed[name], 6))
+    slipped = dict(printed, resid_std=f"{from_printed['resid_std'] * 10:.6f}")  # decimal point shifted
+    assert not check_transcription(table, ["x1", "x2"], "y", slipped, alpha=1.414).agrees["resid_std"]

@@ -22,7 +22,12 @@ Agreement rule.  A value printed with ``d`` decimals stands for the interval
 that closed interval (widened by one part in a million of ``h`` for
 floating-point noise).  Both ends are included, so a source that rounds half
 up, half down or half to even is accepted alike.  A printed bound such as
-``"< 0.0001"`` agrees when the refit satisfies it.
+``"< 0.0001"`` agrees when the refit satisfies it.  A statistic also agrees
+when the source evidently computed it from sums of squares it printed rounded,
+and those sums agree with the refit: F, its p and R² from any values of the sums
+within their rounding (Montgomery's F = 1.78 from SS 0.28 and 0.21), adjusted
+R², residual SD and RMSE from the printed sums themselves (over the sums'
+rounding their range is wider than their own printed precision).
 
 Ranking of repairs.  By the number of published statistics the repaired table
 reproduces (``restores``, more first); then by how the repair fits the way the

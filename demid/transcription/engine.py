@@ -71,6 +71,7 @@ def _statistics(sse, sst, press, ss_pe, n, p, rank, df_pe) -> dict[str, np.ndarr
                               ((sse - ss_pe) / df_lof) / (ss_pe / df_pe), np.nan),
             # lof_p is filled in by _lack_of_fit_p, in one vectorised call over all hypotheses.
             "_df_lof": df_lof.astype(float), "_df_pe": df_pe.astype(float),
+            "_n": n.astype(float), "_df_model_resid": (n - p).astype(float),
         }
 
 

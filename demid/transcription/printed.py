@@ -225,8 +225,12 @@ def _jsonable(value):
 
 
 # A statistic the source computed from numbers it printed rounded: (statistic, printed inputs,
-# value from the inputs and the table's degrees of freedom).  Each function is monotonic in every input,
-# so its range over the inputs' rounding intervals is spanned by the corners.
+# value from the inputs and the table's degrees of freedom, how the inputs are read).  "interval": any
+# value of the inputs within their rounding (F, p and R² from sums a source rounded less than it printed:
+# Montgomery's p = 0.2897); each function is monotonic in every input, so the range is spanned by the
+# corners.  "as printed": the printed inputs themselves (adjusted R², residual SD, RMSE): over the
+# rounding interval of the sums, a root or an n-1/n-p scaling spans ten times their printed precision
+# and would excuse a real slip in a table cell.
 def _f_ratio(ss_a, ss_b, df_a, df_b):
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where((df_a > 0) & (df_b > 0) & (ss_b > 0), (ss_a / df_a) / (ss_b / df_b), np.nan)
@@ -240,14 +244,30 @@ def _f_tail(f, df_a, df_b):
                         np.nan)
 
 
+def _adjusted_r2(ss_residual, ss_total, v):
+    df, n = v["_df_model_resid"], v["_n"]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where((df > 0) & (n > 1) & (ss_total > 0), 1.0 - (ss_residual / df) / (ss_total / (n - 1)), np.nan)
+
+
+def _root_mean_square(ss_residual, df):
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where((df > 0) & (ss_residual >= 0), np.sqrt(np.maximum(ss_residual, 0.0) / df), np.nan)
+
+
 _FROM_PRINTED = (
-    ("lof_f", ("ss_lof", "ss_pure_error"), lambda a, b, v: _f_ratio(a, b, v["_df_lof"], v["_df_pe"])),
-    ("lof_p", ("lof_f",), lambda f, v: _f_tail(f, v["_df_lof"], v["_df_pe"])),
+    ("lof_f", ("ss_lof", "ss_pure_error"), lambda a, b, v: _f_ratio(a, b, v["_df_lof"], v["_df_pe"]), "interval"),
+    ("lof_p", ("lof_f",), lambda f, v: _f_tail(f, v["_df_lof"], v["_df_pe"]), "interval"),
     ("lof_p", ("ss_lof", "ss_pure_error"),
-     lambda a, b, v: _f_tail(_f_ratio(a, b, v["_df_lof"], v["_df_pe"]), v["_df_lof"], v["_df_pe"])),
-    ("r2", ("ss_model", "ss_total"), lambda a, b, v: np.full(np.shape(v["_df_pe"]), a / b if b > 0 else np.nan)),
+     lambda a, b, v: _f_tail(_f_ratio(a, b, v["_df_lof"], v["_df_pe"]), v["_df_lof"], v["_df_pe"]), "interval"),
+    ("r2", ("ss_model", "ss_total"), lambda a, b, v: np.full(np.shape(v["_df_pe"]), a / b if b > 0 else np.nan),
+     "interval"),
     ("r2", ("ss_residual", "ss_total"),
-     lambda a, b, v: np.full(np.shape(v["_df_pe"]), 1.0 - a / b if b > 0 else np.nan)),
+     lambda a, b, v: np.full(np.shape(v["_df_pe"]), 1.0 - a / b if b > 0 else np.nan), "interval"),
+    ("adj_r2", ("ss_residual", "ss_total"), _adjusted_r2, "as printed"),
+    ("adj_r2", ("ss_model", "ss_total"), lambda a, b, v: _adjusted_r2(b - a, b, v), "as printed"),
+    ("resid_std", ("ss_residual",), lambda a, v: _root_mean_square(a, v["_df_model_resid"]), "as printed"),
+    ("rmse", ("ss_residual",), lambda a, v: _root_mean_square(a, v["_n"]), "as printed"),
 )
 
 
@@ -258,13 +278,14 @@ def _agreement(targets: dict[str, PrintedValue], values: dict[str, np.ndarray]) 
     that agree only through their printed inputs, for any hypothesis)."""
     agrees = {name: np.atleast_1d(targets[name].agrees(values[name])) for name in targets}
     via_inputs: set[str] = set()
-    for name, inputs, function in _FROM_PRINTED:
+    for name, inputs, function, reading in _FROM_PRINTED:
         if name not in targets or targets[name].relation != "=" or any(
                 i not in targets or targets[i].relation != "=" for i in inputs):
             continue
         inputs_ok = np.logical_and.reduce([agrees[i] for i in inputs])
-        corners = np.array([function(*[targets[i].value + sign * targets[i].half_width
-                                       for i, sign in zip(inputs, signs)], values)
+        widths = [targets[i].half_width if reading == "interval" else 0.0 for i in inputs]
+        corners = np.array([function(*[targets[i].value + sign * w for i, sign, w in zip(inputs, signs, widths)],
+                                     values)
                             for signs in product((-1.0, 1.0), repeat=len(inputs))], dtype=float)
         lo = np.min(np.where(np.isnan(corners), np.inf, corners), axis=0)
         hi = np.max(np.where(np.isnan(corners), -np.inf, corners), axis=0)
