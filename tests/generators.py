@@ -24,7 +24,7 @@ optionally one target shifted by a multiple of the tolerance.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import pandas as pd
@@ -50,6 +50,7 @@ class Planted:
     run: int | None = None
     factor: str | None = None
     runs: tuple[int, ...] = ()  # every run a ``slip`` defect touched
+    signal: tuple[float, ...] = ()  # the defect's noise-free shift of the mean, per table row (off-catalogue)
 
 
 def design(n_factors: int, alpha: float | None = None, replicates: int = 1
@@ -245,4 +246,6 @@ def off_catalogue_table(seed: int, n_factors: int = 2, kind: str = "slip", size:
     table = pd.DataFrame(actual, columns=factors)
     table.insert(0, "run", run_of_row)
     table[response] = y
-    return table.sort_values("run").reset_index(drop=True), planted
+    order = np.argsort(run_of_row)
+    signal = (mean - model_matrix(coded, terms) @ coef + extra)[order]
+    return table.iloc[order].reset_index(drop=True), replace(planted, signal=tuple(float(v) for v in signal))
