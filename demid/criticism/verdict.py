@@ -214,7 +214,7 @@ def unpredictable_runs_message(fit: SurrogateFit) -> str:
         return ""
     which = f"Run {runs[0]} alone fixes" if len(runs) == 1 else f"Runs {', '.join(map(str, runs))} alone fix"
     return (f" {which} the quadratic at {'its point' if len(runs) == 1 else 'their points'} (leverage "
-            f"{float(np.max(fit.hat_diag[fit.fitted_exactly])):.4f}; a lone centre run does): the fit is not checked "
+            f"{float(np.max(fit.hat_diag[fit.fitted_exactly])):.6g}; a lone centre run does): the fit is not checked "
             f"there and Q² is undefined; a replicate of {'that run' if len(runs) == 1 else 'those runs'} would check it.")
 
 
