@@ -18,7 +18,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .design import Coding, classify_points, model_matrix, model_units, nominal_levels, quadratic_terms, term_name
+from .design import (Coding, classify_points, model_matrix, model_units, nominal_levels, quadratic_terms,
+                     rotatable_alpha, term_name)
 from .errors import InputError
 from .spec import as_spec
 
@@ -295,7 +296,10 @@ def _ccd_alpha_of_table(table: pd.DataFrame, factors: list[str], log_factors=())
         ratios.append(spread / inner)
     if max(ratios) - min(ratios) > 1e-3 * max(ratios):
         return None
-    return float(np.mean(ratios))
+    shown = float(np.mean(ratios))
+    # Printed (rounded) levels blur the design's own value: 1.41432 from levels printed to 4 decimals.
+    rotatable = rotatable_alpha(len(factors))
+    return round(rotatable, 5) if abs(shown - rotatable) <= 1e-3 * rotatable else shown
 
 
 def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str, config_key: str | None,

@@ -623,3 +623,15 @@ def test_a_repeated_key_in_the_config_is_refused_with_both_lines(tmp_path):
     with pytest.raises(InputError, match=r"c\.yaml: line \d+: key '(grid_points|results_dir)' is given twice in one "
                                          r"mapping \(first at line \d+\)"):
         load_config(path, base_dir=REPO)
+
+
+def test_a_wrong_alpha_on_a_table_printed_to_four_decimals_gets_the_rotatable_value(tmp_path):
+    cfg, _, _, _ = _write_design(tmp_path, ccd_points(2, 1.41421, 3), [0.1, 1.0], [0.9, 100.0],
+                                 {"type": "ccd", "alpha": 1.682, "center_runs": 3})
+    path = Path(cfg["data"])
+    lines = path.read_text().splitlines()
+    rounded = [lines[0]] + [",".join([c.split(",")[0]] + [f"{float(v):.4f}" for v in c.split(",")[1:]])
+                            for c in lines[1:]]
+    path.write_text("\n".join(rounded) + "\n")
+    with pytest.raises(InputError, match=r"alpha = 1\.41421 .*not the declared 1\.682; set design\.alpha: 1\.41421$"):
+        validate_material("m", cfg)
