@@ -323,10 +323,12 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
 def _check_published_ranges(key: str, responses: dict, source: str) -> None:
     """A published R² of 1.5 cannot be what the source printed: a slip (often a percentage) stops here."""
     for rname, resp in responses.items():
-        for stat, raw in (resp.get("published") or {}).items():
-            where = f"config key {key}.responses.{rname}.published.{stat}"
-            from .transcription.printed import impossible_published  # only where a study gives published statistics
+        if not resp.get("published"):
+            continue
+        from .transcription.printed import impossible_published  # pandas: only where a study gives statistics
 
+        for stat, raw in resp["published"].items():
+            where = f"config key {key}.responses.{rname}.published.{stat}"
             why = impossible_published(stat, raw, where=f"{source}: {where}")
             if why:
                 raise InputError(f"{where}: {why}", source=source)
