@@ -313,8 +313,9 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
         shown = _ccd_alpha_of_table(table, factors, log_factors) if design["type"] == "ccd" else None
         declared = float(design.get("alpha", 1.0))
         # A wrong design.alpha puts every axial run off its level: name the key, not the first such cell.
+        # Counts are not required of the probe: a wrong centre-run count is said once alpha is right.
         if shown is None or abs(shown - declared) <= 1e-3 * shown or not _passes(
-                table, factors, {**design, "alpha": shown}, *args[3:]):
+                table, factors, {**design, "alpha": shown}, src, config_key, log_factors, level_tol, False):
             raise error
     geometry = ("the axial runs sit on the faces, at the factorial levels" if abs(shown - 1) < 1e-3 else
                 f"in every factor the axial levels lie {shown:.6g} times as far from the centre as the factorial ones")

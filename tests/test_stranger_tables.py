@@ -635,3 +635,13 @@ def test_a_wrong_alpha_on_a_table_printed_to_four_decimals_gets_the_rotatable_va
     path.write_text("\n".join(rounded) + "\n")
     with pytest.raises(InputError, match=r"alpha = 1\.41421 .*not the declared 1\.682; set design\.alpha: 1\.41421$"):
         validate_material("m", cfg)
+
+
+def test_a_wrong_alpha_is_named_before_a_wrong_centre_run_count(tmp_path):
+    cfg, _, _, _ = _write_design(tmp_path, ccd_points(2, 1.41421, 3), [0.1, 0.1], [0.9, 0.9],
+                                 {"type": "ccd", "alpha": 1.682, "center_runs": 5})
+    with pytest.raises(InputError, match=r"design\.alpha: the runs form a CCD with alpha = 1\.41421"):
+        validate_material("m", cfg)
+    cfg["design"]["alpha"] = 1.41421
+    with pytest.raises(InputError, match=r"expected 5 center run\(s\) .* found 3"):
+        validate_material("m", cfg)
