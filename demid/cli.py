@@ -30,6 +30,11 @@ def _alpha(table, factors, alpha, design="ccd"):
     """Axial distance: given; 1 for designs without axial points; for a CCD inferred as
     (max level distance) / (factorial level distance)."""
     if alpha is not None:
+        if design != "ccd":
+            raise InputError(f"--alpha: only a ccd design has an axial distance, not --design {design}; leave "
+                             "--alpha out")
+        if not alpha >= 1:
+            raise InputError(f"--alpha: a CCD's axial distance is at least 1 (1 is face-centred), found {alpha:g}")
         return alpha
     if design != "ccd":
         return 1.0

@@ -115,3 +115,31 @@ def test_check_transcription_cli_refuses_an_impossible_repeated_or_unknown_stati
                 "--published", published, "--out", str(out))
     assert proc.returncode == 2 and re.search(message, proc.stderr), proc.stderr
     assert proc.stderr.count("\n") == 1 and not out.exists()
+
+
+@pytest.mark.parametrize("extra, message", [
+    (["--alpha", "-1"], r"--alpha: a CCD's axial distance is at least 1 \(1 is face-centred\), found -1"),
+    (["--alpha", "0"], r"--alpha: a CCD's axial distance is at least 1"),
+    (["--alpha", "1.5", "--design", "box_behnken"], r"--alpha: only a ccd design has an axial distance"),
+])
+def test_fit_refuses_an_impossible_or_misplaced_alpha(tmp_path, extra, message):
+    import re
+
+    from .test_surrogate import MONTGOMERY
+
+    path = tmp_path / "m.csv"
+    MONTGOMERY.to_csv(path, index=False)
+    proc = _run("fit", "--data", str(path), "--factors", "x1,x2", "--responses", "y", *extra,
+                "--out", str(tmp_path / "o.json"))
+    assert proc.returncode == 2 and re.search(message, proc.stderr), proc.stderr
+    assert "Traceback" not in proc.stderr and not (tmp_path / "o.json").exists()
+
+
+def test_a_negative_published_rmse_is_refused(tmp_path):
+    from .test_surrogate import MONTGOMERY
+
+    path = tmp_path / "m.csv"
+    MONTGOMERY.to_csv(path, index=False)
+    proc = _run("check-transcription", "--data", str(path), "--factors", "x1,x2", "--response", "y",
+                "--published", "rmse=-0.01", "--out", str(tmp_path / "o.json"))
+    assert proc.returncode == 2 and "--published rmse: -0.01 is not a possible RMSE (it cannot be negative)" in proc.stderr

@@ -30,7 +30,12 @@ _MISFIT_CAP = 1e6  # distance charged for a statistic that cannot be reproduced 
 #: Published statistics with a bounded range: (lowest, highest, name).  R² of a least-squares fit with an
 #: intercept and a p-value lie in [0, 1]; adjusted R² and Q² can be negative but never exceed 1.
 _PUBLISHED_RANGES = {"r2": (0.0, 1.0, "R²"), "adj_r2": (-np.inf, 1.0, "adjusted R²"), "q2": (-np.inf, 1.0, "Q²"),
-                     "lof_p": (0.0, 1.0, "lack-of-fit p-value")}
+                     "lof_p": (0.0, 1.0, "lack-of-fit p-value"),
+                     **{stat: (0.0, np.inf, name) for stat, name in (
+                         ("rmse", "RMSE"), ("resid_std", "residual standard deviation"), ("lof_f", "lack-of-fit F"),
+                         ("ss_model", "model sum of squares"), ("ss_residual", "residual sum of squares"),
+                         ("ss_lof", "lack-of-fit sum of squares"), ("ss_pure_error", "pure-error sum of squares"),
+                         ("ss_total", "total sum of squares"))}}
 
 
 # --------------------------------------------------------------------------- printed values
@@ -333,4 +338,5 @@ def impossible_published(stat: str, raw, *, where: str) -> str:
     if low <= value <= high:
         return ""
     hint = f"; written in percent? {value:g} % is {value / 100:g}" if 1 < value <= 100 else ""
-    return f"{raw} is not a possible {name} (it lies between {low:g} and {high:g}){hint}"
+    bounds = "it cannot be negative" if np.isinf(high) else f"it lies between {low:g} and {high:g}"
+    return f"{raw} is not a possible {name} ({bounds}){hint}"
