@@ -186,8 +186,9 @@ _RELATIVE_TO = ("paths in the config are relative to the folder the pipeline run
                 "to the config's own folder for python -m demid validate")
 
 
-def _check_published_file(published: str, base_dir: Path, source: str) -> None:
-    """The published-values file must exist and hold a YAML mapping, before any job is scheduled."""
+def _check_published_file(published: str, base_dir: Path, source: str, materials: dict) -> None:
+    """The published-values file must exist and hold the published numbers of this study's materials,
+    responses, scenarios and factors (demid.published_values), before any job is scheduled."""
     if not published:
         return
     path = base_dir / published
@@ -201,6 +202,9 @@ def _check_published_file(published: str, base_dir: Path, source: str) -> None:
     if not isinstance(content, dict):
         raise InputError(f"config key published: '{published}' must hold a mapping (material -> published "
                          "numbers)", source=source)
+    from .published_values import check_published_values
+
+    check_published_values(content, materials, f"config key published: {published}")
 
 
 class _UniqueKeyLoader(yaml.SafeLoader):
@@ -242,7 +246,7 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
     base_dir = Path(base_dir)
     _check_results_dir(config, source)
     _check_grid_sizes(config, source)
-    _check_published_file(config.get("published") or "", base_dir, source)
+    _check_published_file(config.get("published") or "", base_dir, source, config["materials"])
     _check_labels(config, source)
     materials = config["materials"]
     smoke = config.get("smoke_material") or ""
