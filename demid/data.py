@@ -285,16 +285,23 @@ def _ccd_alpha_of_table(table: pd.DataFrame, factors: list[str], log_factors=())
     a CCD, symmetric about the centre, with one ratio of axial to factorial half-range; else None."""
     z = model_units(table[factors].to_numpy(), factors, log_factors)
     ratios = []
+    off_centre = np.zeros(z.shape, dtype=bool)
     for i in range(len(factors)):
         values = np.unique(np.round(z[:, i], 9))
         if len(values) not in (3, 5):
             return None
         spread = values[-1] - values[0]
-        if not spread > 0 or abs(values[0] + values[-1] - 2 * values[len(values) // 2]) > 1e-3 * spread:
+        centre = values[len(values) // 2]
+        if not spread > 0 or abs(values[0] + values[-1] - 2 * centre) > 1e-3 * spread:
             return None
         inner = values[3] - values[1] if len(values) == 5 else spread
         ratios.append(spread / inner)
+        off_centre[:, i] = np.abs(z[:, i] - centre) > 1e-3 * spread
     if max(ratios) - min(ratios) > 1e-3 * max(ratios):
+        return None
+    # Three levels per factor without a run off the centre in one factor alone are a two-level factorial
+    # with centre runs, not a face-centred CCD: no alpha would make them a CCD.
+    if not np.any(off_centre.sum(axis=1) == 1):
         return None
     shown = float(np.mean(ratios))
     # Printed (rounded) levels blur the design's own value: 1.41432 from levels printed to 4 decimals.
@@ -367,11 +374,16 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
         expected = {"factorial": 2 ** k, "axial": 2 * k,
                     "center": int(design.get("center_runs", 0))}
         found = {t: int(np.sum(types == t)) for t in expected}
+        if found["axial"] == 0:
+            raise InputError(f"config key {config_key}.design: the table has no axial runs: its runs are a two-level "
+                             f"factorial with {found['center']} centre run(s), on which the squared terms of the "
+                             f"quadratic cannot be estimated; add the {2 * k} axial runs of a CCD, or run the 3^{k} "
+                             f"factorial (design type factorial)", source=src)
         for t, n in expected.items():
             if found[t] != n:
-                raise InputError(f"config key {config_key}.design: expected {n} {t} run(s) for a {k}-factor CCD "
-                                 f"with {design.get('center_runs', 0)} centre runs, found {found[t]} "
-                                 f"({len(table)} runs in the table)", source=src)
+                key, what = ("design.center_runs", "") if t == "center" else ("design", f" with {n_center_text(design)}")
+                raise InputError(f"config key {config_key}.{key}: expected {n} {_POINT_WORDS[t]} run(s) for a "
+                                 f"{k}-factor CCD{what}, found {found[t]} ({len(table)} runs in the table)", source=src)
     elif dtype == "factorial":
         n_center = int(np.sum(types == "center"))
         if n_center != int(design.get("center_runs", 0)):
@@ -383,6 +395,11 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
             raise InputError(f"config key {config_key}.design.center_runs: expected "
                              f"{design.get('center_runs', 0)} centre runs, found {n_center}", source=src)
     return coding, types
+
+
+def n_center_text(design: dict) -> str:
+    n = int(design.get("center_runs", 0))
+    return f"{n} centre run{'s' if n != 1 else ''}"
 
 
 _DESIGN_POINTS = {"ccd": ("factorial", "axial", "center"), "box_behnken": ("edge", "center")}

@@ -633,5 +633,16 @@ def test_a_wrong_alpha_is_named_before_a_wrong_centre_run_count(tmp_path):
     with pytest.raises(InputError, match=r"design\.alpha: the runs form a CCD with alpha = 1\.41421"):
         validate_material("m", cfg)
     cfg["design"]["alpha"] = 1.41421
-    with pytest.raises(InputError, match=r"expected 5 center run\(s\) .* found 3"):
+    with pytest.raises(InputError, match=r"design\.center_runs: expected 5 centre run\(s\) .* found 3"):
+        validate_material("m", cfg)
+
+
+@pytest.mark.parametrize("k, declared", [(2, 1.41421), (3, 1.68179), (3, 1.0)])
+def test_a_two_level_factorial_declared_a_ccd_is_told_it_has_no_axial_runs(tmp_path, k, declared):
+    # Three levels per factor look like a face-centred CCD, but no alpha makes corners and centres a CCD.
+    coded = np.vstack([_full_factorial(k, [-1, 1]), np.zeros((4, k))])
+    cfg, _, _, _ = _write_design(tmp_path, coded, [0.1] * k, [0.9] * k,
+                                 {"type": "ccd", "alpha": declared, "center_runs": 4})
+    with pytest.raises(InputError, match=rf"config key materials\.m\.design: the table has no axial runs: its runs "
+                                         rf"are a two-level factorial with 4 centre run\(s\).*3\^{k} factorial"):
         validate_material("m", cfg)
