@@ -78,7 +78,7 @@ def test_failed_centre_runs_report_lost_pure_error(table_path):
 def test_wrong_centre_run_count_names_config_key(table_path):
     cfg = _material(table_path)
     cfg["design"]["center_runs"] = 4
-    with pytest.raises(InputError, match=r"materials\.m\.design: expected 4 center run"):
+    with pytest.raises(InputError, match=r"materials\.m\.design\.center_runs: expected 4 centre run"):
         validate_material("m", cfg)
 
 
