@@ -44,25 +44,27 @@ def _alpha(table, factors, alpha, design="ccd"):
     return float(abs(coding.to_coded(table[factors].to_numpy(dtype=float))).max())
 
 
-def _check_structure(table, factors, design, alpha, source):
-    """The table must be the declared design: every cell on one of its levels, every run one of its points
-    (run counts are not checked: a table may leave out failed runs)."""
-    if design == "custom":
-        return
+def _design_coding(table, factors, design, alpha, source):
+    """The coding of the table's runs, checked once: the declared design's levels (every cell on one of
+    them, every run one of its points; run counts are not checked, a table may leave out failed runs), from
+    the design's geometry, so a left-out run does not move the centre; a custom design is coded from its
+    extremes.  The fit, the rank check and the criticism all use it."""
     from .data import check_design
+    from .design import Coding
 
-    check_design(table, factors, {"type": design, "alpha": alpha}, source, None, counts=False)
+    if design == "custom":
+        x = table[factors].to_numpy(dtype=float)
+        return Coding.from_levels(factors, x, alpha)
+    return check_design(table, factors, {"type": design, "alpha": alpha}, source, None, counts=False)[0]
 
 
-def _require_estimable(table, factors, response, alpha, source):
+def _require_estimable(table, factors, response, coding, source):
     """Refuse a saturated or rank-deficient quadratic: its R² is 1 or arbitrary, its residuals meaningless."""
     import numpy as np
 
     from .data import require_estimable
-    from .design import Coding
 
-    x = table[factors].to_numpy(dtype=float)
-    coded = Coding.from_levels(factors, x, alpha).to_coded(x)
+    coded = coding.to_coded(table[factors].to_numpy(dtype=float))
     require_estimable(coded, np.isfinite(table[response].to_numpy(dtype=float)), None, source, response, factors)
 
 
@@ -73,11 +75,11 @@ def cmd_fit(args) -> int:
     factors, responses = _split(args.factors), _split(args.responses)
     table = _load_table(args.data, factors, responses)
     alpha = _alpha(table, factors, args.alpha, args.design)
-    _check_structure(table, factors, args.design, alpha, args.data)
+    coding = _design_coding(table, factors, args.design, alpha, args.data)
     out = {}
     for r in responses:
-        _require_estimable(table, factors, r, alpha, args.data)
-        fit = fit_response(table, factors, r, alpha=alpha)
+        _require_estimable(table, factors, r, coding, args.data)
+        fit = fit_response(table, factors, r, alpha=alpha, coding=coding)
         st = fit.statistics()
         coef = fit.coefficients()
         out[r] = {
@@ -142,14 +144,15 @@ def _run_order_note(vt, name: str, mat: dict) -> str:
 def cmd_criticize(args) -> int:
     from .criticism import criticize
     from .io import write_json
+    from .surrogate import fit_response
 
     factors = _split(args.factors)
     table = _load_table(args.data, factors, [args.response])
-    coding_alpha = _alpha(table, factors, args.alpha, args.design)
-    _check_structure(table, factors, args.design, coding_alpha, args.data)
-    _require_estimable(table, factors, args.response, coding_alpha, args.data)
-    alpha = args.alpha if args.alpha is not None or args.design == "ccd" else 1.0  # None: criticize infers it
-    result = criticize(table, factors, args.response, alpha=alpha, run_order=args.run_order)
+    alpha = _alpha(table, factors, args.alpha, args.design)
+    coding = _design_coding(table, factors, args.design, alpha, args.data)
+    _require_estimable(table, factors, args.response, coding, args.data)
+    fit = fit_response(table, factors, args.response, alpha=alpha, coding=coding)
+    result = criticize(table, factors, args.response, alpha=alpha, run_order=args.run_order, fit=fit)
     write_json(result.to_json(), args.out)
     return 0
 

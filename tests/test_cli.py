@@ -3,11 +3,14 @@
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 import statsmodels.api as sm
 
 from demid.design import model_matrix, quadratic_terms
+
+ROOT = Path(__file__).resolve().parents[1]
 
 
 def _run(*args, cwd=None):
@@ -143,3 +146,37 @@ def test_a_negative_published_rmse_is_refused(tmp_path):
     proc = _run("check-transcription", "--data", str(path), "--factors", "x1,x2", "--response", "y",
                 "--published", "rmse=-0.01", "--out", str(tmp_path / "o.json"))
     assert proc.returncode == 2 and "--published rmse: -0.01 is not a possible RMSE (it cannot be negative)" in proc.stderr
+
+
+@pytest.mark.parametrize("left_out", [13, 5])  # an axial run of e, an axial run of mu_r
+def test_fit_and_criticize_code_a_table_with_a_run_left_out_as_the_whole_design(tmp_path, left_out):
+    """A failed run left out must not move the coding: the coded coefficients are those of the same runs in
+    the design's own coding (the centre and factorial half-ranges of the full CCD), exactly as validation
+    codes them, and criticism reports the same quadratic."""
+    import numpy as np
+    import pandas as pd
+
+    from demid.data import infer_coding
+
+    source = pd.read_csv(ROOT / "data" / "ccd" / "poraver.csv")
+    design = {"type": "ccd", "alpha": 1.41421}
+    coding = infer_coding(source, ["e", "mu_r"], design, "poraver.csv")
+    table = source[source["run"] != left_out]
+    path = tmp_path / "left_out.csv"
+    table.to_csv(path, index=False)
+    coded = coding.to_coded(table[["e", "mu_r"]].to_numpy(dtype=float))
+    ref = sm.OLS(table["aor"].to_numpy(), model_matrix(coded, quadratic_terms(2))).fit()
+    out = tmp_path / "fit.json"
+    proc = _run("fit", "--data", str(path), "--factors", "e,mu_r", "--responses", "aor", "--design", "ccd",
+                "--out", str(out))
+    assert proc.returncode == 0, proc.stderr
+    got = json.loads(out.read_text())["aor"]["coefficients_coded"]
+    names = ["Intercept", "e", "mu_r", "e:mu_r", "e^2", "mu_r^2"]
+    assert [got[n] for n in names] == pytest.approx(ref.params.tolist(), rel=1e-6)
+    assert not np.allclose(coding.to_coded(table[["e", "mu_r"]].to_numpy(dtype=float)).mean(axis=0), 0)  # premise
+    out = tmp_path / "crit.json"
+    proc = _run("criticize", "--data", str(path), "--factors", "e,mu_r", "--response", "aor", "--design", "ccd",
+                "--out", str(out))
+    assert proc.returncode == 0, proc.stderr
+    fitted = {r["run"]: r["fitted"] for r in json.loads(out.read_text())["runs"]}
+    assert [fitted[r] for r in table["run"]] == pytest.approx(ref.fittedvalues.tolist(), rel=1e-9)
