@@ -246,7 +246,6 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
     base_dir = Path(base_dir)
     _check_results_dir(config, source)
     _check_grid_sizes(config, source)
-    _check_published_file(config.get("published") or "", base_dir, source, config["materials"])
     _check_labels(config, source)
     materials = config["materials"]
     smoke = config.get("smoke_material") or ""
@@ -322,6 +321,8 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
             raise InputError(f"config key {key}.design.alpha: a CCD needs alpha >= 1", source=source)
         _check_published_ranges(key, responses, source)
         _check_scenario_labels(key, mat.get("scenarios") or {}, source)
+    # After the materials: the published numbers are checked against their names.
+    _check_published_file(config.get("published") or "", base_dir, source, config["materials"])
 
 
 def _check_published_ranges(key: str, responses: dict, source: str) -> None:

@@ -27,6 +27,11 @@ def _closest(name: str, known) -> str:
     return f" (known: {', '.join(known) or 'none'})"
 
 
+def _names(mat: dict, key: str):
+    """The config material's responses, scenarios or factors; None for another study's material."""
+    return (mat.get(key) or {}) if mat else None
+
+
 def _key(path: list) -> str:
     """Key path as written in YAML; list items counted from 1 (contractions (item 2).factor)."""
     text = ""
@@ -45,12 +50,16 @@ class _Checker:
         raise InputError(f"{self.where}, key {key}: {message}" if key else f"{self.where}: {message}")
 
     def name(self, path: list, value, known, what: str) -> None:
+        if known is None:  # another study's material: not checked
+            return
         if value not in known:
             self.fail(path, f"'{value}' is not a {what}{_closest(value, list(known))}")
 
     def material(self, path: list, name) -> dict:
-        self.name(path, name, self.materials, "material of the config")
-        return self.materials[name]
+        """The config's material, or {} for another study's material (its entries are not compared)."""
+        if name not in self.materials and difflib.get_close_matches(str(name), list(self.materials), 1, 0.8):
+            self.name(path, name, self.materials, "material of the config")  # a likely typo
+        return self.materials.get(name, {})
 
     def number(self, path: list, raw, low: float = -math.inf, high: float = math.inf, what: str = "value",
                percent: bool = False) -> float:
@@ -103,22 +112,24 @@ def _schema_error(content: dict, where: str) -> None:
 def check_published_values(content: dict, materials: dict, where: str) -> None:
     """Raise :class:`InputError` (naming ``where`` and the key) at the first slip in a published-values file.
 
-    ``materials`` is the validated config's ``materials`` mapping."""
+    ``materials`` is the validated config's ``materials`` mapping.  A material the config does not study
+    (a file shared by several studies, a config for one material) is left out, unless its name is a
+    likely typo of one the config studies."""
     _schema_error(content, where)
     c = _Checker(materials, where)
     for m, by_name in (content.get("targets") or {}).items():
         mat = c.material(["targets", m], m)
         for r in by_name:
-            c.name(["targets", m, r], r, mat["responses"], f"response of {m}")
+            c.name(["targets", m, r], r, _names(mat, "responses"), f"response of {m}")
     for m, by_scenario in (content.get("tolerances") or {}).items():
         mat = c.material(["tolerances", m], m)
         for s, eps in by_scenario.items():
-            c.name(["tolerances", m, s], s, mat.get("scenarios") or {}, f"scenario of {m}")
+            c.name(["tolerances", m, s], s, _names(mat, "scenarios"), f"scenario of {m}")
             c.number(["tolerances", m, s], eps, 0, 1, "relative tolerance", percent=True)
     for m, by_response in (content.get("table2") or {}).items():
         mat = c.material(["table2", m], m)
         for r, stats in by_response.items():
-            c.name(["table2", m, r], r, mat["responses"], f"response of {m}")
+            c.name(["table2", m, r], r, _names(mat, "responses"), f"response of {m}")
             if "r2" in stats:
                 c.number(["table2", m, r, "r2"], stats["r2"], 0, 1, "R²", percent=True)
             if "rmse" in stats:
@@ -131,16 +142,16 @@ def check_published_values(content: dict, materials: dict, where: str) -> None:
         path = ["contractions", i]
         mat = c.material(path + ["material"], item["material"])
         for end in ("from", "to"):
-            c.name(path + [end], item[end], mat.get("scenarios") or {}, f"scenario of {item['material']}")
+            c.name(path + [end], item[end], _names(mat, "scenarios"), f"scenario of {item['material']}")
         if item["quantity"] == "width":
             if "factor" not in item:
                 c.fail(path, "a width contraction needs factor: (whose width)")
-            c.name(path + ["factor"], item["factor"], mat["factors"], f"factor of {item['material']}")
+            c.name(path + ["factor"], item["factor"], _names(mat, "factors"), f"factor of {item['material']}")
         c.number(path + ["value"], item["value"], -100, math.inf, "contraction in %")
     for m, by_scenario in (content.get("intervals") or {}).items():
         mat = c.material(["intervals", m], m)
         for s, by_factor in by_scenario.items():
-            c.name(["intervals", m, s], s, mat.get("scenarios") or {}, f"scenario of {m}")
+            c.name(["intervals", m, s], s, _names(mat, "scenarios"), f"scenario of {m}")
             _check_intervals(c, ["intervals", m, s], mat, m, by_factor)
     for m, by_factor in (content.get("search_domain") or {}).items():
         _check_intervals(c, ["search_domain", m], c.material(["search_domain", m], m), m, by_factor)
@@ -150,7 +161,7 @@ def check_published_values(content: dict, materials: dict, where: str) -> None:
         for s, entry in by_scenario.items():
             _check_set(c, ["scenario_sets", m, s], mat, m, s, entry)
             for f in entry.get("unresolved") or []:
-                c.name(["scenario_sets", m, s, "unresolved"], f, mat["factors"], f"factor of {m}")
+                c.name(["scenario_sets", m, s, "unresolved"], f, _names(mat, "factors"), f"factor of {m}")
                 if f not in domain:
                     c.fail(["scenario_sets", m, s, "unresolved"], f"'{f}' unresolved over its search range needs "
                                                                    f"search_domain.{m}.{f}: [lower, upper]")
@@ -161,21 +172,36 @@ def check_published_values(content: dict, materials: dict, where: str) -> None:
     for m, point in (content.get("reference_points") or {}).items():
         mat = c.material(["reference_points", m], m)
         for f in point:
-            c.name(["reference_points", m, f], f, mat["factors"], f"factor of {m}")
+            c.name(["reference_points", m, f], f, _names(mat, "factors"), f"factor of {m}")
 
 
 def _check_set(c: _Checker, path: list, mat: dict, m: str, s: str, entry: dict) -> None:
-    c.name(path, s, mat.get("scenarios") or {}, f"scenario of {m}")
+    c.name(path, s, _names(mat, "scenarios"), f"scenario of {m}")
     if "feasible_fraction_pct" in entry:
         c.number(path + ["feasible_fraction_pct"], entry["feasible_fraction_pct"], 0, 100, "feasible fraction in %")
     for group in ("width", "upper", "lower"):
         for f, value in (entry.get(group) or {}).items():
-            c.name(path + [group, f], f, mat["factors"], f"factor of {m}")
+            c.name(path + [group, f], f, _names(mat, "factors"), f"factor of {m}")
             if group == "width":
                 c.number(path + [group, f], value, 0, what="width")
 
 
 def _check_intervals(c: _Checker, path: list, mat: dict, m: str, by_factor: dict) -> None:
     for f, pair in by_factor.items():
-        c.name(path + [f], f, mat["factors"], f"factor of {m}")
+        c.name(path + [f], f, _names(mat, "factors"), f"factor of {m}")
         c.interval(path + [f], pair)
+
+
+def for_materials(content: dict, materials) -> dict:
+    """The published numbers of the studied ``materials`` only (what the paper comparison holds against the
+    reproduction): the per-material sections and the contractions filtered, the rest kept."""
+    keep = set(materials)
+    out = {}
+    for key, value in content.items():
+        if key == "contractions":
+            out[key] = [item for item in value or [] if item.get("material") in keep]
+        elif key in ("source", "provenance"):
+            out[key] = value
+        else:
+            out[key] = {m: entry for m, entry in (value or {}).items() if m in keep}
+    return out

@@ -21,9 +21,10 @@ if "paper_comparison" in out.keys():
 
     from demid.config import load_yaml
     from demid.paper import paper_comparison
+    from demid.published_values import for_materials
     from demid.report import pareto_intervals
 
-    published = load_yaml(inp.published)
+    published = for_materials(load_yaml(inp.published), params.materials)
     intervals = {m: pareto_intervals(p) for m, p in zip(params.pareto_materials, inp.pareto)}
     # compared as written: the tables a reader sees, rounded as they are
     table = paper_comparison(published, pd.read_csv(out.surrogate_fit), pd.read_csv(out.identifiability), intervals)

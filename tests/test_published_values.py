@@ -78,3 +78,22 @@ def test_the_cli_says_it_in_one_line(study):
     lines = done.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("demid: error:") and "table2.paste.D.rmse" in lines[0]
     assert "Traceback" not in done.stderr
+
+
+def test_another_studys_material_is_left_out_and_not_compared(study):
+    """A published file shared by several studies (or a config for one material) is fine: the materials the
+    config does not study are neither checked nor compared, unless the name is a likely typo."""
+    import yaml
+
+    from demid.config import load_yaml
+    from demid.published_values import for_materials
+
+    config = yaml.safe_load((study / "config.yaml").read_text(encoding="utf-8"))
+    config["materials"] = {"mortar": config["materials"]["mortar"]}
+    config["smoke_material"] = "mortar"
+    (study / "one.yaml").write_text(yaml.safe_dump(config), encoding="utf-8")
+    load_config(study / "one.yaml", base_dir=study)
+    published = for_materials(load_yaml(study / "data" / "published.yaml"), ["mortar"])
+    assert set(published["table2"]) == {"mortar"} and set(published["table3"]) == {"mortar"}
+    assert published["contractions"] and {c["material"] for c in published["contractions"]} == {"mortar"}
+    assert published["provenance"] and not published["pareto"]
