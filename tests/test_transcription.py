@@ -425,3 +425,21 @@ def test_a_slip_that_a_coarse_statistic_cannot_locate_is_not_called_located(tabl
     located = check_transcription(numeric(mutated), factors, "y", published, alpha=alpha, printed=mutated)
     assert "a single-cell slip explains it" in located.message
     assert (located.suspects[0].run, located.suspects[0].column) == (row + 1, "y")
+
+
+def test_one_published_statistic_matched_by_one_repair_is_a_lead_not_the_slip(tables):
+    """A single published number off by a little is restored by some digit repair somewhere by chance: on
+    a clean table with R² misprinted in its last digits, a lone matching repair is offered as a lead to
+    check, never as "the" slip; two statistics still locate a genuine slip."""
+    printed, factors, alpha, published = tables[2]
+    r2 = fit_response(numeric(printed), factors, "y", alpha=alpha).statistics().r2
+    lone = []
+    for shift in range(1, 40):
+        wrong = {"r2": f"{r2 - shift * 0.0007:.4f}"}  # not the table's R²: no cell is wrong
+        result = check_transcription(numeric(printed), factors, "y", wrong, alpha=alpha, printed=printed)
+        if result.explained and sum(s.restores == 1 for s in result.suspects) == 1:
+            lone.append(result)
+    assert lone, "premise: some misprinted R² is restored by exactly one chance repair"
+    for result in lone:
+        assert "a single-cell slip explains it" not in result.message
+        assert "chance match among the" in result.message and "check that cell against the source" in result.message

@@ -208,7 +208,7 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
                         found_text=records[c][2], suggested_text=records[c][4], misfit=float(misfit[c]))
                 for c in chosen]
     if explained:
-        message = _explained_message(response, suspects[0], n_pub, n_agree, full.size)
+        message = _explained_message(response, suspects[0], n_pub, n_agree, full.size, len(records))
     else:
         message = _unexplained_message(response, targets, reproduced, agrees, len(suspects),
                                        int(restores.max()))
@@ -368,10 +368,17 @@ def _printed_slip_message(response: str, slip: dict, n_pub: int, n_agree: int) -
             f"table — check the source's value")
 
 
-def _explained_message(response: str, best: Suspect, n_pub: int, n_agree: int, n_full: int) -> str:
+def _explained_message(response: str, best: Suspect, n_pub: int, n_agree: int, n_full: int,
+                       n_candidates: int) -> str:
     head = f"the table does not reproduce {n_pub - n_agree} of {n_pub} published statistics of '{response}'"
     cell = (f"run {best.run}, column '{best.column}' reads {best.found_text} where {best.suggested_text} restores "
             f"all {n_pub} ({best.kind.replace('_', ' ')})")
+    if n_full == 1 and n_pub == 1:
+        # One number is matched by chance among hundreds of candidate repairs often enough that a lone
+        # match is a lead, not a location.
+        return (f"{head}; one single-cell repair restores it: {cell}; with a single published statistic a "
+                f"chance match among the {n_candidates} repairs tried cannot be ruled out, so check that cell "
+                f"against the source (a second published statistic would confirm or clear it)")
     if n_full == 1:
         return f"{head}; a single-cell slip explains it: {cell}"
     # Many repairs fitting equally is what a published statistic too weak to locate anything looks like:
