@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import re
 import sys
 from pathlib import Path
 
@@ -164,9 +165,14 @@ def _parse_published(text: str) -> dict:
     from .transcription.printed import impossible_published
 
     out = {}
-    for item in _split(text):
+    items = _split(text)
+    for index, item in enumerate(items):
         key, sep, value = (part.strip() for part in item.partition("="))
         if not sep:
+            before = items[index - 1] if index else ""
+            if "=" in before and re.fullmatch(r"\d+", item.strip()) and re.search(r"=\s*[-+]?\d+$", before):
+                raise InputError(f"--published: '{before},{item}' has a decimal comma; write "
+                                 f"{before}.{item} (pairs are separated by commas)")
             raise InputError(f"--published: expected key=value, found '{item}'")
         if key not in STATISTICS:
             close = difflib.get_close_matches(key, STATISTICS, n=1)

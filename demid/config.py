@@ -192,6 +192,9 @@ def _check_published_file(published: str, base_dir: Path, source: str, materials
     if not published:
         return
     path = base_dir / published
+    if path.is_dir():
+        raise InputError(f"config key published: '{published}' is a folder ({path.resolve()}); name the YAML file "
+                         "of published numbers in it", source=source)
     if not path.is_file():
         raise InputError(f"config key published: file '{published}' does not exist (looked for {path.resolve()}; "
                          f"{_RELATIVE_TO})", source=source)

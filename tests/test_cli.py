@@ -104,7 +104,8 @@ def test_check_transcription_cli_reads_bounds_and_percentages_as_the_config_does
     ("lof_p=1.7", r"--published lof_p: 1.7 is not a possible lack-of-fit p-value"),
     ("r2=0.98,r2=0.99", r"--published: 'r2' is given twice \(0.98 and 0.99\)"),
     ("rr2=0.98", r"--published: unknown statistic 'rr2'; did you mean 'r2'\?"),
-    ("lof_f=1,78", r"--published: expected key=value, found '78'"),
+    ("lof_f=1,78", r"--published: 'lof_f=1,78' has a decimal comma; write lof_f=1\.78"),
+    ("r2=0.98,rmse", r"--published: expected key=value, found 'rmse'"),
 ])
 def test_check_transcription_cli_refuses_an_impossible_repeated_or_unknown_statistic(tmp_path, published, message):
     import re

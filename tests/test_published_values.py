@@ -97,3 +97,10 @@ def test_another_studys_material_is_left_out_and_not_compared(study):
     assert set(published["table2"]) == {"mortar"} and set(published["table3"]) == {"mortar"}
     assert published["contractions"] and {c["material"] for c in published["contractions"]} == {"mortar"}
     assert published["provenance"] and not published["pareto"]
+
+
+def test_a_folder_given_as_the_published_file_is_named_a_folder(study):
+    config = (study / "config.yaml").read_text(encoding="utf-8")
+    (study / "config.yaml").write_text(re.sub(r"(?m)^published: .*$", "published: data", config), encoding="utf-8")
+    with pytest.raises(InputError, match=r"config key published: 'data' is a folder .*name the YAML file"):
+        load_config(study / "config.yaml", base_dir=study)
