@@ -317,6 +317,7 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
     try:
         return _check_design(*args)
     except InputError as error:
+        _refuse_wrong_scale(*args)
         shown = _ccd_alpha_of_table(table, factors, log_factors) if design["type"] == "ccd" else None
         declared = float(design.get("alpha", 1.0))
         # A wrong design.alpha puts every axial run off its level: name the key, not the first such cell.
@@ -330,6 +331,25 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
                 ("--alpha", f"pass --alpha {shown:.6g}"))
     raise InputError(f"{key}: the runs form a CCD with alpha = {shown:.6g} ({geometry}), not the declared "
                      f"{declared:g}; {fix}", source=src)
+
+
+def _refuse_wrong_scale(table, factors, design, src, config_key, log_factors, level_tol, counts) -> None:
+    """A factor whose levels are evenly spaced on the other scale (log10 when declared linear, linear when
+    declared log) puts its runs off every level: name its scale key, not the first such cell."""
+    for f in factors:
+        values = table[f].to_numpy(dtype=float)
+        if f in log_factors:
+            flipped, scale = tuple(g for g in log_factors if g != f), "linear"
+        elif np.all(values > 0):
+            flipped, scale = (*log_factors, f), "log"
+        else:
+            continue
+        if _passes(table, factors, design, src, config_key, flipped, level_tol, False):
+            where = f"config key {config_key}.factors.{f}.scale" if config_key else f"factor '{f}'"
+            fix = (f"set scale: {scale}" if scale == "log" else "remove scale: log") if config_key else \
+                "fit it in log10 units" if scale == "log" else "fit it in its own units"
+            raise InputError(f"{where}: the levels of {f} are evenly spaced on a {scale} scale, not the declared "
+                             f"{'log' if scale == 'linear' else 'linear'} one; {fix}", source=src)
 
 
 def _passes(*args) -> bool:

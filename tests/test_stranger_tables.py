@@ -646,3 +646,25 @@ def test_a_two_level_factorial_declared_a_ccd_is_told_it_has_no_axial_runs(tmp_p
     with pytest.raises(InputError, match=rf"config key materials\.m\.design: the table has no axial runs: its runs "
                                          rf"are a two-level factorial with 4 centre run\(s\).*3\^{k} factorial"):
         validate_material("m", cfg)
+
+
+@pytest.mark.parametrize("k, alpha", [(2, 1.41421), (3, 1.68179)])
+def test_a_log_spaced_factor_declared_linear_is_told_its_scale(tmp_path, k, alpha):
+    """Surface energies are often designed in decades: every run of that factor is then off the linear
+    levels, and the scale key is named instead of the first such cell."""
+    cfg, _, _, _ = _write_design(tmp_path, ccd_points(k, alpha, 3), [-3.0] + [0.1] * (k - 1), [-1.0] + [0.9] * (k - 1),
+                                 {"type": "ccd", "alpha": alpha, "center_runs": 3}, seed=k)
+    path = Path(cfg["data"])
+    lines = path.read_text().splitlines()
+    path.write_text("\n".join([lines[0]] + [",".join([c[0], f"{10 ** float(c[1]):.6g}", *c[2:]])
+                                            for c in (ln.split(",") for ln in lines[1:])]) + "\n")
+    cfg["factors"]["x1"] = {"lower": 0.001, "upper": 0.1}
+    with pytest.raises(InputError, match=r"config key materials\.m\.factors\.x1\.scale: the levels of x1 are evenly "
+                                         r"spaced on a log scale, not the declared linear one; set scale: log$"):
+        validate_material("m", cfg)
+    cfg["factors"]["x1"]["scale"] = "log"
+    validate_material("m", cfg)  # the hint validates
+    cfg["factors"]["x2"]["scale"] = "log"  # a linear factor declared log
+    with pytest.raises(InputError, match=r"factors\.x2\.scale: the levels of x2 are evenly spaced on a linear scale, "
+                                         r"not the declared log one; remove scale: log$"):
+        validate_material("m", cfg)
