@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import csv
 import difflib
+import itertools
 import math
 import re
 from itertools import combinations
@@ -405,6 +406,7 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
                 raise InputError(f"config key {config_key}.{key}: expected {n} {_POINT_WORDS[t]} run(s) for a "
                                  f"{k}-factor CCD{what}, found {found[t]} ({len(table)} runs in the table)", source=src)
     elif dtype == "factorial":
+        _refuse_incomplete_factorial(table, factors, snapped, config_key, src)
         n_center = int(np.sum(types == "center"))
         if n_center != int(design.get("center_runs", 0)):
             raise InputError(f"config key {config_key}.design.center_runs: expected "
@@ -420,6 +422,29 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
 def n_center_text(design: dict) -> str:
     n = int(design.get("center_runs", 0))
     return f"{n} centre run{'s' if n != 1 else ''}"
+
+
+def _refuse_incomplete_factorial(table: pd.DataFrame, factors: list[str], snapped: np.ndarray, config_key: str,
+                                 src: str) -> None:
+    """A 3^k factorial has every combination of the three levels.  Runs on a subset of them are another
+    design: a Box-Behnken design (the edge midpoints) is named; a two-level factorial with centre runs is
+    left to the rank check, which says why its squares cannot be fitted."""
+    k = len(factors)
+    present = {tuple(p) for p in np.round(snapped).astype(int).tolist() if any(p)}
+    full = {p for p in itertools.product((-1, 0, 1), repeat=k) if any(p)}
+    missing = sorted(full - present)
+    if not missing or all(0 not in p for p in present):
+        return
+    edges = {p for p in full if sum(v != 0 for v in p) == 2}
+    if present == edges:
+        raise InputError(f"config key {config_key}.design.type: the runs are the edge midpoints of a Box-Behnken "
+                         f"design (two factors at their extremes, the others at the centre), not the 3^{k} "
+                         f"factorial; set design type: box_behnken", source=src)
+    example = ", ".join(f"{f}={v:+d}" for f, v in zip(factors, missing[0]))
+    raise InputError(f"config key {config_key}.design: a 3^{k} factorial has {len(full)} non-centre points, the "
+                     f"table has {len(present)}; missing {len(missing)}, e.g. the point ({example}) in coded "
+                     f"units. Keep a failed run in the table with status failed, or declare the design that was "
+                     f"run (design type custom fits any runs)", source=src)
 
 
 _DESIGN_POINTS = {"ccd": ("factorial", "axial", "center"), "box_behnken": ("edge", "center")}

@@ -668,3 +668,24 @@ def test_a_log_spaced_factor_declared_linear_is_told_its_scale(tmp_path, k, alph
     with pytest.raises(InputError, match=r"factors\.x2\.scale: the levels of x2 are evenly spaced on a linear scale, "
                                          r"not the declared log one; remove scale: log$"):
         validate_material("m", cfg)
+
+
+@pytest.mark.parametrize("k", [3, 4])
+def test_a_box_behnken_table_declared_factorial_is_named(tmp_path, k):
+    edges = [p for p in _full_factorial(k, [-1, 0, 1]) if np.sum(np.abs(p)) == 2]
+    coded = np.vstack([edges, np.zeros((3, k))])
+    cfg, _, _, _ = _write_design(tmp_path, coded, [0.1] * k, [0.9] * k, {"type": "factorial", "center_runs": 3})
+    with pytest.raises(InputError, match=rf"config key materials\.m\.design\.type: the runs are the edge midpoints "
+                                         rf"of a Box-Behnken design .*not the 3\^{k} factorial; set design type: "
+                                         rf"box_behnken$"):
+        validate_material("m", cfg)
+    validate_material("m", {**cfg, "design": {"type": "box_behnken", "center_runs": 3}})  # the hint validates
+
+
+def test_a_three_level_factorial_with_a_point_left_out_names_the_missing_point(tmp_path):
+    points = [p for p in _full_factorial(2, [-1, 0, 1]) if not (p[0] == 1 and p[1] == -1)]
+    cfg, _, _, _ = _write_design(tmp_path, np.array(points, float), [0.1, 0.1], [0.9, 0.9],
+                                 {"type": "factorial", "center_runs": 1})
+    with pytest.raises(InputError, match=r"config key materials\.m\.design: a 3\^2 factorial has 8 non-centre points, "
+                                         r"the table has 7; missing 1, e\.g\. the point \(x1=\+1, x2=-1\)"):
+        validate_material("m", cfg)
