@@ -202,6 +202,11 @@ def test_planted_effect_is_named(kind, k, size, kwargs):
     for seed in SEEDS:
         table, planted = ccd_table(100 + seed, k, kind, size, **kwargs)
         res = criticize(table, FACTORS[k], "y")
+        if kind == "term" and planted.term == ":".join(FACTORS[k]):
+            # x1:x2:x3 rests on the corner runs alone, where a change of regime looks the same: not named
+            assert not res.findings and res.unexplained["candidate"]["detail"] == planted.term
+            assert res.unexplained["candidate"]["corner_only"] == 8
+            continue
         assert res.findings, f"seed {seed}: nothing found for {planted}"
         first = res.findings[0]
         assert first.cause == CAUSE_OF[kind], (seed, planted, first.message)

@@ -416,28 +416,49 @@ def test_one_run_rule_gives_fewer_wrong_causes_on_a_batch_of_shifted_runs():
     assert all(b for a, b in zip(with_rule, without_rule) if a)
 
 
-def test_a_three_factor_interaction_says_that_the_corner_runs_alone_carry_it():
+def test_a_term_only_the_corner_runs_carry_is_found_by_its_geometry():
     """On a CCD, x1*x2*x3 is carried by the 8 corner runs alone, where it is the only pattern the quadratic
-    cannot follow: a regime change in part of the corner region looks exactly like it.  The finding says so;
-    a pure cubic term (carried by the axial runs too) gets no such caveat."""
+    cannot follow: a regime change in part of the corner region looks exactly like it.  A pure cubic term
+    (carried by the axial runs too) and a product of three of four factors are not such terms."""
     import numpy as np
 
-    from demid.criticism.messages import _corner_only_caveat
+    from demid.criticism.messages import corner_only_runs
     from demid.design import ccd_points
 
-    class Runs:  # the caveat reads the coded runs and their number only
+    class Runs:  # the rule reads the coded runs and their number only
         def __init__(self, coded):
             self.coded, self.n = coded, len(coded)
 
     coded = ccd_points(3, 1.68179, 6)
-    caveat = _corner_only_caveat(Runs(coded), (1, 1, 1))
-    assert caveat.startswith(" Only the 8 corner runs carry this term")
-    assert _corner_only_caveat(Runs(coded), (3, 0, 0)) == ""
-    assert _corner_only_caveat(Runs(coded), (2, 1, 0)) == ""
+    assert corner_only_runs(Runs(coded), (1, 1, 1)) == 8
+    assert corner_only_runs(Runs(coded), (3, 0, 0)) == 0
+    assert corner_only_runs(Runs(coded), (2, 1, 0)) == 0
     # with four factors other products share the corners: no such claim
-    assert _corner_only_caveat(Runs(ccd_points(4, 2.0, 12)), (1, 1, 1, 0)) == ""
+    assert corner_only_runs(Runs(ccd_points(4, 2.0, 12)), (1, 1, 1, 0)) == 0
     # the claim itself: on the corners, main effects, two-factor interactions and x1*x2*x3 span every pattern
     corners = coded[np.all(np.abs(coded) == 1, axis=1)]
     x = np.column_stack([np.ones(8), corners, corners[:, [0]] * corners[:, [1]], corners[:, [0]] * corners[:, [2]],
                          corners[:, [1]] * corners[:, [2]], np.prod(corners, axis=1)])
     assert np.linalg.matrix_rank(x) == 8
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_corner_step_and_a_three_factor_interaction_are_not_told_apart_by_name(seed):
+    """A step over the corner where the coded factors sum past 0.5 and a genuine x1*x2*x3 term look the
+    same on a 3-factor CCD's runs: neither is named a missing term; both are reported unexplained with the
+    term as the candidate and what runs would separate them.  A pure cubic term is still named."""
+    from tests.generators import FACTORS, ccd_table, off_catalogue_table
+
+    factors = FACTORS[3]
+    step, _ = off_catalogue_table(100_000 + seed, 3, "step", 12)
+    product, _ = ccd_table(seed, 3, "term", 10, term=":".join(factors))
+    for table in (step, product):
+        result = criticize(table, factors, "y", n_null=499)
+        assert not result.findings and result.verdict in ("unexplained", "does_not_predict")
+        candidate = result.unexplained["candidate"]
+        assert candidate["cause"] == "missing_term" and candidate["corner_only"] == 8
+        assert "only the 8 corner runs carry it" in result.unexplained["message"]
+    cubic, planted = ccd_table(seed, 3, "term", 10, term=f"{factors[0]}^3")
+    result = criticize(cubic, factors, "y", n_null=499)
+    assert result.findings and result.findings[0].cause == "missing_term"
+    assert planted.term in result.findings[0].aliases

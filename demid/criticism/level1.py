@@ -20,7 +20,7 @@ from .aliasing import AliasSet, separating_runs
 from .catalogue import _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, rests_on_one_run,
                       strongest_rival, unexplained_evidence, verdict_of)
-from .messages import _CAUSE_WORDS, _message
+from .messages import _CAUSE_WORDS, _message, corner_only_runs
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
                      infer_axial_distance)
 from .run_order import RunOrder, assess_run_order
@@ -335,9 +335,14 @@ def _honest_causes(data: _Data, response: str, findings: list, model: _Model, ba
 
 
 def _not_singled_out(data: _Data, model: _Model, h: _Hypothesis, hypotheses: list[_Hypothesis]) -> dict | None:
-    """Why cause h is not named, or None: another kind of misfit is at least as strong, or the evidence
-    hinges on one run (verdict.strongest_rival, verdict.rests_on_one_run)."""
+    """Why cause h is not named, or None: a term only the corner runs carry (which any difference between
+    the corners mimics, messages.corner_only_runs), another kind of misfit at least as strong, or evidence
+    that hinges on one run (verdict.strongest_rival, verdict.rests_on_one_run)."""
     why = {"cause": h.cause, "detail": _detail_json(data, h)}
+    if h.cause == "missing_term":
+        carried = corner_only_runs(data, h.detail.terms[0])
+        if carried:
+            return {**why, "corner_only": carried}
     rival = strongest_rival(h, hypotheses)
     if rival is not None:
         return {**why, "rival": _catalogue_entry(data, rival)}

@@ -46,21 +46,19 @@ def _describe_term(term: Term, factors: list[str]) -> str:
     return f"a change of the {sq} curvature with {lin}"
 
 
-def _corner_only_caveat(data: _Data, term) -> str:
-    """In a 3-factor design, x1*x2*x3 is carried by the factorial (corner) runs alone, where main effects,
+def corner_only_runs(data: _Data, term) -> int:
+    """How many corner runs carry ``term`` when they alone do (0 otherwise).
+
+    In a 3-factor design, x1*x2*x3 is carried by the factorial (corner) runs alone, where main effects,
     two-factor interactions and that product span all 8 patterns: any difference between the corners the
     quadratic cannot follow, e.g. a change of regime where several factors are high, looks exactly like the
-    product on these runs.  Said, so the term is not read as proven physics.  (With more factors other
-    products share the corners, and the claim would not hold.)"""
+    product on these runs.  (With more factors other products share the corners, and the claim would not
+    hold.)"""
     if len(term) != 3 or any(p != 1 for p in term):
-        return ""
+        return 0
     column = np.prod(np.asarray(data.coded, float) ** np.asarray(term), axis=1)
     carried = int(np.sum(np.abs(column) > 1e-9))
-    if carried == 0 or carried > data.n / 2:
-        return ""
-    return (f" Only the {carried} corner runs carry this term: any difference between them that the quadratic "
-            f"cannot follow, such as a change of regime where several factors are high, looks exactly like it "
-            f"on these runs.")
+    return carried if 0 < carried <= data.n / 2 else 0
 
 
 def _points_text(points: list[dict]) -> str:
@@ -80,7 +78,7 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
         if others and extra_runs:
             what = "the two" if len(h.aliases) == 2 else f"the {len(h.aliases)}"
             text += f" Extra runs at {_points_text(extra_runs)} would tell {what} apart."
-        return text + _corner_only_caveat(data, h.detail.terms[0])
+        return text
     if h.cause == "response_transform":
         lam = info["lam"]
         scale = {"log": "log", "sqrt": "square-root", "inverse": "reciprocal"}.get(_transform_name(lam))
@@ -94,8 +92,9 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
         run = _run_value(data.runs[int(h.detail)])
         return (f"{r}: run {run} does not fit the other runs (observed {_g(info['observed'])}, "
                 f"the other runs predict {_g(info['predicted_without'])}, externally studentised "
-                f"residual {h.statistic:.1f}); a transcription or export error is the usual cause, "
-                f"check that run. Refitting without it {gain} on the other {n_compared} runs.")
+                f"residual {h.statistic:.1f}); a transcription or export error is the usual cause, or "
+                f"something that differed for that run alone (an input, a setting, a version): check that "
+                f"run. Refitting without it {gain} on the other {n_compared} runs.")
     if h.cause == "factor_level":
         run = _run_value(data.runs[h.detail.row])
         f = info["factor"]

@@ -138,7 +138,13 @@ def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], re
     if candidate:
         named = _entry_text({"cause": candidate["cause"], "detail": candidate["detail"]})
         text += f" The strongest catalogue candidate, {named}, is not singled out: "
-        if "one_run" in candidate:
+        if "corner_only" in candidate:
+            text += (f"only the {candidate['corner_only']} corner runs carry it, and on them it is the one pattern "
+                     f"the quadratic leaves free: any difference between the corners the quadratic cannot follow (a "
+                     f"change of regime where several factors are high or low) looks exactly like it, so no cause is "
+                     f"named. Runs between the corners and the centre (at coded +-0.5, say) would tell a "
+                     f"three-factor interaction from a change of regime.")
+        elif "one_run" in candidate:
             one = candidate["one_run"]
             text += (f"it rests on run {one['run']} alone (without that run its test gives nominal "
                      f"p = {one['p_without']:.2g}), so no cause is named.")
