@@ -53,7 +53,10 @@ def corner_only_runs(data: _Data, term) -> int:
     two-factor interactions and that product span all 8 patterns: any difference between the corners the
     quadratic cannot follow, e.g. a change of regime where several factors are high, looks exactly like the
     product on these runs.  (With more factors other products share the corners, and the claim would not
-    hold.)"""
+    hold.)  Such a term is therefore never named (level1._not_singled_out): in benchmarks/honest_causes.py a
+    corner step on a 3-factor CCD was called "missing term x1:x2:x3" in 15 of 20 tables; the rule lowers
+    confidently wrong causes on off-catalogue defects from 0.171 to 0.131 (lenient: 0.129 to 0.090) and
+    catalogue naming from 0.587 to 0.579 (planted x1:x2:x3 terms are reported unexplained instead)."""
     if len(term) != 3 or any(p != 1 for p in term):
         return 0
     column = np.prod(np.asarray(data.coded, float) ** np.asarray(term), axis=1)
