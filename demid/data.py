@@ -304,10 +304,7 @@ def _ccd_alpha_of_table(table: pd.DataFrame, factors: list[str], log_factors=())
     # with centre runs, not a face-centred CCD: no alpha would make them a CCD.
     if not np.any(off_centre.sum(axis=1) == 1):
         return None
-    shown = float(np.mean(ratios))
-    # Printed (rounded) levels blur the design's own value: 1.41432 from levels printed to 4 decimals.
-    rotatable = rotatable_alpha(len(factors))
-    return round(rotatable, 5) if abs(shown - rotatable) <= 1e-3 * rotatable else shown
+    return float(np.mean(ratios))
 
 
 def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str, config_key: str | None,
@@ -323,8 +320,13 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
         declared = float(design.get("alpha", 1.0))
         # A wrong design.alpha puts every axial run off its level: name the key, not the first such cell.
         # Counts are not required of the probe: a wrong centre-run count is said once alpha is right.
-        if shown is None or abs(shown - declared) <= 1e-3 * shown or not _passes(
-                table, factors, {**design, "alpha": shown}, src, config_key, log_factors, level_tol, False):
+        # Printed (rounded) levels blur the design's own value (1.41432 from 4 decimals, 1.42857 from 2):
+        # the rotatable alpha is told when the runs sit on its levels too.
+        if shown is not None:
+            rotatable = round(rotatable_alpha(len(factors)), 5)
+            shown = next((a for a in (rotatable, shown) if abs(a - shown) <= 0.05 * shown and _passes(
+                table, factors, {**design, "alpha": a}, src, config_key, log_factors, level_tol, False)), None)
+        if shown is None or abs(shown - declared) <= 1e-3 * shown:
             raise error
     geometry = ("the axial runs sit on the faces, at the factorial levels" if abs(shown - 1) < 1e-3 else
                 f"in every factor the axial levels lie {shown:.6g} times as far from the centre as the factorial ones")

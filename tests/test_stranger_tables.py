@@ -689,3 +689,19 @@ def test_a_three_level_factorial_with_a_point_left_out_names_the_missing_point(t
     with pytest.raises(InputError, match=r"config key materials\.m\.design: a 3\^2 factorial has 8 non-centre points, "
                                          r"the table has 7; missing 1, e\.g\. the point \(x1=\+1, x2=-1\)"):
         validate_material("m", cfg)
+
+
+@pytest.mark.parametrize("k, table_alpha, declared", [(2, 1.41421, 1.682), (3, 1.68179, 1.41421), (3, 1.68179, 1.0)])
+def test_a_wrong_alpha_on_levels_printed_to_two_decimals_gets_the_design_value(tmp_path, k, table_alpha, declared):
+    """Levels printed to two decimals put the axial/factorial ratio at 1.4286 or 1.6667: the value the runs
+    were designed with (rotatable) is told, since its levels hold every run as well."""
+    cfg, _, _, _ = _write_design(tmp_path, ccd_points(k, table_alpha, 3), [0.1] * k, [0.9] * k,
+                                 {"type": "ccd", "alpha": declared, "center_runs": 3})
+    path = Path(cfg["data"])
+    lines = path.read_text().splitlines()
+    path.write_text("\n".join([lines[0]] + [",".join([c.split(",")[0]] + [f"{float(v):.2f}" for v in c.split(",")[1:-1]]
+                                                     + [c.split(",")[-1]]) for c in lines[1:]]) + "\n")
+    with pytest.raises(InputError, match=rf"alpha = {table_alpha:.6g} .*not the declared {declared:g}; set "
+                                         rf"design\.alpha: {table_alpha:.6g}$"):
+        validate_material("m", cfg)
+    validate_material("m", {**cfg, "design": {**cfg["design"], "alpha": table_alpha}})  # the hint validates
