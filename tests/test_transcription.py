@@ -443,3 +443,21 @@ def test_one_published_statistic_matched_by_one_repair_is_a_lead_not_the_slip(ta
     for result in lone:
         assert "a single-cell slip explains it" not in result.message
         assert "chance match among the" in result.message and "check that cell against the source" in result.message
+
+
+def test_a_repair_that_only_meets_a_printed_bound_is_not_a_lead(tables):
+    """"lof_p < 0.0001" holds for any repair that wrecks the fit: a lead must restore a printed value (here
+    the misprinted R²), not only the bound."""
+    printed, factors, alpha, published = tables[2]
+    table = numeric(printed)
+    stats_ = fit_response(table, factors, "y", alpha=alpha).statistics()
+    assert stats_.lof_p > 0.001  # premise: the bound is wrong for this table
+    r2_text = f"{stats_.r2 - 0.03:.3f}"
+    result = check_transcription(table, factors, "y", {"r2": r2_text, "lof_p": "<0.0001"}, alpha=alpha,
+                                 printed=printed)
+    assert not result.consistent and result.suspects
+    for s in result.suspects:
+        repaired = table.copy()
+        repaired.loc[repaired["run"] == s.run, s.column] = s.suggested
+        r2 = fit_response(repaired, factors, "y", alpha=alpha).statistics().r2
+        assert abs(r2 - float(r2_text)) <= 0.0005 + 1e-12, (s, r2)

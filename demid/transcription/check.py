@@ -195,12 +195,15 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     if not records:
         return slip_result if slip is not None else result(
             False, [], False, _unexplained_message(response, targets, reproduced, agrees, 0, 0), 0)
-    restores, misfit, order = _rank_repairs(records, blocks, targets, table.columns)
+    restores, restores_exact, misfit, order = _rank_repairs(records, blocks, targets, table.columns)
     full = order[restores[order] == n_pub]
     explained = bool(full.size)
     if not explained and slip is not None:
         return slip_result
-    chosen = full if explained else order[restores[order] > n_agree]
+    # A partial lead must restore a printed value, not only a bound ("p < 0.0001" holds for any repair
+    # that wrecks the fit).
+    n_agree_exact = sum(agrees[name] for name in targets if targets[name].relation == "=")
+    chosen = full if explained else order[(restores[order] > n_agree) & (restores_exact[order] > n_agree_exact)]
     chosen = chosen[: max_suspects if explained else min(max_suspects, 5)]
     runs = _runs(table)
     suspects = [Suspect(run=runs[records[c][0]], column=records[c][1], found=float(records[c][3]),
@@ -320,10 +323,13 @@ def _rank_repairs(records: list[tuple], blocks: list[dict], targets: dict, colum
     column_order = {name: i for i, name in enumerate(columns)}
     values = _lack_of_fit_p({key: np.concatenate([np.atleast_1d(b[key]) for b in blocks]) for key in blocks[0]})
     restores = np.zeros(len(records), dtype=int)
+    restores_exact = np.zeros(len(records), dtype=int)
     misfit = np.zeros(len(records))
     candidate_agrees, _ = _agreement(targets, values)
     for name in targets:
         restores += candidate_agrees[name]
+        if targets[name].relation == "=":
+            restores_exact += candidate_agrees[name]
         misfit += np.where(candidate_agrees[name], 0.0, targets[name].misfit(values[name]))
     # Round the continuous tie-break so that symmetric repairs fall through to kind, row and column.
     order = np.lexsort((
@@ -334,7 +340,7 @@ def _rank_repairs(records: list[tuple], blocks: list[dict], targets: dict, colum
         [r[7] for r in records],
         -restores,
     ))
-    return restores, misfit, order
+    return restores, restores_exact, misfit, order
 
 
 #: Slips of a printed statistic that are looked for: each moves the value far, so a repair that rounds
