@@ -19,8 +19,19 @@ def _split(text: str) -> list[str]:
 
 
 def _load_table(path: str, factors: list[str], responses: list[str]):
+    from .config import RESERVED_COLUMNS
     from .data import read_table
 
+    if not factors or not responses:
+        raise InputError(f"--{'factors' if not factors else 'responses'}: no column named; give the table's "
+                         "column names separated by commas")
+    both = sorted(set(factors) & set(responses))
+    if both:
+        raise InputError(f"'{both[0]}' is given both as a factor and as a response")
+    reserved = [c for c in [*factors, *responses] if c in RESERVED_COLUMNS]
+    if reserved:
+        raise InputError(f"'{reserved[0]}' names a column demid reads itself (run: the run number, status: ok or "
+                         "failed), not a factor or response")
     table, warnings = read_table(path, factors, responses)
     for w in warnings:
         print(f"demid: warning: {w}", file=sys.stderr)
@@ -30,10 +41,14 @@ def _load_table(path: str, factors: list[str], responses: list[str]):
 def _alpha(table, factors, alpha, design="ccd"):
     """Axial distance: given; 1 for designs without axial points; for a CCD inferred as
     (max level distance) / (factorial level distance)."""
+    import numpy as np
+
     if alpha is not None:
         if design != "ccd":
             raise InputError(f"--alpha: only a ccd design has an axial distance, not --design {design}; leave "
                              "--alpha out")
+        if not np.isfinite(alpha):
+            raise InputError(f"--alpha: a CCD's axial distance is a finite number, found {alpha:g}")
         if not alpha >= 1:
             raise InputError(f"--alpha: a CCD's axial distance is at least 1 (1 is face-centred), found {alpha:g}")
         return alpha
@@ -207,8 +222,7 @@ def cmd_design(args) -> int:
     from .design_generation import fragment_yaml, generate_sheet, parse_factor
     from .io import atomic_path, write_csv
 
-    if not args.factor:
-        raise InputError("--factor: give at least one NAME=LOW:HIGH")
+    _check_design_arguments(args)
     sheet = generate_sheet(args.type, [parse_factor(f) for f in args.factor], center_runs=args.center_runs,
                            alpha=args.alpha, seed=args.seed)
     frame = sheet.to_frame()
@@ -220,6 +234,39 @@ def cmd_design(args) -> int:
             tmp.write_text(fragment_yaml(sheet, args.material, args.out, args.response), encoding="utf-8")
     print(f"{args.out}: {len(frame)} runs of a {args.type} design in randomised order (seed {args.seed})")
     return 0
+
+
+def _check_design_arguments(args) -> None:
+    """Options of ``design`` that would write a sheet or config the rest of demid refuses, or overwrite one
+    file with another."""
+    from .config import RESERVED_COLUMNS
+    from .design_generation import _NAME, parse_factor
+
+    names = [parse_factor(f).name for f in args.factor] + list(args.response)
+    if len(args.factor) < 2:
+        raise InputError("--factor: give at least two NAME=LOW:HIGH (admissible sets and surfaces are drawn over "
+                         "factor pairs)")
+    for name in args.response:
+        if not _NAME.fullmatch(name):
+            raise InputError(f"--response: '{name}' is not a valid column name (letters, digits, _; starts with a "
+                             "letter)")
+    repeated = next((n for i, n in enumerate(names) if n in names[:i]), None)
+    if repeated:
+        raise InputError(f"'{repeated}' is given more than once among --factor and --response; each column needs "
+                         "its own name")
+    reserved = next((n for n in names if n in RESERVED_COLUMNS), None)
+    if reserved:
+        raise InputError(f"'{reserved}' names a column demid writes itself (run: the run number, status: ok or "
+                         "failed); choose another name")
+    if not _NAME.fullmatch(args.material):
+        raise InputError(f"--material: '{args.material}' is not a valid name (letters, digits, _; starts with a "
+                         "letter)")
+    if args.seed < 0:
+        raise InputError(f"--seed: must be 0 or more, found {args.seed}")
+    if Path(args.out).is_dir():
+        raise InputError(f"--out: '{args.out}' is a folder; name the CSV file to write")
+    if args.config_out and Path(args.config_out).resolve() == Path(args.out).resolve():
+        raise InputError("--config-out names the same file as --out; the config would overwrite the run sheet")
 
 
 def _one_line_error(message: str):

@@ -95,9 +95,10 @@ def _hint(err) -> str:
     """What a likely slip meant: a tolerance written in percent (5 for 0.05)."""
     key = str(err.absolute_path[-1]) if err.absolute_path else ""
     path = list(err.absolute_path)
-    in_tolerances = key == "tolerance" or (len(path) > 1 and path[-2] == "sweep_tolerances")
+    in_tolerances = key in ("tolerance", "sigma_rel") or (len(path) > 1 and path[-2] == "sweep_tolerances")
     if in_tolerances and err.validator in ("maximum", "exclusiveMaximum") and isinstance(err.instance, (int, float)):
-        return f"; tolerances are fractions: {err.instance:g} % is {err.instance / 100:g}"
+        what = "relative measurement errors" if key == "sigma_rel" else "tolerances"
+        return f"; {what} are fractions: {err.instance:g} % is {err.instance / 100:g}"
     return ""
 
 
@@ -113,10 +114,28 @@ def validate_schema(config: dict, source: str = "config") -> dict:
         err = errors[0]
         more = f" (and {len(errors) - 1} more problem(s))" if len(errors) > 1 else ""
         raise InputError(f"config key {_key_path(err.absolute_path)}: {err.message}{_hint(err)}{more}", source=source)
+    _refuse_non_finite(config, [], source)
     config = copy.deepcopy(config)
     _fill_defaults(config, schema, schema)
     return config
 
+
+def _refuse_non_finite(node, path: list, source: str) -> None:
+    """YAML's .nan and .inf pass the schema's number type but mean nothing as a bound, target, tolerance or
+    setting: one line naming the key."""
+    if isinstance(node, dict):
+        for key, value in node.items():
+            _refuse_non_finite(value, [*path, key], source)
+    elif isinstance(node, list):
+        for i, value in enumerate(node):
+            _refuse_non_finite(value, [*path, i], source)
+    elif isinstance(node, float) and not np.isfinite(node):
+        raise InputError(f"config key {_key_path(path)}: {node} is not a usable number; give a finite value",
+                         source=source)
+
+
+#: Table columns with a meaning of their own: the run number and the run's status.
+RESERVED_COLUMNS = ("run", "status")
 
 # Evaluation points per material held in memory at once (2**24: about 4096**2 or 256**3).
 MAX_GRID_NODES = 2 ** 24
@@ -283,9 +302,14 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
             if fac.get("scale") == "log" and fac["lower"] <= 0:
                 raise InputError(f"config key {key}.factors.{fname}: a log-scale factor needs lower > 0", source=source)
         clash = set(factors) & set(responses)
-        if clash or "run" in factors or "run" in responses:
-            raise InputError(f"config key {key}: names used both as factor and response/run: "
-                             f"{', '.join(sorted(clash | ({'run'} & (set(factors) | set(responses)))))}", source=source)
+        if clash:
+            raise InputError(f"config key {key}: names used both as factor and response: "
+                             f"{', '.join(sorted(clash))}", source=source)
+        reserved = sorted(set(RESERVED_COLUMNS) & (set(factors) | set(responses)))
+        if reserved:
+            raise InputError(f"config key {key}: '{reserved[0]}' names a column demid reads itself (run: the run "
+                             f"number, status: ok or failed), not a factor or response; rename that column in "
+                             f"the table and the config", source=source)
         for rname, resp in responses.items():
             if "target" in resp and resp["target"] == 0:
                 raise InputError(f"config key {key}.responses.{rname}.target: a relative tolerance needs a "

@@ -27,7 +27,21 @@ from .spec import as_spec
 UNICODE_MINUS = "\u2212"
 _DECIMAL_COMMA = re.compile(r"^[+-]?\d*,\d+$")
 _THOUSANDS_OR_DECIMAL = re.compile(r"^[+-]?[1-9]\d{0,2},\d{3}$")
-_FAILED = {"failed", "fail", "error", "crashed"}
+_FAILED = {"failed", "fail", "error", "crashed", "timeout", "diverged", "aborted", "killed", "unstable"}
+_OK = {"", "ok", "done", "success", "succeeded", "completed", "complete", "finished", "converged", "valid"}
+
+
+def _run_failed(status: str, status_column: str, src: str, run: int) -> bool:
+    """Whether a run's status says its simulation failed ('failed (timeout)' does); a status that is neither
+    an ok nor a failure word is bad input, since guessing either way would fit or drop the run wrongly."""
+    if status in _OK or status == "nan":  # "nan": an empty status cell written out by pandas
+        return False
+    word = re.split(r"[^a-z]+", status, maxsplit=1)[0]
+    if status in _FAILED or word in _FAILED or status.startswith("time"):
+        return True
+    raise InputError(f"status '{status}' is neither ok nor failed; write failed for a simulation that did not "
+                     f"finish (understood: {', '.join(sorted(_FAILED))}) or ok for one that did (or "
+                     f"{', '.join(sorted(w for w in _OK if w))})", source=src, run=run, column=status_column)
 _NONFINITE = {"nan", "inf", "+inf", "-inf", "infinity", "-infinity"}
 
 
@@ -169,7 +183,7 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
                              run=run, column="run")
         seen_runs[run] = line_no
         status = row[idx[status_column]].strip().lower() if has_status else ""
-        failed = status in _FAILED
+        failed = _run_failed(status, status_column, src, run)
         rec = {"run": run}
         for col in factors:
             try:
@@ -197,8 +211,9 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
             try:
                 rec[col] = parse_number(cell)
             except ValueError as exc:
-                hint = (f"; if this simulation failed, add a '{status_column}' column with 'failed'"
-                        if cell == "" else "")
+                hint = ("" if cell != "" else f"; if this simulation failed, write failed in its '{status_column}' "
+                        f"cell" if has_status else f"; if this simulation failed, add a '{status_column}' column with "
+                        f"'failed'")
                 raise InputError(f"{exc}{hint}", source=src, run=run, column=col) from None
         if failed:
             warnings.append(f"{src}, run {run}: marked '{status}' in column '{status_column}'; its missing "
@@ -271,7 +286,7 @@ def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str
     levels = nominal_levels(dtype, alpha)
     centers, units = [], []
     for i, f in enumerate(factors):
-        values, counts = np.unique(np.round(z[:, i], 12), return_counts=True)
+        values, counts = np.unique(_round_to_scale(z[:, i], 11), return_counts=True)
         found = _level_coding(values, counts, levels) if len(values) > 1 else None
         if found is None:
             raise InputError(f"the factor takes the single value {values[0]:g} in every run; a {dtype} design "
@@ -281,6 +296,17 @@ def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str
     return Coding(tuple(factors), tuple(centers), tuple(units))
 
 
+def _round_to_scale(x: np.ndarray, digits: int) -> np.ndarray:
+    """x rounded to ``digits`` decimals below its largest magnitude's leading digit (12 decimals for values
+    about 0.5 at digits 11): printed levels that differ only by round-off merge, whatever the factor's
+    units (a Hamaker constant of 1e-20 J as much as a friction coefficient)."""
+    scale = float(np.max(np.abs(x))) if x.size else 0.0
+    if not np.isfinite(scale) or scale == 0.0:
+        return x
+    quantum = 10.0 ** (np.floor(np.log10(scale)) - digits)
+    return np.round(x / quantum) * quantum
+
+
 def _ccd_alpha_of_table(table: pd.DataFrame, factors: list[str], log_factors=()) -> float | None:
     """The axial distance the runs themselves show, when every factor has the five (or three) levels of
     a CCD, symmetric about the centre, with one ratio of axial to factorial half-range; else None."""
@@ -288,7 +314,7 @@ def _ccd_alpha_of_table(table: pd.DataFrame, factors: list[str], log_factors=())
     ratios = []
     off_centre = np.zeros(z.shape, dtype=bool)
     for i in range(len(factors)):
-        values = np.unique(np.round(z[:, i], 9))
+        values = np.unique(_round_to_scale(z[:, i], 8))
         if len(values) not in (3, 5):
             return None
         spread = values[-1] - values[0]

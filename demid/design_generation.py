@@ -10,6 +10,8 @@ the pipeline validates the filled-in sheet as that design.
 
 from __future__ import annotations
 
+import re
+
 from dataclasses import dataclass
 from itertools import combinations, product
 
@@ -29,6 +31,10 @@ class FactorRange:
     high: float
 
 
+#: Column and material names the config accepts (its schema's propertyNames pattern).
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
 def parse_factor(text: str) -> FactorRange:
     """``NAME=LOW:HIGH`` -> FactorRange; raises InputError naming the option."""
     name, sep, rng = text.partition("=")
@@ -36,7 +42,7 @@ def parse_factor(text: str) -> FactorRange:
     name = name.strip()
     if not (sep and sep2 and name):
         raise InputError(f"--factor: expected NAME=LOW:HIGH, found '{text}'")
-    if not name[0].isalpha() or not name.replace("_", "").isalnum():
+    if not _NAME.fullmatch(name):
         raise InputError(f"--factor: '{name}' is not a valid column name (letters, digits, _; starts with a letter)")
     try:
         lo, hi = float(low), float(high)

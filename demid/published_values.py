@@ -73,10 +73,11 @@ class _Checker:
             self.fail(path, f"{raw} is not a possible {what} ({bounds}){hint}")
         return value
 
-    def interval(self, path: list, pair) -> None:
+    def interval(self, path: list, pair, strict: bool = False) -> None:
         low, high = (float(v) for v in pair)
-        if low > high:
-            self.fail(path, f"[{pair[0]}, {pair[1]}] has its lower end above its upper end")
+        if low > high or (strict and low == high):
+            self.fail(path, f"[{pair[0]}, {pair[1]}] has its lower end {'above' if low > high else 'at'} its upper "
+                            f"end{'; a search range needs lower < upper' if strict else ''}")
 
 
 def _schema_error(content: dict, where: str) -> None:
@@ -154,7 +155,7 @@ def check_published_values(content: dict, materials: dict, where: str) -> None:
             c.name(["intervals", m, s], s, _names(mat, "scenarios"), f"scenario of {m}")
             _check_intervals(c, ["intervals", m, s], mat, m, by_factor)
     for m, by_factor in (content.get("search_domain") or {}).items():
-        _check_intervals(c, ["search_domain", m], c.material(["search_domain", m], m), m, by_factor)
+        _check_intervals(c, ["search_domain", m], c.material(["search_domain", m], m), m, by_factor, strict=True)
     for m, by_scenario in (content.get("scenario_sets") or {}).items():
         mat = c.material(["scenario_sets", m], m)
         domain = (content.get("search_domain") or {}).get(m, {})
@@ -186,10 +187,10 @@ def _check_set(c: _Checker, path: list, mat: dict, m: str, s: str, entry: dict) 
                 c.number(path + [group, f], value, 0, what="width")
 
 
-def _check_intervals(c: _Checker, path: list, mat: dict, m: str, by_factor: dict) -> None:
+def _check_intervals(c: _Checker, path: list, mat: dict, m: str, by_factor: dict, strict: bool = False) -> None:
     for f, pair in by_factor.items():
         c.name(path + [f], f, _names(mat, "factors"), f"factor of {m}")
-        c.interval(path + [f], pair)
+        c.interval(path + [f], pair, strict)
 
 
 def for_materials(content: dict, materials) -> dict:

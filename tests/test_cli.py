@@ -124,6 +124,7 @@ def test_check_transcription_cli_refuses_an_impossible_repeated_or_unknown_stati
 @pytest.mark.parametrize("extra, message", [
     (["--alpha", "-1"], r"--alpha: a CCD's axial distance is at least 1 \(1 is face-centred\), found -1"),
     (["--alpha", "0"], r"--alpha: a CCD's axial distance is at least 1"),
+    (["--alpha", "inf"], r"--alpha: a CCD's axial distance is a finite number, found inf"),
     (["--alpha", "1.5", "--design", "box_behnken"], r"--alpha: only a ccd design has an axial distance"),
 ])
 def test_fit_refuses_an_impossible_or_misplaced_alpha(tmp_path, extra, message):

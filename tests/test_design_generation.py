@@ -130,12 +130,20 @@ def test_a_sheet_with_a_moved_point_does_not_validate(tmp_path):
     (["--type", "ccd", "--factor", "a0:1"], "NAME=LOW:HIGH"),
     (["--type", "ccd", "--factor", "a=0:x"], "must be numbers"),
     (["--type", "ccd", "--factor", "a=0:1", "--factor", "a=0:2"], "more than once"),
-    (["--type", "ccd", "--factor", "a=0:1", "--alpha", "0.5"], "alpha >= 1"),
-    (["--type", "ccd", "--factor", "a=0:1", "--alpha", "wide"], "rotatable, face or a number"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--alpha", "0.5"], "alpha >= 1"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--alpha", "wide"], "rotatable, face or a number"),
     (["--type", "box_behnken", "--factor", "a=0:1", "--factor", "b=0:1"], "3 to 5 factors"),
     (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--center-runs", "0"], "at least 1"),
     (["--type", "cube", "--factor", "a=0:1"], "invalid choice"),
-    (["--type", "ccd"], "at least one"),
+    (["--type", "ccd"], "at least two"),
+    (["--type", "ccd", "--factor", "a=0:1"], "at least two"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--response", "a"], "more than once"),
+    (["--type", "ccd", "--factor", "run=0:1", "--factor", "b=0:1"], "'run' names a column demid writes itself"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--response", "status"], "'status' names a column"),
+    (["--type", "ccd", "--factor", "\u03bc_r=0:1", "--factor", "b=0:1"], "is not a valid column name"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--material", "my mat"], "--material: 'my mat'"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--seed", "-5"], "--seed: must be 0 or more"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--config-out", "sheet.csv"], "same file as --out"),
 ])
 def test_bad_input_is_one_line_with_status_2(tmp_path, argv, fragment):
     proc = _run("design", *argv, "--out", "sheet.csv", cwd=tmp_path)

@@ -37,6 +37,8 @@ SLIPS = [
     (r"mu_s: \[0\.052, 0\.063\]", "mu_s: 0.052", ["pareto.paste.intervals.mu_s", "should be a list"]),
     (r"unresolved: \[mu_s, mu_r\]", "unresolved: [mu_s, mu_rr]", ["unresolved", "'mu_rr'", "'mu_r'"]),
     (r"^search_domain:", "search_domian:", ["unknown key 'search_domian'", "'search_domain'"]),
+    (r"mu_s: \[0\.051821, 0\.388179\]", "mu_s: [0.051821, 0.051821]",
+     ["search_domain.paste.mu_s", "lower end at its upper end; a search range needs lower < upper"]),
     (r"^tolerances:\n  poraver: \{aor_only: 0\.01", "tolerances:\n  poraver: {aor_only: 5",
      ["tolerances.poraver.aor_only", "5 % is 0.05"]),
 ]

@@ -705,3 +705,76 @@ def test_a_wrong_alpha_on_levels_printed_to_two_decimals_gets_the_design_value(t
                                          rf"design\.alpha: {table_alpha:.6g}$"):
         validate_material("m", cfg)
     validate_material("m", {**cfg, "design": {**cfg["design"], "alpha": table_alpha}})  # the hint validates
+
+
+@pytest.mark.parametrize("where, value", [
+    (("materials", "poraver", "factors", "e", "upper"), float("inf")),
+    (("materials", "poraver", "responses", "aor", "target"), float("nan")),
+    (("materials", "mortar", "reference_point", "mu_r"), float("nan")),
+    (("materials", "poraver", "design", "alpha"), float("inf")),
+    (("materials", "poraver", "scenarios", "aor_only", "tolerance"), float("nan")),
+])
+def test_yaml_nan_and_inf_are_refused_with_their_key(tmp_path, where, value):
+    """.nan and .inf pass a schema's number type; as a bound, target or tolerance they mean nothing."""
+    def mutate(c):
+        node = c
+        for key in where[:-1]:
+            node = node[key]
+        assert where[-1] in node  # premise: the key exists in the demo config
+        node[where[-1]] = value
+    with pytest.raises(InputError, match=rf"config key {re.escape('.'.join(where))}: {value} is not a usable number"):
+        _load(tmp_path, mutate)
+
+
+def test_a_relative_measurement_error_in_percent_gets_the_fraction_as_hint(tmp_path):
+    def mutate(c):
+        c["materials"]["poraver"]["responses"]["aor"]["sigma_rel"] = 2
+    with pytest.raises(InputError, match=r"responses\.aor\.sigma_rel: 2 is greater than the maximum of 1; relative "
+                                         r"measurement errors are fractions: 2 % is 0\.02"):
+        _load(tmp_path, mutate)
+
+
+@pytest.mark.parametrize("reserved", ["status", "run"])
+def test_a_response_or_factor_named_like_a_column_demid_reads_itself_is_refused(tmp_path, reserved):
+    def mutate(c):
+        responses = c["materials"]["poraver"]["responses"]
+        responses[reserved] = responses.pop("shape")
+        for scenario in c["materials"]["poraver"]["scenarios"].values():
+            scenario["observables"] = [reserved if o == "shape" else o for o in scenario["observables"]]
+    with pytest.raises(InputError, match=rf"config key materials\.poraver: '{reserved}' names a column demid reads "
+                                         r"itself"):
+        _load(tmp_path, mutate)
+
+
+@pytest.mark.parametrize("status", ["timeout", "diverged", "failed (timeout)", "Timed out", "ERROR: segfault"])
+def test_failure_words_other_than_failed_mark_a_failed_run(tmp_path, status):
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok", f"2,0.2,2,,{status}", "3,0.3,3,6.0,done"])
+    table, warnings = read_table(path, ["x1", "x2"], ["y"])
+    assert table["status"].tolist() == ["ok", "failed", "ok"] and np.isnan(table["y"].iloc[1])
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok", f"2,0.2,2,7.5,{status}", "3,0.3,3,6.0,ok"])
+    with pytest.raises(InputError, match=r"run 2, column 'y': the run is marked"):  # a value left in: not fitted
+        read_table(path, ["x1", "x2"], ["y"])
+
+
+def test_a_status_that_is_neither_ok_nor_failed_is_refused(tmp_path):
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok", "2,0.2,2,7.5,rerun?", "3,0.3,3,6.0,ok"])
+    with pytest.raises(InputError, match=r"t\.csv, run 2, column 'status': status 'rerun\?' is neither ok nor failed"):
+        read_table(path, ["x1", "x2"], ["y"])
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok", "2,0.2,2,,ok", "3,0.3,3,6.0,ok"])
+    with pytest.raises(InputError, match=r"run 2, column 'y': .*write failed in its 'status' cell"):
+        read_table(path, ["x1", "x2"], ["y"])
+
+
+@pytest.mark.parametrize("scale", [1e-20, 1e12])
+def test_a_factor_in_tiny_or_huge_units_validates_like_the_same_factor_in_unit_units(tmp_path, scale):
+    """A Hamaker constant of 1e-20 J is a factor like any other: the levels are merged relative to its own
+    magnitude, not at a fixed number of decimals."""
+    cfg, coded, _, _ = _write_design(tmp_path, ccd_points(2, 1.41421, 3), [0.1, 0.1], [0.9, 0.9],
+                                     {"type": "ccd", "alpha": 1.41421, "center_runs": 3})
+    path = Path(cfg["data"])
+    lines = path.read_text().splitlines()
+    path.write_text("\n".join([lines[0]] + [",".join([c[0], f"{float(c[1]) * scale:.6e}", *c[2:]])
+                                            for c in (ln.split(",") for ln in lines[1:])]) + "\n")
+    cfg["factors"]["x1"] = {"lower": 0.1 * scale, "upper": 0.9 * scale}
+    vt = validate_material("m", cfg)
+    assert vt.summary("m")["point_types"] == {"axial": 4, "center": 3, "factorial": 4}
