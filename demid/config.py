@@ -102,6 +102,16 @@ def _hint(err) -> str:
     return ""
 
 
+def decimal_comma_hint(err) -> str:
+    """A number written with a decimal comma inside {...} (target: 26,4) leaves a number as a key of its own."""
+    if err.validator != "additionalProperties" or not isinstance(err.instance, dict):
+        return ""
+    extra = [k for k in err.instance if k not in err.schema.get("properties", {})]
+    if extra and all(isinstance(k, (int, float)) or re.fullmatch(r"\d+", str(k)) for k in extra):
+        return "; a number written with a decimal comma? write decimals with a point (26.4, not 26,4)"
+    return ""
+
+
 def validate_schema(config: dict, source: str = "config") -> dict:
     """Validate against the schema, fill defaults, return a new dict.  Raises InputError."""
     import jsonschema  # only validation needs it, not the per-material jobs
@@ -113,7 +123,8 @@ def validate_schema(config: dict, source: str = "config") -> dict:
     if errors:
         err = errors[0]
         more = f" (and {len(errors) - 1} more problem(s))" if len(errors) > 1 else ""
-        raise InputError(f"config key {_key_path(err.absolute_path)}: {err.message}{_hint(err)}{more}", source=source)
+        raise InputError(f"config key {_key_path(err.absolute_path)}: {err.message}{_hint(err)}"
+                         f"{decimal_comma_hint(err)}{more}", source=source)
     _refuse_non_finite(config, [], source)
     config = copy.deepcopy(config)
     _fill_defaults(config, schema, schema)

@@ -174,9 +174,9 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
         except ValueError as exc:
             raise InputError(f"line {line_no}: {exc}; expected an integer run number", source=src,
                              column="run") from None
-        if not float(run_val).is_integer():
-            raise InputError(f"line {line_no}: found '{run_cell}', expected an integer run number", source=src,
-                             column="run")
+        if not float(run_val).is_integer() or abs(run_val) >= 2 ** 53:  # exact as a float and in parquet
+            raise InputError(f"line {line_no}: found '{run_cell}', expected an integer run number"
+                             + (" below 2^53" if float(run_val).is_integer() else ""), source=src, column="run")
         run = int(run_val)
         if run in seen_runs:
             raise InputError(f"duplicate run number (lines {seen_runs[run]} and {line_no})", source=src,
@@ -429,6 +429,10 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
                              f"quadratic cannot be estimated; add the {2 * k} axial runs of a CCD, or run the 3^{k} "
                              f"factorial (design type factorial)", source=src)
         for t, n in expected.items():
+            if found[t] > n and found[t] % n == 0 and t != "center":
+                raise InputError(f"config key {config_key}.design: the table has {found[t]} {_POINT_WORDS[t]} runs "
+                                 f"where a {k}-factor CCD has {n}: replicated points? A replicated design is not a "
+                                 "plain ccd; declare design type custom to fit it as it is", source=src)
             if found[t] != n:
                 key, what = ("design.center_runs", "") if t == "center" else ("design", f" with {n_center_text(design)}")
                 raise InputError(f"config key {config_key}.{key}: expected {n} {_POINT_WORDS[t]} run(s) for a "

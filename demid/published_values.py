@@ -97,7 +97,9 @@ def _schema_error(content: dict, where: str) -> None:
     elif err.validator == "additionalProperties" and isinstance(err.instance, dict):
         allowed = list(err.schema.get("properties", {}))
         extra = [k for k in err.instance if k not in allowed]
-        message = f"unknown key '{extra[0]}'{_closest(extra[0], allowed)}"
+        from .config import decimal_comma_hint
+
+        message = f"unknown key '{extra[0]}'{_closest(extra[0], allowed)}{decimal_comma_hint(err)}"
     elif err.validator == "type":
         words = {"array": "a list", "object": "a mapping (name: value)", "string": "text"}
         message = f"{err.instance!r} should be {words.get(err.validator_value, err.validator_value)}"
@@ -168,6 +170,9 @@ def check_published_values(content: dict, materials: dict, where: str) -> None:
                                                                    f"search_domain.{m}.{f}: [lower, upper]")
     for m, entry in (content.get("pareto") or {}).items():
         mat = c.material(["pareto", m], m)
+        if mat and not mat.get("pareto"):
+            c.fail(["pareto", m], f"the config computes no Pareto front for {m} (materials.{m}.pareto is not set), "
+                                  "so these intervals would have nothing to be compared with")
         c.number(["pareto", m, "max_error"], entry["max_error"], 0, 1, "relative error", percent=True)
         _check_intervals(c, ["pareto", m, "intervals"], mat, m, entry["intervals"])
     for m, point in (content.get("reference_points") or {}).items():

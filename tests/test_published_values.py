@@ -35,6 +35,8 @@ SLIPS = [
     (r"max_error: 0\.02", "max_error: 2", ["pareto.paste.max_error", "2 % is 0.02"]),
     (r"mu_s: \[0\.052, 0\.063\]", "mu_s: [0.052]", ["pareto.paste.intervals.mu_s", "[lower, upper]"]),
     (r"mu_s: \[0\.052, 0\.063\]", "mu_s: 0.052", ["pareto.paste.intervals.mu_s", "should be a list"]),
+    (r"^pareto:\n  paste:", "pareto:\n  mortar:", ["pareto.mortar", "computes no Pareto front for mortar"]),
+    (r"aor:   \{r2: 0\.989", "aor:   {r2: 0,989", ["table2.poraver.aor", "unknown key '989'", "decimal comma"]),
     (r"unresolved: \[mu_s, mu_r\]", "unresolved: [mu_s, mu_rr]", ["unresolved", "'mu_rr'", "'mu_r'"]),
     (r"^search_domain:", "search_domian:", ["unknown key 'search_domian'", "'search_domain'"]),
     (r"mu_s: \[0\.051821, 0\.388179\]", "mu_s: [0.051821, 0.051821]",

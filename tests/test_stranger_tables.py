@@ -778,3 +778,33 @@ def test_a_factor_in_tiny_or_huge_units_validates_like_the_same_factor_in_unit_u
     cfg["factors"]["x1"] = {"lower": 0.1 * scale, "upper": 0.9 * scale}
     vt = validate_material("m", cfg)
     assert vt.summary("m")["point_types"] == {"axial": 4, "center": 3, "factorial": 4}
+
+
+def test_a_ccd_with_replicated_axial_points_is_pointed_to_custom(tmp_path):
+    coded = ccd_points(2, 1.41421, 3)
+    axial = coded[np.sum(np.abs(coded) > 1e-9, axis=1) == 1]
+    cfg, _, _, _ = _write_design(tmp_path, np.vstack([coded, axial]), [0.1, 0.1], [0.9, 0.9],
+                                 {"type": "ccd", "alpha": 1.41421, "center_runs": 3})
+    with pytest.raises(InputError, match=r"design: the table has 8 axial runs where a 2-factor CCD has 4: replicated "
+                                         r"points\? .*declare design type custom"):
+        validate_material("m", cfg)
+    validate_material("m", {**cfg, "design": {"type": "custom"}})
+
+
+def test_a_run_number_too_large_to_be_exact_is_refused(tmp_path):
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,ok", "99999999999999999999,0.2,2,7.5,ok", "3,0.3,3,6.0,ok"])
+    with pytest.raises(InputError, match=r"line 3: found '99999999999999999999', expected an integer run number "
+                                         r"below 2\^53"):
+        read_table(path, ["x1", "x2"], ["y"])
+
+
+
+def test_a_decimal_comma_in_a_flow_mapping_is_named(tmp_path):
+    text = (REPO / "config.yaml").read_text(encoding="utf-8")
+    assert "aor_only:  {observables: [aor], tolerance: 0.01," in text  # premise
+    path = tmp_path / "c.yaml"
+    path.write_text(text.replace("aor_only:  {observables: [aor], tolerance: 0.01,",
+                                 "aor_only:  {observables: [aor], tolerance: 0,01,"), encoding="utf-8")
+    with pytest.raises(InputError, match=r"scenarios\.aor_only: Additional properties are not allowed \(1 was "
+                                         r"unexpected\); a number written with a decimal comma\?"):
+        load_config(path, base_dir=REPO)

@@ -473,7 +473,8 @@ class ReportSections:
                       markdown_table(coef), ""]
         if coding is not None:
             lines += ["Coding: " + "; ".join(
-                f"{letters[f]} = ({'log10 ' if f in spec.log_factors else ''}{spec.factor(f).label} − {c:.4g}) / {u:.4g}"
+                f"{letters[f]} = ({'log10 ' if f in spec.log_factors else ''}{spec.factor(f).label} "
+                f"{'−' if c >= 0 else '+'} {abs(c):.4g}) / {u:.4g}"
                 for f, c, u in zip(coding.factors, coding.center, coding.unit)) + " (±1 = factorial levels)."]
         return [self._md("\n".join(lines))]
 
