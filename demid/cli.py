@@ -15,6 +15,8 @@ from .errors import InputError
 
 
 def _split(text: str) -> list[str]:
+    if ";" in text:
+        raise InputError(f"'{text}': separate the names with commas, not semicolons")
     return [t.strip() for t in text.split(",") if t.strip()]
 
 
@@ -163,6 +165,9 @@ def cmd_criticize(args) -> int:
     from .surrogate import fit_response
 
     factors = _split(args.factors)
+    if len(_split(args.response)) > 1:
+        raise InputError(f"--response: criticize takes one response, found '{args.response}'; run it once per "
+                         "response")
     table = _load_table(args.data, factors, [args.response])
     alpha = _alpha(table, factors, args.alpha, args.design)
     coding = _design_coding(table, factors, args.design, alpha, args.data)
@@ -190,7 +195,7 @@ def _parse_published(text: str) -> dict:
                                  f"{before}.{item} (pairs are separated by commas)")
             raise InputError(f"--published: expected key=value, found '{item}'")
         if key not in STATISTICS:
-            close = difflib.get_close_matches(key, STATISTICS, n=1)
+            close = [k for k in STATISTICS if k.lower() == key.lower()] or difflib.get_close_matches(key, STATISTICS, n=1)
             hint = f"did you mean '{close[0]}'? " if close else ""
             raise InputError(f"--published: unknown statistic '{key}'; {hint}known: {', '.join(STATISTICS)}")
         if key in out:
@@ -209,6 +214,9 @@ def cmd_check_transcription(args) -> int:
     from .data import read_printed
 
     factors = _split(args.factors)
+    if len(_split(args.response)) > 1:
+        raise InputError(f"--response: criticize takes one response, found '{args.response}'; run it once per "
+                         "response")
     table = _load_table(args.data, factors, [args.response])
     published = _parse_published(args.published)
     result = check_transcription(table, factors, args.response, published,

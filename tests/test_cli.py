@@ -182,3 +182,20 @@ def test_fit_and_criticize_code_a_table_with_a_run_left_out_as_the_whole_design(
     assert proc.returncode == 0, proc.stderr
     fitted = {r["run"]: r["fitted"] for r in json.loads(out.read_text())["runs"]}
     assert [fitted[r] for r in table["run"]] == pytest.approx(ref.fittedvalues.tolist(), rel=1e-9)
+
+
+@pytest.mark.parametrize("args, message", [
+    (["criticize", "--factors", "e;mu_r", "--response", "aor"], r"'e;mu_r': separate the names with commas"),
+    (["criticize", "--factors", "e,mu_r", "--response", "aor,shape"], r"--response: criticize takes one response"),
+    (["fit", "--factors", "e,mu_r", "--responses", "aor,e"], r"'e' is given both as a factor and as a response"),
+    (["fit", "--factors", ",", "--responses", "aor"], r"--factors: no column named"),
+    (["check-transcription", "--factors", "e,mu_r", "--response", "aor", "--published", "R2=0.989"],
+     r"unknown statistic 'R2'; did you mean 'r2'\?"),
+])
+def test_column_options_written_another_way_are_one_line(tmp_path, args, message):
+    import re
+
+    proc = _run(*args, "--data", str(ROOT / "data" / "ccd" / "poraver.csv"), "--out", str(tmp_path / "o.json"))
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and re.search(message, lines[0]), proc.stderr
