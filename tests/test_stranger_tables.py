@@ -798,7 +798,6 @@ def test_a_run_number_too_large_to_be_exact_is_refused(tmp_path):
         read_table(path, ["x1", "x2"], ["y"])
 
 
-
 def test_a_decimal_comma_in_a_flow_mapping_is_named(tmp_path):
     text = (REPO / "config.yaml").read_text(encoding="utf-8")
     assert "aor_only:  {observables: [aor], tolerance: 0.01," in text  # premise
