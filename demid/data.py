@@ -9,10 +9,9 @@ from __future__ import annotations
 
 import csv
 import difflib
-import itertools
 import math
 import re
-from itertools import combinations
+from itertools import combinations, product
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -29,6 +28,7 @@ _DECIMAL_COMMA = re.compile(r"^[+-]?\d*,\d+$")
 _THOUSANDS_OR_DECIMAL = re.compile(r"^[+-]?[1-9]\d{0,2},\d{3}$")
 _FAILED = {"failed", "fail", "error", "crashed", "timeout", "diverged", "aborted", "killed", "unstable"}
 _OK = {"", "ok", "done", "success", "succeeded", "completed", "complete", "finished", "converged", "valid"}
+_NONFINITE = {"nan", "inf", "+inf", "-inf", "infinity", "-infinity"}
 
 
 def _run_failed(status: str, status_column: str, src: str, run: int) -> bool:
@@ -42,7 +42,6 @@ def _run_failed(status: str, status_column: str, src: str, run: int) -> bool:
     raise InputError(f"status '{status}' is neither ok nor failed; write failed for a simulation that did not "
                      f"finish (understood: {', '.join(sorted(_FAILED))}) or ok for one that did (or "
                      f"{', '.join(sorted(w for w in _OK if w))})", source=src, run=run, column=status_column)
-_NONFINITE = {"nan", "inf", "+inf", "-inf", "infinity", "-infinity"}
 
 
 @dataclass
@@ -434,11 +433,11 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
                                  f"where a {k}-factor CCD has {n}: replicated points? A replicated design is not a "
                                  "plain ccd; declare design type custom to fit it as it is", source=src)
             if found[t] != n:
-                key, what = ("design.center_runs", "") if t == "center" else ("design", f" with {n_center_text(design)}")
+                key, what = ("design.center_runs", "") if t == "center" else ("design", f" with {_n_center_text(design)}")
                 raise InputError(f"config key {config_key}.{key}: expected {n} {_POINT_WORDS[t]} run(s) for a "
                                  f"{k}-factor CCD{what}, found {found[t]} ({len(table)} runs in the table)", source=src)
     elif dtype == "factorial":
-        _refuse_incomplete_factorial(table, factors, snapped, config_key, src)
+        _refuse_incomplete_factorial(factors, snapped, config_key, src)
         n_center = int(np.sum(types == "center"))
         if n_center != int(design.get("center_runs", 0)):
             raise InputError(f"config key {config_key}.design.center_runs: expected "
@@ -451,19 +450,18 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
     return coding, types
 
 
-def n_center_text(design: dict) -> str:
+def _n_center_text(design: dict) -> str:
     n = int(design.get("center_runs", 0))
     return f"{n} centre run{'s' if n != 1 else ''}"
 
 
-def _refuse_incomplete_factorial(table: pd.DataFrame, factors: list[str], snapped: np.ndarray, config_key: str,
-                                 src: str) -> None:
+def _refuse_incomplete_factorial(factors: list[str], snapped: np.ndarray, config_key: str, src: str) -> None:
     """A 3^k factorial has every combination of the three levels.  Runs on a subset of them are another
     design: a Box-Behnken design (the edge midpoints) is named; a two-level factorial with centre runs is
     left to the rank check, which says why its squares cannot be fitted."""
     k = len(factors)
     present = {tuple(p) for p in np.round(snapped).astype(int).tolist() if any(p)}
-    full = {p for p in itertools.product((-1, 0, 1), repeat=k) if any(p)}
+    full = {p for p in product((-1, 0, 1), repeat=k) if any(p)}
     missing = sorted(full - present)
     if not missing or all(0 not in p for p in present):
         return
