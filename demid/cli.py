@@ -20,6 +20,11 @@ def _split(text: str) -> list[str]:
     return [t.strip() for t in text.split(",") if t.strip()]
 
 
+def _one_response(text: str, command: str) -> None:
+    if len(_split(text)) > 1:
+        raise InputError(f"--response: {command} takes one response, found '{text}'; run it once per response")
+
+
 def _load_table(path: str, factors: list[str], responses: list[str]):
     from .config import RESERVED_COLUMNS
     from .data import read_table
@@ -165,9 +170,7 @@ def cmd_criticize(args) -> int:
     from .surrogate import fit_response
 
     factors = _split(args.factors)
-    if len(_split(args.response)) > 1:
-        raise InputError(f"--response: criticize takes one response, found '{args.response}'; run it once per "
-                         "response")
+    _one_response(args.response, "criticize")
     table = _load_table(args.data, factors, [args.response])
     alpha = _alpha(table, factors, args.alpha, args.design)
     coding = _design_coding(table, factors, args.design, alpha, args.data)
@@ -195,7 +198,8 @@ def _parse_published(text: str) -> dict:
                                  f"{before}.{item} (pairs are separated by commas)")
             raise InputError(f"--published: expected key=value, found '{item}'")
         if key not in STATISTICS:
-            close = [k for k in STATISTICS if k.lower() == key.lower()] or difflib.get_close_matches(key, STATISTICS, n=1)
+            same_letters = [k for k in STATISTICS if k.lower() == key.lower()]
+            close = same_letters or difflib.get_close_matches(key, STATISTICS, n=1)
             hint = f"did you mean '{close[0]}'? " if close else ""
             raise InputError(f"--published: unknown statistic '{key}'; {hint}known: {', '.join(STATISTICS)}")
         if key in out:
@@ -214,9 +218,7 @@ def cmd_check_transcription(args) -> int:
     from .data import read_printed
 
     factors = _split(args.factors)
-    if len(_split(args.response)) > 1:
-        raise InputError(f"--response: criticize takes one response, found '{args.response}'; run it once per "
-                         "response")
+    _one_response(args.response, "check-transcription")
     table = _load_table(args.data, factors, [args.response])
     published = _parse_published(args.published)
     result = check_transcription(table, factors, args.response, published,
@@ -248,14 +250,14 @@ def _check_design_arguments(args) -> None:
     """Options of ``design`` that would write a sheet or config the rest of demid refuses, or overwrite one
     file with another."""
     from .config import RESERVED_COLUMNS
-    from .design_generation import _NAME, parse_factor
+    from .design_generation import NAME_PATTERN, parse_factor
 
     names = [parse_factor(f).name for f in args.factor] + list(args.response)
     if len(args.factor) < 2:
         raise InputError("--factor: give at least two NAME=LOW:HIGH (admissible sets and surfaces are drawn over "
                          "factor pairs)")
     for name in args.response:
-        if not _NAME.fullmatch(name):
+        if not NAME_PATTERN.fullmatch(name):
             raise InputError(f"--response: '{name}' is not a valid column name (letters, digits, _; starts with a "
                              "letter)")
     repeated = next((n for i, n in enumerate(names) if n in names[:i]), None)
@@ -266,7 +268,7 @@ def _check_design_arguments(args) -> None:
     if reserved:
         raise InputError(f"'{reserved}' names a column demid writes itself (run: the run number, status: ok or "
                          "failed); choose another name")
-    if not _NAME.fullmatch(args.material):
+    if not NAME_PATTERN.fullmatch(args.material):
         raise InputError(f"--material: '{args.material}' is not a valid name (letters, digits, _; starts with a "
                          "letter)")
     if args.seed < 0:

@@ -433,7 +433,8 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
                                  f"where a {k}-factor CCD has {n}: replicated points? A replicated design is not a "
                                  "plain ccd; declare design type custom to fit it as it is", source=src)
             if found[t] != n:
-                key, what = ("design.center_runs", "") if t == "center" else ("design", f" with {_n_center_text(design)}")
+                key, what = (("design.center_runs", "") if t == "center" else
+                             ("design", f" with {_n_center_text(design)}"))
                 raise InputError(f"config key {config_key}.{key}: expected {n} {_POINT_WORDS[t]} run(s) for a "
                                  f"{k}-factor CCD{what}, found {found[t]} ({len(table)} runs in the table)", source=src)
     elif dtype == "factorial":

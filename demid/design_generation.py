@@ -32,7 +32,7 @@ class FactorRange:
 
 
 #: Column and material names the config accepts (its schema's propertyNames pattern).
-_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+NAME_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 
 
 def parse_factor(text: str) -> FactorRange:
@@ -42,7 +42,7 @@ def parse_factor(text: str) -> FactorRange:
     name = name.strip()
     if not (sep and sep2 and name):
         raise InputError(f"--factor: expected NAME=LOW:HIGH, found '{text}'")
-    if not _NAME.fullmatch(name):
+    if not NAME_PATTERN.fullmatch(name):
         raise InputError(f"--factor: '{name}' is not a valid column name (letters, digits, _; starts with a letter)")
     try:
         lo, hi = float(low), float(high)
