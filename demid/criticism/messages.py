@@ -61,7 +61,7 @@ def corner_only_runs(data: _Data, term) -> int:
         return 0
     column = np.prod(np.asarray(data.coded, float) ** np.asarray(term), axis=1)
     carried = int(np.sum(np.abs(column) > 1e-9))
-    return carried if 0 < carried <= data.n / 2 else 0
+    return carried if 0 < carried < data.n else 0  # some runs (axial, centre) must not carry it
 
 
 def _points_text(points: list[dict]) -> str:
