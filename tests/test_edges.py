@@ -166,3 +166,15 @@ def test_summary_lines_carry_best_point_and_extrapolation():
     verdicts = pd.DataFrame(columns=["scenario", "factor", "verdict"])
     assert widen_steps(verdicts, spec, level2) == [
         "Widen the range of x beyond its upper bound (1) and simulate runs there: the best point lies on it."]
+
+
+def test_a_reference_point_beyond_the_search_range_is_said_to_be_outside_it():
+    from demid.criticism.edges import extrapolation_warnings
+    from demid.sampling.domain import Domain
+
+    domain = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0), ())
+    runs = np.array([[0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0], [0.5, 0.5]])
+    inside = extrapolation_warnings(domain, runs, {"a": 0.5, "b": 0.5})
+    assert inside == []
+    beyond = extrapolation_warnings(domain, runs, {"a": 1.5, "b": 0.5})
+    assert any("outside the search range (a = 1.5 (search range 0 to 1))" in w for w in beyond)

@@ -75,6 +75,11 @@ def extrapolation_warnings(domain: Domain, runs: np.ndarray | None, reference_po
         u = (domain.to_search(ref)[0] - lo) / span
         outside = [f"{f} = {_g(float(reference_point[f]))} (runs: {_g(run_lo[i])} to {_g(run_hi[i])})"
                    for i, f in enumerate(domain.factors) if u[i] < z_lo[i] - tol or u[i] > z_hi[i] + tol]
+        beyond = [f"{f} = {_g(float(reference_point[f]))} (search range {_g(domain.lower[i])} to "
+                  f"{_g(domain.upper[i])})" for i, f in enumerate(domain.factors) if u[i] < -tol or u[i] > 1 + tol]
+        if beyond:
+            out.append(f"The reference point lies outside the search range ({'; '.join(beyond)}): no admissible set "
+                       f"or Pareto front can contain it; check its value against the bounds.")
         if outside:
             out.append(f"Extrapolation: the reference point lies outside the range of the runs ({'; '.join(outside)}); "
                        f"its predicted values are extrapolated and its errors are not evidence about the simulation.")
