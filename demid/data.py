@@ -34,9 +34,9 @@ _NONFINITE = {"nan", "inf", "+inf", "-inf", "infinity", "-infinity"}
 def _run_failed(status: str, status_column: str, src: str, run: int) -> bool:
     """Whether a run's status says its simulation failed ('failed (timeout)' does); a status that is neither
     an ok nor a failure word is bad input, since guessing either way would fit or drop the run wrongly."""
-    if status in _OK or status == "nan":  # "nan": an empty status cell written out by pandas
-        return False
     word = re.split(r"[^a-z]+", status, maxsplit=1)[0]
+    if status in _OK or status == "nan" or (word and word in _OK):  # "nan": an empty cell written by pandas
+        return False
     if status in _FAILED or word in _FAILED or status.startswith("time"):
         return True
     raise InputError(f"status '{status}' is neither ok nor failed; write failed for a simulation that did not "
