@@ -193,7 +193,10 @@ def _parse_published(text: str) -> dict:
         key, sep, value = (part.strip() for part in item.partition("="))
         if not sep:
             before = items[index - 1] if index else ""
-            if "=" in before and re.fullmatch(r"\d+", item.strip()) and re.search(r"=\s*[-+]?\d+$", before):
+            if re.fullmatch(r"\d+(\.\d+)?", item) and re.search(r"=\s*[-+]?\d+$", before):
+                if "." in item:  # 1,234.5: a thousands separator
+                    raise InputError(f"--published: '{before},{item}' has a thousands separator; write "
+                                     f"{before}{item} (pairs are separated by commas)")
                 raise InputError(f"--published: '{before},{item}' has a decimal comma; write "
                                  f"{before}.{item} (pairs are separated by commas)")
             raise InputError(f"--published: expected key=value, found '{item}'")
@@ -234,7 +237,7 @@ def cmd_design(args) -> int:
 
     _check_design_arguments(args)
     sheet = generate_sheet(args.type, [parse_factor(f) for f in args.factor], center_runs=args.center_runs,
-                           alpha=args.alpha, seed=args.seed)
+                           alpha=args.alpha or "rotatable", seed=args.seed)
     frame = sheet.to_frame()
     for response in args.response:
         frame[response] = ""
@@ -271,6 +274,9 @@ def _check_design_arguments(args) -> None:
     if not NAME_PATTERN.fullmatch(args.material):
         raise InputError(f"--material: '{args.material}' is not a valid name (letters, digits, _; starts with a "
                          "letter)")
+    if args.alpha is not None and args.type != "ccd":
+        raise InputError(f"--alpha: only a ccd design has an axial distance, not --type {args.type}; leave --alpha "
+                         "out")
     if args.seed < 0:
         raise InputError(f"--seed: must be 0 or more, found {args.seed}")
     if Path(args.out).is_dir():
@@ -339,8 +345,9 @@ def build_parser() -> argparse.ArgumentParser:
                         "the design's outer points (CCD axial points) sit on LOW and HIGH")
     p.add_argument("--center-runs", type=int, default=3, metavar="N",
                    help="number of centre runs in the sheet (factorial: including the grid's centre; default 3)")
-    p.add_argument("--alpha", default="rotatable", metavar="rotatable|face|VALUE",
-                   help="CCD axial distance in coded units: rotatable (2^k)^(1/4), face (1) or a number >= 1")
+    p.add_argument("--alpha", default=None, metavar="rotatable|face|VALUE",
+                   help="CCD axial distance in coded units: rotatable (2^k)^(1/4) (the default), face (1) or a "
+                        "number >= 1; only for --type ccd")
     p.add_argument("--seed", type=int, default=0, metavar="S", help="seed of the randomised run order (default 0)")
     p.add_argument("--response", action="append", default=[], metavar="NAME",
                    help="an empty response column to fill in after simulating (repeatable)")

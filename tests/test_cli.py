@@ -106,6 +106,7 @@ def test_check_transcription_cli_reads_bounds_and_percentages_as_the_config_does
     ("rr2=0.98", r"--published: unknown statistic 'rr2'; did you mean 'r2'\?"),
     ("lof_f=1,78", r"--published: 'lof_f=1,78' has a decimal comma; write lof_f=1\.78"),
     ("r2=0.98,rmse", r"--published: expected key=value, found 'rmse'"),
+    ("rmse=1,234.5", r"--published: 'rmse=1,234\.5' has a thousands separator; write rmse=1234\.5"),
 ])
 def test_check_transcription_cli_refuses_an_impossible_repeated_or_unknown_statistic(tmp_path, published, message):
     import re

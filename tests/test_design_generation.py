@@ -76,14 +76,16 @@ def test_randomised_order_and_same_seed_same_sheet():
     ("ccd", ["a=0:1", "b=0:1"], "rotatable", 5),
     ("ccd", ["a=0:1", "b=0:1", "c=1:3"], "face", 2),
     ("ccd", ["a=0:1", "b=0:1", "c=1:3"], "1.5", 4),
-    ("box_behnken", ["a=0:1", "b=0:1", "c=1:3"], "rotatable", 3),
-    ("box_behnken", ["a=0:1", "b=0:1", "c=1:3", "d=5:9"], "rotatable", 2),
-    ("factorial", ["a=0:1", "b=-1:1"], "rotatable", 2),
+    ("box_behnken", ["a=0:1", "b=0:1", "c=1:3"], None, 3),
+    ("box_behnken", ["a=0:1", "b=0:1", "c=1:3", "d=5:9"], None, 2),
+    ("factorial", ["a=0:1", "b=-1:1"], None, 2),
 ])
 def test_cli_sheet_validates_as_its_design(tmp_path, args):
     dtype, factors, alpha, centres = args
-    cmd = ["design", "--type", dtype, "--center-runs", str(centres), "--alpha", alpha, "--seed", "3",
+    cmd = ["design", "--type", dtype, "--center-runs", str(centres), "--seed", "3",
            "--response", "y", "--out", "sheet.csv", "--config-out", "study.yaml"]
+    if alpha is not None:  # a CCD's axial distance; other designs refuse --alpha
+        cmd += ["--alpha", alpha]
     for f in factors:
         cmd += ["--factor", f]
     proc = _run(*cmd, cwd=tmp_path)
@@ -136,6 +138,8 @@ def test_a_sheet_with_a_moved_point_does_not_validate(tmp_path):
     (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--center-runs", "0"], "at least 1"),
     (["--type", "cube", "--factor", "a=0:1"], "invalid choice"),
     (["--type", "ccd"], "at least two"),
+    (["--type", "box_behnken", "--factor", "a=0:1", "--factor", "b=0:1", "--factor", "c=0:1", "--alpha", "face"],
+     "only a ccd design has an axial distance"),
     (["--type", "ccd", "--factor", "a=0:1"], "at least two"),
     (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--response", "a"], "more than once"),
     (["--type", "ccd", "--factor", "run=0:1", "--factor", "b=0:1"], "'run' names a column demid writes itself"),
