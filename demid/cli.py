@@ -26,7 +26,7 @@ def _one_response(text: str, command: str) -> None:
 
 
 def _load_table(path: str, factors: list[str], responses: list[str]):
-    from .config import RESERVED_COLUMNS
+    from .config import reserved_column_problem
     from .data import read_table
 
     if not factors or not responses:
@@ -35,10 +35,9 @@ def _load_table(path: str, factors: list[str], responses: list[str]):
     both = sorted(set(factors) & set(responses))
     if both:
         raise InputError(f"'{both[0]}' is given both as a factor and as a response")
-    reserved = [c for c in [*factors, *responses] if c in RESERVED_COLUMNS]
+    reserved = reserved_column_problem([*factors, *responses])
     if reserved:
-        raise InputError(f"'{reserved[0]}' names a column demid reads itself (run: the run number, status: ok or "
-                         "failed), not a factor or response")
+        raise InputError(reserved)
     table, warnings = read_table(path, factors, responses)
     for w in warnings:
         print(f"demid: warning: {w}", file=sys.stderr)
@@ -253,16 +252,14 @@ def _check_design_arguments(args) -> None:
     """Options of ``design`` that would write a sheet or config the rest of demid refuses, or overwrite one
     file with another."""
     from .config import RESERVED_COLUMNS
-    from .design_generation import NAME_PATTERN, parse_factor
+    from .design_generation import check_name, parse_factor
 
     names = [parse_factor(f).name for f in args.factor] + list(args.response)
     if len(args.factor) < 2:
         raise InputError("--factor: give at least two NAME=LOW:HIGH (admissible sets and surfaces are drawn over "
                          "factor pairs)")
     for name in args.response:
-        if not NAME_PATTERN.fullmatch(name):
-            raise InputError(f"--response: '{name}' is not a valid column name (letters, digits, _; starts with a "
-                             "letter)")
+        check_name(name, "--response")
     repeated = next((n for i, n in enumerate(names) if n in names[:i]), None)
     if repeated:
         raise InputError(f"'{repeated}' is given more than once among --factor and --response; each column needs "
@@ -271,9 +268,7 @@ def _check_design_arguments(args) -> None:
     if reserved:
         raise InputError(f"'{reserved}' names a column demid writes itself (run: the run number, status: ok or "
                          "failed); choose another name")
-    if not NAME_PATTERN.fullmatch(args.material):
-        raise InputError(f"--material: '{args.material}' is not a valid name (letters, digits, _; starts with a "
-                         "letter)")
+    check_name(args.material, "--material", "name")
     if args.alpha is not None and args.type != "ccd":
         raise InputError(f"--alpha: only a ccd design has an axial distance, not --type {args.type}; leave --alpha "
                          "out")

@@ -148,6 +148,13 @@ def _refuse_non_finite(node, path: list, source: str) -> None:
 #: Table columns with a meaning of their own: the run number and the run's status.
 RESERVED_COLUMNS = ("run", "status")
 
+
+def reserved_column_problem(names) -> str:
+    """Why one of ``names`` cannot be a factor or response ("" when none is reserved)."""
+    reserved = [n for n in names if n in RESERVED_COLUMNS]
+    return (f"'{reserved[0]}' names a column demid reads itself (run: the run number, status: ok or failed), not "
+            "a factor or response" if reserved else "")
+
 # Evaluation points per material held in memory at once (2**24: about 4096**2 or 256**3).
 MAX_GRID_NODES = 2 ** 24
 
@@ -316,11 +323,10 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
         if clash:
             raise InputError(f"config key {key}: names used both as factor and response: "
                              f"{', '.join(sorted(clash))}", source=source)
-        reserved = sorted(set(RESERVED_COLUMNS) & (set(factors) | set(responses)))
+        reserved = reserved_column_problem(sorted(set(factors) | set(responses)))
         if reserved:
-            raise InputError(f"config key {key}: '{reserved[0]}' names a column demid reads itself (run: the run "
-                             f"number, status: ok or failed), not a factor or response; rename that column in "
-                             f"the table and the config", source=source)
+            raise InputError(f"config key {key}: {reserved}; rename that column in the table and the config",
+                             source=source)
         for rname, resp in responses.items():
             if "target" in resp and resp["target"] == 0:
                 raise InputError(f"config key {key}.responses.{rname}.target: a relative tolerance needs a "

@@ -35,6 +35,12 @@ class FactorRange:
 NAME_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 
 
+def check_name(name: str, option: str, what: str = "column name") -> None:
+    """Refuse a name the config would refuse (its schema's propertyNames pattern), naming the option."""
+    if not NAME_PATTERN.fullmatch(name):
+        raise InputError(f"{option}: '{name}' is not a valid {what} (letters, digits, _; starts with a letter)")
+
+
 def parse_factor(text: str) -> FactorRange:
     """``NAME=LOW:HIGH`` -> FactorRange; raises InputError naming the option."""
     name, sep, rng = text.partition("=")
@@ -42,8 +48,7 @@ def parse_factor(text: str) -> FactorRange:
     name = name.strip()
     if not (sep and sep2 and name):
         raise InputError(f"--factor: expected NAME=LOW:HIGH, found '{text}'")
-    if not NAME_PATTERN.fullmatch(name):
-        raise InputError(f"--factor: '{name}' is not a valid column name (letters, digits, _; starts with a letter)")
+    check_name(name, "--factor")
     try:
         lo, hi = float(low), float(high)
     except ValueError:

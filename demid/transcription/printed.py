@@ -16,6 +16,7 @@ import pandas as pd
 
 from ..design import parse_term, term_name
 from ..errors import InputError
+from ..published_values import out_of_range
 
 if TYPE_CHECKING:
     from ..design import Term
@@ -335,8 +336,4 @@ def impossible_published(stat: str, raw, *, where: str) -> str:
         return ""  # coefficients and decimals are read with the coefficients
     value = parse_printed(raw, where=where).value
     low, high, name = _PUBLISHED_RANGES.get(stat, (-np.inf, np.inf, stat))
-    if low <= value <= high:
-        return ""
-    hint = f"; written in percent? {value:g} % is {value / 100:g}" if 1 < value <= 100 else ""
-    bounds = "it cannot be negative" if np.isinf(high) else f"it lies between {low:g} and {high:g}"
-    return f"{raw} is not a possible {name} ({bounds}){hint}"
+    return out_of_range(raw, value, low, high, name)
