@@ -18,8 +18,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .design import (Coding, classify_points, model_matrix, model_units, nominal_levels, quadratic_terms,
-                     rotatable_alpha, term_name)
+from .design import (Coding, ccd_points, classify_points, model_matrix, model_units, nominal_levels,
+                     quadratic_terms, rotatable_alpha, term_name)
 from .errors import InputError
 from .spec import as_spec
 
@@ -432,6 +432,8 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
                 raise InputError(f"config key {config_key}.design: the table has {found[t]} {_POINT_WORDS[t]} runs "
                                  f"where a {k}-factor CCD has {n}: replicated points? A replicated design is not a "
                                  "plain ccd; declare design type custom to fit it as it is", source=src)
+        _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src)
+        for t, n in expected.items():
             if found[t] != n:
                 key, what = (("design.center_runs", "") if t == "center" else
                              ("design", f" with {_n_center_text(design)}"))
@@ -444,11 +446,83 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
             raise InputError(f"config key {config_key}.design.center_runs: expected "
                              f"{design.get('center_runs', 0)} centre runs, found {n_center}", source=src)
     elif dtype == "box_behnken":
-        n_center = int(np.sum(types == "center"))
+        n_edge, n_center = int(np.sum(types == "edge")), int(np.sum(types == "center"))
+        if n_edge > 2 * k * (k - 1) and n_edge % (2 * k * (k - 1)) == 0:
+            raise InputError(f"config key {config_key}.design: the table has {n_edge} edge-midpoint runs where a "
+                             f"{k}-factor Box-Behnken design has {2 * k * (k - 1)}: replicated points? A replicated "
+                             "design is not a plain box_behnken; declare design type custom to fit it as it is",
+                             source=src)
+        _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src)
         if n_center != int(design.get("center_runs", 0)):
             raise InputError(f"config key {config_key}.design.center_runs: expected "
                              f"{design.get('center_runs', 0)} centre runs, found {n_center}", source=src)
     return coding, types
+
+
+def _design_points(design: dict, k: int) -> np.ndarray:
+    """The coded non-centre points of a CCD or Box-Behnken design, each once."""
+    if design["type"] == "ccd":
+        return ccd_points(k, float(design.get("alpha", 1.0)), center_runs=0)
+    edges = []
+    for i, j in combinations(range(k), 2):
+        for a, b in product((-1.0, 1.0), repeat=2):
+            point = np.zeros(k)
+            point[i], point[j] = a, b
+            edges.append(point)
+    return np.array(edges)
+
+
+def _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src) -> None:
+    """Each factorial, axial or edge point of a CCD or Box-Behnken design is run once.  A run on another run's
+    point with the design's point beside it empty is a factor value typed as another level (15 typed 5): the
+    point counts still match, and the two runs would be fitted as replicates.  Name both runs, the empty point
+    and, where one factor tells them apart, the column and the value that restores the design."""
+    k = len(factors)
+    key = [tuple(np.round(p, 6)) for p in snapped]
+    expected = [tuple(np.round(p, 6)) for p in _design_points(design, k)]
+    rows_at = {p: [i for i, q in enumerate(key) if q == p] for p in expected}
+    missing = [p for p in expected if not rows_at[p]]
+    repeated = [p for p in expected if len(rows_at[p]) > 1]
+    if not missing and not repeated:
+        return
+    runs = table["run"].to_numpy()
+
+    def shown(point) -> str:
+        return ", ".join(f"{f} {_printed_level(table, f, j, snapped, point[j], coding, log_factors):.6g}"
+                         for j, f in enumerate(factors))
+
+    name = {"ccd": "CCD", "box_behnken": "Box-Behnken design"}[design["type"]]
+    if repeated:
+        point = repeated[0]
+        at = [int(runs[i]) for i in rows_at[point]]
+        what = f"{'both' if len(at) == 2 else f'all {len(at)}'} are the point ({shown(point)}), which a {name} runs once"
+        near = [p for p in missing if sum(a != b for a, b in zip(p, point)) == 1]
+        if len(near) == 1:
+            j = next(j for j in range(k) if near[0][j] != point[j])
+            value = _printed_level(table, factors[j], j, snapped, near[0][j], coding, log_factors)
+            raise InputError(f"{what}, and the design's point ({shown(near[0])}) has no run: in one of them "
+                             f"{factors[j]} is likely {value:.6g}, typed as another level", source=src, run=at,
+                             column=factors[j])
+        tail = (f"; the design's point ({shown(missing[0])})" + (f" and {len(missing) - 1} more" if len(missing) > 1
+                else "") + " has no run" if missing else
+                "; a replicated point makes it another design: declare design type custom to fit it as it is")
+        raise InputError(f"{what}{tail}", source=src, run=at)
+    more = f" and {len(missing) - 1} more" if len(missing) > 1 else ""
+    raise InputError(f"the {name}'s point ({shown(missing[0])}){more} has no run ({len(table)} runs in the table); "
+                     "keep a failed run in the table with status failed, or declare design type custom to fit the "
+                     "runs as they are", source=src)
+
+
+def _printed_level(table, f, j, snapped, level, coding, log_factors) -> float:
+    """A coded level of factor ``f`` in its units, as the runs at that level print it."""
+    printed = table[f].to_numpy(dtype=float)[np.isclose(snapped[:, j], level)]
+    if printed.size:
+        return float(printed[0])
+    point = np.zeros(snapped.shape[1])
+    point[j] = level
+    value = coding.to_actual(point)[j]
+    # the level an axial run alone holds, from an alpha printed to 5 decimals: 5 digits are all it knows
+    return float(f"{10 ** value if f in log_factors else value:.5g}")
 
 
 def _n_center_text(design: dict) -> str:
@@ -753,14 +827,30 @@ def refuse_likely_typos(validated: ValidatedTable, material: str, mat_cfg: dict,
     confirmed = set(spec.confirmed_values)
     printed = read_printed(Path(base_dir) / mat_cfg["data"], validated.table)
     # Stopping a run needs stronger evidence than the report's warning (family-wise 1 %, not 5 %).
-    flags = likely_typos(validated, spec, printed, family_alpha=0.01)
+    # A dropped digit stops the run too (29.4 for 129.4); the report's screen keeps its three kinds.
+    flags = likely_typos(validated, spec, printed, family_alpha=0.01,
+                         kinds=("transposition", "decimal_shift", "sign_lost", "digit_dropped"))
     for flag in flags:
         run, column = int(flag["run"]), flag["column"]
         if (run, column) in confirmed or not _repair_explains(flag):
             continue
         found = printed.loc[validated.table["run"].to_numpy() == run, column].iloc[0]
         raise InputError(f"{found} looks like {_shortest(flag['suggested'])} "
-                         f"with {SLIP_WORDS[flag['kind']]}; fix the cell, or confirm the value "
+                         f"with {SLIP_WORDS[flag['kind']]}{_other_repairs_text(flag)}, or confirm the value "
                          f"with confirmed_values: [{{run: {run}, column: {column}}}]",
                          source=src, run=run, column=column)
     return flags
+
+
+def _other_repairs_text(flag: dict) -> str:
+    """Other repairs that fit the other runs as well, so that a user does not type in a guess: 10.91154 reads
+    as 109.1154 with the point shifted, but 100.91154 with a 0 dropped fits better."""
+    from .transcription.typos import SLIP_WORDS
+
+    others = flag.get("other_repairs", [])
+    if not others:
+        return "; fix the cell"
+    named = [f"{_shortest(c['value'])} ({SLIP_WORDS[c['kind']]})" for c in others[:2]]
+    shown = (", ".join(named) + f" and {len(others) - 2} more" if len(others) > 2 else " and ".join(named))
+    return (f", but {shown} {'fits' if len(others) == 1 else 'fit'} the other runs as well (predicted "
+            f"{flag['predicted_from_other_runs']:.4g}); check the cell against the source")

@@ -22,7 +22,9 @@ class InputError(Exception):
         where = []
         if self.source is not None:
             where.append(str(self.source))
-        if self.run is not None:
+        if isinstance(self.run, (list, tuple)):
+            where.append("runs " + ", ".join(map(str, self.run[:-1])) + f" and {self.run[-1]}")
+        elif self.run is not None:
             where.append(f"run {self.run}")
         if self.column is not None:
             where.append(f"column '{self.column}'")

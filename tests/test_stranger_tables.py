@@ -807,3 +807,83 @@ def test_a_decimal_comma_in_a_flow_mapping_is_named(tmp_path):
     with pytest.raises(InputError, match=r"scenarios\.aor_only: Additional properties are not allowed \(1 was "
                                          r"unexpected\); a number written with a decimal comma\?"):
         load_config(path, base_dir=REPO)
+
+
+def _duplicating_slips(coded):
+    """(row, factor, level) such that setting that one factor of that non-centre run to that level makes it
+    another non-centre run's point: a factor value typed as another run's level that leaves every run a point
+    of the design and every point count as it was."""
+    keys = [tuple(p) for p in coded]
+    out = []
+    for i, p in enumerate(coded):
+        if not np.any(p):
+            continue
+        for j in range(coded.shape[1]):
+            for level in np.unique(coded[:, j]):
+                q = p.copy()
+                q[j] = level
+                if level != p[j] and tuple(q) in keys and np.any(q):
+                    out.append((i, j, float(level)))
+    return out
+
+
+@pytest.mark.parametrize("design_name", ["ccd2", "ccd3", "face3", "bbd3", "bbd4"])
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_factor_cell_that_makes_a_run_another_runs_point_is_located(tmp_path, design_name, seed):
+    """Every run is a point and every point count matches, yet one point is run twice and one not at all
+    (gamma 15 typed 5): the two runs would be fitted as replicates.  The error names both runs, the column
+    and the value that restores the design; the table before the slip validates."""
+    from demid.design_generation import box_behnken_points
+
+    k = int(design_name[-1])
+    if design_name.startswith("bbd"):
+        coded, design = box_behnken_points(k, 3), {"type": "box_behnken", "center_runs": 3}
+    else:
+        alpha = 1.0 if design_name.startswith("face") else round((2 ** k) ** 0.25, 5)
+        coded, design = ccd_points(k, alpha, 3), {"type": "ccd", "alpha": alpha, "center_runs": 3}
+    cfg, coded_order, unit, centre = _write_design(tmp_path, coded, [0.1] * k, [0.9] * k, design, seed=seed)
+    validate_material("m", cfg)
+    rng = np.random.default_rng(seed)
+    slips = _duplicating_slips(coded_order)
+    row, j, level = slips[int(rng.integers(len(slips)))]
+    twin = next(i for i, p in enumerate(coded_order) if i != row and p[j] == level
+                and np.all(np.delete(p, j) == np.delete(coded_order[row], j)))
+    path = Path(cfg["data"])
+    lines = path.read_text().splitlines()
+    cells = lines[row + 1].split(",")
+    truth = float(cells[1 + j])
+    cells[1 + j] = f"{centre[j] + level * unit[j]:.6f}"
+    lines[row + 1] = ",".join(cells)
+    path.write_text("\n".join(lines) + "\n")
+    runs = sorted((row + 1, twin + 1))
+    with pytest.raises(InputError, match=rf"t\.csv, runs {runs[0]} and {runs[1]}, column 'x{j + 1}': both are the "
+                                         rf"point \(.*\), which a .* runs once, and the design's point \(.*\) has no "
+                                         rf"run: in one of them x{j + 1} is likely (\S+), typed as another "
+                                         r"level$") as raised:
+        validate_material("m", cfg)
+    assert float(re.search(r"is likely (\S+),", str(raised.value)).group(1)) == pytest.approx(truth, rel=1e-4)
+
+
+@pytest.mark.parametrize("design_name", ["ccd3", "bbd3"])
+def test_a_design_point_left_out_or_run_twice_is_named(tmp_path, design_name):
+    """A Box-Behnken table was checked for its centre runs alone: a missing edge run or a repeated one passed."""
+    from demid.design_generation import box_behnken_points
+
+    if design_name == "bbd3":
+        coded, design = box_behnken_points(3, 3), {"type": "box_behnken", "center_runs": 3}
+    else:
+        coded, design = ccd_points(3, 1.68179, 3), {"type": "ccd", "alpha": 1.68179, "center_runs": 3}
+    cfg, coded_order, _, _ = _write_design(tmp_path, coded, [0.1] * 3, [0.9] * 3, design)
+    path = Path(cfg["data"])
+    lines = path.read_text().splitlines()
+    row = int(np.flatnonzero(np.any(coded_order != 0, axis=1))[0])
+    path.write_text("\n".join(lines[:row + 1] + lines[row + 2:]) + "\n")
+    with pytest.raises(InputError, match=rf"t\.csv: the .*'s point \(x1 .*\) has no run \({len(coded) - 1} runs in the table\); "
+                                         r"keep a failed run in the table with status failed"):
+        validate_material("m", cfg)
+    cells = lines[row + 1].split(",")
+    path.write_text("\n".join(lines + [",".join(["99"] + cells[1:])]) + "\n")
+    with pytest.raises(InputError, match=rf"t\.csv, runs {row + 1} and 99: both are the point \(.*\), which a .* runs "
+                                         r"once; a replicated point makes it another design: declare design type "
+                                         r"custom"):
+        validate_material("m", cfg)

@@ -139,3 +139,55 @@ def test_demo_tables_do_not_trip_the_typo_stop():
     config = load_config("config.yaml")
     for name, mat in config["materials"].items():
         assert refuse_likely_typos(validate_material(name, mat), name, mat) == []
+
+
+@pytest.mark.parametrize("seed", [21, 22, 23, 24, 25, 26])
+def test_a_dropped_leading_digit_stops_with_the_digit_restored(tmp_path, seed):
+    """62.31 typed 2.31: a dropped digit stops validation like a shifted point (it passed silently); the one
+    repair that fits is named without hedging."""
+    rng = np.random.default_rng(seed)
+    _study(tmp_path, seed)
+    path = tmp_path / "tables" / "m.csv"
+    original = "40.5"
+    while original[1] == "0":  # 40.43 typed 0.43 reads as 43 with the point shifted as well as a dropped 4
+        run, column = int(rng.integers(1, 14)), ["y1", "y2"][int(rng.integers(2))]
+        original = next(ln.split(",")[["run", "a", "b", "y1", "y2"].index(column)]
+                        for ln in path.read_text().splitlines()[1:] if ln.split(",")[0] == str(run))
+    _slip(tmp_path, run, column, original[1:])
+    with pytest.raises(InputError) as err:
+        _validate(tmp_path)
+    assert str(err.value).startswith(f"tables/m.csv, run {run}, column '{column}': {original[1:]} looks like "
+                                     f"{float(original):g} with a digit dropped; fix the cell")
+
+
+@pytest.mark.parametrize("seed", [31, 32, 33, 34, 35, 36])
+def test_a_repair_that_is_one_guess_among_several_is_not_told_as_the_fix(tmp_path, seed):
+    """100.91 typed 10.91 on a response near 103: the shifted point (109.1) is the commonest slip, but dropped
+    digits (100.91, 102.91, ...) fit the other runs as well or better, so typing in the named value would be
+    a guess.  The message says the repairs do not single one out; a lone fitting repair is told plainly."""
+    rng = np.random.default_rng(seed)
+    _study(tmp_path, seed)
+    path = tmp_path / "tables" / "m.csv"
+    lines = path.read_text().splitlines()
+    noise = rng.normal(0, 1.5, len(lines) - 1)
+    lines[1:] = [",".join(c[:3] + [f"{103 + e:.2f}"] + c[4:]) for c, e in zip((ln.split(",") for ln in lines[1:]), noise)]
+    path.write_text("\n".join(lines) + "\n")
+    run = int(rng.integers(1, 14))
+    _slip(tmp_path, run, "y1", "10.91")
+    with pytest.raises(InputError) as err:
+        _validate(tmp_path)
+    message = str(err.value)
+    named = float(message.split(" looks like ")[1].split(" ")[0])
+    # the other runs' prediction, from statsmodels on the actual units (a quadratic is invariant to the coding)
+    import pandas as pd
+    import statsmodels.formula.api as smf
+
+    table = pd.read_csv(path)
+    others = table[table["run"] != run]
+    fit = smf.ols("y1 ~ a + b + I(a**2) + I(b**2) + a:b", data=others).fit()
+    predicted = float(fit.predict(table[table["run"] == run]).iloc[0])
+    if abs(100.91 - predicted) < abs(named - predicted) - 1:
+        # the true value fits clearly better than the one named: the message may not tell it as the fix
+        assert "fit the other runs as well" in message and "check the cell against the source" in message, message
+        assert "fix the cell" not in message
+    assert f"confirmed_values: [{{run: {run}, column: y1}}]" in message

@@ -185,8 +185,15 @@ def likely_typos(validated, material, printed: pd.DataFrame | None = None, *,
                        if kind in kinds and abs(value - loo_pred) <= 3 * se]
             best = min(fitting)[1:] if fitting else None
             if best is not None:
+                # Other slips that fit, farther than the prediction's error from the named one: those that fit
+                # better, and those of a slip as common (61.31 beside 62.31 for 6.31). The named repair is
+                # then a guess among them, and the message says so.
+                rivals = sorted((abs(value - loo_pred), value, kind) for kind, _, value in single_cell_slips(str(text))
+                                if abs(value - loo_pred) <= 3 * se and abs(value - best[2]) > se
+                                and (abs(value - loo_pred) < best[0] or _KIND_RANK[kind] <= _KIND_RANK[best[1]]))
                 flags.append({"run": _jsonable(run), "column": response, "found": float(observed[i]),
                               "suggested": best[2], "kind": best[1], "student_resid": float(student),
+                              "other_repairs": [{"value": value, "kind": kind} for _, value, kind in rivals],
                               "predicted_from_other_runs": float(loo_pred),
                               "message": f"{spec.data}, run {_jsonable(run)}, column '{response}': "
                                          f"{text} is far from the fit of the other runs (studentised residual "
