@@ -268,6 +268,9 @@ def _check_design_arguments(args) -> None:
     if reserved:
         raise InputError(f"'{reserved}' names a column demid writes itself (run: the run number, status: ok or "
                          "failed); choose another name")
+    if "std_order" in names:
+        raise InputError("'std_order' names a column of the run sheet (the design's standard order); choose another "
+                         "name")
     check_name(args.material, "--material", "name")
     if args.alpha is not None and args.type != "ccd":
         raise InputError(f"--alpha: only a ccd design has an axial distance, not --type {args.type}; leave --alpha "

@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 import yaml
 
+from .design import unreadable_alpha
 from .errors import InputError
 
 # Shipped with the package (package data), so a non-editable install validates configs too.
@@ -95,9 +96,10 @@ def _hint(err) -> str:
     """What a likely slip meant: a tolerance written in percent (5 for 0.05)."""
     key = str(err.absolute_path[-1]) if err.absolute_path else ""
     path = list(err.absolute_path)
-    in_tolerances = key in ("tolerance", "sigma_rel") or (len(path) > 1 and path[-2] == "sweep_tolerances")
+    in_tolerances = (key in ("tolerance", "sigma_rel", "max_error")
+                     or (len(path) > 1 and path[-2] == "sweep_tolerances"))
     if in_tolerances and err.validator in ("maximum", "exclusiveMaximum") and isinstance(err.instance, (int, float)):
-        what = "relative measurement errors" if key == "sigma_rel" else "tolerances"
+        what = {"sigma_rel": "relative measurement errors", "max_error": "relative errors"}.get(key, "tolerances")
         return f"; {what} are fractions: {err.instance:g} % is {err.instance / 100:g}"
     return ""
 
@@ -363,6 +365,9 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
         design = mat["design"]
         if design["type"] == "ccd" and design.get("alpha", 1.0) < 1.0:
             raise InputError(f"config key {key}.design.alpha: a CCD needs alpha >= 1", source=source)
+        if design["type"] == "ccd" and unreadable_alpha(design.get("alpha", 1.0)):
+            raise InputError(f"config key {key}.design.alpha: {design['alpha']:g} "
+                             f"{unreadable_alpha(design['alpha'])}", source=source)
         _check_published_ranges(key, responses, source)
         _check_scenario_labels(key, mat.get("scenarios") or {}, source)
     # After the materials: the published numbers are checked against their names.

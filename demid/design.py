@@ -163,6 +163,26 @@ def classify_points(coded: np.ndarray, alpha: float, atol: float = 1e-3) -> np.n
     return np.array(labels)
 
 
+#: Coded distance within which a table's value is read as a level of its design.
+LEVEL_TOLERANCE = 0.02
+
+
+def unreadable_alpha(alpha: float) -> str | None:
+    """Why the levels of a CCD with this axial distance cannot be told apart in its table, or None.
+
+    Closer than twice the level tolerance, axial and factorial levels read as one; beyond its inverse, the
+    factorial levels sit within the tolerance of the centre once the axial ones are taken as +-1.
+    """
+    low, high = 1 + 2 * LEVEL_TOLERANCE, 1 / LEVEL_TOLERANCE
+    if 1 < alpha < low:
+        return (f"puts the axial levels {alpha - 1:.3g} coded units beyond the factorial ones, too close to tell "
+                f"apart; use 1 (face-centred) or at least {low:g}")
+    if alpha > high:
+        return (f"puts the factorial levels within 1/{alpha:g} of the axial half-range from the centre, too close "
+                f"to tell apart; use at most {high:g}")
+    return None
+
+
 def nominal_levels(design_type: str, alpha: float) -> np.ndarray:
     """The coded levels a factor may take in the declared design."""
     if design_type == "ccd":

@@ -18,7 +18,7 @@ from itertools import combinations, product
 import numpy as np
 import pandas as pd
 
-from .design import Coding, ccd_points, rotatable_alpha
+from .design import Coding, ccd_points, rotatable_alpha, unreadable_alpha
 from .errors import InputError
 
 DESIGN_TYPES = ("ccd", "box_behnken", "factorial")
@@ -70,6 +70,8 @@ def parse_alpha(text: str, n_factors: int) -> float:
         raise InputError(f"--alpha: expected rotatable, face or a number, found '{text}'") from None
     if not np.isfinite(value) or value < 1:
         raise InputError(f"--alpha: a CCD needs alpha >= 1, found {text}")
+    if unreadable_alpha(value):
+        raise InputError(f"--alpha {text}: {unreadable_alpha(value)}")
     return value
 
 
@@ -154,13 +156,14 @@ def _check_counts(design_type: str, n_factors: int, center_runs: int) -> None:
 
 
 def _check_recoverable(sheet: RunSheet) -> None:
-    """The pipeline infers the design's levels from the table; make sure it recovers this sheet's coding."""
-    from .data import infer_coding
+    """The pipeline checks the table against its design and infers the levels from it: make sure it accepts
+    this sheet and recovers its coding."""
+    from .data import check_design
 
     frame = sheet.to_frame()
     names = [f.name for f in sheet.factors]
     try:
-        inferred = infer_coding(frame, names, sheet.design_config(), "sheet")
+        inferred = check_design(frame, names, sheet.design_config(), "sheet", None)[0]
     except InputError:
         inferred = None
     if inferred is None or not np.allclose(inferred.center, sheet.coding.center, rtol=1e-9, atol=1e-12):

@@ -76,6 +76,8 @@ def test_randomised_order_and_same_seed_same_sheet():
     ("ccd", ["a=0:1", "b=0:1"], "rotatable", 5),
     ("ccd", ["a=0:1", "b=0:1", "c=1:3"], "face", 2),
     ("ccd", ["a=0:1", "b=0:1", "c=1:3"], "1.5", 4),
+    ("ccd", ["a=0:1", "b=0:1"], "1.04", 3),  # the closest alpha to 1 whose levels are told apart
+    ("ccd", ["a=0:1", "b=0:1", "c=1:3"], "50", 3),  # and the widest
     ("box_behnken", ["a=0:1", "b=0:1", "c=1:3"], None, 3),
     ("box_behnken", ["a=0:1", "b=0:1", "c=1:3", "d=5:9"], None, 2),
     ("factorial", ["a=0:1", "b=-1:1"], None, 2),
@@ -148,6 +150,11 @@ def test_a_sheet_with_a_moved_point_does_not_validate(tmp_path):
     (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--material", "my mat"], "--material: 'my mat'"),
     (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--seed", "-5"], "--seed: must be 0 or more"),
     (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--config-out", "sheet.csv"], "same file as --out"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--response", "std_order"], "'std_order' names a column"),
+    (["--type", "ccd", "--factor", "std_order=0:1", "--factor", "b=0:1"], "'std_order' names a column"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--alpha", "1e9"], "--alpha 1e9: puts the factorial"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--alpha", "70"], "--alpha 70: puts the factorial"),
+    (["--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--alpha", "1.01"], "--alpha 1.01: puts the axial"),
 ])
 def test_bad_input_is_one_line_with_status_2(tmp_path, argv, fragment):
     proc = _run("design", *argv, "--out", "sheet.csv", cwd=tmp_path)

@@ -734,6 +734,25 @@ def test_a_relative_measurement_error_in_percent_gets_the_fraction_as_hint(tmp_p
         _load(tmp_path, mutate)
 
 
+def test_a_pareto_error_bound_in_percent_gets_the_fraction_as_hint(tmp_path):
+    """max_error: 3 meant 3 %; it summarised Pareto intervals for errors below 300 %."""
+    def mutate(c):
+        c["materials"]["paste"]["pareto"]["max_error"] = 3
+    with pytest.raises(InputError, match=r"config key materials\.paste\.pareto\.max_error: 3 is greater than the "
+                                         r"maximum of 1; relative errors are fractions: 3 % is 0\.03$"):
+        _load(tmp_path, mutate)
+
+
+@pytest.mark.parametrize("alpha, fragment", [(1.02, "too close to tell apart; use 1 (face-centred) or at least 1.04"),
+                                             (70.0, "too close to tell apart; use at most 50")])
+def test_a_ccd_alpha_whose_levels_cannot_be_told_apart_names_the_key(tmp_path, alpha, fragment):
+    def mutate(c):
+        c["materials"]["mortar"]["design"]["alpha"] = alpha
+    with pytest.raises(InputError, match=rf"config key materials\.mortar\.design\.alpha: {alpha:g} "
+                                         rf".*{re.escape(fragment)}"):
+        _load(tmp_path, mutate)
+
+
 @pytest.mark.parametrize("reserved", ["status", "run"])
 def test_a_response_or_factor_named_like_a_column_demid_reads_itself_is_refused(tmp_path, reserved):
     def mutate(c):
