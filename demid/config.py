@@ -306,6 +306,11 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
             raise InputError(f"config key {key}.responses: no response has a target; give at least one measured "
                              f"value (e.g. {key}.responses.{next(iter(responses))}.target), or there is nothing "
                              "to calibrate against", source=source)
+        both = next((r for r, resp in responses.items() if "sigma" in resp and "sigma_rel" in resp), None)
+        if both:
+            raise InputError(f"config key {key}.responses.{both}: both sigma ({responses[both]['sigma']:g}) and "
+                             f"sigma_rel ({responses[both]['sigma_rel']:g}) are given; keep the one the measurement "
+                             "reports", source=source)
         if not mat.get("scenarios"):
             targeted = [r for r, resp in responses.items() if "target" in resp]
             raise InputError(f"config key {key}.scenarios: no scenario; admissible sets need at least one, e.g. "

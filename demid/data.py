@@ -132,6 +132,8 @@ def parse_number(cell: str) -> float:
     if _DECIMAL_COMMA.match(s):
         raise ValueError(f"found '{cell.strip()}', a decimal comma; expected a decimal point, e.g. "
                          f"'{s.replace(',', '.')}'")
+    if "_" in s:  # Python reads 1_29.3 as 129.3; a table cell with an underscore is a slip
+        raise ValueError(f"found '{cell.strip()}', a number with an underscore; expected digits only")
     try:
         return float(s)
     except ValueError:
@@ -149,16 +151,20 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
     src = str(path)
     header, rows, line_numbers = read_raw_numbered(path)
     needed = ["run"] + list(factors) + list(responses)
-    for col in needed:
-        if col not in header:
-            same = [h for h in header if h.casefold() == col.casefold()]
-            close = same or difflib.get_close_matches(col, header, n=1, cutoff=0.6)
-            hint = (f"; found '{same[0]}', which differs only in upper/lower case" if same
-                    else f"; found '{close[0]}' — misspelled?" if close else f"; columns found: {', '.join(header)}")
-            raise InputError(f"missing column (expected columns: {', '.join(needed)}){hint}", source=src, column=col)
+    missing = [col for col in needed if col not in header]
     dup_cols = {h for h in header if header.count(h) > 1}
     if dup_cols:
-        raise InputError("column appears more than once", source=src, column=sorted(dup_cols)[0])
+        # a header typed over (d5,d10,d10 for d5,d10,d15): the repeat, then the column it likely stands for
+        hint = f"; '{missing[0]}' is missing: is one of them '{missing[0]}'?" if missing else ""
+        raise InputError(f"column appears more than once in the header{hint}", source=src, column=sorted(dup_cols)[0])
+    for col in missing:
+        same = [h for h in header if h.casefold() == col.casefold()]
+        # a column the table needs under its own name is no misspelling of another
+        spare = [h for h in header if h not in needed]
+        close = same or difflib.get_close_matches(col, spare, n=1, cutoff=0.6)
+        hint = (f"; found '{same[0]}', which differs only in upper/lower case" if same
+                else f"; found '{close[0]}' — misspelled?" if close else f"; columns found: {', '.join(header)}")
+        raise InputError(f"missing column (expected columns: {', '.join(needed)}){hint}", source=src, column=col)
     idx = {h: i for i, h in enumerate(header)}
     has_status = status_column in idx
     warnings: list[str] = []

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import errno
 import json
 import math
 import os
@@ -25,6 +26,8 @@ FIGURE_DPI = 300
 def atomic_path(path: Path | str, suffix: str = ""):
     """Yield a temporary path next to ``path``; rename onto it only if the block succeeds."""
     path = Path(path)
+    if path.is_dir():  # else the rename fails naming the temporary file, not the user's path
+        raise IsADirectoryError(errno.EISDIR, "is a folder; name the file to write", str(path))
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=suffix or path.suffix, dir=path.parent)
     os.close(fd)

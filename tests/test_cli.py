@@ -200,3 +200,16 @@ def test_column_options_written_another_way_are_one_line(tmp_path, args, message
     assert proc.returncode == 2 and "Traceback" not in proc.stderr
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and re.search(message, lines[0]), proc.stderr
+
+
+@pytest.mark.parametrize("command", ["fit", "criticize"])
+def test_out_naming_a_folder_names_the_folder(study_dir, tmp_path, command):
+    """The error named the temporary file the result was written to, not the user's --out."""
+    flag = "--responses" if command == "fit" else "--response"
+    folder = tmp_path / "results"
+    folder.mkdir()
+    proc = _run(command, "--data", str(study_dir / "data" / "m.csv"), "--factors", "a,b", flag, "y1",
+                "--out", str(folder))
+    assert proc.returncode == 2
+    assert proc.stderr.strip() == f"demid: error: {folder}: is a folder; name the file to write"
+    assert list(folder.iterdir()) == []

@@ -147,6 +147,25 @@ def test_ambiguous_thousands_separator_is_not_silently_read_as_decimal_comma(tmp
         read_table(path, ["x1", "x2"], ["y"])
 
 
+def test_a_header_with_a_repeated_name_names_the_repeat_and_the_missing_column(tmp_path):
+    """d5,d10,d10 for d5,d10,d15: the repeat is the slip; 'd5', a column of its own, is no misspelling."""
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,6.0,7.0"], header="run,x1,x2,d5,d10,d10")
+    with pytest.raises(InputError, match=r"t\.csv, column 'd10': column appears more than once in the header; "
+                                         r"'d15' is missing: is one of them 'd15'\?$"):
+        read_table(path, ["x1", "x2"], ["d5", "d10", "d15"])
+    path = _tiny(tmp_path, ["1,0.1,1,5.0,6.0,7.0"], header="run,x1,x2,d5,d10,d1")
+    with pytest.raises(InputError, match=r"column 'd15': missing column .*; found 'd1' — misspelled\?$"):
+        read_table(path, ["x1", "x2"], ["d5", "d10", "d15"])
+
+
+@pytest.mark.parametrize("cell", ["1_29.3", "12_9.3", "_129.3"])
+def test_a_number_with_an_underscore_is_refused(tmp_path, cell):
+    """Python reads 1_29.3 as 129.3; a table cell with an underscore is a slip, not a number."""
+    path = _tiny(tmp_path, [f"1,0.1,1,{cell},ok"])
+    with pytest.raises(InputError, match=rf"run 1, column 'y': .*found '{cell}', a number with an underscore"):
+        read_table(path, ["x1", "x2"], ["y"])
+
+
 def test_line_numbers_count_comment_and_blank_lines(tmp_path):
     path = _tiny(tmp_path, ["# measured 2024-03-01", "1,0.1,1,5.0,ok", "", "# second batch", "2,0.2,2,7.5"])
     with pytest.raises(InputError, match=r"line 6 has 4 cells, the header has 5"):
@@ -731,6 +750,15 @@ def test_a_relative_measurement_error_in_percent_gets_the_fraction_as_hint(tmp_p
         c["materials"]["poraver"]["responses"]["aor"]["sigma_rel"] = 2
     with pytest.raises(InputError, match=r"responses\.aor\.sigma_rel: 2 is greater than the maximum of 1; relative "
                                          r"measurement errors are fractions: 2 % is 0\.02"):
+        _load(tmp_path, mutate)
+
+
+def test_a_response_with_both_sigma_and_sigma_rel_is_refused(tmp_path):
+    """sigma silently won over sigma_rel: which measurement error counts must be the user's choice."""
+    def mutate(c):
+        c["materials"]["poraver"]["responses"]["aor"].update(sigma=0.5, sigma_rel=0.02)
+    with pytest.raises(InputError, match=r"config key materials\.poraver\.responses\.aor: both sigma \(0\.5\) and "
+                                         r"sigma_rel \(0\.02\) are given; keep the one the measurement reports$"):
         _load(tmp_path, mutate)
 
 
