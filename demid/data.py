@@ -423,6 +423,9 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
     k = len(factors)
     _refuse_misplaced_points(table, factors, design, snapped, types, levels, coding, log_factors, src)
     if not counts:
+        if dtype in _DESIGN_POINTS:  # runs may be left out here, but two runs made one point by a slip may not
+            _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src,
+                                               slips_only=True)
         return coding, types
     if dtype == "ccd":
         expected = {"factorial": 2 ** k, "axial": 2 * k,
@@ -478,11 +481,13 @@ def _design_points(design: dict, k: int) -> np.ndarray:
     return np.array(edges)
 
 
-def _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src) -> None:
+def _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src,
+                                       slips_only: bool = False) -> None:
     """Each factorial, axial or edge point of a CCD or Box-Behnken design is run once.  A run on another run's
     point with the design's point beside it empty is a factor value typed as another level (15 typed 5): the
     point counts still match, and the two runs would be fitted as replicates.  Name both runs, the empty point
-    and, where one factor tells them apart, the column and the value that restores the design."""
+    and, where one factor tells them apart, the column and the value that restores the design.  With
+    ``slips_only`` (a table whose failed runs may be left out) only that slip is refused."""
     k = len(factors)
     key = [tuple(np.round(p, 6)) for p in snapped]
     expected = [tuple(np.round(p, 6)) for p in _design_points(design, k)]
@@ -498,17 +503,28 @@ def _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, 
                          for j, f in enumerate(factors))
 
     name = {"ccd": "CCD", "box_behnken": "Box-Behnken design"}[design["type"]]
-    if repeated:
-        point = repeated[0]
+
+    def runs_at(point) -> tuple[list[int], str]:
         at = [int(runs[i]) for i in rows_at[point]]
-        what = f"{'both' if len(at) == 2 else f'all {len(at)}'} are the point ({shown(point)}), which a {name} runs once"
+        return at, (f"{'both' if len(at) == 2 else f'all {len(at)}'} are the point ({shown(point)}), which a {name} "
+                    "runs once")
+
+    # A slip moves one run: each repeat (a pair) has an empty point beside it.  More repeats than empty points,
+    # or a point run three times, is a replicated design, not a slip.
+    slip_like = len(repeated) <= len(missing) and (len(repeated) == 1 or not slips_only)
+    for point in repeated if slip_like else []:
         near = [p for p in missing if sum(a != b for a, b in zip(p, point)) == 1]
-        if len(near) == 1:
+        if len(near) == 1 and len(rows_at[point]) == 2:
             j = next(j for j in range(k) if near[0][j] != point[j])
             value = _printed_level(table, factors[j], j, snapped, near[0][j], coding, log_factors)
+            at, what = runs_at(point)
             raise InputError(f"{what}, and the design's point ({shown(near[0])}) has no run: in one of them "
                              f"{factors[j]} is likely {value:.6g}, typed as another level", source=src, run=at,
                              column=factors[j])
+    if slips_only:
+        return
+    if repeated:
+        at, what = runs_at(repeated[0])
         tail = (f"; the design's point ({shown(missing[0])})" + (f" and {len(missing) - 1} more" if len(missing) > 1
                 else "") + " has no run" if missing else
                 "; a replicated point makes it another design: declare design type custom to fit it as it is")
