@@ -858,8 +858,8 @@ def refuse_likely_typos(validated: ValidatedTable, material: str, mat_cfg: dict,
             continue
         found = printed.loc[validated.table["run"].to_numpy() == run, column].iloc[0]
         raise InputError(f"{found} looks like {_shortest(flag['suggested'])} "
-                         f"with {SLIP_WORDS[flag['kind']]}{_other_repairs_text(flag)}, or confirm the value "
-                         f"with confirmed_values: [{{run: {run}, column: {column}}}]",
+                         f"with {SLIP_WORDS[flag['kind']]}; fix the cell{_other_repairs_text(flag)}, or confirm "
+                         f"the value with confirmed_values: [{{run: {run}, column: {column}}}]",
                          source=src, run=run, column=column)
     return flags
 
@@ -871,8 +871,8 @@ def _other_repairs_text(flag: dict) -> str:
 
     others = flag.get("other_repairs", [])
     if not others:
-        return "; fix the cell"
+        return ""
     named = [f"{_shortest(c['value'])} ({SLIP_WORDS[c['kind']]})" for c in others[:2]]
     shown = (", ".join(named) + f" and {len(others) - 2} more" if len(others) > 2 else " and ".join(named))
-    return (f", but {shown} {'fits' if len(others) == 1 else 'fit'} the other runs as well (predicted "
-            f"{flag['predicted_from_other_runs']:.4g}); check the cell against the source")
+    return (f" after checking it against the source: {shown} {'fits' if len(others) == 1 else 'fit'} the other "
+            f"runs as well (predicted {flag['predicted_from_other_runs']:.4g})")
