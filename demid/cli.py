@@ -39,9 +39,40 @@ def _load_table(path: str, factors: list[str], responses: list[str]):
     if reserved:
         raise InputError(reserved)
     table, warnings = read_table(path, factors, responses)
-    for w in warnings:
+    for w in warnings + _unlisted_factor_warnings(path, table, factors, responses):
         print(f"demid: warning: {w}", file=sys.stderr)
     return table
+
+
+def _unlisted_factor_warnings(path: str, table, factors: list[str], responses: list[str]) -> list[str]:
+    """A column left out of --factors that takes a few levels and differs between runs at one point of the
+    listed factors: those runs are fitted as replicates, and lack of fit is judged against its effect."""
+    import numpy as np
+
+    from .data import parse_number, read_raw
+
+    header, rows, _ = read_raw(path)
+    known = {"run", "status", *factors, *responses}
+    points = [tuple(p) for p in np.round(table[factors].to_numpy(dtype=float), 9)]
+    out = []
+    for j, name in enumerate(header):
+        if name in known:
+            continue
+        try:
+            values = np.array([parse_number(r[j]) for r in rows])
+        except (ValueError, IndexError):
+            continue
+        levels = np.unique(values[np.isfinite(values)])
+        if not 2 <= len(levels) <= 5 or len(levels) >= len(values) / 2:
+            continue  # a response varies from run to run; a factor takes a few levels
+        by_point: dict = {}
+        for point, v in zip(points, values):
+            by_point.setdefault(point, set()).add(v)
+        if any(len(vs) > 1 for vs in by_point.values()):
+            out.append(f"{path}, column '{name}': {len(levels)} levels that differ between runs at the same point "
+                       f"of {', '.join(factors)}, which are fitted as replicates; if '{name}' is a factor, add it "
+                       "to --factors")
+    return out
 
 
 def _alpha(table, factors, alpha, design="ccd"):

@@ -213,3 +213,15 @@ def test_out_naming_a_folder_names_the_folder(study_dir, tmp_path, command):
     assert proc.returncode == 2
     assert proc.stderr.strip() == f"demid: error: {folder}: is a folder; name the file to write"
     assert list(folder.iterdir()) == []
+
+
+def test_a_factor_left_out_of_factors_is_warned_about(study_dir, tmp_path):
+    """--factors a on a table that varies a and b: runs at one level of a become 'replicates' and lack of fit
+    is judged against b's effect.  The warning names b; a response left out (y2) is no factor."""
+    data = str(study_dir / "data" / "m.csv")
+    proc = _run("fit", "--data", data, "--factors", "a", "--responses", "y1", "--out", str(tmp_path / "f.json"))
+    assert proc.returncode == 0, proc.stderr
+    warnings = [ln for ln in proc.stderr.splitlines() if ln.startswith("demid: warning:")]
+    assert len(warnings) == 1 and "column 'b'" in warnings[0] and "add it to --factors" in warnings[0], proc.stderr
+    proc = _run("fit", "--data", data, "--factors", "a,b", "--responses", "y1", "--out", str(tmp_path / "f.json"))
+    assert proc.returncode == 0 and "warning" not in proc.stderr, proc.stderr
