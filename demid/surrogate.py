@@ -12,6 +12,8 @@ import warnings
 from dataclasses import asdict, dataclass, field
 from functools import cached_property
 
+import math
+
 import numpy as np
 import pandas as pd
 
@@ -23,10 +25,47 @@ from .design import LEVERAGE_UNPREDICTABLE, Coding, Term, model_matrix, model_un
 ROUND_OFF = 1e-9
 
 
-def round_off_floor(y) -> float:
-    """Residual size below which a fit of ``y`` is exact to working precision."""
+def printed_quantum(y) -> np.ndarray:
+    """Per value, the place of its last printed digit (1e-4 for 10.1235; 0 throughout when some value carries
+    more than 12 significant digits): the rounding a printed table adds to it is at most half of that.
+
+    A float keeps no trailing zeros (79.9 may have been printed 79.9000, 1200 may be exact to the millimetre),
+    so a value is taken to the column's finest place, or — where the column is printed to significant digits
+    (-1228 beside 29.18) — to the most significant digits any value shows, whichever is coarser.
+    """
     y = np.asarray(y, dtype=float)
-    return ROUND_OFF * float(np.max(np.abs(y))) if y.size else 0.0
+    out = np.zeros(y.shape)
+    valid = np.isfinite(y) & (y != 0)
+    if not valid.any():
+        return out
+    values = y[valid]
+    exponents = np.floor(np.log10(np.abs(values)))
+    own = np.zeros(values.shape)
+    for i, v in enumerate(values):
+        if abs(v) >= 1 and v == round(v):
+            own[i] = 1.0  # a whole number's trailing zeros say nothing: its units
+            continue
+        for digits in range(1, 13):
+            scaled = v * 10.0 ** (digits - 1 - exponents[i])
+            if abs(scaled - round(scaled)) <= 1e-12 * max(1.0, abs(scaled)):  # what reading the digits leaves
+                own[i] = 10.0 ** (exponents[i] - digits + 1)
+                break
+    if np.any(own == 0):
+        return out  # a value carries every digit: the column was not rounded for print
+    significant = np.max(exponents - np.log10(own) + 1)
+    out[valid] = np.maximum(own.min(), 10.0 ** (exponents - significant + 1))
+    return out
+
+
+def round_off_floor(y) -> float:
+    """Residual size below which a fit of ``y`` is exact to working precision — or to the precision ``y`` was
+    printed to: rounding each value to its last digit moves it by at most half that digit, and the residuals
+    of a least-squares fit are never larger in root mean square than what moved the data."""
+    y = np.asarray(y, dtype=float)
+    if not y.size:
+        return 0.0
+    printed = 0.5 * float(np.sqrt(np.mean(printed_quantum(y) ** 2)))
+    return max(ROUND_OFF * float(np.max(np.abs(y))), printed)
 
 
 def round_off_only(residuals, y) -> bool:

@@ -79,3 +79,36 @@ def test_noisy_replicates_keep_their_lack_of_fit_test():
     assert np.isfinite(st.lof_f) and 0 <= st.lof_p <= 1
     note = fit_response(table, ["x1", "x2"], "y", alpha=2 ** 0.5).anova().lof_note
     assert note == ""
+
+
+def _printed(values, digits):
+    """Each value as a table prints it: to ``digits`` significant digits."""
+    return np.array([float(f"{v:.{digits}g}") for v in values])
+
+
+@pytest.mark.parametrize("digits", [4, 6, 8])
+@pytest.mark.parametrize("k,seed,scale", [(2, 11, 1.0), (3, 12, 40.0)])
+def test_an_exact_quadratic_printed_to_a_few_digits_gives_no_findings(k, seed, scale, digits):
+    """A deterministic simulator's exact quadratic, printed to 4-8 significant digits: the residuals are the
+    printing's rounding.  They were read as lack of fit (F 3e291 over zero pure error), 'unexplained' or an
+    'outlier' whose observed and predicted values printed alike."""
+    table = _exact_table(k, seed, scale)
+    table["y"] = _printed(table["y"], digits)
+    factors = [f"x{i + 1}" for i in range(k)]
+    result = criticize(table, factors, "y", n_null=199)
+    assert result.to_frame().empty, result.to_frame()
+    assert result.verdict == "adequate" and "the precision the values are printed to" in result.verdict_detail["message"]
+    assert np.isnan(fit_response(table, factors, "y", alpha=(2 ** k) ** 0.25).statistics().lof_f)
+
+
+@pytest.mark.parametrize("digits", [6, 8])
+def test_a_defect_far_above_the_printed_precision_is_still_found(digits):
+    """The printed-precision floor silences rounding, not a defect: a cubic term 1000 times the last printed
+    digit on a noise-free quadratic is found, and lack of fit's undefined F does not hide it."""
+    table = _exact_table(2, 13, 1.0)
+    x1 = table["x1"].to_numpy()
+    quantum = 10.0 ** (np.floor(np.log10(np.abs(table["y"]).max())) - digits + 1)
+    bump = ((x1 - x1.mean()) / np.ptp(x1)) ** 3
+    table["y"] = _printed(table["y"] + 1000 * quantum * bump / np.abs(bump).max(), digits)
+    result = criticize(table, ["x1", "x2"], "y", n_null=199)
+    assert result.verdict != "adequate", result.verdict_detail["message"]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from demid.design import quadratic_terms
 from demid.io import save_figure
@@ -90,3 +91,48 @@ def test_sets_with_an_unreachable_target_rank_last_without_a_gain():
     ranked = analyse_material(reachable, _linear_material(19.0)[1], tolerances=[0.02]).ranking
     assert ranked["targets_reachable"].all() and ranked["information_gain_bits"].notna().all()
     assert "discrepancy" not in analyse_material(reachable, _linear_material(19.0)[1], tolerances=[0.02]).advice
+
+
+def _same_direction(t1: float, t2: float) -> tuple[dict, dict]:
+    """y1 = y2 = 10 + 10 x on [0, 1]^2: every target in [10, 20] is reachable alone; 12 and 18 together would
+    need x = 0.2 and x = 0.8 at once."""
+    surrogates = {"y1": _linear("y1", 0), "y2": _linear("y2", 0)}
+    cfg = {"data": "t.csv", "design": {"type": "ccd", "alpha": 1.0, "center_runs": 1},
+           "factors": {"x": {"lower": 0.0, "upper": 1.0}, "w": {"lower": 0.0, "upper": 1.0}},
+           "responses": {"y1": {"target": t1}, "y2": {"target": t2}},
+           "scenarios": {"both": {"observables": ["y1", "y2"], "tolerance": 0.02}}}
+    return surrogates, cfg
+
+
+def test_targets_that_cannot_be_met_together_are_a_discrepancy_not_information():
+    """Each target reachable alone, both together at no point: the set's posterior sat at the compromise and
+    ranked first with the most 'information'.  It ranks last without a gain; targets that can be met together
+    (12 and 12.1: x in [0.196, 0.204] and [0.197, 0.206]) keep theirs."""
+    surrogates, cfg = _same_direction(12.0, 18.0)
+    ranking = analyse_material(surrogates, cfg, tolerances=[0.02, 0.1]).ranking.set_index("observables")
+    assert ranking.loc["y1", "targets_reachable"] and ranking.loc["y2", "targets_reachable"]
+    assert not ranking.loc["y1+y2", "targets_reachable"] and np.isnan(ranking.loc["y1+y2", "information_gain_bits"])
+    assert ranking.loc["y1+y2", "rank"] == 3
+    surrogates, cfg = _same_direction(12.0, 12.1)
+    ranking = analyse_material(surrogates, cfg, tolerances=[0.02, 0.1]).ranking.set_index("observables")
+    assert ranking.loc["y1+y2", "targets_reachable"] and np.isfinite(ranking.loc["y1+y2", "information_gain_bits"])
+
+
+def test_the_gain_over_best_subset_is_the_gain_over_that_subset():
+    """best_subset is the proper subset with the smallest feasible fraction; the gain column was taken over the
+    subset with the largest gain instead, so 'Measure X as well: it adds N bits' could name N of another set.
+    Here y1 is narrow at the tolerance but measured loosely (small gain), y2 wide but measured tightly."""
+    surrogates = {"y1": _linear("y1", 0), "y2": _linear("y2", 1)}
+    surrogates["y2"] = Surrogate("y2", ["x", "w"], quadratic_terms(2), np.array([10.0, 0, 2.0, 0, 0, 0]),
+                                 np.zeros((6, 6)), 0.0, 7)
+    cfg = {"data": "t.csv", "design": {"type": "ccd", "alpha": 1.0, "center_runs": 1},
+           "factors": {"x": {"lower": 0.0, "upper": 1.0}, "w": {"lower": 0.0, "upper": 1.0}},
+           "responses": {"y1": {"target": 15.0, "sigma_rel": 0.2}, "y2": {"target": 11.0, "sigma_rel": 0.002}},
+           "scenarios": {"both": {"observables": ["y1", "y2"], "tolerance": 0.02}}}
+    ranking = analyse_material(surrogates, cfg, tolerances=[0.02, 0.1]).ranking.set_index("observables")
+    assert ranking.loc["y1+y2", "best_subset"] == "y1"  # premise: y1 is the narrower set ...
+    assert ranking.loc["y2", "information_gain_bits"] > ranking.loc["y1", "information_gain_bits"]  # ... y2 gains more
+    for name, row in ranking.iterrows():
+        if row["n_observables"] > 1:
+            base = ranking.loc[row["best_subset"], "information_gain_bits"]
+            assert row["gain_vs_best_subset_bits"] == pytest.approx(row["information_gain_bits"] - base), name

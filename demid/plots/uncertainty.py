@@ -82,7 +82,7 @@ def posterior_figure(posteriors: dict, title: str, *, factor_labels: dict[str, s
     intervals = [[] for _ in factors]
     for k, post in enumerate(posts):
         name = join_observables(post.observables)
-        label = (f"{name} (target out of reach: misfit)" if name in unreachable
+        label = (f"{name} (targets out of reach: misfit)" if name in unreachable
                  else f"{name} ({post.information_gain_bits:.2f} bits)")
         for i, ax in enumerate(axes):
             x = post.axes_actual[i]

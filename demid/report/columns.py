@@ -94,8 +94,8 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "best_subset": ("–", "Most informative subset with one observable fewer ('(none)' for single observables)."),
         "gain_vs_best_subset_bits": ("bit", "Information added by the extra observable over best_subset."),
         "rank_by_fraction": ("–", "Rank by smallest feasible fraction instead."),
-        "targets_reachable": ("–", "False when the surrogate of some observable of the set cannot meet its target "
-                                   "anywhere in Ω within the tolerance: the set then measures a discrepancy between "
+        "targets_reachable": ("–", "False when no point of Ω meets the set's targets within the tolerance, one "
+                                   "of them alone or all together: the set then measures a discrepancy between "
                                    "simulation and experiment, not information (information_gain_bits empty), and "
                                    "ranks after every set with reachable targets."),
     },

@@ -196,8 +196,15 @@ class ReportSections:
                                  "admissible, so there are no admissible intervals.")
                 loose = verdicts[(verdicts["scenario"] == widest.label) & (verdicts["verdict"] == "unresolved")]
                 if len(loose):
-                    lines.append(f"The data do not single out this point: {', '.join(loose['factor'])} can take any "
-                                 f"value in the interval above at (almost) the same error.")
+                    # About the widest scenario's set, not the level-2 point: that point may lie outside the set
+                    # (level 2 uses every target) and the error varies across the set.
+                    names = ", ".join(loose["factor"])
+                    them = "it" if len(loose) == 1 else "them"
+                    tail = (" The recommended point is one choice among many." if level2.get("feasible", True)
+                            and level2.get("best_point") else "")
+                    lines.append(f"*{widest.label}* does not pin down {names}: points that meet every one of its "
+                                 f"observables within the tolerance span (almost) the whole search range of {them} "
+                                 f"(the intervals above).{tail}")
                 lines += ["", markdown_table(verdicts, 3)]
             crit = criticism_lines(info, spec)
             if crit:
@@ -408,7 +415,8 @@ class ReportSections:
                                   "halves; the Kullback–Leibler divergence from the uniform prior on Ω to the "
                                   "posterior). *Added to the best smaller set* is what the last observable brings "
                                   "beyond the best set without it"
-                                  + ("; sets with a target out of reach come last, without a gain: their "
+                                  + ("; sets whose targets cannot be met (one alone or all together) come "
+                                     "last, without a gain: their "
                                      "posterior measures a discrepancy between simulation and experiment, not "
                                      "information" if out_of_reach else "") + ".\n\n"
                                   + markdown_table(ranking_display(sub))

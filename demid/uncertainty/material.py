@@ -137,8 +137,8 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
                      "exact for the fitted polynomials (roots along lines, span ends by bisection), one evaluation per scenario "
                      "and tolerance.")
     if unreachable:
-        notes.append("Sets with a target out of reach (" + ", ".join(unreachable) + "): no point of the search range "
-                     "meets that target within the tolerance, so their posterior measures the misfit (a discrepancy "
+        notes.append("Sets with targets out of reach (" + ", ".join(unreachable) + "): no point of the search range "
+                     "meets their targets within the tolerance (one alone, or all together), so their posterior measures the misfit (a discrepancy "
                      "between simulation and experiment), not information; no information gain is given and they "
                      "rank last.")
     if not scenarios:
