@@ -506,3 +506,18 @@ def test_level2_three_readings_detect_but_cannot_always_localise():
             else:
                 named += res.biased_observable == obs
     assert ambiguous > 0 and named + ambiguous == 18
+
+
+def test_a_proposed_run_on_a_bound_reads_the_bound():
+    """An alpha printed to 5 digits put a proposed axial run at p = -3.721e-07 below the lower bound 0; a
+    point is given to 4 digits of each factor's range, so it reads 0 (and no -0)."""
+    from demid.criticism.models import _Data
+    from demid.design import Coding
+
+    coding = Coding(("p", "q"), (0.5, 20.0), (0.5 / 1.4142, 10.0 / 1.4142))  # the table's alpha, 1.4142
+    data = _Data("y", ["p", "q"], np.zeros((1, 2)), np.zeros(1), np.ones(1), coding, 1.41421, (),
+                 quadratic_terms(2))
+    assert data.to_actual(np.array([[-1.41421, 0.0]]))[0, 0] < 0  # premise: the round-off below the bound
+    point = data.point_dict(np.array([-1.41421, 1.41421]))
+    assert point == {"p": 0.0, "q": 30.0} and str(point["p"]) == "0.0"
+    assert data.point_dict(np.array([0.5, -0.25])) == {"p": 0.677, "q": 18.23}  # inside: 4 digits of the range

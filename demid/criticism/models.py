@@ -125,8 +125,18 @@ class _Data:
         return x
 
     def point_dict(self, coded_point) -> dict:
+        """A point in actual units to 4 digits of each factor's design range (the lower bound 0 reads 0, not
+        the -3.7e-07 a rounded alpha leaves)."""
         x = self.to_actual(coded_point)[0]
-        return {f: float(f"{v:.4g}") for f, v in zip(self.factors, x)}
+        ends = self.to_actual(np.array([[-self.alpha] * len(self.factors), [self.alpha] * len(self.factors)]))
+        out = {}
+        for f, v, lo, hi in zip(self.factors, x, ends[0], ends[1]):
+            # a log factor spans decades: its small values keep their own digits
+            step = (10.0 ** (math.floor(math.log10(abs(hi - lo))) - 3)
+                    if hi != lo and f not in self.log_factors else 0.0)
+            snapped = round(v / step) * step if step else v
+            out[f] = float(f"{snapped:.4g}") + 0.0  # + 0.0: no -0
+        return out
 
 
 @dataclass(frozen=True)

@@ -76,6 +76,7 @@ def rank_observable_sets(surrogates: dict[str, Surrogate], domain: Domain, obser
         proper = [t for size in range(len(s)) for t in combinations(s, size)]
         best = min(proper, key=lambda t: (frac[t], -gain[t]))
         contraction = 100.0 * (1.0 - frac[s] / frac[best]) if frac[best] > 0 else np.nan
+        contraction = 0.0 if abs(contraction) < 1e-9 else contraction  # the same set: no -1.5e-11 %
         rows.append({
             "observables": join_observables(s), "information_gain_bits": gain[s],
             "feasible_fraction_pct": 100.0 * frac[s], "contraction_pct_vs_best_subset": contraction,
