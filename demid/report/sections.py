@@ -198,8 +198,9 @@ class ReportSections:
                 if len(loose):
                     # About the widest scenario's set, not the level-2 point: that point may lie outside the set
                     # (level 2 uses every target) and the error varies across the set.
-                    names = ", ".join(loose["factor"])
-                    them = "it" if len(loose) == 1 else "them"
+                    factors = list(loose["factor"])
+                    names = ", ".join(factors[:-1]) + " and " + factors[-1] if len(factors) > 1 else factors[0]
+                    them = "it" if len(factors) == 1 else "each"
                     tail = (" The recommended point is one choice among many." if level2.get("feasible", True)
                             and level2.get("best_point") else "")
                     lines.append(f"*{widest.label}* does not pin down {names}: points that meet every one of its "
