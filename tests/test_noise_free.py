@@ -112,3 +112,45 @@ def test_a_defect_far_above_the_printed_precision_is_still_found(digits):
     table["y"] = _printed(table["y"] + 1000 * quantum * bump / np.abs(bump).max(), digits)
     result = criticize(table, ["x1", "x2"], "y", n_null=199)
     assert result.verdict != "adequate", result.verdict_detail["message"]
+
+
+def test_printed_precision_does_not_mask_real_misfit():
+    """Two tables where the misfit is of the order of the last printed digit: replicates 0.045 apart on values
+    printed to 0.1 are real pure error (lack of fit F 354 by statsmodels' cell-means comparison), and a cubic
+    term that leaves axial residuals of +-1 on whole numbers is a defect.  A floor at half the last digit
+    hid both."""
+    import statsmodels.formula.api as smf
+    from statsmodels.stats.anova import anova_lm
+
+    p = ccd_points(2, 1.41421, 5)
+    y = np.round(10 + 2 * p[:, 0] + 1.5 * p[:, 1] + p[:, 0] ** 3, 1)
+    y[-5:] = [10.1, 10.1, 10.1, 10.1, 10.2]
+    table = pd.DataFrame({"run": range(1, 14), "A": 10 + 5 * p[:, 0], "B": 10 + 5 * p[:, 1], "y": y})
+    fit = fit_response(table, ["A", "B"], "y", alpha=1.41421)
+    table["cell"] = table["A"].round(6).astype(str) + "_" + table["B"].round(6).astype(str)
+    ref = anova_lm(smf.ols("y ~ A + B + A:B + I(A**2) + I(B**2)", table).fit(), smf.ols("y ~ C(cell)", table).fit())
+    assert fit.statistics().lof_f == pytest.approx(ref["F"].iloc[1], rel=1e-6) and fit.anova().lof_note == ""
+
+    p = ccd_points(3, 1.68179, 6)
+    y = np.round(100 + 20 * p[:, 0] + 15 * p[:, 1] - 8 * p[:, 2] + 5 * p[:, 0] ** 2 + 0.7 * p[:, 0] ** 3)
+    table = pd.DataFrame({"run": range(1, 21), "A": 10 + 5 * p[:, 0], "B": 10 + 5 * p[:, 1], "C": 10 + 5 * p[:, 2],
+                          "y": y})
+    assert criticize(table, ["A", "B", "C"], "y", n_null=199).verdict != "adequate"
+
+
+@pytest.mark.parametrize("values, quantum", [
+    ([12.3, 10.0, 11.1], [0.1, 0.1, 0.1]),  # fixed decimals: 10.0 lost its zero
+    ([-1228.0, 87.4, 29.18], [1, 0.01, 0.01]),  # four significant digits: 87.40 lost its zero
+    ([5141.0, 22440.0, -789.4, 531.6], [1, 10, 0.1, 0.1]),
+    ([1200.0, 1187.0, 1213.0], [1, 1, 1]),  # whole numbers: units, whatever their trailing zeros
+    ([0.123, 5.5, 12.0], [0.001] * 3),
+    ([1 / 3, 2.0], None),  # a value with every digit: nothing was rounded for print
+])
+def test_the_printed_place_of_each_value(values, quantum):
+    from demid.surrogate import printed_quantum
+
+    found = printed_quantum(values)
+    if quantum is None:
+        assert np.all(found <= 1e-11)
+    else:
+        assert found == pytest.approx(quantum)
