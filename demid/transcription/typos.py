@@ -90,6 +90,21 @@ def single_cell_slips(text: str) -> list[tuple[str, str, float]]:
     return [(kind, candidate, value) for value, (kind, candidate) in best.items()]
 
 
+def _decimals(text: str) -> int:
+    """Digits after the decimal point of a printed number (``1.5e-3`` counts as 0.0015)."""
+    try:
+        exponent = Decimal(str(text).strip().replace("\u2212", "-")).as_tuple().exponent
+    except InvalidOperation:
+        return 0
+    return max(-int(exponent), 0) if isinstance(exponent, int) else 0
+
+
+def _decimal_places(cells) -> int | None:
+    """The most decimals any printed cell of a column shows (None without printed cells)."""
+    places = [_decimals(c) for c in cells if str(c).strip()]
+    return max(places) if places else None
+
+
 def _added_digit_repairs(text: str) -> list[tuple[str, str, float]]:
     """Repairs ``("digit_added", text, value)`` of a cell with one stray digit keyed in (359.17 for 39.17).
 
@@ -206,11 +221,19 @@ def likely_typos(validated, material, printed: pd.DataFrame | None = None, *,
                 text = printed.loc[table["run"].to_numpy() == run, response].iloc[0]
             else:
                 text = repr(float(observed[i]))
+            # A digit dropped from a column printed to two decimals leaves no third one to restore: without
+            # that rule, inserted digits (60.941 for 60.41) cover the values around any cell and every
+            # outlier would read as a slip.
+            places = _decimal_places(printed[response].to_numpy()[ok] if printed is not None else [])
+
+            def possible(kind, candidate):
+                return kind != "digit_dropped" or places is None or _decimals(candidate) <= places
+
             # Of the repairs that fit, the commonest slip (KINDS order), then the closest: a centre run's
             # 500.3 is 50.03 with the point shifted even if a digit swap, 50.3, happens to land closer.
             fitting = [(_KIND_RANK[kind], abs(value - loo_pred), kind, value)
-                       for kind, _, value in single_cell_slips(str(text))
-                       if kind in kinds and abs(value - loo_pred) <= 3 * se]
+                       for kind, candidate, value in single_cell_slips(str(text))
+                       if kind in kinds and abs(value - loo_pred) <= 3 * se and possible(kind, candidate)]
             best = min(fitting)[1:] if fitting else None
             if best is not None:
                 # Other slips that fit, more than twice the prediction's error from the named one: those that
@@ -218,10 +241,16 @@ def likely_typos(validated, material, printed: pd.DataFrame | None = None, *,
                 # 6.31). The named repair is then a guess among them, and the message says so.  (Nearer rivals
                 # would be found for one true decimal shift in six: dropped digits cover the window densely.)
                 repairs = single_cell_slips(str(text)) + _added_digit_repairs(str(text))
-                rivals = sorted((abs(value - loo_pred), value, kind) for kind, _, value in repairs
-                                if abs(value - loo_pred) <= 3 * se and abs(value - best[2]) > 2 * se
-                                and (abs(value - loo_pred) < best[0] - se
-                                     or _KIND_RANK.get(kind, len(KINDS)) <= _KIND_RANK[best[1]]))
+                rivals, seen = [], set()
+                for distance, value, kind in sorted(
+                        (abs(value - loo_pred), value, kind) for kind, candidate, value in repairs
+                        if abs(value - loo_pred) <= 3 * se and abs(value - best[2]) > 2 * se
+                        and possible(kind, candidate)
+                        and (abs(value - loo_pred) < best[0] - se
+                             or _KIND_RANK.get(kind, len(KINDS)) <= _KIND_RANK[best[1]])):
+                    if value not in seen:  # 101.5 from 1001.5 by two keystrokes is one repair
+                        seen.add(value)
+                        rivals.append((distance, value, kind))
                 flags.append({"run": _jsonable(run), "column": response, "found": float(observed[i]),
                               "suggested": best[2], "kind": best[1], "student_resid": float(student),
                               "other_repairs": [{"value": value, "kind": kind} for _, value, kind in rivals],
