@@ -54,6 +54,11 @@ def _unlisted_factor_warnings(path: str, table, factors: list[str], responses: l
     header, rows, _ = read_raw(path)
     known = {"run", "status", *factors, *responses}
     points = [tuple(p) for p in np.round(table[factors].to_numpy(dtype=float), 9)]
+    try:  # the table is in run order, the file perhaps not: pair each run with its own row
+        row_of = {int(parse_number(r[header.index("run")])): r for r in rows}
+        rows = [row_of[int(run)] for run in table["run"]]
+    except (ValueError, KeyError, IndexError):
+        return []
     out = []
     for j, name in enumerate(header):
         if name in known:
@@ -102,13 +107,17 @@ def _design_coding(table, factors, design, alpha, source):
     them, every run one of its points; run counts are not checked, a table may leave out failed runs), from
     the design's geometry, so a left-out run does not move the centre; a custom design is coded from its
     extremes.  The fit, the rank check and the criticism all use it."""
-    from .data import check_design
+    from .data import check_design, factor_slip_warning
     from .design import Coding
 
     if design == "custom":
         x = table[factors].to_numpy(dtype=float)
         return Coding.from_levels(factors, x, alpha)
-    return check_design(table, factors, {"type": design, "alpha": alpha}, source, None, counts=False)[0]
+    coding = check_design(table, factors, {"type": design, "alpha": alpha}, source, None, counts=False)[0]
+    slip = factor_slip_warning(table, factors, {"type": design, "alpha": alpha}, coding, source)
+    if slip:
+        print(f"demid: warning: {slip}", file=sys.stderr)
+    return coding
 
 
 def _require_estimable(table, factors, response, coding, source):

@@ -155,7 +155,9 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
     dup_cols = {h for h in header if header.count(h) > 1}
     if dup_cols:
         # a header typed over (d5,d10,d10 for d5,d10,d15): the repeat, then the column it likely stands for
-        hint = f"; '{missing[0]}' is missing: is one of them '{missing[0]}'?" if missing else ""
+        named = " or ".join(f"'{m}'" for m in missing)
+        hint = (f"; {named} {'is' if len(missing) == 1 else 'are'} missing: is one of them {named}?"
+                if missing else "")
         raise InputError(f"column appears more than once in the header{hint}", source=src, column=sorted(dup_cols)[0])
     for col in missing:
         same = [h for h in header if h.casefold() == col.casefold()]
@@ -423,9 +425,6 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
     k = len(factors)
     _refuse_misplaced_points(table, factors, design, snapped, types, levels, coding, log_factors, src)
     if not counts:
-        if dtype in _DESIGN_POINTS:  # runs may be left out here, but two runs made one point by a slip may not
-            _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src,
-                                               slips_only=True)
         return coding, types
     if dtype == "ccd":
         expected = {"factorial": 2 ** k, "axial": 2 * k,
@@ -533,6 +532,24 @@ def _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, 
     raise InputError(f"the {name}'s point ({shown(missing[0])}){more} has no run ({len(table)} runs in the table); "
                      "keep a failed run in the table with status failed, or declare design type custom to fit the "
                      "runs as they are", source=src)
+
+
+def factor_slip_warning(table: pd.DataFrame, factors: list[str], design: dict, coding: Coding, src: str,
+                        log_factors=()) -> str | None:
+    """Where runs may be left out of a table (the command line), two runs on one point beside an empty point
+    are a factor value typed as another level — or a replicated point beside a run left out, which the table
+    cannot tell apart: a warning, not an error."""
+    if design["type"] not in _DESIGN_POINTS:
+        return None
+    levels = nominal_levels(design["type"], float(design.get("alpha", 1.0)))
+    coded = coding.to_coded(model_units(table[factors].to_numpy(dtype=float), factors, log_factors))
+    snapped = levels[np.argmin(np.abs(coded[:, :, None] - levels[None, None, :]), axis=2)]
+    try:
+        _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src,
+                                           slips_only=True)
+    except InputError as slip:
+        return f"{slip} (or a replicated point beside a run left out of the table)"
+    return None
 
 
 def _printed_level(table, f, j, snapped, level, coding, log_factors) -> float:

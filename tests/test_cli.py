@@ -225,3 +225,20 @@ def test_a_factor_left_out_of_factors_is_warned_about(study_dir, tmp_path):
     assert len(warnings) == 1 and "column 'b'" in warnings[0] and "add it to --factors" in warnings[0], proc.stderr
     proc = _run("fit", "--data", data, "--factors", "a,b", "--responses", "y1", "--out", str(tmp_path / "f.json"))
     assert proc.returncode == 0 and "warning" not in proc.stderr, proc.stderr
+
+
+def test_a_coded_copy_of_a_listed_factor_in_a_shuffled_file_is_no_left_out_factor(study_dir, tmp_path):
+    """The file's rows were paired with the table's, which is in run order: in a file not in run order a
+    column that only repeats a listed factor (a_coded) was said to vary between replicates."""
+    import pandas as pd
+
+    table = pd.read_csv(study_dir / "data" / "m.csv")
+    centre, half = (table["a"].max() + table["a"].min()) / 2, (table["a"].max() - table["a"].min()) / 2
+    table["a_coded"] = ((table["a"] - centre) / half).round(4)
+    shuffled = table.sample(frac=1.0, random_state=3)
+    path = tmp_path / "shuffled.csv"
+    shuffled.to_csv(path, index=False)
+    proc = _run("fit", "--data", str(path), "--factors", "a,b", "--responses", "y1", "--out", str(tmp_path / "f.json"))
+    assert proc.returncode == 0 and "warning" not in proc.stderr, proc.stderr
+    proc = _run("fit", "--data", str(path), "--factors", "a", "--responses", "y1", "--out", str(tmp_path / "f.json"))
+    assert "column 'b'" in proc.stderr and "column 'a_coded'" not in proc.stderr, proc.stderr
