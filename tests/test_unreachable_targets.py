@@ -10,7 +10,7 @@ from demid.io import save_figure
 from demid.sampling.domain import Domain
 from demid.surrogate import Surrogate, fit_response
 from demid.uncertainty import analyse_material
-from demid.uncertainty.ranking import reachable_targets
+from demid.uncertainty.ranking import next_measurement_advice, reachable_targets
 
 from .helpers import make_ccd_table
 
@@ -112,7 +112,9 @@ def test_targets_that_cannot_be_met_together_are_a_discrepancy_not_information()
     ranking = analyse_material(surrogates, cfg, tolerances=[0.02, 0.1]).ranking.set_index("observables")
     assert ranking.loc["y1", "targets_reachable"] and ranking.loc["y2", "targets_reachable"]
     assert not ranking.loc["y1+y2", "targets_reachable"] and np.isnan(ranking.loc["y1+y2", "information_gain_bits"])
-    assert ranking.loc["y1+y2", "rank"] == 3
+    assert ranking.loc["y1+y2", "rank"] == 3 and ranking.loc["y1+y2", "rank_by_fraction"] == 3
+    advice = next_measurement_advice(ranking.reset_index())
+    assert "The targets of y1 + y2 can each be met but not together within the tolerance" in advice
     surrogates, cfg = _same_direction(12.0, 12.1)
     ranking = analyse_material(surrogates, cfg, tolerances=[0.02, 0.1]).ranking.set_index("observables")
     assert ranking.loc["y1+y2", "targets_reachable"] and np.isfinite(ranking.loc["y1+y2", "information_gain_bits"])

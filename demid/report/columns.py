@@ -93,7 +93,8 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
                                                 "best_subset (100 % = nothing left)."),
         "best_subset": ("–", "Most informative subset with one observable fewer ('(none)' for single observables)."),
         "gain_vs_best_subset_bits": ("bit", "Information added by the extra observable over best_subset."),
-        "rank_by_fraction": ("–", "Rank by smallest feasible fraction instead."),
+        "rank_by_fraction": ("–", "Rank by smallest feasible fraction instead (sets whose targets cannot be met "
+                                  "rank last here too)."),
         "targets_reachable": ("–", "False when no point of Ω meets the set's targets within the tolerance, one "
                                    "of them alone or all together: the set then measures a discrepancy between "
                                    "simulation and experiment, not information (information_gain_bits empty), and "

@@ -91,8 +91,11 @@ def rank_observable_sets(surrogates: dict[str, Surrogate], domain: Domain, obser
             "tolerance": float(tolerance),
         })
     frame = pd.DataFrame(rows)
-    frame["rank_by_fraction"] = frame["feasible_fraction_pct"].rank(method="min").astype(int)
-    frame["targets_reachable"] = [reachable_set[s] for s in subsets]
+    reachable_rows = pd.Series([reachable_set[s] for s in subsets], index=frame.index)
+    # an empty set is no narrowest one: sets with targets out of reach rank last here too
+    by_fraction = frame["feasible_fraction_pct"].where(reachable_rows, np.inf)
+    frame["rank_by_fraction"] = by_fraction.rank(method="min").astype(int)
+    frame["targets_reachable"] = reachable_rows
     frame = frame.sort_values(["targets_reachable", "information_gain_bits", "feasible_fraction_pct"],
                               ascending=[False, False, True], kind="stable", na_position="last").reset_index(drop=True)
     frame.insert(0, "rank", np.arange(1, len(frame) + 1))
@@ -177,6 +180,14 @@ def next_measurement_advice(ranking: pd.DataFrame, labels: dict[str, str] | None
                      f"range within the tolerance: a discrepancy between simulation and experiment (see level 2), "
                      f"not information. Sets with {'them' if many else 'it'} get no information gain and rank last; "
                      f"the advice below leaves {'them' if many else 'it'} out.")
+    # Sets whose targets are each within reach but not together, named where the conflict first appears
+    conflicts = [k for k in sets if len(k) > 1 and not np.isfinite(sets[k][0])
+                 and all(np.isfinite(sets[by_members[frozenset(t)]][0])
+                         for t in combinations(k, len(k) - 1) if frozenset(t) in by_members)]
+    for k in sorted(conflicts, key=lambda k: (len(k), k)):
+        lines.append(f"The targets of {name(k)} can each be met but not together within the tolerance: a "
+                     "discrepancy between simulation and experiment (see level 2), not information; sets with "
+                     "all of them get no information gain and rank last.")
     for size in range(len(order)):
         for start in combinations(order, size):
             base_gain, base_frac = sets[by_members[frozenset(start)]]
