@@ -18,8 +18,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .design import (Coding, ccd_points, classify_points, model_matrix, model_units, nominal_levels,
-                     quadratic_terms, rotatable_alpha, term_name)
+from .design import (Coding, box_behnken_points, ccd_points, classify_points, model_matrix, model_units,
+                     nominal_levels, quadratic_terms, rotatable_alpha, term_name)
 from .errors import InputError
 from .spec import as_spec
 
@@ -471,13 +471,7 @@ def _design_points(design: dict, k: int) -> np.ndarray:
     """The coded non-centre points of a CCD or Box-Behnken design, each once."""
     if design["type"] == "ccd":
         return ccd_points(k, float(design.get("alpha", 1.0)), center_runs=0)
-    edges = []
-    for i, j in combinations(range(k), 2):
-        for a, b in product((-1.0, 1.0), repeat=2):
-            point = np.zeros(k)
-            point[i], point[j] = a, b
-            edges.append(point)
-    return np.array(edges)
+    return box_behnken_points(k, 0)
 
 
 def _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src,

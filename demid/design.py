@@ -208,6 +208,17 @@ def ccd_points(n_factors: int, alpha: float | None = None, center_runs: int = 5)
     return np.vstack([fact, axial, np.zeros((center_runs, n_factors))])
 
 
+def box_behnken_points(n_factors: int, center_runs: int) -> np.ndarray:
+    """Coded Box-Behnken points: a 2^2 factorial on every pair of factors (others at 0), then centres."""
+    rows = []
+    for i, j in combinations(range(n_factors), 2):
+        for a, b in ((-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)):
+            row = np.zeros(n_factors)
+            row[i], row[j] = a, b
+            rows.append(row)
+    return np.vstack([np.array(rows), np.zeros((center_runs, n_factors))])
+
+
 def replicate_groups(coded: np.ndarray, decimals: int = 6) -> np.ndarray:
     """Integer group id per run; runs at the same design point share an id."""
     keys = np.round(np.asarray(coded, dtype=float), decimals)

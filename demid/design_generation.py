@@ -13,12 +13,12 @@ from __future__ import annotations
 import re
 
 from dataclasses import dataclass
-from itertools import combinations, product
+from itertools import product
 
 import numpy as np
 import pandas as pd
 
-from .design import Coding, ccd_points, rotatable_alpha, unreadable_alpha
+from .design import Coding, box_behnken_points, ccd_points, rotatable_alpha, unreadable_alpha
 from .errors import InputError
 
 DESIGN_TYPES = ("ccd", "box_behnken", "factorial")
@@ -73,17 +73,6 @@ def parse_alpha(text: str, n_factors: int) -> float:
     if unreadable_alpha(value):
         raise InputError(f"--alpha {text}: {unreadable_alpha(value)}")
     return value
-
-
-def box_behnken_points(n_factors: int, center_runs: int) -> np.ndarray:
-    """Coded Box-Behnken points: a 2^2 factorial on every pair of factors (others at 0), then centres."""
-    rows = []
-    for i, j in combinations(range(n_factors), 2):
-        for a, b in product((-1.0, 1.0), repeat=2):
-            row = np.zeros(n_factors)
-            row[i], row[j] = a, b
-            rows.append(row)
-    return np.vstack([np.array(rows), np.zeros((center_runs, n_factors))])
 
 
 def factorial_points(n_factors: int, center_runs: int) -> np.ndarray:
