@@ -230,8 +230,17 @@ class MaterialSpec:
         """A copy of the validated ``materials`` entry, for the table validator (demid.data)."""
         return copy.deepcopy(self._material)
 
-    def __repr__(self) -> str:  # stable and short: Snakemake hashes params by their repr
+    def __repr__(self) -> str:  # stable and short
         return f"MaterialSpec({self.name!r}, {self._material!r}, grid_points={self.grid_points!r})"
+
+    @property
+    def digest(self) -> str:
+        """A fingerprint of everything the spec says (sha256 of its repr).  Snakemake reruns a job whose
+        params changed but records only plain values, not a spec object: rules pass this beside the spec so
+        that an edited target, bound or scenario reruns the material."""
+        import hashlib
+
+        return hashlib.sha256(repr(self).encode("utf-8")).hexdigest()
 
 
 def evaluation_size(config: dict, material: dict) -> int:

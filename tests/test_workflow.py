@@ -80,6 +80,15 @@ def test_self_made_study_runs_and_is_byte_identical(study_dir, tmp_path):
     assert not re.search(r"material=m\b", edit.stdout), edit.stdout
     assert jobs.get("summary_tables") == 1 and jobs.get("report") == 1
 
+    # Editing one target in the config reruns that material: Snakemake records plain params only, not the
+    # spec object, so an edited target left stale sets behind.
+    config = (study_dir / "study.yaml").read_text(encoding="utf-8")
+    assert config.count("y2: {target: 95}") == 2  # premise: m and n both hold it, m's first
+    (study_dir / "study.yaml").write_text(config.replace("y2: {target: 95}", "y2: {target: 96}", 1), encoding="utf-8")
+    edit = run_snakemake(study_dir, study_dir / "study.yaml", "-n")
+    assert planned_jobs(edit.stdout).get("analyse_material") == 2, edit.stdout  # m for its target, n for its cell
+    assert re.search(r"material=m\b", edit.stdout), edit.stdout
+
 
 def test_failed_run_and_unreachable_target_complete(study_dir):
     table = pd.read_csv(study_dir / "data" / "m.csv")

@@ -66,6 +66,10 @@ def material_spec(wildcards):
     return SPECS[wildcards.material]
 
 
+def material_spec_digest(wildcards):
+    return SPECS[wildcards.material].digest
+
+
 def material_data(wildcards):
     return config["materials"][wildcards.material]["data"]
 

@@ -15,6 +15,7 @@ rule analyse_material:
         material=material_pattern(pareto=False),
     params:
         spec=material_spec,
+        spec_digest=material_spec_digest,  # what Snakemake compares to rerun an edited material
         z=config["robust_z"],
         tolerances=config["sweep_tolerances"],
     resources:

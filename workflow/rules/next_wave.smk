@@ -10,6 +10,7 @@ rule next_wave:
         reasons=f"{RESULTS}/next_wave/reasons.json",
     params:
         specs=[SPECS[m] for m in next_wave_materials()],
+        spec_digests=[SPECS[m].digest for m in next_wave_materials()],
         z=config["robust_z"],
     resources:
         mem_mb=1000,
