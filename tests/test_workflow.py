@@ -152,3 +152,10 @@ def test_four_factor_study_uses_sobol_points(tmp_path):
     assert 0 < fractions["both"] <= fractions["y_only"] < 100
     sets = read_parquet(tmp_path / "results" / "scenarios" / "four.parquet").drop_duplicates("scenario")
     assert len(sets) == 2 and (sets["n_admissible_nodes"] / (sets["node_fraction_pct"] / 100)).to_numpy() == pytest.approx(4096)
+    # Level 2 reads the same set as identifiability (it was left out above three factors, so "widen the
+    # range" was said by the summary but not by level 2).
+    import json
+
+    level2 = json.loads((tmp_path / "results" / "criticism" / "four.json").read_text(encoding="utf-8"))["level2"]
+    both = ident[ident["scenario"] == "both"].set_index("factor")["at_bound"].to_dict()
+    assert level2["feasible"] and level2["set_at_bound"] == both, (level2["set_at_bound"], both)
