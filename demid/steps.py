@@ -103,14 +103,19 @@ def pareto_step(surrogates: dict, spec: MaterialSpec, grid: pd.DataFrame | None 
     """Non-dominated grid points (error of one observable vs a second objective) and their figure;
     ``grid`` holds the surrogates' predictions on the evaluation grid when already computed."""
     from .admissibility import predict_grid
-    from .pareto import pareto_analysis
+    from .pareto import front_intervals, pareto_analysis, polish_front
     from .plots import pareto_figure
+    from .sampling import uses_grid
 
     par = spec.pareto
     if grid is None:
         grid = predict_grid(surrogates, spec.domain, spec.grid_points)
     result = pareto_analysis(grid, spec.factor_names, par.error_of, spec.targets[par.error_of], par.minimise,
                              par.max_error)
+    if not uses_grid(spec.dim):  # Sobol points leave a sparse front: refine it
+        result.front = polish_front(surrogates, spec.domain, spec.factor_names, par.error_of,
+                                    spec.targets[par.error_of], par.minimise, par.max_error, result.front)
+        result.intervals = front_intervals(result.front, spec.factor_names, par.max_error)
     return MaterialPareto(result.to_frame(), pareto_figure(grid, result.front, spec))
 
 
