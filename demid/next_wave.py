@@ -46,6 +46,8 @@ if TYPE_CHECKING:
 
 DOMAIN_COLUMNS = ["material", "factor", "lower", "upper"]
 PURPOSE_DESIGN = "design: D-optimal quadratic runs on the plausible set in the refocused box"
+PURPOSE_DESIGN_BOX = ("design: D-optimal quadratic run in the refocused box, off the plausible set (the plausible "
+                      "points alone cannot determine the quadratic)")
 PURPOSE_SEPARATE = "separate aliased terms {terms} ({responses})"
 
 
@@ -246,9 +248,13 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec,
     cands = plausible_points(surrogates, spec, scenario, z, lo, hi)
     points_u, labels = propose_runs(lo, hi, earlier_u[inside], request.count, alias_sets, cands)
     points = domain.to_actual(points_u)
-    purposes = [PURPOSE_DESIGN if lab is None else
+    cand_u = np.asarray(cands, dtype=float).reshape(-1, len(factors))
+    span = hi - lo
+    on_plausible = [bool(len(cand_u)) and bool(np.any(np.all(np.abs(cand_u - u) <= 1e-9 * span, axis=1)))
+                    for u in np.atleast_2d(points_u)]
+    purposes = [(PURPOSE_DESIGN if on else PURPOSE_DESIGN_BOX) if lab is None else
                 PURPOSE_SEPARATE.format(terms=" = ".join(term_name(t, factors) for t in lab[0]),
-                                        responses=", ".join(lab[1])) for lab in labels]
+                                        responses=", ".join(lab[1])) for lab, on in zip(labels, on_plausible)]
     runs = pd.DataFrame({"material": material, "proposal": np.arange(1, len(points) + 1)})
     for i, f in enumerate(factors):
         runs[f] = [float(f"{v:.10g}") for v in points[:, i]]
@@ -270,8 +276,11 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec,
         reason = (f"The plausible set of scenario '{scenario}' ({observables}) reaches (within the margin) every "
                   f"edge of the current range, so the range is kept")
     n_sep = sum(lab is not None for lab in labels)
-    reason += (f"; {len(points)} new runs: {len(points) - n_sep} from a D-optimal quadratic design on the "
+    n_box = sum(lab is None and not on for lab, on in zip(labels, on_plausible))
+    reason += (f"; {len(points)} new runs: {len(points) - n_sep - n_box} from a D-optimal quadratic design on the "
                f"plausible part of the box given the {int(inside.sum())} earlier run(s) inside it"
+               + (f", {n_box} off the plausible set where its {len(cand_u)} plausible grid point(s) cannot determine "
+                  f"the quadratic" if n_box else "")
                + (f", {n_sep} to separate aliased terms the criticism found" if n_sep else "") + ".")
     return NextWave(dom_frame, runs, reason)
 

@@ -210,3 +210,18 @@ def test_pipeline_writes_the_next_wave_and_the_loop_closes(study_dir):
     check = subprocess.run([sys.executable, "-m", "demid", "validate", "--config", "wave2.yaml"], cwd=study_dir,
                            capture_output=True, text=True)
     assert check.returncode == 0, check.stderr
+
+
+def test_runs_off_a_thin_plausible_set_are_labelled_so():
+    """A tolerance of 0.2 % leaves a ring too thin for the 41 x 41 grid of the box to hold more than a few
+    points: the design takes the rest from the whole box, and those runs said 'on the plausible set'."""
+    from demid.next_wave import PURPOSE_DESIGN_BOX
+
+    table, surrogates, cfg, robust = _annulus_material(count=9, tolerance=0.002)
+    wave = plan_next_wave("m", table, surrogates, cfg, robust, z=0.0)
+    rel = np.abs(wave.runs["predicted_y"] / R0 ** 2 - 1)
+    on = wave.runs["purpose"] == PURPOSE_DESIGN
+    assert (~on).any(), wave.runs  # premise: some runs are off the set
+    assert (wave.runs.loc[~on, "purpose"] == PURPOSE_DESIGN_BOX).all()
+    assert (rel[on] <= 0.002 + 1e-9).all() and (rel[~on] > 0.002).all()  # the labels say where each run is
+    assert f"{int((~on).sum())} off the plausible set" in wave.reason
