@@ -101,13 +101,15 @@ def polish_front(surrogates: dict, domain, factors: list[str], error_of: str, ta
 
     Above three factors a few ten thousand points leave a front of a handful of points far from the
     true one (a 4-factor front of 6 points, its intervals outside the optimum).  For error caps from 0 to
-    ``max_error`` and on to the sampled front's largest error (and at each sampled point's own error below
-    ``max_error``) the predicted ``minimise`` is minimised subject to
-    the error staying under the cap (SLSQP from the best sampled point under it); the polished points join
-    the sampled front, which is then recomputed.
+    ``max_error`` and on to the front's end (the error where the objective is least), and at each sampled
+    point's own error below ``max_error``, the predicted ``minimise`` is minimised subject to the error staying
+    under the cap (SLSQP from the best sampled point under it); the polished points join the sampled front,
+    which is then recomputed.
     """
     from scipy import optimize
 
+    if front.empty or target == 0:
+        return front
     lo, hi = domain.search_bounds()
     scale = abs(target)
 
@@ -119,10 +121,9 @@ def polish_front(surrogates: dict, domain, factors: list[str], error_of: str, ta
 
     sampled = (domain.to_search(front[factors].to_numpy(dtype=float)) - lo) / (hi - lo)
     found = [front]
-    # caps spread to max_error, and each sampled point's own error, so that a sampled point survives only
-    # where nothing better exists at its error
     own = front["error"].to_numpy()
-    # the front ends where the objective is least: its error is the last cap
+    # the front ends where the objective is least: its error is the last cap; a sampled point's own error is
+    # a cap too, so that it survives only where nothing better exists at its error
     lowest = optimize.minimize(lambda u: predicted(minimise, u), sampled[np.argmin(front["objective"].to_numpy())],
                                method="L-BFGS-B", bounds=[(0.0, 1.0)] * domain.dim)
     end = max(float(own.max()), abs(predicted(error_of, lowest.x) - target) / scale, max_error)
