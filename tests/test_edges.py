@@ -178,3 +178,27 @@ def test_a_reference_point_beyond_the_search_range_is_said_to_be_outside_it():
     assert inside == []
     beyond = extrapolation_warnings(domain, runs, {"a": 1.5, "b": 0.5})
     assert any("outside the search range (a = 1.5 (search range 0 to 1))" in w for w in beyond)
+
+
+def test_an_observable_no_factor_moves_is_named_and_does_not_pick_the_best_point():
+    """z2 = 0 in every run (post-processing failed) with a target of 12: it misses by 100 % everywhere, so the
+    largest error tied over the domain and the best point fell on a corner, with 'widen the range' for every
+    factor.  The best point now meets z1 (z1 = 10 + 5 p + 3 q, target 13), z2 is named, and no range is to be
+    widened for a response no factor moves."""
+    import numpy as np
+
+    from demid.criticism.level2 import calibration_check
+    from demid.design import quadratic_terms
+    from demid.sampling.domain import Domain
+    from demid.surrogate import Surrogate
+
+    names, terms = ["p", "q", "s"], quadratic_terms(3)
+    moved = np.zeros(len(terms))
+    moved[[0, 1, 2]] = [10.0, 5.0, 3.0]
+    surrogates = {"z1": Surrogate("z1", names, terms, moved, np.zeros((10, 10)), 0.0, 20),
+                  "z2": Surrogate("z2", names, terms, np.zeros(len(terms)), np.zeros((10, 10)), 0.0, 20)}
+    result = calibration_check(surrogates, Domain(tuple(names), (0.0,) * 3, (1.0,) * 3),
+                               {"z1": 13.0, "z2": 12.0}, 0.05, 21)
+    assert abs(result.best_errors["z1"]) <= 1e-6 and result.best_errors["z2"] == -1.0
+    assert result.unmoved == ["z2"] and result.widen == {} and "Widen" not in result.message
+    assert "z2 is predicted the same everywhere in the search range (no factor moves it)" in result.message

@@ -54,6 +54,7 @@ class Level2Result:
     set_at_bound: dict[str, str] | None = None  # of the strict set, when it was given and is not empty
     widen: dict[str, list[str]] = field(default_factory=dict)  # factor -> bounds to move outwards
     extrapolation: list[str] = field(default_factory=list)
+    unmoved: list[str] = field(default_factory=list)  # observables no factor moves anywhere in the domain
 
     @property
     def reference_max_error(self) -> float | None:
@@ -96,6 +97,7 @@ class Level2Result:
             "extensions": self.extensions, "message": self.message,
             "best_point_at_bound": dict(self.best_at_bound), "set_at_bound": self.set_at_bound,
             "widen": {f: list(v) for f, v in self.widen.items()}, "extrapolation": list(self.extrapolation),
+            "unmoved": list(self.unmoved),
         }
 
 
@@ -278,7 +280,15 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     grid_err = problem.errors(grid_s)
     every = list(range(k))
 
-    best_val, best_s, _ = _minimax(problem, grid_s, grid_err, every)
+    # An observable no factor moves (a response the same in every run) misses its target by the same amount
+    # everywhere: the largest error then ties over the whole domain and its minimiser is an arbitrary corner.
+    # The best point is sought over the others; the largest error still counts every observable.
+    spread = np.ptp(grid_err, axis=1)
+    unmoved = [i for i in every if spread[i] <= 1e-9 * max(1.0, float(np.max(np.abs(grid_err[i]))))]
+    movable = [i for i in every if i not in unmoved]
+    best_val, best_s, _ = _minimax(problem, grid_s, grid_err, movable if unmoved and movable else every)
+    if unmoved and movable:
+        best_val = float(np.max(np.abs(problem.errors(best_s)[:, 0])))
     feasible = best_val <= tolerance + 1e-12
     exact = getattr(strict_set, "exact", None)
     if exact is not None:
@@ -309,14 +319,19 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
         reference_values=ref_values, reference_errors=ref_errors, bottleneck=bottleneck, without=without,
         implied_bias=implied, bias_candidates=candidates, biased_observable=biased, shared_bias=shared,
         extensions=extensions, message="")
+    result.unmoved = [observables[i] for i in unmoved]
     result.best_at_bound = dict(zip(factors, domain.at_bound(best_x, best_x)))
     if feasible and getattr(strict_set, "at_bound", ()):
         result.set_at_bound = dict(zip(factors, strict_set.at_bound))
     best_touch, set_touch = touching(result.best_at_bound), touching(result.set_at_bound or {})
+    if unmoved and movable and max(abs(best_errors[observables[i]]) for i in movable) <= tolerance:
+        best_touch = {}  # the others are met: only the unmoved observables miss, and no range moves them
     result.widen = {f: sorted(set(best_touch.get(f, ())) | set(set_touch.get(f, ())), key=("lower", "upper").index)
                     for f in factors if f in best_touch or f in set_touch}
     result.extrapolation = extrapolation_warnings(domain, runs, reference_point)
-    result.message = " ".join([_level2_message(result), *widen_advice(domain, best_touch, set_touch),
+    stuck = [f"{o} is predicted the same everywhere in the search range (no factor moves it), so no calibration "
+             f"brings it nearer its target: check its simulation output." for o in result.unmoved]
+    result.message = " ".join([_level2_message(result), *stuck, *widen_advice(domain, best_touch, set_touch),
                                *result.extrapolation])
     return result
 
