@@ -370,9 +370,9 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
         design = mat["design"]
         if design["type"] == "ccd" and design.get("alpha", 1.0) < 1.0:
             raise InputError(f"config key {key}.design.alpha: a CCD needs alpha >= 1", source=source)
-        if design["type"] == "ccd" and unreadable_alpha(design.get("alpha", 1.0)):
-            raise InputError(f"config key {key}.design.alpha: {design['alpha']:g} "
-                             f"{unreadable_alpha(design['alpha'])}", source=source)
+        unreadable = unreadable_alpha(design.get("alpha", 1.0)) if design["type"] == "ccd" else None
+        if unreadable:
+            raise InputError(f"config key {key}.design.alpha: {design['alpha']:g} {unreadable}", source=source)
         _check_published_ranges(key, responses, source)
         _check_scenario_labels(key, mat.get("scenarios") or {}, source)
     # After the materials: the published numbers are checked against their names.

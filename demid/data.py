@@ -19,7 +19,7 @@ import numpy as np
 import pandas as pd
 
 from .design import (Coding, box_behnken_points, ccd_points, classify_points, model_matrix, model_units,
-                     nominal_levels, quadratic_terms, rotatable_alpha, term_name)
+                     nominal_levels, quadratic_terms, rotatable_alpha, snap_to_levels, term_name)
 from .errors import InputError
 from .spec import as_spec
 
@@ -420,7 +420,7 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
                 raise InputError(f"value {found:g} is not a level of the declared {dtype} design "
                                  f"(coded {c:+.3f}); nearest valid level: {near_actual:.6g} (coded {nearest:+.4g})",
                                  source=src, run=int(r), column=f)
-    snapped = np.array([[levels[np.argmin(np.abs(levels - c))] for c in row] for row in coded])
+    snapped = snap_to_levels(coded, levels)
     types = classify_points(snapped, alpha)
     k = len(factors)
     _refuse_misplaced_points(table, factors, design, snapped, types, levels, coding, log_factors, src)
@@ -455,9 +455,10 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
                              f"{design.get('center_runs', 0)} centre runs, found {n_center}", source=src)
     elif dtype == "box_behnken":
         n_edge, n_center = int(np.sum(types == "edge")), int(np.sum(types == "center"))
-        if n_edge > 2 * k * (k - 1) and n_edge % (2 * k * (k - 1)) == 0:
+        edges = _expected_counts(design, k)["edge"]
+        if n_edge > edges and n_edge % edges == 0:
             raise InputError(f"config key {config_key}.design: the table has {n_edge} edge-midpoint runs where a "
-                             f"{k}-factor Box-Behnken design has {2 * k * (k - 1)}: replicated points? A replicated "
+                             f"{k}-factor Box-Behnken design has {edges}: replicated points? A replicated "
                              "design is not a plain box_behnken; declare design type custom to fit it as it is",
                              source=src)
         _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src)
@@ -537,7 +538,7 @@ def factor_slip_warning(table: pd.DataFrame, factors: list[str], design: dict, c
         return None
     levels = nominal_levels(design["type"], float(design.get("alpha", 1.0)))
     coded = coding.to_coded(model_units(table[factors].to_numpy(dtype=float), factors, log_factors))
-    snapped = levels[np.argmin(np.abs(coded[:, :, None] - levels[None, None, :]), axis=2)]
+    snapped = snap_to_levels(coded, levels)
     try:
         _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src,
                                            slips_only=True)
@@ -801,7 +802,7 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
     coded = coding.to_coded(model_units(table[factors].to_numpy(), factors, log_factors))
     levels = nominal_levels(mat_cfg["design"]["type"], float(mat_cfg["design"].get("alpha", 1.0)))
     if len(levels):
-        snapped = levels[np.argmin(np.abs(coded[:, :, None] - levels[None, None, :]), axis=2)]
+        snapped = snap_to_levels(coded, levels)
         warnings.extend(_odd_level_values(table, factors, snapped, src))
     for r in responses:
         require_estimable(coded, np.isfinite(table[r].to_numpy()), types, src, r, factors)

@@ -192,6 +192,12 @@ def nominal_levels(design_type: str, alpha: float) -> np.ndarray:
     return np.array([])
 
 
+def snap_to_levels(coded: np.ndarray, levels: np.ndarray) -> np.ndarray:
+    """Each coded value replaced by the nearest of the design's ``levels``."""
+    coded = np.asarray(coded, dtype=float)
+    return levels[np.argmin(np.abs(coded[..., None] - levels), axis=-1)]
+
+
 def rotatable_alpha(n_factors: int) -> float:
     return float((2 ** n_factors) ** 0.25)
 

@@ -70,8 +70,9 @@ def parse_alpha(text: str, n_factors: int) -> float:
         raise InputError(f"--alpha: expected rotatable, face or a number, found '{text}'") from None
     if not np.isfinite(value) or value < 1:
         raise InputError(f"--alpha: a CCD needs alpha >= 1, found {text}")
-    if unreadable_alpha(value):
-        raise InputError(f"--alpha {text}: {unreadable_alpha(value)}")
+    unreadable = unreadable_alpha(value)
+    if unreadable:
+        raise InputError(f"--alpha {text}: {unreadable}")
     return value
 
 

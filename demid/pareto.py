@@ -110,16 +110,12 @@ def polish_front(surrogates: dict, domain, factors: list[str], error_of: str, ta
 
     if front.empty or target == 0:
         return front
-    lo, hi = domain.search_bounds()
     scale = abs(target)
 
-    def actual(u):
-        return domain.to_actual(lo + np.clip(np.atleast_2d(u), 0.0, 1.0) * (hi - lo))
-
     def predicted(name, u):
-        return float(surrogates[name].predict(actual(u))[0])
+        return float(surrogates[name].predict(domain.from_unit(u))[0])
 
-    sampled = (domain.to_search(front[factors].to_numpy(dtype=float)) - lo) / (hi - lo)
+    sampled = domain.to_unit(front[factors].to_numpy(dtype=float))
     found = [front]
     own = front["error"].to_numpy()
     # the front ends where the objective is least: its error is the last cap; a sampled point's own error is
@@ -140,7 +136,7 @@ def polish_front(surrogates: dict, domain, factors: list[str], error_of: str, ta
         u[u < 1e-9], u[u > 1 - 1e-9] = 0.0, 1.0  # on the bound, not 3e-14 from it
         error = abs(predicted(error_of, u) - target) / scale
         if error <= cap * (1 + 1e-6):
-            row = dict(zip(factors, actual(u)[0]))
+            row = dict(zip(factors, domain.from_unit(u)[0]))
             row.update(error=error, objective=predicted(minimise, u))
             found.append(pd.DataFrame([row]))
     pool = pd.concat(found, ignore_index=True)

@@ -8,11 +8,10 @@ of the fit (grids, admissibility, uncertainty) uses the light
 
 from __future__ import annotations
 
+import math
 import warnings
 from dataclasses import asdict, dataclass, field
 from functools import cached_property
-
-import math
 
 import numpy as np
 import pandas as pd
@@ -70,6 +69,12 @@ def round_off_floor(y) -> float:
     # while a miss of 0.4 of the last digit still counts as a miss.
     printed = float(np.sqrt(1.5 / 12 * np.mean(printed_quantum(y) ** 2)))
     return max(ROUND_OFF * float(np.max(np.abs(y))), printed)
+
+
+def pure_error_ss(y, groups) -> float:
+    """Sum of squares of the responses about their replicate-group means (pure error)."""
+    y, groups = np.asarray(y, dtype=float), np.asarray(groups)
+    return float(sum(np.sum((y[groups == g] - y[groups == g].mean()) ** 2) for g in np.unique(groups)))
 
 
 def round_off_only(residuals, y) -> bool:
@@ -310,10 +315,7 @@ class SurrogateFit:
         sst = float(np.sum((self.y - self.y.mean()) ** 2))
         groups = replicate_groups(self.coded)
         n_unique = int(groups.max()) + 1 if len(groups) else 0
-        ss_pe = 0.0
-        for g in range(n_unique):
-            yg = self.y[groups == g]
-            ss_pe += float(np.sum((yg - yg.mean()) ** 2))
+        ss_pe = pure_error_ss(self.y, groups)
         df_pe = self.n_runs - n_unique
         df_res = int(round(res.df_resid))
         return LackOfFitAnova(

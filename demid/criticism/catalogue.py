@@ -15,7 +15,7 @@ import numpy as np
 from scipy import stats
 
 from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, model_matrix, term_name
-from ..surrogate import round_off_floor, round_off_only
+from ..surrogate import pure_error_ss, round_off_floor, round_off_only
 from .aliasing import _term_classes
 from .models import _orth, _residualize
 
@@ -292,9 +292,7 @@ class _Round:
         df_lof = m.df_resid - df_pe
         if df_pe < 1 or df_lof < 1:
             return
-        y = np.asarray(m.y, dtype=float)
-        ss_pe_y = float(sum(np.sum((y[group == g] - y[group == g].mean()) ** 2) for g in range(n_groups)))
-        if ss_pe_y <= round_off_floor(y) ** 2 * df_pe:
+        if pure_error_ss(m.y, group) <= round_off_floor(m.y) ** 2 * df_pe:
             return  # replicates identical to round-off or print: lack of fit is undefined, as in the ANOVA
         onehot = np.zeros((len(group), n_groups))
         onehot[np.arange(len(group)), group] = 1.0

@@ -71,6 +71,16 @@ class Domain:
     def to_search(self, x: np.ndarray) -> np.ndarray:
         return model_units(x, self.factors, [f for f, lg in zip(self.factors, self.log) if lg])
 
+    def from_unit(self, u: np.ndarray) -> np.ndarray:
+        """Points of the unit cube over the search box (clipped to it), in actual units."""
+        lo, hi = self.search_bounds()
+        return self.to_actual(lo + np.clip(np.atleast_2d(u), 0.0, 1.0) * (hi - lo))
+
+    def to_unit(self, x: np.ndarray) -> np.ndarray:
+        """Points in actual units as coordinates of the unit cube over the search box."""
+        lo, hi = self.search_bounds()
+        return (self.to_search(np.atleast_2d(x)) - lo) / (hi - lo)
+
     def search_axes(self, n: int) -> list[np.ndarray]:
         lo, hi = self.search_bounds()
         return [np.linspace(a, b, n) for a, b in zip(lo, hi)]

@@ -54,32 +54,42 @@ def exact_set_on_domain(surrogates: dict, domain: Domain, observables, targets: 
                      factors=domain.factors, log=domain.log)
 
 
+def relative_errors(surrogates: dict, domain: Domain, observables, targets: dict[str, float],
+                    u: np.ndarray) -> np.ndarray:
+    """Signed relative errors (prediction - target) / |target|, one row per observable, at points of the unit
+    cube over the search box."""
+    x = domain.from_unit(u)
+    return np.stack([(surrogates[o].predict(x) - targets[o]) / abs(targets[o]) for o in observables])
+
+
+def start_nodes(domain: Domain) -> np.ndarray:
+    """Nodes of a small grid (unit coordinates) from which the local searches over the domain start."""
+    return domain.to_unit(domain.grid(21 if domain.dim <= 3 else 5))
+
+
 def _closest_approach(surrogates: dict, domain: Domain, observables, targets: dict[str, float],
                       start: np.ndarray | None) -> tuple[float, np.ndarray]:
     """min over the domain of max_k |relative residual| (Nelder-Mead in unit coordinates from
     ``start``, actual units, or the best node of a small grid)."""
     from scipy import optimize
 
-    lo, hi = domain.search_bounds()
     obs = tuple(observables)
 
     def worst(u):
-        x = domain.to_actual(lo + np.clip(np.atleast_2d(u), 0.0, 1.0) * (hi - lo))
-        return np.max(np.abs(np.stack([(surrogates[o].predict(x) - targets[o]) / abs(targets[o]) for o in obs])),
-                      axis=0)
+        return np.max(np.abs(relative_errors(surrogates, domain, obs, targets, u)), axis=0)
 
     if start is None:
-        nodes = (domain.to_search(domain.grid(21 if domain.dim <= 3 else 5)) - lo) / (hi - lo)
+        nodes = start_nodes(domain)
         u0 = nodes[int(np.argmin(worst(nodes)))]
     else:
-        u0 = (domain.to_search(np.atleast_2d(start))[0] - lo) / (hi - lo)
+        u0 = domain.to_unit(start)[0]
     res = optimize.minimize(lambda u: float(worst(u)[0]) + float(np.sum(np.abs(u - np.clip(u, 0, 1)))), u0,
                             method="Nelder-Mead", options={"xatol": 1e-10, "fatol": 1e-12, "maxfev": 2000})
     u = np.clip(res.x, 0.0, 1.0)
-    value, point = float(worst(u)[0]), domain.to_actual(lo + u * (hi - lo))[0]
+    value, point = float(worst(u)[0]), domain.from_unit(u)[0]
     start_value = float(worst(u0)[0])
     if start_value <= value:
-        return start_value, domain.to_actual(lo + u0 * (hi - lo))[0]
+        return start_value, domain.from_unit(u0)[0]
     return value, point
 
 

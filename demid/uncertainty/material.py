@@ -138,9 +138,9 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
                      "and tolerance.")
     if unreachable:
         notes.append("Sets with targets out of reach (" + ", ".join(unreachable) + "): no point of the search range "
-                     "meets their targets within the tolerance (one alone, or all together), so their posterior measures the misfit (a discrepancy "
-                     "between simulation and experiment), not information; no information gain is given and they "
-                     "rank last.")
+                     "meets their targets within the tolerance (one alone, or all together), so their posterior "
+                     "measures the misfit (a discrepancy between simulation and experiment), not information; no "
+                     "information gain is given and they rank last.")
     if not scenarios:
         notes.append(f"No scenarios configured: ranking and default sigma use tolerance {FALLBACK_TOLERANCE:g}.")
     empty_robust = pd.DataFrame(columns=ROBUST_COLUMNS)

@@ -11,7 +11,7 @@ import numpy as np
 import pandas as pd
 
 from ..sampling import uses_grid
-from ..sampling.evaluate import _closest_approach
+from ..sampling.evaluate import _closest_approach, relative_errors, start_nodes
 from ..sampling.grid import predict_grid
 from ..spec import join_observables
 from .posterior import NO_OBSERVABLE, subset_posteriors
@@ -112,17 +112,15 @@ def _met_together(surrogates, domain, observables, targets, tolerance, starts: i
     """
     from scipy import optimize
 
-    lo, hi = domain.search_bounds()
     obs = tuple(observables)
 
     def errors(u):
-        x = domain.to_actual(lo + np.clip(np.atleast_2d(u), 0.0, 1.0) * (hi - lo))
-        return np.abs(np.stack([(surrogates[o].predict(x) - targets[o]) / abs(targets[o]) for o in obs]))
+        return np.abs(relative_errors(surrogates, domain, obs, targets, u))
 
     def excess(u):
         return float(np.sum(np.maximum(errors(u)[:, 0] - tolerance, 0.0) ** 2))
 
-    nodes = (domain.to_search(domain.grid(21 if domain.dim <= 3 else 5)) - lo) / (hi - lo)
+    nodes = start_nodes(domain)
     worst = errors(nodes).max(axis=0)
     for u0 in nodes[np.argsort(worst, kind="stable")[:starts]]:
         res = optimize.minimize(excess, u0, method="L-BFGS-B", bounds=[(0.0, 1.0)] * domain.dim,
