@@ -7,6 +7,11 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import stats
 
+#: What a row's first panel says when no cause is named: the verdict, never "no finding" beside a misfit.
+_NO_CAUSE = {"adequate": "no finding (within the tests' power)",
+             "unexplained": "misfit unexplained: no cause singled out",
+             "does_not_predict": "does not predict left-out runs (Q² < 0)"}
+
 if TYPE_CHECKING:
     from ..criticism.level1 import CriticismResult
     from ..surrogate import SurrogateFit
@@ -27,12 +32,13 @@ def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], ti
     from matplotlib.figure import Figure
 
     from .labels import PALETTE, tex_label, tex_unit
+    from .layout import PAGE_WIDTH_IN
 
     units = units or {}
 
     by_response = {r.response: r for r in results}
     rows = max(len(fits), 1)
-    fig = Figure(figsize=(12, 3.3 * rows), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH_IN, 2.7 * rows + 0.3), layout="constrained")
     axes = fig.subplots(rows, 3, squeeze=False)
     for row, fit in zip(axes, fits):
         res = by_response.get(fit.response)
@@ -60,8 +66,8 @@ def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], ti
         row[1].axhline(0, color="0.5", lw=0.8)
         lim = np.nanmax(np.abs(np.concatenate([qq_x, stud[np.isfinite(stud)]]))) if len(stud) else 1.0
         row[2].plot([-lim, lim], [-lim, lim], color="0.5", lw=0.8)
-        row[1].set_title(f"{name}: residual vs run order", fontsize=10)
-        row[2].set_title(f"{name}: normal QQ", fontsize=10)
+        row[1].set_title(f"{name}: residual vs run order", fontsize=9)
+        row[2].set_title(f"{name}: normal QQ", fontsize=9)
         notes = []
         for f in (res.findings if res is not None else []):
             if f.cause == "outlier":
@@ -80,8 +86,9 @@ def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], ti
             alias = " = " + " = ".join(f.aliases[1:]) if f.cause == "missing_term" and len(f.aliases) > 1 else ""
             notes.append(f"{label} {f.detail}{alias} (p={f.p_value:.3g})")
         # The verdict goes in the panel title, never over the points.
-        text = "; ".join(notes) if notes else "no finding"
-        row[0].set_title(f"{name}: residual vs fitted\n" + "\n".join(textwrap.wrap(text, 60)), fontsize=9,
-                         color=PALETTE[5] if notes else "0.2")
+        verdict = res.verdict if res is not None else "adequate"
+        text = "; ".join(notes) if notes else _NO_CAUSE.get(verdict, verdict)
+        row[0].set_title(f"{name}: residual vs fitted\n" + "\n".join(textwrap.wrap(text, 40)), fontsize=8,
+                         color=PALETTE[5] if notes or verdict != "adequate" else "0.2")
     fig.suptitle(title)
     return fig

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .labels import PALETTE, axis_label, tex_label
+from .layout import PAGE_WIDTH_IN
 from .style import plt, styled
 
 if TYPE_CHECKING:
@@ -24,7 +25,7 @@ def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, spec: MaterialSpec, c
     objective = grid[minimise].to_numpy()
     rng = np.random.default_rng(0)  # a random subsample avoids the moire of a strided one
     pick = np.sort(rng.choice(len(error), size=min(cloud_points, len(error)), replace=False))
-    fig, axes = plt.subplots(1, 2, figsize=(9.6, 4.0))
+    fig, axes = plt.subplots(1, 2, figsize=(PAGE_WIDTH_IN, 3.6))
     front_err = 100 * front["error"].to_numpy()
     front_obj = front["objective"].to_numpy()
     for ax, zoom in zip(axes, (False, True)):
@@ -45,9 +46,9 @@ def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, spec: MaterialSpec, c
         else:
             ax.set_title("objective cloud")
     # below the panels, never over the cloud
-    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False, markerscale=6,
+    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=2, frameon=False, markerscale=6,
                bbox_to_anchor=(0.5, 0.0))
     if title:
         fig.suptitle(title)
-    fig.set_layout_engine("tight", rect=(0, 0.07, 1, 1))  # laid out when drawn (demid.io.save_figure), once
+    fig.set_layout_engine("tight", rect=(0, 0.14, 1, 1))  # laid out when drawn (demid.io.save_figure), once
     return fig

@@ -14,7 +14,8 @@ import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch, Rectangle
 
-from .labels import axis_label
+from .labels import axis_label, tex_label
+from .layout import panel_grid
 from .style import MAX_PIXELS, plt, SCENARIO_COLORS, _axis_scale, _extent, styled
 
 ZOOM_PIXELS = 600  # nodes per side of the zoom panel's own grid (the panel is ~4 in wide at 300 dpi)
@@ -116,9 +117,9 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, surr
     zoom = _zoom_box(domain, sets, n, keep=keep) if d == 2 else None
     if zoom is not None:  # a thin set: the same pair again, zoomed on the sets
         pairs = pairs + pairs
-    ncol = min(3, len(pairs))
-    nrow = int(np.ceil(len(pairs) / ncol))
-    fig, grid_axes = plt.subplots(nrow, ncol, figsize=(4.4 * ncol + 0.6, 4.0 * nrow), squeeze=False)
+    nrow, ncol, (width, height) = panel_grid(len(pairs), 3.5, 3.1)
+    legend_in = 0.2 + 0.17 * (len(sets) + bool(reference_point))  # one legend line per scenario
+    fig, grid_axes = plt.subplots(nrow, ncol, figsize=(width, height + legend_in), squeeze=False)
     axes = grid_axes.reshape(1, -1)
     for ax in axes[0][len(pairs):]:
         ax.set_visible(False)
@@ -162,6 +163,10 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, surr
         if reference_point:
             ref = domain.to_search(np.array([[reference_point[f] for f in names]]))[0]
             ax.plot(ref[i], ref[j], marker="*", ms=11, color="#D55E00", mec="k", mew=0.6, ls="none")
+    if d > 2:  # each panel shows the set's shadow on one pair of factors
+        for ax, (i, j) in zip(axes[0], pairs):
+            rest = ", ".join(tex_label(spec.factor(names[k]).label) for k in range(d) if k not in (i, j))
+            ax.set_title(f"projection: any {rest}", fontsize=9)
     if zoom is not None:
         (x0, x1), (y0, y1) = zoom
         axes[0][1].set_xlim(x0, x1)
@@ -176,5 +181,5 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, surr
     if title:
         fig.suptitle(title)
     # laid out when drawn (demid.io.save_figure), once, at the resolution it is saved at
-    fig.set_layout_engine("tight", rect=(0, (0.035 + 0.045 * len(handles)) / nrow, 1, 1))
+    fig.set_layout_engine("tight", rect=(0, legend_in / (height + legend_in), 1, 1))
     return fig

@@ -9,6 +9,7 @@ import pandas as pd
 
 from ..sampling import Domain
 from .labels import axis_label, tex_label, tex_unit
+from .layout import panel_grid
 from .style import plt, styled, _axis_scale
 
 if TYPE_CHECKING:
@@ -22,9 +23,9 @@ def surface_figure(domain: Domain, spec: MaterialSpec, grid: pd.DataFrame, n: in
     names = list(domain.factors)
     d = domain.dim
     responses = [r for r in spec.response_names if r in grid.columns]
-    ncol = min(3, len(responses))
-    nrow = int(np.ceil(len(responses) / ncol))
-    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.6 * nrow), squeeze=False)
+    nrow, ncol, (width, height) = panel_grid(len(responses), 3.6, 3.0)
+    legend_in = 0.3
+    fig, axes = plt.subplots(nrow, ncol, figsize=(width, height + legend_in), squeeze=False)
     lo, hi = domain.search_bounds()
     step = max(1, (n - 1) // 200)
     for ax, r in zip(axes.ravel(), responses):
@@ -45,8 +46,9 @@ def surface_figure(domain: Domain, spec: MaterialSpec, grid: pd.DataFrame, n: in
             ax.plot([], [], color="k", lw=1.4, ls="--", label="target contour")
         if table is not None and len(table):
             pts = domain.to_search(table[names[:2]].to_numpy())
+            # not clipped: runs on the bounds of the search range are drawn whole
             ax.plot(pts[:, 0], pts[:, 1], "o", ms=3.5, mfc="w", mec="k", mew=0.6, ls="none",
-                    label="design runs")
+                    label="design runs", clip_on=False, zorder=5)
         ax.set_xlabel(axis_label(spec.factor(names[0])))
         ax.set_ylabel(axis_label(spec.factor(names[1])))
         missed = target is not None and not (z.min() < target < z.max())
@@ -63,7 +65,7 @@ def surface_figure(domain: Domain, spec: MaterialSpec, grid: pd.DataFrame, n: in
     if title or sub:
         fig.suptitle(f"{title}{sub}")
     # laid out when drawn (demid.io.save_figure), once, at the resolution it is saved at
-    fig.set_layout_engine("tight", rect=(0, 0.08 / nrow if handles else 0, 1, 1))
+    fig.set_layout_engine("tight", rect=(0, legend_in / (height + legend_in) if handles else 0, 1, 1))
     if handles:  # below the panels, never over a run
         fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=len(handles), frameon=False)
     return fig

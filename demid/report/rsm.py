@@ -134,10 +134,19 @@ def _symbol(name: str, symbols: dict[str, str]) -> str:
                     for p in name.split(":"))
 
 
+#: Coefficients smaller than this fraction of the largest are floating-point round-off of a term
+#: the data do not carry (1.8e-12·A·B beside terms of order 1): left out of printed equations.
+ROUND_OFF_FRACTION = 1e-9
+
+
 def equation(names: list[str], coefficients, symbols: dict[str, str], response: str, digits: int = 4) -> str:
-    """``y = b0 + b1·x1 − …`` with ``·`` between factors of a term."""
-    text = f"{response} = {coefficients[0]:.{digits}g}"
+    """``y = b0 + b1·x1 − …`` with ``·`` between factors of a term; terms at round-off are left out."""
+    floor = ROUND_OFF_FRACTION * max((abs(float(b)) for b in coefficients), default=0.0)
+    b0 = float(coefficients[0])
+    text = f"{response} = {0.0 if abs(b0) <= floor else b0:.{digits}g}"
     for name, b in zip(names[1:], coefficients[1:]):
+        if abs(float(b)) <= floor:
+            continue
         text += f" {'−' if b < 0 else '+'} {abs(b):.{digits}g}·" + _symbol(name, symbols).replace(":", "·")
     return text
 

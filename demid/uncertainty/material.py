@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 
 import pandas as pd
 
-from ..plots.labels import axis_label
+from ..plots.labels import axis_label, tex_label
 from ..plots.uncertainty import posterior_figure, tolerance_sweep_figure
 from ..sampling import uses_grid
 from ..sampling.evaluate import evaluate_set, uses_exact
@@ -56,6 +56,7 @@ class MaterialUncertainty:
     factor_labels: dict[str, str] = field(default_factory=dict)
     scenario_labels: dict[str, str] = field(default_factory=dict)
     unreachable: tuple[str, ...] = ()  # observable sets (d5+d10) with a target out of reach
+    observable_labels: dict[str, str] = field(default_factory=dict)  # mathtext, for the legends
 
     @property
     def summary(self) -> dict:
@@ -68,7 +69,7 @@ class MaterialUncertainty:
 
     def posterior_figure(self, title: str):
         return posterior_figure(self.posteriors, title, factor_labels=self.factor_labels,
-                                unreachable=self.unreachable)
+                                unreachable=self.unreachable, observable_labels=self.observable_labels)
 
 
 def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2.0,
@@ -150,4 +151,5 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
         information_gain=information_gain,
         ranking=ranking, advice=next_measurement_advice(ranking, labels) if len(ranking) else "",
         posteriors=posteriors, notes=notes, factor_labels=factor_labels, unreachable=unreachable,
-        scenario_labels={sc.name: sc.label for sc in spec.scenarios if sc.label != sc.name})
+        scenario_labels={sc.name: sc.label for sc in spec.scenarios if sc.label != sc.name},
+        observable_labels={r.name: tex_label(r.label) for r in spec.responses})

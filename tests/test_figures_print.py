@@ -1,0 +1,85 @@
+"""Figures fit a two-column page and say what they show: widths over the demo, equations without
+round-off terms, constant axes without offsets, plain log labels, legends with configured labels."""
+
+from __future__ import annotations
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np
+import pytest
+from matplotlib.figure import Figure
+from PIL import Image
+
+from demid.plots.layout import PAGE_WIDTH_IN, hold_constant_axis, panel_grid
+from demid.plots.uncertainty import _spaced
+from demid.report.rsm import equation
+
+
+@pytest.mark.workflow
+def test_every_demo_figure_fits_a_page_width(demo_run):
+    pngs = sorted((demo_run / "results").rglob("*.png"))
+    assert pngs, "the demo made no figure"
+    too_wide = []
+    for path in pngs:
+        with Image.open(path) as im:
+            dpi = im.info["dpi"][0]
+            width_in = im.size[0] / dpi
+        if width_in > 7.5:
+            too_wide.append(f"{path.name}: {width_in:.2f} in")
+    assert not too_wide, too_wide
+
+
+@pytest.mark.parametrize("n, ncol, nrow", [(1, 1, 1), (2, 2, 1), (3, 2, 2), (4, 2, 2), (5, 2, 3)])
+def test_panels_wrap_instead_of_shrinking(n, ncol, nrow):
+    rows, cols, (width, height) = panel_grid(n, 3.6, 3.0)
+    assert (rows, cols) == (nrow, ncol)
+    assert width <= PAGE_WIDTH_IN
+    assert height == pytest.approx(3.0 * nrow)
+
+
+def test_equation_leaves_out_round_off_terms():
+    names = ["Intercept", "A", "B", "A:B", "B:C"]
+    text = equation(names, np.array([120.0, 3.5, -2.25, 1.819e-12, 0.0]), {"A": "A", "B": "B", "C": "C"}, "S")
+    assert text == "S = 120 + 3.5·A − 2.25·B"
+    # a small but real coefficient stays
+    kept = equation(names[:3], np.array([1.0, 1e-6, 2.0]), {"A": "A", "B": "B"}, "y")
+    assert kept == "y = 1 + 1e-06·A + 2·B"
+
+
+def test_a_constant_series_gets_a_readable_axis():
+    fig = Figure()
+    ax = fig.subplots()
+    ax.plot([1, 2, 3], [0.3364] * 3)
+    ax.plot([1, 2, 3], [0.3364 + 1e-13] * 3)
+    hold_constant_axis(ax)
+    lo, hi = ax.get_ylim()
+    assert lo == pytest.approx(0.3364 * 0.95) and hi == pytest.approx(0.3364 * 1.05)
+    assert ax.yaxis.get_major_formatter().get_useOffset() is False
+    # a varying series keeps its autoscaled range
+    other = Figure().subplots()
+    other.plot([1, 2], [0.1, 0.9])
+    before = other.get_ylim()
+    hold_constant_axis(other)
+    assert other.get_ylim() == before
+
+
+def test_log_tick_labels_are_spaced():
+    assert _spaced([0.5, 1, 2, 3, 5, 7.5, 10, 15, 20]) == {0.5, 1, 2, 3, 5, 7.5, 15}
+    assert _spaced([1, 10, 100]) == {1, 10, 100}
+
+
+def test_posterior_legend_uses_configured_labels():
+    from types import SimpleNamespace
+
+    from demid.plots.uncertainty import posterior_figure
+
+    x = np.linspace(0, 1, 50)
+    post = SimpleNamespace(factors=["mu_r"], observables=("angle_of_repose",), axes_actual=[x],
+                           marginals=[np.exp(-((x - 0.4) / 0.1) ** 2)], credible_lower=[0.25],
+                           credible_upper=[0.55], log=[False], information_gain_bits=1.5)
+    fig = posterior_figure({"a": post}, "Study", observable_labels={"angle_of_repose": "$\\theta$"})
+    texts = [t.get_text() for legend in fig.legends for t in legend.get_texts()]
+    assert texts == ["$\\theta$ (1.50 bits)"]
+    assert not any("angle_of_repose" in t for t in texts)
