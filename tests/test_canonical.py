@@ -1,0 +1,71 @@
+"""Canonical analysis against a textbook example and closed-form surfaces."""
+
+import numpy as np
+import pytest
+
+from demid.canonical import canonical_analysis, quadratic_parts
+
+TERMS = [(0, 0), (1, 0), (0, 1), (2, 0), (0, 2), (1, 1)]
+
+
+def test_montgomery_example_11_2_maximum():
+    # Montgomery, Design and Analysis of Experiments, Example 11.2 (chemical process yield, CCD, alpha = 1.414):
+    # y = 79.94 + 0.995 x1 + 0.515 x2 - 1.376 x1^2 - 1.001 x2^2 + 0.250 x1 x2.
+    # Printed: x_s = (0.389, 0.306), y_s = 80.21, lambda_1 = -0.9634, lambda_2 = -1.4141,
+    # w1 = 0.2897 (x1 - 0.389) + 0.9571 (x2 - 0.306): a maximum inside the region.
+    b0, b, big_b = quadratic_parts(TERMS, [79.94, 0.995, 0.515, -1.376, -1.001, 0.250], 2)
+    c = canonical_analysis(b0, b, big_b, region_lower=[-1.414] * 2, region_upper=[1.414] * 2)
+    assert c.stationary_coded == pytest.approx([0.389, 0.306], abs=1e-3)
+    assert c.value == pytest.approx(80.21, abs=0.01)
+    assert c.eigenvalues == pytest.approx([-0.9634, -1.4141], abs=1e-3)
+    assert np.abs(c.eigenvectors[:, 0]) == pytest.approx([0.2897, 0.9571], abs=1e-3)
+    assert c.kind == "maximum" and c.inside and not c.is_ridge
+
+
+def test_saddle_closed_form():
+    # y = 2 + x1 + x2 + x1^2 - 2 x2^2 + 0 x1 x2: B = diag(1, -2); x_s = -B^-1 b / 2 = (-0.5, 0.25)
+    b0, b, big_b = quadratic_parts(TERMS, [2, 1, 1, 1, -2, 0], 2)
+    c = canonical_analysis(b0, b, big_b, region_lower=[-1, -1], region_upper=[1, 1])
+    assert c.kind == "saddle point"
+    assert c.stationary_coded == pytest.approx([-0.5, 0.25])
+    assert c.eigenvalues == pytest.approx([1, -2])
+    assert c.value == pytest.approx(2 - 0.25 + 0.125)
+    assert c.inside
+
+
+def test_rotated_saddle_eigenvectors():
+    # y = x1 x2: B = [[0, .5], [.5, 0]], eigenvalues +-0.5 along (1, 1)/sqrt2 and (1, -1)/sqrt2
+    b0, b, big_b = quadratic_parts(TERMS, [0, 0, 0, 0, 0, 1], 2)
+    c = canonical_analysis(b0, b, big_b, region_lower=[-1, -1], region_upper=[1, 1])
+    assert c.eigenvalues == pytest.approx([0.5, -0.5])
+    assert np.abs(c.eigenvectors) == pytest.approx(np.full((2, 2), 2 ** -0.5))
+    assert c.kind == "saddle point"
+
+
+def test_rising_ridge():
+    # y = 10 + 2 x1 + 0.5 x2 + 0.01 x1^2 - 3 x2^2: |0.01| < 0.1 * 3, and the slope 2 along x1 carries the
+    # response over the region: a rising ridge along x1; the ridge point nearest the centre is x2 = 0.5/6.
+    b0, b, big_b = quadratic_parts(TERMS, [10, 2, 0.5, 0.01, -3, 0], 2)
+    c = canonical_analysis(b0, b, big_b, region_lower=[-1, -1], region_upper=[1, 1])
+    assert c.kind == "rising ridge"
+    assert c.stationary_coded == pytest.approx([0, 0.5 / 6])
+    assert np.abs(c.ridge_directions[:, 0]) == pytest.approx([1, 0])
+    assert c.ridge_slopes == pytest.approx([2])
+    # the unrestricted stationary point x1 = -2/(2*0.01) = -100 is far outside: rsm's threshold keeps it in
+
+
+def test_stationary_ridge():
+    # y = 10 + 0.001 x1 - 3 x2^2 + 0.01 x1^2: flat along x1 within the region
+    b0, b, big_b = quadratic_parts(TERMS, [10, 0.001, 0, 0.01, -3, 0], 2)
+    c = canonical_analysis(b0, b, big_b, region_lower=[-1, -1], region_upper=[1, 1])
+    assert c.kind == "stationary ridge"
+    assert c.stationary_coded == pytest.approx([0, 0])
+    assert c.inside
+
+
+def test_threshold_zero_gives_full_stationary_point():
+    b0, b, big_b = quadratic_parts(TERMS, [10, 2, 0.5, 0.01, -3, 0], 2)
+    c = canonical_analysis(b0, b, big_b, region_lower=[-1, -1], region_upper=[1, 1], threshold=0.0)
+    assert c.kind == "saddle point"
+    assert c.stationary_coded == pytest.approx([-100, 0.5 / 6])
+    assert not c.inside

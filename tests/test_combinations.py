@@ -1,0 +1,86 @@
+"""Identified combinations on sets whose geometry is known in closed form."""
+
+import numpy as np
+import pytest
+
+from demid.combinations import band_curve, principal_axes, set_combinations
+from demid.design import Coding
+
+
+def grid(n, d=2, lo=0.0, hi=1.0):
+    axes = [np.linspace(lo, hi, n)] * d
+    return np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, d)
+
+
+def test_straight_band_direction_and_width():
+    # |a + b - 1| <= w on the unit square: normal (1, 1)/sqrt 2, thickness 2w/sqrt 2 along it
+    w = 0.05
+    pts = grid(801)
+    band = pts[np.abs(pts.sum(axis=1) - 1) <= w]
+    axes = principal_axes(band, [0, 0], [1, 1])
+    assert np.allclose(np.abs(axes.directions[:, 0]), [2 ** -0.5, 2 ** -0.5], atol=1e-3)
+    assert axes.widths[0] == pytest.approx(2 * w / np.sqrt(2), rel=0.02)
+    # box extent along (1,1)/sqrt2 is sqrt 2: the fraction is w
+    assert axes.width_fraction[0] == pytest.approx(w, rel=0.02)
+    assert axes.identified[0] and not axes.identified[1]
+    assert axes.free[1]  # the band runs corner to corner
+
+
+def test_straight_band_statement_in_actual_units():
+    # the same band on actual axes: a in [0, 2] coded as (a - 1)/1, b in [10, 30] coded as (b - 20)/10
+    from demid.combinations import linear_statement
+
+    coding = Coding(("a", "b"), (1.0, 20.0), (1.0, 10.0))
+    pts = grid(801, lo=-1, hi=1)
+    band = pts[np.abs(pts.sum(axis=1)) <= 0.1]           # x_a + x_b = 0 ± 0.1 (coded)
+    axes = principal_axes(band, [-1, -1], [1, 1])
+    a, c, w, text = linear_statement(axes.directions[:, 0], axes.centre, axes.widths[0], coding, ["a", "b"],
+                                     [False, False])
+    # x_a + x_b = 0  <=>  (a - 1) + (b - 20)/10 = 0  <=>  a + 0.1 b = 3; unit-length coefficients
+    norm = np.hypot(1, 0.1)
+    assert np.allclose(a, [1 / norm, 0.1 / norm], atol=2e-3)
+    assert c == pytest.approx(3 / norm, rel=2e-3)
+    assert w == pytest.approx(0.1 / norm, rel=0.03)
+    assert text.startswith("1.00·a + 0.10·b = 2.98 ± ")
+
+
+def test_curved_band_curve_recovered_within_grid_step():
+    # y = x^2 ± 0.04 on the unit square: the band's centre line is x^2
+    n = 401
+    pts = grid(n)
+    band = pts[np.abs(pts[:, 1] - pts[:, 0] ** 2) <= 0.04]
+    curve = band_curve(band, along=0, across=1)
+    step = 1 / (n - 1)
+    inner = curve[(curve["lower"] > 0) & (curve["upper"] < 1)]
+    assert len(inner) > 300
+    assert np.max(np.abs(inner["mid"] - inner["along"] ** 2)) <= step
+    assert np.max(np.abs(inner["width"] - 0.08)) <= 2 * step + 1e-9  # each end within a step
+    res = set_combinations(band, [0, 0], [1, 1], ["x", "y"], scenario="s", set_name="strict", step=[step, step])
+    assert res.wide == 0 and res.narrow == 1
+    assert res.bend > 0.25                     # curved: not stated as a straight combination
+    assert res.identified                      # thin: identified as a band
+
+
+def test_disk_has_no_preferred_direction():
+    pts = grid(601, lo=-1, hi=1)
+    disk = pts[np.hypot(pts[:, 0] - 0.1, pts[:, 1] + 0.2) <= 0.5]
+    axes = principal_axes(disk, [-1, -1], [1, 1])
+    # uniform disk of radius r: sigma^2 = r^2/4 along every axis
+    assert axes.widths == pytest.approx([np.sqrt(12) * 0.25] * 2, rel=0.01)
+    assert axes.widths[0] == pytest.approx(axes.widths[1], rel=0.01)
+    assert not axes.identified.any()
+
+
+def test_three_factor_slab_one_identified_two_free():
+    pts = grid(61, d=3, lo=-1, hi=1)
+    normal = np.array([1.0, -2.0, 0.5]) / np.linalg.norm([1.0, -2.0, 0.5])
+    slab = pts[np.abs(pts @ normal - 0.1) <= 0.06]
+    axes = principal_axes(slab, [-1] * 3, [1] * 3)
+    assert abs(axes.directions[:, 0] @ normal) == pytest.approx(1, abs=2e-3)
+    assert axes.widths[0] == pytest.approx(0.12, rel=0.05)
+    assert axes.identified.tolist() == [True, False, False]
+    assert (axes.width_fraction[1:] > 0.5).all()
+
+
+def test_empty_set():
+    assert principal_axes(np.zeros((0, 2)), [0, 0], [1, 1]) is None
