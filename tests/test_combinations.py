@@ -41,7 +41,7 @@ def test_straight_band_statement_in_actual_units():
     assert np.allclose(a, [1 / norm, 0.1 / norm], atol=2e-3)
     assert c == pytest.approx(3 / norm, rel=2e-3)
     assert w == pytest.approx(0.1 / norm, rel=0.03)
-    assert text.startswith("1.00·a + 0.10·b = 2.98 ± ")
+    assert text.startswith("a + 0.1·b = 3 ± 0.1")  # a + 0.1 b = 3 ± 0.1, the equation above
 
 
 def test_curved_band_curve_recovered_within_grid_step():
@@ -84,3 +84,32 @@ def test_three_factor_slab_one_identified_two_free():
 
 def test_empty_set():
     assert principal_axes(np.zeros((0, 2)), [0, 0], [1, 1]) is None
+
+
+def test_curved_sheet_in_three_factors_is_thin_locally():
+    # z = 0.5 (x^2 + y^2) - 0.25 ± 0.05 in [-1, 1]^3: a curved sheet whose principal axes overstate its
+    # thickness; along the local normal it is 0.1 / sqrt(1 + x^2 + y^2) thick, between 0.1/sqrt 3 and 0.1
+    from demid.combinations.axes import local_thickness
+
+    pts = grid(81, d=3, lo=-1, hi=1)
+    sheet = pts[np.abs(pts[:, 2] - 0.5 * (pts[:, 0] ** 2 + pts[:, 1] ** 2) + 0.25) <= 0.05]
+    axes = principal_axes(sheet, [-1] * 3, [1] * 3)
+    assert axes.widths[0] > 0.2                          # globally the sheet looks thick
+    local = local_thickness(sheet, axes, [-1] * 3, [1] * 3)
+    step = 2 / 80
+    assert 0.1 / np.sqrt(3) - step <= np.median(local.widths) <= 0.1 + step
+    assert local.fraction <= 0.10
+    res = set_combinations(sheet, [-1] * 3, [1] * 3, ["x", "y", "z"], scenario="s", set_name="strict")
+    assert res.identified
+
+
+def test_three_factor_slab_local_agrees_with_global():
+    from demid.combinations.axes import local_thickness
+
+    pts = grid(61, d=3, lo=-1, hi=1)
+    normal = np.array([1.0, -2.0, 0.5]) / np.linalg.norm([1.0, -2.0, 0.5])
+    slab = pts[np.abs(pts @ normal - 0.1) <= 0.06]
+    axes = principal_axes(slab, [-1] * 3, [1] * 3)
+    local = local_thickness(slab, axes, [-1] * 3, [1] * 3)
+    assert np.median(local.widths) == pytest.approx(axes.widths[0], rel=0.1)
+    assert np.median(np.abs(local.normals @ normal)) == pytest.approx(1, abs=0.01)

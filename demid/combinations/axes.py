@@ -152,7 +152,8 @@ def linear_statement(normal: np.ndarray, centre: np.ndarray, width: float, codin
                      log: list[bool], digits: int = 3) -> tuple[np.ndarray, float, float, str]:
     """The combination ``normal·x = normal·centre ± width/2`` (coded x) in search units
     (x_i = (s_i − centre_i)/unit_i): coefficients ``a`` of unit length with the largest positive,
-    the constant c and the half-width w, and the sentence ``0.52·μ_r + 0.85·log10 γ = 1.23 ± 0.05``."""
+    the constant c and the half-width w, and the sentence ``μ_r + 1.63·log10 γ = 2.37 ± 0.1`` (the
+    same equation divided by the coefficient of the factor that loads most in coded units)."""
     unit = np.asarray(coding.unit, dtype=float)
     mid = np.asarray(coding.center, dtype=float)
     a = normal / unit
@@ -162,14 +163,71 @@ def linear_statement(normal: np.ndarray, centre: np.ndarray, width: float, codin
     if a[np.argmax(np.abs(a))] < 0:
         scale = -scale
     a, c, w = a / scale, c / scale, abs(w / scale)
+    # written with the coefficient of the factor that loads most (coded) equal to 1
+    lead = float(a[np.argmax(np.abs(normal))])
+    shown, c_shown, w_shown = a / lead, c / lead, abs(w / lead)
     terms = []
-    for coef, label, lg in zip(a, labels, log):
+    order = [int(np.argmax(np.abs(normal)))] + [i for i in range(len(a)) if i != int(np.argmax(np.abs(normal)))]
+    for coef, label, lg in ((shown[i], labels[i], log[i]) for i in order):
         if abs(coef) < 0.5 * 10 ** -digits:
             continue
         name = f"log10 {label}" if lg else label
         sign = "−" if coef < 0 else "+"
-        terms.append((sign, f"{abs(coef):.{digits - 1}f}·{name}"))
+        terms.append((sign, name if abs(abs(coef) - 1) < 1e-12 else f"{abs(coef):.{digits}g}·{name}"))
     text = ""
     for i, (sign, term) in enumerate(terms):
         text += (("−" if sign == "−" else "") + term) if i == 0 else f" {sign} {term}"
-    return a, c, w, f"{text} = {c:.{digits}g} ± {w:.{digits - 1}g}"
+    return a, c, w, f"{text} = {c_shown:.{digits}g} ± {w_shown:.{digits - 1}g}"
+
+
+@dataclass(frozen=True)
+class LocalThickness:
+    """A curved set's thickness cell by cell: the set is cut into cells along its wide principal
+    axes, and in each cell the narrowest local axis gives the local normal and width."""
+
+    centres: np.ndarray        # cells x d, coded
+    normals: np.ndarray        # cells x d, unit
+    widths: np.ndarray         # √12·σ along the local normal, coded
+    fractions: np.ndarray      # width / box extent along the local normal
+    counts: np.ndarray         # points per cell
+
+    @property
+    def fraction(self) -> float:
+        """Median local width fraction, each cell weighted by its points (its volume)."""
+        order = np.argsort(self.fractions)
+        cum = np.cumsum(self.counts[order])
+        return float(self.fractions[order][np.searchsorted(cum, cum[-1] / 2)])
+
+
+#: Cells per wide axis of :func:`local_thickness`, and the fewest points a cell needs.
+LOCAL_CELLS = 8
+LOCAL_MIN_POINTS = 30
+
+
+def local_thickness(points: np.ndarray, axes: PrincipalAxes, lower, upper, cells: int = LOCAL_CELLS
+                    ) -> LocalThickness | None:
+    """Thickness of a thin curved set (a sheet in 3+ factors) along its local normal: cells of equal
+    size over the set's extent on principal axes 2..d, a principal-axis analysis in each.  None when
+    no cell holds :data:`LOCAL_MIN_POINTS` points."""
+    points = np.asarray(points, dtype=float)
+    ranges = np.asarray(upper, dtype=float) - np.asarray(lower, dtype=float)
+    coords = (points - axes.centre) @ axes.directions[:, 1:]
+    lo, hi = coords.min(axis=0), coords.max(axis=0)
+    index = np.clip(((coords - lo) / np.where(hi > lo, hi - lo, 1) * cells).astype(int), 0, cells - 1)
+    key = np.ravel_multi_index(index.T, (cells,) * index.shape[1])
+    order = np.argsort(key, kind="stable")
+    starts = np.flatnonzero(np.r_[True, np.diff(key[order]) != 0])
+    rows = []
+    for part in np.split(order, starts[1:]):
+        if len(part) < LOCAL_MIN_POINTS:
+            continue
+        cell = points[part]
+        centre = cell.mean(axis=0)
+        values, vectors = np.linalg.eigh(np.cov((cell - centre).T, bias=True))
+        normal = vectors[:, 0]
+        width = UNIFORM_WIDTH_PER_SD * np.sqrt(max(values[0], 0.0))
+        rows.append((centre, normal, width, width / float(np.abs(normal) @ ranges), len(part)))
+    if not rows:
+        return None
+    centres, normals, widths, fractions, counts = (np.array(col) for col in zip(*rows))
+    return LocalThickness(centres, normals, widths, fractions, counts)

@@ -20,8 +20,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
-from .axes import (FREE_MIN_WIDTH, IDENTIFIED_MAX_WIDTH, STRAIGHT_MAX_BEND, PrincipalAxes, band_curve, curve_bend,
-                   linear_statement, principal_axes)
+from .axes import (FREE_MIN_WIDTH, IDENTIFIED_MAX_WIDTH, STRAIGHT_MAX_BEND, LocalThickness, PrincipalAxes, band_curve,
+                   curve_bend, linear_statement, local_thickness, principal_axes)
 
 if TYPE_CHECKING:
     from ..design import Coding
@@ -35,6 +35,9 @@ WIDTH_COLUMNS = ["width_coded", "width_fraction_of_range"]
 LOADING_MIN = 0.2
 #: Rows of the band's curve in the JSON and the report.
 CURVE_ROWS = 11
+#: Below this angle (degrees) between another observable's gradient and the identified direction, it cuts
+#: the band only at a shallow angle.
+SHALLOW_ANGLE = 30.0
 #: At most this many points of a set enter the gradient average of the advice.
 ADVICE_POINTS = 2000
 
@@ -66,6 +69,8 @@ class SetCombination:
     narrow: int | None = None
     bend: float = float("nan")
     band_fraction: float = float("nan")   # median local thickness / box extent along the local normal
+    band_span: float = float("nan")       # extent of the band along its wide factor / that factor's range
+    local: LocalThickness | None = None   # 3+ factors: thickness along the local normal, cell by cell
     statement: str = ""
     equation: dict = field(default_factory=dict)
 
@@ -80,10 +85,27 @@ class SetCombination:
 
     @property
     def free(self) -> np.ndarray:
-        """Columns: the directions the set leaves (almost) open."""
+        """Columns: the directions the set leaves (almost) open (a 2-factor band: the direction along it,
+        when it spans the wide factor's range; its local tangents are in :meth:`tangents`)."""
         if self.axes is None:
             return np.zeros((0, 0))
+        if self.curve is not None and np.isfinite(self.band_span):  # a 2-factor band
+            return self.axes.directions[:, 1:] if self.band_span >= FREE_MIN_WIDTH else self.axes.directions[:, :0]
         return self.axes.directions[:, self.axes.free]
+
+    def normals_at(self, points_coded: np.ndarray) -> np.ndarray | None:
+        """Unit normal of the set at each point: a 2-factor band's, from the slope of its centre line;
+        a curved set's in 3+ factors, that of the nearest cell of :attr:`local` (None otherwise)."""
+        if self.curve is not None and len(self.curve) >= 3:
+            along = self.curve["along"].to_numpy()
+            slope = np.interp(points_coded[:, self.wide], along, np.gradient(self.curve["mid"].to_numpy(), along))
+            out = np.zeros_like(points_coded)
+            out[:, self.wide], out[:, self.narrow] = -slope, 1.0
+            return out / np.linalg.norm(out, axis=1)[:, None]
+        if self.local is not None:
+            nearest = np.argmin(((points_coded[:, None, :] - self.local.centres[None]) ** 2).sum(axis=2), axis=1)
+            return self.local.normals[nearest]
+        return None
 
 
 def set_combinations(points_coded: np.ndarray, lower, upper, factors, *, scenario: str, set_name: str,
@@ -93,6 +115,10 @@ def set_combinations(points_coded: np.ndarray, lower, upper, factors, *, scenari
     (coded; None or NaN for sample points)."""
     axes = principal_axes(points_coded, lower, upper, factors=factors)
     out = SetCombination(scenario, set_name, axes)
+    if axes is not None and len(factors) > 2:
+        out.local = local_thickness(points_coded, axes, lower, upper)
+        if out.local is not None:
+            out.band_fraction = out.local.fraction
     if axes is None or len(factors) != 2:
         return out
     lo, hi = np.asarray(lower, dtype=float), np.asarray(upper, dtype=float)
@@ -108,6 +134,7 @@ def set_combinations(points_coded: np.ndarray, lower, upper, factors, *, scenari
         slope = np.gradient(curve["mid"].to_numpy(), curve["along"].to_numpy())
         local = curve["width"].to_numpy() / (np.abs(slope) * (hi[wide] - lo[wide]) + (hi[narrow] - lo[narrow]))
         out.band_fraction = float(np.median(local))
+        out.band_span = float((curve["along"].max() - curve["along"].min()) / (hi[wide] - lo[wide]))
     return out
 
 
@@ -169,17 +196,23 @@ class MaterialCombinations:
         if res.axes is None:
             return "no admissible point."
         frac = res.axes.width_fraction
+        width = res.band_fraction if np.isfinite(res.band_fraction) else frac[0]
         if not res.identified:
-            return (f"no combination is identified: the narrowest direction spans {100 * frac[0]:.0f} % of the "
-                    f"range along it.")
-        free = [j for j in range(len(labels)) if res.axes.free[j]]
-        free_text = ("; free along " + ", ".join(_direction_text(res.axes.directions[:, j], labels)
-                                                   for j in free)) if free else ""
+            return (f"no combination is identified: the set is {100 * width:.0f} % of the range wide across its "
+                    f"narrowest direction.")
+        if res.axes.identified.all():
+            return ("every direction is identified (a small region; widths "
+                    + ", ".join(f"{100 * v:.1f} %" for v in frac) + f" of the range along its axes): {res.statement}.")
+        free = res.free
+        free_text = ("; free along " + ", ".join(_direction_text(free[:, j], labels) for j in range(free.shape[1]))
+                     if free.shape[1] and res.curve is None else "; free along the band" if free.shape[1] else "")
         if res.curve is not None and np.isfinite(res.bend) and res.bend > STRAIGHT_MAX_BEND:
             narrow, wide = labels[res.narrow], labels[res.wide]
             return (f"a curved band: {narrow} ≈ f({wide}) along the band (curve table below), "
                     f"{100 * res.band_fraction:.1f} % of the range thick{free_text}.")
-        width = (res.band_fraction if np.isfinite(res.band_fraction) else frac[0])
+        if res.local is not None and res.axes.width_fraction[0] > 2 * res.band_fraction:
+            return (f"a curved set, {100 * res.band_fraction:.1f} % of the range thick along its local normal; "
+                    f"the best straight approximation, {res.statement}, is {100 * frac[0]:.0f} % wide{free_text}.")
         return f"{res.statement} ({100 * width:.1f} % of the range along it){free_text}."
 
     def to_json(self) -> dict:
@@ -195,6 +228,7 @@ class MaterialCombinations:
             if res.curve is not None and len(res.curve):
                 rows = _curve_rows(res.curve)
                 entry.update(bend=float(res.bend), band_fraction=float(res.band_fraction),
+                             band_span=float(res.band_span),
                              curve={"along": self.spec.factor_names[res.wide],
                                     "across": self.spec.factor_names[res.narrow],
                                     "along_actual": [float(v) for v in self._to_actual(rows["along"].to_numpy(), res.wide)],
@@ -247,7 +281,11 @@ def break_ridge_advice(res: SetCombination, points_search: np.ndarray, surrogate
         ok = norm > 0
         if not ok.any():
             continue
-        scores[r] = float(np.median(np.linalg.norm(g[ok] @ free, axis=1) / norm[ok]))
+        normal = res.normals_at(coding.to_coded(pts))
+        # the gradient's part along the set (orthogonal to its local normal), or along the free directions
+        along = (np.linalg.norm(g - np.sum(g * normal, axis=1)[:, None] * normal, axis=1) if normal is not None
+                 else np.linalg.norm(g @ free, axis=1))
+        scores[r] = float(np.median(along[ok] / norm[ok]))
     if not scores:
         return ""
     best = max(scores, key=scores.get)
@@ -257,7 +295,8 @@ def break_ridge_advice(res: SetCombination, points_search: np.ndarray, surrogate
     target = spec.targets.get(best)
     gain = ""
     if ranking is not None and len(ranking) and target is not None:
-        rows = ranking[ranking["observables"] == "+".join(list(observables) + [best])]
+        wanted = frozenset(list(observables) + [best])
+        rows = ranking[[frozenset(str(o).split("+")) == wanted for o in ranking["observables"]]]
         if len(rows) and "information_gain_bits" in rows.columns and np.isfinite(rows["information_gain_bits"].iloc[0]):
             gain = f"; with it the ranking gives {float(rows['information_gain_bits'].iloc[0]):.2f} bits"
     measure = "adding its measurement" if target is not None else "measuring it (it has no target yet)"
@@ -265,7 +304,11 @@ def break_ridge_advice(res: SetCombination, points_search: np.ndarray, surrogate
                      for r, s in scores.items() if r != best)
     return (f"*{scen}* identifies a combination and leaves the band free: {label} changes most along the band "
             f"(its gradient lies {angle:.0f}° off the identified direction"
-            + (f"; {rest}" if rest else "") + f"), so {measure} would break the ridge{gain}.")
+            + (f"; {rest}" if rest else "") + f"), so {measure} "
+            + ("would break the ridge" if angle >= SHALLOW_ANGLE else
+               f"is the best of the others at hand, but it cuts the band at a shallow angle: it shortens the band "
+               f"where its curvature differs, and a test that changes along the band would break the ridge")
+            + f"{gain}.")
 
 
 def material_combinations(surrogates: dict, spec: MaterialSpec, coding: Coding, strict: dict[str, AdmissibleSet],
@@ -297,8 +340,9 @@ def material_combinations(surrogates: dict, spec: MaterialSpec, coding: Coding, 
             results.append(res)
             clouds[(sc.name, name)] = coded
             searched[name] = (res, points)
-        use = searched.get("plausible") if "plausible" in searched and searched["plausible"][0].axes else \
-            searched.get("strict")
+        # the plausible set when it identifies the combination, else the strict one
+        use = next((searched[k] for k in ("plausible", "strict") if k in searched and searched[k][0].identified),
+                   None)
         if use is not None:
             line = break_ridge_advice(use[0], use[1], surrogates, spec, coding, sc.observables, ranking)
             if line:
