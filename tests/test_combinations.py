@@ -113,3 +113,13 @@ def test_three_factor_slab_local_agrees_with_global():
     local = local_thickness(slab, axes, [-1] * 3, [1] * 3)
     assert np.median(local.widths) == pytest.approx(axes.widths[0], rel=0.1)
     assert np.median(np.abs(local.normals @ normal)) == pytest.approx(1, abs=0.01)
+
+
+def test_band_cut_by_the_box_is_flagged():
+    # a + b <= 0.1 on the unit square: a thin corner, whose narrow width is set by the box, not the data
+    pts = grid(401)
+    corner = pts[pts.sum(axis=1) <= 0.1]
+    res = set_combinations(corner, [0, 0], [1, 1], ["a", "b"], scenario="s", set_name="strict", step=[0.0025] * 2)
+    assert res.cut == "lower"
+    straight = pts[np.abs(pts.sum(axis=1) - 1) <= 0.05]
+    assert set_combinations(straight, [0, 0], [1, 1], ["a", "b"], scenario="s", set_name="strict").cut == "none"

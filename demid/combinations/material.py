@@ -71,6 +71,7 @@ class SetCombination:
     band_fraction: float = float("nan")   # median local thickness / box extent along the local normal
     band_span: float = float("nan")       # extent of the band along its wide factor / that factor's range
     local: LocalThickness | None = None   # 3+ factors: thickness along the local normal, cell by cell
+    cut: str = "none"                     # which end of the box along the narrowest direction the set reaches
     statement: str = ""
     equation: dict = field(default_factory=dict)
 
@@ -115,6 +116,8 @@ def set_combinations(points_coded: np.ndarray, lower, upper, factors, *, scenari
     (coded; None or NaN for sample points)."""
     axes = principal_axes(points_coded, lower, upper, factors=factors)
     out = SetCombination(scenario, set_name, axes)
+    if axes is not None:
+        out.cut = _cut_side(points_coded, axes.directions[:, 0], lower, upper)
     if axes is not None and len(factors) > 2:
         out.local = local_thickness(points_coded, axes, lower, upper)
         if out.local is not None:
@@ -136,6 +139,20 @@ def set_combinations(points_coded: np.ndarray, lower, upper, factors, *, scenari
         out.band_fraction = float(np.median(local))
         out.band_span = float((curve["along"].max() - curve["along"].min()) / (hi[wide] - lo[wide]))
     return out
+
+
+def _cut_side(points: np.ndarray, normal: np.ndarray, lower, upper) -> str:
+    """Which ends of the box, along ``normal``, the set reaches (within :data:`BOUND_TOUCH` of the box's
+    extent along it): there the set's width is the search range's, not the data's."""
+    from ..sampling.domain import AT_BOUND, BOUND_TOUCH
+
+    lo, hi = np.asarray(lower, dtype=float), np.asarray(upper, dtype=float)
+    box_min = float(np.sum(np.minimum(normal * lo, normal * hi)))
+    box_max = float(np.sum(np.maximum(normal * lo, normal * hi)))
+    proj = points @ normal
+    tol = BOUND_TOUCH * (box_max - box_min) + 1e-12
+    low, high = proj.min() <= box_min + tol, proj.max() >= box_max - tol
+    return AT_BOUND[int(low) + 2 * int(high)]
 
 
 def _curve_rows(curve: pd.DataFrame, rows: int = CURVE_ROWS) -> pd.DataFrame:
@@ -181,8 +198,8 @@ class MaterialCombinations:
         narrowest direction, when identified, with loadings of at least :data:`LOADING_MIN`)."""
         out = {}
         for res in self.results:
-            if res.set != set_name or not res.identified:
-                continue
+            if res.set != set_name or not res.identified or res.cut != "none":
+                continue  # a width the search range sets is not the data's
             loads = res.axes.directions[:, 0]
             part = [f for f, v in zip(self.spec.factor_names, loads) if abs(v) >= LOADING_MIN]
             if len(part) >= 2:
@@ -203,6 +220,10 @@ class MaterialCombinations:
         if res.axes.identified.all():
             return ("every direction is identified (a small region; widths "
                     + ", ".join(f"{100 * v:.1f} %" for v in frac) + f" of the range along its axes): {res.statement}.")
+        if res.cut != "none":
+            return (f"{res.statement}, but the set reaches the search range's "
+                    f"{'both ends' if res.cut == 'both' else res.cut + ' end'} along this direction: its width there is "
+                    f"the range's, not the data's (cut by the search range; widen the range to see the band).")
         free = res.free
         free_text = ("; free along " + ", ".join(_direction_text(free[:, j], labels) for j in range(free.shape[1]))
                      if free.shape[1] and res.curve is None else "; free along the band" if free.shape[1] else "")
@@ -219,7 +240,7 @@ class MaterialCombinations:
         out = {"sets": [], "advice": self.advice, "in_combination": self.in_combination(),
                "identified_max_width": IDENTIFIED_MAX_WIDTH, "free_min_width": FREE_MIN_WIDTH}
         for res in self.results:
-            entry = {"scenario": res.scenario, "set": res.set, "identified": bool(res.identified),
+            entry = {"scenario": res.scenario, "set": res.set, "identified": bool(res.identified), "cut": res.cut,
                      "text": self.sentences(res)}
             if res.axes is not None:
                 entry.update(statement=res.statement, **res.equation,
@@ -239,8 +260,13 @@ class MaterialCombinations:
 
 
 def _direction_text(vector: np.ndarray, labels: list[str]) -> str:
-    parts = [f"{v:+.2f}·{lab}" for v, lab in zip(vector, labels) if abs(v) >= 0.005]
-    return "(" + " ".join(parts).lstrip("+") + ")"
+    text = ""
+    for v, lab in zip(vector, labels):
+        if abs(v) < 0.005:
+            continue
+        term = f"{abs(v):.2f}·{lab}"
+        text += ("−" + term if v < 0 else term) if not text else f" {'−' if v < 0 else '+'} {term}"
+    return "(" + text + ")"
 
 
 def coded_box(spec: MaterialSpec, coding: Coding) -> tuple[np.ndarray, np.ndarray]:
@@ -267,7 +293,7 @@ def break_ridge_advice(res: SetCombination, points_search: np.ndarray, surrogate
     averaged over the set's points) lies most along the free directions.  "" when the scenario has
     no identified combination with a free complement, or no other observable."""
     free = res.free
-    if not res.identified or free.shape[1] == 0 or len(points_search) == 0:
+    if not res.identified or res.cut != "none" or free.shape[1] == 0 or len(points_search) == 0:
         return ""
     others = [r for r in spec.response_names if r not in observables and r in surrogates]
     if not others:
@@ -302,7 +328,7 @@ def break_ridge_advice(res: SetCombination, points_search: np.ndarray, surrogate
     measure = "adding its measurement" if target is not None else "measuring it (it has no target yet)"
     rest = ", ".join(f"{spec.response_labels.get(r, r)} {np.degrees(np.arcsin(np.clip(s, 0, 1))):.0f}°"
                      for r, s in scores.items() if r != best)
-    return (f"*{scen}* identifies a combination and leaves the band free: {label} changes most along the band "
+    return (f"*{scen}* identifies a combination and leaves its complement free: {label} changes most along the set "
             f"(its gradient lies {angle:.0f}° off the identified direction"
             + (f"; {rest}" if rest else "") + f"), so {measure} "
             + ("would break the ridge" if angle >= SHALLOW_ANGLE else

@@ -177,3 +177,36 @@ def stationary_point(fit, lower, upper) -> StationaryPoint:
     kind = "maximum" if np.all(eig < 0) else "minimum" if np.all(eig > 0) else "saddle point"
     inside = bool(np.all(actual >= np.asarray(lower) - 1e-12) and np.all(actual <= np.asarray(upper) + 1e-12))
     return StationaryPoint(xs, actual, value, kind, inside)
+
+
+def canonical_text(canonical: dict | None, fit, spec, letters: dict[str, str], label: str) -> str:
+    """The canonical analysis in words (as rsm's ``canonical()``): eigenvalues and eigenvectors of the
+    quadratic part, the kind, the stationary point (coded and actual) and whether it lies inside the
+    region of the runs; for a ridge, the ridge point nearest the design centre and the ridge direction.
+    ``canonical`` is the fit JSON's entry (``fits/{material}.json``); computed here only when absent."""
+    if canonical is None:
+        from ..canonical import fit_canonical
+
+        canonical = fit_canonical(fit).to_json()
+    names = [letters[f] for f in fit.factors]
+    values = ", ".join(f"{v:.4g}" for v in canonical["eigenvalues"])
+    vectors = "; ".join("(" + ", ".join(f"{n} {x:+.3f}" for n, x in zip(names, vec)) + ")"
+                        for vec in canonical["eigenvectors"])
+    coded = ", ".join(f"{n} = {v:.3g}" for n, v in zip(names, canonical["stationary_coded"]))
+    actual = ", ".join(f"{spec.factor(f).label} = {v:.4g}" for f, v in zip(fit.factors, canonical["stationary_actual"]))
+    where = "inside" if canonical["inside"] else "outside"
+    text = (f"Canonical analysis (eigenvalues below {canonical['threshold']:.3g}, a tenth of the largest, count as "
+            f"zero): eigenvalues {values}; eigenvectors {vectors}. ")
+    if "ridge" in canonical["kind"]:
+        ridge = "; ".join("(" + ", ".join(f"{n} {x:+.3f}" for n, x in zip(names, vec)) + ")"
+                          for vec in canonical.get("ridge_directions", []))
+        slope = ", ".join(f"{v:.3g}" for v in canonical.get("ridge_slopes", []))
+        text += (f"A **{canonical['kind']}** along {ridge} (slope {slope} per coded unit): the response "
+                 + ("keeps changing along it, the optimum lies beyond the runs" if canonical["kind"] == "rising ridge"
+                    else "hardly changes along it, a line of near-equal responses")
+                 + f". Its point nearest the design centre: {coded} (coded), {actual}, predicted {label} = "
+                 f"{canonical['predicted']:.4g}, {where} the region of the runs.")
+    else:
+        text += (f"Stationary point: a **{canonical['kind']}** at {coded} (coded), {actual}, predicted {label} = "
+                 f"{canonical['predicted']:.4g}, {where} the region of the runs.")
+    return text
