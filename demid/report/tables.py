@@ -33,6 +33,9 @@ def summary_tables(inputs: dict[str, dict[str, str | Path]]) -> dict[str, pd.Dat
     for name in ("robust", "sweep", "information_gain", "ranking", "findings", "calibration", "combinations"):
         if name in inputs:
             out[name] = stack_material_tables(inputs[name])
+    if "combinations" in out:  # materials with other factors stack their loadings in between: widths last
+        widths = ["width_coded", "width_fraction_of_range"]
+        out["combinations"] = out["combinations"][[c for c in out["combinations"].columns if c not in widths] + widths]
     return out
 
 
