@@ -5,9 +5,11 @@ coefficients on its diagonal, half of each two-factor interaction off it).  Its 
 λ and unit eigenvectors (columns, largest λ first, as R's ``eigen``) give the canonical form
 ``y = y_s + Σ λ_i w_i²`` about the stationary point ``x_s = −½ B⁻¹ b``.
 
-As rsm does, eigenvalues with ``|λ| < threshold`` (default 0.1·max|λ|) count as zero: the
-stationary point is then ``x_r = −½ Σ_{|λ_i| ≥ threshold} (v_iᵀb / λ_i) v_i``, the point of the
-ridge nearest the design centre.  The kind:
+The stationary point ``x_s`` is reported whatever the eigenvalues (NaN for a singular B), with
+``inside``: whether it lies within the runs' coded bounding box.  As rsm does, eigenvalues with
+``|λ| < threshold`` (default 0.1·max|λ|) count as zero, and a ridge also gets rsm's stationary
+point ``x_r = −½ Σ_{|λ_i| ≥ threshold} (v_iᵀb / λ_i) v_i``, the point of the ridge nearest the
+design centre (clipped to the box: the ridge point restricted to the region).  The kind:
 
 * no small eigenvalue: **maximum** (all λ < 0), **minimum** (all > 0) or **saddle point**;
 * a small eigenvalue: a **ridge** along its eigenvector v.  Along the ridge from ``x_r`` the
@@ -15,10 +17,10 @@ ridge nearest the design centre.  The kind:
   further over the region's radius R than a curvature at the threshold would (``|g|·R >
   threshold·R²``) the ridge is **rising** (falling, for a maximum-like surface: the response keeps
   changing along it and the optimum lies outside the region), otherwise **stationary** (the
-  response is flat along it: a line of near-optima).
+  response is flat along it: a line of near-optima); a ridge whose x_s lies inside the region is
+  stationary, as the textbooks define it.
 
-``inside`` says whether the stationary point (``x_r`` for a ridge) lies within the runs' coded
-bounding box.  Verified against Montgomery, *Design and Analysis of Experiments*, Example 11.2
+Verified against Montgomery, *Design and Analysis of Experiments*, Example 11.2
 (a maximum) and closed-form saddles and ridges (``tests/test_canonical.py``).
 """
 
@@ -58,13 +60,16 @@ class Canonical:
     eigenvalues: np.ndarray        # largest first
     eigenvectors: np.ndarray       # columns, unit length, first nonzero loading positive
     threshold: float
-    stationary_coded: np.ndarray   # x_s, or x_r for a ridge
+    stationary_coded: np.ndarray   # x_s = −½ B⁻¹ b (NaN when B is singular)
     stationary_actual: np.ndarray
-    value: float                   # predicted response there
+    value: float                   # predicted response at x_s
     kind: str                      # maximum, minimum, saddle point, stationary ridge, rising ridge
-    inside: bool
+    inside: bool                   # x_s within the runs' coded box
     ridge_directions: np.ndarray   # columns: eigenvectors of the near-zero eigenvalues (k x 0 without ridge)
     ridge_slopes: np.ndarray       # vᵀb along each ridge direction
+    ridge_point_coded: np.ndarray = None   # x_r (rsm's stationary point with the threshold), within the box
+    ridge_point_actual: np.ndarray = None
+    ridge_value: float = float("nan")
 
     @property
     def is_ridge(self) -> bool:
@@ -80,6 +85,9 @@ class Canonical:
         if self.is_ridge:
             out["ridge_directions"] = [_floats(col) for col in self.ridge_directions.T]
             out["ridge_slopes"] = _floats(self.ridge_slopes)
+            out["ridge_point_coded"] = _floats(self.ridge_point_coded)
+            out["ridge_point_actual"] = _floats(self.ridge_point_actual)
+            out["ridge_predicted"] = float(self.ridge_value)
         return out
 
 
@@ -112,22 +120,36 @@ def canonical_analysis(b0: float, b: np.ndarray, big_b: np.ndarray, *, region_lo
     if threshold is None:
         threshold = DEFAULT_THRESHOLD_FRACTION * largest
     big = np.abs(values) >= threshold if largest > 0 else np.zeros(values.size, dtype=bool)
-    xs = -0.5 * vectors[:, big] @ ((vectors[:, big].T @ b) / values[big]) if big.any() else np.zeros(b.size)
+
+    def surface(x):
+        return float(b0 + x @ b + x @ big_b @ x)
+
+    def actual_of(x):
+        return np.asarray(to_actual(x[None, :])[0] if to_actual is not None else x, dtype=float)
+
+    def within(x):
+        return bool(np.all(np.isfinite(x)) and np.all(x >= lo - 1e-9) and np.all(x <= hi + 1e-9))
+
+    singular = largest == 0 or np.min(np.abs(values)) <= 1e-12 * largest
+    xs = np.full(b.size, np.nan) if singular else -0.5 * vectors @ ((vectors.T @ b) / values)
     small = ~big
     slopes = vectors[:, small].T @ b
+    common = dict(eigenvalues=values, eigenvectors=vectors, threshold=float(threshold), stationary_coded=xs,
+                  stationary_actual=actual_of(xs), value=surface(xs) if not singular else float("nan"),
+                  inside=within(xs), ridge_directions=vectors[:, small], ridge_slopes=slopes)
     if not small.any():
         kind = "maximum" if np.all(values < 0) else "minimum" if np.all(values > 0) else "saddle point"
-    else:
-        radius = float(np.linalg.norm(hi - lo) / 2)
-        # rising when the slope along the ridge moves the response over the region more than a
-        # curvature at the threshold would
-        rising = np.abs(slopes) * radius > max(threshold, 1e-300) * radius ** 2
-        kind = "rising ridge" if np.any(rising) else "stationary ridge"
-    value = float(b0 + xs @ b + xs @ big_b @ xs)
-    actual = np.asarray(to_actual(xs[None, :])[0] if to_actual is not None else xs, dtype=float)
-    inside = bool(np.all(xs >= lo - 1e-9) and np.all(xs <= hi + 1e-9))
-    return Canonical(values, vectors, float(threshold), xs, actual, value, kind, inside,
-                     vectors[:, small], slopes)
+        return Canonical(kind=kind, **common)
+    # rsm's stationary point with the threshold: the ridge point nearest the design centre, kept in the box
+    xr = -0.5 * vectors[:, big] @ ((vectors[:, big].T @ b) / values[big]) if big.any() else np.zeros(b.size)
+    xr = np.clip(xr, lo, hi)
+    radius = float(np.linalg.norm(hi - lo) / 2)
+    # rising when the slope along the ridge moves the response over the region more than a curvature at
+    # the threshold would; a stationary point inside the region is a stationary ridge (the textbook's rule)
+    rising = np.abs(slopes) * radius > max(threshold, 1e-300) * radius ** 2
+    kind = "rising ridge" if np.any(rising) and not common["inside"] else "stationary ridge"
+    return Canonical(kind=kind, ridge_point_coded=xr, ridge_point_actual=actual_of(xr), ridge_value=surface(xr),
+                     **common)
 
 
 def fit_canonical(fit, threshold: float | None = None) -> Canonical:

@@ -48,10 +48,13 @@ def test_rising_ridge():
     b0, b, big_b = quadratic_parts(TERMS, [10, 2, 0.5, 0.01, -3, 0], 2)
     c = canonical_analysis(b0, b, big_b, region_lower=[-1, -1], region_upper=[1, 1])
     assert c.kind == "rising ridge"
-    assert c.stationary_coded == pytest.approx([0, 0.5 / 6])
+    # the stationary point x1 = -2/(2*0.01) = -100 is far outside; rsm's threshold gives the ridge point
+    assert c.stationary_coded == pytest.approx([-100, 0.5 / 6])
+    assert not c.inside
+    assert c.ridge_point_coded == pytest.approx([0, 0.5 / 6])
+    assert c.ridge_value == pytest.approx(10 + 0.5 * 0.5 / 6 - 3 * (0.5 / 6) ** 2)
     assert np.abs(c.ridge_directions[:, 0]) == pytest.approx([1, 0])
     assert c.ridge_slopes == pytest.approx([2])
-    # the unrestricted stationary point x1 = -2/(2*0.01) = -100 is far outside: rsm's threshold keeps it in
 
 
 def test_stationary_ridge():
@@ -59,8 +62,26 @@ def test_stationary_ridge():
     b0, b, big_b = quadratic_parts(TERMS, [10, 0.001, 0, 0.01, -3, 0], 2)
     c = canonical_analysis(b0, b, big_b, region_lower=[-1, -1], region_upper=[1, 1])
     assert c.kind == "stationary ridge"
-    assert c.stationary_coded == pytest.approx([0, 0])
+    assert c.stationary_coded == pytest.approx([-0.05, 0])    # -0.001 / (2 * 0.01)
     assert c.inside
+    assert c.ridge_point_coded == pytest.approx([0, 0])
+
+
+def test_near_stationary_ridge_with_a_remote_stationary_point():
+    # eigenvalues 0.19 and -8.89 (the shape of a published 3^2 analysis called a near-stationary ridge with its
+    # stationary point far outside): slope 0.8 along the ridge puts x_s at -0.8 / 0.38 = -2.1, outside [-1, 1],
+    # but moves the response by 0.8 * sqrt 2 over the region, less than the threshold 0.889 curvature would
+    # (0.889 * 2): near-stationary.  Slope 1.9 (x_s at -5) carries it further: rising.
+    b0, b, big_b = quadratic_parts(TERMS, [50, 0.8, 1.0, 0.19, -8.89, 0], 2)
+    c = canonical_analysis(b0, b, big_b, region_lower=[-1, -1], region_upper=[1, 1])
+    assert c.stationary_coded[0] == pytest.approx(-0.8 / 0.38)
+    assert not c.inside
+    assert c.eigenvalues == pytest.approx([0.19, -8.89])
+    assert c.kind == "stationary ridge"
+    b0, b, big_b = quadratic_parts(TERMS, [50, 1.9, 1.0, 0.19, -8.89, 0], 2)
+    c = canonical_analysis(b0, b, big_b, region_lower=[-1, -1], region_upper=[1, 1])
+    assert c.stationary_coded[0] == pytest.approx(-1.9 / 0.38)
+    assert not c.inside and c.kind == "rising ridge"
 
 
 def test_threshold_zero_gives_full_stationary_point():

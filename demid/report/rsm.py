@@ -189,24 +189,32 @@ def canonical_text(canonical: dict | None, fit, spec, letters: dict[str, str], l
 
         canonical = fit_canonical(fit).to_json()
     names = [letters[f] for f in fit.factors]
+
+    def point(coded, actual):
+        return (", ".join(f"{n} = {v:.3g}" for n, v in zip(names, coded)) + " (coded), "
+                + ", ".join(f"{spec.factor(f).label} = {v:.4g}" for f, v in zip(fit.factors, actual)))
+
+    def vector(vec):
+        return "(" + ", ".join(f"{n} {x:+.3f}" for n, x in zip(names, vec)) + ")"
+
     values = ", ".join(f"{v:.4g}" for v in canonical["eigenvalues"])
-    vectors = "; ".join("(" + ", ".join(f"{n} {x:+.3f}" for n, x in zip(names, vec)) + ")"
-                        for vec in canonical["eigenvectors"])
-    coded = ", ".join(f"{n} = {v:.3g}" for n, v in zip(names, canonical["stationary_coded"]))
-    actual = ", ".join(f"{spec.factor(f).label} = {v:.4g}" for f, v in zip(fit.factors, canonical["stationary_actual"]))
-    where = "inside" if canonical["inside"] else "outside"
     text = (f"Canonical analysis (eigenvalues below {canonical['threshold']:.3g}, a tenth of the largest, count as "
-            f"zero): eigenvalues {values}; eigenvectors {vectors}. ")
+            f"zero): eigenvalues {values}; eigenvectors " + "; ".join(vector(v) for v in canonical["eigenvectors"])
+            + ". ")
+    finite = all(v == v for v in canonical["stationary_coded"])  # NaN: B is singular
+    where = "inside" if canonical["inside"] else "outside"
+    stationary = (f"stationary point {point(canonical['stationary_coded'], canonical['stationary_actual'])}, "
+                  f"predicted {label} = {canonical['predicted']:.4g}, {where} the region of the runs" if finite
+                  else "no stationary point (the quadratic part is singular)")
     if "ridge" in canonical["kind"]:
-        ridge = "; ".join("(" + ", ".join(f"{n} {x:+.3f}" for n, x in zip(names, vec)) + ")"
-                          for vec in canonical.get("ridge_directions", []))
+        ridge = "; ".join(vector(v) for v in canonical.get("ridge_directions", []))
         slope = ", ".join(f"{v:.3g}" for v in canonical.get("ridge_slopes", []))
         text += (f"A **{canonical['kind']}** along {ridge} (slope {slope} per coded unit): the response "
-                 + ("keeps changing along it, the optimum lies beyond the runs" if canonical["kind"] == "rising ridge"
+                 + ("keeps rising one way along it, up to the edge of the region" if canonical["kind"] == "rising ridge"
                     else "hardly changes along it, a line of near-equal responses")
-                 + f". Its point nearest the design centre: {coded} (coded), {actual}, predicted {label} = "
-                 f"{canonical['predicted']:.4g}, {where} the region of the runs.")
+                 + f"; {stationary}. The ridge point nearest the design centre, within the region: "
+                 f"{point(canonical['ridge_point_coded'], canonical['ridge_point_actual'])}, predicted {label} = "
+                 f"{canonical['ridge_predicted']:.4g}.")
     else:
-        text += (f"Stationary point: a **{canonical['kind']}** at {coded} (coded), {actual}, predicted {label} = "
-                 f"{canonical['predicted']:.4g}, {where} the region of the runs.")
+        text += f"A **{canonical['kind']}**: {stationary}."
     return text
