@@ -123,3 +123,68 @@ def test_band_cut_by_the_box_is_flagged():
     assert res.cut == "lower"
     straight = pts[np.abs(pts.sum(axis=1) - 1) <= 0.05]
     assert set_combinations(straight, [0, 0], [1, 1], ["a", "b"], scenario="s", set_name="strict").cut == "none"
+
+
+class _Linear:
+    """A response linear in the factors (actual units): enough for the advice's gradients."""
+
+    def __init__(self, weights):
+        self.weights = np.asarray(weights, dtype=float)
+
+    def predict(self, points):
+        return np.asarray(points, dtype=float) @ self.weights
+
+
+def _band_spec():
+    from demid.spec import MaterialSpec
+
+    return MaterialSpec.from_material("m", {
+        "factors": {"a": {"lower": 0, "upper": 1}, "b": {"lower": 0, "upper": 1}},
+        "responses": {"y1": {"target": 1.0}, "across": {"target": 0.0}, "parallel": {"target": 2.0},
+                      "tilted": {}},
+        "scenarios": {"band": {"observables": ["y1"], "tolerance": 0.02}}})
+
+
+def test_advice_names_the_observable_that_cuts_the_band():
+    # y1 = a + b: the band a + b = 1 ± 0.02; 'across' = a - b changes along the band (breaks it), 'parallel'
+    # = 2(a + b) does not, 'tilted' = a lies 45 degrees off
+    from demid.combinations import break_ridge_advice
+
+    spec = _band_spec()
+    coding = Coding(("a", "b"), (0.5, 0.5), (0.5, 0.5))
+    pts = grid(401)
+    band = pts[np.abs(pts.sum(axis=1) - 1) <= 0.02]
+    coded = coding.to_coded(band)
+    res = set_combinations(coded, [-1, -1], [1, 1], ["a", "b"], scenario="band", set_name="strict",
+                           step=[0.005, 0.005])
+    assert res.identified and res.cut == "none"
+    surrogates = {"y1": _Linear([1, 1]), "across": _Linear([1, -1]), "parallel": _Linear([2, 2]),
+                  "tilted": _Linear([1, 0])}
+    text = break_ridge_advice(res, band, surrogates, spec, coding, ["y1"])
+    assert "across changes most along the set" in text
+    assert "90° off" in text and "tilted 45°" in text and "parallel 0°" in text
+    assert "would break the ridge" in text
+    # with only the parallel observable left, the advice says it cuts at a shallow angle
+    text = break_ridge_advice(res, band, {"y1": surrogates["y1"], "parallel": surrogates["parallel"]}, spec,
+                              coding, ["y1"])
+    assert "shallow angle" in text
+
+
+def test_combination_verdicts_and_lines():
+    import pandas as pd
+
+    from demid.report.summary import combination_lines, combination_verdicts
+
+    spec = _band_spec()
+    verdicts = pd.DataFrame({"scenario": ["band", "band"], "factor": ["a", "b"],
+                             "verdict": ["unresolved", "identified"]})
+    out = combination_verdicts(verdicts, {"band": {"a": ["b"], "b": ["a"]}}, spec)
+    assert out["verdict"].tolist() == ["unresolved alone; identified in combination with b", "identified"]
+    assert combination_verdicts(verdicts, {}, spec)["verdict"].tolist() == ["unresolved", "identified"]
+    lines = combination_lines({"sets": [{"scenario": "band", "set": "strict", "identified": True,
+                                         "text": "a curved band: b ≈ f(a) along the band.",
+                                         "curve": {"along": "a", "across": "b", "along_actual": [0.0, 1.0],
+                                                   "lower": [0.1, 0.5], "mid": [0.2, 0.6], "upper": [0.3, 0.7]}}]},
+                              spec)
+    assert lines == ["*band*, strict set: a curved band: b ≈ f(a) along the band. "
+                     "Curve (a → b mid [lowest, highest]): 0 → 0.2 [0.1, 0.3]; 1 → 0.6 [0.5, 0.7]."]

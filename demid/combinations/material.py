@@ -229,7 +229,7 @@ class MaterialCombinations:
                      if free.shape[1] and res.curve is None else "; free along the band" if free.shape[1] else "")
         if res.curve is not None and np.isfinite(res.bend) and res.bend > STRAIGHT_MAX_BEND:
             narrow, wide = labels[res.narrow], labels[res.wide]
-            return (f"a curved band: {narrow} ≈ f({wide}) along the band (curve table below), "
+            return (f"a curved band: {narrow} ≈ f({wide}) along the band, "
                     f"{100 * res.band_fraction:.1f} % of the range thick{free_text}.")
         if res.local is not None and res.axes.width_fraction[0] > 2 * res.band_fraction:
             return (f"a curved set, {100 * res.band_fraction:.1f} % of the range thick along its local normal; "

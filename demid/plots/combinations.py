@@ -78,7 +78,7 @@ def combinations_figure(result: MaterialCombinations, title: str):
                 line[:, res.wide] = res.curve["along"].to_numpy()
                 line[:, res.narrow] = res.curve["mid"].to_numpy()
                 line = coding.to_actual(line)
-                ax.plot(line[:, 0], line[:, 1], color=PALETTE[5], lw=1.0, label="band centre line")
+                ax.plot(line[:, 0], line[:, 1], color=PALETTE[5], lw=0.8, ls=(0, (4, 2)), label="band centre line")
             v = res.axes.directions[:, 0]
             # the identified direction, one fifth of the coded box long, drawn in search units
             span = 0.2 * float(np.min(result.upper - result.lower))
