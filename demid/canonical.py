@@ -168,8 +168,12 @@ def fit_canonical(fit, threshold: float | None = None) -> Canonical:
     logs = [f in fit.log_factors for f in fit.factors]
 
     def to_actual(coded):
-        model = fit.coding.to_actual(coded)
-        return np.where(logs, 10.0 ** model, model)
+        model = np.array(fit.coding.to_actual(coded), dtype=float)
+        with np.errstate(over="ignore"):  # a stationary point far outside may overflow 10**: inf says so
+            for i, lg in enumerate(logs):
+                if lg:
+                    model[:, i] = 10.0 ** model[:, i]
+        return model
 
     return canonical_analysis(b0, b, big_b, region_lower=lo, region_upper=hi, to_actual=to_actual,
                               threshold=threshold)

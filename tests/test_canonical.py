@@ -90,3 +90,48 @@ def test_threshold_zero_gives_full_stationary_point():
     assert c.kind == "saddle point"
     assert c.stationary_coded == pytest.approx([-100, 0.5 / 6])
     assert not c.inside
+
+
+def test_montgomery_example_11_2_from_the_runs():
+    # Montgomery, Design and Analysis of Experiments, Table 11.6 (time [min], temperature [°F], yield):
+    # the fitted surface's canonical analysis as printed: x_s = (0.389, 0.306), i.e. 86.95 min and 176.53 °F,
+    # y_s = 80.21, eigenvalues -0.9634 and -1.4141: a maximum
+    import pandas as pd
+
+    from demid.canonical import fit_canonical
+    from demid.design import Coding
+    from demid.surrogate import fit_response
+
+    rows = [(80, 170, 76.5), (80, 180, 77.0), (90, 170, 78.0), (90, 180, 79.5), (85, 175, 79.9), (85, 175, 80.3),
+            (85, 175, 80.0), (85, 175, 79.7), (85, 175, 79.8), (92.07, 175, 78.4), (77.93, 175, 75.6),
+            (85, 182.07, 78.5), (85, 167.93, 77.0)]
+    table = pd.DataFrame(rows, columns=["time", "temp", "y"])
+    table.insert(0, "run", range(1, len(rows) + 1))
+    fit = fit_response(table, ["time", "temp"], "y", coding=Coding(("time", "temp"), (85.0, 175.0), (5.0, 5.0)))
+    c = fit_canonical(fit)
+    assert c.eigenvalues == pytest.approx([-0.9634, -1.4141], abs=2e-4)
+    assert c.stationary_coded == pytest.approx([0.389, 0.306], abs=1e-3)
+    assert c.stationary_actual == pytest.approx([86.95, 176.53], abs=0.01)
+    assert c.value == pytest.approx(80.21, abs=0.005)
+    assert c.kind == "maximum" and c.inside
+    json = c.to_json()
+    assert set(json) >= {"stationary_coded", "stationary_actual", "eigenvalues", "eigenvectors", "kind", "inside"}
+
+
+def test_canonical_text_of_a_singular_surface():
+    # y = x1 + x2^2... with B singular (no x1^2 term): the stored JSON has null for x_s; the report says so
+    import json
+    from types import SimpleNamespace
+
+    from demid.io import to_json_text
+    from demid.report.rsm import canonical_text
+
+    c = canonical_analysis(*quadratic_parts(TERMS, [1, 1, 0, 0, -2, 0], 2), region_lower=[-1, -1],
+                           region_upper=[1, 1])
+    assert c.kind == "rising ridge"
+    stored = json.loads(to_json_text(c.to_json()))
+    assert stored["stationary_coded"] == [None, None]
+    spec = SimpleNamespace(factor=lambda f: SimpleNamespace(label=f))
+    text = canonical_text(stored, SimpleNamespace(factors=["a", "b"]), spec, {"a": "A", "b": "B"}, "y")
+    assert "no stationary point (the quadratic part is singular)" in text
+    assert "A **rising ridge** along (A +1.000, B +0.000)" in text

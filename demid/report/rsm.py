@@ -190,9 +190,12 @@ def canonical_text(canonical: dict | None, fit, spec, letters: dict[str, str], l
         canonical = fit_canonical(fit).to_json()
     names = [letters[f] for f in fit.factors]
 
+    def number(v, digits):  # the stored JSON writes NaN (and what overflowed) as null
+        return "–" if v is None or v != v else f"{v:.{digits}g}"
+
     def point(coded, actual):
-        return (", ".join(f"{n} = {v:.3g}" for n, v in zip(names, coded)) + " (coded), "
-                + ", ".join(f"{spec.factor(f).label} = {v:.4g}" for f, v in zip(fit.factors, actual)))
+        return (", ".join(f"{n} = {number(v, 3)}" for n, v in zip(names, coded)) + " (coded), "
+                + ", ".join(f"{spec.factor(f).label} = {number(v, 4)}" for f, v in zip(fit.factors, actual)))
 
     def vector(vec):
         return "(" + ", ".join(f"{n} {x:+.3f}" for n, x in zip(names, vec)) + ")"
@@ -201,10 +204,10 @@ def canonical_text(canonical: dict | None, fit, spec, letters: dict[str, str], l
     text = (f"Canonical analysis (eigenvalues below {canonical['threshold']:.3g}, a tenth of the largest, count as "
             f"zero): eigenvalues {values}; eigenvectors " + "; ".join(vector(v) for v in canonical["eigenvectors"])
             + ". ")
-    finite = all(v == v for v in canonical["stationary_coded"])  # NaN: B is singular
+    finite = all(v is not None and v == v for v in canonical["stationary_coded"])  # null/NaN: B is singular
     where = "inside" if canonical["inside"] else "outside"
     stationary = (f"stationary point {point(canonical['stationary_coded'], canonical['stationary_actual'])}, "
-                  f"predicted {label} = {canonical['predicted']:.4g}, {where} the region of the runs" if finite
+                  f"predicted {label} = {number(canonical['predicted'], 4)}, {where} the region of the runs" if finite
                   else "no stationary point (the quadratic part is singular)")
     if "ridge" in canonical["kind"]:
         ridge = "; ".join(vector(v) for v in canonical.get("ridge_directions", []))
@@ -214,7 +217,7 @@ def canonical_text(canonical: dict | None, fit, spec, letters: dict[str, str], l
                     else "hardly changes along it, a line of near-equal responses")
                  + f"; {stationary}. The ridge point nearest the design centre, within the region: "
                  f"{point(canonical['ridge_point_coded'], canonical['ridge_point_actual'])}, predicted {label} = "
-                 f"{canonical['ridge_predicted']:.4g}.")
+                 f"{number(canonical['ridge_predicted'], 4)}.")
     else:
         text += f"A **{canonical['kind']}**: {stationary}."
     return text
