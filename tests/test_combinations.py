@@ -188,3 +188,13 @@ def test_combination_verdicts_and_lines():
                               spec)
     assert lines == ["*band*, strict set: a curved band: b ≈ f(a) along the band. "
                      "Curve (a → b mid [lowest, highest]): 0 → 0.2 [0.1, 0.3]; 1 → 0.6 [0.5, 0.7]."]
+
+
+def test_combinations_columns_are_documented():
+    from demid.report.columns import columns_table
+
+    table = columns_table({}, None, ["mu_r", "gamma"])
+    rows = table[table["table"] == "combinations.csv"]["column"].tolist()
+    assert rows == ["material", "scenario", "set", "direction", "mu_r", "gamma", "width_coded",
+                    "width_fraction_of_range"]
+    assert not table.duplicated(["table", "column"]).any()
