@@ -198,3 +198,28 @@ def test_combinations_columns_are_documented():
     assert rows == ["material", "scenario", "set", "direction", "mu_r", "gamma", "width_coded",
                     "width_fraction_of_range"]
     assert not table.duplicated(["table", "column"]).any()
+
+
+def test_weighted_points_equal_repeated_points():
+    # a weight is the volume a point stands for: weight 2 is the point twice
+    rng = np.random.default_rng(1)
+    pts = rng.uniform(-1, 1, size=(200, 2))
+    weights = rng.integers(1, 4, size=200)
+    repeated = np.repeat(pts, weights, axis=0)
+    a = principal_axes(pts, [-1, -1], [1, 1], weights=weights)
+    b = principal_axes(repeated, [-1, -1], [1, 1])
+    assert a.widths == pytest.approx(b.widths)
+    assert np.abs(a.directions) == pytest.approx(np.abs(b.directions))
+
+
+def test_statement_of_a_log_scaled_factor():
+    # coded x_g = (log10 g - 1) / 0.5; the band x_a - x_g = 0 reads a - 2 log10 g = -2 (a coded as is)
+    from demid.combinations import linear_statement
+
+    coding = Coding(("a", "g"), (0.0, 1.0), (1.0, 0.5))
+    pts = grid(401, lo=-1, hi=1)
+    band = pts[np.abs(pts[:, 0] - pts[:, 1]) <= 0.05]
+    axes = principal_axes(band, [-1, -1], [1, 1])
+    _, _, _, text = linear_statement(axes.directions[:, 0], axes.centre, axes.widths[0], coding, ["a", "g"],
+                                     [False, True])
+    assert text.startswith("a − 2·log10 g = −2 ± ") or text.startswith("log10 g − 0.5·a = 1 ± ")

@@ -177,7 +177,8 @@ def linear_statement(normal: np.ndarray, centre: np.ndarray, width: float, codin
     text = ""
     for i, (sign, term) in enumerate(terms):
         text += (("−" if sign == "−" else "") + term) if i == 0 else f" {sign} {term}"
-    return a, c, w, f"{text} = {c_shown:.{digits}g} ± {w_shown:.{digits - 1}g}"
+    constant = f"{c_shown:.{digits}g}".replace("-", "−")
+    return a, c, w, f"{text} = {constant} ± {w_shown:.{digits - 1}g}"
 
 
 @dataclass(frozen=True)

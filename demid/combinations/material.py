@@ -110,11 +110,12 @@ class SetCombination:
 
 
 def set_combinations(points_coded: np.ndarray, lower, upper, factors, *, scenario: str, set_name: str,
-                     step=None) -> SetCombination:
+                     step=None, weights=None) -> SetCombination:
     """Principal axes of a set of coded points in the coded box ``[lower, upper]``, and for two
     factors the band's curve, its bend and its local thickness.  ``step``: the grid step per axis
-    (coded; None or NaN for sample points)."""
-    axes = principal_axes(points_coded, lower, upper, factors=factors)
+    (coded; None or NaN for sample points); ``weights``: the volume each point stands for (equal when
+    None: grid nodes, uniform sample points), used by the principal axes."""
+    axes = principal_axes(points_coded, lower, upper, weights=weights, factors=factors)
     out = SetCombination(scenario, set_name, axes)
     if axes is not None:
         out.cut = _cut_side(points_coded, axes.directions[:, 0], lower, upper)

@@ -95,7 +95,8 @@ def combinations_figure(result: MaterialCombinations, title: str):
         ax.set_ylabel(axis_label(spec.factors[j]), fontsize=8)
         ax.tick_params(labelsize=7)
         _log_ticks(ax, spec, i, j)
-        ax.set_title(sc.label, fontsize=8)
+        cut = res is not None and res.cut != "none"
+        ax.set_title(sc.label + (" (set cut by the search range)" if cut else ""), fontsize=8)
     for ax in axes.ravel()[len(panels):]:
         ax.set_visible(False)
     handles, labels = axes.ravel()[0].get_legend_handles_labels()
