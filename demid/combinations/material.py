@@ -223,7 +223,8 @@ class MaterialCombinations:
                     + ", ".join(f"{100 * v:.1f} %" for v in frac) + f" of the range along its axes): {res.statement}.")
         if res.cut != "none":
             return (f"{res.statement}, but the set reaches the search range's "
-                    f"{'both ends' if res.cut == 'both' else res.cut + ' end'} along this direction: its width there is "
+                    f"{'both ends' if res.cut == 'both' else res.cut + ' end'} along this direction: its width "
+                    f"there is "
                     f"the range's, not the data's (cut by the search range; widen the range to see the band).")
         free = res.free
         free_text = ("; free along " + ", ".join(_direction_text(free[:, j], labels) for j in range(free.shape[1]))
@@ -253,7 +254,8 @@ class MaterialCombinations:
                              band_span=float(res.band_span),
                              curve={"along": self.spec.factor_names[res.wide],
                                     "across": self.spec.factor_names[res.narrow],
-                                    "along_actual": [float(v) for v in self._to_actual(rows["along"].to_numpy(), res.wide)],
+                                    "along_actual": [float(v) for v in
+                                                     self._to_actual(rows["along"].to_numpy(), res.wide)],
                                     **{k: [float(v) for v in self._to_actual(rows[k].to_numpy(), res.narrow)]
                                        for k in ("lower", "mid", "upper")}})
             out["sets"].append(entry)
