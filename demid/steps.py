@@ -66,6 +66,7 @@ class MaterialSets:
     figure: object
     surface: object
     pareto: MaterialPareto | None = None
+    sets: dict | None = None  # the strict sets with their node masks (the combinations read them)
 
 
 def admissibility_step(surrogates: dict, spec: MaterialSpec, table: pd.DataFrame) -> MaterialSets:
@@ -87,8 +88,7 @@ def admissibility_step(surrogates: dict, spec: MaterialSpec, table: pd.DataFrame
     frame.insert(0, "material", spec.name)
     frame = pd.concat([frame, set_state_frame(sets)], axis=1)
     figure = sets_figure(spec, sets, n, surrogates)
-    del sets
-    return MaterialSets(frame, figure, surface_figure_from_surrogates(surrogates, spec, table), pareto)
+    return MaterialSets(frame, figure, surface_figure_from_surrogates(surrogates, spec, table), pareto, sets)
 
 
 @dataclass
@@ -117,6 +117,33 @@ def pareto_step(surrogates: dict, spec: MaterialSpec, grid: pd.DataFrame | None 
                                     spec.targets[par.error_of], par.minimise, par.max_error, result.front)
         result.intervals = front_intervals(result.front, spec.factor_names, par.max_error)
     return MaterialPareto(result.to_frame(), pareto_figure(grid, result.front, spec))
+
+
+@dataclass
+class MaterialCombinationsStep:
+    """Outputs of the combinations part: the table, its JSON (statements, curves, advice), the fit
+    JSON (canonical analysis per response) and the figure."""
+
+    table: pd.DataFrame
+    summary: dict
+    fit_summary: dict
+    figure: object
+
+
+def combinations_step(surrogates: dict, spec: MaterialSpec, coding: Coding, fitted: list, strict_sets: dict, *,
+                      z: float, ranking: pd.DataFrame | None = None) -> MaterialCombinationsStep:
+    """Every scenario's identified combinations (strict set: the admissibility step's node masks;
+    plausible set: the robust set on the robust table's grid) and the canonical analysis of every fit."""
+    from .canonical import fit_canonical
+    from .combinations import material_combinations, plausible_sets
+    from .plots import combinations_figure
+    from .uncertainty import recommended_sizes
+
+    plausible = plausible_sets(surrogates, spec, z=z, n=recommended_sizes(spec.dim)["robust"])
+    result = material_combinations(surrogates, spec, coding, strict_sets, plausible, ranking)
+    fit_summary = {fit.response: {"canonical": fit_canonical(fit).to_json()} for fit in fitted}
+    return MaterialCombinationsStep(result.to_frame(), result.to_json(), fit_summary,
+                                    combinations_figure(result, spec.label))
 
 
 @dataclass
@@ -154,7 +181,10 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances)
     criticism = criticize_material(table, surrogates, spec, coding=validated.coding,
                                    fits={fit.response: fit for fit in fitted},
                                    strict_sets=stored_strict_sets(scenarios, surrogates, spec, reference=True))
+    combos = combinations_step(surrogates, spec, validated.coding, fitted, sets.sets or {}, z=z,
+                               ranking=uncertainty.ranking)
     figures = {"sets_figure": sets.figure, "surface_figure": sets.surface,
+               "combinations_figure": combos.figure,
                "sweep_figure": uncertainty.sweep_figure(spec.label),
                "posterior_figure": uncertainty.posterior_figure(spec.label),
                "residuals_figure": criticism.figure}
@@ -165,7 +195,9 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances)
     parquet = {"table": validated.table, "transcription": validated.transcription, **fits,
                "scenarios": sets.scenarios, "robust": uncertainty.robust, "sweep": uncertainty.sweep,
                "information_gain": uncertainty.information_gain, "ranking": uncertainty.ranking,
-               "findings": criticism.findings, "calibration": criticism.calibration}
+               "findings": criticism.findings, "calibration": criticism.calibration,
+               "combinations": combos.table}
     json = {"validation_summary": validated.summary, "uncertainty_summary": uncertainty.summary,
-            "criticism_summary": criticism.summary}
+            "criticism_summary": criticism.summary, "combinations_summary": combos.summary,
+            "fit_summary": combos.fit_summary}
     return MaterialAnalysis(parquet, csv, json, figures, criticism.response_json, validated.warnings)

@@ -12,7 +12,7 @@ from demid.report.columns import columns_table  # noqa: E402
 inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
 per_material = {name: dict(zip(params.materials, files))
                 for name, files in inp.items() if name not in ("published", "pareto")}
-write_csv(columns_table(params.pareto_factors, params.next_wave), out.columns)
+write_csv(columns_table(params.pareto_factors, params.next_wave, params.combination_factors), out.columns)
 for name, table in summary_tables(per_material).items():
     write_csv(table, getattr(out, name))
 

@@ -11,7 +11,7 @@ from importlib import import_module
 _WHERE = {
     "sets_figure": "sets", "surface_figure": "surface", "surface_figure_from_surrogates": "surface",
     "pareto_figure": "pareto", "tolerance_sweep_figure": "uncertainty", "posterior_figure": "uncertainty",
-    "residual_figure": "criticism",
+    "residual_figure": "criticism", "combinations_figure": "combinations",
 }
 
 __all__ = sorted(_WHERE)

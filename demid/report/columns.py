@@ -223,10 +223,37 @@ def _next_wave_rows(next_wave: dict) -> list[tuple]:
     return rows
 
 
-def columns_table(pareto_factors: dict[str, list[tuple[str, str]]], next_wave: dict | None = None) -> pd.DataFrame:
+_COMBINATIONS = {
+    "set": ("–", "strict: the admissible set; plausible: the robust set (tolerance widened by z standard deviations "
+                 "of the surrogate's mean and of the measurement)."),
+    "direction": ("–", "Principal axis of the set in coded units, 1 = narrowest (the identified combination when "
+                       "narrow), widest last."),
+    "width_coded": ("coded unit", "√12 × standard deviation of the set along the direction: the full width of a "
+                                  "uniform slab with the same spread (a straight band's thickness)."),
+    "width_fraction_of_range": ("–", "width_coded / the search range's own extent along the direction "
+                                     "(Σ |loading| × coded range): 1 fills the range, near 0 is a thin band."),
+}
+
+
+def _combination_rows(factors: list[str]) -> list[tuple]:
+    """Rows of ``combinations.csv``: one loading column per factor of every material."""
+    if not factors:
+        return []
+    rows = [("combinations.csv", c, *_COMMON[c]) for c in ("material", "scenario")]
+    rows += [("combinations.csv", c, *_COMBINATIONS[c]) for c in ("set", "direction")]
+    rows += [("combinations.csv", f, "–", f"Loading of factor {f} on the direction (coded units, log10 for a "
+                                          f"log-scaled factor; unit-length vector; empty for materials without {f}).")
+             for f in factors]
+    rows += [("combinations.csv", c, *_COMBINATIONS[c]) for c in ("width_coded", "width_fraction_of_range")]
+    return rows
+
+
+def columns_table(pareto_factors: dict[str, list[tuple[str, str]]], next_wave: dict | None = None,
+                  combination_factors: list[str] | None = None) -> pd.DataFrame:
     """The data dictionary; ``pareto_factors`` maps each Pareto material to its (factor, unit) pairs;
-    ``next_wave`` holds the (name, unit) pairs of the factors and responses of next-wave materials."""
-    rows = _next_wave_rows(next_wave or {})
+    ``next_wave`` holds the (name, unit) pairs of the factors and responses of next-wave materials;
+    ``combination_factors`` the factor names that have a loading column in ``combinations.csv``."""
+    rows = _next_wave_rows(next_wave or {}) + _combination_rows(list(combination_factors or []))
     for table, columns in TABLE_COLUMNS.items():
         for column in columns:
             unit, description = _describe(table, column)

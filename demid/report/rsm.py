@@ -186,3 +186,47 @@ def stationary_point(fit, lower, upper) -> StationaryPoint:
     kind = "maximum" if np.all(eig < 0) else "minimum" if np.all(eig > 0) else "saddle point"
     inside = bool(np.all(actual >= np.asarray(lower) - 1e-12) and np.all(actual <= np.asarray(upper) + 1e-12))
     return StationaryPoint(xs, actual, value, kind, inside)
+
+
+def canonical_text(canonical: dict | None, fit, spec, letters: dict[str, str], label: str) -> str:
+    """The canonical analysis in words (as rsm's ``canonical()``): eigenvalues and eigenvectors of the
+    quadratic part, the kind, the stationary point (coded and actual) and whether it lies inside the
+    region of the runs; for a ridge, the ridge point nearest the design centre and the ridge direction.
+    ``canonical`` is the fit JSON's entry (``fits/{material}.json``); computed here only when absent."""
+    if canonical is None:
+        from ..canonical import fit_canonical
+
+        canonical = fit_canonical(fit).to_json()
+    names = [letters[f] for f in fit.factors]
+
+    def number(v, digits):  # the stored JSON writes NaN (and what overflowed) as null
+        return "–" if v is None or v != v else f"{v:.{digits}g}"
+
+    def point(coded, actual):
+        return (", ".join(f"{n} = {number(v, 3)}" for n, v in zip(names, coded)) + " (coded), "
+                + ", ".join(f"{spec.factor(f).label} = {number(v, 4)}" for f, v in zip(fit.factors, actual)))
+
+    def vector(vec):
+        return "(" + ", ".join(f"{n} {x:+.3f}" for n, x in zip(names, vec)) + ")"
+
+    values = ", ".join(f"{v:.4g}" for v in canonical["eigenvalues"])
+    text = (f"Canonical analysis (eigenvalues below {canonical['threshold']:.3g}, a tenth of the largest, count as "
+            f"zero): eigenvalues {values}; eigenvectors " + "; ".join(vector(v) for v in canonical["eigenvectors"])
+            + ". ")
+    finite = all(v is not None and v == v for v in canonical["stationary_coded"])  # null/NaN: B is singular
+    where = "inside" if canonical["inside"] else "outside"
+    stationary = (f"stationary point {point(canonical['stationary_coded'], canonical['stationary_actual'])}, "
+                  f"predicted {label} = {number(canonical['predicted'], 4)}, {where} the region of the runs" if finite
+                  else "no stationary point (the quadratic part is singular)")
+    if "ridge" in canonical["kind"]:
+        ridge = "; ".join(vector(v) for v in canonical.get("ridge_directions", []))
+        slope = ", ".join(f"{v:.3g}" for v in canonical.get("ridge_slopes", []))
+        text += (f"A **{canonical['kind']}** along {ridge} (slope {slope} per coded unit): the response "
+                 + ("keeps rising one way along it, up to the edge of the region" if canonical["kind"] == "rising ridge"
+                    else "hardly changes along it, a line of near-equal responses")
+                 + f"; {stationary}. The ridge point nearest the design centre, within the region: "
+                 f"{point(canonical['ridge_point_coded'], canonical['ridge_point_actual'])}, predicted {label} = "
+                 f"{number(canonical['ridge_predicted'], 4)}.")
+    else:
+        text += f"A **{canonical['kind']}**: {stationary}."
+    return text

@@ -157,7 +157,8 @@ class ReportSections:
         import json
 
         from ..spec import MaterialSpec
-        from .summary import VERDICT_TEXT, criticism_lines, next_step, unit_text, verdict_table
+        from .summary import (VERDICT_TEXT, combination_lines, combination_verdicts, criticism_lines, next_step,
+                              unit_text, verdict_table)
 
         parts = [self._md("## Summary\n\nPer factor and observable scenario the admissible interval is judged: "
                           + VERDICT_TEXT)]
@@ -171,6 +172,9 @@ class ReportSections:
             level2 = info.get("level2") or {}
             rows = ident[ident["material"] == m] if ident is not None else pd.DataFrame()
             verdicts = verdict_table(rows, spec) if len(rows) else pd.DataFrame(columns=["factor", "verdict"])
+            combos_path = self.root / "combinations" / f"{m}.json"
+            combos = json.loads(combos_path.read_text(encoding="utf-8")) if combos_path.is_file() else {}
+            verdicts = combination_verdicts(verdicts, combos.get("in_combination") or {}, spec)
             if level2.get("best_point"):
                 best = level2["best_point"]
                 point = ", ".join(f"{spec.factor(f).label} = {best[f]:.4g}" + (f" {unit_text(spec.factor(f).unit)}"
@@ -194,7 +198,7 @@ class ReportSections:
                 elif len(last):
                     lines.append(f"With every observable of *{widest.label}* no point of the search range is "
                                  "admissible, so there are no admissible intervals.")
-                loose = verdicts[(verdicts["scenario"] == widest.label) & (verdicts["verdict"] == "unresolved")]
+                loose = verdicts[(verdicts["scenario"] == widest.label) & (verdicts["verdict"].str.startswith("unresolved"))]
                 if len(loose):
                     # About the widest scenario's set, not the level-2 point: that point may lie outside the set
                     # (level 2 uses every target) and the error varies across the set.
@@ -207,11 +211,16 @@ class ReportSections:
                                  f"observables within the tolerance span (almost) the whole search range of {them} "
                                  f"(the intervals above).{tail}")
                 lines += ["", markdown_table(verdicts, 3)]
+            combo_lines = combination_lines(combos, spec)
+            if combo_lines:
+                lines += ["", "**What is identified in combination** (principal axes of each set in coded units; "
+                          "tables/combinations.csv):", ""] + [f"- {c}" for c in combo_lines]
             crit = criticism_lines(info, spec)
             if crit:
                 lines += ["", "**What the models get wrong:**", ""] + [f"- {c}" for c in crit]
             steps = next_step(ranking[ranking["material"] == m] if ranking is not None else None, verdicts, spec,
                               level2)
+            steps += list(combos.get("advice") or [])  # which other observable would break a ridge
             if steps:
                 lines += ["", "**Next step:**", ""] + [f"- {s}" for s in steps]
             parts.append(self._md("\n".join(lines)))
@@ -455,7 +464,9 @@ class ReportSections:
     def response_surfaces(self, m: str) -> list:
         """Per response: equation (coded, actual), block ANOVA, coefficients, stationary point."""
         from ..spec import MaterialSpec
-        from .rsm import block_anova, coefficient_table, equation, stationary_point, stored_fits
+        import json
+
+        from .rsm import block_anova, canonical_text, coefficient_table, equation, stored_fits
 
         table = self.root / "validated" / f"{m}.parquet"
         fits, anova = self.root / "fits" / f"{m}.parquet", self.root / "fits" / f"{m}_anova.parquet"
@@ -464,6 +475,8 @@ class ReportSections:
         spec = MaterialSpec.from_material(m, self.config["materials"][m])
         letters = {f: chr(ord("A") + i) for i, f in enumerate(spec.factor_names)}
         coding = None
+        fit_json = self.root / "fits" / f"{m}.json"
+        canonical = json.loads(fit_json.read_text(encoding="utf-8")) if fit_json.is_file() else {}
         lines = ["### Response-surface models", ""]
         # the stored fits, as the fit step wrote them: the report does not fit again
         for fit in stored_fits(read_parquet(fits), read_parquet(anova), read_parquet(table), spec):
@@ -472,13 +485,7 @@ class ReportSections:
             coef = coefficient_table(fit)
             coef.insert(1, "symbol", [_symbol_of(t, letters) for t in coef["term"]])
             actual = fit.coefficients()["coefficient_actual"].to_numpy()
-            point = stationary_point(fit, [f.lower for f in spec.factors], [f.upper for f in spec.factors])
-            if point.kind.startswith("none"):
-                where = "The quadratic part is singular: the surface has no stationary point."
-            else:
-                at = ", ".join(f"{spec.factor(f).label} = {v:.4g}" for f, v in zip(fit.factors, point.actual))
-                where = (f"Stationary point: a {point.kind} at {at} (predicted {label} = {point.value:.4g}), "
-                         f"{'inside' if point.inside else 'outside'} the search range Ω.")
+            where = canonical_text(canonical.get(fit.response, {}).get("canonical"), fit, spec, letters, label)
             anova = block_anova(fit)
             lines += [f"#### {label}", "",
                       "Coded units (" + ", ".join(f"{letters[f]} = {spec.factor(f).label}"

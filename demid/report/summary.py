@@ -224,3 +224,38 @@ def widen_steps(verdicts: pd.DataFrame, spec, level2: dict | None = None) -> lis
         steps.append(f"Widen the range of {f.label} beyond its {where} and simulate runs there: "
                      f"{'; '.join(dict.fromkeys(why[f.name]))}.")
     return steps
+
+
+def combination_verdicts(verdicts: pd.DataFrame, in_combination: dict, spec) -> pd.DataFrame:
+    """The verdict of a factor unresolved alone that an identified combination includes (the strict
+    set's narrowest direction, ``combinations/{material}.json``): "unresolved alone; identified in
+    combination with X"."""
+    if not len(verdicts) or not in_combination:
+        return verdicts
+    out = verdicts.copy()
+    labels = {sc.label: sc.name for sc in spec.scenarios}
+    names = {f.label: f.name for f in spec.factors}
+    for i, row in out.iterrows():
+        partners = in_combination.get(labels.get(row["scenario"], row["scenario"]), {}).get(
+            names.get(row["factor"], row["factor"]))
+        if partners and row["verdict"] == "unresolved":
+            others = " and ".join(spec.factor(p).label for p in partners)
+            out.at[i, "verdict"] = f"unresolved alone; identified in combination with {others}"
+    return out
+
+
+def combination_lines(combinations: dict, spec) -> list[str]:
+    """One line per scenario and set: what the set identifies in combination (its text in
+    ``combinations/{material}.json``), and a band's curve as a table row of values."""
+    lines = []
+    labels = {sc.name: sc.label for sc in spec.scenarios}
+    for entry in combinations.get("sets", []):
+        line = f"*{labels.get(entry['scenario'], entry['scenario'])}*, {entry['set']} set: {entry['text']}"
+        curve = entry.get("curve")
+        if curve and entry.get("identified") and "curved band" in entry["text"]:
+            along, across = spec.factor(curve["along"]), spec.factor(curve["across"])
+            pairs = "; ".join(f"{a:.3g} → {m:.3g} [{lo:.3g}, {hi:.3g}]" for a, lo, m, hi in
+                              zip(curve["along_actual"], curve["lower"], curve["mid"], curve["upper"]))
+            line += f" Curve ({along.label} → {across.label} mid [lowest, highest]): {pairs}."
+        lines.append(line)
+    return lines

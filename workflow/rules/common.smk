@@ -49,6 +49,7 @@ SUMMARY_TABLE_FILES = {
     "findings": "criticism",
     "calibration": "calibration_residuals",
     "columns": "columns",
+    "combinations": "combinations",
 }
 SUMMARY_TABLES = [f"{RESULTS}/tables/{stem}.csv" for stem in SUMMARY_TABLE_FILES.values()]
 
@@ -159,6 +160,7 @@ SUMMARY_INPUTS = {
     "ranking": "uncertainty/{material}_ranking.parquet",
     "findings": "criticism/{material}_findings.parquet",
     "calibration": "criticism/{material}_calibration.parquet",
+    "combinations": "combinations/{material}.parquet",
 }
 
 
@@ -194,6 +196,8 @@ def report_tables():
     out += [f"{RESULTS}/uncertainty/{m}.json" for m in MATERIALS]
     out += [f"{RESULTS}/criticism/{m}.json" for m in MATERIALS]
     out += next_wave_tables()
+    out += [f"{RESULTS}/combinations/{m}.json" for m in MATERIALS]
+    out += [f"{RESULTS}/fits/{m}.json" for m in MATERIALS]
     return out
 
 
@@ -207,6 +211,7 @@ def report_figures():
             f"{RESULTS}/figures/sweep_{m}.png",
             f"{RESULTS}/figures/posterior_{m}.png",
             f"{RESULTS}/figures/residuals_{m}.png",
+            f"{RESULTS}/figures/combinations_{m}.png",
         ]
     return out
 
@@ -256,6 +261,11 @@ def material_outputs(pareto=False):
         criticism_summary=f"{RESULTS}/criticism/{{material}}.json",
         residuals_figure=report(f"{RESULTS}/figures/residuals_{{material}}.png", category="Model criticism",
                                 caption="../report/residuals.rst"),
+        combinations=f"{RESULTS}/combinations/{{material}}.parquet",
+        combinations_summary=f"{RESULTS}/combinations/{{material}}.json",
+        fit_summary=f"{RESULTS}/fits/{{material}}.json",
+        combinations_figure=report(f"{RESULTS}/figures/combinations_{{material}}.png", category="Identified combinations",
+                                   caption="../report/combinations.rst"),
     )
     if pareto:
         out.update(

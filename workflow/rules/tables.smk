@@ -12,6 +12,7 @@ rule summary_tables:
         pareto_materials=pareto_materials(),
         pareto_factors={m: [(f.name, f.unit) for f in SPECS[m].factors] for m in pareto_materials()},
         next_wave=next_wave_columns(),
+        combination_factors=list(dict.fromkeys(f for m in MATERIALS for f in SPECS[m].factor_names)),
     resources:
         mem_mb=1000,
     conda:
