@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .labels import PALETTE, axis_label
+from .labels import PALETTE, axis_label, tex_label
 from .style import plt, styled
 
 if TYPE_CHECKING:
@@ -96,7 +96,10 @@ def combinations_figure(result: MaterialCombinations, title: str):
         ax.tick_params(labelsize=7)
         _log_ticks(ax, spec, i, j)
         cut = res is not None and res.cut != "none"
-        ax.set_title(sc.label + (" (set cut by the search range)" if cut else ""), fontsize=8)
+        # above two factors each panel is a projection: the pair goes first, the scenario on a second line
+        head = (f"projection on {tex_label(spec.factors[i].label)}, {tex_label(spec.factors[j].label)}\n"
+                if d > 2 else "")
+        ax.set_title(head + sc.label + (" (cut by the search range)" if cut else ""), fontsize=8)
     for ax in axes.ravel()[len(panels):]:
         ax.set_visible(False)
     handles, labels = axes.ravel()[0].get_legend_handles_labels()
