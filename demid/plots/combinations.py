@@ -99,7 +99,7 @@ def combinations_figure(result: MaterialCombinations, title: str):
         # above two factors each panel is a projection: the pair goes first, the scenario on a second line
         head = (f"projection on {tex_label(spec.factors[i].label)}, {tex_label(spec.factors[j].label)}\n"
                 if d > 2 else "")
-        ax.set_title(head + sc.label + (" (cut by the search range)" if cut else ""), fontsize=8)
+        ax.set_title(head + sc.label + (" (cut by the range)" if cut else ""), fontsize=8)
     for ax in axes.ravel()[len(panels):]:
         ax.set_visible(False)
     handles, labels = axes.ravel()[0].get_legend_handles_labels()
