@@ -1,0 +1,42 @@
+"""The precision a printed table carries: the place of each value's last printed digit.
+
+A bottom module (it imports nothing from demid) so that reading, design checks and the fit share one rule.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def printed_quantum(y) -> np.ndarray:
+    """Per value, the place of its last printed digit (1e-4 for 10.1235; 0 throughout when some value carries
+    more than 12 significant digits): the rounding a printed table adds to it is at most half of that.
+
+    A float keeps no trailing zeros (79.9 may have been printed 79.9000, 1200 may be exact to the millimetre),
+    so a value is taken to the column's finest place — or, where the column is printed to significant digits
+    (-1228 beside 29.18), to the most digits the values show.
+    """
+    y = np.asarray(y, dtype=float)
+    out = np.zeros(y.shape)
+    valid = np.isfinite(y) & (y != 0)
+    if not valid.any():
+        return out
+    values = y[valid]
+    exponents = np.floor(np.log10(np.abs(values)))
+    own = np.zeros(values.shape)
+    for i, v in enumerate(values):
+        for digits in range(1, 13):
+            scaled = v * 10.0 ** (digits - 1 - exponents[i])
+            if abs(scaled - round(scaled)) <= 1e-12 * max(1.0, abs(scaled)):  # what reading the digits leaves
+                own[i] = 10.0 ** (exponents[i] - digits + 1)
+                break
+    if np.any(own == 0):
+        return out  # a value carries every digit: the column was not rounded for print
+    decimals = -np.round(np.log10(own))
+    shown = exponents + decimals + 1  # significant digits each value shows
+    # Printed to fixed decimals, most values show the most decimals; printed to significant digits, most show
+    # the most digits (a lost trailing zero shortens a few either way).  A tie reads decimals: the finer places.
+    by_digits = np.sum(shown == shown.max()) > np.sum(decimals == decimals.max())
+    # never coarser than units when reading decimals: 1200, 1300 may be exact to the millimetre
+    out[valid] = 10.0 ** (exponents - shown.max() + 1) if by_digits else 10.0 ** -max(decimals.max(), 0)
+    return out
