@@ -40,3 +40,19 @@ def printed_quantum(y) -> np.ndarray:
     # never coarser than units when reading decimals: 1200, 1300 may be exact to the millimetre
     out[valid] = 10.0 ** (exponents - shown.max() + 1) if by_digits else 10.0 ** -max(decimals.max(), 0)
     return out
+
+
+def factor_round_off_sd(gradient: np.ndarray, x_actual: np.ndarray, unit, log_scale) -> np.ndarray:
+    """Per run, the standard deviation of the response error that printing the factors adds: a factor value
+    rounded to its column's last printed place q is off by up to q/2 (variance q^2/12), and the response moves
+    by the fitted gradient times that.  ``gradient`` (n, k) is in coded units per coded unit, ``unit`` the coded
+    unit of each factor in model units; ``log_scale[j]`` marks factors fitted in log10 (a rounding of q at x is
+    q / (x ln 10) in log10 units).  Zero where a column was not rounded for print."""
+    x_actual = np.asarray(x_actual, dtype=float)
+    variance = np.zeros(len(x_actual))
+    for j in range(x_actual.shape[1]):
+        quantum = printed_quantum(x_actual[:, j])
+        if log_scale[j]:
+            quantum = quantum / (np.abs(x_actual[:, j]) * np.log(10.0))
+        variance += (gradient[:, j] * quantum / abs(unit[j])) ** 2 / 12.0
+    return np.sqrt(variance)

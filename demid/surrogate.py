@@ -17,7 +17,7 @@ import numpy as np
 import pandas as pd
 
 from .design import LEVERAGE_UNPREDICTABLE, Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, replicate_groups, term_name
-from .precision import printed_quantum
+from .precision import factor_round_off_sd, printed_quantum
 
 
 # Residuals smaller than this share of the response's magnitude are floating-point round-off
@@ -25,16 +25,20 @@ from .precision import printed_quantum
 ROUND_OFF = 1e-9
 
 
-def round_off_floor(y) -> float:
-    """Residual size below which a fit of ``y`` is exact to working precision — or to the precision ``y`` was
-    printed to."""
+def round_off_floor(y, factor_sd=None) -> float:
+    """Residual size below which a fit of ``y`` is exact to working precision — or to the precision the table
+    was printed to: that of ``y`` and, given ``factor_sd`` (per run, see :meth:`SurrogateFit.factor_round_off`),
+    that of the factors, carried through the fitted gradient."""
     y = np.asarray(y, dtype=float)
     if not y.size:
         return 0.0
     # Rounding to a place q adds errors of root mean square q / sqrt(12); a fit's residuals keep about half
     # of that. 1.5 times the full variance is exceeded by rounding alone about once in 250 tables of 13 runs,
     # while a miss of 0.4 of the last digit still counts as a miss.
-    printed = float(np.sqrt(1.5 / 12 * np.mean(printed_quantum(y) ** 2)))
+    variance = printed_quantum(y) ** 2 / 12
+    if factor_sd is not None:
+        variance = variance + np.asarray(factor_sd, dtype=float) ** 2
+    printed = float(np.sqrt(1.5 * np.mean(variance)))
     return max(ROUND_OFF * float(np.max(np.abs(y))), printed)
 
 
@@ -44,10 +48,10 @@ def pure_error_ss(y, groups) -> float:
     return float(sum(np.sum((y[groups == g] - y[groups == g].mean()) ** 2) for g in np.unique(groups)))
 
 
-def round_off_only(residuals, y) -> bool:
+def round_off_only(residuals, y, factor_sd=None) -> bool:
     """True when the residuals are round-off: their root mean square is below :func:`round_off_floor`."""
     residuals = np.asarray(residuals, dtype=float)
-    return bool(residuals.size) and float(np.sqrt(np.mean(residuals ** 2))) <= round_off_floor(y)
+    return bool(residuals.size) and float(np.sqrt(np.mean(residuals ** 2))) <= round_off_floor(y, factor_sd)
 
 
 # --------------------------------------------------------------------------- results
@@ -265,6 +269,25 @@ class SurrogateFit:
         """Runs the others do not predict (leverage 1, or 1 blurred by rounded levels): the fit follows
         them whatever their value, so their leave-one-out statistics are undefined."""
         return self.hat_diag >= LEVERAGE_UNPREDICTABLE
+
+    @cached_property
+    def factor_round_off(self) -> np.ndarray:
+        """Per run, the standard deviation of the response error that the factors' printed precision adds
+        (the fitted gradient times each factor's rounding): an exact polynomial whose factors were printed
+        to 6 decimals misses by that much, and that is no defect."""
+        beta = self.results.params.to_numpy()
+        k = len(self.factors)
+        gradient = np.zeros((self.n_runs, k))
+        for j in range(k):
+            lowered, weights = [], []
+            for term, b in zip(self.terms, beta):
+                if term[j]:
+                    lowered.append(tuple(p - (i == j) for i, p in enumerate(term)))
+                    weights.append(b * term[j])
+            if lowered:
+                gradient[:, j] = model_matrix(self.coded, lowered) @ np.array(weights)
+        return factor_round_off_sd(gradient, self.x_actual, self.coding.unit,
+                                   [f in self.log_factors for f in self.factors])
 
     @cached_property
     def loo_residuals(self) -> np.ndarray:

@@ -193,7 +193,7 @@ class _Round:
         m = model
         spec = m.spec
         n = len(m.y)
-        if m.df_resid < 3 or round_off_only(m.resid_w, m.z):  # an exact fit: round-off is not evidence
+        if m.df_resid < 3 or round_off_only(m.resid_w, m.z, m.factor_round_off_w):  # an exact fit: round-off is not evidence
             return
         eps = rng.standard_normal((n, n_null))
         q = _orth(m.xw)
