@@ -245,8 +245,17 @@ def box_behnken_points(n_factors: int, center_runs: int) -> np.ndarray:
     return np.vstack([np.array(rows), np.zeros((center_runs, n_factors))])
 
 
-def replicate_groups(coded: np.ndarray, decimals: int = 6) -> np.ndarray:
-    """Integer group id per run; runs at the same design point share an id."""
-    keys = np.round(np.asarray(coded, dtype=float), decimals)
-    _, inverse = np.unique(keys, axis=0, return_inverse=True)
+#: Coded points equal to this many decimals are one design point: their runs are replicates.  The one rule
+#: of the ANOVA's pure error, the criticism's lack of fit and the transcription check's refits.
+REPLICATE_DECIMALS = 6
+
+
+def replicate_keys(coded: np.ndarray) -> np.ndarray:
+    """The coded points as the replicate rule compares them (rounded to :data:`REPLICATE_DECIMALS`)."""
+    return np.round(np.asarray(coded, dtype=float), REPLICATE_DECIMALS)
+
+
+def replicate_groups(coded: np.ndarray) -> np.ndarray:
+    """Integer group id per run; runs at the same design point (:func:`replicate_keys`) share an id."""
+    _, inverse = np.unique(replicate_keys(coded), axis=0, return_inverse=True)
     return inverse.ravel()

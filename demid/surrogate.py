@@ -17,6 +17,7 @@ import numpy as np
 import pandas as pd
 
 from .design import LEVERAGE_UNPREDICTABLE, Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, replicate_groups, term_name
+from .formulas import f_tail
 from .precision import factor_round_off_sd, printed_quantum
 
 
@@ -96,12 +97,10 @@ class LackOfFitAnova:
     ss_floor: float = 0.0  # sums of squares at or below this are round-off: an F-ratio over them is undefined
 
     def _f(self, ss_a, df_a, ss_b, df_b):
-        from scipy import stats
-
         if df_a <= 0 or df_b <= 0 or ss_b <= self.ss_floor * df_b:
             return np.nan, np.nan
         f = (ss_a / df_a) / (ss_b / df_b)
-        return float(f), float(stats.f.sf(f, df_a, df_b))
+        return float(f), float(f_tail(f, df_a, df_b))
 
     @property
     def model_f(self):

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import stats
 
-from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, model_matrix, term_name
+from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, model_matrix, replicate_groups, term_name
 from ..surrogate import pure_error_ss, round_off_floor, round_off_only
 from .aliasing import _term_classes
 from .models import _orth, _residualize
@@ -285,8 +285,7 @@ class _Round:
         self.hypotheses.append(h)
 
     def _lack_of_fit(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
-        _, group = np.unique(np.round(m.coded, 9), axis=0, return_inverse=True)
-        group = group.ravel()
+        group = replicate_groups(m.coded)  # the ANOVA's replicates, so that both judge one pure error
         n_groups = int(group.max()) + 1
         df_pe = len(group) - n_groups
         df_lof = m.df_resid - df_pe
