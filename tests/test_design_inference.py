@@ -183,3 +183,33 @@ def test_check_transcription_without_design_codes_a_rounded_ccd_by_its_geometry(
     assert proc.returncode == 0, proc.stderr
     assert re.search(r"design inferred from the table .*axial distance 1\.4 for x1, 1\.429 for x2", proc.stderr)
     assert json.loads(out.read_text())["consistent"] is True
+
+
+def test_a_ccd_without_one_axial_run_is_still_inferred_from_the_other(tmp_path):
+    """A failed run may be left out of a command-line table: the factor then shows four levels."""
+    coded = ccd_points(2, 1.41421, 5)
+    path, names, beta = _plant(tmp_path, coded, np.array([0.5, 10.0]), np.array([0.25, 3.5]), seed=4,
+                               axial_decimals=(3, 0))
+    table = pd.read_csv(path)
+    table = table[table["x1"] != table["x1"].max()]  # the +alpha run of x1 failed
+    path.write_text(table.to_csv(index=False, float_format="%.9f"))
+    out = tmp_path / "fit.json"
+    proc = _cli("fit", "--data", str(path), "--factors", "x1,x2", "--responses", "y", "--out", str(out))
+    assert proc.returncode == 0, proc.stderr
+    assert re.search(r"central composite design \(CCD\), axial distance 1\.416 for x1, 1\.429 for x2, 5 centre runs",
+                     proc.stderr), proc.stderr
+    fitted = json.loads(out.read_text())["y"]["coefficients_coded"]
+    assert fitted["x1^2"] == pytest.approx(beta[4], abs=1e-5) and fitted["x1:x2"] == pytest.approx(beta[3], abs=1e-5)
+
+
+def test_a_box_behnken_cell_off_its_level_is_refused_naming_the_inferred_design(tmp_path):
+    path, names, _ = _plant(tmp_path, box_behnken_points(3, 3), _CENTRE3, _UNIT3, seed=5)
+    table = pd.read_csv(path)
+    row = int(np.flatnonzero(np.isclose(table["x1"], 0.5))[0])
+    table.loc[row, "x1"] = 0.56
+    path.write_text(table.to_csv(index=False, float_format="%.6f"))
+    proc = _cli("criticize", "--data", str(path), "--factors", ",".join(names), "--response", "y",
+                "--out", str(tmp_path / "o.json"))
+    assert proc.returncode == 2 and proc.stderr.count("\n") == 1, proc.stderr
+    assert re.search(rf"run {int(table['run'].iloc[row])}, column 'x1': value 0\.56 is not a level of the inferred "
+                     r"box_behnken design \(coded \+0\.300\); nearest valid level: 0\.5", proc.stderr), proc.stderr
