@@ -15,7 +15,7 @@ import pandas as pd
 import pytest
 
 from demid.data import validate_material
-from demid.design import box_behnken_points, ccd_points, model_matrix, quadratic_terms
+from demid.design import box_behnken_points, ccd_points, model_matrix, quadratic_terms, term_name
 from demid.design_inference import infer_design
 
 
@@ -55,7 +55,8 @@ _CENTRE3, _UNIT3 = np.array([0.5, 5.0, 20.0]), np.array([0.2, 2.0, 5.0])
 
 # (case, coded points, centre, unit, axial decimals, expected note fragment)
 _TABLES = {
-    "box_behnken_3": (box_behnken_points(3, 3), _CENTRE3, _UNIT3, None, r"a 3-factor Box-Behnken design with 3 centre runs"),
+    "box_behnken_3": (box_behnken_points(3, 3), _CENTRE3, _UNIT3, None,
+                      r"a 3-factor Box-Behnken design with 3 centre runs"),
     "box_behnken_4": (box_behnken_points(4, 2), np.array([0.5, 5.0, 20.0, 1.0]), np.array([0.2, 2.0, 5.0, 0.5]), None,
                       r"a 4-factor Box-Behnken design with 2 centre runs"),
     "factorial_3^3": (_full_factorial(3, [-1, 0, 1]), _CENTRE3, _UNIT3, None, r"a 3\^3 full factorial, 1 centre run"),
@@ -63,10 +64,12 @@ _TABLES = {
                         r"a 3\^3 full factorial, 3 centre runs"),
     # 0.5 +- 0.3536 -> 0.15 / 0.85 (alpha 1.4), 10 +- 4.95 -> 5 / 15 (alpha 1.4286): levels printed to practice
     "rounded_ccd_2": (ccd_points(2, 1.41421, 5), np.array([0.5, 10.0]), np.array([0.25, 3.5]),
-                      (2, 0), r"a 2-factor central composite design \(CCD\), axial distance 1\.4 for x1, 1\.429 for x2, "
+                      (2, 0),
+                      r"a 2-factor central composite design \(CCD\), axial distance 1\.4 for x1, 1\.429 for x2, "
                       r"5 centre runs"),
     "rounded_ccd_3": (ccd_points(3, 1.68179, 3), _CENTRE3, _UNIT3,
-                      (2, 1, 0), r"a 3-factor central composite design \(CCD\), axial distance 1\.7 for x1, 1\.7 for x2, "
+                      (2, 1, 0),
+                      r"a 3-factor central composite design \(CCD\), axial distance 1\.7 for x1, 1\.7 for x2, "
                       r"1\.6 for x3, 3 centre runs"),
     "rotatable_ccd_2": (ccd_points(2, 1.41421, 3), np.array([0.5, 10.0]), np.array([0.25, 3.5]), None,
                         r"a 2-factor central composite design \(CCD\), axial distance alpha = 1\.41421, 3 centre runs"),
@@ -85,8 +88,6 @@ def test_fit_and_criticize_without_design_infer_the_family_and_say_so(tmp_path, 
     assert "declared" not in proc.stderr
     # coded by the design's geometry: the factorial (or +-1) levels at +-1, so the coded fit is the generator's
     fitted = json.loads(out.read_text())["y"]["coefficients_coded"]
-    from demid.design import term_name
-
     expected = {term_name(t, names): b for t, b in zip(quadratic_terms(len(names)), beta)}
     assert [fitted[t] for t in expected] == pytest.approx(list(expected.values()), abs=1e-5)
     out = tmp_path / "crit.json"

@@ -193,7 +193,8 @@ class _Round:
         m = model
         spec = m.spec
         n = len(m.y)
-        if m.df_resid < 3 or round_off_only(m.resid_w, m.z, m.factor_round_off_w):  # an exact fit: round-off is not evidence
+        # an exact fit (to round-off or to the print of the response and the factors): round-off is not evidence
+        if m.df_resid < 3 or round_off_only(m.resid_w, m.z, m.factor_round_off_w):
             return
         eps = rng.standard_normal((n, n_null))
         q = _orth(m.xw)
