@@ -102,6 +102,27 @@ def _alpha(table, factors, alpha, design="ccd"):
     return float(abs(coding.to_coded(table[factors].to_numpy(dtype=float))).max())
 
 
+def _table_design(table, factors, args):
+    """The design family and axial distance of ``args``: as given (``--design``; ``--alpha`` alone is a CCD's),
+    or inferred from the table's geometry.  Returns (design dict, scalar alpha, note): the note says which design
+    was inferred ("" when one was given); the command prints it once it has succeeded, so that an error stays one
+    line (that line says "inferred" where the design is at fault)."""
+    if args.design is not None or args.alpha is not None:
+        design = args.design or "ccd"
+        alpha = _alpha(table, factors, args.alpha, design)
+        return {"type": design, "alpha": alpha}, alpha, ""
+    from .design_inference import infer_design
+
+    inferred = infer_design(table, factors, args.data)
+    note = f"demid: note: {args.data}: design inferred from the table (no --design given): {inferred.describe()}"
+    return inferred.design, max(inferred.alpha), note
+
+
+def _say(note: str) -> None:
+    if note:
+        print(note, file=sys.stderr)
+
+
 def _design_coding(table, factors, design, alpha, source):
     """The coding of the table's runs, checked once: the declared design's levels (every cell on one of
     them, every run one of its points; run counts are not checked, a table may leave out failed runs), from
@@ -110,11 +131,11 @@ def _design_coding(table, factors, design, alpha, source):
     from .data import check_design, factor_slip_warning
     from .design import Coding
 
-    if design == "custom":
+    if design["type"] == "custom":
         x = table[factors].to_numpy(dtype=float)
-        return Coding.from_levels(factors, x, alpha)
-    coding = check_design(table, factors, {"type": design, "alpha": alpha}, source, None, counts=False)[0]
-    slip = factor_slip_warning(table, factors, {"type": design, "alpha": alpha}, coding, source)
+        return Coding.from_levels(factors, x, alpha if not design.get("inferred") else 1.0)
+    coding = check_design(table, factors, design, source, None, counts=False)[0]
+    slip = factor_slip_warning(table, factors, design, coding, source)
     if slip:
         print(f"demid: warning: {slip}", file=sys.stderr)
     return coding
@@ -136,8 +157,8 @@ def cmd_fit(args) -> int:
 
     factors, responses = _split(args.factors), _split(args.responses)
     table = _load_table(args.data, factors, responses)
-    alpha = _alpha(table, factors, args.alpha, args.design)
-    coding = _design_coding(table, factors, args.design, alpha, args.data)
+    design, alpha, note = _table_design(table, factors, args)
+    coding = _design_coding(table, factors, design, alpha, args.data)
     out = {}
     for r in responses:
         _require_estimable(table, factors, r, coding, args.data)
@@ -152,6 +173,7 @@ def cmd_fit(args) -> int:
             "coefficients_coded": dict(zip(coef["term"], coef["coefficient_coded"])),
         }
     write_json(out, args.out)
+    _say(note)
     return 0
 
 
@@ -211,12 +233,13 @@ def cmd_criticize(args) -> int:
     factors = _split(args.factors)
     _one_response(args.response, "criticize")
     table = _load_table(args.data, factors, [args.response])
-    alpha = _alpha(table, factors, args.alpha, args.design)
-    coding = _design_coding(table, factors, args.design, alpha, args.data)
+    design, alpha, note = _table_design(table, factors, args)
+    coding = _design_coding(table, factors, design, alpha, args.data)
     _require_estimable(table, factors, args.response, coding, args.data)
     fit = fit_response(table, factors, args.response, alpha=alpha, coding=coding)
     result = criticize(table, factors, args.response, alpha=alpha, run_order=args.run_order, fit=fit)
     write_json(result.to_json(), args.out)
+    _say(note)
     return 0
 
 
@@ -263,10 +286,14 @@ def cmd_check_transcription(args) -> int:
     _one_response(args.response, "check-transcription")
     table = _load_table(args.data, factors, [args.response])
     published = _parse_published(args.published)
-    result = check_transcription(table, factors, args.response, published,
-                                 alpha=_alpha(table, factors, args.alpha, args.design), design_type=args.design,
-                                 printed=read_printed(args.data, table), source=args.data)
+    design, alpha, note = _table_design(table, factors, args)
+    # An inferred design codes the table by its geometry (per-factor axial distances); a declared one as before.
+    options = ({"alpha": design["alpha"], "coding": _design_coding(table, factors, design, alpha, args.data)}
+               if design.get("inferred") else {"alpha": alpha})
+    result = check_transcription(table, factors, args.response, published, design_type=design["type"],
+                                 printed=read_printed(args.data, table), source=args.data, **options)
     write_json(result.to_json(), args.out)
+    _say(note)
     return 0
 
 
@@ -338,8 +365,10 @@ def _table_arguments(p: argparse.ArgumentParser, response_flag: str, response_he
     p.add_argument("--factors", required=True, help="comma-separated factor columns, in order")
     p.add_argument(response_flag, required=True, help=response_help)
     p.add_argument("--alpha", type=float, default=None, help="CCD axial distance (default: inferred)")
-    p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"],
-                   help="design family: sets the coding (axial points only in a ccd)")
+    p.add_argument("--design", default=None, choices=["ccd", "box_behnken", "factorial", "custom"],
+                   help="design family: sets the coding (axial points only in a ccd); default: inferred from the "
+                        "table's geometry (CCD with per-factor axial distance, Box-Behnken, 3^k, two-level "
+                        "factorial with centre runs, otherwise custom) and said on stderr")
     p.add_argument("--out", required=True, help="JSON file to write")
 
 

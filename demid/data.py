@@ -18,8 +18,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .design import (Coding, box_behnken_points, ccd_points, classify_points, model_matrix, model_units,
-                     nominal_levels, quadratic_terms, rotatable_alpha, snap_to_levels, term_name)
+from .design import (Coding, axial_distances, box_behnken_points, ccd_points, classify_points, factor_levels,
+                     model_matrix, model_units, quadratic_terms, rotatable_alpha, snap_to_factor_levels, term_name)
+from .precision import printed_quantum
 from .errors import InputError
 from .spec import as_spec
 
@@ -286,15 +287,15 @@ def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str
     """Centre and unit per factor from the design's geometry: the placement of the declared design's
     nominal levels that puts the most runs on a level (see :func:`_level_coding`)."""
     dtype = design["type"]
-    alpha = float(design.get("alpha", 1.0))
+    alpha = axial_distances(design.get("alpha", 1.0), len(factors))
     z = model_units(table[factors].to_numpy(), factors, log_factors)
     if dtype == "custom":
         return Coding.from_levels(factors, z, alpha)
-    levels = nominal_levels(dtype, alpha)
+    levels = factor_levels(dtype, alpha, len(factors))
     centers, units = [], []
     for i, f in enumerate(factors):
         values, counts = np.unique(_round_to_scale(z[:, i], 11), return_counts=True)
-        found = _level_coding(values, counts, levels) if len(values) > 1 else None
+        found = _level_coding(values, counts, levels[i]) if len(values) > 1 else None
         if found is None:
             raise InputError(f"the factor takes the single value {values[0]:g} in every run; a {dtype} design "
                              "varies each factor over at least two levels", source=src, column=f)
@@ -348,6 +349,8 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
     try:
         return _check_design(*args)
     except InputError as error:
+        if design.get("inferred"):
+            raise  # nothing was declared: the inferred design's own refusal is the line to show
         _refuse_wrong_scale(*args)
         shown = _ccd_alpha_of_table(table, factors, log_factors) if design["type"] == "ccd" else None
         declared = float(design.get("alpha", 1.0))
@@ -388,6 +391,21 @@ def _refuse_wrong_scale(table, factors, design, src, config_key, log_factors, le
                              f"{'log' if scale == 'linear' else 'linear'} one; {fix}", source=src)
 
 
+def _said(design: dict) -> str:
+    """How the design came to be checked against: declared (config, --design) or inferred from the table."""
+    return "inferred" if design.get("inferred") else "declared"
+
+
+def _level_tolerance(values: np.ndarray, unit: float, level_tol: float, log_scale: bool) -> float:
+    """Coded distance within which a value of one factor reads as a level: ``level_tol`` of that factor's coded
+    unit, or half the last printed digit of its column where printing rounded more than that (a CCD's axial
+    level 0.851 printed as 0.85).  Log-scale factors keep ``level_tol``: their print is in other units."""
+    if log_scale or not unit:
+        return level_tol
+    quantum = printed_quantum(values)
+    return max(level_tol, 0.5 * float(np.max(quantum, initial=0.0)) / abs(unit))
+
+
 def _passes(*args) -> bool:
     try:
         _check_design(*args)
@@ -399,17 +417,20 @@ def _passes(*args) -> bool:
 def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str, config_key: str | None,
                   log_factors=(), level_tol: float = 0.02, counts: bool = True) -> tuple[Coding, np.ndarray]:
     dtype = design["type"]
-    alpha = float(design.get("alpha", 1.0))
+    k = len(factors)
+    alpha = axial_distances(design.get("alpha", 1.0), k)
     coding = infer_coding(table, factors, design, src, log_factors)
     z = model_units(table[factors].to_numpy(), factors, log_factors)
     coded = coding.to_coded(z)
     if dtype == "custom":
         return coding, np.array(["other"] * len(table))
-    levels = nominal_levels(dtype, alpha)
+    levels_of = factor_levels(dtype, alpha, k)
     for i, f in enumerate(factors):
+        levels = levels_of[i]
+        tolerance = _level_tolerance(table[f].to_numpy(dtype=float), coding.unit[i], level_tol, f in log_factors)
         for r, c in zip(table["run"], coded[:, i]):
             dist = np.abs(levels - c)
-            if dist.min() > level_tol:
+            if dist.min() > tolerance:
                 nearest = levels[np.argmin(dist)]
                 near_actual = coding.to_actual(np.where(np.arange(len(factors)) == i, nearest, 0.0))[i]
                 if f in log_factors:
@@ -417,13 +438,12 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
                 printed = table[f].to_numpy(dtype=float)[np.abs(coded[:, i] - nearest) <= level_tol]
                 near_actual = printed[0] if printed.size else near_actual  # as the other runs print it
                 found = table.loc[table["run"] == r, f].iloc[0]
-                raise InputError(f"value {found:g} is not a level of the declared {dtype} design "
+                raise InputError(f"value {found:g} is not a level of the {_said(design)} {dtype} design "
                                  f"(coded {c:+.3f}); nearest valid level: {near_actual:.6g} (coded {nearest:+.4g})",
                                  source=src, run=int(r), column=f)
-    snapped = snap_to_levels(coded, levels)
+    snapped = snap_to_factor_levels(coded, levels_of)
     types = classify_points(snapped, alpha)
-    k = len(factors)
-    _refuse_misplaced_points(table, factors, design, snapped, types, levels, coding, log_factors, src)
+    _refuse_misplaced_points(table, factors, design, snapped, types, levels_of, coding, log_factors, src)
     if not counts:
         return coding, types
     if dtype == "ccd":
@@ -471,7 +491,7 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
 def _design_points(design: dict, k: int) -> np.ndarray:
     """The coded non-centre points of a CCD or Box-Behnken design, each once."""
     if design["type"] == "ccd":
-        return ccd_points(k, float(design.get("alpha", 1.0)), center_runs=0)
+        return ccd_points(k, axial_distances(design.get("alpha", 1.0), k), center_runs=0)
     return box_behnken_points(k, 0)
 
 
@@ -536,9 +556,9 @@ def factor_slip_warning(table: pd.DataFrame, factors: list[str], design: dict, c
     cannot tell apart: a warning, not an error."""
     if design["type"] not in _DESIGN_POINTS:
         return None
-    levels = nominal_levels(design["type"], float(design.get("alpha", 1.0)))
+    levels = factor_levels(design["type"], design.get("alpha", 1.0), len(factors))
     coded = coding.to_coded(model_units(table[factors].to_numpy(dtype=float), factors, log_factors))
-    snapped = snap_to_levels(coded, levels)
+    snapped = snap_to_factor_levels(coded, levels)
     try:
         _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src,
                                            slips_only=True)
@@ -610,10 +630,10 @@ def _refuse_misplaced_points(table, factors, design, snapped, types, levels, cod
     i = int(bad[0])
     counts = {t: int(np.sum(types == t)) for t in allowed}
     short = {t for t, n in _expected_counts(design, len(factors)).items() if counts.get(t, 0) < n}
-    alpha = float(design.get("alpha", 1.0))
+    alpha = axial_distances(design.get("alpha", 1.0), len(factors))
     repairs = []
     for j, f in enumerate(factors):
-        for level in levels:
+        for level in levels[j]:
             point = snapped[i].copy()
             point[j] = level
             kind = classify_points(point[None, :], alpha)[0]
@@ -625,7 +645,7 @@ def _refuse_misplaced_points(table, factors, design, snapped, types, levels, cod
     where = ", ".join(f"{f} {table[f].iloc[i]:g}" for f in factors)
     names = [_POINT_WORDS[t] for t in allowed]
     article = "an" if names[0][0] in "aeiou" else "a"
-    what = (f"the point ({where}) is not {article} {', '.join(names[:-1])} or {names[-1]} point of the declared "
+    what = (f"the point ({where}) is not {article} {', '.join(names[:-1])} or {names[-1]} point of the {_said(design)} "
             f"{design['type']} design")
     run = int(table["run"].iloc[i])
     if len(repairs) == 1:
@@ -800,9 +820,9 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
                              f"at least {p + 1} are needed", source=src, column=r)
     coding, types = check_design(table, factors, mat_cfg["design"], src, f"materials.{material}", log_factors)
     coded = coding.to_coded(model_units(table[factors].to_numpy(), factors, log_factors))
-    levels = nominal_levels(mat_cfg["design"]["type"], float(mat_cfg["design"].get("alpha", 1.0)))
-    if len(levels):
-        snapped = snap_to_levels(coded, levels)
+    levels = factor_levels(mat_cfg["design"]["type"], mat_cfg["design"].get("alpha", 1.0), len(factors))
+    if len(levels[0]):
+        snapped = snap_to_factor_levels(coded, levels)
         warnings.extend(_odd_level_values(table, factors, snapped, src))
     for r in responses:
         require_estimable(coded, np.isfinite(table[r].to_numpy()), types, src, r, factors)

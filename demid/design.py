@@ -141,15 +141,18 @@ class DesignStructure:
                 f"{self.n_center} centre" + (f", {self.n_other} other" if self.n_other else ""))
 
 
-def classify_points(coded: np.ndarray, alpha: float, atol: float = 1e-3) -> np.ndarray:
-    """Label each coded point 'center', 'factorial', 'axial', 'edge' (Box-Behnken) or 'other'."""
+def classify_points(coded: np.ndarray, alpha, atol: float = 1e-3) -> np.ndarray:
+    """Label each coded point 'center', 'factorial', 'axial', 'edge' (Box-Behnken) or 'other'.
+
+    ``alpha`` is one axial distance or one per factor (a CCD whose levels were rounded to practical values)."""
     coded = np.asarray(coded, dtype=float)
+    alpha = np.asarray(alpha, dtype=float)
     labels = []
     for row in coded:
         mag = np.abs(row)
         zero = mag < atol
         one = np.abs(mag - 1) < atol
-        ax = np.abs(mag - alpha) < atol * max(alpha, 1)
+        ax = np.abs(mag - alpha) < atol * np.maximum(alpha, 1)
         if zero.all():
             labels.append("center")
         elif one.all():
@@ -198,19 +201,36 @@ def snap_to_levels(coded: np.ndarray, levels: np.ndarray) -> np.ndarray:
     return levels[np.argmin(np.abs(coded[..., None] - levels), axis=-1)]
 
 
+def axial_distances(alpha, n_factors: int) -> np.ndarray:
+    """One axial distance per factor from one for all (a declared design) or one per factor (a CCD whose
+    levels were rounded to practical values: 1.404 for one factor, 1.429 for another)."""
+    return np.broadcast_to(np.asarray(alpha, dtype=float), (n_factors,)).copy()
+
+
+def factor_levels(design_type: str, alpha, n_factors: int) -> list[np.ndarray]:
+    """The coded levels each factor may take in the design (per-factor axial distances allowed)."""
+    return [nominal_levels(design_type, float(a)) for a in axial_distances(alpha, n_factors)]
+
+
+def snap_to_factor_levels(coded: np.ndarray, levels: list[np.ndarray]) -> np.ndarray:
+    """Each coded value replaced by the nearest level of its own factor (columns of ``coded``)."""
+    coded = np.array(coded, dtype=float, ndmin=2)
+    return np.column_stack([snap_to_levels(coded[:, j], lv) for j, lv in enumerate(levels)])
+
+
 def rotatable_alpha(n_factors: int) -> float:
     return float((2 ** n_factors) ** 0.25)
 
 
 def ccd_points(n_factors: int, alpha: float | None = None, center_runs: int = 5) -> np.ndarray:
     """Coded CCD points in standard order: factorial, axial, centre."""
-    alpha = rotatable_alpha(n_factors) if alpha is None else alpha
+    alpha = axial_distances(rotatable_alpha(n_factors) if alpha is None else alpha, n_factors)
     fact = np.array(np.meshgrid(*[[-1.0, 1.0]] * n_factors, indexing="ij")).reshape(n_factors, -1).T
     fact = fact[:, ::-1]  # first factor varies fastest (Yates order)
     axial = np.zeros((2 * n_factors, n_factors))
     for i in range(n_factors):
-        axial[2 * i, i] = -alpha
-        axial[2 * i + 1, i] = alpha
+        axial[2 * i, i] = -alpha[i]
+        axial[2 * i + 1, i] = alpha[i]
     return np.vstack([fact, axial, np.zeros((center_runs, n_factors))])
 
 
@@ -225,8 +245,17 @@ def box_behnken_points(n_factors: int, center_runs: int) -> np.ndarray:
     return np.vstack([np.array(rows), np.zeros((center_runs, n_factors))])
 
 
-def replicate_groups(coded: np.ndarray, decimals: int = 6) -> np.ndarray:
-    """Integer group id per run; runs at the same design point share an id."""
-    keys = np.round(np.asarray(coded, dtype=float), decimals)
-    _, inverse = np.unique(keys, axis=0, return_inverse=True)
+#: Coded points equal to this many decimals are one design point: their runs are replicates.  The one rule
+#: of the ANOVA's pure error, the criticism's lack of fit and the transcription check's refits.
+REPLICATE_DECIMALS = 6
+
+
+def replicate_keys(coded: np.ndarray) -> np.ndarray:
+    """The coded points as the replicate rule compares them (rounded to :data:`REPLICATE_DECIMALS`)."""
+    return np.round(np.asarray(coded, dtype=float), REPLICATE_DECIMALS)
+
+
+def replicate_groups(coded: np.ndarray) -> np.ndarray:
+    """Integer group id per run; runs at the same design point (:func:`replicate_keys`) share an id."""
+    _, inverse = np.unique(replicate_keys(coded), axis=0, return_inverse=True)
     return inverse.ravel()

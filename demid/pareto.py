@@ -7,6 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from .formulas import relative_error
+
 
 def pareto_front(first: np.ndarray, second: np.ndarray) -> np.ndarray:
     """Indices of the non-dominated points when both objectives are minimised.
@@ -85,7 +87,7 @@ class ParetoResult:
 def pareto_analysis(grid: pd.DataFrame, factors: list[str], error_of: str, target: float, minimise: str,
                     max_error: float) -> ParetoResult:
     """Relative error of ``error_of`` against ``target`` versus the predicted ``minimise`` response."""
-    error = np.abs(grid[error_of].to_numpy() - target) / abs(target)
+    error = np.abs(relative_error(grid[error_of].to_numpy(), target))
     objective = grid[minimise].to_numpy()
     idx = pareto_front(error, objective)
     front = grid.iloc[idx][factors].reset_index(drop=True)

@@ -17,6 +17,8 @@ import numpy as np
 import pandas as pd
 
 from .design import LEVERAGE_UNPREDICTABLE, Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, replicate_groups, term_name
+from .formulas import f_tail
+from .precision import factor_round_off_sd, printed_quantum
 
 
 # Residuals smaller than this share of the response's magnitude are floating-point round-off
@@ -24,50 +26,20 @@ from .design import LEVERAGE_UNPREDICTABLE, Coding, Term, model_matrix, model_un
 ROUND_OFF = 1e-9
 
 
-def printed_quantum(y) -> np.ndarray:
-    """Per value, the place of its last printed digit (1e-4 for 10.1235; 0 throughout when some value carries
-    more than 12 significant digits): the rounding a printed table adds to it is at most half of that.
-
-    A float keeps no trailing zeros (79.9 may have been printed 79.9000, 1200 may be exact to the millimetre),
-    so a value is taken to the column's finest place — or, where the column is printed to significant digits
-    (-1228 beside 29.18), to the most digits the values show.
-    """
-    y = np.asarray(y, dtype=float)
-    out = np.zeros(y.shape)
-    valid = np.isfinite(y) & (y != 0)
-    if not valid.any():
-        return out
-    values = y[valid]
-    exponents = np.floor(np.log10(np.abs(values)))
-    own = np.zeros(values.shape)
-    for i, v in enumerate(values):
-        for digits in range(1, 13):
-            scaled = v * 10.0 ** (digits - 1 - exponents[i])
-            if abs(scaled - round(scaled)) <= 1e-12 * max(1.0, abs(scaled)):  # what reading the digits leaves
-                own[i] = 10.0 ** (exponents[i] - digits + 1)
-                break
-    if np.any(own == 0):
-        return out  # a value carries every digit: the column was not rounded for print
-    decimals = -np.round(np.log10(own))
-    shown = exponents + decimals + 1  # significant digits each value shows
-    # Printed to fixed decimals, most values show the most decimals; printed to significant digits, most show
-    # the most digits (a lost trailing zero shortens a few either way).  A tie reads decimals: the finer places.
-    by_digits = np.sum(shown == shown.max()) > np.sum(decimals == decimals.max())
-    # never coarser than units when reading decimals: 1200, 1300 may be exact to the millimetre
-    out[valid] = 10.0 ** (exponents - shown.max() + 1) if by_digits else 10.0 ** -max(decimals.max(), 0)
-    return out
-
-
-def round_off_floor(y) -> float:
-    """Residual size below which a fit of ``y`` is exact to working precision — or to the precision ``y`` was
-    printed to."""
+def round_off_floor(y, factor_sd=None) -> float:
+    """Residual size below which a fit of ``y`` is exact to working precision — or to the precision the table
+    was printed to: that of ``y`` and, given ``factor_sd`` (per run, see :meth:`SurrogateFit.factor_round_off`),
+    that of the factors, carried through the fitted gradient."""
     y = np.asarray(y, dtype=float)
     if not y.size:
         return 0.0
     # Rounding to a place q adds errors of root mean square q / sqrt(12); a fit's residuals keep about half
     # of that. 1.5 times the full variance is exceeded by rounding alone about once in 250 tables of 13 runs,
     # while a miss of 0.4 of the last digit still counts as a miss.
-    printed = float(np.sqrt(1.5 / 12 * np.mean(printed_quantum(y) ** 2)))
+    variance = printed_quantum(y) ** 2 / 12
+    if factor_sd is not None:
+        variance = variance + np.asarray(factor_sd, dtype=float) ** 2
+    printed = float(np.sqrt(1.5 * np.mean(variance)))
     return max(ROUND_OFF * float(np.max(np.abs(y))), printed)
 
 
@@ -77,10 +49,10 @@ def pure_error_ss(y, groups) -> float:
     return float(sum(np.sum((y[groups == g] - y[groups == g].mean()) ** 2) for g in np.unique(groups)))
 
 
-def round_off_only(residuals, y) -> bool:
+def round_off_only(residuals, y, factor_sd=None) -> bool:
     """True when the residuals are round-off: their root mean square is below :func:`round_off_floor`."""
     residuals = np.asarray(residuals, dtype=float)
-    return bool(residuals.size) and float(np.sqrt(np.mean(residuals ** 2))) <= round_off_floor(y)
+    return bool(residuals.size) and float(np.sqrt(np.mean(residuals ** 2))) <= round_off_floor(y, factor_sd)
 
 
 # --------------------------------------------------------------------------- results
@@ -125,12 +97,10 @@ class LackOfFitAnova:
     ss_floor: float = 0.0  # sums of squares at or below this are round-off: an F-ratio over them is undefined
 
     def _f(self, ss_a, df_a, ss_b, df_b):
-        from scipy import stats
-
         if df_a <= 0 or df_b <= 0 or ss_b <= self.ss_floor * df_b:
             return np.nan, np.nan
         f = (ss_a / df_a) / (ss_b / df_b)
-        return float(f), float(stats.f.sf(f, df_a, df_b))
+        return float(f), float(f_tail(f, df_a, df_b))
 
     @property
     def model_f(self):
@@ -298,6 +268,25 @@ class SurrogateFit:
         """Runs the others do not predict (leverage 1, or 1 blurred by rounded levels): the fit follows
         them whatever their value, so their leave-one-out statistics are undefined."""
         return self.hat_diag >= LEVERAGE_UNPREDICTABLE
+
+    @cached_property
+    def factor_round_off(self) -> np.ndarray:
+        """Per run, the standard deviation of the response error that the factors' printed precision adds
+        (the fitted gradient times each factor's rounding): an exact polynomial whose factors were printed
+        to 6 decimals misses by that much, and that is no defect."""
+        beta = self.results.params.to_numpy()
+        k = len(self.factors)
+        gradient = np.zeros((self.n_runs, k))
+        for j in range(k):
+            lowered, weights = [], []
+            for term, b in zip(self.terms, beta):
+                if term[j]:
+                    lowered.append(tuple(p - (i == j) for i, p in enumerate(term)))
+                    weights.append(b * term[j])
+            if lowered:
+                gradient[:, j] = model_matrix(self.coded, lowered) @ np.array(weights)
+        return factor_round_off_sd(gradient, self.x_actual, self.coding.unit,
+                                   [f in self.log_factors for f in self.factors])
 
     @cached_property
     def loo_residuals(self) -> np.ndarray:

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import stats
 
-from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, model_matrix, term_name
+from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, model_matrix, replicate_groups, term_name
 from ..surrogate import pure_error_ss, round_off_floor, round_off_only
 from .aliasing import _term_classes
 from .models import _orth, _residualize
@@ -193,7 +193,8 @@ class _Round:
         m = model
         spec = m.spec
         n = len(m.y)
-        if m.df_resid < 3 or round_off_only(m.resid_w, m.z):  # an exact fit: round-off is not evidence
+        # an exact fit (to round-off or to the print of the response and the factors): round-off is not evidence
+        if m.df_resid < 3 or round_off_only(m.resid_w, m.z, m.factor_round_off_w):
             return
         eps = rng.standard_normal((n, n_null))
         q = _orth(m.xw)
@@ -285,8 +286,7 @@ class _Round:
         self.hypotheses.append(h)
 
     def _lack_of_fit(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
-        _, group = np.unique(np.round(m.coded, 9), axis=0, return_inverse=True)
-        group = group.ravel()
+        group = replicate_groups(m.coded)  # the ANOVA's replicates, so that both judge one pure error
         n_groups = int(group.max()) + 1
         df_pe = len(group) - n_groups
         df_lof = m.df_resid - df_pe

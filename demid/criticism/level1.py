@@ -161,7 +161,7 @@ def _prepare(table: pd.DataFrame, factors: list[str], response: str, alpha: floa
     sub = table.loc[ok]
     runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, int(ok.sum()) + 1)
     data = _Data(response, list(factors), fit.coded, fit.y, runs, coding, float(alpha),
-                 tuple(log_factors), quadratic_terms(len(factors)))
+                 tuple(log_factors), quadratic_terms(len(factors)), factor_round_off=fit.factor_round_off)
     return data, fit
 
 

@@ -14,6 +14,7 @@ import numpy as np
 import pandas as pd
 from scipy import optimize
 
+from ..formulas import relative_error
 from .edges import extrapolation_warnings, touching, widen_advice
 from .messages import _level2_message
 from .models import _num
@@ -118,7 +119,7 @@ class _Level2Problem:
         return np.stack([np.asarray(self.surrogates[o].predict(x), dtype=float) for o in self.observables])
 
     def errors(self, s: np.ndarray) -> np.ndarray:
-        return (self.values(s) - self.targets[:, None]) / np.abs(self.targets)[:, None]
+        return relative_error(self.values(s), self.targets[:, None])
 
 
 def _worst(err: np.ndarray, shared: bool) -> np.ndarray:
@@ -225,7 +226,7 @@ def _reference_errors(surrogates, targets, observables, factors, reference_point
     x_ref = np.array([[float(reference_point[f]) for f in factors]])
     vals = np.stack([np.asarray(surrogates[o].predict(x_ref), dtype=float) for o in observables])[:, 0]
     ref_values = dict(zip(observables, vals.tolist()))
-    return ref_values, {o: (v - targets[o]) / abs(targets[o]) for o, v in ref_values.items()}
+    return ref_values, {o: relative_error(v, targets[o]) for o, v in ref_values.items()}
 
 
 def _bottleneck(problem: _Level2Problem, grid_s, grid_err, tolerance: float, feasible: bool):

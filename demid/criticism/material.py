@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
+from ..formulas import relative_error
 from ..plots.criticism import residual_figure
 from ..sampling import evaluate_set, uses_grid
 from ..sampling.evaluate import uses_exact
@@ -100,7 +101,7 @@ def reference_point_position(surrogates: dict, material, n: int,
     rows = []
     for scen in spec.scenarios:
         name, obs = scen.name, scen.observables
-        errors = {o: float((surrogates[o].predict(point)[0] - targets[o]) / abs(targets[o])) for o in obs}
+        errors = {o: float(relative_error(surrogates[o].predict(point)[0], targets[o])) for o in obs}
         inside = max(abs(e) for e in errors.values()) <= scen.tolerance
         aset = scenario_sets(scen)
         nearest, distance = None, None

@@ -112,6 +112,8 @@ class _Data:
     log_factors: tuple[str, ...]
     base_terms: list[Term]
     drift_tested: bool = True  # False when the run column is not the performed order (criticism.run_order)
+    # per run, the response error the factors' printed precision adds (SurrogateFit.factor_round_off)
+    factor_round_off: np.ndarray | None = None
 
     @property
     def n(self) -> int:
@@ -200,6 +202,17 @@ class _Model:
         self.rank = int(_orth(self.xw).shape[1])
         self.df_resid = len(self.y) - self.rank
         self.ssr = float(self.resid_w @ self.resid_w)
+
+    @property
+    def factor_round_off_w(self) -> np.ndarray | None:
+        """The factors' print round-off at the kept runs on the scale of ``resid_w`` (transformed, weighted)."""
+        sd = self.data.factor_round_off
+        if sd is None:
+            return None
+        sd = sd[self.keep]
+        if self.spec.lam is not None:
+            sd = sd * np.abs(self.y) ** (self.spec.lam - 1.0)  # dz/dy of the Box-Cox transform
+        return sd * self.sw
 
     def run_column(self, rows) -> np.ndarray:
         return (self.data.runs[rows].astype(float) - self.run_center) / self.run_scale

@@ -214,7 +214,7 @@ def exact_fit_message(response: str, fit: SurrogateFit) -> str:
     if np.ptp(y) <= round_off_floor(y):
         return (f"{response}: the same value ({_g(float(y[0]))}) in every run — within the design's range no factor "
                 "moves it, so it cannot identify any of them, and there is no scatter to criticise.")
-    if round_off_only(fit.results.resid, y):
+    if round_off_only(fit.results.resid, y, fit.factor_round_off):
         return (f"{response}: the quadratic goes through every run to round-off or to the precision the values "
                 "are printed to (a deterministic simulation of an exactly quadratic response): no defect shows at "
                 "the runs, and with no scatter there is nothing to test against; between the runs the quadratic "

@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..formulas import relative_error
 from .labels import PALETTE, axis_label, tex_label
 from .layout import PAGE_WIDTH_IN
 from .style import plt, styled
@@ -21,7 +22,7 @@ def pareto_figure(grid: pd.DataFrame, front: pd.DataFrame, spec: MaterialSpec, c
     the low-error end where the front's intervals are read."""
     error_of, minimise, max_error = spec.pareto.error_of, spec.pareto.minimise, spec.pareto.max_error
     target, title = spec.targets[error_of], spec.label
-    error = 100 * np.abs(grid[error_of].to_numpy() - target) / abs(target)
+    error = 100 * np.abs(relative_error(grid[error_of].to_numpy(), target))
     objective = grid[minimise].to_numpy()
     rng = np.random.default_rng(0)  # a random subsample avoids the moire of a strided one
     pick = np.sort(rng.choice(len(error), size=min(cloud_points, len(error)), replace=False))

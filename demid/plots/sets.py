@@ -14,6 +14,7 @@ import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch, Rectangle
 
+from ..formulas import relative_error
 from .labels import axis_label, tex_label
 from .layout import panel_grid
 from .style import MAX_PIXELS, plt, SCENARIO_COLORS, _axis_scale, _extent, styled
@@ -96,7 +97,7 @@ def _zoom_mask(surrogates, spec, result, box, pixels: int = ZOOM_PIXELS) -> np.n
     gx, gy = np.meshgrid(xs, ys)
     points = spec.domain.to_actual(np.column_stack([gx.ravel(), gy.ravel()]))
     targets = spec.targets
-    worst = np.max([np.abs(surrogates[o].predict(points) - targets[o]) / abs(targets[o])
+    worst = np.max([np.abs(relative_error(surrogates[o].predict(points), targets[o]))
                     for o in result.observables], axis=0)
     return (worst <= result.tolerance).reshape(pixels, pixels)
 

@@ -32,12 +32,11 @@ def term_block(term: tuple[int, ...]) -> str:
 
 
 def f_survival(f, dfn, dfd) -> np.ndarray:
-    """``scipy.stats.f.sf(f, dfn, dfd)``: its survival function is ``scipy.special.fdtrc`` (1 left of
-    the support), here without importing scipy.stats, a second of the report kernel's start-up."""
-    from scipy.special import fdtrc
+    """``scipy.stats.f.sf(f, dfn, dfd)`` (:func:`demid.formulas.f_tail`, without importing scipy.stats, a
+    second of the report kernel's start-up)."""
+    from ..formulas import f_tail
 
-    with np.errstate(invalid="ignore"):
-        return fdtrc(dfn, dfd, np.maximum(np.asarray(f, dtype=float), 0.0))
+    return f_tail(f, dfn, dfd)
 
 
 class StoredFit:

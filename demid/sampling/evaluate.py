@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..formulas import relative_error
 from .domain import uses_grid
 from .exact import MAX_EXACT_DIM, exact_set, polynomial_from_surrogate
 from .grid import AdmissibleSet, admissible_set
@@ -59,7 +60,7 @@ def relative_errors(surrogates: dict, domain: Domain, observables, targets: dict
     """Signed relative errors (prediction - target) / |target|, one row per observable, at points of the unit
     cube over the search box."""
     x = domain.from_unit(u)
-    return np.stack([(surrogates[o].predict(x) - targets[o]) / abs(targets[o]) for o in observables])
+    return np.stack([relative_error(surrogates[o].predict(x), targets[o]) for o in observables])
 
 
 def start_nodes(domain: Domain) -> np.ndarray:

@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
+from ..formulas import relative_error
 from .residuals import _fields, _residual_evaluator, relative_residuals
 
 if TYPE_CHECKING:
@@ -297,7 +298,7 @@ def admissible_set(surrogates: dict[str, Surrogate], domain: Domain, observables
     step = (hi_u - lo_u) / (n - 1)
 
     def evaluate(x):
-        return np.stack([(surrogates[o].predict(x) - targets[o]) / abs(targets[o]) for o in observables])
+        return np.stack([relative_error(surrogates[o].predict(x), targets[o]) for o in observables])
 
     count = cell_count(resid, eps, domain, step, evaluate, subdivisions or (16 if d <= 2 else 4))
     cell_frac = count.cells
@@ -385,7 +386,7 @@ def fraction_with_error(surrogates: dict[str, Surrogate], domain: Domain, observ
     fields = _fields(surrogates, observables, targets, eps, z, sigma)
     if grid_predictions is None or z > 0:
         grid_predictions = predict_grid(fields, domain, n)
-    resid = np.stack([(grid_predictions[o].to_numpy() - targets[o]) / abs(targets[o])
+    resid = np.stack([relative_error(grid_predictions[o].to_numpy(), targets[o])
                       for o in observables]).reshape((len(observables),) + (n,) * d)
     evaluate = _residual_evaluator(fields, observables, targets)
     s = subdivisions or (16 if d <= 2 else 4)

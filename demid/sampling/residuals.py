@@ -12,6 +12,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..formulas import relative_error
+
 if TYPE_CHECKING:
     from ..surrogate import Surrogate
 
@@ -19,8 +21,7 @@ if TYPE_CHECKING:
 def relative_residuals(predictions: dict[str, np.ndarray], targets: dict[str, float],
                        observables) -> np.ndarray:
     """Array (k, n) of (y_k - y_k*) / |y_k*|."""
-    return np.stack([(np.asarray(predictions[o], dtype=float) - targets[o]) / abs(targets[o])
-                     for o in observables])
+    return np.stack([relative_error(np.asarray(predictions[o], dtype=float), targets[o]) for o in observables])
 
 
 # =========================================================================== robust admissibility
@@ -71,5 +72,5 @@ def _fields(surrogates, observables, targets, tolerance, z, sigma) -> dict:
 
 def _residual_evaluator(fields, observables, targets):
     def evaluate(x):
-        return np.stack([(fields[o].predict(x) - targets[o]) / abs(targets[o]) for o in observables])
+        return np.stack([relative_error(fields[o].predict(x), targets[o]) for o in observables])
     return evaluate

@@ -266,7 +266,9 @@ def _factor_hypotheses(texts: dict, factors: list[str], x_actual: np.ndarray, z:
         precision = _precision_elsewhere(texts[name])
         fixed = (float(coding.center[j]), float(coding.unit[j])) if coding is not None else None
         column_precision = int(np.sort(precision)[len(precision) // 2]) if len(precision) else 0
-        nominal, unit = _design_levels(z[:, j], design_type, alpha, column_precision, fixed)
+        # one axial distance, or one per factor (a design inferred from a table with rounded levels)
+        alpha_j = float(np.broadcast_to(np.asarray(alpha, dtype=float), (len(factors),))[j])
+        nominal, unit = _design_levels(z[:, j], design_type, alpha_j, column_precision, fixed)
         is_log = name in log_factors
         for row in range(len(z)):
             text = texts[name][row]

@@ -13,7 +13,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
-from ..design import LEVERAGE_ONE, model_matrix, nominal_levels, replicate_groups
+from ..design import LEVERAGE_ONE, model_matrix, nominal_levels, replicate_groups, replicate_keys
+from ..formulas import f_tail
 from ..errors import InputError
 from .printed import _jsonable
 
@@ -39,11 +40,7 @@ def _lack_of_fit_p(out: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
     lof_p = np.full(lof_f.shape, np.nan)
     ok = np.isfinite(lof_f)
     if ok.any():
-        # F survival from scipy.special (what scipy.stats.f.sf calls), imported on first use:
-        # scipy.stats costs a second at every start-up and the parse-time typo screen imports this package
-        from scipy.special import fdtrc
-
-        lof_p[ok] = fdtrc(out["_df_lof"][ok], out["_df_pe"][ok], lof_f[ok])
+        lof_p[ok] = f_tail(lof_f[ok], out["_df_lof"][ok], out["_df_pe"][ok])
     out["lof_p"] = lof_p
     return out
 
@@ -153,8 +150,8 @@ def _evaluate_designs(coded: np.ndarray, y: np.ndarray, terms: list[Term], to_ac
     sst = np.full(m, np.sum((y - y.mean()) ** 2))
     with np.errstate(divide="ignore", invalid="ignore"):
         press = np.where(np.all(hat < LEVERAGE_ONE, axis=1), np.sum((resid / (1.0 - hat)) ** 2, axis=1), np.nan)
-    # Replicates: same coded point after rounding to 6 decimals, as demid.design.replicate_groups.
-    keys = np.round(coded, 6)
+    # Replicates: the rule of demid.design.replicate_groups, for a batch of designs at once.
+    keys = replicate_keys(coded)
     same = np.all(keys[:, :, None, :] == keys[:, None, :, :], axis=3)
     size = same.sum(axis=2)
     ss_pe = np.sum((y[None, :] - (same @ y) / size) ** 2, axis=1)

@@ -16,6 +16,7 @@ import pandas as pd
 
 from ..design import parse_term, term_name
 from ..errors import InputError
+from ..formulas import f_tail
 from ..published_values import out_of_range
 
 if TYPE_CHECKING:
@@ -242,14 +243,6 @@ def _f_ratio(ss_a, ss_b, df_a, df_b):
         return np.where((df_a > 0) & (df_b > 0) & (ss_b > 0), (ss_a / df_a) / (ss_b / df_b), np.nan)
 
 
-def _f_tail(f, df_a, df_b):
-    from scipy.special import fdtrc  # scipy.stats.f.sf itself, without importing scipy.stats
-
-    with np.errstate(invalid="ignore"):
-        return np.where((df_a > 0) & (df_b > 0) & np.isfinite(f), fdtrc(np.maximum(df_a, 1), np.maximum(df_b, 1), f),
-                        np.nan)
-
-
 def _adjusted_r2(ss_residual, ss_total, v):
     df, n = v["_df_model_resid"], v["_n"]
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -263,9 +256,9 @@ def _root_mean_square(ss_residual, df):
 
 _FROM_PRINTED = (
     ("lof_f", ("ss_lof", "ss_pure_error"), lambda a, b, v: _f_ratio(a, b, v["_df_lof"], v["_df_pe"]), "interval"),
-    ("lof_p", ("lof_f",), lambda f, v: _f_tail(f, v["_df_lof"], v["_df_pe"]), "interval"),
+    ("lof_p", ("lof_f",), lambda f, v: f_tail(f, v["_df_lof"], v["_df_pe"]), "interval"),
     ("lof_p", ("ss_lof", "ss_pure_error"),
-     lambda a, b, v: _f_tail(_f_ratio(a, b, v["_df_lof"], v["_df_pe"]), v["_df_lof"], v["_df_pe"]), "interval"),
+     lambda a, b, v: f_tail(_f_ratio(a, b, v["_df_lof"], v["_df_pe"]), v["_df_lof"], v["_df_pe"]), "interval"),
     ("r2", ("ss_model", "ss_total"), lambda a, b, v: np.full(np.shape(v["_df_pe"]), a / b if b > 0 else np.nan),
      "interval"),
     ("r2", ("ss_residual", "ss_total"),
