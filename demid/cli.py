@@ -52,7 +52,7 @@ def _unlisted_factor_warnings(path: str, table, factors: list[str], responses: l
     from .data import parse_number, read_raw
 
     header, rows, _ = read_raw(path)
-    known = {"run", "status", *factors, *responses}
+    known = {"run", "status", "block", *factors, *responses}
     points = [tuple(p) for p in np.round(table[factors].to_numpy(dtype=float), 9)]
     try:  # the table is in run order, the file perhaps not: pair each run with its own row
         row_of = {int(parse_number(r[header.index("run")])): r for r in rows}

@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from .blocks import BLOCK_COLUMN, label_text
 from .design import (Coding, box_behnken_points, ccd_points, classify_points, model_matrix, model_units,
                      nominal_levels, quadratic_terms, rotatable_alpha, snap_to_levels, term_name)
 from .errors import InputError
@@ -140,6 +141,14 @@ def parse_number(cell: str) -> float:
         raise ValueError(f"found '{cell.strip()}', expected a number") from None
 
 
+def _is_number(text: str) -> bool:
+    try:
+        parse_number(text)
+    except ValueError:
+        return False
+    return True
+
+
 def read_table(path: Path | str, factors: list[str], responses: list[str],
                status_column: str = "status") -> tuple[pd.DataFrame, list[str]]:
     """Parse a design table into floats.  Returns (table, warnings).
@@ -226,6 +235,12 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
             warnings.append(f"{src}, run {run}: marked '{status}' in column '{status_column}'; its missing "
                             f"responses are excluded from the fits")
         rec["status"] = "failed" if failed else "ok"
+        if BLOCK_COLUMN in idx:  # runs made in blocks (demid.blocks): the label as written
+            label = row[idx[BLOCK_COLUMN]].strip()
+            if not label:
+                raise InputError("empty block label; give every run its block (any label, e.g. 1 and 2)",
+                                 source=src, run=run, column=BLOCK_COLUMN)
+            rec[BLOCK_COLUMN] = label_text(parse_number(label)) if _is_number(label) else label
         records.append(rec)
     if not records:
         raise InputError("the table has a header but no runs", source=src)
@@ -784,7 +799,7 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
     responses = list(mat_cfg["responses"])
     log_factors = as_spec(mat_cfg, material).log_factors
     table, warnings = read_table(path, factors, responses, mat_cfg.get("status_column", "status"))
-    table = table[["run"] + factors + responses + ["status"]]
+    table = table[["run"] + factors + responses + ["status"] + [c for c in (BLOCK_COLUMN,) if c in table.columns]]
     for f in log_factors:
         bad = table[table[f] <= 0]
         if len(bad):

@@ -14,6 +14,7 @@ import numpy as np
 import pandas as pd
 from scipy import optimize, stats
 
+from ..blocks import block_columns
 from ..design import Coding, model_matrix, model_units, quadratic_terms, term_name
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
@@ -29,6 +30,10 @@ if TYPE_CHECKING:
     from ..surrogate import SurrogateFit
     from .catalogue import _Hypothesis
     from .models import ExtendedSurrogate
+
+
+#: Causes that describe the run order: a linear drift or a step between two groups of runs.
+RUN_ORDER_CAUSES = ("drift", "step")
 
 
 # =========================================================================== findings
@@ -160,8 +165,9 @@ def _prepare(table: pd.DataFrame, factors: list[str], response: str, alpha: floa
     coding = fit.coding
     sub = table.loc[ok]
     runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, int(ok.sum()) + 1)
+    blocks = None if fit.blocks is None else block_columns(fit.blocks, fit.block_levels)
     data = _Data(response, list(factors), fit.coded, fit.y, runs, coding, float(alpha),
-                 tuple(log_factors), quadratic_terms(len(factors)))
+                 tuple(log_factors), quadratic_terms(len(factors)), blocks=blocks, block_labels=fit.blocks)
     return data, fit
 
 
@@ -173,6 +179,8 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
         return replace(spec, extra_terms=spec.extra_terms + (h.detail.terms[0],)), info
     if h.cause == "drift":
         return replace(spec, drift=True), info
+    if h.cause == "step":
+        return replace(spec, step=int(h.detail)), info
     if h.cause == "factor_level":
         c = h.detail
         row = model.coded[int(np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0])].copy()
@@ -211,7 +219,10 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
         return replace(spec, lam=float(lam)), info
     if h.cause == "heteroscedasticity":
         if h.detail == "fitted":  # excluded runs: their predicted value, same scaling
-            fz_all = model_matrix(data.coded, model.mean_terms) @ model.beta[:len(model.mean_terms)]
+            k = len(model.mean_terms)
+            fz_all = model_matrix(data.coded, model.mean_terms) @ model.beta[:k]
+            if data.blocks is not None:
+                fz_all = fz_all + data.blocks @ model.beta[k:k + data.blocks.shape[1]]
             fz = model.fitted_z
             values = (fz_all - (fz.max() + fz.min()) / 2) / (np.ptp(fz) / 2)
         else:
@@ -384,6 +395,12 @@ def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tupl
         rivals = [i for i, alt in enumerate(fitted_alternatives)
                   if alt[0].cause in ("heteroscedasticity", "outlier")]
         best = max(rivals, key=lambda i: (round(fitted_alternatives[i][3].loglik, 9), -i))
+    if fitted_alternatives[best][0].cause in RUN_ORDER_CAUSES:
+        # a trend or a step in run order: the better-fitting extension decides, the step paying one unit of
+        # log-likelihood for its change-point (chosen among many, AIC's price of a parameter)
+        rivals = [i for i, alt in enumerate(fitted_alternatives) if alt[0].cause in RUN_ORDER_CAUSES]
+        best = max(rivals, key=lambda i: (round(fitted_alternatives[i][3].loglik
+                                                - (fitted_alternatives[i][0].cause == "step"), 9), -i))
     return _with_alternatives(data, fitted_alternatives, best)
 
 
@@ -403,6 +420,9 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
         info["lam"] = spec.lam
     if h.cause == "drift":
         info["drift_per_run"] = _drift_per_run(new)
+    if h.cause == "step":
+        info["step_size"] = _step_size(new)
+        info["runs_before"] = int(np.sum(data.runs.astype(float) < float(data.runs[int(h.detail)])))
     same = new.predictable & model.predictable
     before = model.loo_rmse_on(same)
     after = new.loo_rmse_on(same)
@@ -417,7 +437,8 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
                     + ".")
     detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
     public_info = {k: v for k, v in info.items() if k in ("lambda_hat", "lambda_ci", "sd_ratio",
-                                                          "drift_per_run", "observed", "predicted_without",
+                                                          "drift_per_run", "step_size", "runs_before",
+                                                          "observed", "predicted_without",
                                                           "factor", "recorded_value", "fitting_value", "slip",
                                                           "t_moved", "t_recorded", "bayes_factor")}
     if alternatives:
@@ -460,6 +481,11 @@ def _gain(table: pd.DataFrame, factors: list[str], response: str, data: _Data, f
     return baseline, extended, gain
 
 
+def _step_size(model: _Model) -> float:
+    """The shift of the runs after the step against those before (response units, or the transform's)."""
+    return float(model.beta[model.names.index("step")])
+
+
 def _drift_per_run(model: _Model) -> float:
     j = model.names.index("run")
     return float(model.beta[j] / model.run_scale)
@@ -472,7 +498,7 @@ def _detail_json(data: _Data, h: _Hypothesis):
         return _run_value(data.runs[h.detail.row])
     if h.cause == "lack_of_fit":
         return ""
-    if h.cause == "outlier":
+    if h.cause in ("outlier", "step"):
         return _run_value(data.runs[int(h.detail)])
     if h.cause == "response_transform":
         return "boxcox"

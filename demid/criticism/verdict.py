@@ -84,7 +84,8 @@ POWER = 0.8
 
 _TEST_WORDS = {"lack_of_fit": "lack of fit against the replicated runs", "missing_term": "missing term",
                "response_transform": "response transform", "outlier": "outlying run", "drift": "run-order drift",
-               "heteroscedasticity": "unequal scatter with", "factor_level": "run fitting another factor level"}
+               "heteroscedasticity": "unequal scatter with", "factor_level": "run fitting another factor level",
+               "step": "step in run order"}
 
 
 def _plain(x: float) -> str:
@@ -95,7 +96,7 @@ def _plain(x: float) -> str:
 def _entry_text(e: dict) -> str:
     words = _TEST_WORDS.get(e["cause"], e["cause"])
     detail = e.get("detail")
-    if e["cause"] in ("outlier", "factor_level") and detail not in (None, ""):
+    if e["cause"] in ("outlier", "factor_level", "step") and detail not in (None, ""):
         words += f" (run {detail})"
     elif detail not in (None, "", "boxcox", "run"):
         words += f" {detail}"
