@@ -18,7 +18,8 @@ from ..blocks import block_columns
 from ..design import Coding, model_matrix, model_units, quadratic_terms, term_name
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
-from .catalogue import _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
+from .discrimination import candidate_label, close_candidates, discriminating_runs
+from .catalogue import CAUSES, _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, rests_on_one_run,
                       strongest_rival, unexplained_evidence, verdict_of)
 from .messages import _CAUSE_WORDS, _message, corner_only_runs
@@ -90,6 +91,8 @@ class CriticismResult:
     _extended_model: _Model = field(repr=False, default=None)
     _baseline_model: _Model = field(repr=False, default=None)
     run_order: RunOrder | None = None
+    candidates: list[dict] = field(default_factory=list)  # causes the runs cannot tell apart (discrimination)
+    discriminating_runs: list[dict] = field(default_factory=list)
 
     def to_json(self) -> dict:
         """JSON-ready dict: response, baseline, findings, extended, gain (+ alias sets, catalogue, summary)."""
@@ -110,6 +113,9 @@ class CriticismResult:
         }
         if self.run_order is not None:
             out["run_order"] = self.run_order.to_json()
+        if self.candidates:
+            out["candidates"] = self.candidates
+            out["discriminating_runs"] = self.discriminating_runs
         return out
 
     def _runs_json(self) -> list[dict]:
@@ -130,6 +136,12 @@ class CriticismResult:
                  "aliases": ";".join(f.aliases), "p_value": f.p_value,
                  "loo_rmse_baseline": f.loo_rmse_baseline, "loo_rmse_extended": f.loo_rmse_extended,
                  "delta_aicc": f.delta_aicc, "message": f.message, "verdict": self.verdict} for f in self.findings]
+        if self.candidates and not self.findings:
+            rows.append({"response": self.response, "cause": "ambiguous",
+                         "detail": ";".join(f"{c['cause']} ({c['detail']})" for c in self.candidates), "aliases": "",
+                         "p_value": None, "loo_rmse_baseline": self.baseline.get("loo_rmse"),
+                         "loo_rmse_extended": self.baseline.get("loo_rmse"), "delta_aicc": 0.0,
+                         "message": self.verdict_message, "verdict": self.verdict})
         if self.unexplained:
             u = self.unexplained
             rows.append({"response": self.response, "cause": "unexplained", "detail": u["detail"], "aliases": "",
@@ -296,18 +308,25 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     findings, model, unexplained, naming = _honest_causes(data, response, findings, model, base_model, first_round,
                                                           last_round, not_singled_out, family_alpha)
 
+    candidates, runs = _ambiguity(data, base_model, first_round, findings, not_singled_out, family_alpha)
+    if candidates:  # the runs cannot tell these causes apart: none of them is named
+        findings, model, unexplained = [], base_model, None
     baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
     summary = _summary(data, findings, catalogue, family_alpha, gain, exact_fit_message(response, fit))
     if unexplained:
         summary = unexplained["message"]
     if not run_order.drift_tested:
         summary += " " + run_order.message
-    verdict, verdict_detail = verdict_of(data, fit, findings, unexplained, catalogue, family_alpha)
+    verdict, verdict_detail = verdict_of(data, fit, findings, unexplained, catalogue, family_alpha,
+                                         candidates, runs)
+    if candidates:
+        summary = verdict_detail["message"]
     return CriticismResult(response=response, factors=list(factors), baseline=baseline, findings=findings,
                            extended=extended, gain=gain, alias_sets=alias_sets, catalogue=catalogue,
                            summary=summary, family_alpha=family_alpha, unexplained=unexplained, verdict=verdict,
                            verdict_detail=verdict_detail, naming=naming, residuals=_residual_frame(fit),
-                           _extended_model=model, _baseline_model=base_model, run_order=run_order)
+                           _extended_model=model, _baseline_model=base_model, run_order=run_order,
+                           candidates=candidates, discriminating_runs=runs)
 
 
 def _honest_causes(data: _Data, response: str, findings: list, model: _Model, base_model: _Model, first_round,
@@ -343,6 +362,40 @@ def _honest_causes(data: _Data, response: str, findings: list, model: _Model, ba
                 candidate=not_singled_out if not findings else None)
             findings, model = [], base_model
     return findings, model, unexplained, naming
+
+
+def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not_singled_out: dict | None,
+               family_alpha: float) -> tuple[list[dict], list[dict]]:
+    """(candidates, discriminating runs) when the first cause named, or the candidate not singled out for
+    a rival of another kind, explains the misfit about as well as another rejected cause (their
+    extensions' AICc within discrimination.AMBIGUOUS_AICC); ([], []) otherwise."""
+    if first_round is None or not (findings or (not_singled_out and "rival" in not_singled_out)):
+        return [], []
+    if not_singled_out and not findings and not_singled_out["rival"]["cause"] not in CAUSES:
+        return [], []
+    entries = []
+    for h in first_round.rejected(family_alpha):
+        spec, info = _apply(data, base_model, h)
+        mo = _Model(data, spec)
+        detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
+        # a step's change-point is chosen among many: priced as a parameter, as in _name_cause
+        aicc = mo.aicc + 2.0 * (h.cause == "step")
+        entries.append({"cause": h.cause, "detail": detail, "aicc": aicc, "model": mo})
+    close = close_candidates(entries)
+    first = (findings[0].cause, findings[0].detail) if findings else \
+        (not_singled_out["cause"], not_singled_out["detail"])
+    if len(close) < 2 or not any((c["cause"], c["detail"]) == first for c in close):
+        return [], []
+    if not findings:
+        rival = not_singled_out["rival"]
+        if not any((c["cause"], c["detail"]) == (rival["cause"], rival["detail"]) for c in close):
+            return [], []
+    base_aicc = base_model.aicc
+    candidates = [{"cause": c["cause"], "detail": c["detail"], "gain": _num(base_aicc - c["aicc"]),
+                   "delta_aicc": _num(c["aicc"] - close[0]["aicc"])} for c in close]
+    runs = discriminating_runs(data, [c["model"] for c in close], [candidate_label(c["cause"], c["detail"])
+                                                                   for c in close])
+    return candidates, runs
 
 
 def _not_singled_out(data: _Data, model: _Model, h: _Hypothesis, hypotheses: list[_Hypothesis]) -> dict | None:

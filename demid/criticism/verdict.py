@@ -27,7 +27,7 @@ if TYPE_CHECKING:
     from .catalogue import _Hypothesis
     from .models import _Data, _Model
 
-VERDICTS = ("adequate", "defect", "unexplained", "does_not_predict")
+VERDICTS = ("adequate", "defect", "unexplained", "does_not_predict", "ambiguous")
 
 #: After the named extensions, a family member still rejected at this fraction of the family level
 #: means misfit the named causes do not explain (1 % for the default 5 %: a correct extension then
@@ -54,7 +54,7 @@ SLIP_BAYES_FACTOR = 1.0
 #: Outliers and slipped runs of the same run are not rivals.
 OVERWHELMING_P = 1e-4
 
-_RIVAL_KIND = {"outlier": "one run", "factor_level": "one run"}
+_RIVAL_KIND = {"outlier": "one run", "factor_level": "one run", "drift": "run order", "step": "run order"}
 
 #: Not used as a rule either: setting a stronger rival aside when the named cause's extension silences it
 #: (nominal p >= 0.05 on the extended model) while the rival's own extension leaves the named cause's test
@@ -161,6 +161,22 @@ def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], re
             "tried": tried, "remaining": remaining, "candidate": candidate, "message": text}
 
 
+def ambiguous_message(response: str, candidates: list[dict], runs: list[dict]) -> str:
+    """Why no cause is named when several explain the misfit about equally, and the runs that would decide."""
+    names = [_entry_text({"cause": c["cause"], "detail": c["detail"]}) for c in candidates]
+    spread = max(c["delta_aicc"] or 0.0 for c in candidates)
+    text = (f"{response}: ambiguous — {' and '.join(names) if len(names) == 2 else ', '.join(names)} explain the "
+            f"misfit about equally (their extensions' AICc lie within {spread:.1f} of each other, less than 2: the "
+            f"runs give no real preference), so none of them is named. With these runs they predict the runs "
+            f"made so far alike and differ only where no run was made.")
+    if runs:
+        points = "; ".join("(" + ", ".join(f"{k}={v:g}" for k, v in r.items()
+                                           if k not in ("purpose", "expected", "separation")) + ")" for r in runs)
+        text += (f" {len(runs)} more run{'s' if len(runs) > 1 else ''} made after these, at {points}, would decide: "
+                 f"there the candidates' predictions differ most relative to their prediction error.")
+    return text
+
+
 def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power: float = POWER) -> float | None:
     """Size, in residual standard deviations, of a one-degree-of-freedom departure (a shifted run, an
     omitted term's contribution) that the family finds with probability ``power``.
@@ -235,9 +251,15 @@ def unpredictable_runs_message(fit: SurrogateFit) -> str:
 
 
 def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
-               family_alpha: float) -> tuple[str, dict]:
+               family_alpha: float, candidates: list[dict] = (), runs: list[dict] = ()) -> tuple[str, dict]:
     """The verdict and what supports it (numbers for the JSON, a message for the report)."""
     verdict, detail = _verdict(data, fit, findings, unexplained, catalogue, family_alpha)
+    if candidates:
+        text = ambiguous_message(data.response, list(candidates), list(runs))
+        if verdict == "does_not_predict":
+            detail["message"] += " " + text
+        else:
+            verdict, detail["message"] = "ambiguous", text
     lone = unpredictable_runs_message(fit)
     if lone:
         detail["unpredictable_runs"] = [int(r) for r in np.asarray(fit.runs)[fit.fitted_exactly]]
