@@ -791,6 +791,21 @@ def _confounded_terms(null_space: np.ndarray, terms, coded: np.ndarray, factors:
     return text
 
 
+def _block_notes(table: pd.DataFrame, factors: list[str], coding: Coding, log_factors, src: str) -> list[str]:
+    """How the runs' blocks sit in the design (demid.blocks): a block term that cannot be estimated stops;
+    a block without centre runs and non-orthogonal blocking are said."""
+    from .blocks import block_labels, check_blocks
+
+    labels = block_labels(table)
+    if labels is None:
+        return []
+    coded = coding.to_coded(model_units(table[factors].to_numpy(), factors, log_factors))
+    check = check_blocks(coded, labels, model_matrix(coded, quadratic_terms(len(factors))))
+    if check.problems:
+        raise InputError(check.problems[0], source=src, column=BLOCK_COLUMN)
+    return [f"{src}, column '{BLOCK_COLUMN}': {note}" for note in check.notes]
+
+
 def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") -> ValidatedTable:
     """Read a material's table and run every transcription check; raises InputError."""
     src = str(Path(mat_cfg["data"]))
@@ -814,6 +829,7 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
             raise InputError(f"only {int(ok.sum())} usable runs for a quadratic model with {p} coefficients; "
                              f"at least {p + 1} are needed", source=src, column=r)
     coding, types = check_design(table, factors, mat_cfg["design"], src, f"materials.{material}", log_factors)
+    warnings.extend(_block_notes(table, factors, coding, log_factors, src))
     coded = coding.to_coded(model_units(table[factors].to_numpy(), factors, log_factors))
     levels = nominal_levels(mat_cfg["design"]["type"], float(mat_cfg["design"].get("alpha", 1.0)))
     if len(levels):

@@ -295,7 +295,8 @@ class _Round:
         best = int(np.argmax(f_obs))
         n_points = len(starts)
         h = _Hypothesis("step", starts[best], [], float(f_obs[best]),
-                        float(min(0.0, math.log(n_points) + _f_logp(f_obs[best], df - 1))))
+                        float(min(0.0, math.log(n_points) + _f_logp(f_obs[best], df - 1))),
+                        info={"change_points": n_points})
         f_null = _added_variable_stats_many(e_null, directions, df - 1).max(axis=0)
         h.null_logp = np.minimum(0.0, math.log(n_points) + _f_logp(f_null, df - 1))
         self.hypotheses.append(h)

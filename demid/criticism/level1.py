@@ -7,6 +7,7 @@ again on the extended model, reporting leave-one-out and AICc gains.
 from __future__ import annotations
 
 import json
+import math
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
@@ -15,11 +16,11 @@ import pandas as pd
 from scipy import optimize, stats
 
 from ..blocks import block_columns
-from ..design import Coding, model_matrix, model_units, quadratic_terms, term_name
+from ..design import LEVERAGE_UNPREDICTABLE, Coding, model_matrix, model_units, quadratic_terms, term_name
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .discrimination import candidate_label, close_candidates, discriminating_runs
-from .catalogue import CAUSES, _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
+from .catalogue import CAUSES, slip_candidates, _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, rests_on_one_run,
                       strongest_rival, unexplained_evidence, verdict_of)
 from .messages import _CAUSE_WORDS, _message, corner_only_runs
@@ -141,7 +142,9 @@ class CriticismResult:
                          "detail": ";".join(f"{c['cause']} ({c['detail']})" for c in self.candidates), "aliases": "",
                          "p_value": None, "loo_rmse_baseline": self.baseline.get("loo_rmse"),
                          "loo_rmse_extended": self.baseline.get("loo_rmse"), "delta_aicc": 0.0,
-                         "message": self.verdict_message, "verdict": self.verdict})
+                         "message": self.verdict_message, "verdict": self.verdict,
+                         "discriminating_runs": json.dumps(self.discriminating_runs)})
+            cols = cols + ["discriminating_runs"]  # read by the next wave (next_wave.deciding_runs)
         if self.unexplained:
             u = self.unexplained
             rows.append({"response": self.response, "cause": "unexplained", "detail": u["detail"], "aliases": "",
@@ -374,12 +377,13 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not
     if not_singled_out and not findings and not_singled_out["rival"]["cause"] not in CAUSES:
         return [], []
     entries = []
+    choices = _choices(first_round)
     for h in first_round.rejected(family_alpha):
         spec, info = _apply(data, base_model, h)
         mo = _Model(data, spec)
         detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
-        # a step's change-point is chosen among many: priced as a parameter, as in _name_cause
-        aicc = mo.aicc + 2.0 * (h.cause == "step")
+        # each cause pays for the place it was chosen from (a run, a change-point, a term, a covariate)
+        aicc = mo.aicc + 2.0 * math.log(choices.get(h.cause, 1))
         entries.append({"cause": h.cause, "detail": detail, "aicc": aicc, "model": mo})
     close = close_candidates(entries)
     first = (findings[0].cause, findings[0].detail) if findings else \
@@ -449,11 +453,11 @@ def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tupl
                   if alt[0].cause in ("heteroscedasticity", "outlier")]
         best = max(rivals, key=lambda i: (round(fitted_alternatives[i][3].loglik, 9), -i))
     if fitted_alternatives[best][0].cause in RUN_ORDER_CAUSES:
-        # a trend or a step in run order: the better-fitting extension decides, the step paying one unit of
-        # log-likelihood for its change-point (chosen among many, AIC's price of a parameter)
+        # a trend or a step in run order: the better-fitting extension decides, the step paying for its
+        # change-point (step_price)
         rivals = [i for i, alt in enumerate(fitted_alternatives) if alt[0].cause in RUN_ORDER_CAUSES]
         best = max(rivals, key=lambda i: (round(fitted_alternatives[i][3].loglik
-                                                - (fitted_alternatives[i][0].cause == "step"), 9), -i))
+                                                - step_price(fitted_alternatives[i][0]), 9), -i))
     return _with_alternatives(data, fitted_alternatives, best)
 
 
@@ -532,6 +536,32 @@ def _gain(table: pd.DataFrame, factors: list[str], response: str, data: _Data, f
     if not found:
         gain["loo_rmse_ratio"] = 1.0
     return baseline, extended, gain
+
+
+def _choices(rnd) -> dict[str, int]:
+    """How many places each cause of a round chose its best from: runs for an outlier, change-points for a
+    step, alias classes for a missing term, covariates for unequal scatter, candidate slips for a factor
+    level (1 for drift and a transform, which choose nothing).  Comparing causes, each pays log of it in
+    log-likelihood (a Bonferroni price, as the step's test and step_price): an outlier picked as the worst
+    of 13 runs is not preferred to a step picked among 9 change-points for the picking alone."""
+    out: dict[str, int] = {}
+    for h in rnd.hypotheses:
+        if h.cause in ("missing_term", "heteroscedasticity"):
+            out[h.cause] = out.get(h.cause, 0) + 1
+    out["outlier"] = int(np.sum(rnd.model.hat < LEVERAGE_UNPREDICTABLE))
+    step = [h for h in rnd.hypotheses if h.cause == "step"]
+    if step:
+        out["step"] = int(step[0].info.get("change_points", 1))
+    out["factor_level"] = max(len(slip_candidates(rnd.data, rnd.model)), 1)
+    return out
+
+
+def step_price(h: _Hypothesis) -> float:
+    """Log-likelihood a step pays for its change-point, chosen as the best of C positions: log C, the
+    Bonferroni price its test pays too (a linear drift is then not read as a step at a dozen runs; in
+    tests/test_criticism.py a 14-SD drift over 13 runs fits a step at run 9 better by 1.9).  0 for other
+    causes."""
+    return math.log(h.info.get("change_points", 1)) if h.cause == "step" else 0.0
 
 
 def _step_size(model: _Model) -> float:
