@@ -123,14 +123,18 @@ class Truth:
 
 def verdict_of(result, truth: Truth) -> dict:
     named = [(f.cause, f.detail, list(f.aliases)) for f in result.findings[:1]]
+    candidates = getattr(result, "candidates", [])  # (absent before ambiguous verdicts existed)
     out = {"verdict": result.verdict, "named": False, "ambiguous_true": False, "wrong": False,
-           "alarm": result.verdict not in ("adequate",)}
+           "wrong_cause": False, "alarm": result.verdict not in ("adequate",)}
     if named:
         cause, detail, aliases = named[0]
         out["named"] = truth.right(cause, detail, aliases)
         out["wrong"] = not out["named"]
-    elif result.candidates:
-        inside = any(truth.right(c["cause"], c["detail"], [c["detail"]]) for c in result.candidates)
+        out["wrong_cause"] = truth.kind not in CAUSE_OF or cause != CAUSE_OF[truth.kind]
+    elif candidates:
+        inside = any(truth.right(c["cause"], c["detail"], [c["detail"]]) for c in candidates)
+        out["wrong_cause"] = not any(truth.kind in CAUSE_OF and c["cause"] == CAUSE_OF[truth.kind]
+                                     for c in candidates)
         out["ambiguous_true"] = inside
         out["wrong"] = not inside
     return out
@@ -151,10 +155,11 @@ def one_table(seed: int, k: int, kind: str, size: float, n_null: int) -> dict:
     row = {"k": k, "kind": kind, "size": size, "seed": seed, **{f"first_{a}": b for a, b in
                                                                  verdict_of(first, truth).items()}}
     row["lof"] = bool(fit_response(truth.table, factors, "y").statistics().lof_p < 0.05)
-    row["n_runs"] = len(first.discriminating_runs)
-    needs = kind in CAUSE_OF and (bool(first.candidates) or row["first_wrong"])
+    runs = getattr(first, "discriminating_runs", [])
+    row["n_runs"] = len(runs)
+    needs = kind in CAUSE_OF and (bool(runs) or row["first_wrong"])
     row["needs"] = needs
-    if needs and first.discriminating_runs:
+    if needs and runs:
         proposed = truth.coding.to_coded(np.array([[r[f] for f in factors] for r in first.discriminating_runs]))
         after = criticize(truth.augmented(proposed), factors, "y", alpha=truth.alpha, n_null=n_null)
         row.update({f"after_{a}": b for a, b in verdict_of(after, truth).items()})
@@ -186,6 +191,7 @@ def main(argv=None) -> None:
     cells = frame.groupby(["k", "kind", "size"], sort=False)
     table = cells.agg(reps=("seed", "size"), first_named=("first_named", "mean"),
                       first_ambiguous=("first_ambiguous_true", "mean"), first_wrong=("first_wrong", "mean"),
+                      wrong_cause=("first_wrong_cause", "mean"),
                       alarm=("first_alarm", "mean"), lof=("lof", "mean"), needs=("needs", "sum")).reset_index()
     needs = frame[frame["needs"]]
     if len(needs):
@@ -199,7 +205,8 @@ def main(argv=None) -> None:
     off = frame[frame["kind"].isin(OFF)]
     clean = frame[frame["kind"] == "clean"]
     print(f"\ncatalogue: first named {cat['first_named'].mean():.3f}, ambiguous with the truth "
-          f"{cat['first_ambiguous_true'].mean():.3f}, strict wrong {cat['first_wrong'].mean():.3f}")
+          f"{cat['first_ambiguous_true'].mean():.3f}, strict wrong {cat['first_wrong'].mean():.3f} (wrong cause, "
+          f"any detail: {cat['first_wrong_cause'].mean():.3f})")
     print(f"off-catalogue: wrong (named or ambiguous) {off['first_wrong'].mean():.3f}, detect "
           f"{off['first_alarm'].mean():.3f}, lof {off['lof'].mean():.3f}")
     print(f"all defects: detect {frame[frame['kind'] != 'clean']['first_alarm'].mean():.3f}, lof "

@@ -158,3 +158,62 @@ def test_outlier_against_a_batch_gives_ambiguous_and_runs_that_decide():
         assert not [f for f in again.findings if f.cause == "step"], (seed, again.verdict_message)
         assert not any(c["cause"] == "step" for c in again.candidates), (seed, again.candidates)
     assert found >= 1
+
+
+def test_fit_command_reports_block_effects_and_a_blocks_row(tmp_path):
+    import json
+    import os
+    import subprocess
+    import sys
+
+    table, _ = _block_shift_table(11, 6.0, 2)
+    path = tmp_path / "blocked.csv"
+    table.to_csv(path, index=False)
+    out = tmp_path / "fit.json"
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(p) for p in sys.path if p])}
+    proc = subprocess.run([sys.executable, "-m", "demid", "fit", "--data", str(path), "--factors", "mu_r,gamma",
+                           "--responses", "y", "--out", str(out)], capture_output=True, text=True, env=env)
+    assert proc.returncode == 0, proc.stderr
+    fit = json.loads(out.read_text())["y"]
+    assert set(fit["block_effects"]) == {"wave 1", "wave 2"}
+    direct = fit_response(table, FACTORS[2], "y").block_effects()
+    assert fit["block_effects"]["wave 2"] == pytest.approx(direct["wave 2"][0], rel=1e-6, abs=1e-9)
+    assert fit["anova"][0]["source"] == "Blocks"
+    assert "blocking" in proc.stderr  # orthogonal or not, said
+
+
+def test_ambiguous_runs_reach_the_next_wave_first():
+    from demid.next_wave import PURPOSE_DECIDE, deciding_runs
+
+    for seed in range(12):
+        table, _ = off_catalogue_table(seed, 2, "batch", 6.0)
+        result = criticize(table, FACTORS[2], "y", n_null=499)
+        if result.verdict == "ambiguous":
+            break
+    else:
+        pytest.fail("no ambiguous table among the seeds")
+    frame = result.to_frame()
+    assert frame["cause"].tolist() == ["ambiguous"]
+    runs = deciding_runs(frame, FACTORS[2])
+    assert [{f: r[f] for f in FACTORS[2]} for r in runs] == \
+        [{f: r[f] for f in FACTORS[2]} for r in result.discriminating_runs]
+    assert PURPOSE_DECIDE == "decide between causes"
+
+
+def test_plan_next_wave_lists_the_deciding_runs_first():
+    import json
+
+    from demid.next_wave import PURPOSE_DECIDE, plan_next_wave
+    from tests.test_next_wave import _annulus_material
+
+    table, surrogates, cfg, robust = _annulus_material(count=5)
+    deciding = [{"a": 0.25, "b": 0.75, "purpose": PURPOSE_DECIDE}, {"a": 0.5, "b": 0.5, "purpose": PURPOSE_DECIDE}]
+    findings = pd.DataFrame([{"response": "y", "cause": "ambiguous", "detail": "outlier (3);step (9)",
+                              "aliases": "", "discriminating_runs": json.dumps(deciding)}])
+    plain = plan_next_wave("m", table, surrogates, cfg, robust, None, z=2.0)
+    wave = plan_next_wave("m", table, surrogates, cfg, robust, findings, z=2.0)
+    assert len(wave.runs) == len(plain.runs) + 2
+    assert wave.runs["purpose"].tolist()[:2] == [PURPOSE_DECIDE] * 2
+    assert wave.runs[["a", "b"]].to_numpy()[:2].tolist() == [[0.25, 0.75], [0.5, 0.5]]
+    assert wave.runs["purpose"].tolist()[2:] == plain.runs["purpose"].tolist()
+    assert "decide between causes" in wave.reason
