@@ -20,6 +20,10 @@ BLOCK_COLUMN = "block"
 #: Coded values closer to 0 than this are on a factor's centre level.
 _ZERO = 1e-6
 
+#: Blocking counts as orthogonal when no block column correlates with a model term by more than this: the
+#: levels of printed tables are rounded (alpha 1.414 for sqrt 2 leaves correlations of about 1e-4).
+ORTHOGONAL_CORRELATION = 0.01
+
 
 def block_labels(table) -> np.ndarray | None:
     """The table's block labels as strings (None without a ``block`` column or with a single block)."""
@@ -128,10 +132,10 @@ def check_blocks(coded: np.ndarray, labels, model_columns: np.ndarray) -> BlockC
         corr = (tc.T @ bc) / np.outer(np.linalg.norm(tc, axis=0), np.linalg.norm(bc, axis=0))
     corr = np.nan_to_num(corr)
     worst = float(np.max(np.abs(corr))) if corr.size else 0.0
-    orthogonal = worst < 1e-6
+    orthogonal = worst < ORTHOGONAL_CORRELATION
     notes.append("blocking is orthogonal: the block effects leave the quadratic's coefficients unchanged"
                  if orthogonal else
-                 f"blocking is not orthogonal (largest correlation of a block with a model term {worst:.2f}): the "
+                 f"blocking is not orthogonal (largest correlation of a block with a model term {worst:.3f}): the "
                  "quadratic's coefficients are estimated adjusted for the blocks")
     return BlockCheck(tuple(levels), runs, centres, orthogonal, worst, tuple(problems), tuple(notes))
 

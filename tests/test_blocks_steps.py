@@ -217,3 +217,43 @@ def test_plan_next_wave_lists_the_deciding_runs_first():
     assert wave.runs[["a", "b"]].to_numpy()[:2].tolist() == [[0.25, 0.75], [0.5, 0.5]]
     assert wave.runs["purpose"].tolist()[2:] == plain.runs["purpose"].tolist()
     assert "decide between causes" in wave.reason
+
+
+BLOCKED_CCD = """run,x1,x2,block,y
+1,-1,-1,1,80.5
+2,1,-1,1,81.5
+3,-1,1,1,82.0
+4,1,1,1,83.5
+5,0,0,1,83.9
+6,0,0,1,84.3
+7,0,0,1,84.0
+8,0,0,2,79.7
+9,0,0,2,79.8
+10,0,0,2,79.5
+11,1.414,0,2,78.4
+12,-1.414,0,2,75.6
+13,0,1.414,2,78.5
+14,0,-1.414,2,77.0
+"""
+
+
+def test_a_printed_two_block_ccd(tmp_path):
+    """A 2-factor CCD run in two blocks (factorial runs and axial runs, three centre runs each; the second
+    block about 4.5 lower), rows in the order printed: without its block column the shift is a step at the
+    first run of block 2; with it, the blocks are (to the printed alpha) orthogonal and nothing is left."""
+    from io import StringIO
+
+    table = pd.read_csv(StringIO(BLOCKED_CCD))
+    table["block"] = table["block"].astype(str)
+    plain = criticize(table.drop(columns="block"), ["x1", "x2"], "y", n_null=499)
+    named = [f for f in plain.findings] or []
+    assert named and named[0].cause == "step" and named[0].detail == 8, plain.verdict_message
+    fit = fit_response(table, ["x1", "x2"], "y", alpha=1.414)
+    effects = fit.block_effects()
+    # effect coding: the blocks' difference is twice an effect; block means at the centre differ by 4.4
+    assert effects["1"][0] - effects["2"][0] == pytest.approx(4.46, abs=0.05)
+    coded = fit.coded
+    check = check_blocks(coded, table["block"].to_numpy(dtype=object), model_matrix(coded, quadratic_terms(2)))
+    assert check.orthogonal and check.centre_runs == {"1": 3, "2": 3}
+    blocked = criticize(table, ["x1", "x2"], "y", n_null=499)
+    assert blocked.verdict == "adequate", blocked.verdict_message
