@@ -257,3 +257,31 @@ def test_a_printed_two_block_ccd(tmp_path):
     assert check.orthogonal and check.centre_runs == {"1": 3, "2": 3}
     blocked = criticize(table, ["x1", "x2"], "y", n_null=499)
     assert blocked.verdict == "adequate", blocked.verdict_message
+
+
+def test_report_reads_a_blocked_fit_as_the_fit_made_it():
+    """The report's stored fits rebuild the block columns: their ANOVA (a Blocks row first, partial sums of
+    squares of the term groups with the blocks kept) equals the one of the fit itself, and the partial sum of
+    squares of the linear terms equals statsmodels' nested comparison with the blocks in both models."""
+    from demid.report.rsm import block_anova, stored_fits
+    from demid.spec import MaterialSpec
+    from demid.surrogate import fit_frames, fit_material
+
+    table, _ = _block_shift_table(5, 6.0, 2)
+    table["status"] = "ok"
+    lo, hi = table[FACTORS[2]].min(), table[FACTORS[2]].max()
+    material = {"data": "t.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+                "factors": {f: {"lower": float(lo[f]), "upper": float(hi[f])} for f in FACTORS[2]},
+                "responses": {"y": {}}, "scenarios": {}}
+    spec = MaterialSpec.from_material("m", material)
+    refits = fit_material(table, spec)
+    frames = fit_frames(refits)
+    stored = stored_fits(frames["fits"], frames["anova"], table, spec)
+    mine, theirs = block_anova(stored[0]), block_anova(refits[0])
+    pd.testing.assert_frame_equal(mine, theirs, check_exact=False, rtol=1e-9)
+    assert mine["source"].iloc[0] == "Blocks"
+    x = refits[0].results.model.exog
+    linear = [1, 2]  # mu_r, gamma
+    reduced = OLS(refits[0].y, np.delete(x, linear, axis=1)).fit()
+    partial = float(reduced.ssr - refits[0].results.ssr)
+    assert mine.set_index("source").loc["↳ Linear", "sum_sq"] == pytest.approx(partial, rel=1e-9)
