@@ -803,7 +803,8 @@ def _block_notes(table: pd.DataFrame, factors: list[str], coding: Coding, log_fa
     check = check_blocks(coded, labels, model_matrix(coded, quadratic_terms(len(factors))))
     if check.problems:
         raise InputError(check.problems[0], source=src, column=BLOCK_COLUMN)
-    return [f"{src}, column '{BLOCK_COLUMN}': {note}" for note in check.notes]
+    notes = [n for n in check.notes if not (check.orthogonal and n.startswith("blocking is orthogonal"))]
+    return [f"{src}, column '{BLOCK_COLUMN}': {note}" for note in notes]
 
 
 def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") -> ValidatedTable:

@@ -114,9 +114,8 @@ class CriticismResult:
         }
         if self.run_order is not None:
             out["run_order"] = self.run_order.to_json()
-        if self.candidates:
-            out["candidates"] = self.candidates
-            out["discriminating_runs"] = self.discriminating_runs
+        out["candidates"] = self.candidates  # causes the runs cannot tell apart (empty unless ambiguous)
+        out["discriminating_runs"] = self.discriminating_runs
         return out
 
     def _runs_json(self) -> list[dict]:
