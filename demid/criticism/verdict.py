@@ -167,8 +167,8 @@ def ambiguous_message(response: str, candidates: list[dict], runs: list[dict]) -
     spread = max(c["delta_aicc"] or 0.0 for c in candidates)
     text = (f"{response}: ambiguous — {' and '.join(names) if len(names) == 2 else ', '.join(names)} explain the "
             f"misfit about equally (their extensions' AICc lie within {spread:.1f} of each other, less than 2: the "
-            f"runs give no real preference), so none of them is named. With these runs they predict the runs "
-            f"made so far alike and differ only where no run was made.")
+            f"runs give no real preference), so none of them is named: they fit the runs made so far about equally "
+            f"well and differ in what further runs would give.")
     if runs:
         points = "; ".join("(" + ", ".join(f"{k}={v:g}" for k, v in r.items()
                                            if k not in ("purpose", "expected", "separation")) + ")" for r in runs)
