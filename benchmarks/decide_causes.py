@@ -40,10 +40,10 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
-from generators import FACTORS, ccd_table, cubic_terms, design, off_catalogue_table, random_quadratic  # noqa: E402
+from generators import ccd_table, design, off_catalogue_table, random_quadratic  # noqa: E402
 
 from demid.criticism import criticize  # noqa: E402
-from demid.design import model_matrix, parse_term, quadratic_terms, term_name  # noqa: E402
+from demid.design import model_matrix, parse_term, quadratic_terms  # noqa: E402
 from demid.surrogate import fit_response  # noqa: E402
 
 CELLS = {2: [("clean", 0.0), ("term", 6.0), ("log", 2.0), ("outlier", 10.0), ("drift", 8.0), ("het", 30.0),
