@@ -63,6 +63,8 @@ def first_cause(result) -> tuple[str | None, object, list, dict]:
         return f.cause, f.detail, list(f.aliases), dict(f.info)
     if getattr(result, "unexplained", None):
         return "unexplained", "", [], {}
+    if getattr(result, "candidates", None):  # ambiguous: the candidates, none of them named
+        return "ambiguous", "", [], {"candidates": result.candidates}
     return None, None, [], {}
 
 
@@ -95,6 +97,10 @@ def _judge(kind: str, planted, cause, detail, aliases, info) -> tuple[bool, bool
     """
     if cause in (None, "unexplained"):
         return False, False, False
+    if cause == "ambiguous":  # wrong unless the truth is among the candidates (judged one by one)
+        judged = [_judge(kind, planted, c["cause"], c["detail"], [c["detail"]], {}) for c in info["candidates"]]
+        inside = any(j[0] for j in judged)
+        return False, not inside, not inside and all(j[2] for j in judged)
     if kind == "slip" and cause == "factor_level":
         right = detail in planted.runs and info.get("factor") == planted.factor
         return right, not right, not right

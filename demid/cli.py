@@ -52,7 +52,7 @@ def _unlisted_factor_warnings(path: str, table, factors: list[str], responses: l
     from .data import parse_number, read_raw
 
     header, rows, _ = read_raw(path)
-    known = {"run", "status", *factors, *responses}
+    known = {"run", "status", "block", *factors, *responses}
     points = [tuple(p) for p in np.round(table[factors].to_numpy(dtype=float), 9)]
     try:  # the table is in run order, the file perhaps not: pair each run with its own row
         row_of = {int(parse_number(r[header.index("run")])): r for r in rows}
@@ -160,6 +160,7 @@ def cmd_fit(args) -> int:
     design, alpha, note = _table_design(table, factors, args)
     coding = _design_coding(table, factors, design, alpha, args.data)
     out = {}
+    blocks = _block_check(table, factors, coding, args.data)
     for r in responses:
         _require_estimable(table, factors, r, coding, args.data)
         fit = fit_response(table, factors, r, alpha=alpha, coding=coding)
@@ -172,9 +173,33 @@ def cmd_fit(args) -> int:
             "coefficients": dict(zip(coef["term"], coef["coefficient_actual"])),
             "coefficients_coded": dict(zip(coef["term"], coef["coefficient_coded"])),
         }
+        if blocks is not None:  # predictions above are at the mean block effect (the block-averaged surface)
+            effects = fit.block_effects()
+            out[r]["block_effects"] = {label: e for label, (e, _) in effects.items()}
+            out[r]["block_effect_se"] = {label: s for label, (_, s) in effects.items()}
+            out[r]["blocks"] = blocks.to_json()
+            out[r]["anova"] = fit.anova().to_frame().drop(columns="response").to_dict(orient="records")
     write_json(out, args.out)
     _say(note)
     return 0
+
+
+def _block_check(table, factors, coding, source):
+    """How the table's blocks sit in its design (None without a block column): a block term that cannot
+    be estimated stops with one line; a block without centre runs, and non-orthogonal blocking, are said."""
+    from .blocks import block_labels, check_blocks
+    from .design import model_matrix, quadratic_terms
+
+    labels = block_labels(table)
+    if labels is None:
+        return None
+    coded = coding.to_coded(table[factors].to_numpy(dtype=float))
+    check = check_blocks(coded, labels, model_matrix(coded, quadratic_terms(len(factors))))
+    if check.problems:
+        raise InputError(f"column 'block': {check.problems[0]}", source=source)
+    for note in check.notes:
+        print(f"demid: note: {source}, column 'block': {note}", file=sys.stderr)
+    return check
 
 
 def cmd_validate(args) -> int:
@@ -236,6 +261,7 @@ def cmd_criticize(args) -> int:
     design, alpha, note = _table_design(table, factors, args)
     coding = _design_coding(table, factors, design, alpha, args.data)
     _require_estimable(table, factors, args.response, coding, args.data)
+    _block_check(table, factors, coding, args.data)
     fit = fit_response(table, factors, args.response, alpha=alpha, coding=coding)
     result = criticize(table, factors, args.response, alpha=alpha, run_order=args.run_order, fit=fit)
     write_json(result.to_json(), args.out)
@@ -303,7 +329,7 @@ def cmd_design(args) -> int:
 
     _check_design_arguments(args)
     sheet = generate_sheet(args.type, [parse_factor(f) for f in args.factor], center_runs=args.center_runs,
-                           alpha=args.alpha or "rotatable", seed=args.seed)
+                           alpha=args.alpha or "rotatable", seed=args.seed, blocks=args.blocks)
     frame = sheet.to_frame()
     for response in args.response:
         frame[response] = ""
@@ -416,6 +442,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="CCD axial distance in coded units: rotatable (2^k)^(1/4) (the default), face (1) or a "
                         "number >= 1; only for --type ccd")
     p.add_argument("--seed", type=int, default=0, metavar="S", help="seed of the randomised run order (default 0)")
+    p.add_argument("--blocks", type=int, default=1, metavar="B",
+                   help="CCD only: run it in B blocks (2: the factorial runs, then the axial runs; centre runs shared "
+                        "out), written in a block column and randomised within each block (default 1: no blocks)")
     p.add_argument("--response", action="append", default=[], metavar="NAME",
                    help="an empty response column to fill in after simulating (repeatable)")
     p.add_argument("--material", default="study", help="material key used in the config fragment")

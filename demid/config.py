@@ -148,13 +148,13 @@ def _refuse_non_finite(node, path: list, source: str) -> None:
 
 
 #: Table columns with a meaning of their own: the run number and the run's status.
-RESERVED_COLUMNS = ("run", "status")
+RESERVED_COLUMNS = ("run", "status", "block")
 
 
 def reserved_column_problem(names) -> str:
     """Why one of ``names`` cannot be a factor or response ("" when none is reserved)."""
     reserved = [n for n in names if n in RESERVED_COLUMNS]
-    return (f"'{reserved[0]}' names a column demid reads itself (run: the run number, status: ok or failed), not "
+    return (f"'{reserved[0]}' names a column demid reads itself (run: the run number, status: ok or failed, block: the block a run was made in), not "
             "a factor or response" if reserved else "")
 
 # Evaluation points per material held in memory at once (2**24: about 4096**2 or 256**3).

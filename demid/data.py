@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from .blocks import BLOCK_COLUMN, label_text
 from .design import (Coding, axial_distances, box_behnken_points, ccd_points, classify_points, factor_levels,
                      model_matrix, model_units, quadratic_terms, rotatable_alpha, snap_to_factor_levels, term_name)
 from .precision import printed_quantum
@@ -141,6 +142,14 @@ def parse_number(cell: str) -> float:
         raise ValueError(f"found '{cell.strip()}', expected a number") from None
 
 
+def _is_number(text: str) -> bool:
+    try:
+        parse_number(text)
+    except ValueError:
+        return False
+    return True
+
+
 def read_table(path: Path | str, factors: list[str], responses: list[str],
                status_column: str = "status") -> tuple[pd.DataFrame, list[str]]:
     """Parse a design table into floats.  Returns (table, warnings).
@@ -227,6 +236,12 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
             warnings.append(f"{src}, run {run}: marked '{status}' in column '{status_column}'; its missing "
                             f"responses are excluded from the fits")
         rec["status"] = "failed" if failed else "ok"
+        if BLOCK_COLUMN in idx:  # runs made in blocks (demid.blocks): the label as written
+            label = row[idx[BLOCK_COLUMN]].strip()
+            if not label:
+                raise InputError("empty block label; give every run its block (any label, e.g. 1 and 2)",
+                                 source=src, run=run, column=BLOCK_COLUMN)
+            rec[BLOCK_COLUMN] = label_text(parse_number(label)) if _is_number(label) else label
         records.append(rec)
     if not records:
         raise InputError("the table has a header but no runs", source=src)
@@ -796,6 +811,22 @@ def _confounded_terms(null_space: np.ndarray, terms, coded: np.ndarray, factors:
     return text
 
 
+def _block_notes(table: pd.DataFrame, factors: list[str], coding: Coding, log_factors, src: str) -> list[str]:
+    """How the runs' blocks sit in the design (demid.blocks): a block term that cannot be estimated stops;
+    a block without centre runs and non-orthogonal blocking are said."""
+    from .blocks import block_labels, check_blocks
+
+    labels = block_labels(table)
+    if labels is None:
+        return []
+    coded = coding.to_coded(model_units(table[factors].to_numpy(), factors, log_factors))
+    check = check_blocks(coded, labels, model_matrix(coded, quadratic_terms(len(factors))))
+    if check.problems:
+        raise InputError(check.problems[0], source=src, column=BLOCK_COLUMN)
+    notes = [n for n in check.notes if not (check.orthogonal and n.startswith("blocking is orthogonal"))]
+    return [f"{src}, column '{BLOCK_COLUMN}': {note}" for note in notes]
+
+
 def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") -> ValidatedTable:
     """Read a material's table and run every transcription check; raises InputError."""
     src = str(Path(mat_cfg["data"]))
@@ -804,7 +835,7 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
     responses = list(mat_cfg["responses"])
     log_factors = as_spec(mat_cfg, material).log_factors
     table, warnings = read_table(path, factors, responses, mat_cfg.get("status_column", "status"))
-    table = table[["run"] + factors + responses + ["status"]]
+    table = table[["run"] + factors + responses + ["status"] + [c for c in (BLOCK_COLUMN,) if c in table.columns]]
     for f in log_factors:
         bad = table[table[f] <= 0]
         if len(bad):
@@ -819,6 +850,7 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
             raise InputError(f"only {int(ok.sum())} usable runs for a quadratic model with {p} coefficients; "
                              f"at least {p + 1} are needed", source=src, column=r)
     coding, types = check_design(table, factors, mat_cfg["design"], src, f"materials.{material}", log_factors)
+    warnings.extend(_block_notes(table, factors, coding, log_factors, src))
     coded = coding.to_coded(model_units(table[factors].to_numpy(), factors, log_factors))
     levels = factor_levels(mat_cfg["design"]["type"], mat_cfg["design"].get("alpha", 1.0), len(factors))
     if len(levels[0]):

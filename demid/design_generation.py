@@ -92,6 +92,7 @@ class RunSheet:
     center_runs: int
     coded: np.ndarray  # standard order
     order: np.ndarray  # order[i] = standard-order index of execution run i + 1
+    blocks: np.ndarray | None = None  # block number of each standard-order point (demid.blocks), or None
 
     @property
     def coding(self) -> Coding:
@@ -106,6 +107,8 @@ class RunSheet:
         for i, f in enumerate(self.factors):
             # Rounded to 12 significant digits so that the printed sheet is exact to read back.
             frame[f.name] = [float(f"{v:.12g}") for v in actual[self.order, i]]
+        if self.blocks is not None:
+            frame["block"] = self.blocks[self.order]
         return frame
 
     def design_config(self) -> dict:
@@ -145,6 +148,23 @@ def _check_counts(design_type: str, n_factors: int, center_runs: int) -> None:
         raise InputError(f"--factor: 1 to 6 factors are supported, found {n_factors}")
 
 
+def _check_blocks(design_type: str, n_factors: int, center_runs: int, blocks: int, coded: np.ndarray) -> np.ndarray:
+    """Block numbers of a blocked CCD's points (the factorial runs split over blocks 1..B-1, the axial runs in
+    the last), after checking that every block gets a centre run."""
+    from .blocks import ccd_blocks
+
+    if design_type != "ccd":
+        raise InputError(f"--blocks: only a ccd design is written in blocks (factorial and axial blocks), not "
+                         f"--type {design_type}")
+    if blocks not in ((2, 3) if n_factors >= 3 else (2,)):
+        raise InputError(f"--blocks: a {n_factors}-factor CCD is run in 2 blocks (factorial | axial)"
+                         + (" or 3 (two half-factorials | axial)" if n_factors >= 3 else "")
+                         + f", found {blocks}")
+    if center_runs < blocks:
+        raise InputError(f"--center-runs: {blocks} blocks need a centre run each, found {center_runs} centre runs")
+    return ccd_blocks(coded, blocks)
+
+
 def _check_recoverable(sheet: RunSheet) -> None:
     """The pipeline checks the table against its design and infers the levels from it: make sure it accepts
     this sheet and recovers its coding."""
@@ -162,7 +182,7 @@ def _check_recoverable(sheet: RunSheet) -> None:
 
 
 def generate_sheet(design_type: str, factors: list[FactorRange], *, center_runs: int, alpha: str = "rotatable",
-                   seed: int = 0) -> RunSheet:
+                   seed: int = 0, blocks: int = 1) -> RunSheet:
     """A randomised run sheet of the given design; the same seed gives the same sheet."""
     if design_type not in DESIGN_TYPES:
         raise InputError(f"--type: expected one of {', '.join(DESIGN_TYPES)}, found '{design_type}'")
@@ -175,7 +195,11 @@ def generate_sheet(design_type: str, factors: list[FactorRange], *, center_runs:
     a = parse_alpha(alpha, k) if design_type == "ccd" else 1.0
     coded = coded_points(design_type, k, a, center_runs)
     order = np.random.default_rng(seed).permutation(len(coded))
-    sheet = RunSheet(design_type, tuple(factors), a, center_runs, coded, order)
+    block_of = None
+    if blocks > 1:
+        block_of = _check_blocks(design_type, k, center_runs, blocks, coded)
+        order = order[np.argsort(block_of[order], kind="stable")]  # block after block, randomised within each
+    sheet = RunSheet(design_type, tuple(factors), a, center_runs, coded, order, block_of)
     _check_recoverable(sheet)
     return sheet
 

@@ -49,6 +49,7 @@ PURPOSE_DESIGN = "design: D-optimal quadratic runs on the plausible set in the r
 PURPOSE_DESIGN_BOX = ("design: D-optimal quadratic run in the refocused box, off the plausible set (the plausible "
                       "points alone cannot determine the quadratic)")
 PURPOSE_SEPARATE = "separate aliased terms {terms} ({responses})"
+PURPOSE_DECIDE = "decide between causes"
 
 
 @dataclass
@@ -144,6 +145,26 @@ def aliased_findings(findings: pd.DataFrame | None, factors: list[str]) -> list[
         members = tuple(parse_term(n, factors) for n in names)
         out.setdefault(members, []).append(str(row["response"]))
     return list(out.items())
+
+
+def deciding_runs(findings: pd.DataFrame | None, factors: list[str]) -> list[dict]:
+    """The runs the criticism proposes to decide between causes it cannot tell apart (an ``ambiguous`` row's
+    ``discriminating_runs``), each point once, in the order proposed."""
+    import json
+
+    if findings is None or not len(findings) or "discriminating_runs" not in findings:
+        return []
+    out, seen = [], set()
+    for _, row in findings[findings["cause"] == "ambiguous"].iterrows():
+        text = row["discriminating_runs"]
+        if not isinstance(text, str) or not text:
+            continue
+        for run in json.loads(text):
+            key = tuple(float(run[f]) for f in factors)
+            if key not in seen:
+                seen.add(key)
+                out.append({**{f: float(run[f]) for f in factors}, "response": str(row["response"])})
+    return out
 
 
 def _full_rank(points: np.ndarray, k: int) -> int:
@@ -255,6 +276,10 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec,
     purposes = [(PURPOSE_DESIGN if on else PURPOSE_DESIGN_BOX) if lab is None else
                 PURPOSE_SEPARATE.format(terms=" = ".join(term_name(t, factors) for t in lab[0]),
                                         responses=", ".join(lab[1])) for lab, on in zip(labels, on_plausible)]
+    deciding = deciding_runs(findings, factors)  # first: they decide what the surrogate can be trusted with
+    if deciding:
+        points = np.vstack([np.array([[d[f] for f in factors] for d in deciding]), points])
+        purposes = [PURPOSE_DECIDE for _ in deciding] + purposes
     runs = pd.DataFrame({"material": material, "proposal": np.arange(1, len(points) + 1)})
     for i, f in enumerate(factors):
         runs[f] = [float(f"{v:.10g}") for v in points[:, i]]
@@ -277,7 +302,11 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec,
                   f"edge of the current range, so the range is kept")
     n_sep = sum(lab is not None for lab in labels)
     n_box = sum(lab is None and not on for lab, on in zip(labels, on_plausible))
-    reason += (f"; {len(points)} new runs: {len(points) - n_sep - n_box} from a D-optimal quadratic design on the "
+    if deciding:
+        reason += (f"; first {len(deciding)} run(s) to decide between causes the criticism cannot tell apart "
+                   f"({', '.join(dict.fromkeys(d['response'] for d in deciding))})")
+    n_design = len(points) - len(deciding)
+    reason += (f"; {n_design} new runs: {n_design - n_sep - n_box} from a D-optimal quadratic design on the "
                f"plausible part of the box given the {int(inside.sum())} earlier run(s) inside it"
                + (f", {n_box} off the plausible set where its {len(cand_u)} plausible grid point(s) cannot determine "
                   f"the quadratic" if n_box else "")

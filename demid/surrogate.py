@@ -8,7 +8,6 @@ of the fit (grids, admissibility, uncertainty) uses the light
 
 from __future__ import annotations
 
-import math
 import warnings
 from dataclasses import asdict, dataclass, field
 from functools import cached_property
@@ -16,7 +15,8 @@ from functools import cached_property
 import numpy as np
 import pandas as pd
 
-from .design import LEVERAGE_UNPREDICTABLE, Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, replicate_groups, term_name
+from .blocks import block_columns, block_effects, block_labels, block_levels, pure_error_groups
+from .design import LEVERAGE_UNPREDICTABLE, Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, term_name
 from .formulas import f_tail
 from .precision import factor_round_off_sd, printed_quantum
 
@@ -95,6 +95,8 @@ class LackOfFitAnova:
     ss_total: float
     df_total: int
     ss_floor: float = 0.0  # sums of squares at or below this are round-off: an F-ratio over them is undefined
+    ss_block: float = 0.0  # between blocks (blocks first, the model adjusted for them); 0 df without blocks
+    df_block: int = 0
 
     def _f(self, ss_a, df_a, ss_b, df_b):
         if df_a <= 0 or df_b <= 0 or ss_b <= self.ss_floor * df_b:
@@ -105,6 +107,10 @@ class LackOfFitAnova:
     @property
     def model_f(self):
         return self._f(self.ss_model, self.df_model, self.ss_residual, self.df_residual)
+
+    @property
+    def block_f(self):
+        return self._f(self.ss_block, self.df_block, self.ss_residual, self.df_residual)
 
     @property
     def lof_f(self):
@@ -125,7 +131,8 @@ class LackOfFitAnova:
     def to_frame(self) -> pd.DataFrame:
         mf, mp = self.model_f
         lf, lp = self.lof_f
-        rows = [
+        rows = [("Blocks", self.ss_block, self.df_block, *self.block_f)] if self.df_block > 0 else []
+        rows += [
             ("Model", self.ss_model, self.df_model, mf, mp),
             ("Residual", self.ss_residual, self.df_residual, np.nan, np.nan),
             ("Lack of fit", self.ss_lof, self.df_lof, lf, lp),
@@ -226,7 +233,7 @@ class SurrogateFit:
 
     def __init__(self, response: str, factors: list[str], x_actual: np.ndarray, y: np.ndarray,
                  runs: np.ndarray, coding: Coding, terms: list[Term] | None = None,
-                 log_factors: tuple[str, ...] = ()):
+                 log_factors: tuple[str, ...] = (), blocks=None):
         self.response = response
         self.factors = list(factors)
         self.x_actual = np.asarray(x_actual, dtype=float)
@@ -241,7 +248,16 @@ class SurrogateFit:
         from statsmodels.regression.linear_model import OLS
 
         self.coded = coding.to_coded(model_units(self.x_actual, self.factors, self.log_factors))
-        exog = pd.DataFrame(model_matrix(self.coded, self.terms), columns=self.term_names)
+        # runs in blocks (demid.blocks): effect-coded block terms after the polynomial's, so the
+        # polynomial's intercept is the block average and its coefficients are what the predictor uses
+        self.blocks = None if blocks is None or len(set(blocks)) < 2 else np.asarray(blocks, dtype=object)
+        self.block_levels = block_levels(self.blocks) if self.blocks is not None else []
+        columns = model_matrix(self.coded, self.terms)
+        names = self.term_names
+        if self.blocks is not None:
+            columns = np.column_stack([columns, block_columns(self.blocks, self.block_levels)])
+            names = names + [f"block[{lv}]" for lv in self.block_levels[:-1]]
+        exog = pd.DataFrame(columns, columns=names)
         endog = pd.Series(self.y, name=response)
         self.results = OLS(endog, exog).fit()
 
@@ -255,7 +271,20 @@ class SurrogateFit:
 
     @property
     def n_params(self) -> int:
-        return len(self.terms)
+        """Coefficients fitted: the polynomial's and one per block beyond the first."""
+        return len(self.terms) + self.n_block_params
+
+    @property
+    def n_block_params(self) -> int:
+        return max(len(self.block_levels) - 1, 0)
+
+    def block_effects(self) -> dict[str, tuple[float, float]]:
+        """{block label: (shift from the block average, standard error)}; empty without blocks."""
+        if self.blocks is None:
+            return {}
+        p = len(self.terms)
+        cov = np.asarray(self.results.cov_params())[p:, p:]
+        return block_effects(self.results.params.to_numpy()[p:], cov, self.block_levels)
 
     @cached_property
     def hat_diag(self) -> np.ndarray:
@@ -302,14 +331,18 @@ class SurrogateFit:
         res = self.results
         sse = float(res.ssr)
         sst = float(np.sum((self.y - self.y.mean()) ** 2))
-        groups = replicate_groups(self.coded)
+        groups = pure_error_groups(self.coded, self.blocks)  # replicates within their block
         n_unique = int(groups.max()) + 1 if len(groups) else 0
         ss_pe = pure_error_ss(self.y, groups)
         df_pe = self.n_runs - n_unique
         df_res = int(round(res.df_resid))
+        ss_block = 0.0
+        if self.blocks is not None:  # blocks first: the spread of the block means
+            ss_block = sst - pure_error_ss(self.y, pure_error_groups(np.zeros((self.n_runs, 1)), self.blocks))
         return LackOfFitAnova(
             response=self.response,
-            ss_model=sst - sse, df_model=self.n_params - 1,
+            ss_model=sst - sse - ss_block, df_model=len(self.terms) - 1,
+            ss_block=ss_block, df_block=self.n_block_params,
             ss_residual=sse, df_residual=df_res,
             ss_lof=sse - ss_pe, df_lof=df_res - df_pe,
             ss_pure_error=ss_pe, df_pure_error=df_pe,
@@ -413,22 +446,24 @@ class SurrogateFit:
     def coefficients(self) -> pd.DataFrame:
         res = self.results
         m = self._coded_to_actual_matrix()
+        p = len(self.terms)  # the block terms are reported by block_effects()
         return pd.DataFrame({
             "response": self.response,
             "term": self.term_names,
-            "coefficient_coded": res.params.to_numpy(),
-            "std_err_coded": res.bse.to_numpy(),
-            "t_value": res.tvalues.to_numpy(),
-            "p_value": res.pvalues.to_numpy(),
-            "coefficient_actual": m @ res.params.to_numpy(),
+            "coefficient_coded": res.params.to_numpy()[:p],
+            "std_err_coded": res.bse.to_numpy()[:p],
+            "t_value": res.tvalues.to_numpy()[:p],
+            "p_value": res.pvalues.to_numpy()[:p],
+            "coefficient_actual": m @ res.params.to_numpy()[:p],
         })
 
     def surrogate(self) -> Surrogate:
         m = self._coded_to_actual_matrix()
-        cov = np.asarray(self.results.cov_params())
+        p = len(self.terms)  # with blocks: the block-averaged surface (the response at the mean block effect)
+        cov = np.asarray(self.results.cov_params())[:p, :p]
         return Surrogate(
             response=self.response, factors=self.factors, terms=self.terms,
-            coefficients=m @ self.results.params.to_numpy(), covariance=m @ cov @ m.T,
+            coefficients=m @ self.results.params.to_numpy()[:p], covariance=m @ cov @ m.T,
             resid_var=float(self.results.scale), resid_df=int(round(self.results.df_resid)),
             log_factors=self.log_factors,
         )
@@ -437,14 +472,16 @@ class SurrogateFit:
 def fit_response(table: pd.DataFrame, factors: list[str], response: str, *, alpha: float = 1.0,
                  coding: Coding | None = None, terms: list[Term] | None = None,
                  log_factors: tuple[str, ...] = ()) -> SurrogateFit:
-    """Fit one response, dropping runs where it is missing (failed simulations)."""
+    """Fit one response, dropping runs where it is missing (failed simulations); a ``block`` column
+    (demid.blocks) adds a block term."""
     if coding is None:
         coding = Coding.from_levels(factors, model_units(table[factors].to_numpy(), factors, log_factors), alpha)
     ok = np.isfinite(table[response].to_numpy(dtype=float))
     sub = table.loc[ok]
     runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, len(sub) + 1)
     return SurrogateFit(response, factors, sub[factors].to_numpy(dtype=float),
-                        sub[response].to_numpy(dtype=float), runs, coding, terms, log_factors)
+                        sub[response].to_numpy(dtype=float), runs, coding, terms, log_factors,
+                        blocks=block_labels(sub))
 
 
 # --------------------------------------------------------------------------- parquet round trip

@@ -14,6 +14,11 @@ concrete one-parameter extension:
 ``outlier``             largest externally studentised residual, Bonferroni over runs;
                         extension: refit without that run (a mean shift for it).
 ``drift``               a linear term in run order (``run`` column); added-variable F-test.
+``step``                a shift between two consecutive groups of runs in run order (a change-point, at
+                        least two runs each side; the same run-order gate as drift): largest
+                        added-variable F over the change-points; extension: a step term, ``detail``
+                        the first run after the shift.  Between a drift and a step the better fit
+                        is named, the step paying log C for its change-point.
 ``heteroscedasticity``  likelihood ratio of a log-linear variance, var = s^2 exp(g v), with
                         v each factor and the fitted values; extension: maximum-likelihood WLS.
 ``factor_level``        a run whose response fits another value of one factor (a unit or decimal
@@ -28,7 +33,15 @@ Honest causes (:mod:`.verdict`).  Misfit that no cause answers (only lack of fit
 too weak to name), or misfit left after the named extensions (the family run again on the extended
 model, at 1 %): the cause is ``unexplained``, with the tests that fired.  Every
 response gets a verdict: ``adequate`` (with the size of defect the tests find with 80 % power),
-``defect``, ``unexplained`` or ``does_not_predict`` (Q^2 < 0).
+``defect``, ``unexplained``, ``ambiguous`` or ``does_not_predict`` (Q^2 < 0).
+
+Ambiguous causes (:mod:`.discrimination`).  When the cause named first (or the candidate not singled out
+for a rival) and another rejected cause of another kind have extensions within 2 in AICc, none is named:
+the verdict is ``ambiguous`` with ``candidates`` and up to four ``discriminating_runs`` (where their
+predictions differ most relative to their prediction error).
+
+Blocks (:mod:`demid.blocks`).  With a ``block`` column every model carries effect-coded block terms
+(predictions at the mean block effect) and pure error is taken within blocks.
 
 Family-wise error.  The catalogue is one family.  Every statistic except
 Box-Cox's is a function of the error vector alone, whose distribution (normal

@@ -14,7 +14,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import stats
 
-from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, model_matrix, replicate_groups, term_name
+from ..blocks import pure_error_groups
+from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, model_matrix, term_name
 from ..surrogate import pure_error_ss, round_off_floor, round_off_only
 from .aliasing import _term_classes
 from .models import _orth, _residualize
@@ -24,7 +25,11 @@ if TYPE_CHECKING:
     from .models import _Data, _Model
 
 
-CAUSES = ("missing_term", "response_transform", "outlier", "drift", "heteroscedasticity", "factor_level")
+CAUSES = ("missing_term", "response_transform", "outlier", "drift", "heteroscedasticity", "factor_level", "step")
+
+#: A step in run order leaves at least this many runs on each side (a shift of the first or last run alone
+#: is an outlier).
+STEP_MIN_RUNS = 2
 
 #: Family members that show misfit without naming a cause.
 MISFIT_TESTS = ("lack_of_fit",)
@@ -82,6 +87,30 @@ def _added_variable_stats(e: np.ndarray, u: np.ndarray, df2: int):
     sse = np.sum(e * e, axis=0)
     with np.errstate(divide="ignore", invalid="ignore"):
         return proj ** 2 * df2 / np.maximum(sse - proj ** 2, 1e-300 * np.maximum(sse, 1e-300))
+
+
+def _added_variable_stats_many(e: np.ndarray, u: np.ndarray, df2: int) -> np.ndarray:
+    """F (C, B) for adding each unit column of u (n, C) to residuals e (n, B)."""
+    proj = np.einsum("ic,ib->cb", u, e)
+    sse = np.sum(e * e, axis=0)[None, :]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return proj ** 2 * df2 / np.maximum(sse - proj ** 2, 1e-300 * np.maximum(sse, 1e-300))
+
+
+def step_directions(m: _Model, q: np.ndarray) -> tuple[list[int], np.ndarray]:
+    """Change-points in run order (index into the data of the first run after each) and their step columns
+    residualised on the model and normalised (n, C); change-points the model already explains (a block
+    boundary) are left out."""
+    kept = np.flatnonzero(m.keep)
+    order = kept[np.argsort(m.data.runs[kept].astype(float), kind="stable")]
+    starts, cols = [], []
+    for c in range(STEP_MIN_RUNS, len(order) - STEP_MIN_RUNS + 1):
+        col = m.step_column(m.keep, int(order[c])) * m.sw
+        r = _residualize(q, col[:, None])[:, 0]
+        if np.linalg.norm(r) > 1e-6 * max(np.linalg.norm(col), 1e-300):
+            starts.append(int(order[c]))
+            cols.append(r / np.linalg.norm(r))
+    return starts, (np.column_stack(cols) if cols else np.zeros((len(kept), 0)))
 
 
 def _outlier_stats(e: np.ndarray, hat: np.ndarray, df: int):
@@ -204,6 +233,8 @@ class _Round:
         self._missing_terms(data, m, e_obs, e_null)
         if not spec.drift and data.drift_tested:  # only where the run order can be believed (run_order)
             self._drift(m, q, e_obs, e_null)
+        if spec.step is None and data.drift_tested:  # the same gate: a change-point in run order
+            self._step(m, q, e_obs, e_null)
         self._outlier(m, e_obs, e_null)
         if spec.weight_on is None:
             self._heteroscedasticity(m, e_obs, e_null)
@@ -229,7 +260,7 @@ class _Round:
     def _missing_terms(self, data: _Data, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         """A missing cubic term: one hypothesis per alias class of candidates on the current model."""
         df = m.df_resid
-        extra = m.run_column(m.keep)[:, None] if m.spec.drift else None
+        extra = m.x[:, len(m.mean_terms):]  # blocks, drift, step: the model beyond its polynomial
         candidates = [t for t in cubic_terms(len(data.factors)) if t not in m.spec.extra_terms]
         self.classes = _term_classes(m.coded, m.mean_terms, candidates, extra, m.w)
         for c in self.classes:
@@ -252,6 +283,24 @@ class _Round:
             h = _Hypothesis("drift", "run", [], f_obs, float(_f_logp(f_obs, df - 1)))
             h.null_logp = _f_logp(_added_variable_stats(e_null, u, df - 1), df - 1)
             self.hypotheses.append(h)
+
+    def _step(self, m: _Model, q: np.ndarray, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+        """A shift between two consecutive groups of runs in run order: the largest added-variable F over the
+        change-points (at least STEP_MIN_RUNS runs each side); nominal p Bonferroni over the change-points
+        (ranking only: the family test uses the simulated joint null of the maximum)."""
+        df = m.df_resid
+        starts, directions = step_directions(m, q)
+        if not starts:
+            return
+        f_obs = _added_variable_stats_many(e_obs, directions, df - 1)[:, 0]
+        best = int(np.argmax(f_obs))
+        n_points = len(starts)
+        h = _Hypothesis("step", starts[best], [], float(f_obs[best]),
+                        float(min(0.0, math.log(n_points) + _f_logp(f_obs[best], df - 1))),
+                        info={"change_points": n_points})
+        f_null = _added_variable_stats_many(e_null, directions, df - 1).max(axis=0)
+        h.null_logp = np.minimum(0.0, math.log(n_points) + _f_logp(f_null, df - 1))
+        self.hypotheses.append(h)
 
     def _outlier(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         """The run with the largest externally studentised residual."""
@@ -286,7 +335,9 @@ class _Round:
         self.hypotheses.append(h)
 
     def _lack_of_fit(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
-        group = replicate_groups(m.coded)  # the ANOVA's replicates, so that both judge one pure error
+        labels = None if self.data.block_labels is None else self.data.block_labels[m.keep]
+        # the ANOVA's replicates (within their block), so that both judge one pure error
+        group = pure_error_groups(m.coded, labels)
         n_groups = int(group.max()) + 1
         df_pe = len(group) - n_groups
         df_lof = m.df_resid - df_pe
@@ -422,9 +473,8 @@ def _moved_rows(m: _Model, cands: list[SlipCandidate]) -> np.ndarray:
     coded = np.array([m.coded[pos[c.row]] for c in cands])
     coded[np.arange(len(cands)), [c.factor for c in cands]] = [c.coded for c in cands]
     rows = model_matrix(coded, m.mean_terms)
-    if m.spec.drift:
-        rows = np.column_stack([rows, m.x[[pos[c.row] for c in cands], -1]])
-    return rows
+    beyond = m.x[[pos[c.row] for c in cands], len(m.mean_terms):]  # blocks, drift, step: unchanged
+    return np.column_stack([rows, beyond]) if beyond.shape[1] else rows
 
 
 def _slip_ratios(m: _Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

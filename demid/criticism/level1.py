@@ -7,6 +7,7 @@ again on the extended model, reporting leave-one-out and AICc gains.
 from __future__ import annotations
 
 import json
+import math
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
@@ -14,10 +15,12 @@ import numpy as np
 import pandas as pd
 from scipy import optimize, stats
 
-from ..design import Coding, model_matrix, model_units, quadratic_terms, term_name
+from ..blocks import block_columns
+from ..design import LEVERAGE_UNPREDICTABLE, Coding, model_matrix, model_units, quadratic_terms, term_name
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
-from .catalogue import _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
+from .discrimination import candidate_label, close_candidates, discriminating_runs
+from .catalogue import CAUSES, slip_candidates, _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, rests_on_one_run,
                       strongest_rival, unexplained_evidence, verdict_of)
 from .messages import _CAUSE_WORDS, _message, corner_only_runs
@@ -29,6 +32,10 @@ if TYPE_CHECKING:
     from ..surrogate import SurrogateFit
     from .catalogue import _Hypothesis
     from .models import ExtendedSurrogate
+
+
+#: Causes that describe the run order: a linear drift or a step between two groups of runs.
+RUN_ORDER_CAUSES = ("drift", "step")
 
 
 # =========================================================================== findings
@@ -85,6 +92,8 @@ class CriticismResult:
     _extended_model: _Model = field(repr=False, default=None)
     _baseline_model: _Model = field(repr=False, default=None)
     run_order: RunOrder | None = None
+    candidates: list[dict] = field(default_factory=list)  # causes the runs cannot tell apart (discrimination)
+    discriminating_runs: list[dict] = field(default_factory=list)
 
     def to_json(self) -> dict:
         """JSON-ready dict: response, baseline, findings, extended, gain (+ alias sets, catalogue, summary)."""
@@ -105,6 +114,8 @@ class CriticismResult:
         }
         if self.run_order is not None:
             out["run_order"] = self.run_order.to_json()
+        out["candidates"] = self.candidates  # causes the runs cannot tell apart (empty unless ambiguous)
+        out["discriminating_runs"] = self.discriminating_runs
         return out
 
     def _runs_json(self) -> list[dict]:
@@ -125,6 +136,14 @@ class CriticismResult:
                  "aliases": ";".join(f.aliases), "p_value": f.p_value,
                  "loo_rmse_baseline": f.loo_rmse_baseline, "loo_rmse_extended": f.loo_rmse_extended,
                  "delta_aicc": f.delta_aicc, "message": f.message, "verdict": self.verdict} for f in self.findings]
+        if self.candidates and not self.findings:
+            rows.append({"response": self.response, "cause": "ambiguous",
+                         "detail": ";".join(f"{c['cause']} ({c['detail']})" for c in self.candidates), "aliases": "",
+                         "p_value": None, "loo_rmse_baseline": self.baseline.get("loo_rmse"),
+                         "loo_rmse_extended": self.baseline.get("loo_rmse"), "delta_aicc": 0.0,
+                         "message": self.verdict_message, "verdict": self.verdict,
+                         "discriminating_runs": json.dumps(self.discriminating_runs)})
+            cols = cols + ["discriminating_runs"]  # read by the next wave (next_wave.deciding_runs)
         if self.unexplained:
             u = self.unexplained
             rows.append({"response": self.response, "cause": "unexplained", "detail": u["detail"], "aliases": "",
@@ -160,8 +179,10 @@ def _prepare(table: pd.DataFrame, factors: list[str], response: str, alpha: floa
     coding = fit.coding
     sub = table.loc[ok]
     runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, int(ok.sum()) + 1)
+    blocks = None if fit.blocks is None else block_columns(fit.blocks, fit.block_levels)
     data = _Data(response, list(factors), fit.coded, fit.y, runs, coding, float(alpha),
-                 tuple(log_factors), quadratic_terms(len(factors)), factor_round_off=fit.factor_round_off)
+                 tuple(log_factors), quadratic_terms(len(factors)), factor_round_off=fit.factor_round_off,
+                 blocks=blocks, block_labels=fit.blocks)
     return data, fit
 
 
@@ -173,6 +194,8 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
         return replace(spec, extra_terms=spec.extra_terms + (h.detail.terms[0],)), info
     if h.cause == "drift":
         return replace(spec, drift=True), info
+    if h.cause == "step":
+        return replace(spec, step=int(h.detail)), info
     if h.cause == "factor_level":
         c = h.detail
         row = model.coded[int(np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0])].copy()
@@ -211,7 +234,10 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
         return replace(spec, lam=float(lam)), info
     if h.cause == "heteroscedasticity":
         if h.detail == "fitted":  # excluded runs: their predicted value, same scaling
-            fz_all = model_matrix(data.coded, model.mean_terms) @ model.beta[:len(model.mean_terms)]
+            k = len(model.mean_terms)
+            fz_all = model_matrix(data.coded, model.mean_terms) @ model.beta[:k]
+            if data.blocks is not None:
+                fz_all = fz_all + data.blocks @ model.beta[k:k + data.blocks.shape[1]]
             fz = model.fitted_z
             values = (fz_all - (fz.max() + fz.min()) / 2) / (np.ptp(fz) / 2)
         else:
@@ -285,18 +311,25 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     findings, model, unexplained, naming = _honest_causes(data, response, findings, model, base_model, first_round,
                                                           last_round, not_singled_out, family_alpha)
 
+    candidates, runs = _ambiguity(data, base_model, first_round, findings, not_singled_out, family_alpha)
+    if candidates:  # the runs cannot tell these causes apart: none of them is named
+        findings, model, unexplained = [], base_model, None
     baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
     summary = _summary(data, findings, catalogue, family_alpha, gain, exact_fit_message(response, fit))
     if unexplained:
         summary = unexplained["message"]
     if not run_order.drift_tested:
         summary += " " + run_order.message
-    verdict, verdict_detail = verdict_of(data, fit, findings, unexplained, catalogue, family_alpha)
+    verdict, verdict_detail = verdict_of(data, fit, findings, unexplained, catalogue, family_alpha,
+                                         candidates, runs)
+    if candidates:
+        summary = verdict_detail["message"]
     return CriticismResult(response=response, factors=list(factors), baseline=baseline, findings=findings,
                            extended=extended, gain=gain, alias_sets=alias_sets, catalogue=catalogue,
                            summary=summary, family_alpha=family_alpha, unexplained=unexplained, verdict=verdict,
                            verdict_detail=verdict_detail, naming=naming, residuals=_residual_frame(fit),
-                           _extended_model=model, _baseline_model=base_model, run_order=run_order)
+                           _extended_model=model, _baseline_model=base_model, run_order=run_order,
+                           candidates=candidates, discriminating_runs=runs)
 
 
 def _honest_causes(data: _Data, response: str, findings: list, model: _Model, base_model: _Model, first_round,
@@ -332,6 +365,41 @@ def _honest_causes(data: _Data, response: str, findings: list, model: _Model, ba
                 candidate=not_singled_out if not findings else None)
             findings, model = [], base_model
     return findings, model, unexplained, naming
+
+
+def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not_singled_out: dict | None,
+               family_alpha: float) -> tuple[list[dict], list[dict]]:
+    """(candidates, discriminating runs) when the first cause named, or the candidate not singled out for
+    a rival of another kind, explains the misfit about as well as another rejected cause (their
+    extensions' AICc within discrimination.AMBIGUOUS_AICC); ([], []) otherwise."""
+    if first_round is None or not (findings or (not_singled_out and "rival" in not_singled_out)):
+        return [], []
+    if not_singled_out and not findings and not_singled_out["rival"]["cause"] not in CAUSES:
+        return [], []
+    entries = []
+    choices = _choices(first_round)
+    for h in first_round.rejected(family_alpha):
+        spec, info = _apply(data, base_model, h)
+        mo = _Model(data, spec)
+        detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
+        # each cause pays for the place it was chosen from (a run, a change-point, a term, a covariate)
+        aicc = mo.aicc + 2.0 * math.log(choices.get(h.cause, 1))
+        entries.append({"cause": h.cause, "detail": detail, "aicc": aicc, "model": mo})
+    close = close_candidates(entries)
+    first = (findings[0].cause, findings[0].detail) if findings else \
+        (not_singled_out["cause"], not_singled_out["detail"])
+    if len(close) < 2 or not any((c["cause"], c["detail"]) == first for c in close):
+        return [], []
+    if not findings:
+        rival = not_singled_out["rival"]
+        if not any((c["cause"], c["detail"]) == (rival["cause"], rival["detail"]) for c in close):
+            return [], []
+    base_aicc = base_model.aicc
+    candidates = [{"cause": c["cause"], "detail": c["detail"], "gain": _num(base_aicc - c["aicc"]),
+                   "delta_aicc": _num(c["aicc"] - close[0]["aicc"])} for c in close]
+    runs = discriminating_runs(data, [c["model"] for c in close], [candidate_label(c["cause"], c["detail"])
+                                                                   for c in close])
+    return candidates, runs
 
 
 def _not_singled_out(data: _Data, model: _Model, h: _Hypothesis, hypotheses: list[_Hypothesis]) -> dict | None:
@@ -384,6 +452,12 @@ def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tupl
         rivals = [i for i, alt in enumerate(fitted_alternatives)
                   if alt[0].cause in ("heteroscedasticity", "outlier")]
         best = max(rivals, key=lambda i: (round(fitted_alternatives[i][3].loglik, 9), -i))
+    if fitted_alternatives[best][0].cause in RUN_ORDER_CAUSES:
+        # a trend or a step in run order: the better-fitting extension decides, the step paying for its
+        # change-point (step_price)
+        rivals = [i for i, alt in enumerate(fitted_alternatives) if alt[0].cause in RUN_ORDER_CAUSES]
+        best = max(rivals, key=lambda i: (round(fitted_alternatives[i][3].loglik
+                                                - step_price(fitted_alternatives[i][0]), 9), -i))
     return _with_alternatives(data, fitted_alternatives, best)
 
 
@@ -403,6 +477,9 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
         info["lam"] = spec.lam
     if h.cause == "drift":
         info["drift_per_run"] = _drift_per_run(new)
+    if h.cause == "step":
+        info["step_size"] = _step_size(new)
+        info["runs_before"] = int(np.sum(data.runs.astype(float) < float(data.runs[int(h.detail)])))
     same = new.predictable & model.predictable
     before = model.loo_rmse_on(same)
     after = new.loo_rmse_on(same)
@@ -417,7 +494,8 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
                     + ".")
     detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
     public_info = {k: v for k, v in info.items() if k in ("lambda_hat", "lambda_ci", "sd_ratio",
-                                                          "drift_per_run", "observed", "predicted_without",
+                                                          "drift_per_run", "step_size", "runs_before",
+                                                          "observed", "predicted_without",
                                                           "factor", "recorded_value", "fitting_value", "slip",
                                                           "t_moved", "t_recorded", "bayes_factor")}
     if alternatives:
@@ -460,6 +538,37 @@ def _gain(table: pd.DataFrame, factors: list[str], response: str, data: _Data, f
     return baseline, extended, gain
 
 
+def _choices(rnd) -> dict[str, int]:
+    """How many places each cause of a round chose its best from: runs for an outlier, change-points for a
+    step, alias classes for a missing term, covariates for unequal scatter, candidate slips for a factor
+    level (1 for drift and a transform, which choose nothing).  Comparing causes, each pays log of it in
+    log-likelihood (a Bonferroni price, as the step's test and step_price): an outlier picked as the worst
+    of 13 runs is not preferred to a step picked among 9 change-points for the picking alone."""
+    out: dict[str, int] = {}
+    for h in rnd.hypotheses:
+        if h.cause in ("missing_term", "heteroscedasticity"):
+            out[h.cause] = out.get(h.cause, 0) + 1
+    out["outlier"] = int(np.sum(rnd.model.hat < LEVERAGE_UNPREDICTABLE))
+    step = [h for h in rnd.hypotheses if h.cause == "step"]
+    if step:
+        out["step"] = int(step[0].info.get("change_points", 1))
+    out["factor_level"] = max(len(slip_candidates(rnd.data, rnd.model)), 1)
+    return out
+
+
+def step_price(h: _Hypothesis) -> float:
+    """Log-likelihood a step pays for its change-point, chosen as the best of C positions: log C, the
+    Bonferroni price its test pays too (a linear drift is then not read as a step at a dozen runs; in
+    tests/test_criticism.py a 14-SD drift over 13 runs fits a step at run 9 better by 1.9).  0 for other
+    causes."""
+    return math.log(h.info.get("change_points", 1)) if h.cause == "step" else 0.0
+
+
+def _step_size(model: _Model) -> float:
+    """The shift of the runs after the step against those before (response units, or the transform's)."""
+    return float(model.beta[model.names.index("step")])
+
+
 def _drift_per_run(model: _Model) -> float:
     j = model.names.index("run")
     return float(model.beta[j] / model.run_scale)
@@ -472,7 +581,7 @@ def _detail_json(data: _Data, h: _Hypothesis):
         return _run_value(data.runs[h.detail.row])
     if h.cause == "lack_of_fit":
         return ""
-    if h.cause == "outlier":
+    if h.cause in ("outlier", "step"):
         return _run_value(data.runs[int(h.detail)])
     if h.cause == "response_transform":
         return "boxcox"

@@ -17,7 +17,7 @@ if TYPE_CHECKING:
 
 _CAUSE_WORDS = {"missing_term": "missing term", "response_transform": "transform", "outlier": "outlier run",
                 "drift": "drift with", "heteroscedasticity": "unequal scatter with",
-                "factor_level": "another factor level at run"}
+                "factor_level": "another factor level at run", "step": "a step in run order at run"}
 
 
 def _gain_phrase(before: float, after: float) -> str:
@@ -114,6 +114,13 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
         return (f"{r}: the residuals trend with run order ({slope:+.3g} per run, {span:+.3g} from first to "
                 f"last run): something changed while the runs were made (software version, settings, "
                 f"seeds, hardware). Adding a run-order term {gain}; predictions refer to the mean run order.")
+    if h.cause == "step":
+        size, first = info.get("step_size", float("nan")), _run_value(data.runs[int(h.detail)])
+        return (f"{r}: the runs from run {first} on are shifted by {size:+.4g} against the {info.get('runs_before')} "
+                f"runs before (a step in run order, not a gradual drift): something changed between runs — typically "
+                f"a new block or wave of runs, a software version or a machine. If the runs were made in blocks, add a "
+                f"'block' column to the table (any labels) so that every model carries the shift; adding the step "
+                f"{gain}; predictions refer to the average run.")
     if h.cause == "heteroscedasticity":
         ratio = info["sd_ratio"]
         grows = ratio >= 1

@@ -114,6 +114,8 @@ class _Data:
     drift_tested: bool = True  # False when the run column is not the performed order (criticism.run_order)
     # per run, the response error the factors' printed precision adds (SurrogateFit.factor_round_off)
     factor_round_off: np.ndarray | None = None
+    blocks: np.ndarray | None = None  # effect-coded block columns (n, B-1) of runs made in blocks (demid.blocks)
+    block_labels: np.ndarray | None = None
 
     @property
     def n(self) -> int:
@@ -154,10 +156,11 @@ class _Spec:
     weight_values: tuple[float, ...] = ()
     # (run index, factor index, coded value): runs whose response fits another value of one factor
     moved: tuple[tuple[int, int, float], ...] = ()
+    step: int | None = None  # index (into the data) of the first run after a shift in run order
 
     @property
     def n_extra_params(self) -> int:
-        return (len(self.extra_terms) + int(self.drift) + len(self.dropped)
+        return (len(self.extra_terms) + int(self.drift) + len(self.dropped) + int(self.step is not None)
                 + int(self.lam is not None) + int(self.weight_on is not None))
 
 
@@ -181,9 +184,15 @@ class _Model:
         names = [term_name(t, data.factors) for t in self.mean_terms]
         self.run_center = float(np.mean(data.runs[keep].astype(float)))
         self.run_scale = float(max(np.ptp(data.runs.astype(float)), 1.0))
+        if data.blocks is not None:
+            x = np.column_stack([x, data.blocks[keep]])
+            names += [f"block{j + 1}" for j in range(data.blocks.shape[1])]
         if spec.drift:
             x = np.column_stack([x, self.run_column(keep)])
             names.append("run")
+        if spec.step is not None:
+            x = np.column_stack([x, self.step_column(keep)])
+            names.append("step")
         self.x = x
         self.names = names
         if spec.weight_on is not None:
@@ -217,10 +226,32 @@ class _Model:
     def run_column(self, rows) -> np.ndarray:
         return (self.data.runs[rows].astype(float) - self.run_center) / self.run_scale
 
+    def step_column(self, rows, step: int | None = None) -> np.ndarray:
+        """1 for runs at or after the step's first run, 0 before, less its mean over the kept runs (so that
+        predictions refer to the average run, as with drift)."""
+        step = self.spec.step if step is None else step
+        after = (self.data.runs.astype(float) >= float(self.data.runs[step])).astype(float)
+        return after[rows] - float(np.mean(after[self.keep]))
+
+    def new_run_row(self, coded: np.ndarray) -> np.ndarray:
+        """Model-matrix rows (m, p) of new runs made after every run so far, at coded points: blocks at their
+        average, drift at the next run number, after a step."""
+        coded = np.atleast_2d(coded)
+        rows = [model_matrix(coded, self.mean_terms)]
+        if self.data.blocks is not None:
+            rows.append(np.zeros((len(coded), self.data.blocks.shape[1])))
+        if self.spec.drift:
+            nxt = (float(np.max(self.data.runs.astype(float))) + 1.0 - self.run_center) / self.run_scale
+            rows.append(np.full((len(coded), 1), nxt))
+        if self.spec.step is not None:
+            after = (self.data.runs.astype(float) >= float(self.data.runs[self.spec.step])).astype(float)
+            rows.append(np.full((len(coded), 1), 1.0 - float(np.mean(after[self.keep]))))
+        return np.column_stack(rows)
     @property
     def n_params(self) -> int:
         """Mean parameters + sigma + transform/variance parameters + one per excluded run."""
-        return self.rank + 1 + self.spec.n_extra_params - len(self.spec.extra_terms) - int(self.spec.drift)
+        return (self.rank + 1 + self.spec.n_extra_params - len(self.spec.extra_terms) - int(self.spec.drift)
+                - int(self.spec.step is not None))
 
     @property
     def loglik(self) -> float:
@@ -286,7 +317,7 @@ class _Model:
 
     def surrogate(self) -> "ExtendedSurrogate":
         k = len(self.mean_terms)
-        drift = float(self.beta[k]) if self.spec.drift else 0.0
+        drift = float(self.beta[self.names.index("run")]) if self.spec.drift else 0.0
         return ExtendedSurrogate(
             response=self.data.response, factors=list(self.data.factors), coding=self.data.coding,
             terms=list(self.mean_terms), coefficients=self.beta[:k].copy(), lam=self.spec.lam,

@@ -27,7 +27,7 @@ if TYPE_CHECKING:
     from .catalogue import _Hypothesis
     from .models import _Data, _Model
 
-VERDICTS = ("adequate", "defect", "unexplained", "does_not_predict")
+VERDICTS = ("adequate", "defect", "unexplained", "does_not_predict", "ambiguous")
 
 #: After the named extensions, a family member still rejected at this fraction of the family level
 #: means misfit the named causes do not explain (1 % for the default 5 %: a correct extension then
@@ -54,7 +54,7 @@ SLIP_BAYES_FACTOR = 1.0
 #: Outliers and slipped runs of the same run are not rivals.
 OVERWHELMING_P = 1e-4
 
-_RIVAL_KIND = {"outlier": "one run", "factor_level": "one run"}
+_RIVAL_KIND = {"outlier": "one run", "factor_level": "one run", "drift": "run order", "step": "run order"}
 
 #: Not used as a rule either: setting a stronger rival aside when the named cause's extension silences it
 #: (nominal p >= 0.05 on the extended model) while the rival's own extension leaves the named cause's test
@@ -84,7 +84,8 @@ POWER = 0.8
 
 _TEST_WORDS = {"lack_of_fit": "lack of fit against the replicated runs", "missing_term": "missing term",
                "response_transform": "response transform", "outlier": "outlying run", "drift": "run-order drift",
-               "heteroscedasticity": "unequal scatter with", "factor_level": "run fitting another factor level"}
+               "heteroscedasticity": "unequal scatter with", "factor_level": "run fitting another factor level",
+               "step": "step in run order"}
 
 
 def _plain(x: float) -> str:
@@ -95,7 +96,7 @@ def _plain(x: float) -> str:
 def _entry_text(e: dict) -> str:
     words = _TEST_WORDS.get(e["cause"], e["cause"])
     detail = e.get("detail")
-    if e["cause"] in ("outlier", "factor_level") and detail not in (None, ""):
+    if e["cause"] in ("outlier", "factor_level", "step") and detail not in (None, ""):
         words += f" (run {detail})"
     elif detail not in (None, "", "boxcox", "run"):
         words += f" {detail}"
@@ -158,6 +159,22 @@ def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], re
     detail = ";".join(dict.fromkeys(e["cause"] for e in fired))
     return {"detail": detail, "p_value": min(p_values) if p_values else None, "tests": fired,
             "tried": tried, "remaining": remaining, "candidate": candidate, "message": text}
+
+
+def ambiguous_message(response: str, candidates: list[dict], runs: list[dict]) -> str:
+    """Why no cause is named when several explain the misfit about equally, and the runs that would decide."""
+    names = [_entry_text({"cause": c["cause"], "detail": c["detail"]}) for c in candidates]
+    spread = max(c["delta_aicc"] or 0.0 for c in candidates)
+    text = (f"{response}: ambiguous — {' and '.join(names) if len(names) == 2 else ', '.join(names)} explain the "
+            f"misfit about equally (their extensions' AICc lie within {spread:.1f} of each other, less than 2: the "
+            f"runs give no real preference), so none of them is named: they fit the runs made so far about equally "
+            f"well and differ in what further runs would give.")
+    if runs:
+        points = "; ".join("(" + ", ".join(f"{k}={v:g}" for k, v in r.items()
+                                           if k not in ("purpose", "expected", "separation")) + ")" for r in runs)
+        text += (f" {len(runs)} more run{'s' if len(runs) > 1 else ''} made after these, at {points}, would decide: "
+                 f"there the candidates' predictions differ most relative to their prediction error.")
+    return text
 
 
 def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power: float = POWER) -> float | None:
@@ -234,9 +251,15 @@ def unpredictable_runs_message(fit: SurrogateFit) -> str:
 
 
 def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
-               family_alpha: float) -> tuple[str, dict]:
+               family_alpha: float, candidates: list[dict] = (), runs: list[dict] = ()) -> tuple[str, dict]:
     """The verdict and what supports it (numbers for the JSON, a message for the report)."""
     verdict, detail = _verdict(data, fit, findings, unexplained, catalogue, family_alpha)
+    if candidates:
+        text = ambiguous_message(data.response, list(candidates), list(runs))
+        if verdict == "does_not_predict":
+            detail["message"] += " " + text
+        else:
+            verdict, detail["message"] = "ambiguous", text
     lone = unpredictable_runs_message(fit)
     if lone:
         detail["unpredictable_runs"] = [int(r) for r in np.asarray(fit.runs)[fit.fitted_exactly]]

@@ -47,6 +47,7 @@ class StoredFit:
 
     def __init__(self, response: str, factors: list[str], coding, log_factors: tuple[str, ...],
                  coefficients: pd.DataFrame, anova: pd.DataFrame, table: pd.DataFrame):
+        from ..blocks import block_columns, block_labels
         from ..design import model_matrix, model_units, parse_term
 
         self.response, self.factors, self.coding = response, list(factors), coding
@@ -60,12 +61,20 @@ class StoredFit:
         column = {name: pd.Series(self._coefficients[name].to_numpy(), index=self.term_names)
                   for name in ("coefficient_coded", "std_err_coded", "t_value", "p_value")}
         residual = rows["Residual"]
+        exog = model_matrix(coded, self.terms)
+        labels = block_labels(sub)
+        self.blocked = labels is not None
+        if self.blocked:  # the fit's block terms (demid.blocks), after the polynomial's
+            exog = np.column_stack([exog, block_columns(labels)])
         self.results = SimpleNamespace(
             params=column["coefficient_coded"], bse=column["std_err_coded"], tvalues=column["t_value"],
             pvalues=column["p_value"], ssr=float(residual.sum_sq), df_resid=float(residual.df),
-            model=SimpleNamespace(exog=model_matrix(coded, self.terms), endog=sub[response].to_numpy(dtype=float)))
+            model=SimpleNamespace(exog=exog, endog=sub[response].to_numpy(dtype=float)))
         lof = rows["Lack of fit"]
+        blocks = rows.get("Blocks")
         self._anova = SimpleNamespace(
+            df_block=int(blocks.df) if blocks is not None else 0,
+            ss_block=float(blocks.sum_sq) if blocks is not None else 0.0,
             df_model=int(rows["Model"].df), ss_model=float(rows["Model"].sum_sq),
             df_residual=int(residual.df), ss_residual=float(residual.sum_sq),
             df_lof=int(lof.df), ss_lof=float(lof.sum_sq), lof_f=(float(lof.F), float(lof.p_value)),
@@ -100,9 +109,12 @@ def block_anova(fit) -> pd.DataFrame:
     mse = sse_full / df_resid if df_resid > 0 else np.nan
     blocks = [term_block(t) for t in fit.terms]
     lof = fit.anova()
-    rows = [("Model", lof.df_model, lof.ss_model)]
+    # runs made in blocks (demid.blocks): their row first, their columns kept in every reduced fit
+    rows = [("Blocks", lof.df_block, lof.ss_block)] if getattr(lof, "df_block", 0) else []
+    rows.append(("Model", lof.df_model, lof.ss_model))
+    beyond = list(range(len(blocks), x.shape[1]))
     for block in dict.fromkeys(b for b in blocks if b != "Intercept"):
-        keep = [i for i, b in enumerate(blocks) if b != block]
+        keep = [i for i, b in enumerate(blocks) if b != block] + beyond
         beta, *_ = np.linalg.lstsq(x[:, keep], y, rcond=None)
         sse_reduced = float(np.sum((y - x[:, keep] @ beta) ** 2))
         rows.append((f"↳ {block}", len(blocks) - len(keep), sse_reduced - sse_full))

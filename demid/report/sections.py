@@ -497,6 +497,10 @@ class ReportSections:
                       "squares when the block is dropped from the full quadratic):", "",
                       markdown_table(anova), "", "Coefficients in coded units:", "",
                       markdown_table(coef), ""]
+            if getattr(fit, "blocked", False):
+                lines += ["The runs were made in blocks (the table's `block` column): the fit carries a block term, "
+                          "and the equations, sets and scenarios use the block-averaged surface (the response at the "
+                          "mean block effect).", ""]
         if coding is not None:
             lines += ["Coding: " + "; ".join(
                 f"{letters[f]} = ({'log10 ' if f in spec.log_factors else ''}{spec.factor(f).label} "

@@ -79,7 +79,8 @@ def verdict_table(identifiability: pd.DataFrame, spec) -> pd.DataFrame:
 
 #: The criticism verdicts in the report's words.
 VERDICT_WORDS = {"adequate": "adequate (within the tests' power)", "defect": "defect named",
-                 "unexplained": "misfit unexplained", "does_not_predict": "does not predict"}
+                 "unexplained": "misfit unexplained", "does_not_predict": "does not predict",
+                 "ambiguous": "ambiguous cause"}
 
 
 def verdict_sentence(response: str, res: dict) -> str:
