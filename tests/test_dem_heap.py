@@ -75,3 +75,36 @@ def test_small_kratos_heap_is_plausible_and_repeats_exactly(tmp_path):
     assert first["particles_left"] >= 190   # the heap stays on the base
     first.pop("cpu_s"), second.pop("cpu_s")
     assert first == second   # same seed, one thread: the same run to the last digit
+
+
+RUN_DESIGN = HEAP.parent / "run_design.py"
+
+# A stand-in simulator: y = 10 a + b; run 2 exits non-zero, run 3 writes no number.
+FAKE_SIMULATOR = """
+import json, sys
+a, b, run, out = float(sys.argv[1]), float(sys.argv[2]), int(sys.argv[3]), sys.argv[4]
+if run == 2:
+    sys.exit(3)
+value = "garbage" if run == 3 else 10 * a + b
+open(out, "w").write(json.dumps({"y": value, "extra": 1}))
+"""
+
+
+def test_run_design_fills_the_table_and_marks_failed_runs(tmp_path):
+    import pandas as pd
+
+    (tmp_path / "sim.py").write_text(FAKE_SIMULATOR)
+    (tmp_path / "sheet.csv").write_text(
+        "run,std_order,a,b,y\n1,3,0.5,2,\n2,1,0.1,1,\n3,2,0.9,1,\n4,4,0.2,3; echo x,\n")
+    command = f"{sys.executable} {tmp_path / 'sim.py'} {{a}} {{b}} {{run}} {{run_dir}}/responses.json"
+    done = subprocess.run([sys.executable, str(RUN_DESIGN), "--sheet", str(tmp_path / "sheet.csv"),
+                           "--out", str(tmp_path / "table.csv"), "--runs-dir", str(tmp_path / "runs"),
+                           "--command", command, "--jobs", "2"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    table = pd.read_csv(tmp_path / "table.csv")
+    assert list(table.columns) == ["run", "a", "b", "y", "status"]
+    assert table["status"].tolist() == ["ok", "failed", "failed", "failed"]
+    assert table.loc[0, "y"] == pytest.approx(7.0)
+    assert table.loc[1:, "y"].isna().all()
+    # The value "3; echo x" reaches the simulator as one argument, not as shell syntax: the run fails.
+    assert (tmp_path / "runs" / "run2" / "log").exists()
