@@ -200,13 +200,13 @@ def plausible_points(surrogates: dict, spec: MaterialSpec, scenario: str, z: flo
                      lo: np.ndarray, hi: np.ndarray, n: int = 41) -> np.ndarray:
     """Points of an n^k grid of the box (search units) in the plausible set of the scenario."""
     from .sampling import plausibility_fields
-    from .uncertainty.sigma import measurement_sigmas
+    from .tolerance import scenario_bands, scenario_surrogates
 
     sc = next(s for s in spec.scenarios if s.name == scenario)
     targets, domain = spec.targets, spec.domain
     observables = list(sc.observables)
-    sigma, _ = measurement_sigmas(spec.sigma_config, observables, targets)
-    fields = plausibility_fields(surrogates, observables, targets, sc.tolerance, z, sigma)
+    fields = plausibility_fields(scenario_surrogates(surrogates, spec, sc.tolerance), observables, targets,
+                                 sc.tolerance, z, scenario_bands(spec, observables, sc.tolerance))
     k = len(lo)
     n = n if k <= 2 else max(5, int(round(4096 ** (1 / k))))
     axes = [np.linspace(a, b, n) for a, b in zip(lo, hi)]
