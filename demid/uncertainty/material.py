@@ -18,6 +18,8 @@ from ..sampling.evaluate import evaluate_set, uses_exact
 from ..spec import FALLBACK_TOLERANCE, as_spec
 from .posterior import INFORMATION_GAIN_COLUMNS, information_gain_frame, subset_posteriors
 from .ranking import RANKING_COLUMNS, next_measurement_advice, rank_observable_sets
+from ..sampling.residuals import PLAUSIBLE_DEFINITION
+from .recommended import recommended_point, uninformative_observables
 from .robust import ROBUST_COLUMNS, robust_identifiability_frame
 from .sigma import measurement_sigmas
 from ..tolerance import band_scale, has_own_tolerance, plausible_basis, scenario_bands, scenario_surrogates
@@ -57,11 +59,15 @@ class MaterialUncertainty:
     factor_labels: dict[str, str] = field(default_factory=dict)
     scenario_labels: dict[str, str] = field(default_factory=dict)
     unreachable: tuple[str, ...] = ()  # observable sets (d5+d10) with a target out of reach
+    recommended: dict | None = None  # the most robust point of the widest scenario's plausible set
+    uninformative: dict[str, str] = field(default_factory=dict)  # observable -> why it says nothing
 
     @property
     def summary(self) -> dict:
-        """``uncertainty/{material}.json``: the next-measurement advice and the notes on sizes and sigmas."""
-        return {"advice": self.advice, "notes": self.notes}
+        """``uncertainty/{material}.json``: the next-measurement advice, the notes on sizes and sigmas, the
+        plausible-set definition, the recommended point and the uninformative observables."""
+        return {"advice": self.advice, "notes": self.notes, "plausible_definition": PLAUSIBLE_DEFINITION,
+                "recommended": self.recommended, "uninformative": dict(self.uninformative)}
 
     def sweep_figure(self, title: str):
         return tolerance_sweep_figure(self.sweep, title, factor_labels=self.factor_labels,
@@ -151,7 +157,15 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
     if not scenarios:
         notes.append(f"No scenarios configured: ranking and default sigma use tolerance {FALLBACK_TOLERANCE:g}.")
     empty_robust = pd.DataFrame(columns=ROBUST_COLUMNS)
+    widest = max(spec.scenarios, key=lambda sc: len(sc.observables)) if spec.scenarios else None
+    recommended = (recommended_point(surrogates, spec, widest, z, n=sizes["robust"])
+                   if widest is not None and all(o in surrogates for o in widest.observables) else None)
+    uninformative = uninformative_observables(ranking)
+    if uninformative:
+        notes.append("Uninformative observables: " + "; ".join(f"{o}: {why}" for o, why in uninformative.items())
+                     + ".")
     return MaterialUncertainty(
+        recommended=recommended, uninformative=uninformative,
         robust=robust if robust is not None else empty_robust,
         sweep=sweep if sweep is not None else pd.DataFrame(columns=SWEEP_COLUMNS),
         information_gain=information_gain,
