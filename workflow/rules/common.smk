@@ -194,6 +194,7 @@ def report_tables():
     out += [f"{RESULTS}/uncertainty/{m}.json" for m in MATERIALS]
     out += [f"{RESULTS}/criticism/{m}.json" for m in MATERIALS]
     out += next_wave_tables()
+    out += [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]  # rule story
     return out
 
 
@@ -276,6 +277,7 @@ def all_outputs():
     out += SUMMARY_TABLES
     out += [f"{RESULTS}/criticism/{m}" for m in MATERIALS]
     out += next_wave_tables()
+    out += [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]  # rule story
     out.append(f"{RESULTS}/report/report.html")
     if config.get("published"):
         out.append(f"{RESULTS}/tables/paper_comparison.csv")

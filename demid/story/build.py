@@ -1,0 +1,47 @@
+"""The verdict and advice tables of a study, from the files of its results tree."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pandas as pd
+
+from .advice import ADVICE_COLUMNS, StudyAdvice, material_advice
+from .verdicts import VERDICT_COLUMNS, verdict_frame
+
+
+def _json(path) -> dict:
+    return json.loads(Path(path).read_text(encoding="utf-8")) if path and Path(path).is_file() else {}
+
+
+def study_story(specs: dict, files: dict) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """``(verdicts, advice)`` of every material.
+
+    ``specs``: material -> :class:`~demid.spec.MaterialSpec`.  ``files``: ``identifiability``, ``robust``,
+    ``ranking`` (the cross-material CSV tables), and per material (dicts material -> path) ``tables``
+    (validated parquet), ``criticism`` and ``uncertainty`` (JSON summaries); optional ``next_wave_value``
+    and ``next_wave_reasons`` (JSON, materials with ``next_runs``).
+    """
+    from ..data import implausible_targets
+    from ..io import read_parquet
+
+    ident = pd.read_csv(files["identifiability"])
+    robust = pd.read_csv(files["robust"])
+    ranking = pd.read_csv(files["ranking"])
+    value = _json(files.get("next_wave_value"))
+    reasons = _json(files.get("next_wave_reasons"))
+    verdicts, advice = [], []
+    for m, spec in specs.items():
+        uncertainty = _json(files["uncertainty"][m])
+        uninformative = uncertainty.get("uninformative") or {}
+        frame = verdict_frame(spec, ident[ident["material"] == m], robust[robust["material"] == m], uninformative)
+        verdicts.append(frame)
+        table = read_parquet(files["tables"][m])
+        advice += material_advice(spec, frame, ranking=ranking[ranking["material"] == m],
+                                  criticism=_json(files["criticism"][m]),
+                                  implausible=implausible_targets(table, spec.targets), uninformative=uninformative,
+                                  wave_value=value.get(m), wave_reason=reasons.get(m))
+    verdict_table = pd.concat(verdicts, ignore_index=True) if verdicts else pd.DataFrame(columns=VERDICT_COLUMNS)
+    advice_table = StudyAdvice(advice).to_frame() if advice else pd.DataFrame(columns=ADVICE_COLUMNS)
+    return verdict_table, advice_table
