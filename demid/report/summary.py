@@ -149,7 +149,7 @@ def criticism_lines(info: dict, spec) -> list[str]:
                          f"({'within' if level2['reference_max_error'] <= level2['tolerance'] else 'outside'} "
                          f"the {tol:g} % tolerance).")
         on_bound = {f: v for f, v in (level2.get("best_point_at_bound") or {}).items() if v != "none"}
-        if on_bound:
+        if on_bound and not level2["feasible"]:  # where every target is met the best point is one of many
             lines.append("The best point lies on the search range's " + "; ".join(
                 f"{'lower and upper' if v == 'both' else v} bound of {spec.factor(f).label}" for f, v in on_bound.items())
                 + ": the best match may lie outside the searched range.")

@@ -43,7 +43,8 @@ def _reason(verdict: str, width: float, strict_verdict: str, strict_width: float
         else:
             shown = f"[{strict[0]:.4g}, {strict[1]:.4g}], {_pct(strict_width)}"
             text += (f"; identified if surrogate and measurements were exact (strict interval {shown})"
-                     if strict_verdict == "identified" else f"; strictly {strict_verdict} ({shown})")
+                     if strict_verdict == "identified" else f"; strictly (surrogate and measurements exact): {strict_verdict}, "
+                f"{shown}")
     return text
 
 
