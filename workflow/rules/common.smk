@@ -297,3 +297,22 @@ def cancel_scheduler_timers():
     for thread in threading.enumerate():
         if isinstance(thread, threading.Timer):
             thread.cancel()
+
+
+# Inputs and outputs of the story step (workflow/rules/story.smk), verdicts and advice computed once.
+def story_inputs():
+    out = dict(
+        identifiability=f"{RESULTS}/tables/identifiability.csv",
+        robust=f"{RESULTS}/tables/robust_identifiability.csv",
+        ranking=f"{RESULTS}/tables/observable_ranking.csv",
+        tables=[f"{RESULTS}/validated/{m}.parquet" for m in MATERIALS],
+        criticism=[f"{RESULTS}/criticism/{m}.json" for m in MATERIALS],
+        uncertainty=[f"{RESULTS}/uncertainty/{m}.json" for m in MATERIALS],
+    )
+    if next_wave_materials():
+        out["next_wave_value"] = f"{RESULTS}/next_wave/value.json"
+        out["next_wave_reasons"] = f"{RESULTS}/next_wave/reasons.json"
+    return out
+
+
+STORY_TABLES = [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]
