@@ -472,8 +472,8 @@ class ReportSections:
         advice = " ".join(StudyAdvice.from_frame(self._csv("advice.csv")).texts(m, NEXT_WAVE_KINDS))
         sub = runs[runs["material"] == m].dropna(axis=1, how="all")
         return [self._md("### What to simulate next\n\n" + reason + (" " + advice if advice else "")
-                         + " To simulate them, study the next domain (tables/next_domain.csv) with the earlier runs "
-                         "inside it plus these (`design: {type: custom}`).\n\n"
+                         + " Once simulated, they are studied in the next domain (tables/next_domain.csv) with the "
+                         "earlier runs inside it (`design: {type: custom}`).\n\n"
                          + markdown_table(sub.drop(columns="material")))]
 
     def response_surfaces(self, m: str) -> list:

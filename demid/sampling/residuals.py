@@ -26,10 +26,10 @@ def relative_residuals(predictions: dict[str, np.ndarray], targets: dict[str, fl
 # =========================================================================== robust admissibility
 #: The plausible set in words, for the report and the tables' notes (one definition, used for every verdict).
 PLAUSIBLE_DEFINITION = (
-    "x is plausible when, for every observable k, |ŷ_k(x) − y_k*| ≤ z·√(se_k(x)² + σ_k² + δ_k²) "
+    "x is plausible when, for every observable k, |ŷₖ(x) − yₖ*| ≤ z·√(seₖ(x)² + σₖ² + δₖ²) "
     "(history matching: se = the surrogate's standard error of its mean prediction, σ = the measurement "
     "standard deviation, δ = an optional model-discrepancy standard deviation). Where a response declares "
-    "no σ, its tolerance band is taken as the measurement band: σ_k = ε_k·|y_k*|/z, so that without surrogate "
+    "no σ, its tolerance band is taken as the measurement band: σₖ = εₖ·|yₖ*|/z, so that without surrogate "
     "error the plausible band is the tolerance itself and the strict set lies inside the plausible set. The "
     "tolerance and an assumed σ are never added together.")
 

@@ -74,7 +74,9 @@ def uninformative_observables(ranking, labels: dict | None = None) -> dict[str, 
         share = float(row["feasible_fraction_pct"])
         if share >= 100 * UNINFORMATIVE_FRACTION:
             o = str(row["observables"])
+            bits = float(row.get("information_gain_bits", float("nan")))
+            gain = f" ({bits:.2f} bit: the likelihood only tilts across the range)" if np.isfinite(bits) else ""
             out[o] = (f"its tolerance band covers (almost) its whole simulated range: alone it leaves {share:.3g} % of "
                       f"the search range admissible, so it removes less than {100 - 100 * UNINFORMATIVE_FRACTION:g} % "
-                      f"and its information gain is ~0")
+                      f"and its information gain is ~0{gain}")
     return out
