@@ -97,7 +97,8 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
     sizes = {**recommended_sizes(domain.dim), **(sizes or {})}
     tolerance = spec.reference_tolerance
     observables = list(targets)
-    post_sigma, post_basis = measurement_sigmas(spec.sigma_config, observables, targets, tolerance)
+    # the posterior's likelihood width is the plausible set's measurement band: configured, or tolerance / z
+    post_sigma, post_basis = measurement_sigmas(spec.sigma_config, observables, targets, tolerance, z)
     labels = {r: spec.response_labels[r] for r in observables}
     factor_labels = {f.name: axis_label(f) for f in spec.factors}  # mathtext with unit, for the figures
     # an observable with its own tolerance is judged by it: rescaled residual surrogates (demid.tolerance)
