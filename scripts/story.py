@@ -11,7 +11,7 @@ inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: 
 specs = {spec.name: spec for spec in params.specs}
 per_material = {name: dict(zip(specs, getattr(inp, name))) for name in ("tables", "criticism", "uncertainty")}
 files = {"identifiability": inp.identifiability, "robust": inp.robust, "ranking": inp.ranking, **per_material,
-         "next_wave_value": inp.get("next_wave_value"), "next_wave_reasons": inp.get("next_wave_reasons")}
+         "next_wave_value": inp.get("next_wave_value")}
 verdicts, advice = study_story(specs, files)
 write_csv(verdicts, out.verdicts)
 write_csv(advice, out.advice)

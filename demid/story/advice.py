@@ -62,10 +62,10 @@ def _bound_text(f, side: str) -> str:
 
 
 def _check_targets(spec, implausible: dict, ranking) -> list[AdviceItem]:
+    from ..data import power_of_ten_repair
+
     items = []
     for r, found in implausible.items():
-        from ..data import power_of_ten_repair
-
         key = f"materials.{spec.name}.responses.{r}.target"
         head = (f"Check the target of {_label(spec, r)} (config key {key}): {spec.targets[r]:.6g} lies farther from "
                 f"every simulated value ({found['lo']:.4g} to {found['hi']:.4g}) than the simulated range itself")
@@ -154,7 +154,7 @@ def _widen(spec, verdicts: pd.DataFrame, level2: dict, implausible: dict) -> lis
     return items
 
 
-def _next_wave(spec, value: dict | None, reason: str | None, best_observable: str) -> list[AdviceItem]:
+def _next_wave(spec, value: dict | None, best_observable: str) -> list[AdviceItem]:
     if not value:
         return []
     label = next((sc.label for sc in spec.scenarios if sc.name == value["scenario"]), value["scenario"])
@@ -176,8 +176,7 @@ def _next_wave(spec, value: dict | None, reason: str | None, best_observable: st
 
 def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | None = None,
                     criticism: dict | None = None, implausible: dict | None = None,
-                    uninformative: dict | None = None, wave_value: dict | None = None,
-                    wave_reason: str | None = None) -> list[AdviceItem]:
+                    uninformative: dict | None = None, wave_value: dict | None = None) -> list[AdviceItem]:
     """Every piece of advice of one material, in the summary's order.
 
     ``verdicts``: its rows of :func:`~demid.story.verdicts.verdict_frame`; ``criticism``: its
@@ -191,4 +190,4 @@ def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | Non
     best = next((i.observable for i in add if i.observable), "")
     return (checks + _recalibrate(spec, criticism.get("level1") or {}, level2, {i.observable for i in checks})
             + add + _widen(spec, verdicts, level2, implausible)
-            + _next_wave(spec, wave_value, wave_reason, ", ".join(_label(spec, o) for o in best.split("+") if o)))
+            + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o)))

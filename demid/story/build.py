@@ -21,7 +21,7 @@ def study_story(specs: dict, files: dict) -> tuple[pd.DataFrame, pd.DataFrame]:
     ``specs``: material -> :class:`~demid.spec.MaterialSpec`.  ``files``: ``identifiability``, ``robust``,
     ``ranking`` (the cross-material CSV tables), and per material (dicts material -> path) ``tables``
     (validated parquet), ``criticism`` and ``uncertainty`` (JSON summaries); optional ``next_wave_value``
-    and ``next_wave_reasons`` (JSON, materials with ``next_runs``).
+    (JSON, materials with ``next_runs``).
     """
     from ..data import implausible_targets
     from ..io import read_parquet
@@ -30,7 +30,6 @@ def study_story(specs: dict, files: dict) -> tuple[pd.DataFrame, pd.DataFrame]:
     robust = pd.read_csv(files["robust"])
     ranking = pd.read_csv(files["ranking"])
     value = _json(files.get("next_wave_value"))
-    reasons = _json(files.get("next_wave_reasons"))
     verdicts, advice = [], []
     for m, spec in specs.items():
         uncertainty = _json(files["uncertainty"][m])
@@ -41,7 +40,7 @@ def study_story(specs: dict, files: dict) -> tuple[pd.DataFrame, pd.DataFrame]:
         advice += material_advice(spec, frame, ranking=ranking[ranking["material"] == m],
                                   criticism=_json(files["criticism"][m]),
                                   implausible=implausible_targets(table, spec.targets), uninformative=uninformative,
-                                  wave_value=value.get(m), wave_reason=reasons.get(m))
+                                  wave_value=value.get(m))
     verdict_table = pd.concat(verdicts, ignore_index=True) if verdicts else pd.DataFrame(columns=VERDICT_COLUMNS)
     advice_table = StudyAdvice(advice).to_frame() if advice else pd.DataFrame(columns=ADVICE_COLUMNS)
     return verdict_table, advice_table

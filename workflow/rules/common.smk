@@ -311,7 +311,6 @@ def story_inputs():
     )
     if next_wave_materials():
         out["next_wave_value"] = f"{RESULTS}/next_wave/value.json"
-        out["next_wave_reasons"] = f"{RESULTS}/next_wave/reasons.json"
     return out
 
 
