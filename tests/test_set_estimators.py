@@ -95,7 +95,7 @@ def test_plausible_fraction_ignores_strict_predictions():
     for given in (None, preds):
         est = fraction_with_error({"y": line}, SQUARE, ["y"], {"y": 0.5}, 0.2, 21, z=0.5, sigma={"y": 0.3},
                                   grid_predictions=given)
-        assert est.fraction == pytest.approx(0.3, abs=1e-9)
+        assert est.fraction == pytest.approx(0.3, abs=1e-5)  # the strict 0.2 is far off
 
 
 # --------------------------------------------------------------------------- Sobol estimator
