@@ -288,3 +288,21 @@ def test_a_study_with_a_unit_slip_and_a_next_wave_gets_one_consistent_story(stud
     stop = advice.loc[advice["kind"] == "stop", "text"].iloc[0]
     assert stop in _markdown(sections.next_wave("m")) and stop in _markdown(sections.summary())
     assert (study_dir / "results" / "tables" / "next_runs.csv").is_file()
+
+
+def test_own_tolerance_keys_are_validated_with_the_key_named():
+    from pathlib import Path
+
+    import yaml
+
+    from demid.config import check_semantics, validate_schema
+    from demid.errors import InputError
+
+    raw = yaml.safe_load((Path(__file__).resolve().parent.parent / "config.yaml").read_text(encoding="utf-8"))
+    raw["materials"]["mortar"]["responses"]["d5"].update(tolerance=0.01, tolerance_abs=2.0)
+    with pytest.raises(InputError, match=r"config key materials\.mortar\.responses\.d5: both tolerance and "
+                                         r"tolerance_abs"):
+        check_semantics(validate_schema(raw))
+    raw["materials"]["mortar"]["responses"]["d5"].pop("tolerance")
+    spec = MaterialSpec.from_config("mortar", validate_schema(raw))
+    assert spec.response("d5").tolerance_abs == 2.0 and spec.response("d10").tolerance is None
