@@ -201,7 +201,7 @@ class ReportSections:
 
     def _recommended_lines(self, spec, recommended: dict | None, verdicts: pd.DataFrame, level2: dict) -> list[str]:
         """The most robust plausible point with each factor's plausible interval beside it, to the digits that
-        interval supports; plainly said when the set is wide."""
+        interval supports; plainly said when the set is wide, or when no point meets every target."""
         import numpy as np
 
         from ..uncertainty.recommended import digits_for
@@ -212,35 +212,51 @@ class ReportSections:
         scenario = next((sc for sc in spec.scenarios if sc.name == recommended["scenario"]), None)
         label = scenario.label if scenario else recommended["scenario"]
         rows = verdicts[verdicts["scenario"] == recommended["scenario"]].set_index("factor") if len(verdicts) else None
+        lines = []
+        strict_empty = rows is not None and len(rows) and rows["strict_lower"].isna().all()
+        if strict_empty:
+            lines.append(f"With every observable of *{label}* no point of the search range is admissible, so there "
+                         "are no admissible intervals.")
         if not recommended["plausible"]:
             over = ", ".join(spec.response_labels.get(o, o) for o in level2.get("observables", []))
-            text = (f"**No parameter set is plausible** for *{label}*: at every point some observable lies outside its "
-                    f"plausible band (smallest implausibility {recommended['implausibility']:.2f} > 1).")
+            text = (f"**No parameter set meets every target.** No point is plausible for *{label}* either: at every "
+                    f"point some observable lies outside its plausible band (smallest implausibility "
+                    f"{recommended['implausibility']:.3g} > 1).")
             if level2.get("best_point"):
                 best = level2["best_point"]
                 point = ", ".join(f"{spec.factor(f).label} = {best[f]:.4g}" for f in spec.factor_names if f in best)
-                text += (f" The closest point (smallest largest relative error over {over}) is {point}, and it still "
-                         f"misses by {100 * level2['best_max_error']:.2f} %; see the level-2 criticism below.")
-            return [text]
-        shown, wide = [], []
+                text += (f" The closest point (smallest largest relative error over {over}) is {point}; see the "
+                         "level-2 criticism and the next step below.")
+            return [text] + lines
+        shown, wide, unresolved = [], [], []
         for f in spec.factors:
             value = recommended["point"][f.name]
             lo = hi = float("nan")
             if rows is not None and f.name in rows.index:
                 lo, hi = float(rows.loc[f.name, "plausible_lower"]), float(rows.loc[f.name, "plausible_upper"])
-                if rows.loc[f.name, "verdict"] in ("unresolved", "bounded") or str(
-                        rows.loc[f.name, "verdict"]).startswith("cut"):
+                verdict = str(rows.loc[f.name, "verdict"])
+                if verdict != "identified":
                     wide.append(f.label)
+                if verdict == "unresolved":
+                    unresolved.append(f.label)
             digits = digits_for(hi - lo)
             unit = f" {unit_text(f.unit)}" if f.unit != "-" else ""
             interval = f" (plausible {lo:.{digits}f}–{hi:.{digits}f})" if np.isfinite(lo) else ""
             shown.append(f"{f.label} = {value:.{digits}f}{unit}{interval}")
-        text = (f"**Recommended parameter set** (the point of the plausible set of *{label}* with the largest margin "
-                f"to every band, implausibility {recommended['implausibility']:.2f}): " + "; ".join(shown) + ".")
+        head = ("**Recommended parameter set**" if level2.get("feasible", True) or not strict_empty else
+                "**No parameter set meets every target** within the tolerance; counting the surrogate's and the "
+                "measurements' uncertainty, the most plausible point")
+        text = (f"{head} (the point of the plausible set of *{label}* with the largest margin to every band, "
+                f"implausibility {recommended['implausibility']:.2f}): " + "; ".join(shown) + ".")
+        if unresolved:
+            names = ", ".join(unresolved[:-1]) + " and " + unresolved[-1] if len(unresolved) > 1 else unresolved[0]
+            them = "it" if len(unresolved) == 1 else "each"
+            text += (f" *{label}* does not pin down {names}: its plausible set spans (almost) the whole search range "
+                     f"of {them}.")
         if wide:
             text += (f" The plausible set is wide in {', '.join(wide)}: any point of those intervals matches the "
                      "measurements as well, so this point is one choice among many.")
-        return [text]
+        return [text] + lines
 
     def glossary(self) -> list:
         return [self._md(
