@@ -306,3 +306,13 @@ def test_own_tolerance_keys_are_validated_with_the_key_named():
     raw["materials"]["mortar"]["responses"]["d5"].pop("tolerance")
     spec = MaterialSpec.from_config("mortar", validate_schema(raw))
     assert spec.response("d5").tolerance_abs == 2.0 and spec.response("d10").tolerance is None
+
+
+def test_the_ranking_shows_an_uninformative_observables_gain_as_about_zero():
+    from demid.report.sections import ranking_display
+
+    ranking = pd.DataFrame({"rank": [1, 2], "observables": ["y", "rho"], "information_gain_bits": [3.2, 0.18],
+                            "feasible_fraction_pct": [4.0, 100.0]})
+    shown = ranking_display(ranking, {"rho": "its band covers its whole simulated range"})
+    assert list(shown["information gain [bit]"]) == [3.2, "~0 (0.18; uninformative)"]
+    assert list(ranking_display(ranking)["information gain [bit]"]) == [3.2, 0.18]

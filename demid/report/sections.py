@@ -44,14 +44,20 @@ RANKING_HEADERS = {
 }
 
 
-def ranking_display(ranking: pd.DataFrame) -> pd.DataFrame:
-    """observable_ranking.csv rows for a reader: plain headers with units, '–' where there is no smaller set."""
+def ranking_display(ranking: pd.DataFrame, uninformative: dict | None = None) -> pd.DataFrame:
+    """observable_ranking.csv rows for a reader: plain headers with units, '–' where there is no smaller set;
+    an uninformative observable's own gain reads '~0' with its value beside it."""
     columns = [c for c in RANKING_HEADERS if c in ranking.columns]
     if "targets_reachable" in columns and ranking["targets_reachable"].astype(str).str.lower().eq("true").all():
         columns.remove("targets_reachable")  # a column of "True" only says something when one is False
     shown = ranking[columns].rename(columns=RANKING_HEADERS)
     if "best smaller set" in shown:
         shown["best smaller set"] = shown["best smaller set"].replace({"(none)": "–"})
+    gain = RANKING_HEADERS["information_gain_bits"]
+    if uninformative and gain in shown:
+        shown[gain] = shown[gain].astype(object)
+        for i in ranking.index[ranking["observables"].isin(list(uninformative))]:
+            shown.loc[i, gain] = f"~0 ({float(ranking.loc[i, 'information_gain_bits']):.2f}; uninformative)"
     return shown
 
 
@@ -466,7 +472,7 @@ class ReportSections:
                                      "last, without a gain: their "
                                      "posterior measures a discrepancy between simulation and experiment, not "
                                      "information" if out_of_reach else "") + ".\n\n"
-                                  + markdown_table(ranking_display(sub))
+                                  + markdown_table(ranking_display(sub, info.get("uninformative")))
                                   + ("\n\n" + info["advice"] if info.get("advice") else "")))
         parts.append(self._image(self.root / "figures" / f"posterior_{m}.png",
                                  f"Marginal posterior densities of the factors of {self._label(m)}, one curve per observable set"))
