@@ -284,6 +284,10 @@ def test_a_study_with_a_unit_slip_and_a_next_wave_gets_one_consistent_story(stud
     (check_row,) = advice[advice["kind"] == "check_target"].itertuples()
     assert check_row.observable == "y2" and "×1000 → 95 lies inside the simulated range" in check_row.text
     assert list(advice.loc[advice["kind"].isin(["stop", "next_runs"]), "kind"]) == ["stop"]
+    verdicts = pd.read_csv(study_dir / "results" / "tables" / "verdicts.csv")
+    both = verdicts[verdicts["scenario"] == "both"]
+    assert (both["verdict"] == "no admissible point").all()
+    assert both["reason"].str.contains("the target of y2 lies far outside every simulated value").all()
     _, sections = _report_texts(study_dir, cfg_path)
     stop = advice.loc[advice["kind"] == "stop", "text"].iloc[0]
     assert stop in _markdown(sections.next_wave("m")) and stop in _markdown(sections.summary())

@@ -34,12 +34,14 @@ def study_story(specs: dict, files: dict) -> tuple[pd.DataFrame, pd.DataFrame]:
     for m, spec in specs.items():
         uncertainty = _json(files["uncertainty"][m])
         uninformative = uncertainty.get("uninformative") or {}
-        frame = verdict_frame(spec, ident[ident["material"] == m], robust[robust["material"] == m], uninformative)
-        verdicts.append(frame)
         table = read_parquet(files["tables"][m])
+        implausible = implausible_targets(table, spec.targets)
+        frame = verdict_frame(spec, ident[ident["material"] == m], robust[robust["material"] == m], uninformative,
+                              implausible)
+        verdicts.append(frame)
         advice += material_advice(spec, frame, ranking=ranking[ranking["material"] == m],
                                   criticism=_json(files["criticism"][m]),
-                                  implausible=implausible_targets(table, spec.targets), uninformative=uninformative,
+                                  implausible=implausible, uninformative=uninformative,
                                   wave_value=value.get(m))
     verdict_table = pd.concat(verdicts, ignore_index=True) if verdicts else pd.DataFrame(columns=VERDICT_COLUMNS)
     advice_table = StudyAdvice(advice).to_frame() if advice else pd.DataFrame(columns=ADVICE_COLUMNS)

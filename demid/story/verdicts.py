@@ -49,13 +49,15 @@ def _reason(verdict: str, width: float, strict_verdict: str, strict_width: float
 
 
 def verdict_frame(spec, identifiability: pd.DataFrame, robust: pd.DataFrame,
-                  uninformative: dict[str, str] | None = None) -> pd.DataFrame:
+                  uninformative: dict[str, str] | None = None, implausible=()) -> pd.DataFrame:
     """One row per scenario x factor of one material (:data:`VERDICT_COLUMNS`).
 
     ``identifiability``: the material's rows of ``identifiability.csv`` (strict, with ``at_bound``);
     ``robust``: its rows of ``robust_identifiability.csv`` (``robust_*`` = plausible);
     ``uninformative``: observable -> reason (:func:`~demid.uncertainty.recommended.uninformative_observables`).
-    A scenario whose every observable is uninformative gets that verdict.
+    A scenario whose every observable is uninformative gets that verdict.  ``implausible``: observables whose
+    target lies far outside every simulated value (:func:`~demid.data.implausible_targets`): an empty set
+    with one of them is put down to that target.
     """
     uninformative = uninformative or {}
     rows = []
@@ -77,6 +79,10 @@ def verdict_frame(spec, identifiability: pd.DataFrame, robust: pd.DataFrame,
             else:
                 verdict, width = factor_verdict(p_lo, p_hi, f.lower, f.upper, f.log)
                 reason = _reason(verdict, width, strict_verdict, strict_width, (s_lo, s_hi))
+                slipped = [spec.response_labels.get(o, o) for o in sc.observables if o in implausible]
+                if verdict == "no admissible point" and slipped:
+                    reason = (f"no point of the search range is plausible: the target of {', '.join(slipped)} lies "
+                              "far outside every simulated value (check it: see the next step)")
             rows.append({"material": spec.name, "scenario": sc.name, "factor": f.name, "strict_lower": s_lo,
                          "strict_upper": s_hi, "plausible_lower": p_lo, "plausible_upper": p_hi,
                          "verdict": verdict, "reason": reason})
