@@ -18,6 +18,7 @@ from .sampling import (MAX_GRID_DIM, AdmissibleSet, CellCount, Domain, admissibl
                        cell_count, evaluate_set, plane_band_fraction, predict_grid, relative_residuals,
                        sobol_admissible_set)
 from .spec import as_spec
+from .tolerance import scenario_grid, scenario_surrogates
 
 if TYPE_CHECKING:
     from .surrogate import Surrogate
@@ -38,7 +39,9 @@ def evaluate_scenarios(surrogates: dict[str, Surrogate], material, n: int | None
     domain, targets = spec.domain, spec.targets
     frames, sets = [], {}
     for scen in spec.scenarios:
-        result = evaluate_set(surrogates, domain, scen.observables, targets, scen.tolerance, n, grid_predictions,
+        # an observable with its own tolerance is judged by it (demid.tolerance)
+        result = evaluate_set(scenario_surrogates(surrogates, spec, scen.tolerance), domain, scen.observables, targets,
+                              scen.tolerance, n, scenario_grid(grid_predictions, spec, scen.tolerance),
                               grid=True, reference=spec.reference_point or None)
         frame = result.to_frame()
         frame.insert(0, "scenario", scen.name)

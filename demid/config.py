@@ -311,6 +311,10 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
             raise InputError(f"config key {key}.responses.{both}: both sigma ({responses[both]['sigma']:g}) and "
                              f"sigma_rel ({responses[both]['sigma_rel']:g}) are given; keep the one the measurement "
                              "reports", source=source)
+        both = next((r for r, resp in responses.items() if "tolerance" in resp and "tolerance_abs" in resp), None)
+        if both:
+            raise InputError(f"config key {key}.responses.{both}: both tolerance and tolerance_abs are given; keep "
+                             "one", source=source)
         if not mat.get("scenarios"):
             targeted = [r for r, resp in responses.items() if "target" in resp]
             raise InputError(f"config key {key}.scenarios: no scenario; admissible sets need at least one, e.g. "

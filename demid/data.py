@@ -689,14 +689,15 @@ def _odd_level_values(table: pd.DataFrame, factors: list[str], snapped: np.ndarr
     return out
 
 
-def far_target_warnings(table: pd.DataFrame, targets: dict, src: str) -> list[str]:
+def implausible_targets(table: pd.DataFrame, targets: dict) -> dict[str, dict]:
     """Targets farther outside every simulated value of their response than the simulated values spread
-    (more than one range beyond the nearest run), naming a one-keystroke slip that would bring the target
-    among the simulated values (264 for 26.4).  A constant column is warned of on its own."""
-    from .transcription.typos import SLIP_WORDS, single_cell_slips
-
-    out = []
+    (more than one range beyond the nearest run): per response ``lo``, ``hi`` (the simulated range) and,
+    where a power of ten brings the target inside that range (a unit or typing slip: 1.505 g cm^-3 for
+    1505 kg m^-3), ``factor`` and ``repaired``."""
+    out = {}
     for response, target in targets.items():
+        if response not in table:
+            continue
         y = table[response].to_numpy(dtype=float)
         y = y[np.isfinite(y)]
         if not len(y):
@@ -704,14 +705,48 @@ def far_target_warnings(table: pd.DataFrame, targets: dict, src: str) -> list[st
         lo, hi = float(y.min()), float(y.max())
         if lo == hi or lo - (hi - lo) <= target <= hi + (hi - lo):
             continue
+        found = {"lo": lo, "hi": hi, "factor": None, "repaired": None}
+        for power in sorted((p for p in range(-6, 7) if p), key=abs):
+            value = float(target) * 10.0 ** power
+            if lo <= value <= hi:
+                found.update(factor=10.0 ** power, repaired=value)
+                break
+        out[response] = found
+    return out
+
+
+def power_of_ten_repair(found: dict) -> str:
+    """``×1000 → 1505 lies inside the simulated range (1474 to 1534)`` for one implausible target."""
+    factor = found["factor"]
+    times = f"×{factor:g}" if factor >= 1 else f"÷{1 / factor:g}"
+    return (f"{times} → {found['repaired']:.6g} lies inside the simulated range ({found['lo']:.4g} to "
+            f"{found['hi']:.4g})")
+
+
+def far_target_warnings(table: pd.DataFrame, targets: dict, src: str, material: str | None = None) -> list[str]:
+    """Targets farther outside every simulated value of their response than the simulated values spread
+    (more than one range beyond the nearest run), naming the config key, a power of ten (a unit slip) or a
+    one-keystroke slip that would bring the target among the simulated values (264 for 26.4).  A constant
+    column is warned of on its own."""
+    from .transcription.typos import SLIP_WORDS, single_cell_slips
+
+    out = []
+    for response, found in implausible_targets(table, targets).items():
+        target, lo, hi = targets[response], found["lo"], found["hi"]
+        key = f" (config key materials.{material}.responses.{response}.target)" if material else ""
         where = (f"{src}, column '{response}': the target {target:.6g} lies far outside every simulated value "
-                 f"({lo:.4g} to {hi:.4g})")
+                 f"({lo:.4g} to {hi:.4g}){key}")
         slips = [(value, kind) for kind, _, value in single_cell_slips(repr(float(target)))
                  if kind in _BOUND_SLIPS and lo <= value <= hi]
+        repair = f"; repair: {power_of_ten_repair(found)}" if found["factor"] is not None else ""
         if slips:
             value, kind = slips[0]
-            out.append(f"{where} and looks like {value:.6g} with {SLIP_WORDS[kind]}; check the target. As given, "
-                       "no simulated setting comes near it and level 2 will report a discrepancy.")
+            out.append(f"{where} and looks like {value:.6g} with {SLIP_WORDS[kind]}{repair}; check the target. As "
+                       "given, no simulated setting comes near it and level 2 will report a discrepancy.")
+        elif repair:
+            out.append(f"{where} and looks like {found['repaired']:.6g} in another unit (or with the decimal point "
+                       f"shifted){repair}; check the target's unit. As given, no simulated setting comes near it "
+                       "and level 2 will report a discrepancy.")
         else:
             out.append(f"{where}; no simulated setting comes near it, so level 2 will report a discrepancy "
                        "between simulation and measurement, not a calibration.")
@@ -865,7 +900,7 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
             warnings.append(f"{src}, column '{r}': the same value ({values[0]:g}) in every run, so it cannot "
                             "identify any factor (a column filled in by mistake?)")
     targets = {r: float(c["target"]) for r, c in mat_cfg["responses"].items() if c.get("target") is not None}
-    warnings.extend(far_target_warnings(table, targets, src))
+    warnings.extend(far_target_warnings(table, targets, src, material))
     failed: dict[str, list] = {}
     for r in responses:
         ok = np.isfinite(table[r].to_numpy())

@@ -59,6 +59,7 @@ class NextWave:
     domain: pd.DataFrame
     runs: pd.DataFrame
     reason: str
+    value: dict | None = None  # what the wave can still buy (demid.wave_value.expected_contraction)
 
 
 def refocus_scenario(spec: MaterialSpec) -> str:
@@ -221,13 +222,13 @@ def plausible_points(surrogates: dict, spec: MaterialSpec, scenario: str, z: flo
                      lo: np.ndarray, hi: np.ndarray, n: int = 41) -> np.ndarray:
     """Points of an n^k grid of the box (search units) in the plausible set of the scenario."""
     from .sampling import plausibility_fields
-    from .uncertainty.sigma import measurement_sigmas
+    from .tolerance import scenario_bands, scenario_surrogates
 
     sc = next(s for s in spec.scenarios if s.name == scenario)
     targets, domain = spec.targets, spec.domain
     observables = list(sc.observables)
-    sigma, _ = measurement_sigmas(spec.sigma_config, observables, targets)
-    fields = plausibility_fields(surrogates, observables, targets, sc.tolerance, z, sigma)
+    fields = plausibility_fields(scenario_surrogates(surrogates, spec, sc.tolerance), observables, targets,
+                                 sc.tolerance, z, scenario_bands(spec, observables, sc.tolerance))
     k = len(lo)
     n = n if k <= 2 else max(5, int(round(4096 ** (1 / k))))
     axes = [np.linspace(a, b, n) for a, b in zip(lo, hi)]
@@ -311,11 +312,15 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec,
                + (f", {n_box} off the plausible set where its {len(cand_u)} plausible grid point(s) cannot determine "
                   f"the quadratic" if n_box else "")
                + (f", {n_sep} to separate aliased terms the criticism found" if n_sep else "") + ".")
-    return NextWave(dom_frame, runs, reason)
+    from .wave_value import expected_contraction
+
+    refocus = next(sc for sc in spec.scenarios if sc.name == scenario)
+    value = expected_contraction(surrogates, spec, refocus, z, points) if z > 0 else None
+    return NextWave(dom_frame, runs, reason, value)
 
 
-def plan_materials(specs: dict, frames: dict, *, z: float) -> tuple[pd.DataFrame, pd.DataFrame, dict]:
-    """:func:`plan_next_wave` for every material given; the two long tables and the reasons.
+def plan_waves(specs: dict, frames: dict, *, z: float) -> dict[str, NextWave]:
+    """:func:`plan_next_wave` for every material given.
 
     ``specs``: material -> :class:`~demid.spec.MaterialSpec` (or its ``materials`` entry).
     ``frames``: ``tables``, ``fits``, ``robust``, ``findings`` -> material -> frame (the pipeline's
@@ -331,6 +336,12 @@ def plan_materials(specs: dict, frames: dict, *, z: float) -> tuple[pd.DataFrame
             table = table[table["status"] != "failed"]
         surrogates = surrogates_from_frame(frames["fits"][m], spec.factor_names)
         waves[m] = plan_next_wave(m, table, surrogates, spec, frames["robust"][m], frames["findings"][m], z=z)
+    return waves
+
+
+def tabulate_waves(specs: dict, waves: dict[str, NextWave]) -> tuple[pd.DataFrame, pd.DataFrame, dict]:
+    """The two long tables (next domain, next runs) and the reasons of the planned waves."""
+    specs = {m: as_spec(s, m) for m, s in specs.items()}
     factors = list(dict.fromkeys(f for spec in specs.values() for f in spec.factor_names))
     predicted = list(dict.fromkeys(c for w in waves.values() for c in w.runs.columns if c.startswith("predicted_")))
     run_cols = ["material", "proposal"] + factors + ["purpose"] + predicted
@@ -339,3 +350,9 @@ def plan_materials(specs: dict, frames: dict, *, z: float) -> tuple[pd.DataFrame
     runs = (pd.concat([w.runs for w in waves.values()], ignore_index=True).reindex(columns=run_cols) if waves
             else pd.DataFrame(columns=run_cols))
     return domain, runs, {m: w.reason for m, w in waves.items()}
+
+
+def plan_materials(specs: dict, frames: dict, *, z: float) -> tuple[pd.DataFrame, pd.DataFrame, dict]:
+    """:func:`plan_next_wave` for every material given; the two long tables and the reasons
+    (arguments as :func:`plan_waves`)."""
+    return tabulate_waves(specs, plan_waves(specs, frames, z=z))

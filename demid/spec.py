@@ -49,6 +49,9 @@ class Response:
     unit: str
     sigma: float | None
     sigma_rel: float | None
+    tolerance: float | None = None  # own relative tolerance (overrides the scenario's)
+    tolerance_abs: float | None = None  # own tolerance in the response's unit
+    discrepancy: float | None = None  # model-discrepancy sd (response units) in the plausible set
 
     @property
     def axis_label(self) -> str:
@@ -116,7 +119,8 @@ class MaterialSpec:
             for f, c in material["factors"].items())
         responses = tuple(
             Response(r, float(c["target"]) if c.get("target") is not None else None, c.get("label") or r,
-                     c.get("unit", "-"), c.get("sigma"), c.get("sigma_rel"))
+                     c.get("unit", "-"), c.get("sigma"), c.get("sigma_rel"), c.get("tolerance"),
+                     c.get("tolerance_abs"), c.get("discrepancy"))
             for r, c in (material.get("responses") or {}).items())
         scenarios = tuple(
             Scenario(s, tuple(c["observables"]), float(c["tolerance"]), c.get("label") or s)

@@ -9,11 +9,12 @@ import pytest
 from demid.admissibility import evaluate_scenarios
 from demid.criticism import calibration_check
 from demid.design import quadratic_terms
-from demid.report.summary import verdict_table, widen_steps
+from demid.report.summary import verdict_table
 from demid.report.tables import IDENTIFIABILITY_COLUMNS
 from demid.sampling import evaluate_set
 from demid.sampling.domain import BOUND_TOUCH, Domain
 from demid.spec import MaterialSpec
+from demid.story import material_advice
 from demid.surrogate import Surrogate
 
 
@@ -100,9 +101,11 @@ def test_identifiability_rows_carry_at_bound_and_the_verdict_follows_it():
     # the verdict is derived from the column: the same interval marked as touching reads as cut
     marked = table.assign(at_bound=["none", "lower"])
     assert list(verdict_table(marked, spec)["verdict"]) == ["identified", "cut by the search range (lower bound)"]
-    steps = widen_steps(verdicts, spec)
-    assert steps == ["Widen the range of x beyond its upper bound (1) and simulate runs there: the admissible set "
-                     "ends there only because the search range does."]
+    # the advice reads the verdict rows (here the strict ones, as tables/verdicts.csv holds them)
+    rows = pd.DataFrame({"scenario": "both", "factor": ["x", "w"], "verdict": list(verdicts["verdict"])})
+    steps = [i.text for i in material_advice(spec, rows) if i.kind == "widen"]
+    assert steps == ["Widen the range of x beyond its upper bound (1) and simulate runs there: the plausible set "
+                     "of *both* ends there only because the search range does."]
 
 
 def _level2(targets, runs=None, reference=None, with_set=True):
@@ -161,11 +164,11 @@ def test_summary_lines_carry_best_point_and_extrapolation():
     spec = MaterialSpec.from_material("m", _material({"y1": 21.0, "y2": 15.0}))
     level2 = _level2({"y1": 21.0, "y2": 15.0}, runs=DIAMOND).to_json()
     lines = criticism_lines({"level2": level2}, spec)
-    assert any("best point lies on the search range's upper bound of x" in ln for ln in lines)
     assert any(ln.startswith("Extrapolation: the search range of x") for ln in lines)
     verdicts = pd.DataFrame(columns=["scenario", "factor", "verdict"])
-    assert widen_steps(verdicts, spec, level2) == [
-        "Widen the range of x beyond its upper bound (1) and simulate runs there: the best point lies on it."]
+    assert [i.text for i in material_advice(spec, verdicts, criticism={"level2": level2}) if i.kind == "widen"] == [
+        "Widen the range of x beyond its upper bound (1) and simulate runs there: no point meets every target and "
+        "the best point lies on it."]
 
 
 def test_a_reference_point_beyond_the_search_range_is_said_to_be_outside_it():

@@ -42,14 +42,16 @@ def test_next_step_settles_a_discrepancy_before_asking_for_a_narrower_set():
     the next step names the observable that limits the best match, by its label."""
     import pandas as pd
 
-    from demid.report.summary import next_step
+    from demid.story import material_advice
 
     spec = _mortar_spec()
     verdicts = pd.DataFrame(columns=["scenario", "factor", "verdict"])
     level2 = {"feasible": False, "tolerance": 0.02, "bottleneck": "d10", "best_point_at_bound": {}}
-    steps = next_step(_ranking_of_the_full_set(spec), verdicts, spec, level2)
+    steps = [i.text for i in material_advice(spec, verdicts, ranking=_ranking_of_the_full_set(spec),
+                                             criticism={"level2": level2})]
     assert not any("narrower set" in s for s in steps)
     label = spec.response_labels["d10"]
     assert any(s.startswith("No parameter set meets every target within 2 %") and label in s for s in steps), steps
-    feasible = next_step(_ranking_of_the_full_set(spec), verdicts, spec, {**level2, "feasible": True})
+    feasible = [i.text for i in material_advice(spec, verdicts, ranking=_ranking_of_the_full_set(spec),
+                                                criticism={"level2": {**level2, "feasible": True}})]
     assert any("narrower set" in s for s in feasible)

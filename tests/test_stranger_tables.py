@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 import pytest
 import yaml
 
@@ -399,8 +400,23 @@ def test_a_target_far_outside_every_simulated_value_is_said_before_the_run(tmp_p
     # validation itself carries it (the validation summary, the report and demid validate show it)
     config = _load(tmp_path, lambda c: c["materials"]["poraver"]["responses"]["aor"].update({"target": target}))
     src = config["materials"]["poraver"]["data"]
-    assert warning.replace("t.csv", src) in validate_material("poraver", config["materials"]["poraver"],
-                                                              base_dir=REPO).warnings
+    (keyed,) = far_target_warnings(table, {"aor": target}, src, "poraver")
+    assert "(config key materials.poraver.responses.aor.target)" in keyed
+    assert keyed in validate_material("poraver", config["materials"]["poraver"], base_dir=REPO).warnings
+
+
+@pytest.mark.parametrize("scale", [1e-3, 1e3, 1e-6])
+def test_a_target_in_another_unit_names_the_key_and_the_power_of_ten(scale):
+    """1.505 (g cm^-3) for 1505 (kg m^-3): the key and the repair, ×1000 → inside the simulated range."""
+    from demid.data import far_target_warnings, implausible_targets
+
+    table = pd.DataFrame({"rho": [1474.0, 1490.0, 1505.0, 1521.0, 1534.0]})
+    (warning,) = far_target_warnings(table, {"rho": 1505.0 * scale}, "m.csv", "m")
+    assert "config key materials.m.responses.rho.target" in warning
+    factor = f"×{1 / scale:g}" if scale < 1 else f"÷{scale:g}"
+    assert f"repair: {factor} → 1505 lies inside the simulated range (1474 to 1534)" in warning
+    assert implausible_targets(table, {"rho": 1505.0}) == {}
+    assert implausible_targets(table, {"rho": 1700.0})["rho"]["factor"] is None  # far, but no power of ten
 
 
 @pytest.mark.parametrize("where", ["scenario", "sweep"])

@@ -88,22 +88,25 @@ def test_measurement_sigma_sources():
 
 # --------------------------------------------------------------------------- robust sets
 def test_plausibility_field_is_exactly_the_widened_band(mortar_like):
+    """|ŷ - y*| <= z sqrt(se² + σ² + δ²): with σ configured the tolerance plays no part."""
     _, surrogates, domain, targets = mortar_like
-    field = unc.PlausibilityField(surrogates["d15"], targets["d15"], 0.02, 2.0, sigma=0.7)
     points = np.random.default_rng(1).uniform(domain.lower, domain.upper, size=(5000, 2))
     yhat = surrogates["d15"].predict(points)
-    s = np.sqrt(surrogates["d15"].se_mean(points) ** 2 + 0.7 ** 2)
+    se = surrogates["d15"].se_mean(points)
     band = 0.02 * targets["d15"]
-    plausible = np.abs(yhat - targets["d15"]) <= band + 2.0 * s
-    assert np.array_equal(np.abs(field.predict(points) - targets["d15"]) <= band, plausible)
+    for sigma, delta in ((0.7, 0.0), (0.7, 0.4), (None, 0.0), (None, 0.5)):
+        field = unc.PlausibilityField(surrogates["d15"], targets["d15"], 0.02, 2.0, sigma=sigma, discrepancy=delta)
+        s = band / 2.0 if sigma is None else sigma  # no sigma: the tolerance band is the 2-sigma band
+        plausible = np.abs(yhat - targets["d15"]) <= 2.0 * np.sqrt(se ** 2 + s ** 2 + delta ** 2)
+        assert np.array_equal(np.abs(field.predict(points) - targets["d15"]) <= band, plausible)
+        assert 0.02 < plausible.mean() < 1
 
 
-def test_robust_set_contains_strict_set(mortar_like):
+def test_plausible_set_contains_strict_set_without_configured_sigma(mortar_like):
     _, surrogates, domain, targets = mortar_like
     for observables in (["d15"], ["d5", "d10", "d15"]):
         strict = admissible_set(surrogates, domain, observables, targets, 0.02, 101)
-        robust = unc.robust_admissible_set(surrogates, domain, observables, targets, 0.02, 101,
-                                           z=2.0, sigma={"d15": 0.5})
+        robust = unc.robust_admissible_set(surrogates, domain, observables, targets, 0.02, 101, z=2.0)
         assert robust.fraction > strict.fraction > 0
         assert np.all(robust.mask[strict.mask])
         assert np.all(robust.lower <= strict.lower) and np.all(robust.upper >= strict.upper)
@@ -111,13 +114,18 @@ def test_robust_set_contains_strict_set(mortar_like):
         assert same.fraction == strict.fraction
 
 
-def test_robust_with_constant_sigma_equals_wider_strict_tolerance():
+def test_plausible_set_with_exact_surrogate_and_sigma_equals_strict_set_at_z_sigma():
+    """No surrogate error: the plausible band is z·σ alone, not ε + z·σ (no double counting)."""
     sur = {"y": ring([0.47, 0.52])}
     target, eps, sigma, z = 0.09, 0.02, 0.0009, 2.0
     robust = unc.robust_admissible_set(sur, SQUARE, ["y"], {"y": target}, eps, 81, z=z, sigma={"y": sigma})
-    wider = admissible_set(sur, SQUARE, ["y"], {"y": target}, eps + z * sigma / target, 81)
-    assert robust.fraction == pytest.approx(wider.fraction, rel=1e-12)
-    assert robust.fraction == pytest.approx(2 * np.pi * target * (eps + z * sigma / target), rel=2e-3)
+    same = admissible_set(sur, SQUARE, ["y"], {"y": target}, z * sigma / target, 81)
+    assert robust.fraction == pytest.approx(same.fraction, rel=1e-12)
+    assert robust.fraction == pytest.approx(2 * np.pi * target * (z * sigma / target), rel=2e-3)
+    # without sigma the tolerance is the band: the plausible set is the strict one
+    alone = unc.robust_admissible_set(sur, SQUARE, ["y"], {"y": target}, eps, 81, z=z)
+    strict = admissible_set(sur, SQUARE, ["y"], {"y": target}, eps, 81)
+    assert alone.fraction == pytest.approx(strict.fraction, rel=1e-12)
 
 
 def test_robust_identifiability_frame_contract(mortar_like):

@@ -240,6 +240,7 @@ class MaterialCombinations:
 
     def to_json(self) -> dict:
         out = {"sets": [], "advice": self.advice, "in_combination": self.in_combination(),
+               "in_combination_plausible": self.in_combination("plausible"),
                "identified_max_width": IDENTIFIED_MAX_WIDTH, "free_min_width": FREE_MIN_WIDTH}
         for res in self.results:
             entry = {"scenario": res.scenario, "set": res.set, "identified": bool(res.identified), "cut": res.cut,

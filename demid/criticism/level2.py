@@ -56,6 +56,7 @@ class Level2Result:
     widen: dict[str, list[str]] = field(default_factory=dict)  # factor -> bounds to move outwards
     extrapolation: list[str] = field(default_factory=list)
     unmoved: list[str] = field(default_factory=list)  # observables no factor moves anywhere in the domain
+    finding: str = ""  # the message without its advice: the report adds the study's advice (demid.story)
 
     @property
     def reference_max_error(self) -> float | None:
@@ -98,7 +99,7 @@ class Level2Result:
             "extensions": self.extensions, "message": self.message,
             "best_point_at_bound": dict(self.best_at_bound), "set_at_bound": self.set_at_bound,
             "widen": {f: list(v) for f, v in self.widen.items()}, "extrapolation": list(self.extrapolation),
-            "unmoved": list(self.unmoved),
+            "unmoved": list(self.unmoved), "finding": self.finding,
         }
 
 
@@ -334,6 +335,7 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
              f"brings it nearer its target: check its simulation output." for o in result.unmoved]
     result.message = " ".join([_level2_message(result), *stuck, *widen_advice(domain, best_touch, set_touch),
                                *result.extrapolation])
+    result.finding = " ".join([_level2_message(result), *stuck, *result.extrapolation])
     return result
 
 

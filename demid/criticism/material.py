@@ -190,7 +190,10 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
         if with_targets and same:  # the scenario's own set, exact or sampled: the one identifiability shows
             strict = scenario_sets(same[0])
         elif with_targets and uses_exact(surrogates, with_targets, domain):
-            strict = evaluate_set(surrogates, domain, with_targets, targets, spec.reference_tolerance, n_level2)
+            from ..tolerance import scenario_surrogates  # an observable's own tolerance, as in every set
+
+            strict = evaluate_set(scenario_surrogates(surrogates, spec, spec.reference_tolerance), domain,
+                                  with_targets, targets, spec.reference_tolerance, n_level2)
         simulated = table[[r for r in spec.response_names if r in table.columns]].notna().any(axis=1)
         level2 = calibration_check({r: surrogates[r] for r in targets}, domain, targets,
                                    spec.reference_tolerance, n_level2, spec.reference_point, strict_set=strict,

@@ -96,7 +96,10 @@ def _zoom_mask(surrogates, spec, result, box, pixels: int = ZOOM_PIXELS) -> np.n
     xs, ys = np.linspace(x0, x1, pixels), np.linspace(y0, y1, pixels)
     gx, gy = np.meshgrid(xs, ys)
     points = spec.domain.to_actual(np.column_stack([gx.ravel(), gy.ravel()]))
+    from ..tolerance import scenario_surrogates
+
     targets = spec.targets
+    surrogates = scenario_surrogates(surrogates, spec, result.tolerance)  # an observable's own tolerance
     worst = np.max([np.abs(relative_error(surrogates[o].predict(points), targets[o]))
                     for o in result.observables], axis=0)
     return (worst <= result.tolerance).reshape(pixels, pixels)

@@ -149,6 +149,25 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "lower": ("unit of the factor", "Lower end of the refocused search range for the next wave."),
         "upper": ("unit of the factor", "Upper end of the refocused search range for the next wave."),
     },
+    "verdicts": {
+        "strict_lower": (FACTOR_UNIT, "Lower end of the strict admissible interval (Table 3): the set if surrogate "
+                                      "and measurements were exact."),
+        "strict_upper": (FACTOR_UNIT, "Upper end of the strict admissible interval."),
+        "plausible_lower": (FACTOR_UNIT, "Lower end of the plausible interval: |ŷ − y*| ≤ z·√(se² + σ² + δ²) for "
+                                         "every observable (σ = ε·|y*|/z where no σ is configured); empty when no "
+                                         "point is plausible."),
+        "plausible_upper": (FACTOR_UNIT, "Upper end of the plausible interval."),
+        "verdict": ("–", "Judged on the plausible interval: identified, bounded, unresolved, cut by the search range "
+                         "(lower/upper bound), no admissible point or uninformative observable."),
+        "reason": ("–", "Why, in words, with the strict interval where its verdict differs."),
+    },
+    "advice": {
+        "kind": ("–", "check_target, recalibrate, add_observable, widen, next_runs or stop."),
+        "factor": ("–", "Factor key of a widen advice (empty otherwise)."),
+        "bound": ("–", "lower or upper: the bound to move outwards (widen only)."),
+        "observable": ("–", "Response key the advice is about (check_target, recalibrate, add_observable)."),
+        "text": ("–", "The advice as the report prints it (summary, level 2 or the next-wave section)."),
+    },
     "next_runs": {
         "proposal": ("–", "Number of the proposed run (1..count)."),
         "purpose": ("–", "Why the run is proposed: a design run in the refocused box, or a run that separates "
@@ -192,6 +211,9 @@ TABLE_COLUMNS = {
     "calibration_residuals": ["material", "observable", "target", "at_best", "rel_error_best", "at_reference",
                               "rel_error_reference", "tolerance", "within_tolerance", "within_tolerance_reference",
                               "bottleneck", "max_error_without", "implied_bias", "bias_candidate"],
+    "verdicts": ["material", "scenario", "factor", "strict_lower", "strict_upper", "plausible_lower",
+                 "plausible_upper", "verdict", "reason"],
+    "advice": ["material", "kind", "factor", "bound", "observable", "text"],
     "paper_comparison": ["quantity", "material", "published", "reproduced", "abs_diff", "rel_diff", "tolerance",
                          "pass", "printed_agrees"],
 }

@@ -44,14 +44,20 @@ RANKING_HEADERS = {
 }
 
 
-def ranking_display(ranking: pd.DataFrame) -> pd.DataFrame:
-    """observable_ranking.csv rows for a reader: plain headers with units, '–' where there is no smaller set."""
+def ranking_display(ranking: pd.DataFrame, uninformative: dict | None = None) -> pd.DataFrame:
+    """observable_ranking.csv rows for a reader: plain headers with units, '–' where there is no smaller set;
+    an uninformative observable's own gain reads '~0' with its value beside it."""
     columns = [c for c in RANKING_HEADERS if c in ranking.columns]
     if "targets_reachable" in columns and ranking["targets_reachable"].astype(str).str.lower().eq("true").all():
         columns.remove("targets_reachable")  # a column of "True" only says something when one is False
     shown = ranking[columns].rename(columns=RANKING_HEADERS)
     if "best smaller set" in shown:
         shown["best smaller set"] = shown["best smaller set"].replace({"(none)": "–"})
+    gain = RANKING_HEADERS["information_gain_bits"]
+    if uninformative and gain in shown:
+        shown[gain] = shown[gain].astype(object)
+        for i in ranking.index[ranking["observables"].isin(list(uninformative))]:
+            shown.loc[i, gain] = f"~0 ({float(ranking.loc[i, 'information_gain_bits']):.2f}; uninformative)"
     return shown
 
 
@@ -153,64 +159,36 @@ class ReportSections:
         return parts
 
     def summary(self) -> list:
-        """Per material: recommended set, verdict per factor and scenario, criticism, next step."""
-        import json
+        """Per material: recommended set, verdict per factor and scenario, criticism, next step.
 
+        Verdicts and advice are read from ``tables/verdicts.csv`` and ``tables/advice.csv`` (rule
+        ``story``): the same rows level 2 and the next-wave section show."""
+        from ..sampling.residuals import PLAUSIBLE_DEFINITION
         from ..spec import MaterialSpec
-        from .summary import (VERDICT_TEXT, combination_lines, combination_verdicts, criticism_lines, next_step,
-                              unit_text, verdict_table)
+        from ..story import StudyAdvice, verdict_display
+        from .summary import VERDICT_TEXT, combination_lines, criticism_lines
 
-        parts = [self._md("## Summary\n\nPer factor and observable scenario the admissible interval is judged: "
-                          + VERDICT_TEXT)]
-        ident = self._csv("identifiability.csv")
-        ranking = self._csv("observable_ranking.csv")
+        parts = [self._md("## Summary\n\nPer factor and observable scenario the **plausible interval** is judged; "
+                          "the strict interval (Table 3: the set if surrogate and measurements were exact) stands "
+                          "beside it. **Plausible set**: " + PLAUSIBLE_DEFINITION + " Verdicts: " + VERDICT_TEXT
+                          + " **uninformative observable**: every observable of the scenario leaves at least 99 % "
+                          "of the search range admissible on its own (its band covers its whole simulated range).")]
+        verdicts_all = self._csv("verdicts.csv")
+        advice = StudyAdvice.from_frame(self._csv("advice.csv"))
         for m in self.materials:
             spec = MaterialSpec.from_material(m, self.config["materials"][m])
             lines = [f"### {spec.label}", ""]
-            crit_path = self.root / "criticism" / f"{m}.json"
-            info = json.loads(crit_path.read_text(encoding="utf-8")) if crit_path.is_file() else {}
+            info = self._json(self.root / "criticism" / f"{m}.json")
+            unc = self._json(self.root / "uncertainty" / f"{m}.json")
             level2 = info.get("level2") or {}
-            rows = ident[ident["material"] == m] if ident is not None else pd.DataFrame()
-            verdicts = verdict_table(rows, spec) if len(rows) else pd.DataFrame(columns=["factor", "verdict"])
-            combos_path = self.root / "combinations" / f"{m}.json"
-            combos = json.loads(combos_path.read_text(encoding="utf-8")) if combos_path.is_file() else {}
-            verdicts = combination_verdicts(verdicts, combos.get("in_combination") or {}, spec)
-            if level2.get("best_point"):
-                best = level2["best_point"]
-                point = ", ".join(f"{spec.factor(f).label} = {best[f]:.4g}" + (f" {unit_text(spec.factor(f).unit)}"
-                                                                              if spec.factor(f).unit != "-" else "")
-                                  for f in spec.factor_names if f in best)
-                over = ", ".join(spec.response_labels.get(o, o) for o in level2["observables"])
-                if level2.get("feasible", True):
-                    lines.append(f"**Recommended parameter set** (the point with the smallest largest relative "
-                                 f"error over {over}): {point}; largest error {100 * level2['best_max_error']:.2f} %.")
-                else:  # nothing meets every target: the closest point is no calibration to recommend
-                    lines.append(f"**No parameter set meets every target.** The closest point (smallest largest "
-                                 f"relative error over {over}) is {point}, and it still misses by "
-                                 f"{100 * level2['best_max_error']:.2f} %; see the level-2 criticism below.")
-            if len(rows):
-                widest = max(spec.scenarios, key=lambda sc: len(sc.observables))
-                last = rows[rows["scenario"] == widest.name]
-                if len(last) and last["lower"].notna().any():
-                    iv = "; ".join(f"{spec.factor(r['factor']).label} ∈ [{r['lower']:.4g}, {r['upper']:.4g}]"
-                                   for _, r in last.iterrows())
-                    lines.append(f"Admissible intervals with every observable of *{widest.label}*: {iv}.")
-                elif len(last):
-                    lines.append(f"With every observable of *{widest.label}* no point of the search range is "
-                                 "admissible, so there are no admissible intervals.")
-                loose = verdicts[(verdicts["scenario"] == widest.label) & (verdicts["verdict"].str.startswith("unresolved"))]
-                if len(loose):
-                    # About the widest scenario's set, not the level-2 point: that point may lie outside the set
-                    # (level 2 uses every target) and the error varies across the set.
-                    factors = list(loose["factor"])
-                    names = ", ".join(factors[:-1]) + " and " + factors[-1] if len(factors) > 1 else factors[0]
-                    them = "it" if len(factors) == 1 else "each"
-                    tail = (" The recommended point is one choice among many." if level2.get("feasible", True)
-                            and level2.get("best_point") else "")
-                    lines.append(f"*{widest.label}* does not pin down {names}: points that meet every one of its "
-                                 f"observables within the tolerance span (almost) the whole search range of {them} "
-                                 f"(the intervals above).{tail}")
-                lines += ["", markdown_table(verdicts, 3)]
+            verdicts = (verdicts_all[verdicts_all["material"] == m] if verdicts_all is not None
+                        else pd.DataFrame(columns=["scenario", "factor", "verdict"]))
+            lines += self._recommended_lines(spec, unc.get("recommended"), verdicts, level2)
+            for o, why in (unc.get("uninformative") or {}).items():
+                lines.append(f"{spec.response_labels.get(o, o)} is an **uninformative observable**: {why}.")
+            if len(verdicts):
+                lines += ["", markdown_table(verdict_display(verdicts, spec), 3)]
+            combos = self._json(self.root / "combinations" / f"{m}.json")
             combo_lines = combination_lines(combos, spec)
             if combo_lines:
                 lines += ["", "**What is identified in combination** (principal axes of each set in coded units; "
@@ -218,13 +196,76 @@ class ReportSections:
             crit = criticism_lines(info, spec)
             if crit:
                 lines += ["", "**What the models get wrong:**", ""] + [f"- {c}" for c in crit]
-            steps = next_step(ranking[ranking["material"] == m] if ranking is not None else None, verdicts, spec,
-                              level2)
-            steps += list(combos.get("advice") or [])  # which other observable would break a ridge
+            steps = advice.texts(m)
             if steps:
                 lines += ["", "**Next step:**", ""] + [f"- {s}" for s in steps]
             parts.append(self._md("\n".join(lines)))
         return parts
+
+    @staticmethod
+    def _json(path: Path) -> dict:
+        import json
+
+        return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
+
+    def _recommended_lines(self, spec, recommended: dict | None, verdicts: pd.DataFrame, level2: dict) -> list[str]:
+        """The most robust plausible point with each factor's plausible interval beside it, to the digits that
+        interval supports; plainly said when the set is wide, or when no point meets every target."""
+        import numpy as np
+
+        from ..uncertainty.recommended import digits_for
+        from .summary import unit_text
+
+        if not recommended:
+            return []
+        scenario = next((sc for sc in spec.scenarios if sc.name == recommended["scenario"]), None)
+        label = scenario.label if scenario else recommended["scenario"]
+        rows = verdicts[verdicts["scenario"] == recommended["scenario"]].set_index("factor") if len(verdicts) else None
+        lines = []
+        strict_empty = rows is not None and len(rows) and rows["strict_lower"].isna().all()
+        if strict_empty:
+            lines.append(f"With every observable of *{label}* no point of the search range is admissible, so there "
+                         "are no admissible intervals.")
+        if not recommended["plausible"]:
+            over = ", ".join(spec.response_labels.get(o, o) for o in level2.get("observables", []))
+            text = (f"**No parameter set meets every target.** No point is plausible for *{label}* either: at every "
+                    f"point some observable lies outside its plausible band (smallest implausibility "
+                    f"{recommended['implausibility']:.3g} > 1).")
+            if level2.get("best_point"):
+                best = level2["best_point"]
+                point = ", ".join(f"{spec.factor(f).label} = {best[f]:.4g}" for f in spec.factor_names if f in best)
+                text += (f" The closest point (smallest largest relative error over {over}) is {point}; see the "
+                         "level-2 criticism and the next step below.")
+            return [text] + lines
+        shown, wide, unresolved = [], [], []
+        for f in spec.factors:
+            value = recommended["point"][f.name]
+            lo = hi = float("nan")
+            if rows is not None and f.name in rows.index:
+                lo, hi = float(rows.loc[f.name, "plausible_lower"]), float(rows.loc[f.name, "plausible_upper"])
+                verdict = str(rows.loc[f.name, "verdict"])
+                if verdict != "identified":
+                    wide.append(f.label)
+                if verdict == "unresolved":
+                    unresolved.append(f.label)
+            digits = digits_for(hi - lo)
+            unit = f" {unit_text(f.unit)}" if f.unit != "-" else ""
+            interval = f" (plausible {lo:.{digits}f}–{hi:.{digits}f})" if np.isfinite(lo) else ""
+            shown.append(f"{f.label} = {value:.{digits}f}{unit}{interval}")
+        head = ("**Recommended parameter set**" if level2.get("feasible", True) or not strict_empty else
+                "**No parameter set meets every target** within the tolerance; counting the surrogate's and the "
+                "measurements' uncertainty, the most plausible point")
+        text = (f"{head} (the point of the plausible set of *{label}* with the largest margin to every band, "
+                f"implausibility {recommended['implausibility']:.2f}): " + "; ".join(shown) + ".")
+        if unresolved:
+            names = ", ".join(unresolved[:-1]) + " and " + unresolved[-1] if len(unresolved) > 1 else unresolved[0]
+            them = "it" if len(unresolved) == 1 else "each"
+            text += (f" *{label}* does not pin down {names}: its plausible set spans (almost) the whole search range "
+                     f"of {them}.")
+        if wide:
+            text += (f" The plausible set is wide in {', '.join(wide)}: any point of those intervals matches the "
+                     "measurements as well, so this point is one choice among many.")
+        return [text] + lines
 
     def glossary(self) -> list:
         return [self._md(
@@ -233,9 +274,10 @@ class ReportSections:
             "- **ε (tolerance)**: relative distance from the measured target within which a prediction counts as a "
             "match; a fraction in the tables (0.02 = 2 %).\n"
             "- **Φ (feasible fraction)**: share of Ω, in %, whose predictions match every target within ε.\n"
-            "- **z**: the number of standard deviations added to ε in a robust set (z = 2 covers about 95 %).\n"
+            "- **z**: the half-width of the plausible band in standard deviations (z = 2 covers about 95 %).\n"
             "- **σ, σ_rel**: measurement uncertainty of a target, absolute or relative; when a response declares "
-            "none, σ_rel = ε/2 is assumed so that ε spans ±2σ.\n"
+            "none, the tolerance is the measurement band (σ = ε·|y*|/z), never added to it.\n"
+            "- **δ**: optional model-discrepancy standard deviation of a response (`discrepancy`).\n"
             "- **bits / information gain**: Kullback–Leibler divergence from the uniform prior on Ω to the "
             "posterior, in bits; one bit halves the plausible volume.\n"
             "- **se**: standard error of the surrogate's mean prediction.")]
@@ -377,7 +419,11 @@ class ReportSections:
             lines += ["", markdown_table(findings[findings["material"] == m][cols])]
         level2 = info.get("level2")
         if level2:
-            lines += ["", "**Level 2 — calibrated simulation against the experiment.** " + level2["message"]]
+            from ..story import LEVEL2_KINDS, StudyAdvice
+
+            advice = StudyAdvice.from_frame(self._csv("advice.csv")).texts(m, LEVEL2_KINDS)
+            lines += ["", "**Level 2 — calibrated simulation against the experiment.** "
+                      + " ".join([level2.get("finding") or level2["message"], *advice])]
         for pos in info.get("reference_point") or []:
             errs = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in pos["errors"].items())
             if pos["inside"]:
@@ -408,9 +454,9 @@ class ReportSections:
             sub = robust[robust["material"] == m]
             cols = ["scenario", "observables", "tolerance", "z", "factor", "strict_fraction_pct",
                     "robust_fraction_pct", "strict_width", "robust_width"]
-            lines = ["**Strict vs robust admissible sets.** A point is *plausibly* admissible when every "
-                     "observable is within ε·|y*| + z·√(se² + σ²) of its target, where se is the surrogate's "
-                     "standard error of the mean and σ the measurement uncertainty.", "",
+            from ..sampling.residuals import PLAUSIBLE_DEFINITION
+
+            lines = ["**Strict vs plausible (robust) admissible sets.** " + PLAUSIBLE_DEFINITION, "",
                      markdown_table(sub[cols])]
             scen = list(dict.fromkeys(sub["scenario"]))
             if len(scen) >= 2:
@@ -439,7 +485,7 @@ class ReportSections:
                                      "last, without a gain: their "
                                      "posterior measures a discrepancy between simulation and experiment, not "
                                      "information" if out_of_reach else "") + ".\n\n"
-                                  + markdown_table(ranking_display(sub))
+                                  + markdown_table(ranking_display(sub, info.get("uninformative")))
                                   + ("\n\n" + info["advice"] if info.get("advice") else "")))
         parts.append(self._image(self.root / "figures" / f"posterior_{m}.png",
                                  f"Marginal posterior densities of the factors of {self._label(m)}, one curve per observable set"))
@@ -455,11 +501,15 @@ class ReportSections:
             return []
         import json
 
+        from ..story import NEXT_WAVE_KINDS, StudyAdvice
+
         reason = json.loads(reasons.read_text(encoding="utf-8")).get(m, "")
+        advice = " ".join(StudyAdvice.from_frame(self._csv("advice.csv")).texts(m, NEXT_WAVE_KINDS))
         sub = runs[runs["material"] == m].dropna(axis=1, how="all")
-        return [self._md("### What to simulate next\n\n" + reason + " Simulate these runs, then study the next "
-                         "domain (tables/next_domain.csv) with the earlier runs inside it plus these "
-                         "(`design: {type: custom}`).\n\n" + markdown_table(sub.drop(columns="material")))]
+        return [self._md("### What to simulate next\n\n" + reason + (" " + advice if advice else "")
+                         + " Once simulated, they are studied in the next domain (tables/next_domain.csv) with the "
+                         "earlier runs inside it (`design: {type: custom}`).\n\n"
+                         + markdown_table(sub.drop(columns="material")))]
 
     def response_surfaces(self, m: str) -> list:
         """Per response: equation (coded, actual), block ANOVA, coefficients, stationary point."""

@@ -2,7 +2,9 @@
 
 A recommended parameter set, the admissible interval and a verdict per factor and scenario,
 the criticism verdicts in one line each and the next step.  Every number is read from the
-results tree; nothing is recomputed here.
+results tree; nothing is recomputed here.  The verdicts on the plausible interval and the advice
+are :mod:`demid.story`'s (``tables/verdicts.csv``, ``tables/advice.csv``); this module holds the
+verdict rule they share and the criticism lines.
 """
 
 from __future__ import annotations
@@ -149,100 +151,9 @@ def criticism_lines(info: dict, spec) -> list[str]:
             lines.append(f"Reference point: largest error {100 * level2['reference_max_error']:.2f} % "
                          f"({'within' if level2['reference_max_error'] <= level2['tolerance'] else 'outside'} "
                          f"the {tol:g} % tolerance).")
-        on_bound = {f: v for f, v in (level2.get("best_point_at_bound") or {}).items() if v != "none"}
-        if on_bound:
-            lines.append("The best point lies on the search range's " + "; ".join(
-                f"{'lower and upper' if v == 'both' else v} bound of {spec.factor(f).label}" for f, v in on_bound.items())
-                + ": the best match may lie outside the searched range.")
+        # a best point on a bound is told by the advice (demid.story), where widening can reach something
         lines += list(level2.get("extrapolation") or [])
     return lines
-
-
-def next_step(ranking: pd.DataFrame | None, verdicts: pd.DataFrame, spec, level2: dict | None = None) -> list[str]:
-    """Which observable to add (from the observable ranking) and which runs to simulate.
-
-    "Widen the range of X" where an admissible set reaches a bound of X (the verdicts, from the
-    ``at_bound`` column) or the best point of level 2 lies on one (``level2``: the criticism JSON's
-    level-2 entry).
-    """
-    steps = []
-    used = max((sc.observables for sc in spec.scenarios), key=len, default=())
-    if ranking is not None and len(ranking):
-        used_name = "+".join(used)
-        if "targets_reachable" in ranking.columns:
-            reachable = ranking["targets_reachable"].astype(str).str.lower() == "true"
-            singles = ranking[(ranking["n_observables"] == 1) & ~reachable]["observables"].tolist()
-            if singles:
-                names = ", ".join(spec.response_labels.get(o, o) for o in singles)
-                steps.append(f"Check the target of {names} and the simulation of it: the surrogate cannot meet it "
-                             f"anywhere in the search range within the tolerance. That is a discrepancy between "
-                             f"simulation and experiment, not information; observable sets with it are ranked last "
-                             f"and get no information gain.")
-            ranking = ranking[reachable]
-        grow = ranking[(ranking["best_subset"] == used_name) & (ranking["n_observables"] == len(used) + 1)]
-        if len(grow):
-            best = grow.sort_values("gain_vs_best_subset_bits", ascending=False).iloc[0]
-            added = [o for o in best["observables"].split("+") if o not in used]
-            names = ", ".join(spec.response_labels.get(o, o) for o in added)
-            steps.append(f"Measure {names} as well: it adds {best['gain_vs_best_subset_bits']:.2f} bits of information "
-                         f"and leaves {best['feasible_fraction_pct']:.3g} % of the domain admissible.")
-        elif used and level2 and not level2.get("feasible", True):
-            # a narrower set means nothing while no point meets every target: the discrepancy comes first
-            limit = level2.get("bottleneck")
-            which = (f"the target and the simulation of {spec.response_labels.get(limit, limit)}, the observable "
-                     f"that limits the best match" if limit else "the targets and their simulation")
-            steps.append(f"No parameter set meets every target within {100 * level2['tolerance']:g} %: settle that "
-                         f"first. Check {which}, or widen the search range where the best point lies on a bound.")
-        elif used:
-            steps.append("Every observable with a target is already used; a narrower set needs a new kind of "
-                         "measurement or a smaller tolerance (measurement uncertainty permitting).")
-    steps += widen_steps(verdicts, spec, level2)
-    return steps
-
-
-def widen_steps(verdicts: pd.DataFrame, spec, level2: dict | None = None) -> list[str]:
-    """One "widen the range" step per factor whose admissible set or best point sits on a search bound."""
-    sides: dict[str, set] = {}
-    why: dict[str, list[str]] = {}
-    label_to_name = {f.label: f.name for f in spec.factors}
-    cut = verdicts[verdicts["verdict"].str.startswith("cut")] if len(verdicts) else verdicts
-    for _, row in cut.iterrows():
-        name = label_to_name.get(row["factor"], row["factor"])
-        found = row["verdict"].split("(")[1].split(" bound")[0]
-        sides.setdefault(name, set()).update(found.split(" and "))
-        why.setdefault(name, []).append("the admissible set ends there only because the search range does")
-    for name, value in ((level2 or {}).get("best_point_at_bound") or {}).items():
-        if value != "none":
-            sides.setdefault(name, set()).update(["lower", "upper"] if value == "both" else [value])
-            why.setdefault(name, []).append("the best point lies on it")
-    steps = []
-    for f in spec.factors:
-        if f.name not in sides:
-            continue
-        ends = [s for s in ("lower", "upper") if s in sides[f.name]]
-        unit = f" {unit_text(f.unit)}" if f.unit != "-" else ""
-        where = " and ".join(f"{s} bound ({(f.lower if s == 'lower' else f.upper):.4g}{unit})" for s in ends)
-        steps.append(f"Widen the range of {f.label} beyond its {where} and simulate runs there: "
-                     f"{'; '.join(dict.fromkeys(why[f.name]))}.")
-    return steps
-
-
-def combination_verdicts(verdicts: pd.DataFrame, in_combination: dict, spec) -> pd.DataFrame:
-    """The verdict of a factor unresolved alone that an identified combination includes (the strict
-    set's narrowest direction, ``combinations/{material}.json``): "unresolved alone; identified in
-    combination with X"."""
-    if not len(verdicts) or not in_combination:
-        return verdicts
-    out = verdicts.copy()
-    labels = {sc.label: sc.name for sc in spec.scenarios}
-    names = {f.label: f.name for f in spec.factors}
-    for i, row in out.iterrows():
-        partners = in_combination.get(labels.get(row["scenario"], row["scenario"]), {}).get(
-            names.get(row["factor"], row["factor"]))
-        if partners and row["verdict"] == "unresolved":
-            others = " and ".join(spec.factor(p).label for p in partners)
-            out.at[i, "verdict"] = f"unresolved alone; identified in combination with {others}"
-    return out
 
 
 def combination_lines(combinations: dict, spec) -> list[str]:

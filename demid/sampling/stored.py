@@ -16,6 +16,7 @@ import pandas as pd
 
 from .evaluate import EXACT_METHOD, exact_set_on_domain, uses_exact
 from .grid import AdmissibleSet
+from ..tolerance import scenario_surrogates
 
 if TYPE_CHECKING:
     from ..spec import MaterialSpec
@@ -59,7 +60,8 @@ def stored_strict_sets(frame: pd.DataFrame, surrogates: dict, spec: MaterialSpec
                 or float(rows["tolerance"].iloc[0]) != float(scen.tolerance)
                 or not uses_exact(surrogates, scen.observables, domain)):
             continue
-        exact = exact_set_on_domain(surrogates, domain, scen.observables, targets, scen.tolerance, point)
+        exact = exact_set_on_domain(scenario_surrogates(surrogates, spec, scen.tolerance), domain, scen.observables,
+                                    targets, scen.tolerance, point)
         # Seed the lazily computed state with the stored values: nothing is evaluated twice.
         exact.__dict__["_fraction"] = (float(rows["exact_fraction"].iloc[0]),
                                        float(rows["exact_fraction_error"].iloc[0]))

@@ -3,11 +3,12 @@
 The admissible set of eq. (2) treats the surrogate as exact and the targets as
 known.  This module adds what a calibration decision needs on top of it:
 
-* **Robust (plausible) admissibility**, history-matching style: x is plausibly
-  admissible when, for every observable k,
-  ``|yhat_k(x) - y_k*| <= eps |y_k*| + z sqrt(se_mean_k(x)^2 + sigma_k^2)``,
-  with ``se_mean`` the OLS standard error of the fitted mean (statsmodels'
-  ``mean_se``) and ``sigma_k`` the measurement standard deviation of the target.
+* **Robust (plausible) admissibility**, history-matching style: x is plausible when, for every
+  observable k, ``|yhat_k(x) - y_k*| <= z sqrt(se_mean_k(x)^2 + sigma_k^2 + delta_k^2)``, with
+  ``se_mean`` the OLS standard error of the fitted mean (statsmodels' ``mean_se``), ``sigma_k`` the
+  measurement standard deviation of the target (where none is configured, the tolerance band is the
+  measurement band: ``sigma_k = eps_k |y_k*| / z``) and ``delta_k`` an optional discrepancy
+  (:data:`demid.sampling.residuals.PLAUSIBLE_DEFINITION`, the one definition).
 * **Tolerance sweeps** Phi(eps) and spans as functions of eps.
 * **Grid posteriors**: a uniform prior on Omega (in search units: log10 for
   log-scale factors) and independent Gaussian likelihoods with variance
@@ -28,8 +29,8 @@ Modules: ``sigma`` (measurement sigma), ``robust``, ``sweep``, ``posterior``,
 figures in :mod:`demid.plots.uncertainty`, estimators in :mod:`demid.sampling`.
 
 Measurement sigma: ``sigma`` (absolute) or ``sigma_rel`` (times |y*|) from the
-response's config.  Robust sets use 0 when neither is configured (surrogate
-uncertainty only).  Posteriors need a likelihood width; when neither is
+response's config.  Plausible sets take the tolerance as the measurement band
+when neither is configured.  Posteriors need a likelihood width; when neither is
 configured the default is ``sigma_rel = tolerance / 2``, i.e. the scenario
 tolerance is read as a two-sigma (about 95 %) band; outputs say which basis
 was used (``sigma_basis``).

@@ -18,8 +18,11 @@ from ..sampling.evaluate import evaluate_set, uses_exact
 from ..spec import FALLBACK_TOLERANCE, as_spec
 from .posterior import INFORMATION_GAIN_COLUMNS, information_gain_frame, subset_posteriors
 from .ranking import RANKING_COLUMNS, next_measurement_advice, rank_observable_sets
+from ..sampling.residuals import PLAUSIBLE_DEFINITION
+from .recommended import recommended_point, uninformative_observables
 from .robust import ROBUST_COLUMNS, robust_identifiability_frame
 from .sigma import measurement_sigmas
+from ..tolerance import band_scale, has_own_tolerance, plausible_basis, scenario_bands, scenario_surrogates
 from .sweep import DEFAULT_SWEEP_TOLERANCES, SWEEP_COLUMNS, tolerance_sweep
 
 if TYPE_CHECKING:
@@ -57,11 +60,15 @@ class MaterialUncertainty:
     scenario_labels: dict[str, str] = field(default_factory=dict)
     unreachable: tuple[str, ...] = ()  # observable sets (d5+d10) with a target out of reach
     observable_labels: dict[str, str] = field(default_factory=dict)  # mathtext, for the legends
+    recommended: dict | None = None  # the most robust point of the widest scenario's plausible set
+    uninformative: dict[str, str] = field(default_factory=dict)  # observable -> why it says nothing
 
     @property
     def summary(self) -> dict:
-        """``uncertainty/{material}.json``: the next-measurement advice and the notes on sizes and sigmas."""
-        return {"advice": self.advice, "notes": self.notes}
+        """``uncertainty/{material}.json``: the next-measurement advice, the notes on sizes and sigmas, the
+        plausible-set definition, the recommended point and the uninformative observables."""
+        return {"advice": self.advice, "notes": self.notes, "plausible_definition": PLAUSIBLE_DEFINITION,
+                "recommended": self.recommended, "uninformative": dict(self.uninformative)}
 
     def sweep_figure(self, title: str):
         return tolerance_sweep_figure(self.sweep, title, factor_labels=self.factor_labels,
@@ -91,29 +98,36 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
     sizes = {**recommended_sizes(domain.dim), **(sizes or {})}
     tolerance = spec.reference_tolerance
     observables = list(targets)
-    robust_sigma, robust_basis = measurement_sigmas(spec.sigma_config, observables, targets)
-    post_sigma, post_basis = measurement_sigmas(spec.sigma_config, observables, targets, tolerance)
+    # the posterior's likelihood width is the plausible set's measurement band: configured, or tolerance / z
+    post_sigma, post_basis = measurement_sigmas(spec.sigma_config, observables, targets, tolerance, z)
     labels = {r: spec.response_labels[r] for r in observables}
     factor_labels = {f.name: axis_label(f) for f in spec.factors}  # mathtext with unit, for the figures
+    # an observable with its own tolerance is judged by it: rescaled residual surrogates (demid.tolerance)
+    at_reference = scenario_surrogates(surrogates, spec, tolerance)
+    post_sigma = {o: v * band_scale(spec.response(o), targets[o], tolerance) for o, v in post_sigma.items()}
 
     if strict_sets is None:
         # each scenario's strict set, evaluated once and shared by robust table, sweep and ranking
-        strict_sets = {sc.name: evaluate_set(surrogates, domain, sc.observables, targets, sc.tolerance,
-                                             sizes["robust"]) for sc in spec.scenarios
-                       if uses_exact(surrogates, sc.observables, domain)}
+        strict_sets = {sc.name: evaluate_set(scenario_surrogates(surrogates, spec, sc.tolerance), domain,
+                                             sc.observables, targets, sc.tolerance, sizes["robust"])
+                       for sc in spec.scenarios if uses_exact(surrogates, sc.observables, domain)}
     by_observables = {frozenset(sc.observables): strict_sets[sc.name] for sc in spec.scenarios
                       if sc.tolerance == tolerance and sc.name in strict_sets}
     robust = sweep = None
     if scenarios:
-        robust = robust_identifiability_frame(surrogates, domain, scenarios, targets, sizes["robust"], z=z,
-                                              sigma=robust_sigma, strict_sets=strict_sets,
-                                              sobol_points=sizes["robust"], seed=seed)
-        sweep = tolerance_sweep(surrogates, domain, scenarios, targets, tolerances, sizes["sweep"],
-                                sobol_points=sizes["sweep"], seed=seed, strict_sets=strict_sets)
+        robust = pd.concat([robust_identifiability_frame(
+            scenario_surrogates(surrogates, spec, sc.tolerance), domain, {sc.name: scenarios[sc.name]}, targets,
+            sizes["robust"], z=z, sigma=scenario_bands(spec, sc.observables, sc.tolerance), strict_sets=strict_sets,
+            sobol_points=sizes["robust"], seed=seed) for sc in spec.scenarios], ignore_index=True)
+        groups = ([spec.scenarios] if not has_own_tolerance(spec) else [(sc,) for sc in spec.scenarios])
+        sweep = pd.concat([tolerance_sweep(scenario_surrogates(surrogates, spec, group[0].tolerance), domain,
+                                           {sc.name: scenarios[sc.name] for sc in group}, targets, tolerances,
+                                           sizes["sweep"], sobol_points=sizes["sweep"], seed=seed,
+                                           strict_sets=strict_sets) for group in groups], ignore_index=True)
     points = sizes.get("posterior_points", 2 ** 16)
-    posteriors = subset_posteriors(surrogates, domain, observables, targets, post_sigma, sizes["posterior"],
+    posteriors = subset_posteriors(at_reference, domain, observables, targets, post_sigma, sizes["posterior"],
                                    sigma_basis=post_basis, sobol_points=points, seed=seed) if observables else {}
-    ranking = (rank_observable_sets(surrogates, domain, observables, targets, post_sigma, tolerance,
+    ranking = (rank_observable_sets(at_reference, domain, observables, targets, post_sigma, tolerance,
                                     sizes["posterior"], posteriors=posteriors, sobol_points=points,
                                     strict_sets=by_observables)
                if observables else pd.DataFrame(columns=RANKING_COLUMNS))
@@ -126,7 +140,7 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
                          ["information_gain_bits", "information_gain_error_bits"]] = float("nan")
     grid_word = "grid points per axis" if uses_grid(domain.dim) else "scrambled Sobol points"
     notes = [
-        f"Robust sets: z = {z:g}; " + "; ".join(f"{o}: {robust_basis[o]}" for o in observables) + ".",
+        f"Plausible sets: z = {z:g}; " + "; ".join(f"{o}: {plausible_basis(spec, o)}" for o in observables) + ".",
         f"Posteriors and ranking at tolerance {tolerance:g}: "
         + "; ".join(f"{o}: {post_basis[o]}" for o in observables) + ".",
         f"Robust sets on {sizes['robust']} {grid_word}, sweeps on {sizes['sweep']}, "
@@ -145,7 +159,15 @@ def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2
     if not scenarios:
         notes.append(f"No scenarios configured: ranking and default sigma use tolerance {FALLBACK_TOLERANCE:g}.")
     empty_robust = pd.DataFrame(columns=ROBUST_COLUMNS)
+    widest = max(spec.scenarios, key=lambda sc: len(sc.observables)) if spec.scenarios else None
+    recommended = (recommended_point(surrogates, spec, widest, z, n=sizes["robust"])
+                   if widest is not None and all(o in surrogates for o in widest.observables) else None)
+    uninformative = uninformative_observables(ranking)
+    if uninformative:
+        notes.append("Uninformative observables: " + "; ".join(f"{o}: {why}" for o, why in uninformative.items())
+                     + ".")
     return MaterialUncertainty(
+        recommended=recommended, uninformative=uninformative,
         robust=robust if robust is not None else empty_robust,
         sweep=sweep if sweep is not None else pd.DataFrame(columns=SWEEP_COLUMNS),
         information_gain=information_gain,

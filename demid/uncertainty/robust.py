@@ -1,9 +1,11 @@
 """Robust (plausible) admissibility, history-matching style.
 
 x is plausibly admissible when, for every observable k,
-``|yhat_k(x) - y_k*| <= eps |y_k*| + z sqrt(se_mean_k(x)^2 + sigma_k^2)``,
-with ``se_mean`` the OLS standard error of the fitted mean (statsmodels'
-``mean_se``) and ``sigma_k`` the measurement standard deviation of the target.
+``|yhat_k(x) - y_k*| <= z sqrt(se_mean_k(x)^2 + sigma_k^2 + delta_k^2)``, with ``se_mean`` the
+OLS standard error of the fitted mean (statsmodels' ``mean_se``), ``sigma_k`` the measurement
+standard deviation of the target (none configured: ``eps |y_k*| / z``, the tolerance as the
+measurement band) and ``delta_k`` an optional discrepancy sd
+(:data:`~demid.sampling.residuals.PLAUSIBLE_DEFINITION`).
 """
 
 from __future__ import annotations
@@ -38,12 +40,13 @@ def robust_admissible_set(surrogates: dict[str, Surrogate], domain: Domain, obse
                           targets: dict[str, float], tolerance: float, n: int, *, z: float = 2.0,
                           sigma: dict[str, float] | None = None, predictive: bool = False,
                           subdivisions: int | None = None) -> AdmissibleSet:
-    """Plausibly admissible set: ``|yhat - y*| <= eps |y*| + z sqrt(se_mean^2 + sigma^2)``.
+    """Plausibly admissible set: ``|yhat - y*| <= z sqrt(se_mean^2 + sigma^2 + delta^2)``.
 
-    Same grid, boundary refinement and spans as the strict set, so robust contains strict
-    point by point (tested).  ``sigma``: absolute measurement sd per observable (missing: 0).
-    ``best_error`` of the result is ``eps * min_x max_k |yhat - y*| / (eps |y*| + z s)``,
-    i.e. the smallest implausibility expressed in tolerance units.
+    Same grid, boundary refinement and spans as the strict set; without a configured sigma the
+    plausible set contains the strict one point by point (tested).  ``sigma``: per observable its
+    configured sd or a :class:`~demid.sampling.residuals.MeasurementBand` (missing: the tolerance
+    is the band).  ``best_error`` of the result is ``eps * min_x max_k |yhat - y*| / H``, i.e. the
+    smallest implausibility expressed in tolerance units.
     """
     observables = tuple(observables)
     fields = plausibility_fields(surrogates, observables, targets, tolerance, z, sigma, predictive)

@@ -198,6 +198,7 @@ def report_tables():
     out += next_wave_tables()
     out += [f"{RESULTS}/combinations/{m}.json" for m in MATERIALS]
     out += [f"{RESULTS}/fits/{m}.json" for m in MATERIALS]
+    out += [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]  # rule story
     return out
 
 
@@ -286,6 +287,7 @@ def all_outputs():
     out += SUMMARY_TABLES
     out += [f"{RESULTS}/criticism/{m}" for m in MATERIALS]
     out += next_wave_tables()
+    out += [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]  # rule story
     out.append(f"{RESULTS}/report/report.html")
     if config.get("published"):
         out.append(f"{RESULTS}/tables/paper_comparison.csv")
@@ -305,3 +307,22 @@ def cancel_scheduler_timers():
     for thread in threading.enumerate():
         if isinstance(thread, threading.Timer):
             thread.cancel()
+
+
+# Inputs and outputs of the story step (workflow/rules/story.smk), verdicts and advice computed once.
+def story_inputs():
+    out = dict(
+        identifiability=f"{RESULTS}/tables/identifiability.csv",
+        robust=f"{RESULTS}/tables/robust_identifiability.csv",
+        ranking=f"{RESULTS}/tables/observable_ranking.csv",
+        tables=[f"{RESULTS}/validated/{m}.parquet" for m in MATERIALS],
+        criticism=[f"{RESULTS}/criticism/{m}.json" for m in MATERIALS],
+        uncertainty=[f"{RESULTS}/uncertainty/{m}.json" for m in MATERIALS],
+        combinations=[f"{RESULTS}/combinations/{m}.json" for m in MATERIALS],
+    )
+    if next_wave_materials():
+        out["next_wave_value"] = f"{RESULTS}/next_wave/value.json"
+    return out
+
+
+STORY_TABLES = [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]

@@ -8,6 +8,7 @@ rule next_wave:
         domain=f"{RESULTS}/tables/next_domain.csv",
         runs=f"{RESULTS}/tables/next_runs.csv",
         reasons=f"{RESULTS}/next_wave/reasons.json",
+        value=f"{RESULTS}/next_wave/value.json",
     params:
         specs=[SPECS[m] for m in next_wave_materials()],
         spec_digests=[SPECS[m].digest for m in next_wave_materials()],

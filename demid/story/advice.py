@@ -1,0 +1,197 @@
+"""Every piece of advice of a study, computed once: the summary, level 2 and the next-wave section read it.
+
+Kinds (``tables/advice.csv``): ``check_target`` (a target no simulated setting comes near, or one the
+surrogate cannot meet), ``recalibrate`` (no point meets every target, or a surrogate does not predict),
+``add_observable`` (the measurement that narrows most, or that a new kind is needed), ``widen`` (a bound
+that cuts the plausible set, or the best point when no point meets every target, and only where moving it
+can narrow or reach something), ``next_runs`` and ``stop`` (what the next wave can still buy).
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+
+import numpy as np
+import pandas as pd
+
+ADVICE_COLUMNS = ["material", "kind", "factor", "bound", "observable", "text"]
+#: Where each kind is read in the report besides the summary.
+LEVEL2_KINDS = ("check_target", "recalibrate", "widen")
+NEXT_WAVE_KINDS = ("next_runs", "stop")
+
+
+@dataclass(frozen=True)
+class AdviceItem:
+    material: str
+    kind: str
+    factor: str
+    bound: str
+    observable: str
+    text: str
+
+
+@dataclass
+class StudyAdvice:
+    """The advice of one or more materials, in the order the summary gives it."""
+
+    items: list[AdviceItem]
+
+    def to_frame(self) -> pd.DataFrame:
+        return pd.DataFrame([asdict(i) for i in self.items], columns=ADVICE_COLUMNS)
+
+    @classmethod
+    def from_frame(cls, frame: pd.DataFrame | None) -> StudyAdvice:
+        if frame is None or not len(frame):
+            return cls([])
+        clean = frame.fillna("").astype(str)
+        return cls([AdviceItem(*(row[c] for c in ADVICE_COLUMNS)) for _, row in clean.iterrows()])
+
+    def texts(self, material: str, kinds=None) -> list[str]:
+        return [i.text for i in self.items if i.material == material and (kinds is None or i.kind in kinds)]
+
+
+def _label(spec, name: str) -> str:
+    return spec.response_labels.get(name, name)
+
+
+def _bound_text(f, side: str) -> str:
+    from ..report.summary import unit_text
+
+    unit = f" {unit_text(f.unit)}" if f.unit != "-" else ""
+    return f"{side} bound ({(f.lower if side == 'lower' else f.upper):.4g}{unit})"
+
+
+def _check_targets(spec, implausible: dict, ranking) -> list[AdviceItem]:
+    from ..data import power_of_ten_repair
+
+    items = []
+    for r, found in implausible.items():
+        key = f"materials.{spec.name}.responses.{r}.target"
+        head = (f"Check the target of {_label(spec, r)} (config key {key}): {spec.targets[r]:.6g} lies farther from "
+                f"every simulated value ({found['lo']:.4g} to {found['hi']:.4g}) than the simulated range itself")
+        if found["factor"] is not None:
+            text = (f"{head}; {power_of_ten_repair(found)}, so it is likely a unit or typing slip. No widening "
+                    "of the search range can reach it.")
+        else:
+            text = (f"{head}: a discrepancy between simulation and experiment, not a calibration; check the target "
+                    "and the simulation of it. No widening of the search range is advised for it.")
+        items.append(AdviceItem(spec.name, "check_target", "", "", r, text))
+    if ranking is not None and len(ranking) and "targets_reachable" in ranking.columns:
+        reachable = ranking["targets_reachable"].astype(str).str.lower() == "true"
+        for o in ranking[(ranking["n_observables"] == 1) & ~reachable]["observables"]:
+            if o in implausible:
+                continue
+            items.append(AdviceItem(spec.name, "check_target", "", "", o, (
+                f"Check the target of {_label(spec, o)} and the simulation of it: the surrogate cannot meet it "
+                "anywhere in the search range within the tolerance. That is a discrepancy between simulation and "
+                "experiment, not information; observable sets with it are ranked last and get no information gain.")))
+    return items
+
+
+def _recalibrate(spec, level1: dict, level2: dict, checked: set) -> list[AdviceItem]:
+    items = []
+    for r, res in (level1 or {}).items():
+        if res.get("verdict") == "does_not_predict":
+            items.append(AdviceItem(spec.name, "recalibrate", "", "", r, (
+                f"Refit or resimulate {_label(spec, r)}: its surrogate does not predict left-out runs (Q² < 0), so "
+                "the sets that use it are not to be trusted.")))
+    if level2 and not level2.get("feasible", True):
+        limit = level2.get("bottleneck")
+        if limit not in checked:
+            which = (f"the target and the simulation of {_label(spec, limit)}, the observable that limits the best "
+                     "match" if limit else "the targets and their simulation")
+            items.append(AdviceItem(spec.name, "recalibrate", "", "", limit or "", (
+                f"No parameter set meets every target within {100 * level2['tolerance']:g} %: settle that first. "
+                f"Check {which}.")))
+    return items
+
+
+def _add_observable(spec, ranking, uninformative: dict, level2: dict) -> list[AdviceItem]:
+    used = max((sc.observables for sc in spec.scenarios), key=len, default=())
+    if not used or (level2 and not level2.get("feasible", True)):
+        return []
+    if ranking is not None and len(ranking):
+        if "targets_reachable" in ranking.columns:
+            ranking = ranking[ranking["targets_reachable"].astype(str).str.lower() == "true"]
+        grow = ranking[(ranking["best_subset"] == "+".join(used)) & (ranking["n_observables"] == len(used) + 1)]
+        grow = grow[[not any(o in uninformative for o in s.split("+") if o not in used) for s in grow["observables"]]]
+        if len(grow):
+            best = grow.sort_values("gain_vs_best_subset_bits", ascending=False).iloc[0]
+            added = [o for o in best["observables"].split("+") if o not in used]
+            return [AdviceItem(spec.name, "add_observable", "", "", "+".join(added), (
+                f"Measure {', '.join(_label(spec, o) for o in added)} as well: it adds "
+                f"{best['gain_vs_best_subset_bits']:.2f} bits of information and leaves "
+                f"{best['feasible_fraction_pct']:.3g} % of the domain admissible."))]
+    return [AdviceItem(spec.name, "add_observable", "", "", "", (
+        "Every informative observable with a target is already used; a narrower set needs a new kind of "
+        "measurement or a tighter measurement (a smaller σ or tolerance)."))]
+
+
+def _widen(spec, verdicts: pd.DataFrame, level2: dict, implausible: dict) -> list[AdviceItem]:
+    sides: dict[str, set] = {}
+    why: dict[str, list[str]] = {}
+    for _, row in verdicts.iterrows():
+        if not str(row["verdict"]).startswith("cut"):
+            continue  # unresolved, uninformative or empty: a wider range narrows nothing
+        found = str(row["verdict"]).split("(")[1].split(" bound")[0]
+        sides.setdefault(row["factor"], set()).update(found.split(" and "))
+        label = next((sc.label for sc in spec.scenarios if sc.name == row["scenario"]), row["scenario"])
+        why.setdefault(row["factor"], []).append(f"the plausible set of *{label}* ends there only because the "
+                                                 "search range does")
+    misses = level2 and not level2.get("feasible", True)
+    movable = [o for o in (level2 or {}).get("observables", []) if o not in (level2 or {}).get("unmoved", [])]
+    if misses and not any(o in implausible for o in (level2 or {}).get("observables", [])) and movable:
+        for name, value in (level2.get("best_point_at_bound") or {}).items():
+            if value != "none":
+                sides.setdefault(name, set()).update(["lower", "upper"] if value == "both" else [value])
+                why.setdefault(name, []).append("no point meets every target and the best point lies on it")
+    items = []
+    for f in spec.factors:
+        for side in [s for s in ("lower", "upper") if s in sides.get(f.name, ())]:
+            items.append(AdviceItem(spec.name, "widen", f.name, side, "", (
+                f"Widen the range of {f.label} beyond its {_bound_text(f, side)} and simulate runs there: "
+                f"{'; '.join(dict.fromkeys(why[f.name]))}.")))
+    return items
+
+
+def _next_wave(spec, value: dict | None, best_observable: str) -> list[AdviceItem]:
+    if not value:
+        return []
+    label = next((sc.label for sc in spec.scenarios if sc.name == value["scenario"]), value["scenario"])
+    shrink = value["expected_contraction"]
+    if value.get("stop"):
+        helps = (f"measuring {best_observable}" if best_observable else "a new kind of measurement")
+        return [AdviceItem(spec.name, "stop", "", "", "", (
+            f"Stop simulating runs of this kind: the {value['count']} proposed runs (tables/next_runs.csv) are "
+            f"expected to shrink the plausible set of *{label}* by only {100 * shrink:.1f} % "
+            f"({value['plausible_fraction_pct']:.3g} % → {value['expected_fraction_pct']:.3g} % of the search range); "
+            f"its width is set by the measurement band, not by the surrogate. What would help: {helps}, or a "
+            "tighter measurement of the observables already used."))]
+    expect = (f"they are expected to shrink the plausible set of *{label}* by about {100 * shrink:.0f} % "
+              f"({value['plausible_fraction_pct']:.3g} % → {value['expected_fraction_pct']:.3g} % of the search range)"
+              if np.isfinite(shrink) else "the plausible set is empty, so their value cannot be estimated")
+    return [AdviceItem(spec.name, "next_runs", "", "", "", (
+        f"Simulate the {value['count']} proposed runs (tables/next_runs.csv): {expect}."))]
+
+
+def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | None = None,
+                    criticism: dict | None = None, implausible: dict | None = None,
+                    uninformative: dict | None = None, wave_value: dict | None = None,
+                    ridge_advice: list[str] = ()) -> list[AdviceItem]:
+    """Every piece of advice of one material, in the summary's order.
+
+    ``verdicts``: its rows of :func:`~demid.story.verdicts.verdict_frame`; ``criticism``: its
+    ``criticism/{m}.json``; ``implausible``: :func:`~demid.data.implausible_targets` of its table;
+    ``uninformative``: from the uncertainty summary; ``wave_value``: ``next_wave/value.json``'s entry;
+    ``ridge_advice``: which other observable would break an identified combination's ridge
+    (``combinations/{m}.json``), given as ``add_observable`` advice.
+    """
+    criticism, implausible, uninformative = criticism or {}, implausible or {}, uninformative or {}
+    level2 = criticism.get("level2") or {}
+    checks = _check_targets(spec, implausible, ranking)
+    add = _add_observable(spec, ranking, uninformative, level2)
+    best = next((i.observable for i in add if i.observable), "")
+    return (checks + _recalibrate(spec, criticism.get("level1") or {}, level2, {i.observable for i in checks})
+            + add + [AdviceItem(spec.name, "add_observable", "", "", "", text) for text in ridge_advice]
+            + _widen(spec, verdicts, level2, implausible)
+            + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o)))

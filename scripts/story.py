@@ -1,0 +1,18 @@
+"""Snakemake script: the verdict per factor and every piece of advice, computed once for the report."""
+
+import sys
+
+sys.stderr = open(snakemake.log[0], "w", encoding="utf-8")  # noqa: F821
+
+from demid.io import write_csv  # noqa: E402
+from demid.story import study_story  # noqa: E402
+
+inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
+specs = {spec.name: spec for spec in params.specs}
+per_material = {name: dict(zip(specs, getattr(inp, name))) for name in ("tables", "criticism", "uncertainty",
+                                                                          "combinations")}
+files = {"identifiability": inp.identifiability, "robust": inp.robust, "ranking": inp.ranking, **per_material,
+         "next_wave_value": inp.get("next_wave_value")}
+verdicts, advice = study_story(specs, files)
+write_csv(verdicts, out.verdicts)
+write_csv(advice, out.advice)
