@@ -173,14 +173,20 @@ def test_advice_names_the_observable_that_cuts_the_band():
 def test_combination_verdicts_and_lines():
     import pandas as pd
 
-    from demid.report.summary import combination_lines, combination_verdicts
+    from demid.report.summary import combination_lines
+    from demid.story.verdicts import in_combination
 
     spec = _band_spec()
     verdicts = pd.DataFrame({"scenario": ["band", "band"], "factor": ["a", "b"],
-                             "verdict": ["unresolved", "identified"]})
-    out = combination_verdicts(verdicts, {"band": {"a": ["b"], "b": ["a"]}}, spec)
+                             "verdict": ["unresolved", "identified"], "reason": ["wide", "narrow"]})
+    # identified in combination by the plausible set: the verdict says so
+    out = in_combination(verdicts, spec, {"in_combination_plausible": {"band": {"a": ["b"], "b": ["a"]}}})
     assert out["verdict"].tolist() == ["unresolved alone; identified in combination with b", "identified"]
-    assert combination_verdicts(verdicts, {}, spec)["verdict"].tolist() == ["unresolved", "identified"]
+    # by the strict set only: the verdict stays, the reason says it would hold if everything were exact
+    strict = in_combination(verdicts, spec, {"in_combination": {"band": {"a": ["b"], "b": ["a"]}}})
+    assert strict["verdict"].tolist() == ["unresolved", "identified"]
+    assert "if surrogate and measurements were exact" in strict["reason"].iloc[0]
+    assert in_combination(verdicts, spec, {})["verdict"].tolist() == ["unresolved", "identified"]
     lines = combination_lines({"sets": [{"scenario": "band", "set": "strict", "identified": True,
                                          "text": "a curved band: b ≈ f(a) along the band.",
                                          "curve": {"along": "a", "across": "b", "along_actual": [0.0, 1.0],
