@@ -14,6 +14,7 @@ include: "workflow/rules/material.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/tables.smk"
 include: "workflow/rules/next_wave.smk"
+include: "workflow/rules/simulation_common.smk"
 include: "workflow/rules/simulation.smk"
 include: "workflow/rules/report.smk"
 
