@@ -1,7 +1,7 @@
 """A cheap deterministic simulator for the workflow tests: two smooth responses of factors a and b
 with 0.3 % noise drawn from --seed, written as JSON to --out.
 
-``--fail-run R --fail-mode M`` makes run R fail: ``exit`` (status 3), ``hang`` (sleeps past any test's
+``--fail MODE:R`` (repeatable) makes run R fail: ``exit`` (status 3), ``hang`` (sleeps past any test's
 timeout), ``garbage`` (writes text that is not JSON), ``nan`` (a non-finite response), ``missing``
 (writes nothing).  Every argument it receives is also appended, one per line, to --argv-log when given.
 """
@@ -18,8 +18,7 @@ parser.add_argument("--b", type=float, required=True)
 parser.add_argument("--seed", type=int, required=True)
 parser.add_argument("--run", type=int, default=0)
 parser.add_argument("--out", required=True)
-parser.add_argument("--fail-run", type=int, default=-1)
-parser.add_argument("--fail-mode", default="exit")
+parser.add_argument("--fail", action="append", default=[])
 parser.add_argument("--argv-log", default="")
 parser.add_argument("extra", nargs="*")
 args = parser.parse_args()
@@ -27,17 +26,19 @@ if args.argv_log:
     with open(args.argv_log, "a", encoding="utf-8") as log:
         log.write("\n".join(sys.argv[1:]) + "\n")
 
-if args.run == args.fail_run:
-    if args.fail_mode == "exit":
+failures = {int(run): mode for mode, _, run in (f.partition(":") for f in args.fail)}
+mode = failures.get(args.run, "")
+if mode:
+    if mode == "exit":
         print("simulated divergence", file=sys.stderr)
         sys.exit(3)
-    if args.fail_mode == "hang":
+    if mode == "hang":
         time.sleep(60)
-    if args.fail_mode == "garbage":
+    if mode == "garbage":
         with open(args.out, "w", encoding="utf-8") as out:
             out.write("Segmentation fault (core dumped)\n")
         sys.exit(0)
-    if args.fail_mode == "missing":
+    if mode == "missing":
         sys.exit(0)
 
 noise = random.Random(args.seed)
@@ -45,7 +46,7 @@ a, b = args.a, args.b
 y1 = 100 + 20 * a - 2 * b + 10 * a ** 2 + 0.5 * a * b + 3 * a ** 3
 y2 = 80 + 5 * a + 3 * b - 0.1 * b ** 2 + 0.02 * b ** 3
 values = {"y1": y1 * (1 + 0.003 * noise.gauss(0, 1)), "y2": y2 * (1 + 0.003 * noise.gauss(0, 1))}
-if args.run == args.fail_run and args.fail_mode == "nan":
+if mode == "nan":
     values["y2"] = float("nan")
 with open(args.out, "w", encoding="utf-8") as out:
     json.dump(values, out)
