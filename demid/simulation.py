@@ -140,12 +140,12 @@ def first_wave(spec, seed: int) -> pd.DataFrame:
 
 def run_parameters(material: str, wave: int, run: int, factor_values: dict, simulation: Simulation) -> dict:
     """What one run is: the values written to params.json and passed to the job (Snakemake reruns a run
-    whose parameters changed)."""
+    whose parameters changed; the time limit, threads and retries are not among them, so raising a
+    limit does not rerun finished runs)."""
     return {"material": material, "wave": int(wave), "run": int(run),
             "seed": run_seed(material, wave, run, simulation.seed),
             "factors": {name: float(v) for name, v in factor_values.items()},
-            "command": simulation.command, "responses_file": simulation.responses_file,
-            "runtime_min": simulation.runtime_min}
+            "command": simulation.command, "responses_file": simulation.responses_file}
 
 
 def _read_responses(path: Path, responses) -> tuple[dict, str]:
@@ -169,11 +169,12 @@ def _read_responses(path: Path, responses) -> tuple[dict, str]:
     return values, ""
 
 
-def execute(parameters: dict, run_dir: Path | str, responses, log) -> dict:
+def execute(parameters: dict, run_dir: Path | str, responses, log, timeout_s: float) -> dict:
     """Run one simulation and return its record ``{status, reason, responses}``.
 
-    ``log``: an open text file receiving the command line, its output and the outcome.  The responses
-    file of an earlier attempt is removed first, so a failed retry cannot pass off stale values.
+    ``log``: an open text file receiving the command line, its output and the outcome; ``timeout_s``:
+    the run's time limit in seconds.  The responses file of an earlier attempt is removed first, so a
+    failed retry cannot pass off stale values.
     """
     run_dir = Path(run_dir).resolve()
     run_dir.mkdir(parents=True, exist_ok=True)
@@ -184,12 +185,11 @@ def execute(parameters: dict, run_dir: Path | str, responses, log) -> dict:
     out.unlink(missing_ok=True)
     log.write("command: " + shlex.join(argv) + "\n")
     log.flush()
-    timeout = 60.0 * parameters["runtime_min"]
     try:
         done = subprocess.run(argv, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                              timeout=timeout)
+                              timeout=timeout_s)
     except subprocess.TimeoutExpired:
-        return _record(FAILED, f"timed out after {timeout:g} s", {}, log)
+        return _record(FAILED, f"timed out after {timeout_s:g} s", {}, log)
     except OSError as exc:
         return _record(FAILED, f"could not start the command ({exc.strerror or exc})", {}, log)
     if done.returncode != 0:

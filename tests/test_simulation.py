@@ -48,16 +48,16 @@ def _checked(materials: dict) -> dict:
 
 
 # ---------------------------------------------------------------------------------------- one run
-def _parameters(run: int, command: str, a: float = 0.5, b: float = 6.0, runtime_min: float = 0.05) -> dict:
+def _parameters(run: int, command: str, a: float = 0.5, b: float = 6.0) -> dict:
     return {"material": "m", "wave": 1, "run": run, "seed": run_seed("m", 1, run), "factors": {"a": a, "b": b},
-            "command": command, "responses_file": "responses.json", "runtime_min": runtime_min}
+            "command": command, "responses_file": "responses.json"}
 
 
 def _execute(parameters: dict, run_dir: Path, responses) -> tuple[dict, str]:
     """execute() with a log file, as the workflow gives it; the record and the log's text."""
     run_dir.mkdir(parents=True, exist_ok=True)
     with open(run_dir / "log", "w", encoding="utf-8") as log:
-        record = execute(parameters, run_dir, responses, log)
+        record = execute(parameters, run_dir, responses, log, timeout_s=3)
     return record, (run_dir / "log").read_text(encoding="utf-8")
 
 
@@ -229,11 +229,19 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     assert second.returncode == 0, second.stderr[-3000:]
     assert tree_hashes(results) == tree_hashes(twin / "results")
 
-    # An edited bound of n reruns n's runs and chain only.
+    # An edited bound of n reruns the runs of n it moves (not the axial run on b's lower bound) and
+    # n's chain, nothing of m.
+    moved = _material(_command())
+    moved["factors"]["b"]["upper"] = 12.0
+    moved = first_wave(MaterialSpec.from_material("n", _checked({"n": moved})["materials"]["n"]), seed=1)
+    before = first_wave(MaterialSpec.from_material("n", _checked({"n": _material(_command())})["materials"]["n"]),
+                        seed=1)
+    changed = int((moved[["a", "b"]] != before[["a", "b"]]).any(axis=1).sum())
+    assert changed == 10
     text = config.read_text(encoding="utf-8")
     n_block = text.index("  n:\n")
     config.write_text(text[:n_block] + text[n_block:].replace("upper: 11.0", "upper: 12.0", 1), encoding="utf-8")
     edit = run_snakemake(study, config, TARGET, "-n")
     jobs = planned_jobs(edit.stdout)
-    assert jobs.get("simulate_run") == 11 and jobs.get("analyse_wave") == 1, edit.stdout
+    assert jobs.get("simulate_run") == changed and jobs.get("analyse_wave") == 1, edit.stdout
     assert re.search(r"material=n\b", edit.stdout) and not re.search(r"material=m\b", edit.stdout), edit.stdout

@@ -24,13 +24,13 @@ rule simulate_run:
     params:
         run=simulate_run_parameters,  # factor values, seed, command: a change reruns this run only
         responses=lambda wildcards: SPECS[wildcards.material].response_names,
-        retries=lambda wildcards: SIMULATIONS[wildcards.material].retries,
     threads: lambda wildcards: SIMULATIONS[wildcards.material].threads
     retries: SIMULATION_RETRIES
     resources:
         mem_mb=lambda wildcards: SIMULATIONS[wildcards.material].mem_mb,
         runtime=lambda wildcards: SIMULATIONS[wildcards.material].runtime_resource,
         cpus_per_task=lambda wildcards: SIMULATIONS[wildcards.material].threads,  # a cluster's CPUs per run
+        attempt=lambda wildcards, attempt: attempt,  # the script retries a failed run until the last one
     conda:
         "../envs/demid.yaml"
     log:
