@@ -13,8 +13,10 @@ from __future__ import annotations
 import hashlib
 import json
 import math
+import os
 import re
 import shlex
+import signal
 import subprocess
 from dataclasses import dataclass
 from pathlib import Path
@@ -186,14 +188,19 @@ def execute(parameters: dict, run_dir: Path | str, responses, log, timeout_s: fl
     log.write("command: " + shlex.join(argv) + "\n")
     log.flush()
     try:
-        done = subprocess.run(argv, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                              timeout=timeout_s)
-    except subprocess.TimeoutExpired:
-        return _record(FAILED, f"timed out after {timeout_s:g} s", {}, log)
+        # its own process group, so that a timeout stops whatever the command started too
+        process = subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                   start_new_session=True)
     except OSError as exc:
         return _record(FAILED, f"could not start the command ({exc.strerror or exc})", {}, log)
-    if done.returncode != 0:
-        return _record(FAILED, f"the command exited with status {done.returncode}", {}, log)
+    try:
+        returncode = process.wait(timeout=timeout_s)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.wait()
+        return _record(FAILED, f"timed out after {timeout_s:g} s", {}, log)
+    if returncode != 0:
+        return _record(FAILED, f"the command exited with status {returncode}", {}, log)
     values, reason = _read_responses(out, responses)
     return _record(FAILED, reason, {}, log) if reason else _record(OK, "", values, log)
 

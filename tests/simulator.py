@@ -3,7 +3,7 @@ with 0.3 % noise drawn from --seed, written as JSON to --out.
 
 ``--fail MODE:R`` (repeatable) makes run R fail: ``exit`` (status 3), ``hang`` (sleeps past any test's
 timeout), ``garbage`` (writes text that is not JSON), ``nan`` (a non-finite response), ``missing``
-(writes nothing).  Every argument it receives is also appended, one per line, to --argv-log when given.
+(writes nothing), ``flaky`` (exits with status 4 the first time only).  Every argument it receives is also appended, one per line, to --argv-log when given.
 """
 
 import argparse
@@ -11,6 +11,7 @@ import json
 import random
 import sys
 import time
+from pathlib import Path
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--a", type=float, required=True)
@@ -40,6 +41,10 @@ if mode:
         sys.exit(0)
     if mode == "missing":
         sys.exit(0)
+    marker = Path(args.out).parent / "flaky-attempted"
+    if mode == "flaky" and not marker.exists():
+        marker.write_text("", encoding="utf-8")
+        sys.exit(4)
 
 noise = random.Random(args.seed)
 a, b = args.a, args.b

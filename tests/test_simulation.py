@@ -8,6 +8,7 @@ import json
 import re
 import shutil
 import sys
+import time
 from pathlib import Path
 
 import pandas as pd
@@ -79,6 +80,26 @@ def test_a_run_reads_its_responses_and_each_failure_becomes_a_failed_record(tmp_
     assert record["status"] == FAILED and "'y3' is missing" in record["reason"]
     record, _ = _execute(_parameters(3, "no-such-program-here {a}"), tmp_path / "absent", ["y1"])
     assert record["status"] == FAILED and "could not start" in record["reason"]
+
+
+def _alive(pid: int) -> bool:
+    try:
+        state = Path(f"/proc/{pid}/status").read_text(encoding="utf-8")
+    except FileNotFoundError:
+        return False
+    return "\nState:\tZ" not in state  # a zombie has stopped; only its exit status is left
+
+
+def test_a_timeout_stops_what_the_command_started_too(tmp_path):
+    pidfile = tmp_path / "child.pid"
+    command = f"sh -c 'sleep 60 & echo $! > {pidfile}; wait'"
+    record, _ = _execute(_parameters(1, command), tmp_path / "run", ["y1"])
+    assert record["status"] == FAILED and "timed out" in record["reason"]
+    pid = int(pidfile.read_text(encoding="utf-8"))
+    deadline = time.monotonic() + 5
+    while _alive(pid) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not _alive(pid)
 
 
 def test_a_stale_responses_file_of_an_earlier_attempt_is_not_read(tmp_path):
@@ -160,14 +181,16 @@ def test_schema_documents_and_defaults_the_simulation_block():
 
 # ------------------------------------------------------------------------------------ the workflow
 def _study(folder: Path, centre_run: int) -> Path:
-    """Material m: two waves, one run of wave 1 exiting non-zero; material n: one wave."""
+    """Material m: two waves, one run of wave 1 exiting non-zero; material n: one wave, run 2 failing at
+    its first attempt only (one retry)."""
     import yaml
 
     folder.mkdir(parents=True, exist_ok=True)
     config = {"grid_points": 41, "sweep_tolerances": [0.02, 0.05],
               "materials": {"m": _material(_command(f"--fail exit:{centre_run}"),
                                            waves={"max": 2, "next_runs": {"count": 6}}),
-                            "n": _material(_command())}}
+                            "n": _material(_command("--fail flaky:2"))}}
+    config["materials"]["n"]["simulation"]["retries"] = 1
     config["materials"]["n"]["factors"]["a"]["label"] = "$(touch LABEL_INJECTED)"
     path = folder / "study.yaml"
     path.write_text(yaml.safe_dump(config, sort_keys=False), encoding="utf-8")
@@ -215,6 +238,11 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     assert row["status"] == "failed" and pd.isna(row["y1"]) and pd.isna(row["y2"])
     validated = read_parquet(results / "waves/1/validated/m.parquet")
     assert validated.loc[validated["run"] == centre, "status"].iloc[0] == "failed"
+    # A run failing once is tried again (retries: 1); the failed attempt's log is kept beside the log.
+    assert json.loads((results / "runs/n/wave1/run2/run.json").read_text(encoding="utf-8"))["status"] == "ok"
+    earlier = (results / "runs/n/wave1/run2/log.attempt1").read_text(encoding="utf-8")
+    assert "status: failed (the command exited with status 4)" in earlier and "attempt 1 of 2: trying again" in earlier
+    assert (results / "runs/n/wave1/run2/log").read_text(encoding="utf-8").rstrip().endswith("status: ok")
     ident = pd.read_csv(results / "tables/identifiability.csv")
     assert set(ident["material"]) == {"m", "n"}
     assert not list(study.rglob("*INJECTED*"))  # a label is never part of a command
