@@ -13,18 +13,24 @@ from __future__ import annotations
 import hashlib
 import json
 import math
+import numbers
 import os
 import re
 import shlex
 import signal
 import subprocess
+import tempfile
 from dataclasses import dataclass
 from pathlib import Path
-
-import numpy as np
-import pandas as pd
+from typing import TYPE_CHECKING
 
 from .errors import InputError
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+# A run's job imports nothing but the standard library from here (numpy and pandas load inside the
+# functions that need them): its start-up is paid once per simulation.
 
 #: ``{name}`` in a command word; ``{{`` and ``}}`` are literal braces.
 _PLACEHOLDER = re.compile(r"\{\{|\}\}|\{([^{}]*)\}")
@@ -94,9 +100,9 @@ def check_command(command: str, factors, key: str) -> None:
 
 def format_value(value) -> str:
     """A placeholder's text: integers as integers, floats in their shortest exact form."""
-    if isinstance(value, (int, np.integer)) and not isinstance(value, bool):
+    if isinstance(value, numbers.Integral) and not isinstance(value, bool):
         return str(int(value))
-    if isinstance(value, (float, np.floating)):
+    if isinstance(value, numbers.Real):
         return repr(float(value))
     return str(value)
 
@@ -213,6 +219,9 @@ def _record(status: str, reason: str, responses: dict, log) -> dict:
 def assemble_table(records, factors, responses) -> pd.DataFrame:
     """The material's table from its runs' parameters and records: ``run``, ``wave``, one column per factor
     and response, ``status`` (``failed`` runs with empty responses); sorted by run."""
+    import numpy as np
+    import pandas as pd
+
     rows = []
     for parameters, record in records:
         row = {"run": int(parameters["run"]), "wave": int(parameters["wave"])}
@@ -223,3 +232,18 @@ def assemble_table(records, factors, responses) -> pd.DataFrame:
         rows.append(row)
     frame = pd.DataFrame(rows, columns=["run", "wave", *factors, *responses, "status"])
     return frame.sort_values("run", kind="stable").reset_index(drop=True)
+
+
+def write_run_json(document: dict, path: Path | str) -> None:
+    """A run's JSON file (params.json, run.json) as :func:`demid.io.write_json` lays it out (sorted keys,
+    two-space indent), written atomically with the standard library alone."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".json", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as out:
+            out.write(json.dumps(document, sort_keys=True, indent=2, ensure_ascii=False, allow_nan=False) + "\n")
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise

@@ -13,7 +13,7 @@ from demid.io import write_full_csv  # noqa: E402
 from demid.simulation import assemble_table  # noqa: E402
 from demid.waves import inside_domain  # noqa: E402
 
-inp, out, spec = snakemake.input, snakemake.output, snakemake.params.spec  # noqa: F821
+inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
 
 
 def read(path):
@@ -21,7 +21,7 @@ def read(path):
 
 
 records = [(read(p), read(r)) for p, r in zip(inp.params, inp.records)]
-table = assemble_table(records, spec.factor_names, spec.response_names)
+table = assemble_table(records, params.factors, params.responses)
 domain = pd.read_csv(inp.domain) if "domain" in inp.keys() else None
 write_full_csv(table, out.table)
 write_full_csv(inside_domain(table, domain), out.analysed)

@@ -51,8 +51,8 @@ rule assemble_wave:
         material=simulated_pattern(),
         wave=r"[1-9][0-9]*",
     params:
-        spec=material_spec,
-        spec_digest=material_spec_digest,
+        factors=lambda wildcards: SPECS[wildcards.material].factor_names,
+        responses=lambda wildcards: SPECS[wildcards.material].response_names,
     resources:
         mem_mb=1000,
     conda:
