@@ -127,3 +127,40 @@ def check_simulated(config: dict, source: str = "config") -> None:
         if nr and nr.get("scenario") and nr["scenario"] not in (mat.get("scenarios") or {}):
             raise InputError(f"config key {key}.waves.next_runs.scenario: unknown scenario '{nr['scenario']}' "
                              f"(known: {', '.join(mat.get('scenarios') or {})})", source=source)
+
+
+def box_share(spec: MaterialSpec, domain: pd.DataFrame | None) -> float:
+    """The volume of a wave's box ``domain`` as a share of the material's search range Omega (in search
+    units, so log-scale factors count in log10); 1 without a box."""
+    if domain is None:
+        return 1.0
+    bounds = domain.set_index("factor").loc[spec.factor_names]
+    lo, hi = spec.domain.to_search(np.array([bounds["lower"].to_numpy(), bounds["upper"].to_numpy()], dtype=float))
+    omega_lo, omega_hi = spec.domain.search_bounds()
+    return float(np.prod((hi - lo) / (omega_hi - omega_lo)))
+
+
+HISTORY_COLUMNS = ["material", "wave", "runs_simulated", "runs_analysed", "scenario", "feasible_fraction_pct",
+                   "feasible_fraction_of_omega_pct", "factor", "lower", "upper", "width"]
+
+
+def wave_history(spec: MaterialSpec, waves: list[dict]) -> pd.DataFrame:
+    """The admissible sets wave by wave: per wave, scenario and factor the span and the feasible fraction,
+    of the wave's own box (as the wave's tables give it) and of Omega (that times the box's share of
+    Omega, so that waves over shrinking boxes compare).
+
+    ``waves``: per wave in order, ``scenarios`` (its scenarios frame), ``domain`` (its box, None for
+    wave 1), ``simulated`` (runs simulated up to it, failed ones included) and ``analysed`` (runs in its box).
+    """
+    rows = []
+    for number, wave in enumerate(waves, start=1):
+        share = box_share(spec, wave["domain"])
+        frame = wave["scenarios"]
+        for row in frame.itertuples():
+            rows.append({"material": spec.name, "wave": number, "runs_simulated": int(wave["simulated"]),
+                         "runs_analysed": int(wave["analysed"]), "scenario": row.scenario,
+                         "feasible_fraction_pct": float(row.feasible_fraction_pct),
+                         "feasible_fraction_of_omega_pct": float(row.feasible_fraction_pct) * share,
+                         "factor": row.factor, "lower": float(row.lower), "upper": float(row.upper),
+                         "width": float(row.width)})
+    return pd.DataFrame(rows, columns=HISTORY_COLUMNS)

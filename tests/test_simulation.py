@@ -179,6 +179,23 @@ def test_schema_documents_and_defaults_the_simulation_block():
         validate_schema({"materials": {"m": _material("sim {a}", simulation={"command": "x", "shell": True})}})
 
 
+def test_wave_history_scales_each_wave_fraction_by_its_box_share_of_omega():
+    from demid.waves import box_share, wave_history
+
+    mat = _material(_command())
+    mat["factors"]["b"].update(lower=1.0, upper=100.0, scale="log")
+    spec = MaterialSpec.from_material("m", _checked({"m": mat})["materials"]["m"])
+    box = pd.DataFrame({"factor": ["a", "b"], "lower": [0.5, 10.0], "upper": [0.9, 100.0]})
+    assert box_share(spec, None) == 1.0
+    assert box_share(spec, box) == pytest.approx(0.5 * 0.5)  # half of a's range, half of b's decades
+    sets = pd.DataFrame({"scenario": "both", "feasible_fraction_pct": [8.0, 8.0], "factor": ["a", "b"],
+                         "lower": [0.6, 20.0], "upper": [0.7, 30.0], "width": [0.1, 10.0]})
+    history = wave_history(spec, [{"scenarios": sets, "domain": None, "simulated": 11, "analysed": 11},
+                                  {"scenarios": sets, "domain": box, "simulated": 17, "analysed": 9}])
+    assert list(history["wave"]) == [1, 1, 2, 2] and list(history["runs_simulated"]) == [11, 11, 17, 17]
+    assert list(history["feasible_fraction_of_omega_pct"]) == pytest.approx([8.0, 8.0, 2.0, 2.0])
+
+
 # ------------------------------------------------------------------------------------ the workflow
 def _study(folder: Path, centre_run: int) -> Path:
     """Material m: two waves, one run of wave 1 exiting non-zero; material n: one wave, run 2 failing at
@@ -197,7 +214,7 @@ def _study(folder: Path, centre_run: int) -> Path:
     return path
 
 
-TARGET = "results/tables/identifiability.csv"
+TARGETS = ("results/tables/identifiability.csv", "results/waves/history_m.csv", "results/figures/waves_n.png")
 
 
 @pytest.mark.workflow
@@ -207,7 +224,7 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     centre = int(wave1[(wave1["a"] == 0.5) & (wave1["b"] == 6.0)]["run"].iloc[0])
     study, twin = tmp_path / "study", tmp_path / "twin"
     config = _study(study, centre)
-    first = run_snakemake(study, config, TARGET)
+    first = run_snakemake(study, config, *TARGETS)
     assert first.returncode == 0, first.stderr[-3000:]
     results = study / "results"
 
@@ -230,6 +247,16 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     params = json.loads((results / "runs/m/wave2/run15/params.json").read_text(encoding="utf-8"))
     assert params["seed"] == run_seed("m", 2, 15) and params["factors"]["a"] == proposals["a"].iloc[3]
 
+    # The sets wave by wave: Phi of wave 2's box scaled to Omega by the box's share of it.
+    history = pd.read_csv(results / "waves/history_m.csv")
+    assert list(history.drop_duplicates("wave")["runs_simulated"]) == [11, 17]
+    assert list(history.drop_duplicates("wave")["runs_analysed"]) == [11, len(analysed)]
+    share = ((bounds.loc["a", "upper"] - bounds.loc["a", "lower"]) / 0.8
+             * (bounds.loc["b", "upper"] - bounds.loc["b", "lower"]) / 10.0)
+    wave2 = history[history["wave"] == 2].iloc[0]
+    assert wave2["feasible_fraction_of_omega_pct"] == pytest.approx(wave2["feasible_fraction_pct"] * share, rel=1e-4)
+    assert (results / "figures/waves_m.png").is_file() and (results / "figures/waves_n.svg").is_file()
+
     # The run that exited non-zero is a failed row with its log kept; the analysis went on.
     record = json.loads((results / f"runs/m/wave1/run{centre}/run.json").read_text(encoding="utf-8"))
     assert record == {"reason": "the command exited with status 3", "responses": {}, "status": "failed"}
@@ -248,12 +275,12 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     assert not list(study.rglob("*INJECTED*"))  # a label is never part of a command
 
     # A second invocation has nothing to do.
-    noop = run_snakemake(study, config, TARGET, "-n")
+    noop = run_snakemake(study, config, *TARGETS, "-n")
     assert noop.returncode == 0 and planned_jobs(noop.stdout) == {}, noop.stdout
 
     # A clean run elsewhere gives byte-identical tables, parquet, JSON and figures.
     shutil.copytree(study, twin, ignore=shutil.ignore_patterns("results", ".snakemake", "logs", "benchmarks"))
-    second = run_snakemake(twin, twin / "study.yaml", TARGET)
+    second = run_snakemake(twin, twin / "study.yaml", *TARGETS)
     assert second.returncode == 0, second.stderr[-3000:]
     assert tree_hashes(results) == tree_hashes(twin / "results")
 
@@ -269,7 +296,7 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     text = config.read_text(encoding="utf-8")
     n_block = text.index("  n:\n")
     config.write_text(text[:n_block] + text[n_block:].replace("upper: 11.0", "upper: 12.0", 1), encoding="utf-8")
-    edit = run_snakemake(study, config, TARGET, "-n")
+    edit = run_snakemake(study, config, *TARGETS, "-n")
     jobs = planned_jobs(edit.stdout)
     assert jobs.get("simulate_run") == changed and jobs.get("analyse_wave") == 1, edit.stdout
     assert re.search(r"material=n\b", edit.stdout) and not re.search(r"material=m\b", edit.stdout), edit.stdout

@@ -282,6 +282,7 @@ def all_outputs():
     out += SUMMARY_TABLES
     out += [f"{RESULTS}/criticism/{m}" for m in MATERIALS]
     out += next_wave_tables()
+    out += wave_history_outputs()  # workflow/rules/simulation_common.smk
     out.append(f"{RESULTS}/report/report.html")
     if config.get("published"):
         out.append(f"{RESULTS}/tables/paper_comparison.csv")

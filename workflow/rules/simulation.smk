@@ -8,6 +8,7 @@
 #   analyse_wave    the per-material analysis of wave k, under results/waves/<k>/
 #   propose_wave    (a checkpoint) wave k's next runs and refocused box: wave k+1 simulates them
 #   final_wave      the material's main results are its last wave's (copies), for the tables and report
+#   wave_history    the admissible sets wave by wave: waves/history_<material>.csv, figures/waves_<material>
 #
 # Wave 1's runs are the declared design (known when the workflow is read); wave k+1's are wave k's
 # proposals, known once that checkpoint has run.  Each run's factor values, seed and command are the
@@ -154,3 +155,27 @@ use rule final_wave as final_wave_with_pareto with:
         **material_outputs(pareto=True),
     wildcard_constraints:
         material=simulated_pattern(pareto=True),
+
+
+rule wave_history:
+    input:
+        unpack(wave_history_inputs),
+    output:
+        table=f"{RESULTS}/waves/history_{{material}}.csv",
+        figure=f"{RESULTS}/figures/waves_{{material}}.png",
+        svg=f"{RESULTS}/figures/waves_{{material}}.svg",
+    wildcard_constraints:
+        material=simulated_pattern(),
+    params:
+        spec=material_spec,
+        spec_digest=material_spec_digest,
+    resources:
+        mem_mb=1000,
+    conda:
+        "../envs/demid.yaml"
+    log:
+        "logs/wave_history/{material}.log",
+    benchmark:
+        "benchmarks/wave_history/{material}.tsv"
+    script:
+        "../../scripts/wave_history.py"

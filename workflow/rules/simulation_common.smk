@@ -103,3 +103,19 @@ def final_wave_inputs(pareto):
     return inputs
 
 
+
+
+def wave_history_inputs(wildcards):
+    """Every wave of the material up to its last: scenario sets, boxes and tables."""
+    m, last = wildcards.material, last_wave(wildcards.material)
+    waves = range(1, last + 1)
+    return {"scenarios": [f"{RESULTS}/waves/{k}/scenarios/{m}.parquet" for k in waves],
+            "domains": [proposal_files(m, k - 1)["domain"] for k in waves if k > 1],
+            "tables": [f"{RESULTS}/waves/{k}/data/{m}.csv" for k in waves],
+            "analysed": [f"{RESULTS}/waves/{k}/data/{m}_analysed.csv" for k in waves]}
+
+
+def wave_history_outputs():
+    """The wave-by-wave table and figure of every simulated material."""
+    return [f for m in SIMULATED for f in (f"{RESULTS}/waves/history_{m}.csv",
+                                           *with_svg([f"{RESULTS}/figures/waves_{m}.png"]))]
