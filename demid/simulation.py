@@ -129,23 +129,6 @@ def run_seed(material: str, wave: int, run: int, base: int = 1) -> int:
     return int.from_bytes(digest[:4], "big") & 0x7FFFFFFF
 
 
-def first_wave(spec, seed: int) -> pd.DataFrame:
-    """Wave 1 of a simulated material: its declared design over the factor bounds, in randomised order
-    (:func:`demid.design_generation.generate_sheet`, as ``demid design --seed`` writes it).  Columns
-    ``run`` and one per factor (actual units); log-scale factors are designed in log10."""
-    from .design_generation import FactorRange, generate_sheet
-
-    ranges = [FactorRange(f.name, math.log10(f.lower) if f.log else f.lower,
-                          math.log10(f.upper) if f.log else f.upper) for f in spec.factors]
-    sheet = generate_sheet(spec.design_type, ranges, center_runs=spec.center_runs, alpha=repr(spec.alpha),
-                           seed=seed)
-    frame = sheet.to_frame().drop(columns="std_order")
-    for f in spec.factors:
-        if f.log:
-            frame[f.name] = [float(f"{10 ** v:.12g}") for v in frame[f.name]]
-    return frame
-
-
 def run_parameters(material: str, wave: int, run: int, factor_values: dict, simulation: Simulation) -> dict:
     """What one run is: the values written to params.json and passed to the job (Snakemake reruns a run
     whose parameters changed; the time limit, threads and retries are not among them, so raising a

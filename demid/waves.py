@@ -1,6 +1,6 @@
 """Waves of a simulated material: which runs each wave simulates and what each wave analyses.
 
-Wave 1 is the declared design over the configured bounds (:func:`demid.simulation.first_wave`).
+Wave 1 is the declared design over the configured bounds (:func:`first_wave`).
 Wave k+1 simulates wave k's proposed runs (``waves.next_runs``, in wave k's refocused box) and is
 analysed as a user would analyse it by hand: over that box (``next_domain``), with every run of
 waves 1..k+1 that lies inside it, as a ``custom`` design.  Run numbers continue across waves.
@@ -9,6 +9,7 @@ waves 1..k+1 that lies inside it, as a ``custom`` design.  Run numbers continue 
 from __future__ import annotations
 
 import copy
+import math
 
 import numpy as np
 import pandas as pd
@@ -18,6 +19,23 @@ from .spec import MaterialSpec
 
 def waves_max(material: dict) -> int:
     return int((material.get("waves") or {}).get("max", 1))
+
+
+def first_wave(spec: MaterialSpec, seed: int) -> pd.DataFrame:
+    """Wave 1 of a simulated material: its declared design over the factor bounds, in randomised order
+    (:func:`demid.design_generation.generate_sheet`, as ``demid design --seed`` writes it).  Columns
+    ``run`` and one per factor (actual units); log-scale factors are designed in log10."""
+    from .design_generation import FactorRange, generate_sheet
+
+    ranges = [FactorRange(f.name, math.log10(f.lower) if f.log else f.lower,
+                          math.log10(f.upper) if f.log else f.upper) for f in spec.factors]
+    sheet = generate_sheet(spec.design_type, ranges, center_runs=spec.center_runs, alpha=repr(spec.alpha),
+                           seed=seed)
+    frame = sheet.to_frame().drop(columns="std_order")
+    for f in spec.factors:
+        if f.log:
+            frame[f.name] = [float(f"{10 ** v:.12g}") for v in frame[f.name]]
+    return frame
 
 
 def wave_material(material: dict, data: str, domain: pd.DataFrame | None = None) -> dict:
@@ -93,7 +111,6 @@ def simulated_materials(config: dict) -> list[str]:
 def check_simulated(config: dict, source: str = "config") -> None:
     """Cross-references of ``simulation`` and ``waves``; raises InputError naming the key."""
     from .errors import InputError
-    from .simulation import first_wave
 
     for name, mat in config["materials"].items():
         key = f"materials.{name}"

@@ -17,9 +17,9 @@ import pytest
 from demid.config import check_semantics, validate_schema
 from demid.errors import InputError
 from demid.io import read_parquet
-from demid.simulation import FAILED, OK, assemble_table, execute, fill_command, first_wave, run_seed
+from demid.simulation import FAILED, OK, assemble_table, execute, fill_command, run_seed
 from demid.spec import MaterialSpec
-from demid.waves import check_simulated
+from demid.waves import check_simulated, first_wave
 
 from .workflow_helpers import planned_jobs, run_snakemake, tree_hashes
 

@@ -5,8 +5,8 @@ import json
 
 import pandas as pd
 
-from demid.simulation import Simulation, first_wave, run_parameters
-from demid.waves import next_wave_runs, waves_max
+from demid.simulation import Simulation, run_parameters
+from demid.waves import first_wave, next_wave_runs, waves_max
 
 SIMULATED = [m for m in MATERIALS if config["materials"][m].get("simulation")]
 SIMULATIONS = {m: Simulation.from_material(config["materials"][m]) for m in SIMULATED}
