@@ -141,6 +141,12 @@ def check_simulated(config: dict, source: str = "config") -> None:
         if waves_max(mat) > 1 and not nr:
             raise InputError(f"config key {key}.waves: max {waves_max(mat)} needs next_runs (e.g. next_runs: "
                              "{count: 9}), the runs each further wave simulates", source=source)
+        k = len(mat["factors"])
+        needed = (k + 1) * (k + 2) // 2 + 1  # a quadratic's coefficients, and one degree of freedom
+        if nr and nr["count"] < needed:
+            raise InputError(f"config key {key}.waves.next_runs.count: {nr['count']} runs cannot determine a quadratic "
+                             f"in {k} factors over the next box when no earlier run lies in it; at least {needed}",
+                             source=source)
         if nr and nr.get("scenario") and nr["scenario"] not in (mat.get("scenarios") or {}):
             raise InputError(f"config key {key}.waves.next_runs.scenario: unknown scenario '{nr['scenario']}' "
                              f"(known: {', '.join(mat.get('scenarios') or {})})", source=source)

@@ -160,7 +160,8 @@ def test_assembled_table_keeps_failed_runs_as_failed_rows():
     (lambda m: m.update(design={"type": "custom"}), "design.type: the first wave"),
     (lambda m: m.update(design={"type": "ccd", "alpha": 1.41421, "center_runs": 0}), "cannot be generated"),
     (lambda m: m.update(waves={"max": 3}), "needs next_runs"),
-    (lambda m: m.update(waves={"max": 2, "next_runs": {"count": 4}}, next_runs={"count": 4}), "move next_runs"),
+    (lambda m: m.update(waves={"max": 2, "next_runs": {"count": 7}}, next_runs={"count": 7}), "move next_runs"),
+    (lambda m: m.update(waves={"max": 2, "next_runs": {"count": 6}}), "count: 6 runs cannot determine a quadratic"),
     (lambda m: m["responses"].update(wave={}), "'wave' names the simulated table's wave column"),
 ])
 def test_simulation_config_errors_name_the_key(change, message):
@@ -205,7 +206,7 @@ def _study(folder: Path, centre_run: int) -> Path:
     folder.mkdir(parents=True, exist_ok=True)
     config = {"grid_points": 41, "sweep_tolerances": [0.02, 0.05],
               "materials": {"m": _material(_command(f"--fail exit:{centre_run}"),
-                                           waves={"max": 2, "next_runs": {"count": 6}}),
+                                           waves={"max": 2, "next_runs": {"count": 7}}),
                             "n": _material(_command("--fail flaky:2"))}}
     config["materials"]["n"]["simulation"]["retries"] = 1
     config["materials"]["n"]["factors"]["a"]["label"] = "$(touch LABEL_INJECTED)"
@@ -233,7 +234,7 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     domain = pd.read_csv(results / "waves/1/next_wave/m/next_domain.csv")
     table = pd.read_csv(results / "waves/2/data/m.csv")
     assert list(table.columns) == ["run", "wave", "a", "b", "y1", "y2", "status"]
-    assert list(table["wave"]) == [1] * 11 + [2] * 6 and list(table["run"]) == list(range(1, 18))
+    assert list(table["wave"]) == [1] * 11 + [2] * 7 and list(table["run"]) == list(range(1, 19))
     assert table[table["wave"] == 2][["a", "b"]].to_numpy() == pytest.approx(proposals[["a", "b"]].to_numpy())
     analysed = pd.read_csv(results / "waves/2/data/m_analysed.csv")
     bounds = domain.set_index("factor")
@@ -249,7 +250,7 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
 
     # The sets wave by wave: Phi of wave 2's box scaled to Omega by the box's share of it.
     history = pd.read_csv(results / "waves/history_m.csv")
-    assert list(history.drop_duplicates("wave")["runs_simulated"]) == [11, 17]
+    assert list(history.drop_duplicates("wave")["runs_simulated"]) == [11, 18]
     assert list(history.drop_duplicates("wave")["runs_analysed"]) == [11, len(analysed)]
     share = ((bounds.loc["a", "upper"] - bounds.loc["a", "lower"]) / 0.8
              * (bounds.loc["b", "upper"] - bounds.loc["b", "lower"]) / 10.0)
