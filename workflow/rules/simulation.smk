@@ -14,6 +14,14 @@
 # proposals, known once that checkpoint has run.  Each run's factor values, seed and command are the
 # job's params, so an edited bound or command reruns exactly the runs it changes.
 
+# Assembling a table and copying the last wave's files are cheap: on a cluster they run on the
+# submitting host; every simulation run and each wave's analysis is a job of its own.
+localrules:
+    assemble_wave,
+    final_wave,
+    final_wave_with_pareto,
+
+
 rule simulate_run:
     output:
         params=f"{WAVE_RUN}/params.json",
