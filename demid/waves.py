@@ -164,13 +164,13 @@ def box_share(spec: MaterialSpec, domain: pd.DataFrame | None) -> float:
 
 
 HISTORY_COLUMNS = ["material", "wave", "runs_simulated", "runs_analysed", "scenario", "feasible_fraction_pct",
-                   "feasible_fraction_of_omega_pct", "factor", "lower", "upper", "width"]
+                   "feasible_fraction_of_omega_pct", "factor", "lower", "upper", "width", "box_lower", "box_upper"]
 
 
 def wave_history(spec: MaterialSpec, waves: list[dict]) -> pd.DataFrame:
-    """The admissible sets wave by wave: per wave, scenario and factor the span and the feasible fraction,
-    of the wave's own box (as the wave's tables give it) and of Omega (that times the box's share of
-    Omega, so that waves over shrinking boxes compare).
+    """The admissible sets wave by wave: per wave, scenario and factor the span, the wave's box
+    (``box_lower``, ``box_upper``) and the feasible fraction, of the wave's own box (as the wave's tables
+    give it) and of Omega (that times the box's share of Omega, so that waves over shrinking boxes compare).
 
     ``waves``: per wave in order, ``scenarios`` (its scenarios frame), ``domain`` (its box, None for
     wave 1), ``simulated`` (runs simulated up to it, failed ones included) and ``analysed`` (runs in its box).
@@ -178,6 +178,8 @@ def wave_history(spec: MaterialSpec, waves: list[dict]) -> pd.DataFrame:
     rows = []
     for number, wave in enumerate(waves, start=1):
         share = box_share(spec, wave["domain"])
+        box = ({f.name: (f.lower, f.upper) for f in spec.factors} if wave["domain"] is None else
+               {r.factor: (float(r.lower), float(r.upper)) for r in wave["domain"].itertuples()})
         frame = wave["scenarios"]
         for row in frame.itertuples():
             rows.append({"material": spec.name, "wave": number, "runs_simulated": int(wave["simulated"]),
@@ -185,5 +187,6 @@ def wave_history(spec: MaterialSpec, waves: list[dict]) -> pd.DataFrame:
                          "feasible_fraction_pct": float(row.feasible_fraction_pct),
                          "feasible_fraction_of_omega_pct": float(row.feasible_fraction_pct) * share,
                          "factor": row.factor, "lower": float(row.lower), "upper": float(row.upper),
-                         "width": float(row.width)})
+                         "width": float(row.width), "box_lower": box[row.factor][0],
+                         "box_upper": box[row.factor][1]})
     return pd.DataFrame(rows, columns=HISTORY_COLUMNS)

@@ -195,6 +195,7 @@ def test_wave_history_scales_each_wave_fraction_by_its_box_share_of_omega():
                                   {"scenarios": sets, "domain": box, "simulated": 17, "analysed": 9}])
     assert list(history["wave"]) == [1, 1, 2, 2] and list(history["runs_simulated"]) == [11, 11, 17, 17]
     assert list(history["feasible_fraction_of_omega_pct"]) == pytest.approx([8.0, 8.0, 2.0, 2.0])
+    assert list(history["box_lower"]) == [0.1, 1.0, 0.5, 10.0] and list(history["box_upper"]) == [0.9, 100.0] * 2
 
 
 # ------------------------------------------------------------------------------------ the workflow

@@ -12,7 +12,8 @@ from .style import SCENARIO_COLORS, styled
 @styled
 def waves_figure(history: pd.DataFrame, spec):
     """One panel for the feasible fraction of Omega (per scenario, against runs simulated), one per factor
-    with its admissible interval per wave (scenarios side by side) and the search range as a band."""
+    with its admissible interval per wave (scenarios side by side) over the wave's box (a grey bar)
+    and the search range (a light band)."""
     import matplotlib.pyplot as plt
 
     scenarios = list(dict.fromkeys(history["scenario"]))
@@ -29,12 +30,15 @@ def waves_figure(history: pd.DataFrame, spec):
     axes[0].legend(frameon=False)
     offsets = [0.0] if len(scenarios) == 1 else [(-0.15 + 0.3 * i / (len(scenarios) - 1)) for i in range(len(scenarios))]
     for ax, factor in zip(axes[1:], spec.factors):
-        ax.axhspan(factor.lower, factor.upper, color="0.93", zorder=0)
+        ax.axhspan(factor.lower, factor.upper, color="0.95", zorder=0)
+        boxes = history[history["factor"] == factor.name].drop_duplicates("wave")
+        ax.bar(boxes["wave"], boxes["box_upper"] - boxes["box_lower"], bottom=boxes["box_lower"], width=0.5,
+               color="0.82", zorder=1)
         for i, scenario in enumerate(scenarios):
             rows = history[(history["scenario"] == scenario) & (history["factor"] == factor.name)].dropna(
                 subset=["lower", "upper"])
             ax.vlines(rows["wave"] + offsets[i], rows["lower"], rows["upper"], linewidth=3,
-                      color=SCENARIO_COLORS[i % len(SCENARIO_COLORS)])
+                      color=SCENARIO_COLORS[i % len(SCENARIO_COLORS)], zorder=2)
         ax.set_xticks(sorted(history["wave"].unique()))
         ax.set_xlabel("wave")
         ax.set_ylabel(axis_label(factor))
