@@ -28,7 +28,8 @@ def waves_figure(history: pd.DataFrame, spec):
     axes[0].set_xlabel("runs simulated")
     axes[0].set_ylabel("feasible fraction of Ω [%]")
     axes[0].legend(frameon=False)
-    offsets = [0.0] if len(scenarios) == 1 else [(-0.15 + 0.3 * i / (len(scenarios) - 1)) for i in range(len(scenarios))]
+    # scenarios side by side within a wave
+    offsets = [0.0] if len(scenarios) == 1 else [-0.15 + 0.3 * i / (len(scenarios) - 1) for i in range(len(scenarios))]
     for ax, factor in zip(axes[1:], spec.factors):
         ax.axhspan(factor.lower, factor.upper, color="0.95", zorder=0)
         boxes = history[history["factor"] == factor.name].drop_duplicates("wave")
