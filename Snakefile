@@ -15,6 +15,8 @@ include: "workflow/rules/figures.smk"
 include: "workflow/rules/tables.smk"
 include: "workflow/rules/next_wave.smk"
 include: "workflow/rules/story.smk"
+include: "workflow/rules/simulation_common.smk"
+include: "workflow/rules/simulation.smk"
 include: "workflow/rules/report.smk"
 
 

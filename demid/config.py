@@ -320,8 +320,8 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
             raise InputError(f"config key {key}.scenarios: no scenario; admissible sets need at least one, e.g. "
                              f"scenarios: {{all: {{observables: [{', '.join(targeted)}], tolerance: 0.05}}}}",
                              source=source)
-        path = base_dir / mat["data"]
-        if not path.is_file():
+        path = None if _table_or_simulation(key, mat, source) else base_dir / mat["data"]
+        if path is not None and not path.is_file():
             raise InputError(f"config key {key}.data: data file '{mat['data']}' does not exist (looked for "
                              f"{path.resolve()}; {_RELATIVE_TO})", source=source)
         for fname, fac in factors.items():
@@ -381,6 +381,26 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
         _check_scenario_labels(key, mat.get("scenarios") or {}, source)
     # After the materials: the published numbers are checked against their names.
     _check_published_file(config.get("published") or "", base_dir, source, config["materials"])
+
+
+def _table_or_simulation(key: str, mat: dict, source: str) -> bool:
+    """A material has a finished table (``data``) or a command demid runs (``simulation``): True for the
+    latter, whose command is checked here."""
+    if "data" in mat and "simulation" in mat:
+        raise InputError(f"config key {key}: both data and simulation are given; keep data for a finished table "
+                         "or simulation for demid to run the simulations", source=source)
+    if "simulation" not in mat:
+        if "data" not in mat:
+            raise InputError(f"config key {key}: no data; give data (a CSV table of the runs) or simulation "
+                             "(a command demid runs per run)", source=source)
+        return False
+    from .simulation import check_command
+
+    try:
+        check_command(mat["simulation"]["command"], mat["factors"], f"{key}.simulation.command")
+    except InputError as err:
+        raise InputError(err.detail, source=source) from None
+    return True
 
 
 def _check_published_ranges(key: str, responses: dict, source: str) -> None:

@@ -87,6 +87,13 @@ def write_csv(frame: pd.DataFrame, path: Path | str) -> None:
                                         lineterminator="\n")
 
 
+def write_full_csv(frame: pd.DataFrame, path: Path | str) -> None:
+    """CSV with every number at full precision (shortest exact form): a table the pipeline reads back as
+    data, such as a simulated material's runs, where rounding would change the values analysed."""
+    with atomic_path(path) as tmp:
+        frame.to_csv(tmp, index=False, lineterminator="\n")
+
+
 def _clean(obj):
     if isinstance(obj, dict):
         return {str(k): _clean(v) for k, v in obj.items()}

@@ -8,6 +8,7 @@ from demid.errors import InputError
 from demid.next_wave import check_next_runs
 from demid.sampling import uses_grid
 from demid.spec import MaterialSpec
+from demid.waves import check_simulated
 
 
 # Validate the config (schema with defaults, then cross-references) and every table before
@@ -23,7 +24,10 @@ try:
     config.update(_checked)
     check_semantics(config, source=CONFIG_SOURCE)
     check_next_runs(config, source=CONFIG_SOURCE)
+    check_simulated(config, source=CONFIG_SOURCE)
     for _name, _material in config["materials"].items():
+        if _material.get("simulation"):  # its tables do not exist yet: each wave validates its own
+            continue
         refuse_likely_typos(validate_material(_name, _material), _name, _material)
 except InputError as err:
     sys.exit(f"demid: error: {err}")
@@ -86,9 +90,11 @@ def pareto_materials():
     return [m for m in MATERIALS if config["materials"][m].get("pareto")]
 
 
-def material_pattern(pareto):
-    """The materials with (or without) a Pareto front, as a wildcard constraint (none: matches nothing)."""
-    names = [m for m in MATERIALS if bool(config["materials"][m].get("pareto")) == pareto]
+def material_pattern(pareto, simulated=False):
+    """The materials with (or without) a Pareto front, as a wildcard constraint (none: matches nothing);
+    those with a finished table, or with ``simulated`` those demid simulates."""
+    names = [m for m in MATERIALS if bool(config["materials"][m].get("pareto")) == pareto
+             and bool(config["materials"][m].get("simulation")) == simulated]
     return "|".join(names) if names else "(?!x)x"
 
 
@@ -288,6 +294,7 @@ def all_outputs():
     out += [f"{RESULTS}/criticism/{m}" for m in MATERIALS]
     out += next_wave_tables()
     out += [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]  # rule story
+    out += wave_history_outputs()  # workflow/rules/simulation_common.smk
     out.append(f"{RESULTS}/report/report.html")
     if config.get("published"):
         out.append(f"{RESULTS}/tables/paper_comparison.csv")

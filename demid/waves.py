@@ -1,0 +1,192 @@
+"""Waves of a simulated material: which runs each wave simulates and what each wave analyses.
+
+Wave 1 is the declared design over the configured bounds (:func:`first_wave`).
+Wave k+1 simulates wave k's proposed runs (``waves.next_runs``, in wave k's refocused box) and is
+analysed as a user would analyse it by hand: over that box (``next_domain``), with every run of
+waves 1..k+1 that lies inside it, as a ``custom`` design.  Run numbers continue across waves.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+
+import numpy as np
+import pandas as pd
+
+from .spec import MaterialSpec
+
+
+def waves_max(material: dict) -> int:
+    return int((material.get("waves") or {}).get("max", 1))
+
+
+def first_wave(spec: MaterialSpec, seed: int) -> pd.DataFrame:
+    """Wave 1 of a simulated material: its declared design over the factor bounds, in randomised order
+    (:func:`demid.design_generation.generate_sheet`, as ``demid design --seed`` writes it).  Columns
+    ``run`` and one per factor (actual units); log-scale factors are designed in log10."""
+    from .design_generation import FactorRange, generate_sheet
+
+    ranges = [FactorRange(f.name, math.log10(f.lower) if f.log else f.lower,
+                          math.log10(f.upper) if f.log else f.upper) for f in spec.factors]
+    sheet = generate_sheet(spec.design_type, ranges, center_runs=spec.center_runs, alpha=repr(spec.alpha),
+                           seed=seed)
+    frame = sheet.to_frame().drop(columns="std_order")
+    for f in spec.factors:
+        if f.log:
+            frame[f.name] = [float(f"{10 ** v:.12g}") for v in frame[f.name]]
+    return frame
+
+
+def wave_material(material: dict, data: str, domain: pd.DataFrame | None = None) -> dict:
+    """The ``materials`` entry wave k analyses: the table ``data`` and, after wave 1, the refocused box
+    ``domain`` (``factor, lower, upper``) as bounds with a ``custom`` design.  A reference point outside
+    the box and published statistics (of another table) are dropped; ``waves.next_runs`` is the wave's
+    ``next_runs``."""
+    mat = copy.deepcopy(material)
+    mat.pop("simulation", None)
+    waves = mat.pop("waves", None) or {}
+    mat["data"] = str(data)
+    if waves.get("next_runs"):
+        mat["next_runs"] = copy.deepcopy(waves["next_runs"])
+    if domain is None:
+        return mat
+    bounds = domain.set_index("factor")
+    for name, factor in mat["factors"].items():
+        factor["lower"], factor["upper"] = float(bounds.at[name, "lower"]), float(bounds.at[name, "upper"])
+    mat["design"] = {"type": "custom"}
+    ref = mat.get("reference_point")
+    if ref and not all(mat["factors"][f]["lower"] <= v <= mat["factors"][f]["upper"] for f, v in ref.items()):
+        mat.pop("reference_point")
+    for response in mat["responses"].values():
+        response.pop("published", None)
+    mat.pop("confirmed_values", None)
+    return mat
+
+
+def wave_spec(spec: MaterialSpec, data: str, domain: pd.DataFrame | None = None) -> MaterialSpec:
+    """The :class:`MaterialSpec` of one wave's analysis (see :func:`wave_material`)."""
+    return MaterialSpec.from_material(spec.name, wave_material(spec.material_config(), data, domain),
+                                      grid_points=spec.grid_points)
+
+
+def inside_domain(table: pd.DataFrame, domain: pd.DataFrame | None, rel_tol: float = 1e-9) -> pd.DataFrame:
+    """The runs of ``table`` inside the box ``domain`` (all runs when there is none)."""
+    if domain is None:
+        return table
+    keep = np.ones(len(table), dtype=bool)
+    for row in domain.itertuples():
+        tol = rel_tol * (row.upper - row.lower)
+        values = table[row.factor].to_numpy(dtype=float)
+        keep &= (values >= row.lower - tol) & (values <= row.upper + tol)
+    return table[keep].reset_index(drop=True)
+
+
+def next_wave_runs(proposals: pd.DataFrame, factors, first_run: int) -> pd.DataFrame:
+    """Wave k+1's runs from wave k's ``next_runs`` table: ``run`` numbered on from ``first_run``, one
+    column per factor."""
+    frame = proposals[list(factors)].reset_index(drop=True).astype(float)
+    frame.insert(0, "run", np.arange(first_run, first_run + len(frame)))
+    return frame
+
+
+def stop_reason(reasons: dict, material: str) -> str:
+    """Why the waves should stop after this one ("" to go on).
+
+    The hook for a stopping rule read from the next-wave advice.  The advice gives none yet, so the
+    waves run to ``waves.max``; a rule returns its reason here and the loop ends at this wave.
+    """
+    return ""
+
+
+#: Names a simulated material's factors and responses cannot take: its table's ``wave`` column and
+#: the command's run placeholders.
+_RESERVED = ("wave", "seed", "run_dir")
+
+
+def simulated_materials(config: dict) -> list[str]:
+    return [m for m, mat in config["materials"].items() if mat.get("simulation")]
+
+
+def check_simulated(config: dict, source: str = "config") -> None:
+    """Cross-references of ``simulation`` and ``waves``; raises InputError naming the key."""
+    from .errors import InputError
+
+    for name, mat in config["materials"].items():
+        key = f"materials.{name}"
+        waves = mat.get("waves")
+        if not mat.get("simulation"):
+            if waves:
+                raise InputError(f"config key {key}.waves: waves need simulation (a command demid runs per run); "
+                                 "a finished table is one wave", source=source)
+            continue
+        clash = sorted(set(_RESERVED) & (set(mat["factors"]) | set(mat["responses"])))
+        if clash:
+            raise InputError(f"config key {key}: '{clash[0]}' names the simulated table's wave column or a run "
+                             "placeholder; rename that factor or response", source=source)
+        if mat["design"]["type"] == "custom":
+            raise InputError(f"config key {key}.design.type: the first wave of a simulated material is its design; "
+                             "declare ccd, box_behnken or factorial", source=source)
+        try:
+            first_wave(MaterialSpec.from_material(name, mat), int(mat["simulation"]["seed"]))
+        except InputError as err:
+            raise InputError(f"config key {key}.design: the first wave cannot be generated: {err.detail}",
+                             source=source) from None
+        if not waves:
+            continue
+        if mat.get("next_runs"):
+            raise InputError(f"config key {key}.next_runs: with waves, each wave's next runs are waves.next_runs; "
+                             "move next_runs there", source=source)
+        nr = waves.get("next_runs")
+        if waves_max(mat) > 1 and not nr:
+            raise InputError(f"config key {key}.waves: max {waves_max(mat)} needs next_runs (e.g. next_runs: "
+                             "{count: 9}), the runs each further wave simulates", source=source)
+        k = len(mat["factors"])
+        needed = (k + 1) * (k + 2) // 2 + 1  # a quadratic's coefficients, and one degree of freedom
+        if nr and nr["count"] < needed:
+            raise InputError(f"config key {key}.waves.next_runs.count: {nr['count']} runs cannot determine a quadratic "
+                             f"in {k} factors over the next box when no earlier run lies in it; at least {needed}",
+                             source=source)
+        if nr and nr.get("scenario") and nr["scenario"] not in (mat.get("scenarios") or {}):
+            raise InputError(f"config key {key}.waves.next_runs.scenario: unknown scenario '{nr['scenario']}' "
+                             f"(known: {', '.join(mat.get('scenarios') or {})})", source=source)
+
+
+def box_share(spec: MaterialSpec, domain: pd.DataFrame | None) -> float:
+    """The volume of a wave's box ``domain`` as a share of the material's search range Omega (in search
+    units, so log-scale factors count in log10); 1 without a box."""
+    if domain is None:
+        return 1.0
+    bounds = domain.set_index("factor").loc[spec.factor_names]
+    lo, hi = spec.domain.to_search(np.array([bounds["lower"].to_numpy(), bounds["upper"].to_numpy()], dtype=float))
+    omega_lo, omega_hi = spec.domain.search_bounds()
+    return float(np.prod((hi - lo) / (omega_hi - omega_lo)))
+
+
+HISTORY_COLUMNS = ["material", "wave", "runs_simulated", "runs_analysed", "scenario", "feasible_fraction_pct",
+                   "feasible_fraction_of_omega_pct", "factor", "lower", "upper", "width", "box_lower", "box_upper"]
+
+
+def wave_history(spec: MaterialSpec, waves: list[dict]) -> pd.DataFrame:
+    """The admissible sets wave by wave: per wave, scenario and factor the span, the wave's box
+    (``box_lower``, ``box_upper``) and the feasible fraction, of the wave's own box (as the wave's tables
+    give it) and of Omega (that times the box's share of Omega, so that waves over shrinking boxes compare).
+
+    ``waves``: per wave in order, ``scenarios`` (its scenarios frame), ``domain`` (its box, None for
+    wave 1), ``simulated`` (runs simulated up to it, failed ones included) and ``analysed`` (runs in its box).
+    """
+    rows = []
+    for number, wave in enumerate(waves, start=1):
+        share = box_share(spec, wave["domain"])
+        box = ({f.name: (f.lower, f.upper) for f in spec.factors} if wave["domain"] is None else
+               {r.factor: (float(r.lower), float(r.upper)) for r in wave["domain"].itertuples()})
+        frame = wave["scenarios"]
+        for row in frame.itertuples():
+            rows.append({"material": spec.name, "wave": number, "runs_simulated": int(wave["simulated"]),
+                         "runs_analysed": int(wave["analysed"]), "scenario": row.scenario,
+                         "feasible_fraction_pct": float(row.feasible_fraction_pct),
+                         "feasible_fraction_of_omega_pct": float(row.feasible_fraction_pct) * share,
+                         "factor": row.factor, "lower": float(row.lower), "upper": float(row.upper),
+                         "width": float(row.width), "box_lower": box[row.factor][0],
+                         "box_upper": box[row.factor][1]})
+    return pd.DataFrame(rows, columns=HISTORY_COLUMNS)

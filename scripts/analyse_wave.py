@@ -1,0 +1,23 @@
+"""Snakemake script: one wave of a simulated material, analysed like a finished table (over the wave's
+search box, with the runs inside it)."""
+
+import sys
+
+sys.stderr = open(snakemake.log[0], "w", encoding="utf-8")  # noqa: F821
+
+import pandas as pd  # noqa: E402
+
+from demid.errors import InputError  # noqa: E402
+from demid.steps import material_step, write_material_analysis  # noqa: E402
+from demid.waves import wave_spec  # noqa: E402
+
+inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
+domain = pd.read_csv(inp.domain) if "domain" in inp.keys() else None
+spec = wave_spec(params.spec, inp.data, domain)
+try:  # e.g. too many failed runs for the quadratic: one line naming the wave's table, not a traceback
+    result = material_step(spec, inp.data, z=params.z, tolerances=params.tolerances)
+except InputError as err:
+    sys.exit(f"demid: error: {err}")
+for warning in result.warnings:
+    print(f"warning: {warning}", file=sys.stderr)
+write_material_analysis(result, out)
