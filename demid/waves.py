@@ -90,13 +90,16 @@ def next_wave_runs(proposals: pd.DataFrame, factors, first_run: int) -> pd.DataF
     return frame
 
 
-def stop_reason(reasons: dict, material: str) -> str:
-    """Why the waves should stop after this one ("" to go on).
-
-    The hook for a stopping rule read from the next-wave advice.  The advice gives none yet, so the
-    waves run to ``waves.max``; a rule returns its reason here and the loop ends at this wave.
-    """
-    return ""
+def stop_reason(value: dict | None) -> str:
+    """Why the waves should stop after this one ("" to go on): the next-wave estimate
+    (:func:`demid.wave_value.expected_contraction`, the same number the ``stop`` advice reads) says the
+    proposed runs would shrink the plausible set by less than :data:`~demid.wave_value.STOP_CONTRACTION`."""
+    if not value or not value.get("stop"):
+        return ""
+    return (f"the {value['count']} proposed runs are expected to shrink the plausible set of "
+            f"'{value['scenario']}' by only {100 * value['expected_contraction']:.1f} % "
+            f"({value['plausible_fraction_pct']:.3g} % → {value['expected_fraction_pct']:.3g} % of the search range): "
+            "its width is set by the measurement band, not by the surrogate")
 
 
 #: Names a simulated material's factors and responses cannot take: its table's ``wave`` column and

@@ -8,15 +8,17 @@ sys.stderr = open(snakemake.log[0], "w", encoding="utf-8")  # noqa: F821
 import pandas as pd  # noqa: E402
 
 from demid.io import read_parquet, write_csv, write_json  # noqa: E402
-from demid.next_wave import plan_materials  # noqa: E402
+from demid.next_wave import plan_waves, tabulate_waves  # noqa: E402
 from demid.waves import stop_reason, wave_spec  # noqa: E402
 
 inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
 domain = pd.read_csv(inp.domain) if "domain" in inp.keys() else None
 spec = wave_spec(params.spec, inp.data, domain)
 frames = {name: {spec.name: read_parquet(getattr(inp, name))} for name in ("tables", "fits", "robust", "findings")}
-next_domain, runs, reasons = plan_materials({spec.name: spec}, frames, z=params.z)
+waves = plan_waves({spec.name: spec}, frames, z=params.z)
+next_domain, runs, reasons = tabulate_waves({spec.name: spec}, waves)
 write_csv(next_domain, out.domain)
 write_csv(runs, out.runs)
 write_json(reasons, out.reasons)
-write_json({"stop": stop_reason(reasons, spec.name)}, out.decision)
+reason = stop_reason(waves[spec.name].value)
+write_json({"stop": bool(reason), "reason": reason, "value": waves[spec.name].value}, out.decision)

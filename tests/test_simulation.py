@@ -302,3 +302,17 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     jobs = planned_jobs(edit.stdout)
     assert jobs.get("simulate_run") == changed and jobs.get("analyse_wave") == 1, edit.stdout
     assert re.search(r"material=n\b", edit.stdout) and not re.search(r"material=m\b", edit.stdout), edit.stdout
+
+
+def test_waves_stop_where_the_next_wave_buys_little():
+    """The loop ends on the estimate the stop advice reads: contraction below the threshold stops it,
+    a larger one or an empty plausible set (no estimate) goes on."""
+    from demid.wave_value import STOP_CONTRACTION
+    from demid.waves import stop_reason
+
+    base = {"scenario": "both", "count": 9, "plausible_fraction_pct": 9.3, "expected_fraction_pct": 9.1}
+    small = {**base, "expected_contraction": STOP_CONTRACTION / 5, "stop": True}
+    assert "shrink the plausible set of 'both' by only 2.0 %" in stop_reason(small)
+    assert stop_reason({**base, "expected_contraction": 0.4, "stop": False}) == ""
+    assert stop_reason({**base, "expected_contraction": float("nan"), "stop": False}) == ""
+    assert stop_reason(None) == ""
