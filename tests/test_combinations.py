@@ -168,6 +168,16 @@ def test_advice_names_the_observable_that_cuts_the_band():
     text = break_ridge_advice(res, band, {"y1": surrogates["y1"], "parallel": surrogates["parallel"]}, spec,
                               coding, ["y1"])
     assert "shallow angle" in text
+    # a scenario that already measures the observable: its own set answers, no next step is advised
+    from demid.spec import MaterialSpec
+
+    both = MaterialSpec.from_material("m", {
+        "factors": {"a": {"lower": 0, "upper": 1}, "b": {"lower": 0, "upper": 1}},
+        "responses": {"y1": {"target": 1.0}, "across": {"target": 0.0}},
+        "scenarios": {"band": {"observables": ["y1"], "tolerance": 0.02},
+                      "both": {"observables": ["y1", "across"], "tolerance": 0.02}}})
+    assert break_ridge_advice(res, band, {"y1": surrogates["y1"], "across": surrogates["across"]}, both,
+                              coding, ["y1"]) == ""
 
 
 def test_combination_verdicts_and_lines():

@@ -329,10 +329,9 @@ def break_ridge_advice(res: SetCombination, points_search: np.ndarray, surrogate
         rows = ranking[[frozenset(str(o).split("+")) == wanted for o in ranking["observables"]]]
         if len(rows) and "information_gain_bits" in rows.columns and np.isfinite(rows["information_gain_bits"].iloc[0]):
             gain = f"; with it the ranking gives {float(rows['information_gain_bits'].iloc[0]):.2f} bits"
+    if target is not None and any(set(observables) | {best} <= set(sc.observables) for sc in spec.scenarios):
+        return ""  # a scenario of the study already adds it: its own set says what it buys, no next step
     measure = "adding its measurement" if target is not None else "measuring it (it has no target yet)"
-    wider = [sc.label for sc in spec.scenarios if set(observables) | {best} <= set(sc.observables)]
-    if wider:
-        measure += f" (as *{wider[0]}* does)"
     rest = ", ".join(f"{spec.response_labels.get(r, r)} {np.degrees(np.arcsin(np.clip(s, 0, 1))):.0f}°"
                      for r, s in scores.items() if r != best)
     return (f"*{scen}* identifies a combination and leaves its complement free: {label} changes most along the set "
