@@ -1,4 +1,4 @@
-"""Issue 11, edges and extrapolation: at_bound of closed-form sets, "widen the range" and extrapolation warnings."""
+"""Edges and extrapolation: at_bound of closed-form sets, "widen the range" and extrapolation warnings."""
 
 from __future__ import annotations
 

@@ -18,7 +18,7 @@ from demid.surrogate import Surrogate
 
 ROOT = Path(__file__).resolve().parents[1]
 
-# Accuracy the pipeline needs (issue 10): fractions 0.1 %, widths 0.05 %, reference distance 1 %.
+# Accuracy the pipeline needs: fractions 0.1 %, widths 0.05 %, reference distance 1 %.
 FRACTION_RTOL = 1e-3
 WIDTH_RTOL = 5e-4
 DISTANCE_RTOL = 1e-2
@@ -407,7 +407,7 @@ def test_demo_mortar_full_sequence(demo):
     g_lo, g_hi, resolution = roots_span(funcs, tgt, scen["tolerance"], 1)
     width = (g_hi - g_lo) * (hi[1] - lo[1])
     assert es.spans["width"].iloc[1] == pytest.approx(width, rel=WIDTH_RTOL / 5)
-    assert round(es.spans["width"].iloc[1], 5) == 0.37856  # issue 10, exact
+    assert round(es.spans["width"].iloc[1], 5) == 0.37856  # exact
     # distance: lines along mu_r through the whole gamma span, nearest admissible point on each
     ref = (np.array([cfg["reference_point"]["mu_r"], cfg["reference_point"]["gamma"]]) - lo) / (hi - lo)
     best = np.inf
@@ -416,7 +416,7 @@ def test_demo_mortar_full_sequence(demo):
         for a0, a1 in line:
             best = min(best, np.hypot(np.clip(ref[0], a0, a1) - ref[0], b - ref[1]))
     assert es.reference_distance == pytest.approx(best, rel=DISTANCE_RTOL / 10)
-    assert round(100 * es.reference_distance, 2) == 3.94  # issue 10, exact
+    assert round(100 * es.reference_distance, 2) == 3.94  # exact
     np.testing.assert_allclose(es.nearest_point, [0.1666, 6.3998], atol=1e-4)
 
 

@@ -1,4 +1,4 @@
-"""Issue 11, run order: drift is tested only where the run column can be the order the runs were made in."""
+"""Run order: drift is tested only where the run column can be the order the runs were made in."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Issue 24: one plausible set for every verdict, per-observable tolerance, implausible targets, advice computed
+"""One plausible set for every verdict, per-observable tolerance, implausible targets, advice computed
 once, the stopping signal and the recommended point — each planted and checked against an independent computation."""
 
 from __future__ import annotations

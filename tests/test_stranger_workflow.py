@@ -61,7 +61,7 @@ def test_unreachable_material_and_braces_still_give_every_output(study_dir):
     identifiability = pd.read_csv(results / "tables" / "identifiability.csv")
     assert (identifiability.loc[identifiability["material"] == "n", "feasible_fraction_pct"] == 0).all()
     assert set(identifiability["at_bound"]) <= {"none", "lower", "upper", "both"}
-    # issue 11: a set with the out-of-reach y2 target is a discrepancy, not information
+    # a set with the out-of-reach y2 target is a discrepancy, not information
     ranking = pd.read_csv(results / "tables" / "observable_ranking.csv")
     for material, rows in ranking.groupby("material"):
         reachable = ~rows["observables"].str.contains("y2") if material == "n" else rows["observables"].notna()
