@@ -226,10 +226,32 @@ def cmd_validate(args) -> int:
         order = _run_order_note(vt, name, mat)
         if order:
             print(f"demid: note: {mat['data']}: {order}", file=sys.stderr)
-        counts = ", ".join(f"{v} {k}" for k, v in vt.summary(name)["point_types"].items())
-        print(f"{name}: {mat['data']} OK ({len(vt.table)} runs: {counts})")
+        print(f"{name}: {mat['data']} OK ({run_counts(vt, (mat.get('design') or {}).get('type', 'ccd'), list(mat['responses']))})")
     print(f"{args.config}: configuration and {sum('data' in m for m in config['materials'].values())} table(s) valid")
     return 0
+
+
+#: Point types in the words of a run sheet, in the order they are counted.
+_POINT_WORDS = {"factorial": "factorial", "axial": "axial", "edge": "edge", "center": "centre"}
+
+
+def run_counts(vt, design_type: str, responses: list[str]) -> str:
+    """``13 runs: 4 factorial, 4 axial, 5 centre`` — by point type where the design has types (a custom
+    design's runs have none) — and how many runs failed (no response) or lost some responses."""
+    n = len(vt.table)
+    types = vt.summary("")["point_types"]
+    if design_type != "custom" and set(types) - {"other"}:
+        text = f"{n} runs: " + ", ".join(f"{types[k]} {word}" for k, word in _POINT_WORDS.items() if types.get(k))
+        text += f", {types['other']} other" if types.get("other") else ""
+    else:
+        text = f"{n} runs (custom design)"
+    lost = {run for runs in vt.failed.values() for run in runs}
+    if lost:
+        failed = sum(all(run in vt.failed.get(r, ()) for r in responses) for run in lost)
+        partial = len(lost) - failed
+        text += (f"; {n - len(lost)} complete" + (f", {failed} failed" if failed else "")
+                 + (f", {partial} with a response missing" if partial else ""))
+    return text
 
 
 def _outside_the_runs(vt, name: str, mat: dict) -> list[str]:

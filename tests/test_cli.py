@@ -242,3 +242,20 @@ def test_a_coded_copy_of_a_listed_factor_in_a_shuffled_file_is_no_left_out_facto
     assert proc.returncode == 0 and "warning" not in proc.stderr, proc.stderr
     proc = _run("fit", "--data", str(path), "--factors", "a", "--responses", "y1", "--out", str(tmp_path / "f.json"))
     assert "column 'b'" in proc.stderr and "column 'a_coded'" not in proc.stderr, proc.stderr
+
+
+def test_validate_counts_runs_by_what_they_are(tmp_path):
+    """Point types where the design has them, 'custom design' where it has none, and failed runs apart."""
+    from types import SimpleNamespace
+
+    import numpy as np
+    import pandas as pd
+
+    from demid.cli import run_counts
+
+    ccd = SimpleNamespace(table=pd.DataFrame({"run": range(1, 14)}), failed={},
+                          summary=lambda _: {"point_types": {"axial": 4, "center": 5, "factorial": 4}})
+    assert run_counts(ccd, "ccd", ["y"]) == "13 runs: 4 factorial, 4 axial, 5 centre"
+    custom = SimpleNamespace(table=pd.DataFrame({"run": np.arange(1, 25)}), failed={"y": [3, 7], "z": [7]},
+                             summary=lambda _: {"point_types": {"other": 24}})
+    assert run_counts(custom, "custom", ["y", "z"]) == "24 runs (custom design); 22 complete, 1 failed, 1 with a response missing"
