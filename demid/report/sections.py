@@ -20,12 +20,30 @@ def _fmt(value, digits: int = 4) -> str:
     return str(value)
 
 
+#: Report headers of the CSV columns the report shows: what the column says, with its unit.  The CSV files
+#: keep their names (tables/columns.csv documents both).
+REPORT_HEADERS = {
+    "feasible_fraction_pct": "Φ [% of Ω]", "strict_fraction_pct": "strict Φ [% of Ω]",
+    "robust_fraction_pct": "plausible Φ [% of Ω]", "strict_width": "strict width", "robust_width": "plausible width",
+    "at_bound": "at search bound", "n_runs": "runs", "n_points": "points", "adj_r2": "adj. R²", "r2": "R²",
+    "q2": "Q² (leave-one-out)", "rmse": "RMSE", "resid_std": "residual SD", "lof_f": "lack-of-fit F",
+    "lof_p": "lack-of-fit p", "abs_diff": "|difference|", "rel_diff": "relative difference",
+    "printed_agrees": "agrees to printed digits", "pass": "within tolerance", "sum_sq": "sum of squares",
+    "mean_sq": "mean square", "p_value": "p", "std_error": "standard error", "max_vif": "max VIF",
+    "max_cooks_d": "max Cook's D", "max_abs_student_resid": "max |studentised residual|",
+    "breusch_pagan_lm": "Breusch–Pagan LM", "breusch_pagan_p": "Breusch–Pagan p", "reset_f": "RESET F",
+    "reset_p": "RESET p", "shapiro_w": "Shapiro–Wilk W", "shapiro_p": "Shapiro–Wilk p",
+}
+
+
 def markdown_table(frame: pd.DataFrame, digits: int = 4) -> str:
-    """A GitHub-style Markdown table (no extra dependency), numbers to ``digits`` significant digits."""
+    """A GitHub-style Markdown table (no extra dependency), numbers to ``digits`` significant digits;
+    headers in words (:data:`REPORT_HEADERS`)."""
     if frame.empty:
         return "_(empty)_"
     cols = list(frame.columns)
-    lines = ["| " + " | ".join(cols) + " |", "|" + "|".join("---" for _ in cols) + "|"]
+    heads = [REPORT_HEADERS.get(c, c) for c in cols]
+    lines = ["| " + " | ".join(heads) + " |", "|" + "|".join("---" for _ in cols) + "|"]
     for _, row in frame.iterrows():
         lines.append("| " + " | ".join(_fmt(row[c], digits) for c in cols) + " |")
     return "\n".join(lines)
