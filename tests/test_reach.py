@@ -57,13 +57,15 @@ def test_a_surrogate_that_levels_off_below_the_target_is_said_to_saturate_and_no
     assert reach.levels_off_value == pytest.approx(19.0, rel=1e-6)
     assert reach.straight_extension == pytest.approx(6.5 / 4, rel=1e-6)  # the straight line would (at x = 2.625)
     assert result.widen == {} and "Widen" not in result.message
-    assert "levels off at y ≈ 19" in result.message and "saturates along x" in result.message
+    assert "levels off at 19 (x ≈ 1.5)" in result.message and "saturates along x" in result.message
     assert "saturates along x" in result.finding
     advice = _advice(result.to_json())
     assert not [i for i in advice if i.kind == "widen"]
     (item,) = [i for i in advice if i.factor == "x"]
     assert item.kind == "recalibrate" and item.bound == "upper" and item.observable == "y"
-    assert "another mechanism in the model" in item.text and "The missing 7 mm of y" in item.text  # target 25, 18 at the bound
+    assert "another mechanism in the model" in item.text and "The missing 7 mm of y" in item.text
+    assert "Do not widen x for y = 25 mm: at the bound y gains only 4 mm per unit x" in item.text
+    assert "a straight line would reach the target band at x ≈ 2.625" in item.text  # target 25, 18 at the bound
 
 
 def test_a_small_extension_keeps_the_widen_advice():
@@ -86,7 +88,7 @@ def test_a_huge_extension_is_not_advised_as_widen():
     assert reach.quadratic_extension == pytest.approx(2.0, rel=1e-6) and reach.quadratic_extension > WIDEN_LIMIT
     assert reach.quadratic_factor_value == pytest.approx(3.0, rel=1e-6)
     assert result.widen == {} and "Widen" not in result.message
-    assert "only at x ≈ 3 (200 % of the range beyond the bound" in result.message
+    assert "only at x ≈ 3, 200 % of the range beyond the bound" in result.message
     kinds = [(i.kind, i.factor) for i in _advice(result.to_json())]
     assert ("widen", "x") not in kinds and ("recalibrate", "x") in kinds
 

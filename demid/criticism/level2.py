@@ -341,7 +341,8 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
              f"brings it nearer its target: check its simulation output." for o in result.unmoved]
     unreachable = [r for r in result.reach if not r.widen]
     result.message = " ".join([_level2_message(result), *stuck, *widen_advice(domain, best_touch, set_touch),
-                               *(saturation_advice(r, r.factor, r.observable) for r in unreachable),
+                               *(f"{saturation_finding(r, r.factor, r.observable)} "
+                                 f"{saturation_advice(r, r.factor, r.observable)}" for r in unreachable),
                                *result.extrapolation])
     result.finding = " ".join([_level2_message(result), *stuck,
                                *(saturation_finding(r, r.factor, r.observable) for r in unreachable),

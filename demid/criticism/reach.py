@@ -32,7 +32,7 @@ class Reach:
     value: float                   # its prediction at the best point
     target: float
     band_edge: float               # the nearest edge of the target's tolerance band
-    slope: float                   # d observable / d factor outwards at the bound (per actual unit; per decade if log)
+    slope: float                   # d observable / d factor at the bound (per actual unit; per decade if log)
     curvature: float               # d² observable / d t² outwards (t: fraction of the range)
     straight_extension: float      # fraction of the range a straight line needs (inf: it moves away)
     quadratic_extension: float     # fraction the surrogate's quadratic extrapolation needs (inf: never)
@@ -130,27 +130,27 @@ def _spaced(unit: str) -> str:
 
 
 def saturation_finding(r: Reach, factor: str, observable: str, unit: str = "") -> str:
-    """The finding in words, for a bound where widening is not advised (``r.widen`` False)."""
+    """Level 2's finding in words, for a bound where widening is not advised (``r.widen`` False)."""
     u = _spaced(unit)
-    at = (f"at the bound {observable} {'gains' if r.slope * (1 if r.missing > 0 else -1) > 0 else 'moves away'} "
-          f"{_g(abs(r.slope))}{u} per unit {factor}")
     if r.levels_off:
-        why = (f"along {factor} the surrogate levels off at {observable} ≈ {_g(r.levels_off_value)}{u} "
-               f"({factor} ≈ {_g(r.levels_off_factor_value)}), short of its target {_g(r.target)}{u}: the response "
-               f"saturates along {factor}")
-    elif np.isfinite(r.quadratic_extension):
-        straight = (f"; a straight line: {factor} ≈ {_g(r.straight_factor_value)}"
-                    if np.isfinite(r.straight_factor_value) else "")
-        why = (f"the surrogate reaches {observable}'s target band only at {factor} ≈ {_g(r.quadratic_factor_value)}"
-               f" ({100 * r.quadratic_extension:.0f} % of the range beyond the bound{straight}), far beyond what the "
-               f"runs support")
-    else:
-        why = f"the surrogate does not approach {observable}'s target along {factor} beyond the bound"
-    return (f"A wider range of {factor} is unlikely to bring {observable} to its target: {at}, and {why}.")
+        return (f"Along {factor} the surrogate of {observable} levels off at {_g(r.levels_off_value)}{u} "
+                f"({factor} ≈ {_g(r.levels_off_factor_value)}), short of its target {_g(r.target)}{u}: the response "
+                f"saturates along {factor}, so a wider range of {factor} is unlikely to reach the target.")
+    if np.isfinite(r.quadratic_extension):
+        return (f"The surrogate of {observable} reaches its target band only at {factor} ≈ "
+                f"{_g(r.quadratic_factor_value)}, {100 * r.quadratic_extension:.0f} % of the range beyond the bound: "
+                f"far beyond what the runs support, so a wider range of {factor} is unlikely to reach the target.")
+    return (f"Beyond the bound of {factor} the surrogate of {observable} does not approach its target, so a wider "
+            f"range of {factor} is unlikely to reach it.")
 
 
 def saturation_advice(r: Reach, factor: str, observable: str, unit: str = "") -> str:
     """What to do instead of widening: the model lacks something, or the target is off."""
     u = _spaced(unit)
-    return (f"{saturation_finding(r, factor, observable, unit)} The missing {_g(abs(r.missing))}{u} of "
-            f"{observable} needs another mechanism in the model (a factor not varied) or a check of the target.")
+    toward = r.slope * (1 if r.side == "upper" else -1) * (1 if r.missing > 0 else -1) > 0
+    straight = (f"; a straight line would reach the target band at {factor} ≈ {_g(r.straight_factor_value)}"
+                if np.isfinite(r.straight_factor_value) else "")
+    return (f"Do not widen {factor} for {observable} = {_g(r.target)}{u}: at the bound {observable} "
+            f"{'gains only' if toward else 'moves away by'} {_g(abs(r.slope))}{u} per unit {factor}{straight}. "
+            f"The missing {_g(abs(r.missing))}{u} of {observable} needs another mechanism in the model (a factor not "
+            f"varied) or a check of the target.")
