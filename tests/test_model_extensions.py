@@ -67,3 +67,13 @@ def test_extends_must_name_another_material(tmp_path, other):
     config = validate_schema({"materials": {"base": copy.deepcopy(BASE), "ext": ext}})
     with pytest.raises(InputError, match=rf"materials\.ext\.extends: '{other}' is not another material"):
         check_semantics(config, source="config.yaml", base_dir=tmp_path)
+
+
+def test_the_data_dictionary_describes_the_table_columns():
+    from demid.report.columns import TABLE_COLUMNS, columns_table
+
+    assert TABLE_COLUMNS["model_extensions"] == MODEL_EXTENSION_COLUMNS
+    rows = columns_table({})
+    described = rows[rows["table"] == "model_extensions.csv"].set_index("column")
+    assert list(described.index) == MODEL_EXTENSION_COLUMNS
+    assert described.loc["feasible_fraction_after_pct", "unit"] == "% of Ω"
