@@ -9,7 +9,7 @@ import pandas as pd
 import pytest
 
 from demid.criticism import calibration_check
-from demid.criticism.reach import WIDEN_LIMIT, Reach, reach_beyond_bound
+from demid.criticism.reach import WIDEN_LIMIT, Reach, reach_beyond_bound, saturation_advice
 from demid.design import quadratic_terms
 from demid.sampling.domain import Domain
 from demid.spec import MaterialSpec
@@ -111,3 +111,20 @@ def test_reach_round_trips_through_json():
     again = Reach.from_json(r.to_json())
     assert again.levels_off == r.levels_off and again.quadratic_extension == np.inf
     assert again.levels_off_value == pytest.approx(r.levels_off_value)
+
+
+def test_a_log_factor_is_followed_in_decades():
+    # y = 10 + 4 log10(x) on x in [0.01, 1] (log scale): 10 at the upper bound, 4 per decade; the band edge
+    # 11 needs a quarter of a decade, i.e. 12.5 % of the two-decade range: widen, at x = 10^0.25
+    domain = Domain(("x", "w"), (0.01, 0.0), (1.0, 1.0), log=(True, False))
+    terms = quadratic_terms(2)
+    coef = np.zeros(len(terms))
+    coef[0], coef[1] = 10.0, 4.0
+    sur = Surrogate("y", ["x", "w"], terms, coef, np.zeros((len(terms), len(terms))), 0.0, 7, log_factors=("x",))
+    r = reach_beyond_bound(sur, domain, "x", "upper", {"x": 1.0, "w": 0.5}, "y", _target(11.0), TOL)
+    assert r.log and r.slope == pytest.approx(4.0, rel=1e-6) and r.widen
+    assert r.quadratic_extension == pytest.approx(0.125, rel=1e-6)
+    assert r.quadratic_factor_value == pytest.approx(10 ** 0.25, rel=1e-6)
+    # the band edge 20 needs 2.5 decades beyond the bound: not widened, said per decade
+    far = reach_beyond_bound(sur, domain, "x", "upper", {"x": 1.0, "w": 0.5}, "y", _target(20.0), TOL)
+    assert not far.widen and "gains only 4 per decade of x" in saturation_advice(far, "x", "y")

@@ -42,6 +42,7 @@ class Reach:
     quadratic_factor_value: float  # the factor's value the quadratic needs (nan: never)
     levels_off_factor_value: float
     widen: bool                    # the quadratic reaches the band within WIDEN_LIMIT of the range
+    log: bool = False              # a log-scale factor: the slope is per decade
 
     @property
     def levels_off(self) -> bool:
@@ -66,7 +67,8 @@ class Reach:
     def from_json(cls, payload: dict) -> Reach:
         fields = {k: (np.nan if payload.get(k) is None and k.endswith("value") else
                       np.inf if payload.get(k) is None else payload[k])
-                  for k in cls.__dataclass_fields__}
+                  for k in cls.__dataclass_fields__ if k != "log"}
+        fields["log"] = bool(payload.get("log", False))
         return cls(**fields)
 
 
@@ -122,7 +124,7 @@ def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, o
                  levels_off_extension=float(turn), levels_off_value=float(level),
                  straight_factor_value=factor_value(straight), quadratic_factor_value=factor_value(quadratic),
                  levels_off_factor_value=factor_value(turn),
-                 widen=bool(quadratic <= WIDEN_LIMIT))
+                 widen=bool(quadratic <= WIDEN_LIMIT), log=bool(domain.log[i]))
 
 
 def _spaced(unit: str) -> str:
@@ -150,7 +152,8 @@ def saturation_advice(r: Reach, factor: str, observable: str, unit: str = "") ->
     toward = r.slope * (1 if r.side == "upper" else -1) * (1 if r.missing > 0 else -1) > 0
     straight = (f"; a straight line would reach the target band at {factor} ≈ {_g(r.straight_factor_value)}"
                 if np.isfinite(r.straight_factor_value) else "")
+    per = "decade of" if r.log else "unit"
     return (f"Do not widen {factor} for {observable} = {_g(r.target)}{u}: at the bound {observable} "
-            f"{'gains only' if toward else 'moves away by'} {_g(abs(r.slope))}{u} per unit {factor}{straight}. "
+            f"{'gains only' if toward else 'moves away by'} {_g(abs(r.slope))}{u} per {per} {factor}{straight}. "
             f"The missing {_g(abs(r.missing))}{u} of {observable} needs another mechanism in the model (a factor not "
             f"varied) or a check of the target.")

@@ -163,8 +163,10 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
     },
     "advice": {
         "kind": ("–", "check_target, recalibrate, add_observable, widen, next_runs or stop."),
-        "factor": ("–", "Factor key of a widen advice (empty otherwise)."),
-        "bound": ("–", "lower or upper: the bound to move outwards (widen only)."),
+        "factor": ("–", "Factor key of a widen advice, or of a recalibrate advice on a bound that widening "
+                        "cannot help (empty otherwise)."),
+        "bound": ("–", "lower or upper: the bound to move outwards (widen), or the one not worth moving "
+                       "(recalibrate)."),
         "observable": ("–", "Response key the advice is about (check_target, recalibrate, add_observable)."),
         "text": ("–", "The advice as the report prints it (summary, level 2 or the next-wave section)."),
     },

@@ -1,7 +1,8 @@
 """Every piece of advice of a study, computed once: the summary, level 2 and the next-wave section read it.
 
 Kinds (``tables/advice.csv``): ``check_target`` (a target no simulated setting comes near, or one the
-surrogate cannot meet), ``recalibrate`` (no point meets every target, or a surrogate does not predict),
+surrogate cannot meet), ``recalibrate`` (no point meets every target, or a surrogate does not predict, or the
+best point sits on a bound the surrogate says widening cannot help: :mod:`demid.criticism.reach`),
 ``add_observable`` (the measurement that narrows most, or that a new kind is needed), ``widen`` (a bound
 that cuts the plausible set, or the best point when no point meets every target, and only where moving it
 can narrow or reach something), ``next_runs`` and ``stop`` (what the next wave can still buy).
