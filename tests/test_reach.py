@@ -128,3 +128,21 @@ def test_a_log_factor_is_followed_in_decades():
     # the band edge 20 needs 2.5 decades beyond the bound: not widened, said per decade
     far = reach_beyond_bound(sur, domain, "x", "upper", {"x": 1.0, "w": 0.5}, "y", _target(20.0), TOL)
     assert not far.widen and "gains only 4 per decade of x" in saturation_advice(far, "x", "y")
+
+
+def test_the_heap_without_rolling_friction_is_not_advised_to_widen_sliding_friction():
+    """The Kratos heap without rolling friction (examples/dem_heap): the best point sits on μ_s's upper bound, 18.3°
+    against 24°; the runs at μ_s = 1.2 and 1.5 (17.5°, 17.6°) show that widening would not help, and the fitted
+    quadratic needs μ_s ≈ 1.58, 85 % of the range beyond the bound: no widening."""
+    from pathlib import Path
+
+    from demid.surrogate import fit_response
+
+    table = pd.read_csv(Path(__file__).resolve().parents[1] / "examples" / "dem_heap" / "data" / "no_rolling.csv")
+    sur = fit_response(table, ["mu_s", "e"], "angle_of_repose", alpha=1.41421).surrogate()
+    domain = Domain(("mu_s", "e"), (0.1, 0.2), (0.9, 0.8))
+    result = calibration_check({"angle_of_repose": sur}, domain, {"angle_of_repose": 24.0}, 0.04, 41)
+    assert not result.feasible and result.best_at_bound["mu_s"] == "upper"
+    (reach,) = [r for r in result.reach if r.factor == "mu_s"]
+    assert not reach.widen and reach.quadratic_extension > WIDEN_LIMIT
+    assert "mu_s" not in result.widen and "Widen the range of mu_s" not in result.message
