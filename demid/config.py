@@ -379,6 +379,7 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
             raise InputError(f"config key {key}.design.alpha: {design['alpha']:g} {unreadable}", source=source)
         _check_published_ranges(key, responses, source)
         _check_scenario_labels(key, mat.get("scenarios") or {}, source)
+        _check_extends(key, mname, mat.get("extends") or "", config["materials"], source)
     # After the materials: the published numbers are checked against their names.
     _check_published_file(config.get("published") or "", base_dir, source, config["materials"])
 
@@ -415,6 +416,13 @@ def _check_published_ranges(key: str, responses: dict, source: str) -> None:
             why = impossible_published(stat, raw, where=f"{source}: {where}")
             if why:
                 raise InputError(f"{where}: {why}", source=source)
+
+
+def _check_extends(key: str, name: str, other: str, materials: dict, source: str) -> None:
+    """``extends`` names another material of the config: the model it extends."""
+    if other and (other == name or other not in materials):
+        raise InputError(f"config key {key}.extends: '{other}' is not another material of this config "
+                         f"(materials: {', '.join(m for m in materials if m != name)})", source=source)
 
 
 def _check_scenario_labels(key: str, scenarios: dict, source: str) -> None:

@@ -18,6 +18,7 @@ from ..formulas import relative_error
 from .edges import extrapolation_warnings, touching, widen_advice
 from .messages import _level2_message
 from .models import _num
+from .reach import reach_beyond_bound, saturation_advice, saturation_finding
 
 
 # =========================================================================== level 2
@@ -57,6 +58,7 @@ class Level2Result:
     extrapolation: list[str] = field(default_factory=list)
     unmoved: list[str] = field(default_factory=list)  # observables no factor moves anywhere in the domain
     finding: str = ""  # the message without its advice: the report adds the study's advice (demid.story)
+    reach: list = field(default_factory=list)  # demid.criticism.reach.Reach per bound the missing best point sits on
 
     @property
     def reference_max_error(self) -> float | None:
@@ -100,6 +102,7 @@ class Level2Result:
             "best_point_at_bound": dict(self.best_at_bound), "set_at_bound": self.set_at_bound,
             "widen": {f: list(v) for f, v in self.widen.items()}, "extrapolation": list(self.extrapolation),
             "unmoved": list(self.unmoved), "finding": self.finding,
+            "reach": [r.to_json() for r in self.reach],
         }
 
 
@@ -328,15 +331,40 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     best_touch, set_touch = touching(result.best_at_bound), touching(result.set_at_bound or {})
     if unmoved and movable and max(abs(best_errors[observables[i]]) for i in movable) <= tolerance:
         best_touch = {}  # the others are met: only the unmoved observables miss, and no range moves them
+    if not feasible and best_touch:
+        best_touch = _worth_widening(result, surrogates, domain, best_touch,
+                                     [observables[i] for i in (movable or every)])
     result.widen = {f: sorted(set(best_touch.get(f, ())) | set(set_touch.get(f, ())), key=("lower", "upper").index)
                     for f in factors if f in best_touch or f in set_touch}
     result.extrapolation = extrapolation_warnings(domain, runs, reference_point)
     stuck = [f"{o} is predicted the same everywhere in the search range (no factor moves it), so no calibration "
              f"brings it nearer its target: check its simulation output." for o in result.unmoved]
+    unreachable = [r for r in result.reach if not r.widen]
     result.message = " ".join([_level2_message(result), *stuck, *widen_advice(domain, best_touch, set_touch),
+                               *(f"{saturation_finding(r, r.factor, r.observable)} "
+                                 f"{saturation_advice(r, r.factor, r.observable)}" for r in unreachable),
                                *result.extrapolation])
-    result.finding = " ".join([_level2_message(result), *stuck, *result.extrapolation])
+    result.finding = " ".join([_level2_message(result), *stuck,
+                               *(saturation_finding(r, r.factor, r.observable) for r in unreachable),
+                               *result.extrapolation])
     return result
+
+
+def _worth_widening(result: Level2Result, surrogates, domain, touch: dict, observables: list[str]) -> dict:
+    """``touch`` without the bounds whose widening the surrogate says cannot reach the worst-missed target
+    (or does not move it at all); the estimate per bound along which it moves is kept in ``result.reach``."""
+    worst = max(observables, key=lambda o: abs(result.best_errors[o]))
+    kept = {}
+    for f, sides in touch.items():
+        for side in sides:
+            r = reach_beyond_bound(surrogates[worst], domain, f, side, result.best_point, worst,
+                                   result.targets[worst], result.tolerance)
+            if r.flat:
+                continue  # the worst-missed observable does not change along it: widening it buys nothing
+            result.reach.append(r)
+            if r.widen:
+                kept[f] = (*kept.get(f, ()), side)
+    return kept
 
 
 def _level2_extensions(d: int, k: int, best: float, shared: float, without: dict, bottleneck) -> list[dict]:

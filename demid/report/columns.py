@@ -163,10 +163,22 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
     },
     "advice": {
         "kind": ("–", "check_target, recalibrate, add_observable, widen, next_runs or stop."),
-        "factor": ("–", "Factor key of a widen advice (empty otherwise)."),
-        "bound": ("–", "lower or upper: the bound to move outwards (widen only)."),
+        "factor": ("–", "Factor key of a widen advice, or of a recalibrate advice on a bound that widening "
+                        "cannot help (empty otherwise)."),
+        "bound": ("–", "lower or upper: the bound to move outwards (widen), or the one not worth moving "
+                       "(recalibrate)."),
         "observable": ("–", "Response key the advice is about (check_target, recalibrate, add_observable)."),
         "text": ("–", "The advice as the report prints it (summary, level 2 or the next-wave section)."),
+    },
+    "model_extensions": {
+        "extends": ("–", "The material whose model this one extends (config key materials.<m>.extends)."),
+        "added_factors": ("–", "Factors of this material the extended one does not vary, joined by '+'."),
+        "best_error_before": (FRACTION, "Largest |relative error| at the best point of the extended material "
+                                        "(level 2's best_max_error in criticism/<extends>.json)."),
+        "best_error_after": (FRACTION, "The same for this material."),
+        "feasible_fraction_before_pct": (PCT, "Admissible fraction of Ω of the scenario for the extended material "
+                                              "(identifiability.csv)."),
+        "feasible_fraction_after_pct": (PCT, "The same for this material."),
     },
     "next_runs": {
         "proposal": ("–", "Number of the proposed run (1..count)."),
@@ -214,6 +226,8 @@ TABLE_COLUMNS = {
     "verdicts": ["material", "scenario", "factor", "strict_lower", "strict_upper", "plausible_lower",
                  "plausible_upper", "verdict", "reason"],
     "advice": ["material", "kind", "factor", "bound", "observable", "text"],
+    "model_extensions": ["material", "extends", "added_factors", "best_error_before", "best_error_after",
+                         "feasible_fraction_before_pct", "feasible_fraction_after_pct", "scenario"],
     "paper_comparison": ["quantity", "material", "published", "reproduced", "abs_diff", "rel_diff", "tolerance",
                          "pass", "printed_agrees"],
 }

@@ -172,9 +172,26 @@ class ReportSections:
         parts += self.identifiability()
         for m in self.materials:
             parts += self.material(m)
+        parts += self.model_extensions()
         parts += self.glossary()
         parts += self.paper_comparison()
         return parts
+
+    def model_extensions(self) -> list:
+        """Extending the model: a material that extends another against it (tables/model_extensions.csv)."""
+        from ..spec import MaterialSpec
+        from ..story.extensions import extension_sentence
+
+        table = self._csv("model_extensions.csv")
+        if table is None or not len(table):
+            return []
+        lines = ["## Extending the model", ""]
+        for row in table.fillna("").to_dict("records"):
+            spec = MaterialSpec.from_material(row["material"], self.config["materials"][row["material"]])
+            scenario = next((sc.label for sc in spec.scenarios if sc.name == row["scenario"]), row["scenario"])
+            labels = {m: self._label(m) for m in (row["material"], row["extends"])}
+            lines.append("- " + extension_sentence(row, labels, {f.name: f.label for f in spec.factors}, scenario))
+        return [self._md("\n".join(lines))]
 
     def summary(self) -> list:
         """Per material: recommended set, verdict per factor and scenario, criticism, next step.

@@ -1,7 +1,8 @@
 """Every piece of advice of a study, computed once: the summary, level 2 and the next-wave section read it.
 
 Kinds (``tables/advice.csv``): ``check_target`` (a target no simulated setting comes near, or one the
-surrogate cannot meet), ``recalibrate`` (no point meets every target, or a surrogate does not predict),
+surrogate cannot meet), ``recalibrate`` (no point meets every target, or a surrogate does not predict, or the
+best point sits on a bound the surrogate says widening cannot help: :mod:`demid.criticism.reach`),
 ``add_observable`` (the measurement that narrows most, or that a new kind is needed), ``widen`` (a bound
 that cuts the plausible set, or the best point when no point meets every target, and only where moving it
 can narrow or reach something), ``next_runs`` and ``stop`` (what the next wave can still buy).
@@ -13,6 +14,8 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 import pandas as pd
+
+from ..criticism.reach import Reach, saturation_advice
 
 ADVICE_COLUMNS = ["material", "kind", "factor", "bound", "observable", "text"]
 #: Where each kind is read in the report besides the summary.
@@ -52,6 +55,13 @@ class StudyAdvice:
 
 def _label(spec, name: str) -> str:
     return spec.response_labels.get(name, name)
+
+
+def _unit(spec, name: str) -> str:
+    from ..report.summary import unit_text
+
+    unit = next((r.unit for r in spec.responses if r.name == name), "-")
+    return unit_text(unit) if unit != "-" else ""
 
 
 def _bound_text(f, side: str) -> str:
@@ -140,12 +150,25 @@ def _widen(spec, verdicts: pd.DataFrame, level2: dict, implausible: dict) -> lis
                                                  "search range does")
     misses = level2 and not level2.get("feasible", True)
     movable = [o for o in (level2 or {}).get("observables", []) if o not in (level2 or {}).get("unmoved", [])]
-    if misses and not any(o in implausible for o in (level2 or {}).get("observables", [])) and movable:
-        for name, value in (level2.get("best_point_at_bound") or {}).items():
-            if value != "none":
-                sides.setdefault(name, set()).update(["lower", "upper"] if value == "both" else [value])
-                why.setdefault(name, []).append("no point meets every target and the best point lies on it")
     items = []
+    if misses and not any(o in implausible for o in (level2 or {}).get("observables", [])) and movable:
+        # level 2's estimate of what widening buys (demid.criticism.reach): a bound whose extrapolation levels off
+        # or needs a far extension is no place to look; the model lacks something (a factor not varied)
+        beyond = [Reach.from_json(r) for r in level2.get("reach") or []]
+        futile = {(r.factor, r.side): r for r in beyond if not r.widen}
+        for name, value in (level2.get("best_point_at_bound") or {}).items():
+            found = [s for s in (["lower", "upper"] if value == "both" else [value]) if s != "none"]
+            for side in found:
+                if (name, side) in futile:
+                    r = futile[(name, side)]
+                    f = next((x for x in spec.factors if x.name == name), None)
+                    items.append(AdviceItem(spec.name, "recalibrate", name, side, r.observable, saturation_advice(
+                        r, f.label if f else name, _label(spec, r.observable), _unit(spec, r.observable))))
+                    continue
+                if "widen" in level2 and side not in level2["widen"].get(name, ()):
+                    continue  # level 2 found the worst-missed observable flat along it: widening buys nothing
+                sides.setdefault(name, set()).add(side)
+                why.setdefault(name, []).append("no point meets every target and the best point lies on it")
     for f in spec.factors:
         for side in [s for s in ("lower", "upper") if s in sides.get(f.name, ())]:
             items.append(AdviceItem(spec.name, "widen", f.name, side, "", (

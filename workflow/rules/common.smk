@@ -205,6 +205,7 @@ def report_tables():
     out += [f"{RESULTS}/combinations/{m}.json" for m in MATERIALS]
     out += [f"{RESULTS}/fits/{m}.json" for m in MATERIALS]
     out += [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]  # rule story
+    out.append(MODEL_EXTENSIONS_TABLE)  # rule model_extensions
     return out
 
 
@@ -294,6 +295,7 @@ def all_outputs():
     out += [f"{RESULTS}/criticism/{m}" for m in MATERIALS]
     out += next_wave_tables()
     out += [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]  # rule story
+    out.append(MODEL_EXTENSIONS_TABLE)  # rule model_extensions
     out += wave_history_outputs()  # workflow/rules/simulation_common.smk
     out.append(f"{RESULTS}/report/report.html")
     if config.get("published"):
@@ -331,5 +333,8 @@ def story_inputs():
         out["next_wave_value"] = f"{RESULTS}/next_wave/value.json"
     return out
 
+
+# A material that extends another's model, against it (workflow/rules/story.smk, rule model_extensions).
+MODEL_EXTENSIONS_TABLE = f"{RESULTS}/tables/model_extensions.csv"
 
 STORY_TABLES = [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]

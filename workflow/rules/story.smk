@@ -25,3 +25,28 @@ rule story:
         "benchmarks/story/story.tsv"
     script:
         "../../scripts/story.py"
+
+
+localrules:
+    model_extensions,
+
+
+rule model_extensions:
+    input:
+        identifiability=f"{RESULTS}/tables/identifiability.csv",
+        criticism=[f"{RESULTS}/criticism/{m}.json" for m in MATERIALS],
+    output:
+        table=MODEL_EXTENSIONS_TABLE,
+    params:
+        specs=[SPECS[m] for m in MATERIALS],
+        extends={m: config["materials"][m].get("extends") or "" for m in MATERIALS},
+    resources:
+        mem_mb=500,
+    conda:
+        "../envs/demid.yaml"
+    log:
+        "logs/story/model_extensions.log",
+    benchmark:
+        "benchmarks/story/model_extensions.tsv"
+    script:
+        "../../scripts/model_extensions.py"

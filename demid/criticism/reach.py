@@ -1,0 +1,159 @@
+"""What widening a bound could buy when no point meets the targets and the best point sits on that bound.
+
+The fitted surrogate is followed outwards from the best point along the factor, the others held:
+its slope and curvature there (central differences, exact for a quadratic in search units), the
+extension of the range a straight line and the surrogate's own quadratic extrapolation need to bring
+the worst-missed observable into its tolerance band, and the quadratic's stationary point when it
+turns back before the band (the response saturates along that factor).  Extensions are fractions of
+the search range beyond the bound.  Level 2's message and the advice (:mod:`demid.story.advice`)
+both read this one result: widening is advised only where the extrapolation reaches the band
+within :data:`WIDEN_LIMIT` of the range.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+from .models import _g
+
+#: Largest extension (fraction of the search range beyond the bound) worth advising as "widen": further out
+#: the quadratic's extrapolation rests on no run, and a target it reaches there is no evidence the model can.
+WIDEN_LIMIT = 0.5
+_STEP = 0.01  # finite-difference step, fraction of the range
+
+
+@dataclass(frozen=True)
+class Reach:
+    factor: str
+    side: str                      # lower / upper: the bound the best point sits on
+    observable: str                # the observable missing its target most at the best point
+    value: float                   # its prediction at the best point
+    target: float
+    band_edge: float               # the nearest edge of the target's tolerance band
+    slope: float                   # d observable / d factor at the bound (per actual unit; per decade if log)
+    curvature: float               # d² observable / d t² outwards (t: fraction of the range)
+    straight_extension: float      # fraction of the range a straight line needs (inf: it moves away)
+    quadratic_extension: float     # fraction the surrogate's quadratic extrapolation needs (inf: never)
+    levels_off_extension: float    # where the quadratic stops approaching the target (inf: it does not)
+    levels_off_value: float        # its value there (nan when it does not level off)
+    straight_factor_value: float   # the factor's value a straight line needs (nan: never)
+    quadratic_factor_value: float  # the factor's value the quadratic needs (nan: never)
+    levels_off_factor_value: float
+    widen: bool                    # the quadratic reaches the band within WIDEN_LIMIT of the range
+    log: bool = False              # a log-scale factor: the slope is per decade
+
+    @property
+    def levels_off(self) -> bool:
+        return bool(np.isfinite(self.levels_off_extension) and not np.isfinite(self.quadratic_extension))
+
+    @property
+    def flat(self) -> bool:
+        """The observable does not change along the factor: widening it cannot bring it nearer its target."""
+        return abs(self.slope) + abs(self.curvature) <= 1e-9 * max(1.0, abs(self.value))
+
+    @property
+    def missing(self) -> float:
+        """What the observable misses its target by at the best point (target minus prediction)."""
+        return self.target - self.value
+
+    def to_json(self) -> dict:
+        out = {k: (None if isinstance(v, float) and not np.isfinite(v) else v) for k, v in asdict(self).items()}
+        out["levels_off"] = self.levels_off
+        return out
+
+    @classmethod
+    def from_json(cls, payload: dict) -> Reach:
+        fields = {k: (np.nan if payload.get(k) is None and k.endswith("value") else
+                      np.inf if payload.get(k) is None else payload[k])
+                  for k in cls.__dataclass_fields__ if k != "log"}
+        fields["log"] = bool(payload.get("log", False))
+        return cls(**fields)
+
+
+def _smallest_positive_root(a: float, b: float, c: float) -> float:
+    """Smallest t > 0 with a t² + b t + c = 0 (inf when none)."""
+    if abs(a) < 1e-12 * max(abs(b), abs(c), 1.0):
+        return -c / b if b and -c / b > 0 else np.inf
+    disc = b * b - 4 * a * c
+    if disc < 0:
+        return np.inf
+    roots = [(-b - np.sqrt(disc)) / (2 * a), (-b + np.sqrt(disc)) / (2 * a)]
+    positive = [t for t in roots if t > 1e-12]
+    return min(positive) if positive else np.inf
+
+
+def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, observable: str,
+                       target: float, tolerance: float) -> Reach:
+    """How far beyond ``side`` of ``factor`` the surrogate of ``observable`` must be followed, from ``point``
+    (actual units, every factor), to come within ``tolerance`` (relative) of ``target``."""
+    factors = list(domain.factors)
+    i = factors.index(factor)
+    lo, hi = domain.search_bounds()
+    width = float(hi[i] - lo[i])
+    outward = 1.0 if side == "upper" else -1.0
+    base = domain.to_search(np.array([[float(point[f]) for f in factors]], dtype=float))[0]
+    base[i] = hi[i] if side == "upper" else lo[i]
+
+    def along(t):
+        s = np.repeat(base[None, :], len(t), axis=0)
+        s[:, i] = base[i] + outward * np.asarray(t, dtype=float) * width
+        return s
+
+    def predict(t):
+        return np.asarray(surrogate.predict(domain.to_actual(along(t))), dtype=float)
+
+    def factor_value(t):
+        return float(domain.to_actual(along([t]))[0, i]) if np.isfinite(t) else np.nan
+
+    f_minus, f0, f_plus = predict([-_STEP, 0.0, _STEP])
+    g = (f_plus - f_minus) / (2 * _STEP)           # per fraction of the range, outwards
+    c = (f_plus - 2 * f0 + f_minus) / _STEP ** 2
+    direction = 1.0 if f0 < target else -1.0      # the observable must rise (+1) or fall (-1)
+    edge = target - direction * tolerance * abs(target)
+    gap = direction * (edge - f0)                  # > 0 while outside the band
+    rate, bend = direction * g, direction * c      # progress towards the band per unit t, and its change
+    straight = gap / rate if rate > 0 else np.inf
+    quadratic = _smallest_positive_root(bend / 2, rate, -gap)
+    turn = -rate / bend if rate > 0 and bend < 0 else np.inf
+    level = f0 + g * turn + c * turn ** 2 / 2 if np.isfinite(turn) else np.nan
+    return Reach(factor=factor, side=side, observable=observable, value=float(f0), target=float(target),
+                 band_edge=float(edge), slope=float(outward * g / width), curvature=float(c),
+                 straight_extension=float(max(straight, 0.0)), quadratic_extension=float(max(quadratic, 0.0)),
+                 levels_off_extension=float(turn), levels_off_value=float(level),
+                 straight_factor_value=factor_value(straight), quadratic_factor_value=factor_value(quadratic),
+                 levels_off_factor_value=factor_value(turn),
+                 widen=bool(quadratic <= WIDEN_LIMIT), log=bool(domain.log[i]))
+
+
+def _spaced(unit: str) -> str:
+    return "" if not unit else unit if unit.startswith("°") else f" {unit}"
+
+
+def saturation_finding(r: Reach, factor: str, observable: str, unit: str = "") -> str:
+    """Level 2's finding in words, for a bound where widening is not advised (``r.widen`` False)."""
+    u = _spaced(unit)
+    if r.levels_off:
+        return (f"Along {factor} the surrogate of {observable} levels off at {_g(r.levels_off_value)}{u} "
+                f"({factor} ≈ {_g(r.levels_off_factor_value)}), short of its target {_g(r.target)}{u}: the response "
+                f"saturates along {factor}, so a wider range of {factor} is unlikely to reach the target.")
+    if np.isfinite(r.quadratic_extension):
+        return (f"The surrogate of {observable} reaches its target band only at {factor} ≈ "
+                f"{_g(r.quadratic_factor_value)}, {100 * r.quadratic_extension:.0f} % of the range beyond the bound: "
+                f"far beyond what the runs support, so a wider range of {factor} is unlikely to reach the target.")
+    return (f"Beyond the bound of {factor} the surrogate of {observable} does not approach its target, so a wider "
+            f"range of {factor} is unlikely to reach it.")
+
+
+def saturation_advice(r: Reach, factor: str, observable: str, unit: str = "") -> str:
+    """What to do instead of widening: the model lacks something, or the target is off."""
+    u = _spaced(unit)
+    toward = r.slope * (1 if r.side == "upper" else -1) * (1 if r.missing > 0 else -1) > 0
+    straight = (f"; a straight line would reach the target band at {factor} ≈ {_g(r.straight_factor_value)}"
+                if np.isfinite(r.straight_factor_value) else "")
+    per = "decade of" if r.log else "unit"
+    return (f"Do not widen {factor} for {observable} = {_g(r.target)}{u}: at the bound {observable} "
+            f"{'gains only' if toward else 'moves away by'} {_g(abs(r.slope))}{u} per {per} {factor}{straight}. "
+            f"The missing {_g(abs(r.missing))}{u} of {observable} needs another mechanism in the model (a factor not "
+            f"varied) or a check of the target.")

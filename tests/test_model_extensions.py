@@ -1,0 +1,79 @@
+"""A material that ``extends`` another: tables/model_extensions.csv reads level 2's best-point error and
+identifiability's admissible fraction of both (one quantity, one number), and the report says the gain."""
+
+from __future__ import annotations
+
+import copy
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from demid.config import check_semantics, validate_schema
+from demid.errors import InputError
+from demid.spec import MaterialSpec
+from demid.story.extensions import MODEL_EXTENSION_COLUMNS, extension_sentence, model_extensions
+
+
+def _material(factors: dict, **extra) -> dict:
+    return {"data": "x.csv", "design": {"type": "custom"}, "factors": factors,
+            "responses": {"theta": {"target": 24.0, "label": "θ", "unit": "°"}},
+            "scenarios": {"aor": {"observables": ["theta"], "tolerance": 0.04, "label": "AoR ±4 %"}}, **extra}
+
+
+BASE = _material({"mu_s": {"lower": 0.1, "upper": 0.9, "label": "μ_s"}, "e": {"lower": 0.2, "upper": 0.8}},
+                 label="No rolling")
+EXTENDED = _material({"mu_s": {"lower": 0.1, "upper": 0.9, "label": "μ_s"},
+                      "mu_r": {"lower": 0.0, "upper": 0.3, "label": "μ_r"}}, label="Rolling", extends="base")
+
+
+def _identifiability(rows):
+    return pd.DataFrame([{"material": m, "scenario": s, "feasible_fraction_pct": f, "factor": x}
+                         for m, s, f in rows for x in ("a", "b")])
+
+
+def test_the_table_reads_both_materials_numbers_and_names_the_added_factors():
+    specs = {"base": MaterialSpec.from_material("base", BASE), "ext": MaterialSpec.from_material("ext", EXTENDED)}
+    criticism = {"base": {"level2": {"best_max_error": 0.2367}}, "ext": {"level2": {"best_max_error": 0.0}}}
+    ident = _identifiability([("base", "aor", 0.0), ("ext", "aor", 38.97), ("ext", "only_ext", 50.0)])
+    table = model_extensions(specs, {"base": "", "ext": "base"}, criticism, ident)
+    assert list(table.columns) == MODEL_EXTENSION_COLUMNS
+    # one row: the only scenario both have; the extended material's own scenario has nothing to compare with
+    assert table.to_dict("records") == [{
+        "material": "ext", "extends": "base", "added_factors": "mu_r", "best_error_before": 0.2367,
+        "best_error_after": 0.0, "feasible_fraction_before_pct": 0.0, "feasible_fraction_after_pct": 38.97,
+        "scenario": "aor"}]
+    text = extension_sentence(table.iloc[0].to_dict(), {"base": "No rolling", "ext": "Rolling"},
+                              {"mu_r": "μ_r"}, "AoR ±4 %")
+    assert text == ("Adding μ_r to the model of No rolling (Rolling): the best point's largest error falls from "
+                    "23.7 % to 0 %; the admissible set of *AoR ±4 %* grows from empty to 39 % of Ω.")
+    # no material extends another: an empty table with the columns
+    none = model_extensions(specs, {}, criticism, ident)
+    assert list(none.columns) == MODEL_EXTENSION_COLUMNS and none.empty
+
+
+def test_a_level2_without_targets_gives_nan_not_a_number_made_up():
+    specs = {"base": MaterialSpec.from_material("base", BASE), "ext": MaterialSpec.from_material("ext", EXTENDED)}
+    table = model_extensions(specs, {"ext": "base"}, {"base": {"level2": None}, "ext": {}},
+                             _identifiability([("base", "aor", 5.0), ("ext", "aor", 10.0)]))
+    assert np.isnan(table.loc[0, "best_error_before"]) and np.isnan(table.loc[0, "best_error_after"])
+
+
+@pytest.mark.parametrize("other", ["nothing", "ext"])
+def test_extends_must_name_another_material(tmp_path, other):
+    (tmp_path / "x.csv").write_text("run\n")
+    ext = copy.deepcopy(EXTENDED)
+    ext["extends"] = other
+    config = validate_schema({"materials": {"base": copy.deepcopy(BASE), "ext": ext}})
+    with pytest.raises(InputError, match=rf"materials\.ext\.extends: '{other}' is not another material"):
+        check_semantics(config, source="config.yaml", base_dir=tmp_path)
+
+
+def test_the_data_dictionary_describes_the_table_columns():
+    from demid.report.columns import TABLE_COLUMNS, columns_table
+
+    assert TABLE_COLUMNS["model_extensions"] == MODEL_EXTENSION_COLUMNS
+    rows = columns_table({})
+    described = rows[rows["table"] == "model_extensions.csv"].set_index("column")
+    assert list(described.index) == MODEL_EXTENSION_COLUMNS
+    assert described.loc["feasible_fraction_after_pct", "unit"] == "% of Ω"
