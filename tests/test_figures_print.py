@@ -83,3 +83,17 @@ def test_posterior_legend_uses_configured_labels():
     texts = [t.get_text() for legend in fig.legends for t in legend.get_texts()]
     assert texts == ["$\\theta$ (1.50 bits)"]
     assert not any("angle_of_repose" in t for t in texts)
+
+
+def test_report_text_speaks_in_configured_labels():
+    from demid.report.summary import labelled
+    from demid.spec import MaterialSpec
+
+    spec = MaterialSpec.from_material("m", {
+        "factors": {"mu_s": {"lower": 0.1, "upper": 0.9, "label": "μ_s"}, "e": {"lower": 0.2, "upper": 0.8}},
+        "responses": {"angle_of_repose": {"target": 24, "label": "θ"}},
+        "scenarios": {"a": {"observables": ["angle_of_repose"], "tolerance": 0.04}}})
+    text = ("the closest point (mu_s=0.9, e=0.5) misses (angle_of_repose under-predicted); "
+            "key materials.m.responses.angle_of_repose.target, file mu_s.csv")
+    assert labelled(text, spec) == ("the closest point (μ_s=0.9, e=0.5) misses (θ under-predicted); "
+                                    "key materials.m.responses.angle_of_repose.target, file mu_s.csv")

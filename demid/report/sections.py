@@ -430,20 +430,21 @@ class ReportSections:
                  "run-order drift, non-constant variance) with family-wise error control; a finding is kept only "
                  "with its extension and the measured gain (leave-one-out RMSE, AICc)."]
         from ..spec import MaterialSpec
-        from .summary import VERDICT_WORDS, unreliable_surrogate_lines, verdict_sentence
+        from .summary import VERDICT_WORDS, labelled, unreliable_surrogate_lines, verdict_sentence
 
+        spec = MaterialSpec.from_material(m, self.config["materials"][m])
         for response, res in info["level1"].items():
+            name = spec.response_labels.get(response, response)
             if res.get("verdict_message"):
-                lines += [f"- `{response}` — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
-                          + verdict_sentence(response, res)]
+                lines += [f"- {name} — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
+                          + labelled(verdict_sentence(response, res), spec)]
             elif res["messages"]:
-                lines += [f"- `{response}`: " + " ".join(res["messages"])]
+                lines += [f"- {name}: " + labelled(" ".join(res["messages"]), spec)]
             else:
-                lines += [f"- `{response}`: nothing found by the catalogue tests."]
+                lines += [f"- {name}: nothing found by the catalogue tests."]
         run_order = info.get("run_order") or {}
         if run_order.get("drift_tested") is False:
-            lines += [f"- Run order: {run_order['message']}"]
-        spec = MaterialSpec.from_material(m, self.config["materials"][m])
+            lines += [f"- Run order: {labelled(run_order['message'], spec)}"]
         lines += [f"- {w}" for w in unreliable_surrogate_lines(info, spec)]
         findings = self._csv("criticism.csv")
         if findings is not None and "cause" in findings.columns:
@@ -458,7 +459,7 @@ class ReportSections:
 
             advice = StudyAdvice.from_frame(self._csv("advice.csv")).texts(m, LEVEL2_KINDS)
             lines += ["", "**Level 2 — calibrated simulation against the experiment.** "
-                      + " ".join([level2.get("finding") or level2["message"], *advice])]
+                      + " ".join([labelled(level2.get("finding") or level2["message"], spec), *advice])]
         for pos in info.get("reference_point") or []:
             errs = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in pos["errors"].items())
             if pos["inside"]:

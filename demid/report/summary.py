@@ -85,6 +85,21 @@ VERDICT_WORDS = {"adequate": "adequate (within the tests' power)", "defect": "de
                  "ambiguous": "ambiguous cause"}
 
 
+def labelled(text: str, spec) -> str:
+    """``text`` with every factor and response key that stands as a word (``mu_s=0.9``, ``angle_of_repose
+    under-predicted``) written as its configured label; keys inside a config path (``responses.d5.target``)
+    or a file name stay as they are."""
+    import re
+
+    names = {**{f.name: f.label for f in spec.factors}, **{r.name: r.label for r in spec.responses}}
+    names = {k: v for k, v in names.items() if v and v != k}
+    if not names or not text:
+        return text
+    pattern = re.compile(r"(?<![\w./`])(" + "|".join(re.escape(k) for k in sorted(names, key=len, reverse=True))
+                         + r")(?![\w`]|\.\w)")
+    return pattern.sub(lambda m: names[m.group(1)], text)
+
+
 def verdict_sentence(response: str, res: dict) -> str:
     """The verdict message without its leading "<response>: <verdict> — " (the report names both)."""
     text = res.get("verdict_message", "")
