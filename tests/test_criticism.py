@@ -160,6 +160,41 @@ def test_separating_runs_match_a_scan_of_every_candidate(case):
         assert np.array_equal(separating_runs(coded, base, members, alpha), expected)
 
 
+@pytest.mark.parametrize("seed, k, drift", [(0, 2, False), (1, 3, False), (2, 2, True)])
+def test_slip_ratios_match_a_refit_without_each_run(seed, k, drift):
+    """The factor-level statistic from the leave-one-out identities equals refitting without each run
+    (pseudo-inverse of the other runs' cross-products), for the observed and bootstrap columns."""
+    from demid.criticism.catalogue import _moved_rows, _slip_ratios, slip_candidates
+    from demid.criticism.level1 import _prepare
+    from demid.criticism.models import _Model, _Spec
+    from demid.design import LEVERAGE_UNPREDICTABLE
+
+    table, _ = ccd_table(seed, k)
+    data, _ = _prepare(table, FACTORS[k], "y", None, ())
+    model = _Model(data, _Spec(drift=drift))
+    cands = slip_candidates(data, model)
+    rng = np.random.default_rng(seed)
+    y = np.column_stack([model.z, model.fitted_z[:, None] + rng.standard_normal((len(model.z), 40))])
+    x, rows = model.x, _moved_rows(model, cands)
+    sse0 = np.sum((y - x @ np.linalg.lstsq(x, y, rcond=None)[0]) ** 2, axis=0)
+    pos_of = {int(r): i for i, r in enumerate(np.flatnonzero(model.keep))}
+    expected = np.zeros(y.shape[1])
+    for i in sorted({pos_of[c.row] for c in cands}):
+        if model.hat[i] >= LEVERAGE_UNPREDICTABLE:
+            continue
+        others = np.arange(len(y)) != i
+        a = np.linalg.pinv(x[others].T @ x[others])
+        beta = a @ (x[others].T @ y[others])
+        sse_without = np.sum((y[others] - x[others] @ beta) ** 2, axis=0)
+        for kk in [j for j, c in enumerate(cands) if pos_of[c.row] == i]:
+            r = rows[kk]
+            moved = sse_without + (y[i] - r @ beta) ** 2 / (1 + r @ a @ r)
+            expected = np.maximum(expected, sse0 / moved)
+    ratio, best = _slip_ratios(model, cands, y)
+    np.testing.assert_allclose(ratio, expected, rtol=1e-8)
+    assert len(cands) > 10 and ratio.max() > 1
+
+
 # --------------------------------------------------------------------------- statistics vs statsmodels
 def test_catalogue_statistics_match_statsmodels():
     table, _ = ccd_table(7, 2, "term", 3.0, term="gamma^3")
