@@ -85,9 +85,6 @@ def _term_classes(coded: np.ndarray, base_terms: list[Term], candidates: list[Te
 #: differ by tenths.
 _TIE = 1e-4
 
-#: Candidates whose updated member blocks are formed at once.
-_CHUNK = 8192
-
 
 def _candidate_points(n_factors: int, alpha: float) -> np.ndarray:
     levels = sorted({-alpha, -1.0, -0.5, 0.0, 0.5, 1.0, alpha})
@@ -179,14 +176,18 @@ def _criteria_with_one_more_run(coded: np.ndarray, base_terms, members, cand_bas
     leverage = np.sum(scaled * scaled, axis=1)
     error = cand_members - scaled @ (u.T @ cols)              # z - B'x, with B = V S^-1 U' Z
     error[outside] = 0.0
-    ev = np.empty_like(error)
-    for start in range(0, len(error), _CHUNK):  # chunks bound the memory of the m x m blocks
-        e, h = error[start:start + _CHUNK], leverage[start:start + _CHUNK]
-        ev[start:start + _CHUNK] = np.linalg.eigvalsh(current + np.einsum("ni,nj->nij", e, e) / (1.0 + h)[:, None, None])
-    total = float(np.sum(cols * cols)) + np.sum(cand_members * cand_members, axis=1)
-    keep_ev = ev > np.maximum(total, 1e-300)[:, None] * 1e-12
-    ranks = keep_ev.sum(axis=1)
+    # S + w w' with w = e / sqrt(1 + h), in the eigenbasis of S (eigenvalues lam): the pseudo-determinant
+    # gains a factor 1 + sum(a^2 / lam) over the range of S, or |w_perp|^2 (and one rank) when w leaves it
+    lam, basis = np.linalg.eigh(current)
+    a = (error @ basis) / np.sqrt(1.0 + leverage)[:, None]
+    floor = np.maximum(float(np.sum(cols * cols)) + np.sum(cand_members * cand_members, axis=1), 1e-300) * 1e-12
+    in_range = lam[None, :] > floor[:, None]
+    perp = np.sum(np.where(in_range, 0.0, a * a), axis=1)
+    gains = perp > floor
     with np.errstate(divide="ignore", invalid="ignore"):
-        logdets = np.where(keep_ev, np.log(np.where(keep_ev, ev, 1.0)), 0.0).sum(axis=1)
+        base_logdet = np.sum(np.where(in_range, np.log(np.where(in_range, lam, 1.0)), 0.0), axis=1)
+        along = np.sum(np.where(in_range, a * a / np.where(in_range, lam, 1.0), 0.0), axis=1)
+        logdets = base_logdet + np.where(gains, np.log(np.where(gains, perp, 1.0)), np.log1p(along))
+    ranks = in_range.sum(axis=1) + gains
     logdets = np.where(ranks > 0, logdets, -np.inf)
     return ranks, logdets
