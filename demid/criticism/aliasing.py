@@ -169,13 +169,13 @@ def _criteria_with_one_more_run(coded: np.ndarray, base_terms, members, cand_bas
     u, s, v = u[:, keep], s[keep], vt[keep].T
     resid = _residualize(u, cols)
     current = resid.T @ resid
-    loading = cand_base @ v                                   # candidates in the base's row-space coordinates
-    outside = np.linalg.norm(cand_base - loading @ v.T, axis=1) > 1e-8 * np.maximum(
-        np.linalg.norm(cand_base, axis=1), 1e-300)
-    scaled = loading / s
+    scaled = cand_base @ (v / s)                              # candidates in the base's row-space coordinates
     leverage = np.sum(scaled * scaled, axis=1)
     error = cand_members - scaled @ (u.T @ cols)              # z - B'x, with B = V S^-1 U' Z
-    error[outside] = 0.0
+    if v.shape[1] < v.shape[0]:  # a base the runs cannot estimate: a run off its row space adds a direction
+        outside = np.linalg.norm(cand_base - (scaled * s) @ v.T, axis=1) > 1e-8 * np.maximum(
+            np.linalg.norm(cand_base, axis=1), 1e-300)
+        error[outside] = 0.0
     # S + w w' with w = e / sqrt(1 + h), in the eigenbasis of S (eigenvalues lam): the pseudo-determinant
     # gains a factor 1 + sum(a^2 / lam) over the range of S, or |w_perp|^2 (and one rank) when w leaves it
     lam, basis = np.linalg.eigh(current)
