@@ -155,7 +155,7 @@ def test_separating_runs_match_a_scan_of_every_candidate(case):
         coded, alpha = rng.uniform(-1, 1, (7, 2)), 1.3
     k = coded.shape[1]
     base = quadratic_terms(k)
-    for members in ([t for t in cubic_terms(k)][:2], [t for t in cubic_terms(k)][-3:], cubic_terms(k)[:k + 1]):
+    for members in (cubic_terms(k)[:2], cubic_terms(k)[-3:], cubic_terms(k)[:k + 1], cubic_terms(k)):
         expected = _separating_runs_by_scan(coded, base, members, alpha)
         assert np.array_equal(separating_runs(coded, base, members, alpha), expected)
 
@@ -193,6 +193,26 @@ def test_slip_ratios_match_a_refit_without_each_run(seed, k, drift):
     ratio, best = _slip_ratios(model, cands, y)
     np.testing.assert_allclose(ratio, expected, rtol=1e-8)
     assert len(cands) > 10 and ratio.max() > 1
+
+
+def test_separating_runs_rank_one_step_equals_a_fresh_design():
+    """After a run joins the design, the per-candidate leverage, prediction errors and residual block from
+    the rank-one updates equal those computed afresh from the enlarged design."""
+    from demid.criticism.aliasing import _candidate_points, _OneMoreRun
+    from demid.design import ccd_points, cubic_terms
+
+    for coded, alpha in [(ccd_points(2, 1.0, 3), 1.0), (ccd_points(3, 8 ** 0.25, 6), 8 ** 0.25)]:
+        k = coded.shape[1]
+        base, members = quadratic_terms(k), cubic_terms(k)
+        cands = _candidate_points(k, alpha)
+        cand_base, cand_members = model_matrix(cands, base), model_matrix(cands, members)
+        state = _OneMoreRun.of(coded, base, members, cand_base, cand_members)
+        for index in (5, len(cands) - 1):
+            state = state.with_run(index, cands[index], base, members)
+            fresh = _OneMoreRun.of(state.coded, base, members, cand_base, cand_members)
+            np.testing.assert_allclose(state.leverage, fresh.leverage, atol=1e-10)
+            np.testing.assert_allclose(state.error, fresh.error, atol=1e-10)
+            np.testing.assert_allclose(state.current, fresh.current, atol=1e-10)
 
 
 # --------------------------------------------------------------------------- statistics vs statsmodels
