@@ -7,12 +7,12 @@ with three responses (two with targets, one to minimise on a Pareto front), two 
 ``custom`` design of uniformly random runs.  Each case runs the material job exactly as the
 ``analyse_material`` rule does (:func:`demid.steps.material_step`, then every output written), in a
 fresh Python process so that imports count as they do under Snakemake, and the table shows its
-wall and CPU seconds (median of ``--reps``), and the ratios to the previous row: per added factor,
-and per added run (cost per run should stay roughly flat as runs grow).
+wall and CPU seconds (median of ``--reps``), the ratios to the previous row, and for the run cases
+the CPU milliseconds per added run (flat when the cost is linear in the runs).
 
     python benchmarks/scaling.py --factors 2 3 4 5 6 --runs 13 100 1000 10000
     python benchmarks/scaling.py --quick                # 2, 4, 6 factors; 13, 1000 runs; one rep
-    python benchmarks/scaling.py --one factors 6        # one case, JSON (used by the table)
+    python benchmarks/scaling.py --one 6 ccd            # one case, JSON (used by the table; or --one 2 1000)
 """
 
 from __future__ import annotations
@@ -143,12 +143,14 @@ def measure(k: int, runs: int | None, reps: int) -> dict:
 def _table(title: str, rows: list[dict], per: str) -> None:
     print(f"\n{title}")
     print(f"{'factors':>7} {'runs':>6} {'wall s':>8} {'cpu s':>8} {'wall ratio':>11} {'cpu ratio':>10}"
-          + (f" {'cpu ms/run':>11}" if per == "runs" else ""))
+          + (f" {'cpu ms per added run':>21}" if per == "runs" else ""))
     previous = None
     for row in rows:
         ratio = ("" if previous is None else f"{row['wall'] / previous['wall']:.2f}",
                  "" if previous is None else f"{row['cpu'] / previous['cpu']:.2f}")
-        extra = f" {1000 * row['cpu'] / row['runs']:11.2f}" if per == "runs" else ""
+        extra = ""
+        if per == "runs" and previous is not None:  # the marginal cost: flat when the cost is linear in runs
+            extra = f" {1000 * (row['cpu'] - previous['cpu']) / (row['runs'] - previous['runs']):21.2f}"
         print(f"{row['factors']:>7} {row['runs']:>6} {row['wall']:8.2f} {row['cpu']:8.2f} {ratio[0]:>11} "
               f"{ratio[1]:>10}{extra}")
         previous = row
