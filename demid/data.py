@@ -822,7 +822,7 @@ def require_estimable(coded: np.ndarray, usable: np.ndarray, point_types: np.nda
                              "so its value at the design centre would be extrapolated from the factorial and axial "
                              "runs; at least one centre run is needed", source=src, column=column)
     matrix = model_matrix(x, terms)
-    _, singular, vt = np.linalg.svd(matrix)
+    _, singular, vt = np.linalg.svd(matrix, full_matrices=False)  # n x n left vectors: 800 MB at 10,000 runs
     rank = int(np.sum(singular > 1e-8 * singular[0]))
     if rank < p:
         raise InputError(f"the quadratic model cannot be estimated (rank {rank} of {p} terms): "

@@ -25,6 +25,9 @@ from .precision import factor_round_off_sd, printed_quantum
 # (an exact polynomial, a deterministic simulator's identical replicates), not scatter to test.
 ROUND_OFF = 1e-9
 
+#: Up to this many runs the studentised residuals refit without each run (statsmodels' own loop).
+LOO_REFIT_MAX_RUNS = 200
+
 
 def round_off_floor(y, factor_sd=None) -> float:
     """Residual size below which a fit of ``y`` is exact to working precision — or to the precision the table
@@ -371,7 +374,7 @@ class SurrogateFit:
         """Per-run externally studentised residuals, leverage and Cook's distance (statsmodels)."""
         with warnings.catch_warnings(), np.errstate(divide="ignore", invalid="ignore"):
             warnings.simplefilter("ignore", RuntimeWarning)
-            frame = self.results.get_influence().summary_frame()
+            frame = self._influence_columns()
         if round_off_only(self.results.resid.to_numpy(), self.y):
             # 0/0: residuals and their scale are both round-off, their ratio is noise (up to 1e136)
             frame["student_resid"] = np.nan
@@ -391,6 +394,19 @@ class SurrogateFit:
             "cooks_d": frame["cooks_d"].to_numpy(),
         })
         return out
+
+    def _influence_columns(self) -> pd.DataFrame:
+        """statsmodels' externally studentised residuals, leverage and Cook's distance.  Its studentised
+        residuals refit without each run (n fits of n runs); above :data:`LOO_REFIT_MAX_RUNS` runs the
+        scale without run i comes from the identity s_(i)^2 = (SSE - e_i^2 / (1 - h_i)) / (n - rank - 1)
+        instead (equal to round-off), so that a large table costs one fit."""
+        influence = self.results.get_influence()
+        if self.n_runs <= LOO_REFIT_MAX_RUNS:
+            return influence.summary_frame()
+        e, h = self.results.resid.to_numpy(), influence.hat_matrix_diag
+        scale_without = (float(np.sum(e ** 2)) - e ** 2 / (1.0 - h)) / (self.results.df_resid - 1)
+        return pd.DataFrame({"student_resid": influence.get_resid_studentized_external(sigma=np.sqrt(scale_without)),
+                             "hat_diag": h, "cooks_d": influence.cooks_distance[0]})
 
     def diagnostics(self) -> Diagnostics:
         from scipy import stats

@@ -105,6 +105,116 @@ def test_separating_runs_do_not_flip_to_the_mirror_point_on_round_off():
         assert np.array_equal(separating_runs(nudged, quadratic_terms(2), members, alpha), reference)
 
 
+def _separating_runs_by_scan(coded, base_terms, members, alpha):
+    """The greedy choice computed directly: for every candidate, the members' residual block of the design
+    with that run added, from its own SVD and eigenvalues; a scan in candidate order keeps the best."""
+    from itertools import product
+
+    def criterion(x):
+        q, s, _ = np.linalg.svd(model_matrix(x, base_terms), full_matrices=False)
+        q = q[:, s > s[0] * 1e-10]
+        cols = model_matrix(x, members)
+        resid = cols - q @ (q.T @ cols)
+        ev = np.linalg.eigvalsh(resid.T @ resid)
+        keep = ev > max(float(np.sum(cols * cols)), 1e-300) * 1e-12
+        return int(keep.sum()), float(np.sum(np.log(ev[keep]))) if keep.any() else -np.inf
+
+    levels = sorted({-alpha, -1.0, -0.5, 0.0, 0.5, 1.0, alpha})
+    cands = np.array(list(product(levels, repeat=coded.shape[1])))
+    current, chosen = np.round(np.asarray(coded, dtype=float), 12), []
+    rank = criterion(current)[0]
+    while rank < len(members) and len(chosen) < len(members):
+        best, best_key = None, (rank, -np.inf)
+        for c in cands:
+            key = criterion(np.vstack([current, c]))
+            if key[0] > best_key[0] or (key[0] == best_key[0] and key[1] > best_key[1] + 1e-4):
+                best, best_key = c, key
+        if best is None or best_key[0] <= rank:
+            break
+        chosen.append(best)
+        current, rank = np.vstack([current, best]), best_key[0]
+    return np.array(chosen).reshape(-1, coded.shape[1])
+
+
+@pytest.mark.parametrize("case", ["ccd2", "face2", "ccd3", "factorial_with_centre", "few_runs"])
+def test_separating_runs_match_a_scan_of_every_candidate(case):
+    """The one-SVD-per-step update chooses the same runs as refitting the design with each candidate added
+    (including a base model the runs cannot estimate: a two-level factorial with centre runs)."""
+    from demid.design import ccd_points, cubic_terms
+
+    rng = np.random.default_rng(3)
+    if case == "ccd2":
+        coded, alpha = ccd_points(2, 2 ** 0.5, 5), 2 ** 0.5
+    elif case == "face2":
+        coded, alpha = ccd_points(2, 1.0, 3), 1.0
+    elif case == "ccd3":
+        coded, alpha = ccd_points(3, 8 ** 0.25, 6), 8 ** 0.25
+    elif case == "factorial_with_centre":  # squares not estimable: rank-deficient base
+        coded, alpha = np.array([[-1, -1], [1, -1], [-1, 1], [1, 1], [0, 0], [0, 0]], dtype=float), 1.5
+    else:
+        coded, alpha = rng.uniform(-1, 1, (7, 2)), 1.3
+    k = coded.shape[1]
+    base = quadratic_terms(k)
+    for members in (cubic_terms(k)[:2], cubic_terms(k)[-3:], cubic_terms(k)[:k + 1], cubic_terms(k)):
+        expected = _separating_runs_by_scan(coded, base, members, alpha)
+        assert np.array_equal(separating_runs(coded, base, members, alpha), expected)
+
+
+@pytest.mark.parametrize("seed, k, drift", [(0, 2, False), (1, 3, False), (2, 2, True)])
+def test_slip_ratios_match_a_refit_without_each_run(seed, k, drift):
+    """The factor-level statistic from the leave-one-out identities equals refitting without each run
+    (pseudo-inverse of the other runs' cross-products), for the observed and bootstrap columns."""
+    from demid.criticism.catalogue import _moved_rows, _slip_ratios, slip_candidates
+    from demid.criticism.level1 import _prepare
+    from demid.criticism.models import _Model, _Spec
+    from demid.design import LEVERAGE_UNPREDICTABLE
+
+    table, _ = ccd_table(seed, k)
+    data, _ = _prepare(table, FACTORS[k], "y", None, ())
+    model = _Model(data, _Spec(drift=drift))
+    cands = slip_candidates(data, model)
+    rng = np.random.default_rng(seed)
+    y = np.column_stack([model.z, model.fitted_z[:, None] + rng.standard_normal((len(model.z), 40))])
+    x, rows = model.x, _moved_rows(model, cands)
+    sse0 = np.sum((y - x @ np.linalg.lstsq(x, y, rcond=None)[0]) ** 2, axis=0)
+    pos_of = {int(r): i for i, r in enumerate(np.flatnonzero(model.keep))}
+    expected = np.zeros(y.shape[1])
+    for i in sorted({pos_of[c.row] for c in cands}):
+        if model.hat[i] >= LEVERAGE_UNPREDICTABLE:
+            continue
+        others = np.arange(len(y)) != i
+        a = np.linalg.pinv(x[others].T @ x[others])
+        beta = a @ (x[others].T @ y[others])
+        sse_without = np.sum((y[others] - x[others] @ beta) ** 2, axis=0)
+        for kk in [j for j, c in enumerate(cands) if pos_of[c.row] == i]:
+            r = rows[kk]
+            moved = sse_without + (y[i] - r @ beta) ** 2 / (1 + r @ a @ r)
+            expected = np.maximum(expected, sse0 / moved)
+    ratio, best = _slip_ratios(model, cands, y)
+    np.testing.assert_allclose(ratio, expected, rtol=1e-8)
+    assert len(cands) > 10 and ratio.max() > 1
+
+
+def test_separating_runs_rank_one_step_equals_a_fresh_design():
+    """After a run joins the design, the per-candidate leverage, prediction errors and residual block from
+    the rank-one updates equal those computed afresh from the enlarged design."""
+    from demid.criticism.aliasing import _candidate_points, _OneMoreRun
+    from demid.design import ccd_points, cubic_terms
+
+    for coded, alpha in [(ccd_points(2, 1.0, 3), 1.0), (ccd_points(3, 8 ** 0.25, 6), 8 ** 0.25)]:
+        k = coded.shape[1]
+        base, members = quadratic_terms(k), cubic_terms(k)
+        cands = _candidate_points(k, alpha)
+        cand_base, cand_members = model_matrix(cands, base), model_matrix(cands, members)
+        state = _OneMoreRun.of(coded, base, members, cand_base, cand_members)
+        for index in (5, len(cands) - 1):
+            state = state.with_run(index, cands[index], base, members)
+            fresh = _OneMoreRun.of(state.coded, base, members, cand_base, cand_members)
+            np.testing.assert_allclose(state.leverage, fresh.leverage, atol=1e-10)
+            np.testing.assert_allclose(state.error, fresh.error, atol=1e-10)
+            np.testing.assert_allclose(state.current, fresh.current, atol=1e-10)
+
+
 # --------------------------------------------------------------------------- statistics vs statsmodels
 def test_catalogue_statistics_match_statsmodels():
     table, _ = ccd_table(7, 2, "term", 3.0, term="gamma^3")

@@ -462,3 +462,33 @@ def test_a_corner_step_and_a_three_factor_interaction_are_not_told_apart_by_name
     result = criticize(cubic, factors, "y", n_null=499)
     assert result.findings and result.findings[0].cause == "missing_term"
     assert planted.term in result.findings[0].aliases
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_large_table_worst_deletion_of_unequal_scatter_equals_every_deletion(seed):
+    """Above LOO_REFIT_MAX_RUNS runs only the runs ranked weakest by the fixed-covariate identity are
+    refitted: the run and p found equal those of refitting without every run, for the fitted-value and the
+    factor covariates (scatter growing with the response, one wild run at a corner)."""
+    from demid.criticism.catalogue import _Round
+    from demid.criticism.level1 import _prepare
+    from demid.criticism.models import _Model, _Spec
+    from demid.criticism.one_run import deleted_logp, worst_deletion
+    from demid.surrogate import LOO_REFIT_MAX_RUNS
+
+    rng = np.random.default_rng(seed)
+    n = LOO_REFIT_MAX_RUNS + 60
+    x = rng.uniform(-1, 1, (n, 2))
+    mean = 10 + 2 * x[:, 0] - x[:, 1] + 0.5 * x[:, 0] * x[:, 1]
+    y = mean + 0.05 * np.exp(0.8 * x[:, 0]) * rng.standard_normal(n)
+    y[np.argmax(x[:, 0] + x[:, 1])] += 1.0
+    table = pd.DataFrame({"run": np.arange(1, n + 1), FACTORS[2][0]: x[:, 0], FACTORS[2][1]: x[:, 1], "y": y})
+    data, _ = _prepare(table, FACTORS[2], "y", None, ())
+    model = _Model(data, _Spec())
+    hypotheses = [h for h in _Round(data, model, 99, np.random.default_rng(seed)).hypotheses
+                  if h.cause == "heteroscedasticity"]
+    assert {h.detail for h in hypotheses} >= {"fitted", FACTORS[2][0]}
+    for h in hypotheses:
+        every = deleted_logp(data, model, h, model.z[:, None])[:, 0]
+        worst = worst_deletion(data, model, h)
+        assert worst.row == int(np.flatnonzero(model.keep)[np.argmax(every)])
+        assert worst.p_without == pytest.approx(np.exp(every.max()), rel=1e-12)

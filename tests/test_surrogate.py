@@ -130,3 +130,24 @@ def test_failed_runs_are_dropped_from_that_response_only():
     assert fit_y.statistics().resid_std == pytest.approx(np.sqrt(ref_y.scale), rel=1e-9)
     assert fit_z.results.fittedvalues.to_numpy() == pytest.approx(ref_z.fittedvalues, rel=1e-9)
     assert fit_y.surrogate().coefficients == pytest.approx(ref_y.params, rel=1e-6, abs=1e-9)
+
+
+@pytest.mark.parametrize("n_runs", [150, 450])
+def test_influence_of_a_large_table_matches_statsmodels(n_runs):
+    """Above LOO_REFIT_MAX_RUNS runs the studentised residuals come from the leave-one-out identity instead of
+    statsmodels' refit without each run: the same numbers, to round-off (below it, statsmodels' own)."""
+    from demid.surrogate import LOO_REFIT_MAX_RUNS
+
+    rng = np.random.default_rng(n_runs)
+    x = rng.uniform(-1, 1, (n_runs, 2))
+    y = 5 + x[:, 0] - 2 * x[:, 1] + 0.5 * x[:, 0] ** 3 + 0.1 * rng.standard_normal(n_runs)
+    y[7] += 1.5  # one run far off: a large studentised residual
+    table = pd.DataFrame({"run": np.arange(1, n_runs + 1), "a": x[:, 0], "b": x[:, 1], "y": y})
+    fit = fit_response(table, ["a", "b"], "y")
+    reference = fit.results.get_influence().summary_frame()
+    frame = fit.influence()
+    assert (n_runs > LOO_REFIT_MAX_RUNS) == (n_runs == 450)
+    np.testing.assert_allclose(frame["student_resid"], reference["student_resid"], rtol=1e-10)
+    np.testing.assert_allclose(frame["leverage"], reference["hat_diag"], rtol=1e-12)
+    np.testing.assert_allclose(frame["cooks_d"], reference["cooks_d"], rtol=1e-10)
+    assert frame["student_resid"].abs().idxmax() == 7

@@ -481,12 +481,19 @@ def _slip_ratios(m: _Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[
     """Per column of y (n, B): max over candidates of SSE / SSE(run moved), and the arg max.
 
     Moving run i changes one row of the model matrix; with the fit without run i (beta_(i),
-    A = (X_(i)'X_(i))^-1), SSE(moved) = SSE_(i) + (y_i - x' beta_(i))^2 / (1 + x' A x').
+    A_(i) = (X_(i)'X_(i))^-1), SSE(moved) = SSE_(i) + (y_i - x' beta_(i))^2 / (1 + x' A_(i) x').
+    The fit without run i comes from the full fit (A = (X'X)^-1, beta, residuals e, leverage h_i) by
+    the leave-one-out identities A_(i) = A + A x_i x_i' A / (1 - h_i), beta_(i) = beta - A x_i e_i / (1 - h_i),
+    SSE_(i) = SSE - e_i^2 / (1 - h_i): one fit in all, not one per run (n fits of n runs: quadratic in
+    the number of runs).
     """
     x = m.x
     rows = _moved_rows(m, cands)
     pos_of = {int(r): i for i, r in enumerate(np.flatnonzero(m.keep))}
     q = _orth(x)
+    a = np.linalg.pinv(x.T @ x)
+    beta = a @ (x.T @ y)
+    resid = y - x @ beta
     sse0 = np.sum(_residualize(q, y) ** 2, axis=0)
     best = np.zeros(y.shape[1])
     arg = np.zeros(y.shape[1], dtype=int)
@@ -496,16 +503,13 @@ def _slip_ratios(m: _Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[
     for i, ks in by_run.items():
         if m.hat[i] >= LEVERAGE_UNPREDICTABLE:
             continue
-        others = np.ones(len(y), dtype=bool)
-        others[i] = False
-        a = np.linalg.pinv(x[others].T @ x[others])
-        beta = a @ (x[others].T @ y[others])
-        e_i = y[i] - x[i] @ beta
-        g_i = float(x[i] @ a @ x[i])
-        sse_without = np.maximum(sse0 - e_i ** 2 / (1.0 + g_i), 0.0)
+        ax = a @ x[i]
+        h_i = float(x[i] @ ax)
+        sse_without = np.maximum(sse0 - resid[i] ** 2 / (1.0 - h_i), 0.0)
         r = rows[ks]
-        g = np.einsum("kp,pq,kq->k", r, a, r)
-        e_moved = y[i][None, :] - r @ beta
+        rax = r @ ax
+        g = np.einsum("kp,pq,kq->k", r, a, r) + rax ** 2 / (1.0 - h_i)
+        e_moved = y[i][None, :] - r @ beta + np.outer(rax, resid[i] / (1.0 - h_i))
         sse_moved = sse_without[None, :] + e_moved ** 2 / (1.0 + g)[:, None]
         with np.errstate(divide="ignore", invalid="ignore"):
             ratio = sse0[None, :] / np.maximum(sse_moved, 1e-300 * np.maximum(sse0[None, :], 1e-300))

@@ -1,0 +1,186 @@
+"""Cost of one material job against the number of factors and the number of runs.
+
+Each case is a generated study: a smooth quadratic-plus-noise simulator (seeded) over ``k`` factors
+with three responses (two with targets, one to minimise on a Pareto front), two scenarios and a
+``pareto:`` entry.  Factor cases use a rotatable CCD from the project's own generator
+(:func:`demid.design_generation.generate_sheet`, as ``demid design`` writes it); run cases use a
+``custom`` design of uniformly random runs.  Each case runs the material job exactly as the
+``analyse_material`` rule does (:func:`demid.steps.material_step`, then every output written), in a
+fresh Python process so that imports count as they do under Snakemake, and the table shows its
+wall and CPU seconds (median of ``--reps``), the ratios to the previous row, and for the run cases
+the CPU milliseconds per added run (flat when the cost is linear in the runs).
+
+    python benchmarks/scaling.py --factors 2 3 4 5 6 --runs 13 100 1000 10000
+    python benchmarks/scaling.py --quick                # 2, 4, 6 factors; 13, 1000 runs; one rep
+    python benchmarks/scaling.py --one 6 ccd            # one case, JSON (used by the table; or --one 2 1000)
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[1]
+NOISE = 0.003  # relative noise of each simulated response
+
+
+def _names(k: int) -> list[str]:
+    return [f"x{i + 1}" for i in range(k)]
+
+
+def _simulator(k: int, seed: int):
+    """A smooth quadratic on the coded cube [-1, 1]^k: responses y1, y2 (with targets) and s."""
+    rng = np.random.default_rng(seed)
+
+    def quadratic(offset):
+        lin = rng.uniform(-1, 1, k)
+        quad = rng.uniform(-0.3, 0.3, k)
+        inter = np.triu(rng.uniform(-0.2, 0.2, (k, k)), 1)
+        return lambda u: offset + u @ lin + (u ** 2) @ quad + np.einsum("ni,ij,nj->n", u, inter, u)
+
+    return {"y1": quadratic(20.0), "y2": quadratic(15.0), "s": quadratic(10.0)}
+
+
+def write_study(folder: Path, k: int, runs: int | None, seed: int = 1) -> Path:
+    """The study's table and config in ``folder``; ``runs=None`` -> the CCD of ``k`` factors."""
+    from demid.design_generation import FactorRange, generate_sheet
+
+    names = _names(k)
+    factors = [FactorRange(n, 0.0, 1.0) for n in names]
+    if runs is None:
+        sheet = generate_sheet("ccd", factors, center_runs=max(k, 3), alpha="rotatable", seed=seed)
+        table = sheet.to_frame().drop(columns="std_order")
+        design = sheet.design_config()
+    else:
+        rng = np.random.default_rng(seed)
+        unit = np.round(rng.uniform(0, 1, (runs, k)), 6)
+        import pandas as pd
+
+        table = pd.DataFrame({"run": np.arange(1, runs + 1), **{n: unit[:, i] for i, n in enumerate(names)}})
+        design = {"type": "custom"}
+    coded = 2 * table[names].to_numpy() - 1  # bounds 0..1 are the outer levels in both cases
+    simulator = _simulator(k, seed)
+    rng = np.random.default_rng(seed + 1)
+    for response, f in simulator.items():
+        clean = f(coded)
+        table[response] = np.round(clean * (1 + NOISE * rng.standard_normal(len(clean))), 6)
+    table.to_csv(folder / "study.csv", index=False)
+    inside = rng.uniform(-0.3, 0.3, (1, k))  # targets at an interior point: the sets are not empty
+    targets = {r: float(f"{simulator[r](inside)[0]:.6g}") for r in ("y1", "y2")}
+    config = {
+        "results_dir": "results",
+        "materials": {"study": {
+            "data": "study.csv", "design": design,
+            "factors": {n: {"lower": 0.0, "upper": 1.0} for n in names},
+            "responses": {"y1": {"target": targets["y1"]}, "y2": {"target": targets["y2"]}, "s": {}},
+            "scenarios": {"y1_only": {"observables": ["y1"], "tolerance": 0.02},
+                          "both": {"observables": ["y1", "y2"], "tolerance": 0.02}},
+            "pareto": {"error_of": "y1", "minimise": "s", "max_error": 0.02},
+        }},
+    }
+    import yaml
+
+    path = folder / "config.yaml"
+    path.write_text(yaml.safe_dump(config, sort_keys=False))
+    return path
+
+
+def run_one(k: int, runs: int | None) -> dict:
+    """Generate the study, run its material job as the rule does, and return wall and CPU seconds."""
+    start_wall, start_cpu = time.perf_counter(), time.process_time()
+    from demid.config import load_config
+    from demid.io import save_figure, write_csv, write_json, write_parquet
+    from demid.spec import MaterialSpec
+    from demid.steps import material_step
+
+    with tempfile.TemporaryDirectory(prefix="demid-scaling-") as tmp:
+        folder = Path(tmp)
+        config_path = write_study(folder, k, runs)
+        os.chdir(folder)
+        setup_wall, setup_cpu = time.perf_counter() - start_wall, time.process_time() - start_cpu
+        config = load_config(config_path, base_dir=folder)
+        spec = MaterialSpec.from_config("study", config)
+        result = material_step(spec, folder / "study.csv", z=config["robust_z"], tolerances=config["sweep_tolerances"])
+        out = folder / "out"
+        out.mkdir()
+        for name, frame in result.parquet.items():
+            write_parquet(frame, out / f"{name}.parquet")
+        for name, frame in result.csv.items():
+            write_csv(frame, out / f"{name}.csv")
+        for name, document in result.json.items():
+            write_json(document, out / f"{name}.json")
+        for response, document in result.responses.items():
+            write_json(document, out / f"criticism_{response}.json")
+        for name, figure in result.figures.items():
+            save_figure(figure, out / f"{name}.png")
+        n_runs = len(result.parquet["table"])
+        os.chdir(REPO)
+    # the study's generation is not part of the job; imports are (Snakemake starts a fresh Python)
+    return {"factors": k, "runs": n_runs, "wall": time.perf_counter() - start_wall - setup_wall,
+            "cpu": time.process_time() - start_cpu - setup_cpu}
+
+
+def measure(k: int, runs: int | None, reps: int) -> dict:
+    args = [sys.executable, __file__, "--one", str(k), "ccd" if runs is None else str(runs)]
+    env = dict(os.environ, PYTHONPATH=str(REPO) + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    rows = []
+    for _ in range(reps):
+        done = subprocess.run(args, env=env, check=True, capture_output=True, text=True)
+        rows.append(json.loads(done.stdout.strip().splitlines()[-1]))
+    return {"factors": k, "runs": rows[0]["runs"], "wall": statistics.median(r["wall"] for r in rows),
+            "cpu": statistics.median(r["cpu"] for r in rows)}
+
+
+def _table(title: str, rows: list[dict], per: str) -> None:
+    print(f"\n{title}")
+    print(f"{'factors':>7} {'runs':>6} {'wall s':>8} {'cpu s':>8} {'wall ratio':>11} {'cpu ratio':>10}"
+          + (f" {'cpu ms per added run':>21}" if per == "runs" else ""))
+    previous = None
+    for row in rows:
+        ratio = ("" if previous is None else f"{row['wall'] / previous['wall']:.2f}",
+                 "" if previous is None else f"{row['cpu'] / previous['cpu']:.2f}")
+        extra = ""
+        if per == "runs" and previous is not None:  # the marginal cost: flat when the cost is linear in runs
+            extra = f" {1000 * (row['cpu'] - previous['cpu']) / (row['runs'] - previous['runs']):21.2f}"
+        print(f"{row['factors']:>7} {row['runs']:>6} {row['wall']:8.2f} {row['cpu']:8.2f} {ratio[0]:>11} "
+              f"{ratio[1]:>10}{extra}")
+        previous = row
+    print(f"(ratios: each row over the row above; {'per added factor' if per == 'factors' else 'per step in runs'})")
+
+
+def main(argv=None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--factors", type=int, nargs="*", default=[2, 3, 4, 5, 6],
+                        help="factor counts of the CCD studies")
+    parser.add_argument("--runs", type=int, nargs="*", default=[13, 100, 1000, 10000],
+                        help="run counts of the custom-design studies")
+    parser.add_argument("--run-factors", type=int, default=2, help="factors of the custom-design studies")
+    parser.add_argument("--reps", type=int, default=1, help="repeats per case (median shown)")
+    parser.add_argument("--quick", action="store_true", help="2, 4, 6 factors; 13 and 1000 runs; one repeat")
+    parser.add_argument("--one", nargs=2, metavar=("FACTORS", "RUNS"), help=argparse.SUPPRESS)
+    args = parser.parse_args(argv)
+    if args.one:
+        k, runs = int(args.one[0]), None if args.one[1] == "ccd" else int(args.one[1])
+        print(json.dumps(run_one(k, runs)))
+        return
+    if args.quick:
+        args.factors, args.runs, args.reps = [2, 4, 6], [13, 1000], 1
+    if args.factors:
+        _table("CCD studies (rotatable, max(k, 3) centre runs): one material job",
+               [measure(k, None, args.reps) for k in args.factors], "factors")
+    if args.runs:
+        _table(f"custom designs, {args.run_factors} factors: one material job",
+               [measure(args.run_factors, n, args.reps) for n in args.runs], "runs")
+
+
+if __name__ == "__main__":
+    main()
