@@ -97,3 +97,11 @@ def test_report_text_speaks_in_configured_labels():
             "key materials.m.responses.angle_of_repose.target, file mu_s.csv")
     assert labelled(text, spec) == ("the closest point (μ_s=0.9, e=0.5) misses (θ under-predicted); "
                                     "key materials.m.responses.angle_of_repose.target, file mu_s.csv")
+
+
+def test_names_read_in_config_then_natural_order():
+    from demid.report.summary import in_order, natural_key
+
+    assert sorted(["d10", "d15", "d5"], key=natural_key) == ["d5", "d10", "d15"]
+    as_read = {"d10": 2, "d15": 3, "d5": 1, "x": 0}  # a JSON file's sorted keys
+    assert [k for k, _ in in_order(as_read, ["x"])] == ["x", "d5", "d10", "d15"]

@@ -201,7 +201,7 @@ class ReportSections:
         from ..sampling.residuals import PLAUSIBLE_DEFINITION
         from ..spec import MaterialSpec
         from ..story import StudyAdvice, verdict_display
-        from .summary import VERDICT_TEXT, combination_lines, criticism_lines
+        from .summary import VERDICT_TEXT, combination_lines, criticism_lines, in_order
 
         parts = [self._md("## Summary\n\nPer factor and observable scenario the **plausible interval** is judged; "
                           "the strict interval (Table 3: the set if surrogate and measurements were exact) stands "
@@ -219,7 +219,7 @@ class ReportSections:
             verdicts = (verdicts_all[verdicts_all["material"] == m] if verdicts_all is not None
                         else pd.DataFrame(columns=["scenario", "factor", "verdict"]))
             lines += self._recommended_lines(spec, unc.get("recommended"), verdicts, level2)
-            for o, why in (unc.get("uninformative") or {}).items():
+            for o, why in in_order(unc.get("uninformative") or {}, spec.response_names):
                 lines.append(f"{spec.response_labels.get(o, o)} is an **uninformative observable**: {why}.")
             if len(verdicts):
                 lines += ["", markdown_table(verdict_display(verdicts, spec), 3)]
@@ -401,8 +401,10 @@ class ReportSections:
         """Per response: does the refit reproduce the statistics the source published?"""
         if not checks:
             return []
+        from .summary import in_order
+
         lines = ["**Transcription check** against the statistics the source published:"]
-        for response, res in checks.items():
+        for response, res in in_order(checks):
             stats = ", ".join(f"{k} {res['printed'].get(k, res['published'][k])} → "
                               f"{_fmt(res['reproduced'][k])}{'' if res['agrees'][k] else ' ✗'}"
                               for k in res["published"])
@@ -430,10 +432,10 @@ class ReportSections:
                  "run-order drift, non-constant variance) with family-wise error control; a finding is kept only "
                  "with its extension and the measured gain (leave-one-out RMSE, AICc)."]
         from ..spec import MaterialSpec
-        from .summary import VERDICT_WORDS, labelled, unreliable_surrogate_lines, verdict_sentence
+        from .summary import VERDICT_WORDS, in_order, labelled, unreliable_surrogate_lines, verdict_sentence
 
         spec = MaterialSpec.from_material(m, self.config["materials"][m])
-        for response, res in info["level1"].items():
+        for response, res in in_order(info["level1"], spec.response_names):
             name = spec.response_labels.get(response, response)
             if res.get("verdict_message"):
                 lines += [f"- {name} — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
@@ -461,13 +463,13 @@ class ReportSections:
             lines += ["", "**Level 2 — calibrated simulation against the experiment.** "
                       + " ".join([labelled(level2.get("finding") or level2["message"], spec), *advice])]
         for pos in info.get("reference_point") or []:
-            errs = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in pos["errors"].items())
+            errs = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in in_order(pos["errors"]))
             if pos["inside"]:
                 where = "lies inside the admissible set"
             elif pos["nearest_admissible"] is None:
                 where = "cannot lie in it: the admissible set is empty"
             else:
-                near = ", ".join(f"{f}={v:.4g}" for f, v in pos["nearest_admissible"].items())
+                near = ", ".join(f"{f}={v:.4g}" for f, v in in_order(pos["nearest_admissible"]))
                 where = (f"lies outside it, {pos['distance_pct_of_range']:.1f} % of the search range from the "
                          f"nearest admissible point ({near})")
             lines.append(f"- Reference point vs scenario *{pos['scenario']}*: it {where} (errors {errs}).")

@@ -85,6 +85,21 @@ VERDICT_WORDS = {"adequate": "adequate (within the tests' power)", "defect": "de
                  "ambiguous": "ambiguous cause"}
 
 
+def natural_key(name: str) -> list:
+    """Sort key that reads digits as numbers: d5, d10, d15 (not d10, d15, d5)."""
+    import re
+
+    return [int(part) if part.isdigit() else part for part in re.split(r"(\d+)", str(name))]
+
+
+def in_order(mapping: dict, names=()) -> list[tuple]:
+    """``mapping``'s items in the order of ``names`` (the config's), then any other key in natural order:
+    JSON read back has its keys sorted as text, which puts d10 before d5."""
+    known = [n for n in names if n in mapping]
+    rest = sorted((k for k in mapping if k not in set(known)), key=natural_key)
+    return [(k, mapping[k]) for k in known + rest]
+
+
 def labelled(text: str, spec) -> str:
     """``text`` with every factor and response key that stands as a word (``mu_s=0.9``, ``angle_of_repose
     under-predicted``) written as its configured label; keys inside a config path (``responses.d5.target``)
@@ -111,7 +126,7 @@ def verdict_sentence(response: str, res: dict) -> str:
 
 def unpredictive_responses(info: dict) -> list[str]:
     """Responses whose surrogate does not predict left-out runs (verdict ``does_not_predict``)."""
-    return [r for r, res in (info.get("level1") or {}).items() if res.get("verdict") == "does_not_predict"]
+    return [r for r, res in in_order(info.get("level1") or {}) if res.get("verdict") == "does_not_predict"]
 
 
 def unreliable_surrogate_lines(info: dict, spec) -> list[str]:
