@@ -3,6 +3,7 @@ import sys
 from pathlib import Path
 
 from demid.config import check_semantics, load_yaml, validate_schema
+from demid.io import copy_files
 from demid.data import refuse_likely_typos, validate_material
 from demid.errors import InputError
 from demid.next_wave import check_next_runs
