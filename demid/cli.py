@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 from .errors import InputError
+from .out_path import check_out_path
 
 
 def _split(text: str) -> list[str]:
@@ -130,10 +131,19 @@ def _require_estimable(table, factors, response, coding, source):
     require_estimable(coded, np.isfinite(table[response].to_numpy(dtype=float)), None, source, response, factors)
 
 
+def _check_out(args, is_own) -> None:
+    """``--out`` checked before any work: not the command's input, not a folder or device, and an existing
+    file replaced only when the command wrote it (or with --force)."""
+    check_out_path(args.out, "--out", [getattr(args, "data", None)], force=args.force, is_own=is_own)
+
+
 def cmd_fit(args) -> int:
     from .io import write_json
     from .surrogate import fit_response
 
+    from .out_path import is_fit_json
+
+    _check_out(args, is_fit_json)
     factors, responses = _split(args.factors), _split(args.responses)
     table = _load_table(args.data, factors, responses)
     alpha = _alpha(table, factors, args.alpha, args.design)
@@ -208,6 +218,9 @@ def cmd_criticize(args) -> int:
     from .io import write_json
     from .surrogate import fit_response
 
+    from .out_path import is_criticism_json
+
+    _check_out(args, is_criticism_json)
     factors = _split(args.factors)
     _one_response(args.response, "criticize")
     table = _load_table(args.data, factors, [args.response])
@@ -259,6 +272,9 @@ def cmd_check_transcription(args) -> int:
 
     from .data import read_printed
 
+    from .out_path import is_transcription_json
+
+    _check_out(args, is_transcription_json)
     factors = _split(args.factors)
     _one_response(args.response, "check-transcription")
     table = _load_table(args.data, factors, [args.response])
@@ -274,7 +290,12 @@ def cmd_design(args) -> int:
     from .design_generation import fragment_yaml, generate_sheet, parse_factor
     from .io import atomic_path, write_csv
 
+    from .out_path import is_config_fragment, is_unfilled_run_sheet
+
     _check_design_arguments(args)
+    _check_out(args, is_unfilled_run_sheet)
+    if args.config_out:
+        check_out_path(args.config_out, "--config-out", force=args.force, is_own=is_config_fragment)
     sheet = generate_sheet(args.type, [parse_factor(f) for f in args.factor], center_runs=args.center_runs,
                            alpha=args.alpha or "rotatable", seed=args.seed)
     frame = sheet.to_frame()
@@ -341,6 +362,12 @@ def _table_arguments(p: argparse.ArgumentParser, response_flag: str, response_he
     p.add_argument("--design", default="ccd", choices=["ccd", "box_behnken", "factorial", "custom"],
                    help="design family: sets the coding (axial points only in a ccd)")
     p.add_argument("--out", required=True, help="JSON file to write")
+    _force_argument(p)
+
+
+def _force_argument(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--force", action="store_true",
+                   help="replace an existing file at --out that this command did not write (never an input)")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -393,6 +420,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", required=True, metavar="FILE.csv", help="run sheet to write")
     p.add_argument("--config-out", metavar="FILE.yaml",
                    help="also write the config fragment declaring this design (data path = --out)")
+    _force_argument(p)
     p.set_defaults(func=cmd_design)
     p.error = _one_line_error
     return parser
