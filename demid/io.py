@@ -157,3 +157,19 @@ def copy_files(pairs: dict, log: Path | str) -> None:
         lines.append(f"{source} -> {destination}\n")
     Path(log).parent.mkdir(parents=True, exist_ok=True)
     Path(log).write_text("".join(lines), encoding="utf-8")
+
+
+def content_digest(path: Path | str) -> str:
+    """sha256 of a file's bytes ("" when there is no such file).  Rules carry it as a parameter, so that
+    an input edited at any time, even while its job runs, is seen by the next run (an edit during the
+    job leaves the file older than the outputs, which a comparison of times misses)."""
+    import hashlib
+
+    path = Path(path)
+    if not path.is_file():
+        return ""
+    digest = hashlib.sha256()
+    with open(path, "rb") as fh:
+        for block in iter(lambda: fh.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()

@@ -71,7 +71,8 @@ def is_config_fragment(path: Path) -> bool:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError):
         return False
-    return text.startswith(FRAGMENT_HEADER) and "target:" not in text and "scenarios:" not in text
+    body = "\n".join(ln for ln in text.splitlines() if not ln.lstrip().startswith("#"))
+    return text.startswith(FRAGMENT_HEADER) and "target:" not in body and "scenarios:" not in body
 
 
 def check_out_path(out: str, option: str, inputs=(), *, force: bool = False, is_own=None) -> None:

@@ -3,7 +3,7 @@ import sys
 from pathlib import Path
 
 from demid.config import check_semantics, load_yaml, validate_schema
-from demid.io import copy_files
+from demid.io import content_digest, copy_files
 from demid.data import refuse_likely_typos, validate_material
 from demid.errors import InputError
 from demid.next_wave import check_next_runs
@@ -68,7 +68,14 @@ def material_spec(wildcards):
 
 
 def material_spec_digest(wildcards):
-    return SPECS[wildcards.material].digest
+    """The material's settings and the content of its table: either edited (even while the job runs)
+    reruns the job."""
+    return SPECS[wildcards.material].digest + ":" + content_digest(material_data(wildcards))
+
+
+def published_digest(wildcards=None):
+    """The content of the published-values file ("" without one): an edit reruns what reads it."""
+    return content_digest(config["published"]) if config.get("published") else ""
 
 
 def material_data(wildcards):

@@ -12,6 +12,7 @@ rule summary_tables:
         pareto_materials=pareto_materials(),
         pareto_factors={m: [(f.name, f.unit) for f in SPECS[m].factors] for m in pareto_materials()},
         next_wave=next_wave_columns(),
+        published_digest=published_digest,  # the published file's content (a rerun after an edit)
     resources:
         mem_mb=1000,
     conda:

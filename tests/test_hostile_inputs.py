@@ -1,0 +1,346 @@
+"""Inputs from a hostile or careless collaborator: labels holding markup and script, a results folder
+holding a shell command and a space, templated configs, ``--out`` onto the data, and an edit of a table
+while its job ran.  Nothing from a config runs, no user file is replaced, no edit goes unseen."""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+from html.parser import HTMLParser
+from pathlib import Path
+
+import pytest
+import yaml
+
+from .workflow_helpers import REPO, planned_jobs, run_snakemake
+
+MARK = "PWNED"
+SCRIPT = f"<script>document.title='{MARK}'</script>"
+IMAGE = f"<img src=x onerror=\"document.title='{MARK}'\">"
+MD_LINK = f"[see](javascript:document.title='{MARK}')"
+HTML_LINK = f"<a href=\"javascript:document.title='{MARK}'\">y</a>"
+SVG = f"<svg onload=\"document.title='{MARK}'\"></svg>"
+SHELL_DIR = f"out dir $(touch {MARK}_FILE)"
+
+
+# --------------------------------------------------------------------------- the sanitiser itself
+class _Collect(HTMLParser):
+    """Every start tag with its attributes, and the text inside <script> elements."""
+
+    def __init__(self):
+        super().__init__()
+        self.tags: list[tuple[str, dict]] = []
+        self.scripts: list[str] = []
+        self._in_script = False
+
+    def handle_starttag(self, tag, attrs):
+        self.tags.append((tag, dict(attrs)))
+        self._in_script = tag == "script"
+
+    def handle_endtag(self, tag):
+        self._in_script = False
+
+    def handle_data(self, data):
+        if self._in_script:
+            self.scripts.append(data)
+
+
+def _live_payloads(html: str) -> list[str]:
+    """What of the payloads would run in ``html``: a script holding the mark, an event handler or
+    ``javascript:`` address anywhere, an ``svg`` or an image that is not inline PNG data."""
+    found = _Collect()
+    found.feed(html)
+    live = [f"script: {s[:60]}" for s in found.scripts if MARK in s]
+    for tag, attrs in found.tags:
+        for name, value in attrs.items():
+            value = value or ""
+            if name.startswith("on") and MARK in value:
+                live.append(f"{tag} {name}={value[:60]}")
+            if name in ("href", "src", "action", "formaction") and value.strip().lower().startswith("javascript:"):
+                live.append(f"{tag} {name}={value[:60]}")
+        if tag == "img" and not (attrs.get("src") or "").startswith("data:image/png;base64,"):
+            live.append(f"img src={attrs.get('src')}")
+        if tag == "svg" and any(n.startswith("on") for n in attrs):
+            live.append("svg with a handler")
+    return live
+
+
+@pytest.mark.parametrize("payload", [SCRIPT, IMAGE, MD_LINK, HTML_LINK, SVG,
+                                     "<IMG SRC=\"javascript:alert('PWNED')\">", "<iframe src=javascript:PWNED>",
+                                     "<a href=\" JaVaScRiPt:PWNED\">x</a>", "<<script>PWNED</script>",
+                                     "`code` <script>PWNED</script> `", "<style>body{background:url(PWNED)}</style>"])
+def test_report_text_holding_markup_is_shown_not_run(payload):
+    from demid.report.safe_html import markdown_html
+
+    html = markdown_html(f"## Material {payload}\n\nThe factor {payload} in unit {payload}.\n\n| a | b |\n|---|---|\n"
+                         f"| {payload} | 1 |")
+    assert _live_payloads(html) == []
+    assert "<script" not in html.lower() and "<iframe" not in html.lower() and "<style" not in html.lower()
+    # shown as text (a link keeps its words, without the address)
+    assert MARK in html or payload.startswith(("[", "<a "))
+
+
+def test_the_collector_sees_live_payloads():
+    """The check above can fail: unsanitised Markdown keeps every payload live."""
+    from nbconvert.filters.markdown_mistune import markdown2html_mistune
+
+    raw = markdown2html_mistune(f"{SCRIPT} {IMAGE} {MD_LINK}")
+    assert len(_live_payloads(raw)) >= 3
+
+
+def test_links_only_to_http_addresses_and_figures_only_as_png():
+    from demid.report.safe_html import markdown_html, sanitize
+
+    html = markdown_html("[a](https://example.org/x) [b](http://example.org) [c](file:///etc/passwd) "
+                         "[d](data:text/html,x) [e](vbscript:x) [f](ftp://x)")
+    found = _Collect()
+    found.feed(html)
+    hrefs = [attrs.get("href") for tag, attrs in found.tags if tag == "a"]
+    assert [h for h in hrefs if h] == ["https://example.org/x", "http://example.org"]
+    figure = sanitize('<figure><img src="data:image/png;base64,iVBORw0KGgo=" alt="x" onerror="PWNED">'
+                      '<img src="data:text/html;base64,PHNjcmlwdD4="></figure>', figure=True)
+    assert figure.count('src="data:image/png;base64,iVBORw0KGgo="') == 1 and "onerror" not in figure
+    assert "data:text/html" not in figure.replace("&lt;", "<").split("<img", 2)[-1].split(">")[0] or \
+        'src="data:text/html' not in figure
+
+
+# --------------------------------------------------------------------------- a whole study of hostile labels
+def _write_study(root: Path) -> dict:
+    from .helpers import make_ccd_table
+
+    def responses(x):
+        a, b = x[:, 0], x[:, 1]
+        return {"y1": 100 + 20 * a - 2 * b + 10 * a**2 + 0.5 * a * b, "y2": 80 + 5 * a + 3 * b - 0.1 * b**2}
+
+    table = make_ccd_table(responses, [0.1, 1.0], [0.9, 11.0], noise=0.3, seed=3, decimals=3)
+    (root / "data").mkdir()
+    table.rename(columns={"x1": "a", "x2": "b"}).to_csv(root / "data" / "m.csv", index=False)
+    config = {
+        "results_dir": SHELL_DIR, "grid_points": 101,
+        "materials": {"m": {
+            "data": "data/m.csv", "label": f"Mortar {SCRIPT}", "paper_figure": "fig6",
+            "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+            "factors": {"a": {"lower": 0.1, "upper": 0.9, "label": f"friction {IMAGE}", "unit": MD_LINK},
+                        "b": {"lower": 1.0, "upper": 11.0, "label": f"energy {HTML_LINK}", "unit": SVG}},
+            "responses": {"y1": {"target": 115, "label": f"angle {SCRIPT}", "unit": IMAGE},
+                          "y2": {"target": 95, "label": f"flow {MD_LINK}", "unit": HTML_LINK}},
+            "scenarios": {"y1_only": {"observables": ["y1"], "tolerance": 0.02, "label": f"one {IMAGE}"},
+                          "both": {"observables": ["y1", "y2"], "tolerance": 0.02, "label": f"both {SCRIPT}"}},
+        }},
+    }
+    (root / "study.yaml").write_text(yaml.safe_dump(config, allow_unicode=True), encoding="utf-8")
+    return config
+
+
+@pytest.fixture(scope="module")
+def hostile_study(tmp_path_factory) -> Path:
+    root = tmp_path_factory.mktemp("hostile")
+    _write_study(root)
+    result = run_snakemake(root, root / "study.yaml", timeout=900)
+    assert result.returncode == 0, result.stderr[-3000:]
+    return root
+
+
+@pytest.mark.workflow
+def test_a_results_folder_holding_a_command_and_a_space_runs_nothing(hostile_study):
+    results = hostile_study / SHELL_DIR
+    assert (results / "figures" / "fig6_m.png").read_bytes() == (results / "figures" / "sets_m.png").read_bytes()
+    assert (results / "figures" / "fig6_m.svg").is_file()
+    assert not list(hostile_study.rglob(f"{MARK}_FILE")) and not (REPO / f"{MARK}_FILE").exists()
+
+
+@pytest.mark.workflow
+def test_report_of_hostile_labels_runs_nothing(hostile_study):
+    html = (hostile_study / SHELL_DIR / "report" / "report.html").read_text(encoding="utf-8")
+    assert _live_payloads(html) == []
+    assert html.count(MARK) >= 10  # the labels are there, as text
+
+
+@pytest.mark.workflow
+def test_report_of_hostile_labels_in_chromium(hostile_study, tmp_path):
+    from .test_report_browser import _browser, _chromium
+
+    browser = _browser()
+    if browser is None:
+        pytest.skip("no Chromium on this machine (install it with: apt-get install -y chromium)")
+    report = hostile_study / SHELL_DIR / "report" / "report.html"
+    dom = _chromium(browser, tmp_path, "--dump-dom", report.as_uri())
+    assert "<title>" in dom.stdout, dom.stderr[-2000:]
+    title = dom.stdout.split("<title>", 1)[1].split("</title>", 1)[0]
+    assert MARK not in title
+    # the same page with one live payload added does change the title: the check can fail
+    live = tmp_path / "live.html"
+    live.write_text(report.read_text(encoding="utf-8").replace("</body>", SCRIPT + "</body>"), encoding="utf-8")
+    dom = _chromium(browser, tmp_path, "--dump-dom", live.as_uri())
+    assert MARK in dom.stdout.split("<title>", 1)[1].split("</title>", 1)[0]
+
+
+@pytest.mark.workflow
+def test_a_table_edited_while_its_job_ran_is_rerun(hostile_study):
+    """The edit leaves the table older than the outputs (as an edit during the job does): the next dry run
+    plans the material's job again, because the rule carries the table's content digest."""
+    data = hostile_study / "data" / "m.csv"
+    before = os.stat(data)
+    unchanged = run_snakemake(hostile_study, hostile_study / "study.yaml", "-n")
+    assert "analyse_material" not in planned_jobs(unchanged.stdout), unchanged.stdout[-2000:]
+    text = data.read_text(encoding="utf-8").splitlines()
+    header, first = text[0].split(","), text[1].split(",")
+    column = header.index("y1")
+    first[column] = f"{float(first[column]) + 0.5:.3f}"
+    data.write_text("\n".join([text[0], ",".join(first), *text[2:]]) + "\n", encoding="utf-8")
+    os.utime(data, ns=(before.st_atime_ns, before.st_mtime_ns))  # as old as before the run
+    edited = run_snakemake(hostile_study, hostile_study / "study.yaml", "-n")
+    assert planned_jobs(edited.stdout).get("analyse_material") == 1, edited.stdout[-2000:]
+
+
+# --------------------------------------------------------------------------- configs that would run code
+YTE_CONFIG = f"""__use_yte__: true
+results_dir: ?__import__("pathlib").Path("{MARK}_YTE").touch() or "results"
+materials: {{}}
+"""
+
+
+def _snakemake(workdir: Path, *args: str) -> subprocess.CompletedProcess:
+    cmd = [sys.executable, "-m", "snakemake", "-n", "-c1", "-s", str(REPO / "Snakefile"), "--directory",
+           str(workdir), *args]
+    env = dict(os.environ, PYTHONWARNINGS="ignore")
+    return subprocess.run(cmd, cwd=workdir, capture_output=True, text=True, timeout=300, env=env)
+
+
+@pytest.mark.parametrize("how", ["configfile", "study folder"])
+def test_a_templated_config_is_refused_before_it_runs(tmp_path, how):
+    (tmp_path / "config.yaml").write_text(YTE_CONFIG.replace(MARK, str(tmp_path / MARK)), encoding="utf-8")
+    args = ["--configfile", str(tmp_path / "config.yaml")] if how == "configfile" else []
+    result = _snakemake(tmp_path, *args)
+    assert result.returncode != 0
+    assert not (tmp_path / f"{MARK}_YTE").exists(), "the template's expression ran"
+    lines = [ln for ln in result.stderr.splitlines() if ln.startswith("demid: error:")]
+    assert len(lines) == 1 and "__use_yte__" in lines[0] and "config.yaml" in lines[0], result.stderr[-2000:]
+
+
+def test_an_unknown_top_level_key_is_named_before_loading(tmp_path):
+    (tmp_path / "config.yaml").write_text("results_dri: out\nmaterials: {}\n", encoding="utf-8")
+    result = _snakemake(tmp_path, "--configfile", str(tmp_path / "config.yaml"))
+    assert result.returncode != 0
+    assert "demid: error:" in result.stderr and "results_dri" in result.stderr and "results_dir" in result.stderr
+
+
+def test_a_config_not_in_utf8_is_one_line(tmp_path):
+    (tmp_path / "config.yaml").write_bytes("results_dir: caf\u00e9\nmaterials: {}\n".encode("latin-1"))
+    result = _snakemake(tmp_path, "--configfile", str(tmp_path / "config.yaml"))
+    assert result.returncode != 0
+    assert "Traceback" not in result.stderr
+    assert any(ln.startswith("demid: error:") and "UTF-8" in ln for ln in result.stderr.splitlines())
+
+
+def test_command_line_configfiles_are_found():
+    from demid.config_text import configfiles_on_command_line
+
+    argv = ["-n", "--configfile", "a.yaml", "b.yaml", "-c1", "--configfiles=c.yaml", "target", "--configfile", "d"]
+    assert configfiles_on_command_line(argv) == ["a.yaml", "b.yaml", "c.yaml", "d"]
+
+
+def test_no_rule_runs_a_shell():
+    for rules in [REPO / "Snakefile", *sorted((REPO / "workflow" / "rules").glob("*.smk"))]:
+        code = [ln.split("#", 1)[0] for ln in rules.read_text(encoding="utf-8").splitlines()]
+        assert not any(re.match(r"\s*shell\s*:", ln) or "shell(" in ln for ln in code), rules.name
+
+
+# --------------------------------------------------------------------------- --out
+def _demid(cwd: Path, *args: str) -> subprocess.CompletedProcess:
+    env = dict(os.environ, PYTHONWARNINGS="ignore")
+    return subprocess.run([sys.executable, "-m", "demid", *args], capture_output=True, text=True, cwd=cwd, env=env)
+
+
+@pytest.fixture
+def table(tmp_path) -> Path:
+    from .helpers import make_ccd_table
+
+    frame = make_ccd_table(lambda x: {"y": 3 + x[:, 0] + 2 * x[:, 1] + x[:, 0] ** 2}, [0, 0], [1, 1], noise=0.05,
+                           seed=1, decimals=4)
+    path = tmp_path / "data.csv"
+    frame.to_csv(path, index=False)
+    return path
+
+
+COMMANDS = {
+    "fit": ["fit", "--factors", "x1,x2", "--responses", "y"],
+    "criticize": ["criticize", "--factors", "x1,x2", "--response", "y"],
+    "check-transcription": ["check-transcription", "--factors", "x1,x2", "--response", "y",
+                            "--published", "r2=0.99"],
+}
+
+
+@pytest.mark.parametrize("command", list(COMMANDS))
+def test_out_onto_the_input_is_refused(table, command):
+    before = table.read_bytes()
+    result = _demid(table.parent, *COMMANDS[command], "--data", str(table), "--out", str(table), "--force")
+    assert result.returncode == 2 and "input" in result.stderr and "Traceback" not in result.stderr
+    assert table.read_bytes() == before
+    link = table.parent / "link.csv"
+    link.symlink_to(table)
+    result = _demid(table.parent, *COMMANDS[command], "--data", str(link), "--out", "data.csv")
+    assert result.returncode == 2 and table.read_bytes() == before
+
+
+@pytest.mark.parametrize("command", list(COMMANDS))
+def test_out_onto_a_foreign_file_needs_force_and_own_output_is_replaced(table, command):
+    other = table.parent / "notes.json"
+    other.write_text('{"mine": 1}\n', encoding="utf-8")
+    result = _demid(table.parent, *COMMANDS[command], "--data", str(table), "--out", str(other))
+    assert result.returncode == 2 and "--force" in result.stderr, result.stderr
+    assert other.read_text(encoding="utf-8") == '{"mine": 1}\n'
+    out = table.parent / "out.json"
+    first = _demid(table.parent, *COMMANDS[command], "--data", str(table), "--out", str(out))
+    assert first.returncode == 0, first.stderr
+    again = _demid(table.parent, *COMMANDS[command], "--data", str(table), "--out", str(out))
+    assert again.returncode == 0, again.stderr  # its own output: replaced without --force
+    forced = _demid(table.parent, *COMMANDS[command], "--data", str(table), "--out", str(other), "--force")
+    assert forced.returncode == 0 and "mine" not in other.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("target", ["/dev/null", "folder", "fifo"])
+def test_out_onto_a_device_folder_or_pipe_is_refused(table, target):
+    if target == "folder":
+        (table.parent / "folder").mkdir()
+    elif target == "fifo":
+        os.mkfifo(table.parent / "fifo")
+    for command in COMMANDS:
+        result = _demid(table.parent, *COMMANDS[command], "--data", str(table), "--out", target, "--force")
+        assert result.returncode == 2 and "Traceback" not in result.stderr, result.stderr
+    result = _demid(table.parent, "design", "--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1",
+                    "--out", target, "--force")
+    assert result.returncode == 2, result.stderr
+    if target == "/dev/null":
+        assert Path("/dev/null").is_char_device()
+    else:
+        assert not (table.parent / target).is_file()
+
+
+def test_design_out_onto_a_filled_in_sheet_is_refused(tmp_path):
+    args = ["design", "--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1", "--response", "y",
+            "--out", "sheet.csv", "--config-out", "frag.yaml"]
+    assert _demid(tmp_path, *args).returncode == 0
+    assert _demid(tmp_path, *args).returncode == 0  # the unfilled sheet and fragment it wrote: replaced
+    sheet = tmp_path / "sheet.csv"
+    lines = sheet.read_text(encoding="utf-8").splitlines()
+    filled = [lines[0]] + [f"{ln}{100 + i * 1.37:.2f}" for i, ln in enumerate(lines[1:])]
+    sheet.write_text("\n".join(filled) + "\n", encoding="utf-8")
+    result = _demid(tmp_path, *args)
+    assert result.returncode == 2 and "sheet.csv" in result.stderr and "--force" in result.stderr
+    assert sheet.read_text(encoding="utf-8") == "\n".join(filled) + "\n"
+    frag = tmp_path / "frag.yaml"
+    frag.write_text(frag.read_text(encoding="utf-8").replace("y: {}", "y: {target: 3}"), encoding="utf-8")
+    result = _demid(tmp_path, *[a if a != "sheet.csv" else "sheet2.csv" for a in args])
+    assert result.returncode == 2 and "frag.yaml" in result.stderr
+
+
+def test_no_stray_files_after_a_refusal(tmp_path):
+    shutil.copy(REPO / "config.yaml", tmp_path / "config.yaml")
+    result = _demid(tmp_path, "design", "--type", "ccd", "--factor", "a=0:1", "--factor", "b=0:1",
+                    "--out", "config.yaml")
+    assert result.returncode == 2
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["config.yaml"]
