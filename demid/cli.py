@@ -92,6 +92,10 @@ def _alpha(table, factors, alpha, design="ccd"):
                              "--alpha out")
         if not np.isfinite(alpha):
             raise InputError(f"--alpha: a CCD's axial distance is a finite number, found {alpha:g}")
+        from .numbers import unusable_number
+
+        if unusable_number(alpha):
+            raise InputError(f"--alpha: {unusable_number(alpha)}")
         if not alpha >= 1:
             raise InputError(f"--alpha: a CCD's axial distance is at least 1 (1 is face-centred), found {alpha:g}")
         return alpha

@@ -344,3 +344,131 @@ def test_no_stray_files_after_a_refusal(tmp_path):
                     "--out", "config.yaml")
     assert result.returncode == 2
     assert sorted(p.name for p in tmp_path.iterdir()) == ["config.yaml"]
+
+
+# --------------------------------------------------------------------------- numbers, sizes and formats
+def _plain_study(root: Path, **material) -> Path:
+    """A valid two-factor study (data/m.csv, study.yaml) with ``material`` keys replaced; returns the config."""
+    from .helpers import make_ccd_table
+
+    frame = make_ccd_table(lambda x: {"y1": 100 + 20 * x[:, 0] - 2 * x[:, 1] + 10 * x[:, 0] ** 2,
+                                      "y2": 80 + 5 * x[:, 0] + 3 * x[:, 1]}, [0.1, 1.0], [0.9, 11.0], noise=0.3,
+                           seed=3, decimals=3)
+    (root / "data").mkdir(exist_ok=True)
+    frame.rename(columns={"x1": "a", "x2": "b"}).to_csv(root / "data" / "m.csv", index=False)
+    config = {"materials": {"m": {
+        "data": "data/m.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+        "factors": {"a": {"lower": 0.1, "upper": 0.9}, "b": {"lower": 1.0, "upper": 11.0}},
+        "responses": {"y1": {"target": 115}, "y2": {"target": 95}},
+        "scenarios": {"both": {"observables": ["y1", "y2"], "tolerance": 0.02}}, **material}}}
+    path = root / "study.yaml"
+    path.write_text(yaml.safe_dump(config), encoding="utf-8")
+    return path
+
+
+def _set_response(root: Path, run_index: int, column: str, value: str) -> None:
+    path = root / "data" / "m.csv"
+    lines = path.read_text(encoding="utf-8").splitlines()
+    header = lines[0].split(",")
+    cells = lines[run_index].split(",")
+    cells[header.index(column)] = value
+    lines[run_index] = ",".join(cells)
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+
+
+def _one_error_line(result: subprocess.CompletedProcess) -> str:
+    assert result.returncode != 0, result.stdout[-1000:]
+    assert "Traceback" not in result.stderr, result.stderr[-3000:]
+    lines = [ln for ln in result.stderr.splitlines() if ln.startswith("demid: error:")]
+    assert len(lines) == 1, result.stderr[-3000:]
+    assert len(lines[0]) <= 520, len(lines[0])
+    return lines[0]
+
+
+@pytest.mark.parametrize("cell", ["5e-324", "1e5000", "-1e5000", "1e308", "-1e308", "1e-400", "1e31"])
+def test_an_unusable_number_in_a_table_is_one_line(tmp_path, cell):
+    config = _plain_study(tmp_path)
+    _set_response(tmp_path, 3, "y1", cell)
+    line = _one_error_line(_demid(tmp_path, "validate", "--config", str(config)))
+    assert "m.csv" in line and "column 'y1'" in line and cell in line and "run " in line, line
+    result = _demid(tmp_path, "criticize", "--data", "data/m.csv", "--factors", "a,b", "--response", "y1",
+                    "--out", "c.json")
+    assert "y1" in _one_error_line(result) and not (tmp_path / "c.json").exists()
+
+
+def test_an_unusable_number_stops_the_workflow_before_any_job(tmp_path):
+    config = _plain_study(tmp_path)
+    _set_response(tmp_path, 2, "y2", "1e308")
+    line = _one_error_line(_snakemake(tmp_path, "--configfile", str(config)))
+    assert "column 'y2'" in line and "1e308" in line
+
+
+@pytest.mark.parametrize("key, value", [
+    ("factors", {"a": {"lower": -1e308, "upper": 1e308}, "b": {"lower": 1.0, "upper": 11.0}}),
+    ("responses", {"y1": {"target": 1e308}, "y2": {"target": 95}}),
+    ("responses", {"y1": {"target": 5e-324}, "y2": {"target": 95}}),
+    ("reference_point", {"a": 0.5, "b": 1e300}),
+    ("next_runs", {"count": 10**9}),
+    ("next_runs", {"count": 10**50}),
+])
+def test_an_unusable_number_in_a_config_names_the_key(tmp_path, key, value):
+    config = _plain_study(tmp_path, **{key: value})
+    line = _one_error_line(_demid(tmp_path, "validate", "--config", str(config)))
+    assert f"materials.m.{key}" in line, line
+
+
+def test_a_billion_laughs_label_gives_a_short_line(tmp_path):
+    config = _plain_study(tmp_path)
+    text = config.read_text(encoding="utf-8")
+    laughs = ("lol0: &a [lol, lol, lol, lol, lol, lol, lol, lol, lol]\n"
+              + "".join(f"lol{i}: &{chr(97 + i)} [*{chr(96 + i)}, *{chr(96 + i)}, *{chr(96 + i)}, *{chr(96 + i)}, "
+                        f"*{chr(96 + i)}, *{chr(96 + i)}, *{chr(96 + i)}, *{chr(96 + i)}, *{chr(96 + i)}]\n"
+                        for i in range(1, 6)))
+    config.write_text(laughs + text.replace("materials:\n  m:\n", "materials:\n  m:\n    label: *f\n", 1),
+                      encoding="utf-8")
+    line = _one_error_line(_demid(tmp_path, "validate", "--config", str(config)))
+    assert "left out" in line or "lol0" in line
+
+
+def test_a_million_character_cell_is_one_line(tmp_path):
+    config = _plain_study(tmp_path)
+    _set_response(tmp_path, 4, "y1", "9" * 1_000_000)
+    line = _one_error_line(_demid(tmp_path, "validate", "--config", str(config)))
+    assert "m.csv" in line
+    _set_response(tmp_path, 4, "y1", "1" + "0" * 100_000)
+    line = _one_error_line(_demid(tmp_path, "validate", "--config", str(config)))
+    assert "column 'y1'" in line and "characters left out" in line
+
+
+def test_valid_csv_with_a_quoted_line_break_and_yaml_merge_keys_are_accepted(tmp_path):
+    config = _plain_study(tmp_path)
+    data = tmp_path / "data" / "m.csv"
+    lines = data.read_text(encoding="utf-8").splitlines()
+    lines[0] += ",note"
+    lines[1:] = [ln + (',"first line\nsecond, with a comma"' if i == 2 else ",plain") for i, ln in enumerate(lines[1:])]
+    data.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    config.write_text(
+        "materials:\n"
+        "  m:\n    data: data/m.csv\n    design: {type: ccd, alpha: 1.41421, center_runs: 5}\n"
+        "    factors: &factors\n      a: {lower: 0.1, upper: 0.9}\n      b: {lower: 1.0, upper: 11.0}\n"
+        "    responses: {y1: {target: 115}, y2: {target: 95}}\n"
+        "    scenarios: {both: {observables: [y1, y2], tolerance: 0.02}}\n"
+        "  n:\n    data: data/m.csv\n    design: {type: ccd, alpha: 1.41421, center_runs: 5}\n"
+        "    factors:\n      <<: *factors\n      b: {lower: 1.0, upper: 11.0, unit: mm}\n"
+        "    responses: {y1: {target: 115}, y2: {target: 95}}\n"
+        "    scenarios: {both: {observables: [y1, y2], tolerance: 0.02}}\n", encoding="utf-8")
+    result = _demid(tmp_path, "validate", "--config", str(config))
+    assert result.returncode == 0, result.stderr
+    assert "2 table(s) valid" in result.stdout
+    assert _snakemake(tmp_path, "--configfile", str(config)).returncode == 0
+
+
+def test_a_results_dir_naming_a_file_is_one_line(tmp_path):
+    config = _plain_study(tmp_path)
+    (tmp_path / "taken").write_text("mine\n", encoding="utf-8")
+    for results_dir in ["taken", "taken/results"]:
+        text = yaml.safe_load(config.read_text(encoding="utf-8"))
+        config.write_text(yaml.safe_dump({**text, "results_dir": results_dir}), encoding="utf-8")
+        line = _one_error_line(_snakemake(tmp_path, "--configfile", str(config)))
+        assert "results_dir" in line and "'taken'" in line, line
+    assert (tmp_path / "taken").read_text(encoding="utf-8") == "mine\n"
