@@ -31,6 +31,7 @@ include: "workflow/rules/report.smk"
 rule all:
     input:
         all_outputs(),
+        refuse_a_second_run,
     default_target: True
 
 

@@ -472,3 +472,31 @@ def test_a_results_dir_naming_a_file_is_one_line(tmp_path):
         line = _one_error_line(_snakemake(tmp_path, "--configfile", str(config)))
         assert "results_dir" in line and "'taken'" in line, line
     assert (tmp_path / "taken").read_text(encoding="utf-8") == "mine\n"
+
+
+@pytest.mark.workflow
+def test_a_second_run_in_the_same_folder_names_the_lock(tmp_path):
+    import time
+
+    config = _plain_study(tmp_path)
+    cmd = [sys.executable, "-m", "snakemake", "-c1", "--configfile", str(config), "--directory", str(tmp_path)]
+    env = dict(os.environ, PYTHONWARNINGS="ignore")
+    first = subprocess.Popen(cmd, cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)
+    locks = tmp_path / ".snakemake" / "locks"
+    try:
+        deadline = time.monotonic() + 120
+        while not (locks.is_dir() and any(locks.iterdir())) and time.monotonic() < deadline:
+            time.sleep(0.2)
+        assert first.poll() is None and any(locks.iterdir()), "the first run ended before the second started"
+        second = subprocess.run(cmd, cwd=REPO, capture_output=True, text=True, env=env, timeout=300)
+        line = _one_error_line(second)
+        assert "another run" in line and ".snakemake/locks" in line and "--unlock" in line, line
+    finally:
+        _, err = first.communicate(timeout=900)
+    assert first.returncode == 0, err[-2000:]  # the first run was not disturbed
+    assert (tmp_path / "results" / "report" / "report.html").is_file()
+    # a stale lock (a killed run) is named too; --unlock clears it
+    (locks / "0.output.lock").write_text("x", encoding="utf-8")
+    assert "--unlock" in _one_error_line(run_snakemake(tmp_path, config))
+    assert run_snakemake(tmp_path, config, "--unlock").returncode == 0
+    assert run_snakemake(tmp_path, config).returncode == 0

@@ -70,7 +70,7 @@ def material_spec(wildcards):
 def material_spec_digest(wildcards):
     """The material's settings and the content of its table: either edited (even while the job runs)
     reruns the job."""
-    return SPECS[wildcards.material].digest + ":" + content_digest(material_data(wildcards))
+    return f"{SPECS[wildcards.material].digest}:{content_digest(material_data(wildcards))}"
 
 
 def published_digest(wildcards=None):
@@ -303,3 +303,22 @@ def cancel_scheduler_timers():
     for thread in threading.enumerate():
         if isinstance(thread, threading.Timer):
             thread.cancel()
+
+
+def refuse_a_second_run(wildcards=None):
+    """A run started where another is still writing would stop on the other run's unfinished files
+    (IncompleteFilesException) without saying why: it names the lock and what to do instead.  Checked
+    while the DAG is built (not at parse time: only then is a dry run known); dry runs, --nolock,
+    --unlock, --summary and the jobs of a cluster run are not concerned."""
+    if workflow.executor_plugin is None or workflow.dryrun or workflow.remote_exec or workflow.subprocess_exec:
+        return []
+    if not workflow.execution_settings.lock:
+        return []
+    locks = Path(".snakemake", "locks")
+    if locks.is_dir() and any(locks.iterdir()):
+        sys.stderr.write(f"demid: error: another run is writing in {Path.cwd()} (Snakemake's lock in "
+                         ".snakemake/locks); wait until it finishes, or, if none is running (it was stopped), "
+                         "run snakemake --unlock with the same options, then snakemake --rerun-incomplete\n")
+        sys.stderr.flush()
+        os._exit(1)  # from inside the DAG's construction: nothing written, nothing to clean up
+    return []
