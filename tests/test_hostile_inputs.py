@@ -496,6 +496,7 @@ def test_a_second_run_in_the_same_folder_names_the_lock(tmp_path):
     assert first.returncode == 0, err[-2000:]  # the first run was not disturbed
     assert (tmp_path / "results" / "report" / "report.html").is_file()
     # a stale lock (a killed run) is named too; --unlock clears it
+    locks.mkdir(parents=True, exist_ok=True)
     (locks / "0.output.lock").write_text("x", encoding="utf-8")
     assert "--unlock" in _one_error_line(run_snakemake(tmp_path, config))
     assert run_snakemake(tmp_path, config, "--unlock").returncode == 0
