@@ -145,9 +145,9 @@ def cmd_fit(args) -> int:
     from .io import write_json
     from .surrogate import fit_response
 
-    from .out_path import is_fit_json
+    from .out_path import is_demid_json
 
-    _check_out(args, is_fit_json)
+    _check_out(args, is_demid_json)
     factors, responses = _split(args.factors), _split(args.responses)
     table = _load_table(args.data, factors, responses)
     alpha = _alpha(table, factors, args.alpha, args.design)
@@ -174,6 +174,9 @@ def cmd_validate(args) -> int:
     from .data import refuse_likely_typos, validate_material
     from .next_wave import check_next_runs
 
+    from .config_text import refuse_unsafe_config_files
+
+    refuse_unsafe_config_files([args.config])  # a template named as such, as the workflow names it
     base_dir = Path(args.config).parent  # data paths are written relative to the config file
     config = load_config(args.config, base_dir=base_dir)
     check_next_runs(config, source=args.config)
@@ -222,9 +225,9 @@ def cmd_criticize(args) -> int:
     from .io import write_json
     from .surrogate import fit_response
 
-    from .out_path import is_criticism_json
+    from .out_path import is_demid_json
 
-    _check_out(args, is_criticism_json)
+    _check_out(args, is_demid_json)
     factors = _split(args.factors)
     _one_response(args.response, "criticize")
     table = _load_table(args.data, factors, [args.response])
@@ -276,9 +279,9 @@ def cmd_check_transcription(args) -> int:
 
     from .data import read_printed
 
-    from .out_path import is_transcription_json
+    from .out_path import is_demid_json
 
-    _check_out(args, is_transcription_json)
+    _check_out(args, is_demid_json)
     factors = _split(args.factors)
     _one_response(args.response, "check-transcription")
     table = _load_table(args.data, factors, [args.response])

@@ -1,8 +1,8 @@
 """Where a command may write: never onto its own input, a folder, a device or someone else's file.
 
 Every ``--out`` (and ``--config-out``) of the command line passes :func:`check_out_path` before anything
-is computed.  An existing file is replaced only when it is what the same command writes (its JSON shape,
-an unfilled run sheet, a generated config fragment), or with ``--force``.
+is computed.  An existing file is replaced only when it is demid's own output (the JSON of fit, criticize or
+check-transcription, an unfilled run sheet, a generated config fragment), or with ``--force``.
 """
 
 from __future__ import annotations
@@ -47,6 +47,11 @@ def is_transcription_json(path: Path) -> bool:
     return isinstance(data, dict) and _TRANSCRIPTION_KEYS <= set(data)
 
 
+def is_demid_json(path: Path) -> bool:
+    """A JSON any of demid's commands writes (fit, criticize, check-transcription): demid's own output."""
+    return is_fit_json(path) or is_criticism_json(path) or is_transcription_json(path)
+
+
 def is_unfilled_run_sheet(path: Path) -> bool:
     """A sheet as ``demid design`` writes it: ``run, std_order``, factor columns of a few levels, response
     columns still empty.  A cell filled in (a simulated result) makes it the user's data."""
@@ -78,7 +83,7 @@ def is_config_fragment(path: Path) -> bool:
 def check_out_path(out: str, option: str, inputs=(), *, force: bool = False, is_own=None) -> None:
     """Refuse ``out`` (given as ``option``) when it names one of ``inputs``, is anything but a regular file
     or a new path (a folder, a device, a pipe), or is an existing file that ``is_own`` does not recognise
-    as this command's output and ``force`` is not given."""
+    as demid's own output and ``force`` is not given."""
     path = Path(out)
     for given in inputs:
         if given and _same_file(path, Path(given)):
@@ -96,7 +101,7 @@ def check_out_path(out: str, option: str, inputs=(), *, force: bool = False, is_
         raise InputError(f"{option}: '{out}' is not a regular file (a device, pipe or socket); name a file to write")
     if force or (is_own is not None and is_own(path)):
         return
-    raise InputError(f"{option}: '{out}' exists and is not a file this command wrote; it would be replaced. "
+    raise InputError(f"{option}: '{out}' exists and is not a file demid wrote; it would be replaced. "
                      "Name another file, or add --force to replace it")
 
 

@@ -157,6 +157,9 @@ def test_report_of_hostile_labels_runs_nothing(hostile_study):
     html = (hostile_study / SHELL_DIR / "report" / "report.html").read_text(encoding="utf-8")
     assert _live_payloads(html) == []
     assert html.count(MARK) >= 10  # the labels are there, as text
+    for svg in sorted((hostile_study / SHELL_DIR / "figures").glob("*.svg")):  # SVG text is escaped XML
+        text = svg.read_text(encoding="utf-8")
+        assert "<script" not in text and "onerror=" not in text and "onload=" not in text, svg.name
 
 
 @pytest.mark.workflow
@@ -219,6 +222,12 @@ def test_a_templated_config_is_refused_before_it_runs(tmp_path, how):
     assert not (tmp_path / f"{MARK}_YTE").exists(), "the template's expression ran"
     lines = [ln for ln in result.stderr.splitlines() if ln.startswith("demid: error:")]
     assert len(lines) == 1 and "__use_yte__" in lines[0] and "config.yaml" in lines[0], result.stderr[-2000:]
+
+
+def test_validate_names_a_template_without_running_it(tmp_path):
+    (tmp_path / "config.yaml").write_text(YTE_CONFIG.replace(MARK, str(tmp_path / MARK)), encoding="utf-8")
+    line = _one_error_line(_demid(tmp_path, "validate", "--config", "config.yaml"))
+    assert "__use_yte__" in line and not (tmp_path / f"{MARK}_YTE").exists()
 
 
 def test_an_unknown_top_level_key_is_named_before_loading(tmp_path):
