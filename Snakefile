@@ -1,6 +1,17 @@
 # demid: which experiments identify the DEM micro-parameters, and what the simulation gets wrong.
 # Run `snakemake -c2`; your own study: `snakemake -c2 --configfile their.yaml --directory their_dir`.
 
+import sys
+
+from demid.config_text import refuse_unsafe_config_files
+from demid.errors import InputError
+
+# Each config file read as plain data first: a templated one (YTE) would run code while `configfile:` loads it.
+try:
+    refuse_unsafe_config_files(workflow.overwrite_configfiles or ["config.yaml"])
+except InputError as err:
+    sys.exit(f"demid: error: {err}")
+
 # The demonstration study; a --configfile given on the command line replaces it instead of
 # being merged into it, so a user's study never inherits the demo materials.
 if not workflow.overwrite_configfiles:
@@ -23,6 +34,7 @@ include: "workflow/rules/report.smk"
 rule all:
     input:
         all_outputs(),
+        refuse_a_second_run,
     default_target: True
 
 

@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 from .errors import InputError
+from .out_path import check_out_path
 
 
 def _split(text: str) -> list[str]:
@@ -91,6 +92,10 @@ def _alpha(table, factors, alpha, design="ccd"):
                              "--alpha out")
         if not np.isfinite(alpha):
             raise InputError(f"--alpha: a CCD's axial distance is a finite number, found {alpha:g}")
+        from .numbers import unusable_number
+
+        if unusable_number(alpha):
+            raise InputError(f"--alpha: {unusable_number(alpha)}")
         if not alpha >= 1:
             raise InputError(f"--alpha: a CCD's axial distance is at least 1 (1 is face-centred), found {alpha:g}")
         return alpha
@@ -151,10 +156,19 @@ def _require_estimable(table, factors, response, coding, source):
     require_estimable(coded, np.isfinite(table[response].to_numpy(dtype=float)), None, source, response, factors)
 
 
+def _check_out(args, is_own) -> None:
+    """``--out`` checked before any work: not the command's input, not a folder or device, and an existing
+    file replaced only when the command wrote it (or with --force)."""
+    check_out_path(args.out, "--out", [getattr(args, "data", None)], force=args.force, is_own=is_own)
+
+
 def cmd_fit(args) -> int:
     from .io import write_json
     from .surrogate import fit_response
 
+    from .out_path import is_demid_json
+
+    _check_out(args, is_demid_json)
     factors, responses = _split(args.factors), _split(args.responses)
     table = _load_table(args.data, factors, responses)
     design, alpha, note = _table_design(table, factors, args)
@@ -208,6 +222,9 @@ def cmd_validate(args) -> int:
     from .next_wave import check_next_runs
     from .waves import check_simulated
 
+    from .config_text import refuse_unsafe_config_files
+
+    refuse_unsafe_config_files([args.config])  # a template named as such, as the workflow names it
     base_dir = Path(args.config).parent  # data paths are written relative to the config file
     config = load_config(args.config, base_dir=base_dir)
     check_next_runs(config, source=args.config)
@@ -282,6 +299,9 @@ def cmd_criticize(args) -> int:
     from .io import write_json
     from .surrogate import fit_response
 
+    from .out_path import is_demid_json
+
+    _check_out(args, is_demid_json)
     factors = _split(args.factors)
     _one_response(args.response, "criticize")
     table = _load_table(args.data, factors, [args.response])
@@ -335,6 +355,9 @@ def cmd_check_transcription(args) -> int:
 
     from .data import read_printed
 
+    from .out_path import is_demid_json
+
+    _check_out(args, is_demid_json)
     factors = _split(args.factors)
     _one_response(args.response, "check-transcription")
     table = _load_table(args.data, factors, [args.response])
@@ -354,7 +377,12 @@ def cmd_design(args) -> int:
     from .design_generation import fragment_yaml, generate_sheet, parse_factor
     from .io import atomic_path, write_csv
 
+    from .out_path import is_config_fragment, is_unfilled_run_sheet
+
     _check_design_arguments(args)
+    _check_out(args, is_unfilled_run_sheet)
+    if args.config_out:
+        check_out_path(args.config_out, "--config-out", force=args.force, is_own=is_config_fragment)
     sheet = generate_sheet(args.type, [parse_factor(f) for f in args.factor], center_runs=args.center_runs,
                            alpha=args.alpha or "rotatable", seed=args.seed, blocks=args.blocks)
     frame = sheet.to_frame()
@@ -423,6 +451,12 @@ def _table_arguments(p: argparse.ArgumentParser, response_flag: str, response_he
                         "table's geometry (CCD with per-factor axial distance, Box-Behnken, 3^k, two-level "
                         "factorial with centre runs, otherwise custom) and said on stderr")
     p.add_argument("--out", required=True, help="JSON file to write")
+    _force_argument(p)
+
+
+def _force_argument(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--force", action="store_true",
+                   help="replace an existing file at --out that this command did not write (never an input)")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -478,6 +512,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", required=True, metavar="FILE.csv", help="run sheet to write")
     p.add_argument("--config-out", metavar="FILE.yaml",
                    help="also write the config fragment declaring this design (data path = --out)")
+    _force_argument(p)
     p.set_defaults(func=cmd_design)
     p.error = _one_line_error
     return parser

@@ -11,6 +11,7 @@ import yaml
 
 from .design import unreadable_alpha
 from .errors import InputError
+from .numbers import LARGEST, unusable_number
 
 # Shipped with the package (package data), so a non-editable install validates configs too.
 SCHEMA_PATH = Path(__file__).resolve().parent / "schemas" / "config.schema.yaml"
@@ -145,6 +146,12 @@ def _refuse_non_finite(node, path: list, source: str) -> None:
     elif isinstance(node, float) and not np.isfinite(node):
         raise InputError(f"config key {_key_path(path)}: {node} is not a usable number; give a finite value",
                          source=source)
+    elif isinstance(node, float) and unusable_number(node):
+        raise InputError(f"config key {_key_path(path)}: {unusable_number(node)}", source=source)
+    elif isinstance(node, int) and not isinstance(node, bool) and abs(node) > LARGEST:
+        shown = f"{node}" if len(str(node)) < 40 else f"a number of {len(str(abs(node)))} digits"
+        raise InputError(f"config key {_key_path(path)}: found {shown}, outside the magnitudes demid computes "
+                         "with (at most 1e30)", source=source)
 
 
 #: Table columns with a meaning of their own: the run number and the run's status.
@@ -166,6 +173,13 @@ def _check_results_dir(config: dict, source: str) -> None:
     if not results or Path(results).resolve() == Path(Path(results).resolve().anchor):
         raise InputError(f"config key results_dir: '{config.get('results_dir')}' would write the results into "
                          "the file-system root; name a folder, e.g. results", source=source)
+    if "{" in results or "}" in results:  # Snakemake would read the braces of every output path as wildcards
+        raise InputError(f"config key results_dir: '{results}' holds a brace; name a folder without {{ or }}",
+                         source=source)
+    existing = next((p for p in [Path(results), *Path(results).parents] if p.exists() and not p.is_dir()), None)
+    if existing is not None:
+        raise InputError(f"config key results_dir: '{existing}' is an existing file, not a folder; name a folder "
+                         "for the results", source=source)
 
 
 def _check_grid_sizes(config: dict, source: str) -> None:
@@ -256,6 +270,8 @@ class _UniqueKeyLoader(yaml.SafeLoader):
 def _construct_unique_mapping(loader, node, deep=False):
     seen = {}
     for key_node, _ in node.value:
+        if key_node.tag == "tag:yaml.org,2002:merge":
+            continue  # `<<: *anchor` merges a mapping; a key given beside it overrides the merged one
         key = loader.construct_object(key_node, deep=deep)
         if isinstance(key, (str, int, float, bool)) and key in seen:
             raise InputError(f"line {key_node.start_mark.line + 1}: key '{key}' is given twice in one mapping (first "

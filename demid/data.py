@@ -8,6 +8,7 @@ only ever read.
 from __future__ import annotations
 
 import csv
+import io
 import difflib
 import math
 import re
@@ -23,6 +24,7 @@ from .design import (Coding, axial_distances, box_behnken_points, ccd_points, cl
                      model_matrix, model_units, quadratic_terms, rotatable_alpha, snap_to_factor_levels, term_name)
 from .precision import printed_quantum
 from .errors import InputError
+from .numbers import unusable_number
 from .spec import as_spec
 
 UNICODE_MINUS = "\u2212"
@@ -93,14 +95,41 @@ def read_raw_numbered(path: Path | str) -> tuple[list[str], list[list[str]], lis
         text = path.read_bytes().decode("utf-8-sig")
     except UnicodeDecodeError as exc:
         raise InputError(f"not UTF-8 text (byte {exc.start}); save the table as UTF-8 CSV", source=str(path)) from None
-    numbered = [(no, ln) for no, ln in enumerate(text.splitlines(), start=1)
-                if ln.strip() and not ln.lstrip().startswith("#")]
+    numbered = _records(text)
     if not numbered:
         raise InputError("the file is empty", source=str(path))
     delim = _sniff_delimiter(numbered[0][1])
-    rows = [next(csv.reader([ln], delimiter=delim)) for _, ln in numbered]
+    rows = []
+    for no, record in numbered:
+        try:
+            rows.append(next(csv.reader(io.StringIO(record, newline=""), delimiter=delim)))
+        except csv.Error as exc:  # e.g. a cell beyond the csv module's field size limit
+            raise InputError(f"line {no}: not readable as CSV ({exc})", source=str(path)) from None
     header, rows = _drop_trailing_empty_columns([h.strip() for h in rows[0]], rows[1:])
     return header, rows, [no for no, _ in numbered[1:]]
+
+
+def _records(text: str) -> list[tuple[int, str]]:
+    """(first line number, text) of each CSV record, comment and blank lines skipped.  A quoted cell may
+    hold a line break (valid CSV): its record continues on the next lines until the quote closes; a quote
+    never closed leaves every line its own record (the cell count then names the line)."""
+    lines = text.splitlines()
+    out: list[tuple[int, str]] = []
+    no = 0
+    while no < len(lines):
+        line = lines[no]
+        if not line.strip() or line.lstrip().startswith("#"):
+            no += 1
+            continue
+        end, quotes = no, line.count('"')
+        while quotes % 2 and end + 1 < len(lines):
+            end += 1
+            quotes += lines[end].count('"')
+        if quotes % 2:  # unclosed to the end of the file
+            end = no
+        out.append((no + 1, "\n".join(lines[no:end + 1])))
+        no = end + 1
+    return out
 
 
 def _drop_trailing_empty_columns(header: list[str], rows: list[list[str]]) -> tuple[list[str], list[list[str]]]:
@@ -137,9 +166,13 @@ def parse_number(cell: str) -> float:
     if "_" in s:  # Python reads 1_29.3 as 129.3; a table cell with an underscore is a slip
         raise ValueError(f"found '{cell.strip()}', a number with an underscore; expected digits only")
     try:
-        return float(s)
+        value = float(s)
     except ValueError:
         raise ValueError(f"found '{cell.strip()}', expected a number") from None
+    problem = unusable_number(value, cell) if s.lower().lstrip("+-") not in ("nan", "inf", "infinity") else ""
+    if problem:  # spelled-out nan/inf keep their meaning (a failed run) to the caller
+        raise ValueError(problem)
+    return value
 
 
 def _is_number(text: str) -> bool:

@@ -20,6 +20,7 @@ import pandas as pd
 
 from .design import Coding, box_behnken_points, ccd_points, rotatable_alpha, unreadable_alpha
 from .errors import InputError
+from .numbers import unusable_number
 
 DESIGN_TYPES = ("ccd", "box_behnken", "factorial")
 
@@ -53,6 +54,9 @@ def parse_factor(text: str) -> FactorRange:
         lo, hi = float(low), float(high)
     except ValueError:
         raise InputError(f"--factor {name}: LOW and HIGH must be numbers, found '{rng}'") from None
+    problem = unusable_number(lo, low) or unusable_number(hi, high)
+    if problem:
+        raise InputError(f"--factor {name}: {problem}")
     if not (np.isfinite(lo) and np.isfinite(hi)) or lo >= hi:
         raise InputError(f"--factor {name}: LOW must be below HIGH, found {low}:{high}")
     return FactorRange(name, lo, hi)

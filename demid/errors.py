@@ -3,6 +3,23 @@
 from __future__ import annotations
 
 
+#: Longest error line: room for about 300 characters of detail beside a file's path.  A cell or label quoted
+#: in a message (a million characters, a YAML alias expanded a billion times) is cut, and the line says how
+#: much was left out.
+MAX_MESSAGE = 500
+_HEAD, _TAIL = 360, 100
+
+
+def capped(message: str, limit: int = MAX_MESSAGE) -> str:
+    """``message`` on one line of about ``limit`` characters at most: its start and end, and a count of
+    what was left out between them."""
+    if len(message) <= limit:
+        return message
+    head, tail = message[:_HEAD], message[-_TAIL:]
+    left_out = len(message) - len(head) - len(tail)
+    return f"{' '.join(head.split())} […{left_out} characters left out…] {' '.join(tail.split())}"
+
+
 class InputError(Exception):
     """A problem with user input (table or config) that the user must fix.
 
@@ -16,7 +33,7 @@ class InputError(Exception):
         self.run = run
         self.column = column
         self.detail = message
-        super().__init__(self._compose())
+        super().__init__(capped(self._compose()))
 
     def _compose(self) -> str:
         where = []

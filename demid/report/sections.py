@@ -118,9 +118,13 @@ class ReportSections:
 
     # helpers
     def _md(self, text: str):
-        from IPython.display import Markdown
+        """Report text (Markdown, labels typeset) as sanitised HTML: whatever a config puts in it is shown,
+        never run."""
+        from IPython.display import HTML
 
-        return Markdown(typeset_labels(text, self._plain_labels))
+        from .safe_html import markdown_html
+
+        return HTML(markdown_html(typeset_labels(text, self._plain_labels)))
 
     @cached_property
     def _plain_labels(self) -> list[str]:
@@ -139,6 +143,8 @@ class ReportSections:
 
         from IPython.display import HTML
 
+        from .safe_html import sanitize
+
         if not path.is_file():
             return self._md(f"_(missing figure {path.name})_")
         raw = path.read_bytes()
@@ -147,9 +153,9 @@ class ReportSections:
         # every figure's text then appears at about the same size.
         css_px = round(int.from_bytes(raw[16:20], "big") / FIGURE_DPI * 96)
         alt = html.escape(alt or path.stem.replace("_", " "), quote=True)
-        return HTML(f'<figure style="margin:0"><img src="data:image/png;base64,{data}" alt="{alt}" '
+        return HTML(sanitize(f'<figure style="margin:0"><img src="data:image/png;base64,{data}" alt="{alt}" '
                     f'style="width:{css_px}px;max-width:100%;height:auto"><figcaption style="font-size:small">'
-                    f'{alt} — vector version: <code>figures/{path.stem}.svg</code></figcaption></figure>')
+                    f'{alt} — vector version: <code>figures/{path.stem}.svg</code></figcaption></figure>', figure=True))
 
     def _paper(self, what: str) -> str:
         """`` (paper Table 2)`` where published numbers are declared, else nothing: headings stay generic."""

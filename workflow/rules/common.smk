@@ -3,6 +3,7 @@ import sys
 from pathlib import Path
 
 from demid.config import check_semantics, load_yaml, validate_schema
+from demid.io import content_digest, copy_files
 from demid.data import refuse_likely_typos, validate_material
 from demid.errors import InputError
 from demid.next_wave import check_next_runs
@@ -72,7 +73,14 @@ def material_spec(wildcards):
 
 
 def material_spec_digest(wildcards):
-    return SPECS[wildcards.material].digest
+    """The material's settings and the content of its table: either edited (even while the job runs)
+    reruns the job."""
+    return f"{SPECS[wildcards.material].digest}:{content_digest(material_data(wildcards))}"
+
+
+def published_digest(wildcards=None):
+    """The content of the published-values file ("" without one): an edit reruns what reads it."""
+    return content_digest(config["published"]) if config.get("published") else ""
 
 
 def material_data(wildcards):
@@ -338,3 +346,22 @@ def story_inputs():
 MODEL_EXTENSIONS_TABLE = f"{RESULTS}/tables/model_extensions.csv"
 
 STORY_TABLES = [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]
+
+
+def refuse_a_second_run(wildcards=None):
+    """A run started where another is still writing would stop on the other run's unfinished files
+    (IncompleteFilesException) without saying why: it names the lock and what to do instead.  Checked
+    while the DAG is built (not at parse time: only then is a dry run known); dry runs, --nolock,
+    --unlock, --summary and the jobs of a cluster run are not concerned."""
+    if workflow.executor_plugin is None or workflow.dryrun or workflow.remote_exec or workflow.subprocess_exec:
+        return []
+    if not workflow.execution_settings.lock:
+        return []
+    locks = Path(".snakemake", "locks")
+    if locks.is_dir() and any(locks.iterdir()):
+        sys.stderr.write(f"demid: error: another run is writing in {Path.cwd()} (Snakemake's lock in "
+                         ".snakemake/locks); wait until it finishes, or, if none is running (it was stopped), "
+                         "run snakemake --unlock with the same options, then snakemake --rerun-incomplete\n")
+        sys.stderr.flush()
+        os._exit(1)  # from inside the DAG's construction: nothing written, nothing to clean up
+    return []

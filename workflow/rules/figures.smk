@@ -19,5 +19,6 @@ rule paper_figure:
         "logs/figures/{paper_figure}_{material}.log",
     benchmark:
         "benchmarks/figures/{paper_figure}_{material}.tsv"
-    shell:
-        "(cp {input.figure} {output.figure} && cp {input.figure_svg} {output.figure_svg}) 2> {log}"
+    run:
+        # No shell: paths (results_dir may hold spaces or `$(...)`) reach the copy as arguments only.
+        copy_files({input.figure: output.figure, input.figure_svg: output.figure_svg}, log[0])

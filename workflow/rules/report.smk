@@ -8,6 +8,7 @@ rule report:
         html=f"{RESULTS}/report/report.html",
     params:
         config_json=report_config_json,
+        published_digest=published_digest,  # the header quotes the published file's provenance
     resources:
         mem_mb=2000,
     conda:

@@ -13,6 +13,7 @@ rule summary_tables:
         pareto_factors={m: [(f.name, f.unit) for f in SPECS[m].factors] for m in pareto_materials()},
         next_wave=next_wave_columns(),
         combination_factors=list(dict.fromkeys(f for m in MATERIALS for f in SPECS[m].factor_names)),
+        published_digest=published_digest,  # the published file's content (a rerun after an edit)
     resources:
         mem_mb=1000,
     conda:
