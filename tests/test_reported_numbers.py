@@ -7,6 +7,7 @@ code under test.
 from __future__ import annotations
 
 import numpy as np
+import pandas as pd
 import pytest
 import statsmodels.api as sm
 from scipy import optimize, special, stats
@@ -135,3 +136,80 @@ def test_typo_flag_prediction_and_its_error_from_the_other_runs(tmp_path, seed):
     assert flag["student_resid"] == pytest.approx(full.get_influence().resid_studentized_external[i], rel=1e-9)
     # flagged at the family-wise 5 % level: Bonferroni over the runs, t with n - p - 1 degrees of freedom
     assert full.outlier_test(method="bonf")[i, 2] < 0.05
+
+
+# --------------------------------------------------------------------------- the verdict's numbers
+def _lack_of_fit_p(table, factors, response="y"):
+    """Lack of fit against the replicated runs: the quadratic against the cell-means model (statsmodels)."""
+    full = quadratic_ols(table, factors, response)
+    cells = table[factors].round(9).astype(str).agg("|".join, axis=1)
+    means = sm.OLS(table[response].to_numpy(float),
+                   np.asarray(pd.get_dummies(cells), dtype=float)).fit()
+    df_lof = full.df_resid - means.df_resid
+    f = ((full.ssr - means.ssr) / df_lof) / (means.ssr / means.df_resid)
+    return float(stats.f.sf(f, df_lof, means.df_resid))
+
+
+def _fit_numbers(table, factors, response="y"):
+    res = quadratic_ols(table, factors, response)
+    y = table[response].to_numpy(float)
+    press = float(np.sum((res.resid / (1 - res.get_influence().hat_matrix_diag)) ** 2))
+    return {"q2": 1 - press / float(np.sum((y - y.mean()) ** 2)), "loo_rmse": np.sqrt(press / len(y)),
+            "rmse": np.sqrt(res.ssr / len(y)), "resid_std": np.sqrt(res.scale)}
+
+
+@pytest.mark.parametrize("kind, seed", [("step", 300), ("step", 303), ("hidden", 301), ("batch", 302)])
+def test_unexplained_verdict_reports_its_family_p_and_the_fit(kind, seed):
+    """An unexplained verdict: the family-wise p is the smallest family p of the tests that fired (or
+    remained), each at or above its nominal p; the lack-of-fit p is the F test against the cell means;
+    Q², the leave-one-out RMSE and the RMSE are statsmodels'."""
+    from .generators import off_catalogue_table
+
+    table, _ = off_catalogue_table(seed, 2, kind, 20 if kind != "batch" else 10)
+    result = criticize(table, FACTORS[2], "y", n_null=199)
+    assert result.verdict == "unexplained"
+    u = result.unexplained
+    entries = u["tests"] + u["remaining"]
+    assert u["p_value"] == min(e["p_family"] for e in entries)
+    for e in u["tests"]:
+        assert e["p_nominal"] <= e["p_family"] <= 0.05
+        assert f"(family-wise p = {e['p_family']:.3g})" in u["message"]
+    lof = [e for e in entries if e["cause"] == "lack_of_fit"]
+    assert lof and lof[0]["p_nominal"] == pytest.approx(_lack_of_fit_p(table, FACTORS[2]), rel=1e-9)
+    detail = result.verdict_detail
+    assert detail["lof_p"] == pytest.approx(_lack_of_fit_p(table, FACTORS[2]), rel=1e-9)
+    expected = _fit_numbers(table, FACTORS[2])
+    for key in ("q2", "loo_rmse", "rmse"):
+        assert detail[key] == pytest.approx(expected[key], rel=1e-9), key
+
+
+@pytest.mark.parametrize("seed", [500, 503])
+def test_adequate_verdict_reports_the_detectable_size_in_response_units(seed):
+    """The power caveat's size is k residual SDs, sqrt(SSE/(n - p)) in response units, and the message
+    prints both."""
+    from .generators import ccd_table as table_of
+
+    table, _ = table_of(seed, 2, "clean")
+    result = criticize(table, FACTORS[2], "y", n_null=199)
+    assert result.verdict == "adequate"
+    detail = result.verdict_detail
+    expected = _fit_numbers(table, FACTORS[2])
+    assert detail["detectable"] == pytest.approx(detail["detectable_sd"] * expected["resid_std"], rel=1e-9)
+    assert f"{detail['detectable_sd']:.1f} residual standard deviations" in detail["message"]
+    for key in ("q2", "loo_rmse", "rmse"):
+        assert detail[key] == pytest.approx(expected[key], rel=1e-9), key
+
+
+@pytest.mark.parametrize("df_resid, n_tests, alpha", [(7, 10, 0.05), (10, 14, 0.05), (4, 3, 0.1), (30, 1, 0.05)])
+def test_detectable_departure_from_the_noncentral_t(df_resid, n_tests, alpha):
+    """F(1, d; λ) is the square of a noncentral t(d; √λ): the size k is where the two-sided t test at
+    level α/m, d = df_resid − 1, has 80 % power."""
+    from demid.criticism.verdict import detectable_departure
+
+    d = df_resid - 1
+    crit = stats.t.ppf(1 - alpha / n_tests / 2, d)
+    power = lambda k: stats.nct.sf(crit, d, k) + stats.nct.cdf(-crit, d, k)  # noqa: E731
+    k = optimize.brentq(lambda k: power(k) - 0.8, 1e-3, 15)
+    assert detectable_departure(df_resid, n_tests, alpha) == pytest.approx(k, rel=1e-6)
+    assert detectable_departure(2, 5, 0.05) is None
+    assert detectable_departure(10, 0, 0.05) is None
