@@ -213,3 +213,51 @@ def test_detectable_departure_from_the_noncentral_t(df_resid, n_tests, alpha):
     assert detectable_departure(df_resid, n_tests, alpha) == pytest.approx(k, rel=1e-6)
     assert detectable_departure(2, 5, 0.05) is None
     assert detectable_departure(10, 0, 0.05) is None
+
+
+# --------------------------------------------------------------------------- the run order's correlations
+def _ccd2_standard_order():
+    """A 2-factor CCD written in its standard order: factorial (first factor fastest), axial, 5 centres."""
+    a = np.sqrt(2.0)
+    return np.array([[-1, -1], [1, -1], [-1, 1], [1, 1], [-a, 0], [a, 0], [0, -a], [0, a]] + [[0, 0]] * 5)
+
+
+def test_run_order_correlation_with_a_standard_order_is_spearmans():
+    """The reported rank correlation with the standard order is Spearman's ρ of the run numbers and the
+    standard positions: 1 in standard order, 1 − 6Σd²/(n(n²−1)) with two neighbouring factorial runs
+    swapped (Σd² = 2) — no other standard order fits better."""
+    from demid.criticism.run_order import assess_run_order, standard_order_correlation
+
+    coded = _ccd2_standard_order()
+    n = len(coded)
+    runs = np.arange(1, n + 1)
+    assert standard_order_correlation(runs, coded) == pytest.approx(1.0)
+    swapped = runs.copy()
+    swapped[[0, 1]] = swapped[[1, 0]]
+    expected = 1 - 6 * 2 / (n * (n * n - 1))
+    assert expected == pytest.approx(stats.spearmanr(swapped, runs)[0])
+    assert standard_order_correlation(swapped, coded) == pytest.approx(expected, rel=1e-12)
+    rng = np.random.default_rng(0)
+    order = assess_run_order(swapped, coded, {"y": rng.normal(size=n)})
+    assert order.reason == "standard_order" and not order.drift_tested
+    assert order.to_json()["rank_correlation"] == pytest.approx(round(expected, 6), abs=1e-12)
+
+
+def test_run_order_sorted_by_a_response_reports_spearmans_rho_and_the_response():
+    """Runs sorted by y2 apart from one swap: the reported correlation is scipy's Spearman ρ with y2
+    (signed), not with y1, which the runs do not follow."""
+    from demid.criticism.run_order import assess_run_order
+
+    coded = _ccd2_standard_order()
+    n = len(coded)
+    rng = np.random.default_rng(3)
+    runs = rng.permutation(n) + 1
+    y2 = -(runs + 0.0)
+    y2[[2, 5]] = y2[[5, 2]]  # not perfectly sorted
+    y1 = rng.normal(size=n)
+    order = assess_run_order(runs, coded, {"y1": y1, "y2": y2})
+    assert order.reason == "sorted_by_response" and order.response == "y2"
+    assert order.correlation == pytest.approx(stats.spearmanr(runs, y2)[0], rel=1e-12)
+    assert order.correlation < 0
+    assert order.to_json()["follows_response"] == "y2"
+    assert f"{order.correlation:+.2f}" in order.message
