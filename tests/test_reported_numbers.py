@@ -261,3 +261,49 @@ def test_run_order_sorted_by_a_response_reports_spearmans_rho_and_the_response()
     assert order.correlation < 0
     assert order.to_json()["follows_response"] == "y2"
     assert f"{order.correlation:+.2f}" in order.message
+
+
+# --------------------------------------------------------------------------- the ranking of observable sets
+def _linear(name: str, slope_a: float, slope_b: float):
+    from demid.design import quadratic_terms
+    from demid.surrogate import Surrogate
+
+    coef = np.array([0.0, slope_a, slope_b, 0.0, 0.0, 0.0])  # Intercept, a, b, a:b, a^2, b^2
+    return Surrogate(name, ["a", "b"], quadratic_terms(2), coef, np.zeros((6, 6)), 0.0, 7)
+
+
+def test_ranking_reports_gain_fraction_and_contraction_in_closed_form():
+    """y1 = a and y2 = b on the unit square, targets ½, σ = 0.05, tolerance 10 %: each alone keeps a band
+    of width 0.1 (10 %), both a square (1 %); the posterior of one is N(½, σ²) along its factor, whose
+    gain over the uniform prior is log2(1/(σ√(2πe))) bits, twice that for both.  y3 = a with target 5
+    cannot be met (a ≤ 1): no gain, ranked last."""
+    from demid.sampling import Domain
+    from demid.uncertainty.ranking import rank_observable_sets
+
+    sigma = 0.05
+    surrogates = {"y1": _linear("y1", 1, 0), "y2": _linear("y2", 0, 1), "y3": _linear("y3", 1, 0)}
+    domain = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0), (False, False))
+    targets = {"y1": 0.5, "y2": 0.5, "y3": 5.0}
+    frame = rank_observable_sets(surrogates, domain, ("y1", "y2", "y3"), targets,
+                                 {o: sigma for o in surrogates}, 0.1, 101).set_index("observables")
+    one = np.log2(1 / (sigma * np.sqrt(2 * np.pi * np.e)))
+    assert frame.loc["y1", "information_gain_bits"] == pytest.approx(one, abs=5e-3)
+    assert frame.loc["y2", "information_gain_bits"] == pytest.approx(one, abs=5e-3)
+    both = frame.loc["y1+y2"]
+    assert both["information_gain_bits"] == pytest.approx(2 * one, abs=1e-2)
+    assert frame.loc["y1", "feasible_fraction_pct"] == pytest.approx(10.0, abs=1e-6)
+    assert both["feasible_fraction_pct"] == pytest.approx(1.0, abs=1e-6)
+    assert frame.loc["y1", "contraction_pct_vs_best_subset"] == pytest.approx(90.0, abs=1e-5)
+    assert both["contraction_pct_vs_best_subset"] == pytest.approx(90.0, abs=1e-5)
+    assert both["best_subset"] in ("y1", "y2")
+    assert both["gain_vs_best_subset_bits"] == pytest.approx(one, abs=1e-2)
+    assert both["rank"] == 1 and both["rank_by_fraction"] == 1
+    assert frame.loc["y1", "rank_by_fraction"] == 2 and frame.loc["y2", "rank_by_fraction"] == 2
+    assert both["targets_reachable"] and frame.loc["y1", "targets_reachable"]
+    assert 0 <= both["information_gain_error_bits"] < 0.05
+    unreachable = frame[frame.index.str.contains("y3")]
+    assert len(unreachable) == 4 and not unreachable["targets_reachable"].any()
+    assert unreachable["information_gain_bits"].isna().all()
+    assert unreachable["information_gain_error_bits"].isna().all()
+    assert set(unreachable["rank"]) == {4, 5, 6, 7} and set(unreachable["rank_by_fraction"]) == {4}
+    assert frame.loc["y3", "feasible_fraction_pct"] == 0
