@@ -307,3 +307,11 @@ def test_ranking_reports_gain_fraction_and_contraction_in_closed_form():
     assert unreachable["information_gain_error_bits"].isna().all()
     assert set(unreachable["rank"]) == {4, 5, 6, 7} and set(unreachable["rank_by_fraction"]) == {4}
     assert frame.loc["y3", "feasible_fraction_pct"] == 0
+
+
+@pytest.mark.parametrize("x, text", [(10000.0, "10,000"), (-10000.0, "-10,000"), (19668.2, "19,668"),
+                                     (9999.4, "9999"), (1.5, "1.5")])
+def test_numbers_in_running_text_carry_no_exponent_from_ten_thousand_on(x, text):
+    from demid.criticism.verdict import _plain
+
+    assert _plain(x) == text
