@@ -175,6 +175,8 @@ def test_unexplained_verdict_reports_its_family_p_and_the_fit(kind, seed):
         assert e["p_nominal"] <= e["p_family"] <= 0.05
         assert f"(family-wise p = {e['p_family']:.3g})" in u["message"]
     lof = [e for e in entries if e["cause"] == "lack_of_fit"]
+    assert (f"lack of fit against the replicated runs (family-wise p = {lof[0]['p_family']:.3g})"
+            in u["message"])
     assert lof and lof[0]["p_nominal"] == pytest.approx(_lack_of_fit_p(table, FACTORS[2]), rel=1e-9)
     detail = result.verdict_detail
     assert detail["lof_p"] == pytest.approx(_lack_of_fit_p(table, FACTORS[2]), rel=1e-9)
@@ -315,3 +317,35 @@ def test_numbers_in_running_text_carry_no_exponent_from_ten_thousand_on(x, text)
     from demid.criticism.verdict import _plain
 
     assert _plain(x) == text
+
+
+# --------------------------------------------------------------------------- the next wave's proposed runs
+@pytest.mark.parametrize("k, existing, count", [
+    (2, [(-1, -1), (1, -1), (-1, 1), (1, 1), (0, 0)], 4),
+    (2, [(a, b) for a in (-1, 0, 1) for b in (-1, 0, 1)], 5),
+    (3, [(0, 0, 0), (1, 1, 1), (-1, -1, 1)], 6),
+])
+def test_next_wave_runs_each_maximise_the_determinant(k, existing, count):
+    """Each proposed run is, among the grid points not yet run, one that maximises det(X'X) of the full
+    quadratic over the earlier and already proposed runs (brute force over the 5^k grid, numpy's det)."""
+    from itertools import product
+
+    from demid.design import model_matrix, quadratic_terms
+    from demid.next_wave import d_optimal_augment
+
+    terms = quadratic_terms(k)
+    grid = np.array(list(product((-1.0, -0.5, 0.0, 0.5, 1.0), repeat=k)))
+    runs = np.array(existing, dtype=float).reshape(-1, k)
+    chosen = d_optimal_augment(runs, count, k)
+    assert chosen.shape == (count, k)
+    ridge = 1e-9 * np.eye(len(terms))
+    for point in chosen:
+        def det(p):
+            x = model_matrix(np.vstack([runs, p[None, :]]), terms)
+            return np.linalg.det(x.T @ x + ridge)
+
+        fresh = [p for p in grid if not any(np.allclose(p, r) for r in runs)]
+        best = max(det(p) for p in fresh)
+        assert not any(np.allclose(point, r) for r in runs)  # no repeat while unused points remain
+        assert det(point) == pytest.approx(best, rel=1e-6)
+        runs = np.vstack([runs, point])
