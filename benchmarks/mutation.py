@@ -148,11 +148,13 @@ TABLE: dict[str, dict] = {
     },
     "demid/uncertainty/ranking.py": {
         "functions": None,
-        "tests": ["tests/test_uncertainty.py", "tests/test_unreachable_targets.py"],
+        "tests": ["tests/test_reported_numbers.py::test_ranking_reports_gain_fraction_and_contraction_in_closed_form",
+                  "tests/test_uncertainty.py", "tests/test_unreachable_targets.py"],
     },
     "demid/next_wave.py": {
         "functions": None,
-        "tests": ["tests/test_next_wave.py"],
+        "tests": ["tests/test_reported_numbers.py::test_next_wave_runs_each_maximise_the_determinant",
+                  "tests/test_next_wave.py"],
     },
     "demid/pareto.py": {
         "functions": None,
