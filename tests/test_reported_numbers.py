@@ -174,6 +174,10 @@ def test_unexplained_verdict_reports_its_family_p_and_the_fit(kind, seed):
     for e in u["tests"]:
         assert e["p_nominal"] <= e["p_family"] <= 0.05
         assert f"(family-wise p = {e['p_family']:.3g})" in u["message"]
+        if e["cause"] in ("outlier", "factor_level"):  # the run is named as a run
+            assert f"(run {e['detail']}) (family-wise p = {e['p_family']:.3g})" in u["message"]
+        elif e["cause"] == "heteroscedasticity":  # the factor the scatter grows with
+            assert f"unequal scatter with {e['detail']} (family-wise p" in u["message"]
     lof = [e for e in entries if e["cause"] == "lack_of_fit"]
     assert (f"lack of fit against the replicated runs (family-wise p = {lof[0]['p_family']:.3g})"
             in u["message"])
