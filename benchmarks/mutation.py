@@ -127,7 +127,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/level2.py": {
         "functions": None,
-        "tests": ["tests/test_criticism.py", "tests/test_edges.py", "tests/test_unreachable_targets.py", "-klevel2 or edge or reach"],
+        "tests": ["tests/test_reported_numbers.py", "tests/test_criticism.py", "tests/test_edges.py",
+                  "tests/test_unreachable_targets.py", "-klevel2 or edge or reach"],
     },
     "demid/criticism/verdict.py": {
         "functions": None,

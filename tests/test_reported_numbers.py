@@ -353,3 +353,88 @@ def test_next_wave_runs_each_maximise_the_determinant(k, existing, count):
         assert not any(np.allclose(point, r) for r in runs)  # no repeat while unused points remain
         assert det(point) == pytest.approx(best, rel=1e-6)
         runs = np.vstack([runs, point])
+
+
+# --------------------------------------------------------------------------- level 2: best point and its errors
+def test_level2_best_point_errors_biases_and_extensions_in_closed_form():
+    """y1 = y2 = a with targets 1 and 2, y3 = b with target ½, a in [½, 3], b in [¼, 1], tolerance 10 %.
+    Relative errors e1 = a − 1, e2 = a/2 − 1, e3 = 2b − 1.
+    Best point: e1 = −e2 at a = 4/3 (largest error 1/3).  Without y1 (or y2) the rest is met exactly
+    (0), without y3 the largest error stays 1/3.  The bias y1 needs where y2 is met (a = 2) is +1, the
+    bias y2 needs where y1 is met (a = 1) is −½: y2 is the bottleneck (the smaller bias), either could be
+    biased.  A shared bias leaves half the spread of e1 − e2 = a/2, smallest at a = ½: 1/8, with
+    δ = (e1 + e2)/2 = −5/8 and b = ¼ (e3 = −½ between them).  At the reference point (1, ¼) the errors
+    are 0, −½, −½."""
+    from demid.criticism.level2 import calibration_check
+    from demid.sampling import Domain
+
+    surrogates = {"y1": _linear("y1", 1, 0), "y2": _linear("y2", 1, 0), "y3": _linear("y3", 0, 1)}
+    domain = Domain(("a", "b"), (0.5, 0.25), (3.0, 1.0), (False, False))
+    result = calibration_check(surrogates, domain, {"y1": 1.0, "y2": 2.0, "y3": 0.5}, 0.1, 31,
+                               reference_point={"a": 1.0, "b": 0.25})
+    out = result.to_json()
+    tol = 1e-6
+    assert not out["feasible"]
+    assert out["best_max_error"] == pytest.approx(1 / 3, abs=tol)
+    assert out["best_point"]["a"] == pytest.approx(4 / 3, abs=tol)
+    assert out["best_values"]["y1"] == pytest.approx(4 / 3, abs=tol)
+    assert out["best_errors"]["y1"] == pytest.approx(1 / 3, abs=tol)
+    assert out["best_errors"]["y2"] == pytest.approx(-1 / 3, abs=tol)
+    assert abs(out["best_errors"]["y3"]) <= 1 / 3 + tol
+    assert out["best_errors"]["y3"] == pytest.approx(2 * out["best_point"]["b"] - 1, abs=1e-12)
+    without = out["max_error_without"]
+    assert without["y1"] == pytest.approx(0, abs=tol) and without["y2"] == pytest.approx(0, abs=tol)
+    assert without["y3"] == pytest.approx(1 / 3, abs=tol)
+    bias = out["implied_bias"]
+    assert bias["y1"] == pytest.approx(1.0, abs=tol) and bias["y2"] == pytest.approx(-0.5, abs=tol)
+    assert bias["y3"] == pytest.approx(0.0, abs=tol)
+    assert out["bottleneck"] == "y2" and out["bias_candidates"] == ["y1", "y2"] and out["biased_observable"] is None
+    shared = out["shared_bias"]
+    assert shared["max_error"] == pytest.approx(1 / 8, abs=tol) and shared["delta"] == pytest.approx(-5 / 8, abs=tol)
+    assert shared["point"]["a"] == pytest.approx(0.5, abs=tol) and shared["point"]["b"] == pytest.approx(0.25, abs=tol)
+    assert out["reference_errors"] == pytest.approx({"y1": 0.0, "y2": -0.5, "y3": -0.5}, abs=1e-12)
+    assert out["reference_max_error"] == pytest.approx(0.5, abs=1e-12)
+    rows = {e["model"]: e for e in out["extensions"]}
+    assert [e["n_params"] for e in out["extensions"]] == [2, 3, 3, 5]
+    assert [e["spare_measurements"] for e in out["extensions"]] == [1, 0, 0, -2]
+    assert rows["simulation as calibrated (no discrepancy)"]["max_error"] == pytest.approx(1 / 3, abs=tol)
+    assert rows["bias on y2"]["max_error"] == pytest.approx(0, abs=tol)
+    assert rows["shared relative bias on all observables"]["max_error"] == pytest.approx(1 / 8, abs=tol)
+    assert rows["bias on every observable"]["max_error"] == 0
+    frame = result.to_frame().set_index("observable")
+    assert frame.loc["y1", "rel_error_best"] == pytest.approx(1 / 3, abs=tol)
+    assert frame.loc["y2", "at_best"] == pytest.approx(4 / 3, abs=tol)
+    assert frame.loc["y3", "at_reference"] == 0.25 and frame.loc["y2", "rel_error_reference"] == -0.5
+    assert list(frame["within_tolerance"][["y1", "y2"]]) == [False, False]
+    assert list(frame["within_tolerance_reference"]) == [True, False, False]
+    assert list(frame["bottleneck"]) == [False, True, False]
+    assert list(frame["bias_candidate"]) == [True, True, False]
+    assert frame.loc["y2", "implied_bias"] == pytest.approx(-0.5, abs=tol)
+
+
+def test_strongest_rival_is_the_most_significant_test_of_another_kind():
+    """A rival is a test of another kind with smaller nominal p than the named cause's best test; a run's
+    outlier and slip tests are one kind; a cause at p ≤ 1e-4 (OVERWHELMING_P) has no rival."""
+    import math
+    from types import SimpleNamespace as H
+
+    from demid.criticism.verdict import OVERWHELMING_P, strongest_rival
+
+    def h(cause, p):
+        return H(cause=cause, logp=math.log(p))
+
+    named = h("outlier", 0.01)
+    tests = [named, h("factor_level", 0.001), h("lack_of_fit", 0.005), h("drift", 0.002), h("missing_term", 0.2)]
+    # the run's own best test is the slip at 0.001: nothing of another kind is as significant
+    assert strongest_rival(named, tests) is None
+    tests[1] = h("factor_level", 0.03)
+    assert strongest_rival(named, tests) is tests[3]  # drift 0.002 beats lack of fit 0.005
+    named = h("missing_term", 0.003)
+    tests = [named, h("lack_of_fit", 0.003), h("outlier", 0.0029)]
+    assert strongest_rival(named, tests) is tests[2]  # ties are no rival, a smaller p is
+    named = h("missing_term", OVERWHELMING_P)
+    assert strongest_rival(named, [named, h("outlier", 1e-6)]) is None
+    named = h("missing_term", OVERWHELMING_P * 1.001)
+    assert strongest_rival(named, [named, h("outlier", 1e-6)]).cause == "outlier"
+    named = h("response_transform", 0.04)
+    assert strongest_rival(named, [named, h("outlier", 1e-6)]) is None
