@@ -438,3 +438,22 @@ def test_strongest_rival_is_the_most_significant_test_of_another_kind():
     assert strongest_rival(named, [named, h("outlier", 1e-6)]).cause == "outlier"
     named = h("response_transform", 0.04)
     assert strongest_rival(named, [named, h("outlier", 1e-6)]) is None
+
+
+def test_unexplained_evidence_after_a_tried_extension_reports_the_misfit_left_behind():
+    """When the best catalogue extension leaves misfit behind, the verdict's p is the smallest family p of
+    the tests that fired and those still rejected after the extension, and the message names both."""
+    from demid.criticism.verdict import unexplained_evidence
+
+    fired = [{"cause": "missing_term", "detail": "a^3", "p_family": 0.02},
+             {"cause": "lack_of_fit", "detail": "", "p_family": 0.01}]
+    tried = [{"cause": "missing_term", "detail": "a^3"}]
+    remaining = [{"cause": "lack_of_fit", "detail": "", "p_family": 0.004}]
+    out = unexplained_evidence("y", fired, tried, remaining, 0.05)
+    assert out["p_value"] == 0.004
+    assert out["detail"] == "missing_term;lack_of_fit"
+    assert ("The best catalogue explanation, missing term a^3, leaves misfit behind (lack of fit against the "
+            "replicated runs (family-wise p = 0.004)), so it is not named.") in out["message"]
+    assert "family-wise 5 % level: missing term a^3 (family-wise p = 0.02); lack of fit" in out["message"]
+    assert unexplained_evidence("y", [{"cause": "drift", "detail": "", "p_family": None}], [], [], 0.05)[
+        "p_value"] is None
