@@ -214,7 +214,7 @@ def test_detectable_departure_from_the_noncentral_t(df_resid, n_tests, alpha):
 
     d = df_resid - 1
     crit = stats.t.ppf(1 - alpha / n_tests / 2, d)
-    power = lambda k: stats.nct.sf(crit, d, k) + stats.nct.cdf(-crit, d, k)  # noqa: E731
+    power = lambda k: stats.nct.sf(crit, d, k) + stats.nct.sf(crit, d, -k)  # noqa: E731  P(|T| > c)
     k = optimize.brentq(lambda k: power(k) - 0.8, 1e-3, 15)
     assert detectable_departure(df_resid, n_tests, alpha) == pytest.approx(k, rel=1e-6)
     assert detectable_departure(2, 5, 0.05) is None
@@ -457,3 +457,34 @@ def test_unexplained_evidence_after_a_tried_extension_reports_the_misfit_left_be
     assert "family-wise 5 % level: missing term a^3 (family-wise p = 0.02); lack of fit" in out["message"]
     assert unexplained_evidence("y", [{"cause": "drift", "detail": "", "p_family": None}], [], [], 0.05)[
         "p_value"] is None
+
+
+@pytest.mark.parametrize("share", [1.0, 0.5])
+def test_power_caveat_quotes_k_residual_sds_and_their_size(share):
+    """A specific test runs at α·share/m: the quoted k is the noncentral-t size at that level, the size in
+    response units k·s, and both appear in the message; too few spare runs give no size."""
+    from demid.criticism.verdict import power_caveat
+
+    d, m, s = 7 - 1, 10, 2.5
+    crit = stats.t.ppf(1 - 0.05 * share / m / 2, d)
+    k = optimize.brentq(lambda k: stats.nct.sf(crit, d, k) + stats.nct.sf(crit, d, -k) - 0.8, 1e-3, 15)
+    out = power_caveat("y", 13, 7, m, 0.05, s, specific_share=share)
+    assert out["detectable_sd"] == pytest.approx(k, rel=1e-6)
+    assert out["detectable"] == pytest.approx(k * s, rel=1e-6)
+    assert out["power"] == 0.8
+    assert f"about {k:.1f} residual standard deviations" in out["message"]
+    assert "none of the 10 tests fired at the family-wise 5 % level. With 13 runs" in out["message"]
+    none = power_caveat("y", 8, 2, m, 0.05, s)
+    assert none["detectable_sd"] is None and none["detectable"] is None and "8 runs too few" in none["message"]
+
+
+def test_ambiguous_message_quotes_the_largest_aicc_gap_and_the_deciding_runs():
+    from demid.criticism.verdict import ambiguous_message
+
+    candidates = [{"cause": "missing_term", "detail": "a^3", "delta_aicc": 0.0},
+                  {"cause": "response_transform", "detail": "boxcox", "delta_aicc": 1.37}]
+    runs = [{"a": 0.5, "b": -1.25, "purpose": "x", "expected": 1, "separation": 2}]
+    text = ambiguous_message("y", candidates, runs)
+    assert "missing term a^3 and response transform explain" in text
+    assert "lie within 1.4 of each other" in text
+    assert "1 more run made after these, at (a=0.5, b=-1.25), would decide" in text
