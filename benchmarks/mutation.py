@@ -132,15 +132,18 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/verdict.py": {
         "functions": None,
-        # the verdict's reported numbers and the fast honest-cause tests (the rate tests repeat them at 20x the cost)
-        "tests": ["tests/test_reported_numbers.py", "tests/test_lone_runs.py", *[f"tests/test_honest_causes.py::{name}" for name in (
-            "test_misfit_without_a_catalogue_cause_is_unexplained_or_points_at_a_moved_run",
-            "test_noise_only_response_does_not_predict", "test_detectable_departure_has_its_power_by_simulation",
-            "test_unequal_scatter_resting_on_one_run_is_not_named", "test_true_outlier_is_not_renamed_a_slip",
-            "test_a_corner_step_and_a_three_factor_interaction_are_not_told_apart_by_name",
-            "test_one_run_deletions_match_refits_without_each_run", "test_a_cause_is_named_only_when_its_test_is_the_strongest_evidence",
-            "test_off_catalogue_defects_are_mostly_unexplained_not_misnamed",
-            "test_clean_tables_are_adequate_with_a_power_caveat")]],
+        # the verdict's reported numbers and the fast honest-cause tests (the rate tests repeat them at 20x
+        # the cost)
+        "tests": ["tests/test_reported_numbers.py", "tests/test_lone_runs.py", *[
+            f"tests/test_honest_causes.py::{name}" for name in (
+                "test_misfit_without_a_catalogue_cause_is_unexplained_or_points_at_a_moved_run",
+                "test_noise_only_response_does_not_predict", "test_detectable_departure_has_its_power_by_simulation",
+                "test_unequal_scatter_resting_on_one_run_is_not_named", "test_true_outlier_is_not_renamed_a_slip",
+                "test_a_corner_step_and_a_three_factor_interaction_are_not_told_apart_by_name",
+                "test_one_run_deletions_match_refits_without_each_run",
+                "test_a_cause_is_named_only_when_its_test_is_the_strongest_evidence",
+                "test_off_catalogue_defects_are_mostly_unexplained_not_misnamed",
+                "test_clean_tables_are_adequate_with_a_power_caveat")]],
     },
     "demid/criticism/run_order.py": {
         "functions": None,
