@@ -153,6 +153,7 @@ TABLE: dict[str, dict] = {
     "demid/uncertainty/ranking.py": {
         "functions": None,
         "tests": ["tests/test_reported_numbers.py::test_ranking_reports_gain_fraction_and_contraction_in_closed_form",
+                  "tests/test_reported_numbers.py::test_next_measurement_advice_quotes_the_gains_and_fractions_of_the_ranking",
                   "tests/test_uncertainty.py", "tests/test_unreachable_targets.py"],
     },
     "demid/next_wave.py": {

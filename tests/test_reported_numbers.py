@@ -488,3 +488,24 @@ def test_ambiguous_message_quotes_the_largest_aicc_gap_and_the_deciding_runs():
     assert "missing term a^3 and response transform explain" in text
     assert "lie within 1.4 of each other" in text
     assert "1 more run made after these, at (a=0.5, b=-1.25), would decide" in text
+
+
+def test_next_measurement_advice_quotes_the_gains_and_fractions_of_the_ranking():
+    """The advice reads the ranking's numbers: the best first measurement with its gain and fraction, the
+    gain of each added measurement (from → to), the fraction's contraction, the runner-up's gain and the
+    fraction criterion where it disagrees; an unreachable target is named and left out."""
+    from demid.uncertainty.ranking import next_measurement_advice
+
+    ranking = pd.DataFrame({
+        "observables": ["y1+y2", "y1", "y2", "y3", "y1+y3", "y2+y3", "y1+y2+y3"],
+        "information_gain_bits": [4.5, 2.25, 1.5, np.nan, np.nan, np.nan, np.nan],
+        "feasible_fraction_pct": [1.0, 10.0, 4.0, 0.0, 0.0, 0.0, 0.0]})
+    lines = next_measurement_advice(ranking).splitlines()
+    assert lines[0].startswith("The target of y3 cannot be met anywhere")
+    assert ("As a first measurement, y1 is the most informative: 2.25 bits, admissible fraction 10 % of the "
+            "domain; y2 would gain 1.50 bits; by fraction alone y2 contracts more (4 % vs 10 %).") in lines
+    assert ("From y1, adding y2 gains 2.25 bits (2.25 -> 4.50) and shrinks the admissible fraction by 90.0 % "
+            "(10 % -> 1 %).") in lines
+    assert ("From y2, adding y1 gains 3.00 bits (1.50 -> 4.50) and shrinks the admissible fraction by 75.0 % "
+            "(4 % -> 1 %).") in lines
+    assert len(lines) == 4
