@@ -246,6 +246,9 @@ EQUIVALENT: dict[str, str] = {
         "the value is only read through _num(), which turns 'nan' and nan alike into None",
     "demid/criticism/catalogue.py::_het_lr::np.sum(r * r, axis=0) / n => np.sum(r * r, axis=0)#0":
         "shifts every profile log-likelihood by the same 0.5 n log n; the statistic is a difference of two",
+    "demid/criticism/verdict.py::power_caveat::np.isfinite(size) and abs(size) >= 10000.0 => "
+    "abs(size) >= 10000.0#0":
+        "differs only for an infinite size, where _plain falls back to _g as well: both print 'inf'",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "

@@ -474,6 +474,9 @@ def test_power_caveat_quotes_k_residual_sds_and_their_size(share):
     assert out["power"] == 0.8
     assert f"about {k:.1f} residual standard deviations" in out["message"]
     assert "none of the 10 tests fired at the family-wise 5 % level. With 13 runs" in out["message"]
+    assert f"({k * s:.3g} in response units" in out["message"]  # three significant digits
+    big = power_caveat("y", 13, 7, m, 0.05, 4000.0, specific_share=share)
+    assert f"({k * 4000:,.0f} in response units" in big["message"]  # no exponent from 10,000 on
     none = power_caveat("y", 8, 2, m, 0.05, s)
     assert none["detectable_sd"] is None and none["detectable"] is None and "8 runs too few" in none["message"]
 
