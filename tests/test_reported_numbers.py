@@ -512,3 +512,19 @@ def test_next_measurement_advice_quotes_the_gains_and_fractions_of_the_ranking()
     assert ("From y2, adding y1 gains 3.00 bits (1.50 -> 4.50) and shrinks the admissible fraction by 75.0 % "
             "(4 % -> 1 %).") in lines
     assert len(lines) == 4
+
+
+@pytest.mark.parametrize("value", [0.0, 3.0, 117.25])
+def test_a_response_that_never_changes_is_reported_with_its_value(value):
+    """Every run the same (zero included): adequate with no detectable size, and the value is printed."""
+    table, _ = ccd_table(1, 2, "clean")
+    table["y"] = value
+    with np.errstate(all="ignore"):
+        import warnings
+
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            result = criticize(table, FACTORS[2], "y", n_null=99)
+    assert result.verdict == "adequate"
+    assert result.verdict_detail["detectable"] is None and result.verdict_detail["detectable_sd"] is None
+    assert result.verdict_message.startswith(f"y: the same value ({value:.4g}) in every run")
