@@ -249,6 +249,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/verdict.py::power_caveat::np.isfinite(size) and abs(size) >= 10000.0 => "
     "abs(size) >= 10000.0#0":
         "differs only for an infinite size, where _plain falls back to _g as well: both print 'inf'",
+    "demid/criticism/run_order.py::_follows_response::0 => -1#0":
+        "a constant response has no rank correlation: scipy's Spearman rho is NaN, which fails the threshold, "
+        "so the response is skipped either way",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "

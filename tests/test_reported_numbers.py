@@ -528,3 +528,32 @@ def test_a_response_that_never_changes_is_reported_with_its_value(value):
     assert result.verdict == "adequate"
     assert result.verdict_detail["detectable"] is None and result.verdict_detail["detectable_sd"] is None
     assert result.verdict_message.startswith(f"y: the same value ({value:.4g}) in every run")
+
+
+@pytest.mark.parametrize("centre_first, centre_value", [(True, 0.0), (False, 1e-6), (True, -1e-6)])
+def test_standard_order_with_the_centre_runs_first_or_off_zero_by_round_off(centre_first, centre_value):
+    """The centre runs listed first are a standard order too, and coded values within 1e-6 of zero are
+    on the centre level: the run column in that order correlates 1 with it."""
+    from demid.criticism.run_order import standard_order_correlation
+
+    coded = _ccd2_standard_order()
+    coded[coded[:, 0] == 0] = np.where(coded[coded[:, 0] == 0] == 0, centre_value, coded[coded[:, 0] == 0])
+    if centre_first:
+        coded = np.vstack([coded[-5:], coded[:-5]])
+    runs = np.arange(1, len(coded) + 1)
+    assert standard_order_correlation(runs, coded) == pytest.approx(1.0, abs=1e-12)
+
+
+def test_run_column_follows_the_response_it_is_most_strongly_rank_correlated_with():
+    """Two responses above the threshold: the one with the larger |ρ| is named, whatever its sign."""
+    from demid.criticism.run_order import assess_run_order
+
+    coded = _ccd2_standard_order()
+    runs = np.arange(1, len(coded) + 1) * 1.0
+    down = -runs.copy()  # ρ = −1
+    up = runs.copy()
+    up[[0, 2]], up[[6, 8]] = up[[2, 0]], up[[8, 6]]  # ρ ≈ 0.956
+    assert 0.9 <= stats.spearmanr(runs, up)[0] < 1
+    for responses in ({"down": down, "up": up}, {"up": up, "down": down}):
+        order = assess_run_order(runs, coded, responses)
+        assert order.response == "down" and order.correlation == pytest.approx(-1.0)
