@@ -544,7 +544,7 @@ def test_standard_order_with_the_centre_runs_first_or_off_zero_by_round_off(cent
     assert standard_order_correlation(runs, coded) == pytest.approx(1.0, abs=1e-12)
 
 
-def test_run_column_follows_the_response_it_is_most_strongly_rank_correlated_with():
+def test_run_order_follows_the_response_it_is_most_strongly_rank_correlated_with():
     """Two responses above the threshold: the one with the larger |ρ| is named, whatever its sign."""
     from demid.criticism.run_order import assess_run_order
 
