@@ -220,7 +220,7 @@ class MaterialSpec:
         believed) or ``unknown`` (never tested)."""
         if "run_order" in self._material:
             return self._material["run_order"]
-        from .config import material_default
+        from .schema import material_default
 
         return material_default("run_order")
 
