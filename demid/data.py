@@ -148,16 +148,8 @@ def _is_number(text: str) -> bool:
     return True
 
 
-def read_table(path: Path | str, factors: list[str], responses: list[str],
-               status_column: str = "status") -> tuple[pd.DataFrame, list[str]]:
-    """Parse a design table into floats.  Returns (table, warnings).
-
-    Empty or non-finite response cells are allowed only for runs marked as
-    failed in ``status_column`` (or written explicitly as NaN/inf): those
-    responses become NaN and are excluded from the fit.
-    """
-    src = str(path)
-    header, rows, line_numbers = read_raw_numbered(path)
+def check_header(header: list[str], factors, responses, src: str) -> None:
+    """The header names each column once, and names the run, every factor and every response."""
     needed = ["run"] + list(factors) + list(responses)
     missing = [col for col in needed if col not in header]
     dup_cols = {h for h in header if header.count(h) > 1}
@@ -175,6 +167,19 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
         hint = (f"; found '{same[0]}', which differs only in upper/lower case" if same
                 else f"; found '{close[0]}' — misspelled?" if close else f"; columns found: {', '.join(header)}")
         raise InputError(f"missing column (expected columns: {', '.join(needed)}){hint}", source=src, column=col)
+
+
+def read_table(path: Path | str, factors: list[str], responses: list[str],
+               status_column: str = "status") -> tuple[pd.DataFrame, list[str]]:
+    """Parse a design table into floats.  Returns (table, warnings).
+
+    Empty or non-finite response cells are allowed only for runs marked as
+    failed in ``status_column`` (or written explicitly as NaN/inf): those
+    responses become NaN and are excluded from the fit.
+    """
+    src = str(path)
+    header, rows, line_numbers = read_raw_numbered(path)
+    check_header(header, factors, responses, src)
     idx = {h: i for i, h in enumerate(header)}
     has_status = status_column in idx
     warnings: list[str] = []
@@ -372,6 +377,14 @@ def _block_notes(table: pd.DataFrame, factors: list[str], coding: Coding, log_fa
     return [f"{src}, column '{BLOCK_COLUMN}': {note}" for note in notes]
 
 
+def check_table_columns(material: str, mat_cfg: dict, base_dir: Path | str = ".") -> None:
+    """The cheap part of :func:`validate_material`, for the workflow's start-up: the table can be read and its
+    header names the run, every factor and every response.  Its cells, its design and its likely typos are
+    checked once, in the material's job.  Raises InputError."""
+    header, _, _ = read_raw_numbered(Path(base_dir) / mat_cfg["data"])
+    check_header(header, mat_cfg["factors"], mat_cfg["responses"], str(Path(mat_cfg["data"])))
+
+
 def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") -> ValidatedTable:
     """Read a material's table and run every transcription check; raises InputError."""
     src = str(Path(mat_cfg["data"]))
@@ -436,7 +449,7 @@ def _repair_explains(flag: dict, share: float = 0.2) -> bool:
 
 
 def refuse_likely_typos(validated: ValidatedTable, material: str, mat_cfg: dict,
-                        base_dir: Path | str = ".") -> list[dict]:
+                        base_dir: Path | str = ".", printed: pd.DataFrame | None = None) -> list[dict]:
     """Stop on a response cell that is far off the other runs' fit *and* reads like a digit-level slip.
 
     A value the user has confirmed under ``confirmed_values`` passes; the confirmed flags are
@@ -456,7 +469,8 @@ def refuse_likely_typos(validated: ValidatedTable, material: str, mat_cfg: dict,
         if run not in runs:
             raise InputError(f"config key {key}: run {run} is not in the table", source=src)
     confirmed = set(spec.confirmed_values)
-    printed = read_printed(Path(base_dir) / mat_cfg["data"], validated.table)
+    if printed is None:
+        printed = read_printed(Path(base_dir) / mat_cfg["data"], validated.table)
     # Stopping a run needs stronger evidence than the report's warning (family-wise 1 %, not 5 %).
     # A dropped digit stops the run too (29.4 for 129.4); the report's screen keeps its three kinds.
     flags = likely_typos(validated, spec, printed, family_alpha=0.01,
