@@ -34,6 +34,16 @@ def material_default(key: str):
     return material_property(key)["default"]
 
 
+def material_with_defaults(material: dict) -> dict:
+    """A copy of one ``materials`` entry with the schema's defaults filled in where keys are absent (an entry
+    of a validated config already has them; a bare entry built by a library caller or a test gets them here,
+    so that the schema stays the only source of defaults)."""
+    schema = load_schema()
+    material = copy.deepcopy(material)
+    _fill_defaults(material, schema["definitions"]["material"], schema)
+    return material
+
+
 def _key_path(parts) -> str:
     return ".".join(str(p) for p in parts) or "(top level)"
 

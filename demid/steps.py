@@ -164,7 +164,8 @@ class MaterialAnalysis:
     warnings: list[str]
 
 
-def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances, typo_stop: bool = True) -> MaterialAnalysis:
+def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
+                  typo_stop: bool = True) -> MaterialAnalysis:
     """One material from its transcribed table to every per-material output: validation and the
     transcription check, the fit, the scenario sets (and Pareto front), uncertainty and criticism."""
     from .criticism import criticize_material

@@ -11,18 +11,17 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
-import pytest
 
 PACKAGE = Path(__file__).resolve().parents[1] / "demid"
 
 
-def _module_name(path: Path) -> str:
-    parts = ["demid", *path.relative_to(PACKAGE).with_suffix("").parts]
+def _module_name(path: Path, root: Path) -> str:
+    parts = ["demid", *path.relative_to(root).with_suffix("").parts]
     return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
 
 
 def package_modules(root: Path = PACKAGE) -> dict[str, Path]:
-    return {_module_name(p): p for p in sorted(root.rglob("*.py"))}
+    return {_module_name(p, root): p for p in sorted(root.rglob("*.py"))}
 
 
 def _is_type_checking(test: ast.expr) -> bool:
@@ -126,18 +125,13 @@ def test_the_cycle_finder_finds_planted_circles(tmp_path):
     (pkg / "sub" / "c.py").write_text("from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    from ..d import z\n"
                                        "def g():\n    from .. import a\n")
     (pkg / "d.py").write_text("from .sub import c\n")
-    modules = {_module_name_in(pkg, p): p for p in sorted(pkg.rglob("*.py"))}
+    modules = package_modules(pkg)
     edges = import_edges(modules)
     assert edges["demid.sub.c"] == {"demid.a"}  # the TYPE_CHECKING import is no edge
     assert edges["demid.d"] == {"demid.sub.c"}
     assert circles(edges) == [["demid.a", "demid.b", "demid.sub.c"]]
     (pkg / "b.py").write_text("x = 1\n")
     assert circles(import_edges(modules)) == []
-
-
-def _module_name_in(pkg: Path, path: Path) -> str:
-    parts = ["demid", *path.relative_to(pkg).with_suffix("").parts]
-    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
 
 
 def test_no_import_circles_in_the_package():
