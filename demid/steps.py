@@ -38,11 +38,14 @@ class ValidatedMaterial:
 def validate_step(spec: MaterialSpec, data: str | Path, *, typo_stop: bool = True) -> ValidatedMaterial:
     """Validate one transcribed table, check it against the published statistics and flag likely
     typos (flags confirmed under ``confirmed_values`` are kept, marked confirmed).  The table's one full
-    validation: the workflow's start-up checks only that it can be read and has its columns.  With
+    validation, and the labels' mathtext: the workflow's start-up checks only that the table can be read
+    and has its columns.  With
     ``typo_stop`` (a hand-typed table, not a simulated wave) a likely slip stops with InputError."""
+    from .config import check_labels
     from .data import read_printed, refuse_likely_typos, validate_material
     from .transcription import check_material, likely_typos, transcription_frame
 
+    check_labels(spec.name, spec.material_config())
     validated = validate_material(spec.name, spec.material_config())
     printed = read_printed(data, validated.table)
     if typo_stop:

@@ -1,5 +1,5 @@
 """End to end with a stranger's study: braces in labels, an unreachable target in one of two materials,
-a response without target or scenario; a likely typo stops the run in its material's job, a mathtext slip before any job."""
+a response without target or scenario; a likely typo or a mathtext slip stops the run in its material's job, with one line."""
 
 from __future__ import annotations
 
@@ -106,9 +106,10 @@ def test_likely_typo_stops_the_workflow_in_the_material_job(study_dir):
                      rf"or confirm the value with confirmed_values: \[\{{run: {run}, column: y1\}}\]", line), line
 
 
-def test_mathtext_slip_stops_the_workflow_before_any_job(study_dir):
+def test_mathtext_slip_stops_the_workflow_in_the_material_job(study_dir):
     config = study_dir / "study.yaml"
     config.write_text(config.read_text().replace("a: {lower: 0.1, upper: 0.9}",
                                                  'a: {lower: 0.1, upper: 0.9, label: "$\\\\mu_{r$"}'))
     line = _one_line_stop(study_dir, config)
+    assert line in (study_dir / "logs" / "analyse_material" / "m.log").read_text().splitlines()  # from the job
     assert "config key materials.m.factors.a.label" in line and "mathtext" in line

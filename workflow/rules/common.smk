@@ -13,7 +13,8 @@ from demid.waves import check_simulated
 
 # Validate the config (schema with defaults, then cross-references) and that every table can be read
 # and has its columns before any job is scheduled: a config error stops here with one line, and
-# nothing is written.  Each table's cells, design and likely typos are checked once, in its job
+# nothing is written.  Each table's cells, design and likely typos, and the material's labels
+# (matplotlib's mathtext parser, the costliest check), are checked once, in its job
 # (demid.steps.validate_step), which stops with the same one line.
 CONFIG_SOURCE = ", ".join(str(p) for p in workflow.overwrite_configfiles) or "config.yaml"
 
@@ -24,7 +25,7 @@ try:
     _checked = validate_schema(dict(config), source=CONFIG_SOURCE)
     config.clear()
     config.update(_checked)
-    check_semantics(config, source=CONFIG_SOURCE)
+    check_semantics(config, source=CONFIG_SOURCE, labels=False)  # labels: in each material's job
     check_next_runs(config, source=CONFIG_SOURCE)
     check_simulated(config, source=CONFIG_SOURCE)
     for _name, _material in config["materials"].items():
