@@ -101,7 +101,7 @@ def _alpha(table, factors, alpha, design="ccd"):
         return alpha
     if design != "ccd":
         return 1.0
-    from .data import infer_coding
+    from .design_check import infer_coding
 
     coding = infer_coding(table, factors, {"type": "ccd"}, "table")
     return float(abs(coding.to_coded(table[factors].to_numpy(dtype=float))).max())
@@ -133,7 +133,7 @@ def _design_coding(table, factors, design, alpha, source):
     them, every run one of its points; run counts are not checked, a table may leave out failed runs), from
     the design's geometry, so a left-out run does not move the centre; a custom design is coded from its
     extremes.  The fit, the rank check and the criticism all use it."""
-    from .data import check_design, factor_slip_warning
+    from .design_check import check_design, factor_slip_warning
     from .design import Coding
 
     if design["type"] == "custom":
@@ -150,7 +150,7 @@ def _require_estimable(table, factors, response, coding, source):
     """Refuse a saturated or rank-deficient quadratic: its R² is 1 or arbitrary, its residuals meaningless."""
     import numpy as np
 
-    from .data import require_estimable
+    from .design_check import require_estimable
 
     coded = coding.to_coded(table[factors].to_numpy(dtype=float))
     require_estimable(coded, np.isfinite(table[response].to_numpy(dtype=float)), None, source, response, factors)
@@ -477,7 +477,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("criticize", help="what the quadratic surrogate gets wrong, why, and the gain of a fix")
     _table_arguments(p, "--response", "the response column to criticise")
-    from .config import material_property
+    from .schema import material_property
 
     run_order = material_property("run_order")
     p.add_argument("--run-order", choices=run_order["enum"], default=run_order["default"],

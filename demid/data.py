@@ -12,7 +12,6 @@ import io
 import difflib
 import math
 import re
-from itertools import combinations, product
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -20,9 +19,8 @@ import numpy as np
 import pandas as pd
 
 from .blocks import BLOCK_COLUMN, label_text
-from .design import (Coding, axial_distances, box_behnken_points, ccd_points, classify_points, factor_levels,
-                     model_matrix, model_units, quadratic_terms, rotatable_alpha, snap_to_factor_levels, term_name)
-from .precision import printed_quantum
+from .design import Coding, factor_levels, model_matrix, model_units, quadratic_terms, snap_to_factor_levels
+from .design_check import check_design, odd_level_values, require_estimable
 from .errors import InputError
 from .numbers import unusable_number
 from .spec import as_spec
@@ -183,16 +181,8 @@ def _is_number(text: str) -> bool:
     return True
 
 
-def read_table(path: Path | str, factors: list[str], responses: list[str],
-               status_column: str = "status") -> tuple[pd.DataFrame, list[str]]:
-    """Parse a design table into floats.  Returns (table, warnings).
-
-    Empty or non-finite response cells are allowed only for runs marked as
-    failed in ``status_column`` (or written explicitly as NaN/inf): those
-    responses become NaN and are excluded from the fit.
-    """
-    src = str(path)
-    header, rows, line_numbers = read_raw_numbered(path)
+def check_header(header: list[str], factors, responses, src: str) -> None:
+    """The header names each column once, and names the run, every factor and every response."""
     needed = ["run"] + list(factors) + list(responses)
     missing = [col for col in needed if col not in header]
     dup_cols = {h for h in header if header.count(h) > 1}
@@ -210,6 +200,19 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
         hint = (f"; found '{same[0]}', which differs only in upper/lower case" if same
                 else f"; found '{close[0]}' — misspelled?" if close else f"; columns found: {', '.join(header)}")
         raise InputError(f"missing column (expected columns: {', '.join(needed)}){hint}", source=src, column=col)
+
+
+def read_table(path: Path | str, factors: list[str], responses: list[str],
+               status_column: str = "status") -> tuple[pd.DataFrame, list[str]]:
+    """Parse a design table into floats.  Returns (table, warnings).
+
+    Empty or non-finite response cells are allowed only for runs marked as
+    failed in ``status_column`` (or written explicitly as NaN/inf): those
+    responses become NaN and are excluded from the fit.
+    """
+    src = str(path)
+    header, rows, line_numbers = read_raw_numbered(path)
+    check_header(header, factors, responses, src)
     idx = {h: i for i, h in enumerate(header)}
     has_status = status_column in idx
     warnings: list[str] = []
@@ -290,436 +293,6 @@ def read_printed(path: Path | str, table: pd.DataFrame) -> pd.DataFrame:
     printed["run"] = [str(int(parse_number(v))) for v in printed["run"]]
     order = {str(r): i for i, r in enumerate(printed["run"])}
     return printed.iloc[[order[str(int(r))] for r in table["run"]]].reset_index(drop=True)
-
-
-def _level_coding(values: np.ndarray, counts: np.ndarray, levels: np.ndarray,
-                  tol: float = 0.02) -> tuple[float, float] | None:
-    """Centre and unit that put the most runs on the nominal ``levels`` (coded units).
-
-    Every pair of distinct values is tried against every pair of levels; ties go to the most
-    symmetric placement (lowest and highest level found equally far from the centre), then the narrowest.  A single
-    mistyped cell sits on no level, so it cannot move the coding; no value is privileged by how
-    often it occurs (a 3x3 factorial or a CCD with one centre run is coded like any other).
-    """
-    best, best_key = None, None
-    for i, j in combinations(range(len(values)), 2):
-        for a, b in combinations(range(len(levels)), 2):
-            unit = (values[j] - values[i]) / (levels[b] - levels[a])
-            centre = values[i] - unit * levels[a]
-            coded = (values - centre) / unit
-            nearest = np.abs(coded[:, None] - levels[None, :]).argmin(axis=1)
-            on = np.abs(coded - levels[nearest]) <= tol
-            # Last, the narrowest placement: three values of a CCD factor are its factorial levels and the
-            # centre (a CCD has no factor without factorial points), not its axial levels.
-            key = (int(counts[on].sum()), -round(abs(coded[on].max() + coded[on].min()), 6), int(on.sum()),
-                   -round(float(np.abs(coded[on]).max()), 6))
-            if best_key is None or key > best_key:
-                best_key, best = key, (on, levels[nearest])
-    if best is None:
-        return None
-    on, assigned = best
-    vals, lev = values[on], assigned[on]
-    # Exact printed values where the design has them: the centre run, the +-1 pair.
-    centre = vals[lev == 0][0] if np.any(lev == 0) else None
-    if np.any(lev == 1) and np.any(lev == -1):
-        unit = (vals[lev == 1][0] - vals[lev == -1][0]) / 2.0
-        centre = centre if centre is not None else (vals[lev == 1][0] + vals[lev == -1][0]) / 2.0
-    else:
-        unit, fitted_centre = np.polyfit(lev, vals, 1)
-        centre = centre if centre is not None else fitted_centre
-    return float(centre), float(unit)
-
-
-def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str,
-                 log_factors=()) -> Coding:
-    """Centre and unit per factor from the design's geometry: the placement of the declared design's
-    nominal levels that puts the most runs on a level (see :func:`_level_coding`)."""
-    dtype = design["type"]
-    alpha = axial_distances(design.get("alpha", 1.0), len(factors))
-    z = model_units(table[factors].to_numpy(), factors, log_factors)
-    if dtype == "custom":
-        return Coding.from_levels(factors, z, alpha)
-    levels = factor_levels(dtype, alpha, len(factors))
-    centers, units = [], []
-    for i, f in enumerate(factors):
-        values, counts = np.unique(_round_to_scale(z[:, i], 11), return_counts=True)
-        found = _level_coding(values, counts, levels[i]) if len(values) > 1 else None
-        if found is None:
-            raise InputError(f"the factor takes the single value {values[0]:g} in every run; a {dtype} design "
-                             "varies each factor over at least two levels", source=src, column=f)
-        centers.append(found[0])
-        units.append(found[1])
-    return Coding(tuple(factors), tuple(centers), tuple(units))
-
-
-def _round_to_scale(x: np.ndarray, digits: int) -> np.ndarray:
-    """x rounded to ``digits`` decimals below its largest magnitude's leading digit (12 decimals for values
-    about 0.5 at digits 11): printed levels that differ only by round-off merge, whatever the factor's
-    units (a Hamaker constant of 1e-20 J as much as a friction coefficient)."""
-    scale = float(np.max(np.abs(x))) if x.size else 0.0
-    if not np.isfinite(scale) or scale == 0.0:
-        return x
-    quantum = 10.0 ** (np.floor(np.log10(scale)) - digits)
-    return np.round(x / quantum) * quantum
-
-
-def _ccd_alpha_of_table(table: pd.DataFrame, factors: list[str], log_factors=()) -> float | None:
-    """The axial distance the runs themselves show, when every factor has the five (or three) levels of
-    a CCD, symmetric about the centre, with one ratio of axial to factorial half-range; else None."""
-    z = model_units(table[factors].to_numpy(), factors, log_factors)
-    ratios = []
-    off_centre = np.zeros(z.shape, dtype=bool)
-    for i in range(len(factors)):
-        values = np.unique(_round_to_scale(z[:, i], 8))
-        if len(values) not in (3, 5):
-            return None
-        spread = values[-1] - values[0]
-        centre = values[len(values) // 2]
-        if not spread > 0 or abs(values[0] + values[-1] - 2 * centre) > 1e-3 * spread:
-            return None
-        inner = values[3] - values[1] if len(values) == 5 else spread
-        ratios.append(spread / inner)
-        off_centre[:, i] = np.abs(z[:, i] - centre) > 1e-3 * spread
-    if max(ratios) - min(ratios) > 1e-3 * max(ratios):
-        return None
-    # Three levels per factor without a run off the centre in one factor alone are a two-level factorial
-    # with centre runs, not a face-centred CCD: no alpha would make them a CCD.
-    if not np.any(off_centre.sum(axis=1) == 1):
-        return None
-    return float(np.mean(ratios))
-
-
-def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str, config_key: str | None,
-                 log_factors=(), level_tol: float = 0.02, counts: bool = True) -> tuple[Coding, np.ndarray]:
-    """Check that factor values sit on the declared design's levels, every run is a point of the design
-    and (``counts``) the point counts match.  ``config_key`` None: the design came from the command line."""
-    args = (table, factors, design, src, config_key, log_factors, level_tol, counts)
-    try:
-        return _check_design(*args)
-    except InputError as error:
-        if design.get("inferred"):
-            raise  # nothing was declared: the inferred design's own refusal is the line to show
-        _refuse_wrong_scale(*args)
-        shown = _ccd_alpha_of_table(table, factors, log_factors) if design["type"] == "ccd" else None
-        declared = float(design.get("alpha", 1.0))
-        # A wrong design.alpha puts every axial run off its level: name the key, not the first such cell.
-        # Counts are not required of the probe: a wrong centre-run count is said once alpha is right.
-        # Printed (rounded) levels blur the design's own value (1.41432 from 4 decimals, 1.42857 from 2):
-        # the rotatable alpha is told when the runs sit on its levels too.
-        if shown is not None:
-            rotatable = round(rotatable_alpha(len(factors)), 5)
-            shown = next((a for a in (rotatable, shown) if abs(a - shown) <= 0.05 * shown and _passes(
-                table, factors, {**design, "alpha": a}, src, config_key, log_factors, level_tol, False)), None)
-        if shown is None or abs(shown - declared) <= 1e-3 * shown:
-            raise error
-    geometry = ("the axial runs sit on the faces, at the factorial levels" if abs(shown - 1) < 1e-3 else
-                f"in every factor the axial levels lie {shown:.6g} times as far from the centre as the factorial ones")
-    key, fix = ((f"config key {config_key}.design.alpha", f"set design.alpha: {shown:.6g}") if config_key else
-                ("--alpha", f"pass --alpha {shown:.6g}"))
-    raise InputError(f"{key}: the runs form a CCD with alpha = {shown:.6g} ({geometry}), not the declared "
-                     f"{declared:g}; {fix}", source=src)
-
-
-def _refuse_wrong_scale(table, factors, design, src, config_key, log_factors, level_tol, counts) -> None:
-    """A factor whose levels are evenly spaced on the other scale (log10 when declared linear, linear when
-    declared log) puts its runs off every level: name its scale key, not the first such cell."""
-    for f in factors:
-        values = table[f].to_numpy(dtype=float)
-        if f in log_factors:
-            flipped, scale = tuple(g for g in log_factors if g != f), "linear"
-        elif np.all(values > 0):
-            flipped, scale = (*log_factors, f), "log"
-        else:
-            continue
-        if _passes(table, factors, design, src, config_key, flipped, level_tol, False):
-            where = f"config key {config_key}.factors.{f}.scale" if config_key else f"factor '{f}'"
-            fix = (f"set scale: {scale}" if scale == "log" else "remove scale: log") if config_key else \
-                "fit it in log10 units" if scale == "log" else "fit it in its own units"
-            raise InputError(f"{where}: the levels of {f} are evenly spaced on a {scale} scale, not the declared "
-                             f"{'log' if scale == 'linear' else 'linear'} one; {fix}", source=src)
-
-
-def _said(design: dict) -> str:
-    """How the design came to be checked against: declared (config, --design) or inferred from the table."""
-    return "inferred" if design.get("inferred") else "declared"
-
-
-def _level_tolerance(values: np.ndarray, unit: float, level_tol: float, log_scale: bool) -> float:
-    """Coded distance within which a value of one factor reads as a level: ``level_tol`` of that factor's coded
-    unit, or half the last printed digit of its column where printing rounded more than that (a CCD's axial
-    level 0.851 printed as 0.85).  Log-scale factors keep ``level_tol``: their print is in other units."""
-    if log_scale or not unit:
-        return level_tol
-    quantum = printed_quantum(values)
-    return max(level_tol, 0.5 * float(np.max(quantum, initial=0.0)) / abs(unit))
-
-
-def _passes(*args) -> bool:
-    try:
-        _check_design(*args)
-    except InputError:
-        return False
-    return True
-
-
-def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str, config_key: str | None,
-                  log_factors=(), level_tol: float = 0.02, counts: bool = True) -> tuple[Coding, np.ndarray]:
-    dtype = design["type"]
-    k = len(factors)
-    alpha = axial_distances(design.get("alpha", 1.0), k)
-    coding = infer_coding(table, factors, design, src, log_factors)
-    z = model_units(table[factors].to_numpy(), factors, log_factors)
-    coded = coding.to_coded(z)
-    if dtype == "custom":
-        return coding, np.array(["other"] * len(table))
-    levels_of = factor_levels(dtype, alpha, k)
-    for i, f in enumerate(factors):
-        levels = levels_of[i]
-        tolerance = _level_tolerance(table[f].to_numpy(dtype=float), coding.unit[i], level_tol, f in log_factors)
-        for r, c in zip(table["run"], coded[:, i]):
-            dist = np.abs(levels - c)
-            if dist.min() > tolerance:
-                nearest = levels[np.argmin(dist)]
-                near_actual = coding.to_actual(np.where(np.arange(len(factors)) == i, nearest, 0.0))[i]
-                if f in log_factors:
-                    near_actual = 10 ** near_actual
-                printed = table[f].to_numpy(dtype=float)[np.abs(coded[:, i] - nearest) <= level_tol]
-                near_actual = printed[0] if printed.size else near_actual  # as the other runs print it
-                found = table.loc[table["run"] == r, f].iloc[0]
-                raise InputError(f"value {found:g} is not a level of the {_said(design)} {dtype} design "
-                                 f"(coded {c:+.3f}); nearest valid level: {near_actual:.6g} (coded {nearest:+.4g})",
-                                 source=src, run=int(r), column=f)
-    snapped = snap_to_factor_levels(coded, levels_of)
-    types = classify_points(snapped, alpha)
-    _refuse_misplaced_points(table, factors, design, snapped, types, levels_of, coding, log_factors, src)
-    if not counts:
-        return coding, types
-    if dtype == "ccd":
-        expected = {"factorial": 2 ** k, "axial": 2 * k,
-                    "center": int(design.get("center_runs", 0))}
-        found = {t: int(np.sum(types == t)) for t in expected}
-        if found["axial"] == 0:
-            raise InputError(f"config key {config_key}.design: the table has no axial runs: its runs are a two-level "
-                             f"factorial with {found['center']} centre run(s), on which the squared terms of the "
-                             f"quadratic cannot be estimated; add the {2 * k} axial runs of a CCD, or run the 3^{k} "
-                             f"factorial (design type factorial)", source=src)
-        for t, n in expected.items():
-            if found[t] > n and found[t] % n == 0 and t != "center":
-                raise InputError(f"config key {config_key}.design: the table has {found[t]} {_POINT_WORDS[t]} runs "
-                                 f"where a {k}-factor CCD has {n}: replicated points? A replicated design is not a "
-                                 "plain ccd; declare design type custom to fit it as it is", source=src)
-        _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src)
-        for t, n in expected.items():
-            if found[t] != n:
-                key, what = (("design.center_runs", "") if t == "center" else
-                             ("design", f" with {_n_center_text(design)}"))
-                raise InputError(f"config key {config_key}.{key}: expected {n} {_POINT_WORDS[t]} run(s) for a "
-                                 f"{k}-factor CCD{what}, found {found[t]} ({len(table)} runs in the table)", source=src)
-    elif dtype == "factorial":
-        _refuse_incomplete_factorial(factors, snapped, config_key, src)
-        n_center = int(np.sum(types == "center"))
-        if n_center != int(design.get("center_runs", 0)):
-            raise InputError(f"config key {config_key}.design.center_runs: expected "
-                             f"{design.get('center_runs', 0)} centre runs, found {n_center}", source=src)
-    elif dtype == "box_behnken":
-        n_edge, n_center = int(np.sum(types == "edge")), int(np.sum(types == "center"))
-        edges = _expected_counts(design, k)["edge"]
-        if n_edge > edges and n_edge % edges == 0:
-            raise InputError(f"config key {config_key}.design: the table has {n_edge} edge-midpoint runs where a "
-                             f"{k}-factor Box-Behnken design has {edges}: replicated points? A replicated "
-                             "design is not a plain box_behnken; declare design type custom to fit it as it is",
-                             source=src)
-        _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src)
-        if n_center != int(design.get("center_runs", 0)):
-            raise InputError(f"config key {config_key}.design.center_runs: expected "
-                             f"{design.get('center_runs', 0)} centre runs, found {n_center}", source=src)
-    return coding, types
-
-
-def _design_points(design: dict, k: int) -> np.ndarray:
-    """The coded non-centre points of a CCD or Box-Behnken design, each once."""
-    if design["type"] == "ccd":
-        return ccd_points(k, axial_distances(design.get("alpha", 1.0), k), center_runs=0)
-    return box_behnken_points(k, 0)
-
-
-def _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src,
-                                       slips_only: bool = False) -> None:
-    """Each factorial, axial or edge point of a CCD or Box-Behnken design is run once.  A run on another run's
-    point with the design's point beside it empty is a factor value typed as another level (15 typed 5): the
-    point counts still match, and the two runs would be fitted as replicates.  Name both runs, the empty point
-    and, where one factor tells them apart, the column and the value that restores the design.  With
-    ``slips_only`` (a table whose failed runs may be left out) only that slip is refused."""
-    k = len(factors)
-    key = [tuple(np.round(p, 6)) for p in snapped]
-    expected = [tuple(np.round(p, 6)) for p in _design_points(design, k)]
-    rows_at = {p: [i for i, q in enumerate(key) if q == p] for p in expected}
-    missing = [p for p in expected if not rows_at[p]]
-    repeated = [p for p in expected if len(rows_at[p]) > 1]
-    if not missing and not repeated:
-        return
-    runs = table["run"].to_numpy()
-
-    def shown(point) -> str:
-        return ", ".join(f"{f} {_printed_level(table, f, j, snapped, point[j], coding, log_factors):.6g}"
-                         for j, f in enumerate(factors))
-
-    name = {"ccd": "CCD", "box_behnken": "Box-Behnken design"}[design["type"]]
-
-    def runs_at(point) -> tuple[list[int], str]:
-        at = [int(runs[i]) for i in rows_at[point]]
-        return at, (f"{'both' if len(at) == 2 else f'all {len(at)}'} are the point ({shown(point)}), which a {name} "
-                    "runs once")
-
-    # A slip moves one run: each repeat (a pair) has an empty point beside it.  More repeats than empty points,
-    # or a point run three times, is a replicated design, not a slip.
-    slip_like = len(repeated) <= len(missing) and (len(repeated) == 1 or not slips_only)
-    for point in repeated if slip_like else []:
-        near = [p for p in missing if sum(a != b for a, b in zip(p, point)) == 1]
-        if len(near) == 1 and len(rows_at[point]) == 2:
-            j = next(j for j in range(k) if near[0][j] != point[j])
-            value = _printed_level(table, factors[j], j, snapped, near[0][j], coding, log_factors)
-            at, what = runs_at(point)
-            raise InputError(f"{what}, and the design's point ({shown(near[0])}) has no run: in one of them "
-                             f"{factors[j]} is likely {value:.6g}, typed as another level", source=src, run=at,
-                             column=factors[j])
-    if slips_only:
-        return
-    if repeated:
-        at, what = runs_at(repeated[0])
-        tail = (f"; the design's point ({shown(missing[0])})" + (f" and {len(missing) - 1} more" if len(missing) > 1
-                else "") + " has no run" if missing else
-                "; a replicated point makes it another design: declare design type custom to fit it as it is")
-        raise InputError(f"{what}{tail}", source=src, run=at)
-    more = f" and {len(missing) - 1} more" if len(missing) > 1 else ""
-    raise InputError(f"the {name}'s point ({shown(missing[0])}){more} has no run ({len(table)} runs in the table); "
-                     "keep a failed run in the table with status failed, or declare design type custom to fit the "
-                     "runs as they are", source=src)
-
-
-def factor_slip_warning(table: pd.DataFrame, factors: list[str], design: dict, coding: Coding, src: str,
-                        log_factors=()) -> str | None:
-    """Where runs may be left out of a table (the command line), two runs on one point beside an empty point
-    are a factor value typed as another level — or a replicated point beside a run left out, which the table
-    cannot tell apart: a warning, not an error."""
-    if design["type"] not in _DESIGN_POINTS:
-        return None
-    levels = factor_levels(design["type"], design.get("alpha", 1.0), len(factors))
-    coded = coding.to_coded(model_units(table[factors].to_numpy(dtype=float), factors, log_factors))
-    snapped = snap_to_factor_levels(coded, levels)
-    try:
-        _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src,
-                                           slips_only=True)
-    except InputError as slip:
-        return f"{slip} (or a replicated point beside a run left out of the table)"
-    return None
-
-
-def _printed_level(table, f, j, snapped, level, coding, log_factors) -> float:
-    """A coded level of factor ``f`` in its units, as the runs at that level print it."""
-    printed = table[f].to_numpy(dtype=float)[np.isclose(snapped[:, j], level)]
-    if printed.size:
-        return float(printed[0])
-    point = np.zeros(snapped.shape[1])
-    point[j] = level
-    value = coding.to_actual(point)[j]
-    # the level an axial run alone holds, from an alpha printed to 5 decimals: 5 digits are all it knows
-    return float(f"{10 ** value if f in log_factors else value:.5g}")
-
-
-def _n_center_text(design: dict) -> str:
-    n = int(design.get("center_runs", 0))
-    return f"{n} centre run{'s' if n != 1 else ''}"
-
-
-def _refuse_incomplete_factorial(factors: list[str], snapped: np.ndarray, config_key: str, src: str) -> None:
-    """A 3^k factorial has every combination of the three levels.  Runs on a subset of them are another
-    design: a Box-Behnken design (the edge midpoints) is named; a two-level factorial with centre runs is
-    left to the rank check, which says why its squares cannot be fitted."""
-    k = len(factors)
-    present = {tuple(p) for p in np.round(snapped).astype(int).tolist() if any(p)}
-    full = {p for p in product((-1, 0, 1), repeat=k) if any(p)}
-    missing = sorted(full - present)
-    if not missing or all(0 not in p for p in present):
-        return
-    edges = {p for p in full if sum(v != 0 for v in p) == 2}
-    if present == edges:
-        raise InputError(f"config key {config_key}.design.type: the runs are the edge midpoints of a Box-Behnken "
-                         f"design (two factors at their extremes, the others at the centre), not the 3^{k} "
-                         f"factorial; set design type: box_behnken", source=src)
-    example = ", ".join(f"{f}={v:+d}" for f, v in zip(factors, missing[0]))
-    raise InputError(f"config key {config_key}.design: a 3^{k} factorial has {len(full)} non-centre points, the "
-                     f"table has {len(present)}; missing {len(missing)}, e.g. the point ({example}) in coded "
-                     f"units. Keep a failed run in the table with status failed, or declare the design that was "
-                     f"run (design type custom fits any runs)", source=src)
-
-
-_DESIGN_POINTS = {"ccd": ("factorial", "axial", "center"), "box_behnken": ("edge", "center")}
-_POINT_WORDS = {"factorial": "factorial", "axial": "axial", "center": "centre", "edge": "edge-midpoint"}
-
-
-def _expected_counts(design: dict, k: int) -> dict[str, int]:
-    centre = int(design.get("center_runs", 0))
-    if design["type"] == "ccd":
-        return {"factorial": 2 ** k, "axial": 2 * k, "center": centre}
-    return {"edge": 2 * k * (k - 1), "center": centre}
-
-
-def _refuse_misplaced_points(table, factors, design, snapped, types, levels, coding, log_factors, src) -> None:
-    """A run whose factor levels make no point of the declared design (a centre run with one factor at a
-    factorial level): one line naming the run and, where exactly one factor value would restore a point
-    the design is short of, that column and value (another run's level typed by mistake)."""
-    allowed = _DESIGN_POINTS.get(design["type"])
-    if allowed is None:
-        return
-    bad = np.flatnonzero(~np.isin(types, allowed))
-    if not len(bad):
-        return
-    i = int(bad[0])
-    counts = {t: int(np.sum(types == t)) for t in allowed}
-    short = {t for t, n in _expected_counts(design, len(factors)).items() if counts.get(t, 0) < n}
-    alpha = axial_distances(design.get("alpha", 1.0), len(factors))
-    repairs = []
-    for j, f in enumerate(factors):
-        for level in levels[j]:
-            point = snapped[i].copy()
-            point[j] = level
-            kind = classify_points(point[None, :], alpha)[0]
-            # a factorial, axial or edge point appears once in the design: one already present is no repair
-            present = kind != "center" and np.any(np.all(np.isclose(np.delete(snapped, i, axis=0), point), axis=1))
-            if level != snapped[i, j] and kind in short and not present:
-                value = coding.to_actual(point)[j]
-                repairs.append((f, 10 ** value if f in log_factors else value, kind))
-    where = ", ".join(f"{f} {table[f].iloc[i]:g}" for f in factors)
-    names = [_POINT_WORDS[t] for t in allowed]
-    article = "an" if names[0][0] in "aeiou" else "a"
-    what = (f"the point ({where}) is not {article} {', '.join(names[:-1])} or {names[-1]} point of the {_said(design)} "
-            f"{design['type']} design")
-    run = int(table["run"].iloc[i])
-    if len(repairs) == 1:
-        f, value, kind = repairs[0]
-        raise InputError(f"{what}; with {f} = {value:.6g} it would be the {_POINT_WORDS[kind]} run the "
-                         "design is short of (another run's level typed by mistake?)", source=src, run=run, column=f)
-    raise InputError(what, source=src, run=run)
-
-
-def _odd_level_values(table: pd.DataFrame, factors: list[str], snapped: np.ndarray, src: str) -> list[str]:
-    """A factor value that differs from the value the other runs at its level have (0.5003 where four others
-    read 0.5): close enough to be the level, so it is fitted as recorded, but likely a typo.  A level with one
-    run (an axial point) has nothing to compare with."""
-    out = []
-    for j, f in enumerate(factors):
-        values = table[f].to_numpy(dtype=float)
-        for level in np.unique(snapped[:, j]):
-            rows = np.flatnonzero(snapped[:, j] == level)
-            distinct, counts = np.unique(values[rows], return_counts=True)
-            if len(distinct) < 2 or counts.max() < 2 or (counts == counts.max()).sum() > 1:
-                continue
-            usual = distinct[np.argmax(counts)]
-            for i in rows[values[rows] != usual]:
-                out.append(f"{src}, run {int(table['run'].iloc[i])}, column '{f}': {values[i]:.10g}, where the other "
-                           f"{int(counts.max())} runs at this level read {usual:.10g} (fitted as recorded; a typo?)")
-    return out
 
 
 def implausible_targets(table: pd.DataFrame, targets: dict) -> dict[str, dict]:
@@ -821,64 +394,6 @@ def check_bound_slips(table: pd.DataFrame, material: str, factors_cfg: dict, src
                                      f"and looks like {value:g} with {SLIP_WORDS[kind]}; fix the bound", source=src)
 
 
-def require_estimable(coded: np.ndarray, usable: np.ndarray, point_types: np.ndarray | None, src: str,
-                      column: str, factors: list[str] | None = None) -> None:
-    """The full quadratic must be estimable, with residual degrees of freedom, from the usable runs.
-
-    Runs that all lie on one sphere about the design centre (a spherical CCD whose centre runs
-    failed or were never made) cannot tell the intercept from the squared terms; a fit would
-    return arbitrary coefficients without complaint.
-    """
-    k = coded.shape[1]
-    terms = quadratic_terms(k)
-    x = coded[usable]
-    n, p = len(x), len(terms)
-    if n <= p:
-        raise InputError(f"only {n} usable runs for a quadratic model with {p} coefficients; at least {p + 1} "
-                         f"are needed (with {p} the fit is saturated and says nothing about its error)",
-                         source=src, column=column)
-    radius = np.sum(x ** 2, axis=1)
-    # Printed (rounded) levels put a spherical design only *nearly* on its sphere: test the geometry,
-    # not the numerical rank, or the fit returns arbitrary coefficients from the rounding noise.
-    if np.ptp(radius) <= 0.01 * max(radius.max(), 1e-300):
-        why = ("every usable run lies at the same distance from the design centre, so the intercept and the "
-               "squared terms cannot be told apart")
-        n_centre = int(np.sum(point_types == "center")) if point_types is not None else 0
-        why += (f" (all {n_centre} centre run(s) failed); at least one centre run is needed" if n_centre
-                else "; the design needs at least one centre run")
-        raise InputError(f"the quadratic model cannot be estimated: {why}", source=src, column=column)
-    if point_types is not None and np.any(point_types == "axial"):
-        centre = point_types == "center"
-        if centre.any() and not np.any(centre & usable):
-            # Off the sphere the fit still runs, but its centre is extrapolated from runs at radius >= 1.
-            raise InputError(f"the quadratic model cannot be trusted: all {int(centre.sum())} centre run(s) failed, "
-                             "so its value at the design centre would be extrapolated from the factorial and axial "
-                             "runs; at least one centre run is needed", source=src, column=column)
-    matrix = model_matrix(x, terms)
-    _, singular, vt = np.linalg.svd(matrix, full_matrices=False)  # n x n left vectors: 800 MB at 10,000 runs
-    rank = int(np.sum(singular > 1e-8 * singular[0]))
-    if rank < p:
-        raise InputError(f"the quadratic model cannot be estimated (rank {rank} of {p} terms): "
-                         f"{_confounded_terms(vt[rank:], terms, x, factors)}", source=src, column=column)
-
-
-def _confounded_terms(null_space: np.ndarray, terms, coded: np.ndarray, factors: list[str] | None) -> str:
-    """Which terms the runs cannot tell apart, and what design change would separate them."""
-    factors = factors or [f"x{i + 1}" for i in range(coded.shape[1])]
-    names = ["intercept" if sum(t) == 0 else term_name(t, factors) for t in terms]
-    involved = [n for n, w in zip(names, np.abs(null_space).max(axis=0)) if w > 1e-6]
-    few = [f for i, f in enumerate(factors) if len(np.unique(np.round(coded[:, i], 6))) < 3]
-    listed = ", ".join(involved[:-1]) + f" and {involved[-1]}" if len(involved) > 1 else involved[0]
-    text = f"the usable runs cannot tell {listed} apart"
-    if few:
-        return text + f" ({', '.join(few)} at fewer than three levels: a squared term needs three)"
-    squares = [n for n in involved if n.endswith("^2")]
-    if len(squares) > 1:
-        return text + (" (every run away from the centre has its squared terms equal, as in a two-level factorial "
-                       "with centre runs); axial runs (a CCD) or a three-level factorial separate them")
-    return text
-
-
 def _block_notes(table: pd.DataFrame, factors: list[str], coding: Coding, log_factors, src: str) -> list[str]:
     """How the runs' blocks sit in the design (demid.blocks): a block term that cannot be estimated stops;
     a block without centre runs and non-orthogonal blocking are said."""
@@ -893,6 +408,14 @@ def _block_notes(table: pd.DataFrame, factors: list[str], coding: Coding, log_fa
         raise InputError(check.problems[0], source=src, column=BLOCK_COLUMN)
     notes = [n for n in check.notes if not (check.orthogonal and n.startswith("blocking is orthogonal"))]
     return [f"{src}, column '{BLOCK_COLUMN}': {note}" for note in notes]
+
+
+def check_table_columns(material: str, mat_cfg: dict, base_dir: Path | str = ".") -> None:
+    """The cheap part of :func:`validate_material`, for the workflow's start-up: the table can be read and its
+    header names the run, every factor and every response.  Its cells, its design and its likely typos are
+    checked once, in the material's job.  Raises InputError."""
+    header, _, _ = read_raw_numbered(Path(base_dir) / mat_cfg["data"])
+    check_header(header, mat_cfg["factors"], mat_cfg["responses"], str(Path(mat_cfg["data"])))
 
 
 def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") -> ValidatedTable:
@@ -923,7 +446,7 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
     levels = factor_levels(mat_cfg["design"]["type"], mat_cfg["design"].get("alpha", 1.0), len(factors))
     if len(levels[0]):
         snapped = snap_to_factor_levels(coded, levels)
-        warnings.extend(_odd_level_values(table, factors, snapped, src))
+        warnings.extend(odd_level_values(table, factors, snapped, src))
     for r in responses:
         require_estimable(coded, np.isfinite(table[r].to_numpy()), types, src, r, factors)
     for r in responses:
@@ -959,7 +482,7 @@ def _repair_explains(flag: dict, share: float = 0.2) -> bool:
 
 
 def refuse_likely_typos(validated: ValidatedTable, material: str, mat_cfg: dict,
-                        base_dir: Path | str = ".") -> list[dict]:
+                        base_dir: Path | str = ".", printed: pd.DataFrame | None = None) -> list[dict]:
     """Stop on a response cell that is far off the other runs' fit *and* reads like a digit-level slip.
 
     A value the user has confirmed under ``confirmed_values`` passes; the confirmed flags are
@@ -979,7 +502,8 @@ def refuse_likely_typos(validated: ValidatedTable, material: str, mat_cfg: dict,
         if run not in runs:
             raise InputError(f"config key {key}: run {run} is not in the table", source=src)
     confirmed = set(spec.confirmed_values)
-    printed = read_printed(Path(base_dir) / mat_cfg["data"], validated.table)
+    if printed is None:
+        printed = read_printed(Path(base_dir) / mat_cfg["data"], validated.table)
     # Stopping a run needs stronger evidence than the report's warning (family-wise 1 %, not 5 %).
     # A dropped digit stops the run too (29.4 for 129.4); the report's screen keeps its three kinds.
     flags = likely_typos(validated, spec, printed, family_alpha=0.01,

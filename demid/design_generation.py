@@ -172,7 +172,7 @@ def _check_blocks(design_type: str, n_factors: int, center_runs: int, blocks: in
 def _check_recoverable(sheet: RunSheet) -> None:
     """The pipeline checks the table against its design and infers the levels from it: make sure it accepts
     this sheet and recovers its coding."""
-    from .data import check_design
+    from .design_check import check_design
 
     frame = sheet.to_frame()
     names = [f.name for f in sheet.factors]

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import sys
+from typing import NoReturn
+
 
 #: Longest error line: room for about 300 characters of detail beside a file's path.  A cell or label quoted
 #: in a message (a million characters, a YAML alias expanded a billion times) is cut, and the line says how
@@ -47,3 +50,13 @@ class InputError(Exception):
             where.append(f"column '{self.column}'")
         prefix = ", ".join(where)
         return f"{prefix}: {self.detail}" if prefix else self.detail
+
+
+def stop_job(err: InputError) -> NoReturn:
+    """End a Snakemake job on bad input: the one line, in the job's log and on the terminal the workflow
+    runs in (the scripts send stderr to the log), exit status 1 and no traceback."""
+    line = f"demid: error: {err}"
+    print(line, file=sys.stderr, flush=True)
+    if sys.stderr is not sys.__stderr__ and sys.__stderr__ is not None:
+        print(line, file=sys.__stderr__, flush=True)
+    raise SystemExit(1)

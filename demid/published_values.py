@@ -90,7 +90,7 @@ class _Checker:
 def _schema_error(content: dict, where: str) -> None:
     import jsonschema
 
-    from .config import load_schema
+    from .schema import load_schema
 
     schema = load_schema(SCHEMA_PATH)
     errors = sorted(jsonschema.Draft7Validator(schema).iter_errors(content),
@@ -104,7 +104,7 @@ def _schema_error(content: dict, where: str) -> None:
     elif err.validator == "additionalProperties" and isinstance(err.instance, dict):
         allowed = list(err.schema.get("properties", {}))
         extra = [k for k in err.instance if k not in allowed]
-        from .config import decimal_comma_hint
+        from .schema import decimal_comma_hint
 
         message = f"unknown key '{extra[0]}'{_closest(extra[0], allowed)}{decimal_comma_hint(err)}"
     elif err.validator == "type":

@@ -111,15 +111,18 @@ class MaterialSpec:
     # ------------------------------------------------------------------ construction
     @classmethod
     def from_material(cls, name: str, material: dict, grid_points: int | None = None) -> "MaterialSpec":
-        """The spec of one (schema-validated) ``materials`` entry; keys the schema defaults may be absent."""
-        design = material.get("design") or {}
+        """The spec of one ``materials`` entry; keys the schema gives defaults may be absent (filled from it)."""
+        from .schema import material_with_defaults
+
+        # The schema requires a design; a bare entry without one (library callers) is read as a CCD.
+        material = material_with_defaults(material if "design" in material else {**material, "design": {"type": "ccd"}})
+        design = material["design"]
         factors = tuple(
-            Factor(f, float(c["lower"]), float(c["upper"]), c.get("scale", "linear") == "log",
-                   c.get("label") or f, c.get("unit", "-"))
+            Factor(f, float(c["lower"]), float(c["upper"]), c["scale"] == "log", c.get("label") or f, c["unit"])
             for f, c in material["factors"].items())
         responses = tuple(
             Response(r, float(c["target"]) if c.get("target") is not None else None, c.get("label") or r,
-                     c.get("unit", "-"), c.get("sigma"), c.get("sigma_rel"), c.get("tolerance"),
+                     c["unit"], c.get("sigma"), c.get("sigma_rel"), c.get("tolerance"),
                      c.get("tolerance_abs"), c.get("discrepancy"))
             for r, c in (material.get("responses") or {}).items())
         scenarios = tuple(
@@ -132,8 +135,8 @@ class MaterialSpec:
         published = {r: c["published"] for r, c in (material.get("responses") or {}).items() if c.get("published")}
         return cls(
             name=name, label=material.get("label") or name, data=material.get("data", ""),
-            design_type=design.get("type", "ccd"), alpha=float(design.get("alpha", 1.0)),
-            center_runs=int(design.get("center_runs", 0)), factors=factors, responses=responses,
+            design_type=design["type"], alpha=float(design["alpha"]),
+            center_runs=int(design["center_runs"]), factors=factors, responses=responses,
             scenarios=scenarios, reference_point=material.get("reference_point") or None, pareto=pareto,
             grid_points=grid_points, paper_figure=material.get("paper_figure"),
             _published=copy.deepcopy(published), _material=copy.deepcopy(material), next_runs=next_runs)
@@ -218,11 +221,7 @@ class MaterialSpec:
     def run_order(self) -> str:
         """Declared order of the ``run`` column: ``performed`` (drift is tested where the order can be
         believed) or ``unknown`` (never tested)."""
-        if "run_order" in self._material:
-            return self._material["run_order"]
-        from .config import material_default
-
-        return material_default("run_order")
+        return self._material["run_order"]
 
     @cached_property
     def confirmed_values(self) -> tuple[tuple[int, str], ...]:

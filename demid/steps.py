@@ -35,14 +35,21 @@ class ValidatedMaterial:
     coding: Coding  # the design coding validation inferred; the fit and criticism reuse it
 
 
-def validate_step(spec: MaterialSpec, data: str | Path) -> ValidatedMaterial:
+def validate_step(spec: MaterialSpec, data: str | Path, *, typo_stop: bool = True) -> ValidatedMaterial:
     """Validate one transcribed table, check it against the published statistics and flag likely
-    typos (flags confirmed under ``confirmed_values`` are kept, marked confirmed)."""
-    from .data import read_printed, validate_material
+    typos (flags confirmed under ``confirmed_values`` are kept, marked confirmed).  The table's one full
+    validation, and the labels' mathtext: the workflow's start-up checks only that the table can be read
+    and has its columns.  With
+    ``typo_stop`` (a hand-typed table, not a simulated wave) a likely slip stops with InputError."""
+    from .config import check_labels
+    from .data import read_printed, refuse_likely_typos, validate_material
     from .transcription import check_material, likely_typos, transcription_frame
 
+    check_labels(spec.name, spec.material_config())
     validated = validate_material(spec.name, spec.material_config())
     printed = read_printed(data, validated.table)
+    if typo_stop:
+        refuse_likely_typos(validated, spec.name, spec.material_config(), printed=printed)
     checks = check_material(validated, spec, printed)
     typos = likely_typos(validated, spec, printed)
     for flag in typos:
@@ -160,7 +167,8 @@ class MaterialAnalysis:
     warnings: list[str]
 
 
-def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances) -> MaterialAnalysis:
+def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
+                  typo_stop: bool = True) -> MaterialAnalysis:
     """One material from its transcribed table to every per-material output: validation and the
     transcription check, the fit, the scenario sets (and Pareto front), uncertainty and criticism."""
     from .criticism import criticize_material
@@ -169,7 +177,7 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances)
     from .surrogate import fit_frames, fit_material, surrogates_from_frame
     from .uncertainty import analyse_material
 
-    validated = validate_step(spec, data)
+    validated = validate_step(spec, data, typo_stop=typo_stop)
     table = as_stored(validated.table)
     fitted = fit_material(table, spec, coding=validated.coding)
     fits = fit_frames(fitted)

@@ -548,7 +548,7 @@ def fit_material(table: pd.DataFrame, material, coding: Coding | None = None) ->
     ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry); ``coding``
     is the one validation inferred (None: inferred here the same way).
     """
-    from .data import infer_coding
+    from .design_check import infer_coding
     from .spec import as_spec
 
     spec = as_spec(material)

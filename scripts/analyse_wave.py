@@ -7,7 +7,7 @@ sys.stderr = open(snakemake.log[0], "w", encoding="utf-8")  # noqa: F821
 
 import pandas as pd  # noqa: E402
 
-from demid.errors import InputError  # noqa: E402
+from demid.errors import InputError, stop_job  # noqa: E402
 from demid.steps import material_step, write_material_analysis  # noqa: E402
 from demid.waves import wave_spec  # noqa: E402
 
@@ -15,9 +15,9 @@ inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: 
 domain = pd.read_csv(inp.domain) if "domain" in inp.keys() else None
 spec = wave_spec(params.spec, inp.data, domain)
 try:  # e.g. too many failed runs for the quadratic: one line naming the wave's table, not a traceback
-    result = material_step(spec, inp.data, z=params.z, tolerances=params.tolerances)
+    result = material_step(spec, inp.data, z=params.z, tolerances=params.tolerances, typo_stop=False)
 except InputError as err:
-    sys.exit(f"demid: error: {err}")
+    stop_job(err)
 for warning in result.warnings:
     print(f"warning: {warning}", file=sys.stderr)
 write_material_analysis(result, out)

@@ -143,3 +143,28 @@ def test_bad_input_is_one_clear_line(study_dir, name, mutate, expected):
         assert re.search(pattern, lines[0]), (pattern, lines[0])
     assert sha256(table_path) == before
     assert not (study_dir / "results").exists()
+
+
+def _error_lines(proc) -> list[str]:
+    return [ln for ln in (proc.stdout + proc.stderr).splitlines() if ln.startswith("demid: error:")]
+
+
+def test_cells_are_checked_once_in_the_job_and_the_header_at_start_up(study_dir):
+    """Start-up (dry runs too) reads each table's header only; the cells are validated in the material's job,
+    whose one line reaches the terminal and the job's log."""
+    table_path, config = study_dir / "data" / "m.csv", study_dir / "study.yaml"
+    text = table_path.read_text(encoding="utf-8")
+    table_path.write_text(_set_cell(text, 4, "y1", "12x.5"), encoding="utf-8")
+    dry = run_snakemake(study_dir, config, "-n")
+    assert dry.returncode == 0 and not _error_lines(dry), dry.stderr[-2000:]
+    proc = run_snakemake(study_dir, config)
+    lines = _error_lines(proc)
+    assert proc.returncode != 0 and "Traceback" not in proc.stdout + proc.stderr
+    assert len(lines) == 1 and re.search(r"data/m\.csv, run 4, column 'y1'.*12x\.5", lines[0]), lines
+    log = (study_dir / "logs" / "analyse_material" / "m.log").read_text(encoding="utf-8")
+    assert log.splitlines() == lines
+    assert not (study_dir / "results").exists()
+    table_path.write_text(text.replace("run,a,b,y1,y2", "run,a,b,y1,y_2"), encoding="utf-8")
+    dry = run_snakemake(study_dir, config, "-n")
+    lines = _error_lines(dry)
+    assert dry.returncode != 0 and len(lines) == 1 and "column 'y2'" in lines[0] and "y_2" in lines[0], lines

@@ -159,7 +159,7 @@ def test_fit_and_criticize_code_a_table_with_a_run_left_out_as_the_whole_design(
     import numpy as np
     import pandas as pd
 
-    from demid.data import infer_coding
+    from demid.design_check import infer_coding
 
     source = pd.read_csv(ROOT / "data" / "ccd" / "poraver.csv")
     design = {"type": "ccd", "alpha": 1.41421}

@@ -1,5 +1,5 @@
 """End to end with a stranger's study: braces in labels, an unreachable target in one of two materials,
-a response without target or scenario; a likely typo or a mathtext slip stops the run before any job."""
+a response without target or scenario; a likely typo or a mathtext slip stops the run in its material's job, with one line."""
 
 from __future__ import annotations
 
@@ -89,7 +89,7 @@ def _one_line_stop(study_dir, config):
     return lines[0]
 
 
-def test_likely_typo_stops_the_workflow_before_any_job(study_dir):
+def test_likely_typo_stops_the_workflow_in_the_material_job(study_dir):
     path = study_dir / "data" / "m.csv"
     lines = path.read_text().splitlines()
     col = lines[0].split(",").index("y1")
@@ -100,14 +100,16 @@ def test_likely_typo_stops_the_workflow_before_any_job(study_dir):
     lines[6] = ",".join(cells)
     path.write_text("\n".join(lines) + "\n")
     line = _one_line_stop(study_dir, study_dir / "study.yaml")
+    assert line in (study_dir / "logs" / "analyse_material" / "m.log").read_text().splitlines()  # from the job
     assert re.search(rf"data/m\.csv, run {run}, column 'y1': {re.escape(cells[col])} looks like "
                      rf"{re.escape(format(float(original), 'g'))} with the decimal point shifted; fix the cell, "
                      rf"or confirm the value with confirmed_values: \[\{{run: {run}, column: y1\}}\]", line), line
 
 
-def test_mathtext_slip_stops_the_workflow_before_any_job(study_dir):
+def test_mathtext_slip_stops_the_workflow_in_the_material_job(study_dir):
     config = study_dir / "study.yaml"
     config.write_text(config.read_text().replace("a: {lower: 0.1, upper: 0.9}",
                                                  'a: {lower: 0.1, upper: 0.9, label: "$\\\\mu_{r$"}'))
     line = _one_line_stop(study_dir, config)
+    assert line in (study_dir / "logs" / "analyse_material" / "m.log").read_text().splitlines()  # from the job
     assert "config key materials.m.factors.a.label" in line and "mathtext" in line

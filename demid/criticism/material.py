@@ -143,7 +143,7 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
     are ``coding``, the one validation inferred (None: inferred here the same way), and ``fits``
     (response -> its SurrogateFit in that coding; None: fitted here).
     """
-    from ..data import infer_coding
+    from ..design_check import infer_coding
 
     spec = as_spec(material)
     n = spec.grid_points if n is None else n

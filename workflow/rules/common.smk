@@ -4,7 +4,7 @@ from pathlib import Path
 
 from demid.config import check_semantics, load_yaml, validate_schema
 from demid.io import content_digest, copy_files
-from demid.data import refuse_likely_typos, validate_material
+from demid.data import check_table_columns
 from demid.errors import InputError
 from demid.next_wave import check_next_runs
 from demid.sampling import uses_grid
@@ -12,8 +12,11 @@ from demid.spec import MaterialSpec
 from demid.waves import check_simulated
 
 
-# Validate the config (schema with defaults, then cross-references) and every table before
-# any job is scheduled: a user error stops here with one line, and nothing is written.
+# Validate the config (schema with defaults, then cross-references) and that every table can be read
+# and has its columns before any job is scheduled: a config error stops here with one line, and
+# nothing is written.  Each table's cells, design and likely typos, and the material's labels
+# (matplotlib's mathtext parser, the costliest check), are checked once, in its job
+# (demid.steps.validate_step), which stops with the same one line.
 CONFIG_SOURCE = ", ".join(str(p) for p in workflow.overwrite_configfiles) or "config.yaml"
 
 try:
@@ -23,13 +26,13 @@ try:
     _checked = validate_schema(dict(config), source=CONFIG_SOURCE)
     config.clear()
     config.update(_checked)
-    check_semantics(config, source=CONFIG_SOURCE)
+    check_semantics(config, source=CONFIG_SOURCE, labels=False)  # labels: in each material's job
     check_next_runs(config, source=CONFIG_SOURCE)
     check_simulated(config, source=CONFIG_SOURCE)
     for _name, _material in config["materials"].items():
         if _material.get("simulation"):  # its tables do not exist yet: each wave validates its own
             continue
-        refuse_likely_typos(validate_material(_name, _material), _name, _material)
+        check_table_columns(_name, _material)
 except InputError as err:
     sys.exit(f"demid: error: {err}")
 
