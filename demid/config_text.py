@@ -10,7 +10,7 @@ from __future__ import annotations
 import difflib
 from pathlib import Path
 
-from .config import load_schema, load_yaml
+from .schema import load_schema, load_yaml
 from .errors import InputError
 
 #: The key that asks Snakemake to evaluate a YAML file as a YTE template.
