@@ -21,6 +21,11 @@ def waves_max(material: dict) -> int:
     return int((material.get("waves") or {}).get("max", 1))
 
 
+def stops_early(material: dict) -> bool:
+    """Whether the stop advice ends the material's waves before ``waves.max`` (``waves.stop_early``)."""
+    return bool((material.get("waves") or {}).get("stop_early", True))
+
+
 def first_wave(spec: MaterialSpec, seed: int) -> pd.DataFrame:
     """Wave 1 of a simulated material: its declared design over the factor bounds, in randomised order
     (:func:`demid.design_generation.generate_sheet`, as ``demid design --seed`` writes it).  Columns

@@ -207,7 +207,7 @@ def _study(folder: Path, centre_run: int) -> Path:
     folder.mkdir(parents=True, exist_ok=True)
     config = {"grid_points": 41, "sweep_tolerances": [0.02, 0.05],
               "materials": {"m": _material(_command(f"--fail exit:{centre_run}"),
-                                           waves={"max": 2, "next_runs": {"count": 7}}),
+                                           waves={"max": 2, "stop_early": False, "next_runs": {"count": 7}}),
                             "n": _material(_command("--fail flaky:2"))}}
     config["materials"]["n"]["simulation"]["retries"] = 1
     config["materials"]["n"]["factors"]["a"]["label"] = "$(touch LABEL_INJECTED)"
@@ -230,7 +230,10 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     assert first.returncode == 0, first.stderr[-3000:]
     results = study / "results"
 
-    # Two waves: wave 2 simulated wave 1's proposals, numbered on, and was analysed over wave 1's box.
+    # Two waves (stop_early: false): wave 2 simulated wave 1's proposals, numbered on, and was analysed over
+    # wave 1's box; wave 1's decision carries the estimate the stop advice reads, whatever it says.
+    decision = json.loads((results / "waves/1/next_wave/m/decision.json").read_text(encoding="utf-8"))
+    assert set(decision) == {"stop", "reason", "value"} and decision["value"]["count"] == 7
     proposals = pd.read_csv(results / "waves/1/next_wave/m/next_runs.csv")
     domain = pd.read_csv(results / "waves/1/next_wave/m/next_domain.csv")
     table = pd.read_csv(results / "waves/2/data/m.csv")

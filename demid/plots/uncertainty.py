@@ -35,7 +35,7 @@ def _panel_axes(fig, n_panels: int, nrow: int, ncol: int):
     """The first ``n_panels`` axes of an nrow x ncol grid; the rest hidden."""
     grid = fig.subplots(nrow, ncol, squeeze=False).ravel()
     for ax in grid[n_panels:]:
-        ax.set_visible(False)
+        fig.delaxes(ax)  # an empty cell of the grid, not a panel
     return grid[:n_panels]
 
 

@@ -150,7 +150,7 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "upper": ("unit of the factor", "Upper end of the refocused search range for the next wave."),
     },
     "verdicts": {
-        "strict_lower": (FACTOR_UNIT, "Lower end of the strict admissible interval (Table 3): the set if surrogate "
+        "strict_lower": (FACTOR_UNIT, "Lower end of the strict admissible interval (identifiability.csv): the set if surrogate "
                                       "and measurements were exact."),
         "strict_upper": (FACTOR_UNIT, "Upper end of the strict admissible interval."),
         "plausible_lower": (FACTOR_UNIT, "Lower end of the plausible interval: |ŷ − y*| ≤ z·√(se² + σ² + δ²) for "

@@ -210,8 +210,8 @@ class ReportSections:
         from .summary import VERDICT_TEXT, combination_lines, criticism_lines, in_order
 
         parts = [self._md("## Summary\n\nPer factor and observable scenario the **plausible interval** is judged; "
-                          "the strict interval (Table 3: the set if surrogate and measurements were exact) stands "
-                          "beside it. **Plausible set**: " + PLAUSIBLE_DEFINITION + " Verdicts: " + VERDICT_TEXT
+                          "the strict interval (the set if surrogate and measurements were exact: section "
+                          f"*Admissible sets*{self._paper('Table 3')}) stands beside it. **Plausible set**: " + PLAUSIBLE_DEFINITION + " Verdicts: " + VERDICT_TEXT
                           + " **uninformative observable**: every observable of the scenario leaves at least 99 % "
                           "of the search range admissible on its own (its band covers its whole simulated range).")]
         verdicts_all = self._csv("verdicts.csv")

@@ -78,7 +78,8 @@ def material_spec(wildcards):
 def material_spec_digest(wildcards):
     """The material's settings and the content of its table: either edited (even while the job runs)
     reruns the job."""
-    return f"{SPECS[wildcards.material].digest}:{content_digest(material_data(wildcards))}"
+    table = config["materials"][wildcards.material].get("data")  # none for a simulated material: its runs
+    return f"{SPECS[wildcards.material].digest}:{content_digest(table) if table else ''}"  # are jobs of their own
 
 
 def published_digest(wildcards=None):

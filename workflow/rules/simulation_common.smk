@@ -6,7 +6,7 @@ import json
 import pandas as pd
 
 from demid.simulation import Simulation, run_parameters
-from demid.waves import first_wave, next_wave_runs, waves_max
+from demid.waves import first_wave, next_wave_runs, stops_early, waves_max
 
 SIMULATED = [m for m in MATERIALS if config["materials"][m].get("simulation")]
 SIMULATIONS = {m: Simulation.from_material(config["materials"][m]) for m in SIMULATED}
@@ -85,7 +85,7 @@ def last_wave(material):
     wave = 1
     while wave < waves_max(config["materials"][material]):
         decision = checkpoints.propose_wave.get(material=material, wave=str(wave)).output.decision
-        if json.loads(Path(decision).read_text(encoding="utf-8"))["stop"]:
+        if stops_early(config["materials"][material]) and json.loads(Path(decision).read_text(encoding="utf-8"))["stop"]:
             break
         wave += 1
     return wave
