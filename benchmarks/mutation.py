@@ -46,8 +46,8 @@ ROOT = Path(__file__).resolve().parents[1]
 # Module -> (functions to mutate, tests that guard them).  ``functions``: qualified names
 # ("Class.method" or "function"); None = every function and method in the file.
 # ``tests``: pytest arguments (files, node ids, -k expressions), run from the repository root.
-# the fast tests of tests/test_stranger_tables.py that read and validate tables (the others run criticism)
-_READ_TABLE_TESTS = [f"tests/test_stranger_tables.py::{name}" for name in (
+# the fast tests of tests/inputs/test_stranger_tables.py that read and validate tables (the others run criticism)
+_READ_TABLE_TESTS = [f"tests/inputs/test_stranger_tables.py::{name}" for name in (
     "test_valid_designs_validate_and_are_coded_by_their_geometry",
     "test_mistyped_factor_cell_is_located_not_absorbed_into_the_coding",
     "test_spherical_ccd_whose_centre_runs_all_failed_is_refused",
@@ -59,29 +59,29 @@ _READ_TABLE_TESTS = [f"tests/test_stranger_tables.py::{name}" for name in (
 TABLE: dict[str, dict] = {
     "demid/sampling/grid.py": {
         "functions": None,
-        "tests": ["tests/test_set_estimators.py", "tests/test_admissibility.py", "tests/test_core_contracts.py",
-                  "tests/test_uncertainty.py::test_plane_band_fraction_matches_sampling",
-                  "tests/test_uncertainty.py::test_fraction_with_error_reports_grid_error_and_3d_shell",
-                  "tests/test_uncertainty.py::test_polish_spans_thin_set_without_admissible_nodes"],
+        "tests": ["tests/sampling/test_set_estimators.py", "tests/sampling/test_admissibility.py", "tests/test_core_contracts.py",
+                  "tests/uncertainty/test_uncertainty.py::test_plane_band_fraction_matches_sampling",
+                  "tests/uncertainty/test_uncertainty.py::test_fraction_with_error_reports_grid_error_and_3d_shell",
+                  "tests/uncertainty/test_uncertainty.py::test_polish_spans_thin_set_without_admissible_nodes"],
     },
     "demid/sampling/domain.py": {
         "functions": None,
-        "tests": ["tests/test_set_estimators.py", "tests/test_admissibility.py", "tests/test_core_contracts.py",
-                  "tests/test_uncertainty.py", "tests/test_edges.py::test_at_bound_of_closed_form_exact_sets",
-                  "tests/test_edges.py::test_at_bound_tolerance_is_relative_to_the_range_and_in_log_units"],
+        "tests": ["tests/sampling/test_set_estimators.py", "tests/sampling/test_admissibility.py", "tests/test_core_contracts.py",
+                  "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_edges.py::test_at_bound_of_closed_form_exact_sets",
+                  "tests/criticism/test_edges.py::test_at_bound_tolerance_is_relative_to_the_range_and_in_log_units"],
     },
     "demid/sampling/residuals.py": {
         "functions": ["relative_residuals"],
-        "tests": ["tests/test_admissibility.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/sampling/test_admissibility.py", "tests/test_core_contracts.py"],
     },
     "demid/sampling/sobol.py": {
         "functions": ["sobol_admissible_set", "_extreme_points", "sobol_fraction"],
-        "tests": ["tests/test_set_estimators.py", "tests/test_uncertainty.py", "tests/test_admissibility.py",
+        "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/sampling/test_admissibility.py",
                   "tests/test_core_contracts.py"],
     },
     "demid/sampling/polish.py": {
         "functions": ["_start_points", "_polish", "polish_spans"],
-        "tests": ["tests/test_set_estimators.py", "tests/test_uncertainty.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/test_core_contracts.py"],
     },
     "demid/surrogate.py": {
         "functions": None,
@@ -89,53 +89,53 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/models.py": {
         "functions": ["infer_axial_distance", "_orth", "_residualize", "_hat", "_boxcox", "_inv_boxcox", "_aicc"],
-        "tests": ["tests/test_statistics_known_answers.py", "tests/test_criticism.py", "tests/test_core_contracts.py",
+        "tests": ["tests/test_statistics_known_answers.py", "tests/criticism/test_criticism.py", "tests/test_core_contracts.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/catalogue.py": {
         "functions": None,
         # the level-2 and figure tests exercise other functions; the 3-factor planted effects repeat the
         # 2-factor ones at four times the cost
-        "tests": ["tests/test_criticism.py", "tests/test_core_contracts.py",
+        "tests": ["tests/criticism/test_criticism.py", "tests/test_core_contracts.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/transcription/printed.py": {
         "functions": ["PrintedValue.half_width", "PrintedValue.agrees", "PrintedValue.misfit", "_decimals_of",
                       "parse_printed", "_positional", "_printed_column", "_precision", "_irregularity"],
-        "tests": ["tests/test_transcription.py", "tests/test_statistics_known_answers.py",
-                  "tests/test_transcription_printed_inputs.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/transcription/test_transcription.py", "tests/test_statistics_known_answers.py",
+                  "tests/transcription/test_transcription_printed_inputs.py", "tests/test_core_contracts.py"],
     },
     "demid/transcription/typos.py": {
         "functions": None,
-        "tests": ["tests/test_transcription.py", "tests/test_likely_typos.py", "tests/test_typo_stop.py",
+        "tests": ["tests/transcription/test_transcription.py", "tests/transcription/test_likely_typos.py", "tests/transcription/test_typo_stop.py",
                   "tests/test_reported_numbers.py", "tests/test_core_contracts.py"],
     },
     "demid/sampling/exact.py": {
         "functions": None,
-        "tests": ["tests/test_exact_sets.py", "tests/test_reported_numbers.py", "tests/test_reference_point.py",
-                  "tests/test_set_estimators.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/sampling/test_exact_sets.py", "tests/test_reported_numbers.py", "tests/sampling/test_reference_point.py",
+                  "tests/sampling/test_set_estimators.py", "tests/test_core_contracts.py"],
     },
     "demid/sampling/evaluate.py": {
         "functions": None,
-        "tests": ["tests/test_exact_sets.py", "tests/test_reported_numbers.py", "tests/test_unreachable_targets.py",
-                  "tests/test_set_estimators.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/sampling/test_exact_sets.py", "tests/test_reported_numbers.py", "tests/criticism/test_unreachable_targets.py",
+                  "tests/sampling/test_set_estimators.py", "tests/test_core_contracts.py"],
     },
     "demid/criticism/level1.py": {
         "functions": None,
-        "tests": ["tests/test_criticism.py", "tests/test_reported_numbers.py", "tests/test_lone_runs.py",
-                  "tests/test_noise_free.py", "-knot 3f"],
+        "tests": ["tests/criticism/test_criticism.py", "tests/test_reported_numbers.py", "tests/criticism/test_lone_runs.py",
+                  "tests/criticism/test_noise_free.py", "-knot 3f"],
     },
     "demid/criticism/level2.py": {
         "functions": None,
-        "tests": ["tests/test_reported_numbers.py", "tests/test_criticism.py", "tests/test_edges.py",
-                  "tests/test_unreachable_targets.py", "-klevel2 or edge or reach"],
+        "tests": ["tests/test_reported_numbers.py", "tests/criticism/test_criticism.py", "tests/criticism/test_edges.py",
+                  "tests/criticism/test_unreachable_targets.py", "-klevel2 or edge or reach"],
     },
     "demid/criticism/verdict.py": {
         "functions": None,
         # the verdict's reported numbers and the fast honest-cause tests (the rate tests repeat them at 20x
         # the cost)
-        "tests": ["tests/test_reported_numbers.py", "tests/test_lone_runs.py", *[
-            f"tests/test_honest_causes.py::{name}" for name in (
+        "tests": ["tests/test_reported_numbers.py", "tests/criticism/test_lone_runs.py", *[
+            f"tests/criticism/test_honest_causes.py::{name}" for name in (
                 "test_misfit_without_a_catalogue_cause_is_unexplained_or_points_at_a_moved_run",
                 "test_noise_only_response_does_not_predict", "test_detectable_departure_has_its_power_by_simulation",
                 "test_unequal_scatter_resting_on_one_run_is_not_named", "test_true_outlier_is_not_renamed_a_slip",
@@ -147,14 +147,14 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/run_order.py": {
         "functions": None,
-        "tests": ["tests/test_run_order.py", "tests/test_reported_numbers.py", "tests/test_criticism.py",
+        "tests": ["tests/criticism/test_run_order.py", "tests/test_reported_numbers.py", "tests/criticism/test_criticism.py",
                   "-kdrift or run_order or order"],
     },
     "demid/uncertainty/ranking.py": {
         "functions": None,
         "tests": ["tests/test_reported_numbers.py::test_ranking_reports_gain_fraction_and_contraction_in_closed_form",
                   "tests/test_reported_numbers.py::test_next_measurement_advice_quotes_the_gains_and_fractions_of_the_ranking",
-                  "tests/test_uncertainty.py", "tests/test_unreachable_targets.py"],
+                  "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_unreachable_targets.py"],
     },
     "demid/next_wave.py": {
         "functions": None,
@@ -167,29 +167,29 @@ TABLE: dict[str, dict] = {
     },
     "demid/uncertainty/posterior.py": {
         "functions": None,
-        "tests": ["tests/test_uncertainty.py"],
+        "tests": ["tests/uncertainty/test_uncertainty.py"],
     },
     "demid/uncertainty/robust.py": {
         "functions": None,
-        "tests": ["tests/test_uncertainty.py", "tests/test_set_estimators.py"],
+        "tests": ["tests/uncertainty/test_uncertainty.py", "tests/sampling/test_set_estimators.py"],
     },
     "demid/paper.py": {
         "functions": None,
-        "tests": ["tests/test_paper.py"],
+        "tests": ["tests/report/test_paper.py"],
     },
     "demid/transcription/engine.py": {
         "functions": ["_statistics", "_lack_of_fit_p"],
-        "tests": ["tests/test_transcription.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/transcription/test_transcription.py", "tests/test_core_contracts.py"],
     },
     "demid/data.py": {
         "functions": ["parse_number", "read_table", "infer_coding", "check_design", "check_bounds",
                       "validate_material"],
-        "tests": ["tests/test_data.py", "tests/test_core_contracts.py", *_READ_TABLE_TESTS],
+        "tests": ["tests/inputs/test_data.py", "tests/test_core_contracts.py", *_READ_TABLE_TESTS],
     },
     "demid/design.py": {
         "functions": None,
-        "tests": ["tests/test_design.py", "tests/test_data.py", "tests/test_core_contracts.py",
-                  "tests/test_stranger_tables.py::test_valid_designs_validate_and_are_coded_by_their_geometry"],
+        "tests": ["tests/inputs/test_design.py", "tests/inputs/test_data.py", "tests/test_core_contracts.py",
+                  "tests/inputs/test_stranger_tables.py::test_valid_designs_validate_and_are_coded_by_their_geometry"],
     },
     "demid/io.py": {
         "functions": None,

@@ -21,7 +21,7 @@ design centre (clipped to the box: the ridge point restricted to the region).  T
   stationary, as the textbooks define it.
 
 Verified against Montgomery, *Design and Analysis of Experiments*, Example 11.2
-(a maximum) and closed-form saddles and ridges (``tests/test_canonical.py``).
+(a maximum) and closed-form saddles and ridges (``tests/combinations/test_canonical.py``).
 """
 
 from __future__ import annotations

@@ -141,7 +141,7 @@ def paper_comparison(published: dict, surrogate_fit: pd.DataFrame, identifiabili
     ``material, scenario, tolerance, feasible_fraction_pct, factor, lower, upper, width``;
     ``pareto_intervals[material]`` has ``factor, lower, upper, n_points``.  A number whose
     reproduction is missing gets NaN and fails.  Verified against hand-made tables in
-    ``tests/test_paper.py``.
+    ``tests/report/test_paper.py``.
     """
     out = _Rows()
     fits = surrogate_fit.set_index(["material", "response"])

@@ -30,7 +30,7 @@ a quadratic restricted to a line is a quadratic in one variable, so along every
 slice the admissible interval follows from its roots (:func:`exact_set_2d`).
 The results were then checked with :func:`demid.admissibility.admissible_set`
 on the pipeline's grids (1001 per axis in 2-D, 201 in 3-D); see
-``tests/test_reconstruct.py`` and ``tests/test_paper.py``.
+``tests/test_reconstruct.py`` and ``tests/report/test_paper.py``.
 """
 
 from __future__ import annotations

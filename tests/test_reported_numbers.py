@@ -15,7 +15,7 @@ from scipy import optimize, special, stats
 from demid.criticism import criticize
 
 from .generators import FACTORS, ccd_table
-from .test_criticism import quadratic_ols
+from .criticism.test_criticism import quadratic_ols
 
 GRID_STEP = 0.01  # the lambda grid the interval is read on
 
@@ -109,7 +109,7 @@ def test_typo_flag_prediction_and_its_error_from_the_other_runs(tmp_path, seed):
     from demid.transcription import likely_typos
 
     from .helpers import make_ccd_table
-    from .test_likely_typos import _cfg
+    from .transcription.test_likely_typos import _cfg
 
     table = make_ccd_table(lambda x: {"y": 100 + 20 * x[:, 0] - 3 * x[:, 1] + 8 * x[:, 0] ** 2},
                            [0.1, 1], [0.9, 11], noise=0.3, seed=seed, decimals=2)

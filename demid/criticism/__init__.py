@@ -88,7 +88,7 @@ words), ``verdict`` (what the evidence supports) and ``material`` (the per-mater
 
 Verified against statsmodels (``compare_f_test``, ``outlier_test``, OLS/WLS
 log-likelihoods, influence PRESS residuals, ``eval_measures.aicc``) and scipy
-(``special.boxcox``, ``optimize``) in ``tests/test_criticism.py``; power and
+(``special.boxcox``, ``optimize``) in ``tests/criticism/test_criticism.py``; power and
 false-alarm rates against oracle tests in ``benchmarks/criticism_power.py``.
 """
 

@@ -42,7 +42,7 @@ _ONE_RUN = ("outlier", "factor_level")
 #: A drift and a step both say the response changed with run order: they are one candidate kind, and
 #: between them the better fit is named (the step paying for its change-point, level1.step_price).  Kept
 #: apart, a 14-SD drift over 13 runs that happens to fit a step at run 9 as well was reported ambiguous
-#: (tests/test_criticism.py); the message of either says what changed and suggests a block column.
+#: (tests/criticism/test_criticism.py); the message of either says what changed and suggests a block column.
 _RUN_ORDER = ("drift", "step")
 
 

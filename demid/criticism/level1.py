@@ -559,7 +559,7 @@ def _choices(rnd) -> dict[str, int]:
 def step_price(h: _Hypothesis) -> float:
     """Log-likelihood a step pays for its change-point, chosen as the best of C positions: log C, the
     Bonferroni price its test pays too (a linear drift is then not read as a step at a dozen runs; in
-    tests/test_criticism.py a 14-SD drift over 13 runs fits a step at run 9 better by 1.9).  0 for other
+    tests/criticism/test_criticism.py a 14-SD drift over 13 runs fits a step at run 9 better by 1.9).  0 for other
     causes."""
     return math.log(h.info.get("change_points", 1)) if h.cause == "step" else 0.0
 

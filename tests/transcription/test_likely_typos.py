@@ -1,0 +1,95 @@
+"""The validator's typo flag: extreme studentised residual + a digit slip that would fit."""
+
+import pytest
+
+from demid.data import read_printed, validate_material
+from demid.transcription import likely_typos
+
+from ..helpers import make_ccd_table
+
+
+def _cfg(path):
+    return {"data": str(path), "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+            "factors": {"x1": {"lower": 0.1, "upper": 0.9}, "x2": {"lower": 1, "upper": 11}},
+            "responses": {"y": {}}}
+
+
+@pytest.mark.parametrize("seed", range(5))
+@pytest.mark.parametrize("slip", ["decimal", "decimal_up", "transposition"])
+def test_planted_slip_is_flagged_and_clean_table_is_silent(tmp_path, seed, slip):
+    table = make_ccd_table(lambda x: {"y": 100 + 20 * x[:, 0] - 3 * x[:, 1] + 8 * x[:, 0] ** 2},
+                           [0.1, 1], [0.9, 11], noise=0.3, seed=seed, decimals=2)
+    path = tmp_path / "t.csv"
+    table.to_csv(path, index=False)
+    vt = validate_material("m", _cfg(path))
+    assert likely_typos(vt, _cfg(path), read_printed(path, vt.table)) == []
+
+    true_value = table.loc[table["run"] == 5, "y"].iloc[0]
+    text = f"{true_value:.2f}"
+    if slip == "decimal":
+        typo = f"{true_value / 10:.3f}"
+    elif slip == "decimal_up":  # the point one place right: also a digit swap of other cells' shape
+        typo = f"{true_value * 10:.1f}"
+    else:  # swap the first two digits: 1xy.zz -> x1y.zz
+        typo = text[1] + text[0] + text[2:]
+        if typo == text:
+            pytest.skip("identical digits")
+    lines = path.read_text().splitlines()
+    lines = [ln if not ln.startswith("5,") else ",".join(ln.split(",")[:-1] + [typo]) for ln in lines]
+    path.write_text("\n".join(lines) + "\n")
+    vt = validate_material("m", _cfg(path))
+    flags = likely_typos(vt, _cfg(path), read_printed(path, vt.table))
+    assert [(f["run"], f["column"]) for f in flags] == [(5, "y")]
+    assert flags[0]["suggested"] == pytest.approx(true_value)
+    assert flags[0]["kind"] == ("transposition" if slip == "transposition" else "decimal_shift")
+
+
+@pytest.mark.parametrize("df", [1, 2, 3, 4, 5, 8, 13, 40, 121])
+def test_two_sided_t_p_matches_scipy(df):
+    import numpy as np
+    from scipy import stats
+
+    from demid.transcription.typos import two_sided_t_p
+
+    t = np.concatenate([[0.0, np.nan, np.inf], np.geomspace(1e-3, 200.0, 60), -np.geomspace(0.5, 30.0, 7)])
+    expected = 2 * stats.t.sf(np.abs(t), df)
+    got = two_sided_t_p(t, df)
+    assert np.isnan(got[1])
+    finite = ~np.isnan(t)
+    np.testing.assert_allclose(got[finite], expected[finite], rtol=0, atol=1e-13)
+    small = finite & (expected > 1e-8) & (expected < 1e-2)  # the Bonferroni thresholds live here
+    np.testing.assert_allclose(got[small], expected[small], rtol=1e-6)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_studentised_residuals_match_statsmodels(tmp_path, seed):
+    import numpy as np
+
+    from demid.design import quadratic_terms
+    from demid.surrogate import fit_response
+    from demid.transcription.typos import studentised_residuals
+
+    table = make_ccd_table(lambda x: {"y": 100 + 20 * x[:, 0] - 3 * x[:, 1] + 8 * x[:, 0] ** 2},
+                           [0.1, 1], [0.9, 11], noise=0.3, seed=seed, decimals=2)
+    table.loc[table["run"] == 4, "y"] += 9.0  # one outlying run
+    fit = fit_response(table, ["x1", "x2"], "y")
+    got = studentised_residuals(fit.coded, fit.y, quadratic_terms(2))
+    reference = fit.results.get_influence()
+    np.testing.assert_allclose(got["student_resid"], reference.resid_studentized_external, rtol=1e-9)
+    np.testing.assert_allclose(got["leverage"], reference.hat_matrix_diag, rtol=1e-9)
+    np.testing.assert_allclose(got["residual"], fit.results.resid, rtol=1e-9, atol=1e-9)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_a_shifted_point_is_not_read_as_a_swap_with_a_leading_zero(tmp_path, seed):
+    """500.3 typed for 50.03: the point moved one place.  Swapping its first two digits gives 050.3 = 50.3,
+    which may land closer to the prediction, but no table prints 050.3; the shift is the repair named."""
+    table = make_ccd_table(lambda x: {"y": 50.15 + 0.0 * x[:, 0]}, [0.1, 1], [0.9, 11], noise=0.15, seed=seed,
+                           decimals=2)
+    path = tmp_path / "t.csv"
+    lines = table.to_csv(index=False).splitlines()
+    lines = [ln if not ln.startswith("5,") else ",".join(ln.split(",")[:-1] + ["500.3"]) for ln in lines]
+    path.write_text("\n".join(lines) + "\n")
+    vt = validate_material("m", _cfg(path))
+    flags = likely_typos(vt, _cfg(path), read_printed(path, vt.table))
+    assert [(f["run"], f["kind"], f["suggested"]) for f in flags] == [(5, "decimal_shift", 50.03)]

@@ -1,0 +1,110 @@
+"""The Kratos DEM heap of examples/dem_heap: the angle fit against cones of known slope, and one
+small simulation (skipped when Kratos is not installed) that writes a finite, plausible angle and
+repeats exactly with the same seed."""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+HEAP = Path(__file__).resolve().parents[2] / "examples" / "dem_heap" / "heap.py"
+
+
+def _heap_module():
+    spec = importlib.util.spec_from_file_location("dem_heap", HEAP)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _cone_of_spheres(angle_deg, base_radius, seed):
+    """Spheres filling a cone of the given slope (columns on a square grid), plus loose spheres on
+    the base beyond the toe (what a real heap leaves)."""
+    heap = _heap_module()
+    rng = np.random.default_rng(seed)
+    d = heap.DIAMETER
+    tan = math.tan(math.radians(angle_deg))
+    centres = []
+    for x in np.arange(-base_radius, base_radius, 0.9 * d):
+        for y in np.arange(-base_radius, base_radius, 0.9 * d):
+            surface = (base_radius - math.hypot(x, y)) * tan
+            # Columns start at random heights, as in a random packing: no terraces of layers.
+            for z in np.arange(0.5 * d + rng.uniform(0, 0.9 * d), surface - 0.5 * d, 0.9 * d):
+                centres.append((x, y, z))
+    for _ in range(40):   # a loose single layer beyond the toe
+        r, phi = rng.uniform(base_radius, 1.4 * base_radius), rng.uniform(0, 2 * math.pi)
+        centres.append((r * math.cos(phi), r * math.sin(phi), 0.5 * d))
+    centres = np.array(centres) + rng.normal(0, 0.05 * d, (len(centres), 3))
+    radii = np.full(len(centres), 0.5 * d)
+    return radii, centres
+
+
+@pytest.mark.parametrize("angle", [18.0, 26.0, 34.0])
+def test_angle_fit_recovers_the_slope_of_a_cone(angle):
+    heap = _heap_module()
+    radii, centres = _cone_of_spheres(angle, base_radius=0.06, seed=int(angle))
+    fitted, height, rings = heap.heap_angle(radii, centres)
+    # The profile is the highest sphere top in each ring, just below the cone's surface at every
+    # distance: the slope is kept (±2° for the discreteness of a heap a few spheres high).
+    assert rings >= 5
+    assert fitted == pytest.approx(angle, abs=2.0)
+
+
+def _run_heap(tmp_path, name):
+    out = tmp_path / name / "responses.json"
+    subprocess.run([sys.executable, str(HEAP), "--mu", "0.5", "--mur", "0.2", "--seed", "3",
+                    "--particles", "200", "--out", str(out)],
+                   check=True, capture_output=True, timeout=900)
+    return json.loads(out.read_text())
+
+
+def test_small_kratos_heap_is_plausible_and_repeats_exactly(tmp_path):
+    pytest.importorskip("KratosMultiphysics.DEMApplication",
+                        reason="Kratos DEM not installed (pip install -r requirements-dem.txt)")
+    first = _run_heap(tmp_path, "a")
+    second = _run_heap(tmp_path, "b")
+    angle = first["angle_of_repose"]
+    assert math.isfinite(angle) and 10.0 < angle < 50.0, first
+    assert first["particles_left"] >= 190   # the heap stays on the base
+    first.pop("cpu_s"), second.pop("cpu_s")
+    assert first == second   # same seed, one thread: the same run to the last digit
+
+
+RUN_DESIGN = HEAP.parent / "run_design.py"
+
+# A stand-in simulator: y = 10 a + b; run 2 exits non-zero, run 3 writes no number.
+FAKE_SIMULATOR = """
+import json, sys
+a, b, run, out = float(sys.argv[1]), float(sys.argv[2]), int(sys.argv[3]), sys.argv[4]
+if run == 2:
+    sys.exit(3)
+value = "garbage" if run == 3 else 10 * a + b
+open(out, "w").write(json.dumps({"y": value, "extra": 1}))
+"""
+
+
+def test_run_design_fills_the_table_and_marks_failed_runs(tmp_path):
+    import pandas as pd
+
+    (tmp_path / "sim.py").write_text(FAKE_SIMULATOR)
+    (tmp_path / "sheet.csv").write_text(
+        "run,std_order,a,b,y\n1,3,0.5,2,\n2,1,0.1,1,\n3,2,0.9,1,\n4,4,0.2,3; echo x,\n")
+    command = f"{sys.executable} {tmp_path / 'sim.py'} {{a}} {{b}} {{run}} {{run_dir}}/responses.json"
+    done = subprocess.run([sys.executable, str(RUN_DESIGN), "--sheet", str(tmp_path / "sheet.csv"),
+                           "--out", str(tmp_path / "table.csv"), "--runs-dir", str(tmp_path / "runs"),
+                           "--command", command, "--jobs", "2"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    table = pd.read_csv(tmp_path / "table.csv")
+    assert list(table.columns) == ["run", "a", "b", "y", "status"]
+    assert table["status"].tolist() == ["ok", "failed", "failed", "failed"]
+    assert table.loc[0, "y"] == pytest.approx(7.0)
+    assert table.loc[1:, "y"].isna().all()
+    # The value "3; echo x" reaches the simulator as one argument, not as shell syntax: the run fails.
+    assert (tmp_path / "runs" / "run2" / "log").exists()
