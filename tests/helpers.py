@@ -27,3 +27,15 @@ def make_ccd_table(coef_fn, lower, upper, alpha=1.41421, center_runs=5, noise=0.
         values = np.asarray(values, float) + noise * rng.standard_normal(len(coded))
         data[name] = values[order] if decimals is None else np.round(values[order], decimals)
     return pd.DataFrame(data)
+
+
+def write_small_ccd_table(root) -> None:
+    """``root/data/m.csv``: a two-factor CCD (a in 0.1-0.9, b in 1-11) with two smooth responses y1, y2,
+    0.3 noise, three decimals: the table of the small self-made studies the report tests run."""
+    def responses(x):
+        a, b = x[:, 0], x[:, 1]
+        return {"y1": 100 + 20 * a - 2 * b + 10 * a**2 + 0.5 * a * b, "y2": 80 + 5 * a + 3 * b - 0.1 * b**2}
+
+    table = make_ccd_table(responses, [0.1, 1.0], [0.9, 11.0], noise=0.3, seed=3, decimals=3)
+    (root / "data").mkdir()
+    table.rename(columns={"x1": "a", "x2": "b"}).to_csv(root / "data" / "m.csv", index=False)

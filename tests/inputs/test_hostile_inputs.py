@@ -109,15 +109,9 @@ def test_links_only_to_http_addresses_and_figures_only_as_png():
 
 # --------------------------------------------------------------------------- a whole study of hostile labels
 def _write_study(root: Path) -> dict:
-    from ..helpers import make_ccd_table
+    from ..helpers import write_small_ccd_table
 
-    def responses(x):
-        a, b = x[:, 0], x[:, 1]
-        return {"y1": 100 + 20 * a - 2 * b + 10 * a**2 + 0.5 * a * b, "y2": 80 + 5 * a + 3 * b - 0.1 * b**2}
-
-    table = make_ccd_table(responses, [0.1, 1.0], [0.9, 11.0], noise=0.3, seed=3, decimals=3)
-    (root / "data").mkdir()
-    table.rename(columns={"x1": "a", "x2": "b"}).to_csv(root / "data" / "m.csv", index=False)
+    write_small_ccd_table(root)
     config = {
         "results_dir": SHELL_DIR, "grid_points": 101,
         "materials": {"m": {

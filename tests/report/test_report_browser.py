@@ -63,15 +63,9 @@ def report_html(tmp_path_factory) -> Path:
 
 
 def _write_study(root: Path) -> None:
-    from ..helpers import make_ccd_table
+    from ..helpers import write_small_ccd_table
 
-    def responses(x):
-        a, b = x[:, 0], x[:, 1]
-        return {"y1": 100 + 20 * a - 2 * b + 10 * a**2 + 0.5 * a * b, "y2": 80 + 5 * a + 3 * b - 0.1 * b**2}
-
-    table = make_ccd_table(responses, [0.1, 1.0], [0.9, 11.0], noise=0.3, seed=3, decimals=3)
-    (root / "data").mkdir()
-    table.rename(columns={"x1": "a", "x2": "b"}).to_csv(root / "data" / "m.csv", index=False)
+    write_small_ccd_table(root)
     (root / "study.yaml").write_text(
         "grid_points: 101\nmaterials:\n  m:\n    data: data/m.csv\n"
         "    design: {type: ccd, alpha: 1.41421, center_runs: 5}\n"
