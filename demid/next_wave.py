@@ -186,12 +186,13 @@ def _full_rank(points: np.ndarray, k: int) -> int:
     return m.shape[1] - int(np.linalg.matrix_rank(m, tol=1e-8 * max(np.abs(m).max(), 1.0) * len(m)))
 
 
-def box_support_count(count: int) -> int:
+def box_support_count(count: int, share: float | None = None) -> int:
     """How many of ``count`` design runs support the whole refocused box (the rest go on the band)."""
-    return int(round(BOX_SHARE * count))
+    return int(round((BOX_SHARE if share is None else share) * count))
 
 
-def _design(existing: np.ndarray, count: int, k: int, plausible: np.ndarray) -> tuple[np.ndarray, list[str]]:
+def _design(existing: np.ndarray, count: int, k: int, plausible: np.ndarray,
+            share: float | None = None) -> tuple[np.ndarray, list[str]]:
     """Design points and their kinds (``support``, ``band``, ``box``).
 
     Support runs first (a share :data:`BOX_SHARE` of the runs): D-optimal over the box's 5-level grid
@@ -201,7 +202,7 @@ def _design(existing: np.ndarray, count: int, k: int, plausible: np.ndarray) -> 
     coefficients get runs from the box's grid (``box``).  Without band points every run comes from the grid."""
     if not len(plausible):
         return d_optimal_augment(existing, count, k), ["support"] * count
-    support = d_optimal_augment(existing, box_support_count(count), k)
+    support = d_optimal_augment(existing, box_support_count(count, share), k)
     base = np.vstack([existing, support])
     n_band = count - len(support)
     band = d_optimal_augment(base, n_band, k, plausible)
@@ -214,7 +215,7 @@ def _design(existing: np.ndarray, count: int, k: int, plausible: np.ndarray) -> 
 
 
 def propose_runs(box_lower: np.ndarray, box_upper: np.ndarray, earlier: np.ndarray, count: int,
-                 alias_sets=(), plausible=None) -> tuple[np.ndarray, list]:
+                 alias_sets=(), plausible=None, share: float | None = None) -> tuple[np.ndarray, list]:
     """Proposals (search units) and, per proposal, its kind (``support``, ``band`` or ``box``, see
     :func:`_design`) or the (members, responses) alias set it separates.  ``earlier``: earlier runs
     (search units) inside the box.
@@ -230,7 +231,7 @@ def propose_runs(box_lower: np.ndarray, box_upper: np.ndarray, earlier: np.ndarr
     plausible = (np.empty((0, k)) if plausible is None else (np.asarray(plausible).reshape(-1, k) - center) / half)
     base = quadratic_terms(k)
     for reserved in range(count + 1):
-        design, kinds = _design(existing, count - reserved, k, plausible)
+        design, kinds = _design(existing, count - reserved, k, plausible, share)
         separating, labels = [], []
         for members, responses in alias_sets:
             pts = separating_runs(np.vstack([existing, design] + separating), base, list(members), 1.0)
@@ -345,7 +346,19 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec,
     from .wave_value import expected_contraction
 
     refocus = next(sc for sc in spec.scenarios if sc.name == scenario)
-    value = expected_contraction(surrogates, spec, refocus, z, points) if z > 0 else None
+    # What the wave can still buy is judged on the same number of runs all aimed at the plausible set (at
+    # robust_z, no support runs): the support runs and the wider band make the box's own refit
+    # trustworthy, which the current surrogate's standard error cannot credit, so counting them would
+    # advise stopping only because part of the runs is not aimed at the set.
+    if z > 0 and (n_support or BAND_Z_FACTOR != 1) and len(cand_u):
+        aimed = plausible_points(surrogates, spec, scenario, z, lo, hi)
+        band_u = propose_runs(lo, hi, earlier_u[inside], request.count, alias_sets, aimed, share=0.0)[0]
+        judged = domain.to_actual(band_u)
+        if deciding:
+            judged = np.vstack([points[:len(deciding)], judged])
+    else:
+        judged = points
+    value = expected_contraction(surrogates, spec, refocus, z, judged) if z > 0 else None
     return NextWave(dom_frame, runs, reason, value)
 
 
