@@ -12,7 +12,7 @@ from demid.admissibility import Domain
 from demid.config import validate_schema
 from demid.design import model_matrix, quadratic_terms
 from demid.errors import InputError
-from demid.next_wave import (DOMAIN_COLUMNS, PURPOSE_DESIGN, aliased_findings, check_next_runs, d_optimal_augment,
+from demid.next_wave import (DOMAIN_COLUMNS, PURPOSE_DESIGN, PURPOSE_SUPPORT, aliased_findings, check_next_runs, d_optimal_augment,
                              next_box, plan_materials, plan_next_wave, propose_runs)
 from demid.spec import MaterialSpec
 from demid.surrogate import fit_material
@@ -66,24 +66,62 @@ def test_next_box_clips_to_range_and_handles_log_factors():
 
 
 def test_proposals_lie_in_the_box_on_the_plausible_set_and_predict_observables():
+    """A third of the runs support the whole box, the rest lie on the band (here, noise-free, the
+    admissible set itself)."""
     table, surrogates, cfg, robust = _annulus_material(count=9)
     wave = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
     runs = wave.runs
     assert list(runs.columns) == ["material", "proposal", "a", "b", "purpose", "predicted_y"]
     assert list(runs["proposal"]) == list(range(1, 10))
-    assert (runs["purpose"] == PURPOSE_DESIGN).all()
+    assert list(runs["purpose"]) == [PURPOSE_SUPPORT] * 3 + [PURPOSE_DESIGN] * 6
+    assert "3 over the whole box (its edges and corners), 6 on the band" in wave.reason
+    band = runs[runs["purpose"] == PURPOSE_DESIGN]
     box = wave.domain.set_index("factor")
     for f in ("a", "b"):
         assert runs[f].between(box.loc[f, "lower"] - 1e-12, box.loc[f, "upper"] + 1e-12).all()
     assert np.allclose(runs["predicted_y"], ((runs[["a", "b"]].to_numpy() - CENTRE) ** 2).sum(axis=1), atol=1e-9)
     # plausible points only (noise-free: plausible = admissible, checked on the grid of the box)
-    rel = np.abs(runs["predicted_y"] / R0 ** 2 - 1)
+    rel = np.abs(band["predicted_y"] / R0 ** 2 - 1)
     assert (rel <= EPS + 1e-9).all()
     # earlier + new runs determine the box's own quadratic
     inside = table[(table["a"].between(box.loc["a", "lower"], box.loc["a", "upper"]))
                    & (table["b"].between(box.loc["b", "lower"], box.loc["b", "upper"]))]
     pts = np.vstack([inside[["a", "b"]].to_numpy(), runs[["a", "b"]].to_numpy()])
     assert np.linalg.matrix_rank(model_matrix(pts, quadratic_terms(2))) == 6
+
+
+def _box_runs(wave, table):
+    """Earlier runs inside the next domain + the proposals, coded to [-1, 1] over the domain."""
+    box = wave.domain.set_index("factor").loc[["a", "b"]]
+    lo, hi = box["lower"].to_numpy(), box["upper"].to_numpy()
+    earlier = table[["a", "b"]].to_numpy()
+    inside = earlier[np.all((earlier >= lo) & (earlier <= hi), axis=1)]
+    pts = np.vstack([inside, wave.runs[["a", "b"]].to_numpy()])
+    return (pts - (lo + hi) / 2) / ((hi - lo) / 2)
+
+
+def test_the_proposals_support_the_whole_refocused_box(monkeypatch):
+    """The box's own quadratic is fitted from earlier runs inside it + the proposals: every corner of the
+    box has a run within a quarter of the box's width (coded distance 0.5), and the D-criterion of the
+    box's quadratic beats the choice with every run on the band, whose ring leaves the corners empty."""
+    import demid.next_wave as nw
+
+    table, surrogates, cfg, robust = _annulus_material(count=9)
+    coded = _box_runs(plan_next_wave("m", table, surrogates, cfg, robust, z=2.0), table)
+    monkeypatch.setattr(nw, "BOX_SHARE", 0.0)
+    band_only = _box_runs(plan_next_wave("m", table, surrogates, cfg, robust, z=2.0), table)
+    corners = np.array(list(product((-1.0, 1.0), repeat=2)))
+
+    def corner_gap(pts):
+        return np.linalg.norm(corners[:, None, :] - pts[None, :, :], axis=2).min(axis=1).max()
+
+    def log_det(pts):
+        x = model_matrix(pts, quadratic_terms(2))
+        return np.linalg.slogdet(x.T @ x)[1]
+
+    assert corner_gap(coded) <= 0.5 + 1e-9
+    assert corner_gap(band_only) > 0.5  # premise: band runs alone leave a corner unsupported
+    assert log_det(coded) > log_det(band_only) + 1.0
 
 
 def test_greedy_d_optimal_design_is_the_textbook_3x3_grid():
@@ -107,8 +145,8 @@ def test_aliased_terms_from_the_criticism_get_separating_runs():
     lo, hi = np.array([0.0, 10.0]), np.array([2.0, 30.0])
     plain, plain_labels = propose_runs(lo, hi, np.empty((0, 2)), 9)
     points, labels = propose_runs(lo, hi, np.empty((0, 2)), 9, [(members, ["y"])])
-    assert len(points) == 9 and all(lab is None for lab in plain_labels)
-    separating = [i for i, lab in enumerate(labels) if lab is not None]
+    assert len(points) == 9 and all(isinstance(lab, str) for lab in plain_labels)
+    separating = [i for i, lab in enumerate(labels) if not isinstance(lab, str)]
     assert 1 <= len(separating) <= 2 and labels[separating[0]] == (members, ["y"])
 
     def coded(p):
@@ -213,16 +251,21 @@ def test_pipeline_writes_the_next_wave_and_the_loop_closes(study_dir):
     assert check.returncode == 0, check.stderr
 
 
-def test_runs_off_a_thin_plausible_set_are_labelled_so():
+def test_runs_off_a_thin_plausible_set_are_labelled_so(monkeypatch):
     """A tolerance of 0.2 % leaves a ring too thin for the 41 x 41 grid of the box to hold more than a few
-    points: the design takes the rest from the whole box, and those runs said 'on the plausible set'."""
+    points: the design takes the rest from the whole box, and those runs are not said to be on the band.
+    (With the support runs the ring's points already complete the quadratic, so they are switched off.)"""
+    import demid.next_wave as nw
     from demid.next_wave import PURPOSE_DESIGN_BOX
+
+    monkeypatch.setattr(nw, "BOX_SHARE", 0.0)
 
     table, surrogates, cfg, robust = _annulus_material(count=9, tolerance=0.002)
     wave = plan_next_wave("m", table, surrogates, cfg, robust, z=0.0)
     rel = np.abs(wave.runs["predicted_y"] / R0 ** 2 - 1)
     on = wave.runs["purpose"] == PURPOSE_DESIGN
-    assert (~on).any(), wave.runs  # premise: some runs are off the set
-    assert (wave.runs.loc[~on, "purpose"] == PURPOSE_DESIGN_BOX).all()
-    assert (rel[on] <= 0.002 + 1e-9).all() and (rel[~on] > 0.002).all()  # the labels say where each run is
-    assert f"{int((~on).sum())} off the plausible set" in wave.reason
+    off = wave.runs["purpose"] == PURPOSE_DESIGN_BOX
+    assert off.any(), wave.runs  # premise: some band runs are off the set
+    assert (on | off | (wave.runs["purpose"] == PURPOSE_SUPPORT)).all()
+    assert (rel[on] <= 0.002 + 1e-9).all() and (rel[off] > 0.002).all()  # the labels say where each run is
+    assert f"{int(off.sum())} off the band" in wave.reason

@@ -182,7 +182,8 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
     },
     "next_runs": {
         "proposal": ("–", "Number of the proposed run (1..count)."),
-        "purpose": ("–", "Why the run is proposed: a design run in the refocused box, or a run that separates "
+        "purpose": ("–", "Why the run is proposed: a design run in the refocused box (over the whole box, so its "
+                         "edges are supported, or on the band near the plausible set), or a run that separates "
                          "terms the criticism found aliased."),
     },
 }
