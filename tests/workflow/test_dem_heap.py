@@ -108,3 +108,24 @@ def test_run_design_fills_the_table_and_marks_failed_runs(tmp_path):
     assert table.loc[1:, "y"].isna().all()
     # The value "3; echo x" reaches the simulator as one argument, not as shell syntax: the run fails.
     assert (tmp_path / "runs" / "run2" / "log").exists()
+
+
+def test_slurm_profile_dry_run_sends_each_simulation_with_its_resources(tmp_path):
+    """The SLURM profile (with the executor plugin requirements.txt installs) plans one job per simulation
+    run with the threads, memory and runtime of the material's `simulation:` block."""
+    import shutil
+    import subprocess
+    import sys
+
+    study = tmp_path / "dem_heap"
+    shutil.copytree(HEAP.parent, study, ignore=shutil.ignore_patterns("results", ".snakemake"))
+    repo = HEAP.parents[2]
+    proc = subprocess.run([sys.executable, "-m", "snakemake", "-n", "-s", str(repo / "Snakefile"),
+                           "--profile", str(repo / "profiles" / "slurm"), "--configfile", str(study / "config.yaml"),
+                           "--directory", str(study)], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    out = proc.stdout + proc.stderr
+    assert "simulate_run           22" in out
+    resources = [line for line in out.splitlines() if "resources:" in line and "attempt=" in line]  # simulate_run
+    assert len(resources) == 22
+    assert all("mem_mb=2000" in line and "runtime=11" in line and "cpus_per_task=1" in line for line in resources)
