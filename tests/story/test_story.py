@@ -214,8 +214,33 @@ def _report_texts(root, config_path):
     return cfg, sections
 
 
+def _plain(html: str) -> str:
+    """Rendered report HTML as plain lines: a heading as '### text', a list item as '- text', tags dropped."""
+    import html as entities
+    import re
+
+    def flat(fragment: str) -> str:  # tags dropped, entities kept until the end (&lt; is text, not a tag)
+        return re.sub(r"\s+", " ", re.sub(r"<[^>]+>", "", fragment)).strip()
+
+    def heading(m) -> str:
+        return "\n### " + entities.unescape(flat(m.group(1))).rstrip("¶ ") + "\n"
+
+    text = re.sub(r"<h3[^>]*>(.*?)</h3>", heading, html, flags=re.S)
+    text = re.sub(r"<li[^>]*>(.*?)</li>", lambda m: "\n- " + flat(m.group(1)) + "\n", text, flags=re.S)
+    return entities.unescape(re.sub(r"<[^>]+>", "", text))
+
+
 def _markdown(parts) -> str:
-    return "\n".join(getattr(p, "data", "") or "" for p in parts)
+    """The report's text parts (sanitised HTML) as plain lines."""
+    return _plain("\n".join(getattr(p, "data", "") or "" for p in parts))
+
+
+def _shown(text: str, labels) -> str:
+    """An advice text as the report shows it: labels typeset, Markdown rendered, read as plain text."""
+    from demid.report.safe_html import markdown_html
+    from demid.report.sections import typeset_labels
+
+    return _plain(markdown_html(typeset_labels(text, labels))).strip()
 
 
 @pytest.mark.workflow
@@ -237,10 +262,10 @@ def test_demo_advice_rows_are_the_summary_and_level2_text_and_table3_is_unchange
         bullets = [line[2:] for line in summary.split(f"### ")[[s.split("\n")[0] for s in summary.split("### ")].index(
             sections._label(m))].splitlines() if line.startswith("- ")]
         next_steps = bullets[-len(rows):] if len(rows) else []
-        assert next_steps == [typeset_labels(t, labels) for t in rows["text"]], m
+        assert next_steps == [_shown(t, labels) for t in rows["text"]], m
         for text in rows[rows["kind"].isin(["widen", "check_target", "recalibrate"])]["text"]:
-            assert typeset_labels(text, labels) in level2
-        assert "Widen" not in level2.replace(" ".join(typeset_labels(t, labels) for t in rows[rows["kind"] == "widen"]
+            assert _shown(text, labels) in level2
+        assert "Widen" not in level2.replace(" ".join(_shown(t, labels) for t in rows[rows["kind"] == "widen"]
                                                       ["text"]), "")
     # the summary's verdicts are the table's: mortar γ identified strictly, bounded plausibly
     mortar = verdicts[(verdicts["material"] == "mortar") & (verdicts["scenario"] == "full_sequence")].set_index("factor")
@@ -290,6 +315,7 @@ def test_a_study_with_a_unit_slip_and_a_next_wave_gets_one_consistent_story(stud
     assert both["reason"].str.contains("the target of y2 lies far outside every simulated value").all()
     _, sections = _report_texts(study_dir, cfg_path)
     stop = advice.loc[advice["kind"] == "stop", "text"].iloc[0]
+    stop = _shown(stop, sections._plain_labels)
     assert stop in _markdown(sections.next_wave("m")) and stop in _markdown(sections.summary())
     assert (study_dir / "results" / "tables" / "next_runs.csv").is_file()
 
