@@ -401,11 +401,19 @@ def test_an_unusable_number_in_a_table_is_one_line(tmp_path, cell):
     assert "y1" in _one_error_line(result) and not (tmp_path / "c.json").exists()
 
 
-def test_an_unusable_number_stops_the_workflow_before_any_job(tmp_path):
+def test_an_unusable_number_stops_the_workflow_in_the_material_job(tmp_path):
+    """A table's cells are checked once, in the material's job (start-up reads its header only): the run
+    stops there with one line naming the cell, and leaves no results behind."""
     config = _plain_study(tmp_path)
     _set_response(tmp_path, 2, "y2", "1e308")
-    line = _one_error_line(_snakemake(tmp_path, "--configfile", str(config)))
-    assert "column 'y2'" in line and "1e308" in line
+    cmd = [sys.executable, "-m", "snakemake", "-c1", "-s", str(REPO / "Snakefile"), "--directory", str(tmp_path),
+           "--configfile", str(config)]
+    result = subprocess.run(cmd, cwd=tmp_path, capture_output=True, text=True, timeout=300,
+                            env=dict(os.environ, PYTHONWARNINGS="ignore"))
+    line = _one_error_line(result)
+    assert "column 'y2'" in line and "1e308" in line and "run 2" in line
+    results = tmp_path / "results"
+    assert not results.exists() or not [p for p in results.rglob("*") if p.is_file()]
 
 
 @pytest.mark.parametrize("key, value", [
