@@ -383,17 +383,17 @@ def material_combinations(surrogates: dict, spec: MaterialSpec, coding: Coding, 
 
 
 def plausible_sets(surrogates: dict, spec: MaterialSpec, *, z: float, n: int) -> dict[str, AdmissibleSet]:
-    """Every scenario's plausible (robust) set on an n-grid (n Sobol points above 3 factors), with the
-    robust table's z and measurement σ."""
+    """Every scenario's plausible set on an n-grid (n Sobol points above 3 factors), as the robust table
+    evaluates it: its z, each observable's own tolerance (:func:`~demid.tolerance.scenario_surrogates`) and
+    measurement band, σ and discrepancy δ (:func:`~demid.tolerance.scenario_bands`)."""
     from ..sampling.evaluate import evaluate_set
     from ..sampling.residuals import plausibility_fields
-    from ..uncertainty.sigma import measurement_sigmas
+    from ..tolerance import scenario_bands, scenario_surrogates
 
     targets = spec.targets
-    observables = [r for r in targets if r in surrogates]
-    sigma, _ = measurement_sigmas(spec.sigma_config, observables, targets)
     out = {}
     for sc in spec.scenarios:
-        fields = plausibility_fields(surrogates, sc.observables, targets, sc.tolerance, z, sigma)
+        fields = plausibility_fields(scenario_surrogates(surrogates, spec, sc.tolerance), sc.observables, targets,
+                                     sc.tolerance, z, scenario_bands(spec, sc.observables, sc.tolerance))
         out[sc.name] = evaluate_set(fields, spec.domain, sc.observables, targets, sc.tolerance, n)
     return out
