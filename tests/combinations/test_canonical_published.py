@@ -2,7 +2,8 @@
 (read the table, fit the quadratic in the design's coding, canonical analysis), compared with the printed
 numbers at their printed precision.  A saddle (Lawson's trebuchet, a 3-factor Box-Behnken design) and two
 rising ridges (Myers, Montgomery & Anderson-Cook's Table 6.2 and Box, Hunter & Hunter's replicated 3^2 CO
-emissions table); the maximum (Montgomery's Example 11.2) is in ``test_canonical.py``.  The last tests run the
+emissions table); the maximum (Montgomery's Example 11.2) is in ``test_canonical.py``.  A textbook's named
+surfaces (Gramacy: maximum, stationary ridge, rising ridge) are checked against their analysis worked by hand.  The last tests run the
 same tables through ``python -m demid fit`` without ``--design`` and read the canonical section of its JSON.
 
 Every expected number below is copied from its source, not from demid.
@@ -134,6 +135,56 @@ def test_rising_ridge_box_hunter_hunter_co_emissions():
     assert unthresholded.kind == "saddle point"
     assert unthresholded.stationary_coded == pytest.approx([-14.81387, 15.44149], abs=5e-6)
 
+
+
+# Gramacy, R. B. (2020) Surrogates, CRC Press, Chapter 1 (after Myers, Montgomery & Anderson-Cook, ch. 6): the
+# second-order surfaces it draws and names, in coded units (its code, public in efsalvarenga/surrogates
+# src/chap1.R): "simple.max", "stationary ridge", "rising ridge".  The expected analysis is worked here by hand.
+SURFACE_TERMS = [(0, 0), (1, 0), (0, 1), (2, 0), (0, 2), (1, 1)]
+
+
+def test_gramacy_named_surfaces():
+    """simple maximum 50 + 8x1 + 3x2 - 7x1^2 - 3x2^2 - 4x1x2: B = [[-7, -2], [-2, -3]], eigenvalues -5 +- sqrt 8;
+    2Bx = -b gives x_s = (36/68, 10/68).
+    stationary ridge 80 + 4x1 + 8x2 - 3x1^2 - 12x2^2 - 12x1x2 and rising ridge 80 - 4x1 + 12x2 - (same B):
+    B = [[-3, -6], [-6, -12]] is singular, eigenvalues 0 (along (2, -1)/sqrt5) and -15 (along (1, 2)/sqrt5);
+    the slope along the ridge is v'b = 0 (stationary: every point of x1 + 2x2 = 2/3 gives 80 + 4/3) and
+    -20/sqrt5 (rising); rsm's thresholded point is the ridge point nearest the centre, (2, 4)/15, for both."""
+    from demid.canonical import canonical_analysis, quadratic_parts
+
+    def analysis(coefficients):
+        return canonical_analysis(*quadratic_parts(SURFACE_TERMS, coefficients, 2), region_lower=[-1, -1],
+                                  region_upper=[1, 1])
+
+    c = analysis([50, 8, 3, -7, -3, -4])
+    assert c.kind == "maximum" and c.inside
+    assert c.eigenvalues == pytest.approx([-5 + 8 ** 0.5, -5 - 8 ** 0.5])
+    assert c.stationary_coded == pytest.approx([36 / 68, 10 / 68])
+    for coefficients, slope, kind in (([80, 4, 8, -3, -12, -12], 0.0, "stationary ridge"),
+                                      ([80, -4, 12, -3, -12, -12], -20 / 5 ** 0.5, "rising ridge")):
+        c = analysis(coefficients)
+        assert c.kind == kind
+        assert c.eigenvalues == pytest.approx([0, -15], abs=1e-12)
+        _same_up_to_sign(c.eigenvectors, np.array([[2, 1], [-1, 2]]) / 5 ** 0.5)
+        _same_up_to_sign(c.ridge_directions, np.array([[2], [-1]]) / 5 ** 0.5)
+        assert abs(c.ridge_slopes[0]) == pytest.approx(abs(slope), abs=1e-12)
+        assert c.ridge_point_coded == pytest.approx([2 / 15, 4 / 15])
+        assert np.all(np.isnan(c.stationary_coded)) and not c.inside  # B singular: no single stationary point
+    assert analysis([80, 4, 8, -3, -12, -12]).ridge_value == pytest.approx(80 + 4 / 3)
+
+
+def test_stationary_ridge_through_the_fit_path():
+    # Gramacy's stationary ridge, observed exactly on a 3^2 design with three centre runs: the fitted surface is
+    # the book's, and the fit path names it a stationary ridge with its line of maxima through (2, 4)/15
+    levels = [(a, b) for a in (-1, 0, 1) for b in (-1, 0, 1)] + [(0, 0), (0, 0)]
+    rows = [(a, b, 80 + 4 * a + 8 * b - 3 * a * a - 12 * b * b - 12 * a * b) for a, b in levels]
+    fit = fit_response(_table(rows, ["x1", "x2", "y"]), ["x1", "x2"], "y",
+                       coding=Coding(("x1", "x2"), (0.0, 0.0), (1.0, 1.0)))
+    c = fit_canonical(fit)
+    assert c.kind == "stationary ridge"
+    assert c.eigenvalues == pytest.approx([0, -15], abs=1e-9)
+    assert c.ridge_point_coded == pytest.approx([2 / 15, 4 / 15], abs=1e-9)
+    assert c.ridge_value == pytest.approx(80 + 4 / 3, abs=1e-9)
 
 # ---------------------------------------------------------------------------------------------- the CLI path
 def _fit_json(tmp_path, table, factors, response):
