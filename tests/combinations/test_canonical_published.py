@@ -236,3 +236,20 @@ def test_cli_fit_gives_the_printed_canonical_analysis_of_montgomery_example_11_2
     assert canonical["stationary_actual"] == pytest.approx([86.95, 176.53], abs=0.01)
     assert canonical["predicted"] == pytest.approx(80.21, abs=0.005)
     assert canonical["kind"] == "maximum" and canonical["inside"] is True
+
+
+def test_cli_fit_gives_the_printed_canonical_analysis_of_the_blocked_chemical_reactor(tmp_path):
+    # rsm's ChemReact (Myers, Montgomery & Anderson-Cook, Table 7.6: Montgomery's CCD run in two blocks, the
+    # second block's yields lower) fitted with a block term; Lenth's rsm vignette (section "Fitting a response-
+    # surface model", CR2.rsm) prints "the stationary point of the fitted surface is at (0.37, 0.33) in coded
+    # units---well within the experimental region; and ... both eigenvalues are negative, indicating that the
+    # stationary point is a maximum ... at Time ≈ 87, Temp ≈ 177"
+    rows = [("B1", 80, 170, 80.5), ("B1", 80, 180, 81.5), ("B1", 90, 170, 82.0), ("B1", 90, 180, 83.5),
+            ("B1", 85, 175, 83.9), ("B1", 85, 175, 84.3), ("B1", 85, 175, 84.0), ("B2", 85, 175, 79.7),
+            ("B2", 85, 175, 79.8), ("B2", 85, 175, 79.5), ("B2", 92.07, 175, 78.4), ("B2", 77.93, 175, 75.6),
+            ("B2", 85, 182.07, 78.5), ("B2", 85, 167.93, 77.0)]
+    canonical = _fit_json(tmp_path, _table(rows, ["block", "Time", "Temp", "Yield"]), ["Time", "Temp"], "Yield")
+    assert canonical["stationary_coded"] == pytest.approx([0.37, 0.33], abs=0.005)
+    assert canonical["stationary_actual"] == pytest.approx([87, 177], abs=0.5)
+    assert max(canonical["eigenvalues"]) < 0
+    assert canonical["kind"] == "maximum" and canonical["inside"] is True
