@@ -253,3 +253,24 @@ def test_cli_fit_gives_the_printed_canonical_analysis_of_the_blocked_chemical_re
     assert canonical["stationary_actual"] == pytest.approx([87, 177], abs=0.5)
     assert max(canonical["eigenvalues"]) < 0
     assert canonical["kind"] == "maximum" and canonical["inside"] is True
+
+
+def test_cli_fit_calls_the_paper_helicopter_a_saddle_point_near_the_region(tmp_path):
+    # Box, Hunter & Hunter (2005), Table 12.5 (rsm's `heli`): a 4-factor CCD (alpha = 2) in two blocks, average
+    # flight time vs wing area A, wing length ratio R, body width W, body length L, coded x1 = (A - 12.4)/0.6,
+    # x2 = (R - 2.52)/0.26, x3 = (W - 1.25)/0.25, x4 = (L - 2)/0.5.  The rsm vignette (heli.rsm, with a block
+    # term): "the stationary point is fairly near the experimental region, but the eigenvalues are of mixed
+    # sign, indicating that it is a saddle point"
+    coded = [(-1, -1, -1, -1), (1, -1, -1, -1), (-1, 1, -1, -1), (1, 1, -1, -1), (-1, -1, 1, -1), (1, -1, 1, -1),
+             (-1, 1, 1, -1), (1, 1, 1, -1), (-1, -1, -1, 1), (1, -1, -1, 1), (-1, 1, -1, 1), (1, 1, -1, 1),
+             (-1, -1, 1, 1), (1, -1, 1, 1), (-1, 1, 1, 1), (1, 1, 1, 1), (0, 0, 0, 0), (0, 0, 0, 0),
+             (-2, 0, 0, 0), (2, 0, 0, 0), (0, -2, 0, 0), (0, 2, 0, 0), (0, 0, -2, 0), (0, 0, 2, 0), (0, 0, 0, -2),
+             (0, 0, 0, 2), (0, 0, 0, 0), (0, 0, 0, 0), (0, 0, 0, 0), (0, 0, 0, 0)]
+    ave = [367, 369, 374, 370, 372, 355, 397, 377, 350, 373, 358, 363, 344, 355, 370, 362, 377, 375, 361, 364,
+           355, 373, 361, 360, 380, 360, 370, 368, 369, 366]
+    rows = [(1 if i < 18 else 2, round(12.4 + 0.6 * a, 1), round(2.52 + 0.26 * r, 2), round(1.25 + 0.25 * w, 2),
+             round(2 + 0.5 * length, 1), y) for i, ((a, r, w, length), y) in enumerate(zip(coded, ave))]
+    canonical = _fit_json(tmp_path, _table(rows, ["block", "A", "R", "W", "L", "ave"]), ["A", "R", "W", "L"], "ave")
+    assert min(canonical["eigenvalues"]) < 0 < max(canonical["eigenvalues"])
+    assert canonical["kind"] == "saddle point"
+    assert np.all(np.abs(canonical["stationary_coded"]) < 2)  # near the region (its axial points at +-2)
