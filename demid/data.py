@@ -200,6 +200,12 @@ def check_header(header: list[str], factors, responses, src: str) -> None:
         hint = (f"; found '{same[0]}', which differs only in upper/lower case" if same
                 else f"; found '{close[0]}' — misspelled?" if close else f"; columns found: {', '.join(header)}")
         raise InputError(f"missing column (expected columns: {', '.join(needed)}){hint}", source=src, column=col)
+    for col in ("status", "block"):
+        # 'Block' or 'STATUS' would otherwise be read as an unlisted column and its meaning silently lost
+        same = [h for h in header if h != col and h.casefold() == col.casefold() and h not in needed]
+        if same and col not in header:
+            raise InputError(f"differs only in upper/lower case from the reserved column "
+                             f"'{col}': rename it to '{col}'", source=src, column=same[0])
 
 
 def read_table(path: Path | str, factors: list[str], responses: list[str],
