@@ -168,19 +168,28 @@ def criticism_lines(info: dict, spec) -> list[str]:
     lines += unreliable_surrogate_lines(info, spec)
     level2 = info.get("level2")
     if level2:
+        from ..criticism.messages import level2_miss_text, level2_tolerance_text
+
         tol = 100 * level2["tolerance"]
-        worst = 100 * level2["best_max_error"]
+        own = level2.get("tolerances")  # each observable's own tolerance (absent in older results)
+        uniform = not own or all(abs(v - level2["tolerance"]) <= 1e-12 * level2["tolerance"] for v in own.values())
+        within = f"{tol:g} %" if uniform else labelled(level2_tolerance_text(level2["tolerance"], own), spec)
+        best = f"{100 * level2['best_max_error']:.2f} %"
+        own_miss = labelled(level2_miss_text(level2["best_errors"], level2["tolerance"], own), spec) if not uniform else ""
         if level2["feasible"]:
-            lines.append(f"Simulation vs experiment: every target can be met within {tol:g} % "
-                         f"(best point misses by at most {worst:.2f} %).")
+            lines.append(f"Simulation vs experiment: every target can be met within {within} "
+                         f"(best point misses {f'by at most {best}' if uniform else own_miss}).")
         else:
-            lines.append(f"Simulation vs experiment: the targets cannot all be met within {tol:g} %; the best point "
-                         f"misses by {worst:.2f} %" + (f", limited by {spec.response_labels.get(limit, limit)}"
-                                                        if (limit := level2.get("bottleneck")) else "") + ".")
+            lines.append(f"Simulation vs experiment: the targets cannot all be met within {within}; the best point "
+                         f"misses {f'by {best}' if uniform else own_miss}"
+                         + (f", limited by {spec.response_labels.get(limit, limit)}"
+                            if (limit := level2.get("bottleneck")) else "") + ".")
         if level2.get("reference_max_error") is not None:
+            inside = level2.get("reference_within")
+            inside = level2["reference_max_error"] <= level2["tolerance"] if inside is None else inside
             lines.append(f"Reference point: largest error {100 * level2['reference_max_error']:.2f} % "
-                         f"({'within' if level2['reference_max_error'] <= level2['tolerance'] else 'outside'} "
-                         f"the {tol:g} % tolerance).")
+                         f"({'within' if inside else 'outside'} "
+                         + (f"the {tol:g} % tolerance)." if uniform else f"{within})."))
         # a best point on a bound is told by the advice (demid.story), where widening can reach something
         lines += list(level2.get("extrapolation") or [])
     return lines
