@@ -113,9 +113,14 @@ def _recalibrate(spec, level1: dict, level2: dict, checked: set) -> list[AdviceI
     items = []
     for r, res in (level1 or {}).items():
         if res.get("verdict") == "does_not_predict":
+            in_sets = any(r in sc.observables for sc in spec.scenarios)
+            pareto = spec.pareto is not None and r in (spec.pareto.error_of, spec.pareto.minimise)
+            uses = ("the sets that use it are not to be trusted" if in_sets else
+                    "the Pareto front that uses it is indicative only" if pareto else
+                    "do not use it to judge parameter sets")
             items.append(AdviceItem(spec.name, "recalibrate", "", "", r, (
                 f"Refit or resimulate {_label(spec, r)}: its surrogate does not predict left-out runs (Q² < 0), so "
-                "the sets that use it are not to be trusted.")))
+                f"{uses}.")))
     if level2 and not level2.get("feasible", True):
         limit = level2.get("bottleneck")
         if limit not in checked:

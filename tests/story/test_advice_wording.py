@@ -1,0 +1,44 @@
+"""Advice says what a defect touches: a surrogate that does not predict is named for the sets or the Pareto front
+that use it, and level 2's tolerance in the recalibrate advice is each observable's own."""
+
+from __future__ import annotations
+
+import pandas as pd
+import pytest
+
+from demid.spec import MaterialSpec
+from demid.story import material_advice
+
+
+def _spec(**extra) -> MaterialSpec:
+    material = {"data": "x.csv", "design": {"type": "custom"},
+                "factors": {"a": {"lower": 0.0, "upper": 1.0}, "b": {"lower": 0.0, "upper": 1.0}},
+                "responses": {"D": {"target": 100.0}, "S": {"unit": "-"}},
+                "scenarios": {"d": {"observables": ["D"], "tolerance": 0.05}}, **extra}
+    return MaterialSpec.from_material("m", material, grid_points=51)
+
+
+NO_VERDICTS = pd.DataFrame(columns=["scenario", "factor", "verdict"])
+
+
+@pytest.mark.parametrize("response, pareto, says", [
+    ("D", None, "the sets that use it are not to be trusted"),
+    ("S", {"error_of": "D", "minimise": "S", "max_error": 0.05}, "the Pareto front that uses it is indicative only"),
+    ("S", None, "do not use it to judge parameter sets"),
+])
+def test_a_surrogate_that_does_not_predict_is_named_for_what_uses_it(response, pareto, says):
+    spec = _spec(**({"pareto": pareto} if pareto else {}))
+    criticism = {"level1": {response: {"verdict": "does_not_predict"}}}
+    (item,) = [i for i in material_advice(spec, NO_VERDICTS, criticism=criticism) if i.kind == "recalibrate"]
+    assert item.observable == response and item.text.endswith(says + ".")
+
+
+def test_recalibrate_advice_names_each_observables_own_tolerance():
+    spec = _spec()
+    level2 = {"feasible": False, "tolerance": 0.05, "bottleneck": "D", "observables": ["D"],
+              "tolerances": {"D": 0.002}}
+    (item,) = [i for i in material_advice(spec, NO_VERDICTS, criticism={"level2": level2}) if i.kind == "recalibrate"]
+    assert "within their own tolerances (D 0.20 %)" in item.text
+    level2["tolerances"] = {"D": 0.05}
+    (item,) = [i for i in material_advice(spec, NO_VERDICTS, criticism={"level2": level2}) if i.kind == "recalibrate"]
+    assert "within 5 %" in item.text
