@@ -322,8 +322,9 @@ def implausible_targets(table: pd.DataFrame, targets: dict) -> dict[str, dict]:
     """Targets farther outside every simulated value of their response than the simulated values spread
     (more than one range beyond the nearest run), or off from them by a power of ten (a factor of
     :data:`UNIT_SLIP_RATIO` or more beyond the range, which a power of ten brings inside it): per response
-    ``lo``, ``hi`` (the simulated range) and, where a power of ten brings the target inside that range (a
-    unit or typing slip: 1.505 g cm^-3 for 1505 kg m^-3), ``factor`` and ``repaired``."""
+    ``lo``, ``hi`` (the simulated range), ``far`` (more than one range beyond the runs) and, where a power of
+    ten brings the target inside that range (a unit or typing slip: 1.505 g cm^-3 for 1505 kg m^-3),
+    ``factor`` and ``repaired``."""
     out = {}
     for response, target in targets.items():
         if response not in table:
@@ -339,7 +340,7 @@ def implausible_targets(table: pd.DataFrame, targets: dict) -> dict[str, dict]:
         far = not (lo - (hi - lo) <= target <= hi + (hi - lo))
         if not far and not (repair and _off_by_a_ratio(float(target), lo, hi)):
             continue
-        found = {"lo": lo, "hi": hi, "factor": None, "repaired": None}
+        found = {"lo": lo, "hi": hi, "factor": None, "repaired": None, "far": far}
         if repair:
             found.update(factor=repair[0], repaired=repair[1])
         out[response] = found

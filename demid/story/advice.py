@@ -72,13 +72,16 @@ def _bound_text(f, side: str) -> str:
 
 
 def _check_targets(spec, implausible: dict, ranking) -> list[AdviceItem]:
-    from ..data import power_of_ten_repair
+    from ..data import UNIT_SLIP_RATIO, power_of_ten_repair
 
     items = []
     for r, found in implausible.items():
         key = f"materials.{spec.name}.responses.{r}.target"
-        head = (f"Check the target of {_label(spec, r)} (config key {key}): {spec.targets[r]:.6g} lies farther from "
-                f"every simulated value ({found['lo']:.4g} to {found['hi']:.4g}) than the simulated range itself")
+        where = ("farther from every simulated value ({lo:.4g} to {hi:.4g}) than the simulated range itself"
+                 if found.get("far", True) else
+                 "outside every simulated value ({lo:.4g} to {hi:.4g}) by more than a factor of {ratio:g}")
+        head = (f"Check the target of {_label(spec, r)} (config key {key}): {spec.targets[r]:.6g} lies "
+                + where.format(lo=found["lo"], hi=found["hi"], ratio=UNIT_SLIP_RATIO))
         if found["factor"] is not None:
             text = (f"{head}; {power_of_ten_repair(found)}, so it is likely a unit or typing slip. No widening "
                     "of the search range can reach it.")

@@ -42,3 +42,19 @@ def test_recalibrate_advice_names_each_observables_own_tolerance():
     level2["tolerances"] = {"D": 0.05}
     (item,) = [i for i in material_advice(spec, NO_VERDICTS, criticism={"level2": level2}) if i.kind == "recalibrate"]
     assert "within 5 %" in item.text
+
+
+@pytest.mark.parametrize("target, says", [
+    (0.6, "0.6 lies outside every simulated value (5 to 60) by more than a factor of 3; ×10 → 6 lies inside"),
+    (6000.0, "6000 lies farther from every simulated value (5 to 60) than the simulated range itself; ÷100 → 60 lies "
+             "inside"),
+])
+def test_check_target_says_why_the_target_is_implausible(target, says):
+    from demid.data import implausible_targets
+
+    spec = MaterialSpec.from_material("m", {**_spec().material_config(), "responses": {"D": {"target": target}}})
+    table = pd.DataFrame({"D": [5.0, 12.0, 30.0, 47.0, 60.0]})
+    advice = material_advice(spec, NO_VERDICTS, implausible=implausible_targets(table, spec.targets))
+    (item,) = [i for i in advice if i.kind == "check_target"]
+    assert says in item.text and "config key materials.m.responses.D.target" in item.text
+    assert not [i for i in advice if i.kind == "widen"]
