@@ -400,10 +400,16 @@ class ReportSections:
             if not path.is_file():
                 continue
             scen = read_parquet(path).drop_duplicates("scenario")
+            from ..spec import MaterialSpec
+            from ..tolerance import has_own_tolerance
+
+            own = has_own_tolerance(MaterialSpec.from_material(m, self.config["materials"][m]))
+            error = ("largest relative error, each observable's against its own tolerance, expressed at the "
+                     "scenario's" if own else "largest relative error")
             for _, row in scen[scen["feasible_fraction_pct"] == 0].iterrows():
                 lines.append(f"- **{self._label(m)}**, {row['scenario']}: no point of the domain meets every target "
-                             f"within {100 * row['tolerance']:g} %; the closest point misses by "
-                             f"{100 * row['best_max_rel_error']:.2f} % (largest relative error).")
+                             f"within {100 * row['tolerance']:g} %{' (or its own tolerance)' if own else ''}; the "
+                             f"closest point misses by {100 * row['best_max_rel_error']:.2f} % ({error}).")
         for m in self.materials:
             sub = table[table["material"] == m]
             scen = list(dict.fromkeys(sub["scenario"]))
