@@ -110,9 +110,26 @@ def labelled(text: str, spec) -> str:
     names = {k: v for k, v in names.items() if v and v != k}
     if not names or not text:
         return text
-    pattern = re.compile(r"(?<![\w./`])(" + "|".join(re.escape(k) for k in sorted(names, key=len, reverse=True))
-                         + r")(?![\w`]|\.\w)")
-    return pattern.sub(lambda m: names[m.group(1)], text)
+    words = [k for k in names if k in _ENGLISH_WORDS]  # "a": a factor only where a value or a bracket follows
+    others = [k for k in names if k not in _ENGLISH_WORDS]
+
+    def alternation(keys):
+        return "|".join(re.escape(k) for k in sorted(keys, key=len, reverse=True))
+
+    if others:
+        text = re.compile(r"(?<![\w./`])(" + alternation(others) + r")(?![\w`]|\.\w)").sub(
+            lambda m: names[m.group(1)], text)
+    if words:
+        text = re.compile(r"(?<![\w./`])(" + alternation(words) + r")(?=\s*[=≈]|[,;:)]|\.(?:\s|$)|$)").sub(
+            lambda m: names[m.group(1)], text)
+    return text
+
+
+#: Short English words a factor or response may be called (``a``, ``in``): in running text they are read as
+#: words, and replaced by the label only where a value, a bracket or punctuation follows (``a=0.1``, ``(a ≈ 2)``).
+_ENGLISH_WORDS = frozenset({"a", "an", "and", "any", "are", "as", "at", "be", "but", "by", "can", "do", "for", "if",
+                            "in", "is", "it", "its", "may", "no", "not", "of", "on", "one", "or", "per", "so", "the",
+                            "to", "up", "was", "we"})
 
 
 def verdict_sentence(response: str, res: dict) -> str:
@@ -172,6 +189,7 @@ def criticism_lines(info: dict, spec) -> list[str]:
 
         tol = 100 * level2["tolerance"]
         own = level2.get("tolerances")  # each observable's own tolerance (absent in older results)
+        own = own and dict(in_order(own, level2.get("observables") or ()))  # JSON sorts its keys
         uniform = not own or all(abs(v - level2["tolerance"]) <= 1e-12 * level2["tolerance"] for v in own.values())
         within = f"{tol:g} %" if uniform else labelled(level2_tolerance_text(level2["tolerance"], own), spec)
         best = f"{100 * level2['best_max_error']:.2f} %"

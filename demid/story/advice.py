@@ -106,7 +106,9 @@ def _level2_within(spec, level2: dict) -> str:
     from ..criticism.messages import level2_tolerance_text
     from ..report.summary import labelled
 
-    own = level2.get("tolerances") or {}
+    from ..report.summary import in_order
+
+    own = dict(in_order(level2.get("tolerances") or {}, level2.get("observables") or ()))  # JSON sorts its keys
     if all(abs(v - level2["tolerance"]) <= 1e-12 * level2["tolerance"] for v in own.values()):
         return f"{100 * level2['tolerance']:g} %"
     return labelled(level2_tolerance_text(level2["tolerance"], own), spec)

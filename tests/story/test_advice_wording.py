@@ -58,3 +58,17 @@ def test_check_target_says_why_the_target_is_implausible(target, says):
     (item,) = [i for i in advice if i.kind == "check_target"]
     assert says in item.text and "config key materials.m.responses.D.target" in item.text
     assert not [i for i in advice if i.kind == "widen"]
+
+
+def test_a_factor_called_like_an_english_word_is_labelled_only_where_it_stands_for_the_factor():
+    from demid.report.summary import labelled
+
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "custom"},
+        "factors": {"a": {"lower": 0.0, "upper": 1.0, "label": "a_1"}, "mu_r": {"lower": 0.0, "upper": 1.0,
+                                                                              "label": "μ_r"}},
+        "responses": {"y": {"target": 1.0, "label": "Y"}}, "scenarios": {"s": {"observables": ["y"], "tolerance": 0.02}}})
+    text = ("The closest point (a=0.1, mu_r=0.3) misses y by 3 %, so a discrepancy (bias) in y explains it; "
+            "a wider range of a. It levels off (a ≈ 2), evidence of a bias.")
+    assert labelled(text, spec) == ("The closest point (a_1=0.1, μ_r=0.3) misses Y by 3 %, so a discrepancy (bias) in "
+                                    "Y explains it; a wider range of a_1. It levels off (a_1 ≈ 2), evidence of a bias.")
