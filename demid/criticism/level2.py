@@ -312,7 +312,7 @@ def _bottleneck(problem: _Level2Problem, grid_s, grid_err, tolerance: float, fea
 
 def calibration_check(surrogates: dict, domain, targets: dict[str, float], tolerance: float, n: int,
                       reference_point: dict | None = None, strict_set=None, runs=None,
-                      tolerances: dict[str, float] | None = None) -> Level2Result:
+                      tolerances: dict[str, float] | None = None, implausible=()) -> Level2Result:
     """Level-2 criticism: can any point of the domain meet every target, and if not, why not?
 
     ``surrogates`` maps observable -> object with ``predict(points_actual)``;
@@ -329,6 +329,9 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     and warns of extrapolation.  ``tolerances`` (observable -> its own relative tolerance ε_k, from
     :func:`demid.tolerance.relative_tolerances`; missing: ``tolerance``) weight each relative error by
     ε/ε_k, so that the best point, feasibility and the bottleneck are judged as the strict set is.
+    ``implausible`` (observables whose target lies far from every simulated value,
+    :func:`demid.data.implausible_targets`): no bound the best point sits on is followed outwards, since
+    the best point only chases the slipped target.
     """
     observables = [o for o in targets if o in surrogates]
     if not observables:
@@ -389,6 +392,8 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     best_touch, set_touch = touching(result.best_at_bound), touching(result.set_at_bound or {})
     if unmoved and movable and result.within({observables[i]: best_errors[observables[i]] for i in movable}):
         best_touch = {}  # the others are met: only the unmoved observables miss, and no range moves them
+    if implausible and any(o in implausible for o in observables):
+        best_touch = {}  # a target in another unit is missed everywhere: where the best point sits says nothing
     if not feasible and best_touch:
         best_touch = _worth_widening(result, surrogates, domain, best_touch,
                                      [observables[i] for i in (movable or every)])

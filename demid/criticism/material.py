@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
+from ..data import implausible_targets
 from ..formulas import relative_error
 from ..plots.criticism import residual_figure
 from ..sampling import evaluate_set, uses_grid
@@ -200,7 +201,8 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int |
         level2 = calibration_check({r: surrogates[r] for r in targets}, domain, targets,
                                    spec.reference_tolerance, n_level2, spec.reference_point, strict_set=strict,
                                    runs=table.loc[simulated, factors].to_numpy(dtype=float),
-                                   tolerances=relative_tolerances(spec, list(targets), spec.reference_tolerance))
+                                   tolerances=relative_tolerances(spec, list(targets), spec.reference_tolerance),
+                                   implausible=tuple(implausible_targets(table, targets)))
     calibration = level2.to_frame() if level2 is not None else pd.DataFrame()
     summary = {
         "level1": {r: {"findings": len(p["findings"]), "messages": [f["message"] for f in p["findings"]],

@@ -117,3 +117,17 @@ def test_level2_minimax_uses_each_observables_own_tolerance(own, feasible):
     assert bool(fraction > 0) is feasible
     if not feasible:
         assert frame["best_max_rel_error"].iloc[0] == pytest.approx(value, abs=2e-6)
+
+
+def test_a_target_in_another_unit_is_not_chased_beyond_the_bounds():
+    """y3's target typed ×1000 (1450 for 1.45): the best point only chases it, to a corner; level 2 names the
+    bottleneck but follows no bound outwards (no reach estimate, no widening)."""
+    table, spec, surrogates = _study({})
+    material = spec.material_config()
+    material["responses"]["y3"]["target"] = 1450.0
+    slipped = MaterialSpec.from_material("m", material, grid_points=201)
+    level2 = criticize_material(table, surrogates, slipped).summary["level2"]
+    assert not level2["feasible"] and level2["bottleneck"] == "y3"
+    assert level2["best_point_at_bound"]["b"] == "upper"  # y3 = 1 + b: the corner nearest the slipped target
+    assert level2["reach"] == [] and level2["widen"] == {}
+    assert "Widen" not in level2["message"] and "levels off" not in level2["message"]
