@@ -137,12 +137,14 @@ def _pct(x: float) -> str:
     return f"{100 * x:.2f} %" if abs(x) < 0.1 else f"{100 * x:.1f} %"
 
 
-def level2_tolerance_text(tolerance: float, tolerances: dict[str, float] | None) -> str:
-    """"2.00 %", or with observables of their own tolerance "their own tolerances (d5 2.00 %, rho 0.33 %)"."""
+def level2_tolerance_text(tolerance: float, tolerances: dict[str, float] | None, brackets: bool = True) -> str:
+    """"2.00 %", or with observables of their own tolerance "their own tolerances (d5 2.00 %, rho 0.33 %)"
+    ("their own tolerances: d5 2.00 %, rho 0.33 %" inside brackets already)."""
     own = tolerances or {}
     if all(abs(v - tolerance) <= 1e-12 * tolerance for v in own.values()):
         return _pct(tolerance)
-    return "their own tolerances (" + ", ".join(f"{o} {_pct(v)}" for o, v in own.items()) + ")"
+    listed = ", ".join(f"{o} {_pct(v)}" for o, v in own.items())
+    return f"their own tolerances ({listed})" if brackets else f"their own tolerances: {listed}"
 
 
 def _times(ratio: float) -> str:
@@ -163,7 +165,11 @@ def level2_miss_text(errors: dict[str, float], tolerance: float, tolerances: dic
 
 def _weighted(r: Level2Result, value: float) -> str:
     """A weighted error (level 2's minimax values): a percentage, or a multiple of the own tolerances."""
-    return _pct(value) if r.uniform else f"{_times(value / r.tolerance)} times their own tolerances"
+    if r.uniform:
+        return _pct(value)
+    ratio = value / r.tolerance
+    return (f"{ratio:.2g} times their own tolerances" if ratio >= 0.005 else
+            "a negligible fraction of their own tolerances")
 
 
 def _level2_message(r: Level2Result) -> str:
@@ -178,9 +184,10 @@ def _level2_message(r: Level2Result) -> str:
                      f"misses {miss}.")
     else:
         worst = max(r.best_errors, key=lambda o: abs(r.best_errors[o]) / r.own_tolerance(o))
+        how = f"{'over' if r.best_errors[worst] > 0 else 'under'}-predicted"
         parts.append(f"No point of the domain meets every target ({obs}) within {within}; the "
-                     f"closest point ({pt}) still misses {miss} ({worst} "
-                     f"{'over' if r.best_errors[worst] > 0 else 'under'}-predicted).")
+                     f"closest point ({pt}) still misses "
+                     + (f"{miss} ({worst} {how})." if r.uniform else f"{miss[:-1]}; {how})."))
         if r.bottleneck is not None and r.without:
             b = r.bottleneck
             parts.append(f"{b} is the bottleneck: without it the others can be met within "

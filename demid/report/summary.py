@@ -207,7 +207,8 @@ def criticism_lines(info: dict, spec) -> list[str]:
             inside = level2["reference_max_error"] <= level2["tolerance"] if inside is None else inside
             lines.append(f"Reference point: largest error {100 * level2['reference_max_error']:.2f} % "
                          f"({'within' if inside else 'outside'} "
-                         + (f"the {tol:g} % tolerance)." if uniform else f"{within})."))
+                         + (f"the {tol:g} % tolerance)." if uniform else
+                            labelled(level2_tolerance_text(level2["tolerance"], own, brackets=False), spec) + ")."))
         # a best point on a bound is told by the advice (demid.story), where widening can reach something
         lines += list(level2.get("extrapolation") or [])
     return lines
