@@ -174,9 +174,9 @@ def criticism_lines(info: dict, spec) -> list[str]:
         label = spec.response_labels.get(response, response)
         if res.get("verdict_message"):
             lines.append(f"Surrogate of {label} — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
-                         + verdict_sentence(response, res))
+                         + labelled(verdict_sentence(response, res), spec))
         elif res["messages"]:
-            lines.append(f"Surrogate of {label}: " + " ".join(res["messages"]))
+            lines.append(f"Surrogate of {label}: " + labelled(" ".join(res["messages"]), spec))
         else:
             lines.append(f"Surrogate of {label}: no defect found — the quadratic fits the simulation runs.")
     run_order = info.get("run_order") or {}
