@@ -135,6 +135,8 @@ def verdict_of(result, truth: Truth) -> dict:
     named = [(f.cause, f.detail, list(f.aliases)) for f in result.findings[:1]]
     candidates = getattr(result, "candidates", [])  # (absent before ambiguous verdicts existed)
     out = {"verdict": result.verdict, "named": False, "ambiguous_true": False, "wrong": False,
+           "cause": named[0][0] if named else ("ambiguous" if candidates else ""),
+           "candidates": ";".join(f"{c['cause']}({c['detail']})" for c in candidates),
            "wrong_cause": False, "alarm": result.verdict not in ("adequate",)}
     if named:
         cause, detail, aliases = named[0]
@@ -167,7 +169,8 @@ def one_table(seed: int, k: int, kind: str, size: float, n_null: int) -> dict:
     row["lof"] = bool(fit_response(truth.table, factors, "y").statistics().lof_p < 0.05)
     runs = getattr(first, "discriminating_runs", [])
     row["n_runs"] = len(runs)
-    needs = kind in CAUSE_OF and (bool(runs) or row["first_wrong"])
+    # ambiguous first (candidates listed, whatever the verdict's headline) or misnamed first
+    needs = kind in CAUSE_OF and (bool(first.candidates) or row["first_wrong"])
     row["needs"] = needs
     if needs and runs:
         proposed = truth.coding.to_coded(np.array([[r[f] for f in factors] for r in first.discriminating_runs]))

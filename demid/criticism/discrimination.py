@@ -25,47 +25,74 @@ if TYPE_CHECKING:
     from .models import _Data, _Model
 
 #: Candidates whose extensions' AICc lie within this of the best are not told apart by the runs.
-AMBIGUOUS_AICC = 2.0
+AMBIGUOUS_AICC = 6.0
 
 #: At most this many discriminating runs are proposed.
 MAX_RUNS = 4
 
-#: Summed squared standardised separation the proposed runs aim for: a difference of means found by a
-#: two-sided 5 % test with 80 % power, (z_0.975 + z_0.8)^2.
-TARGET_SEPARATION = float((stats.norm.ppf(0.975) + stats.norm.ppf(0.8)) ** 2)
+#: Power with which the proposed runs should decide between two candidates.
+DECIDING_POWER = 0.8
+
+
+def target_separation(gap: float = 0.0) -> float:
+    """Summed squared standardised separation d^2 two candidates' predictions need at the new runs so that,
+    with probability DECIDING_POWER, the runs move their AICc apart by AMBIGUOUS_AICC beyond the ``gap`` the
+    favoured one may already lead by: under the other candidate the new runs add d^2 + 2 d Z (Z standard
+    normal) to the favoured one's -2 log-likelihood, so d^2 - 2 z_power d = AMBIGUOUS_AICC + gap."""
+    z = float(stats.norm.ppf(DECIDING_POWER))
+    d = z + math.sqrt(z * z + AMBIGUOUS_AICC + max(gap, 0.0))
+    return d * d
+
+
+#: The separation aimed for between two candidates level in AICc.
+TARGET_SEPARATION = target_separation()
 
 PURPOSE = "decide between causes"
 
 #: Causes of one run: an outlier and a slipped factor value of the same run are one candidate.
 _ONE_RUN = ("outlier", "factor_level")
 
-#: A drift and a step both say the response changed with run order: they are one candidate kind, and
-#: between them the better fit is named (the step paying for its change-point, level1.step_price).  Kept
-#: apart, a 14-SD drift over 13 runs that happens to fit a step at run 9 as well was reported ambiguous
-#: (tests/criticism/test_criticism.py); the message of either says what changed and suggests a block column.
-_RUN_ORDER = ("drift", "step")
+#: A drift and a step both say the response changed with run order, but they differ in what later runs give
+#: (a drift goes on, a step stays): they are candidates of different kinds, and so are steps at different
+#: change-points (a replicate of a run between them, made later, tells which side of the step it was on).
+#: Each pays for its choice (a step among its change-points, level1.step_price) before they are compared.
 
 
 def candidate_kind(cause: str, detail) -> tuple:
     if cause in _ONE_RUN:
         return ("one run", str(detail))
-    return ("run order",) if cause in _RUN_ORDER else (cause,)
+    return ("step", str(detail)) if cause == "step" else (cause,)
 
 
-def close_candidates(entries: list[dict]) -> list[dict]:
-    """Candidates (dicts with cause, detail, aicc) within AMBIGUOUS_AICC of the best, one per kind, best
-    first; a single candidate when one stands out."""
+def close_candidates(entries: list[dict], named: tuple | None = None) -> list[dict]:
+    """Candidates (dicts with cause, detail, aicc) the runs do not tell apart from the named cause, one per
+    kind, best first; a single candidate when it stands out.
+
+    Without ``named``: every kind whose best extension lies within AMBIGUOUS_AICC of the best one.  With
+    ``named`` (cause, detail): the named cause and every kind whose best extension is better than the named
+    one's or within AMBIGUOUS_AICC of it -- a cause picked by the strongest test but fitted worse than a
+    rival is not named over it."""
     ranked = sorted((e for e in entries if e.get("aicc") is not None and math.isfinite(e["aicc"])),
                     key=lambda e: e["aicc"])
     if not ranked:
         return []
-    best = ranked[0]["aicc"]
+    anchor = ranked[0]
+    if named is not None:
+        anchor = next((e for e in ranked if (e["cause"], e["detail"]) == tuple(named)), None)
+        if anchor is None:
+            return []
     out, kinds = [], set()
     for e in ranked:
         kind = candidate_kind(e["cause"], e["detail"])
-        if e["aicc"] - best <= AMBIGUOUS_AICC and kind not in kinds:
-            kinds.add(kind)
+        if kind in kinds:
+            continue
+        kinds.add(kind)
+        if e is anchor or e["aicc"] - anchor["aicc"] <= AMBIGUOUS_AICC:
             out.append(e)
+    if named is not None and anchor not in out:  # another entry of its kind was better: the named one leads
+        out = [anchor] + [e for e in out if candidate_kind(e["cause"], e["detail"])
+                          != candidate_kind(anchor["cause"], anchor["detail"])]
+        out.sort(key=lambda e: e["aicc"])
     return out
 
 
@@ -78,10 +105,11 @@ def _grid(data: _Data) -> np.ndarray:
     return pts[np.linalg.norm(pts, axis=1) <= reach]
 
 
-def _prediction(model: _Model, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Mean and variance of a new run's response at the points under the model (original scale; a
-    transform by the delta method; unequal scatter at the points' covariate)."""
-    rows = model.new_run_row(points)
+def _prediction(model: _Model, points: np.ndarray, later: int = 1) -> tuple[np.ndarray, np.ndarray]:
+    """Mean and variance of a new run's response at the points under the model, the run made ``later`` runs
+    after the last one (original scale; a transform by the delta method; unequal scatter at the points'
+    covariate)."""
+    rows = model.new_run_row(points, later)
     xtx_inv = np.linalg.pinv(model.xw.T @ model.xw)
     eta = rows @ model.beta
     sigma2 = model.ssr / max(model.df_resid, 1)
@@ -99,34 +127,45 @@ def _prediction(model: _Model, points: np.ndarray) -> tuple[np.ndarray, np.ndarr
     return mean, var
 
 
-def discriminating_runs(data: _Data, models: list[_Model], labels: list[str]) -> list[dict]:
+def _separation(preds: list, pairs: list) -> np.ndarray:
+    """Standardised squared difference of each pair's predictions at each point (points, pairs)."""
+    return np.column_stack([(preds[a][0] - preds[b][0]) ** 2 / np.maximum(preds[a][1] + preds[b][1], 1e-300)
+                            for a, b in pairs])
+
+
+def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
+                        aiccs: list[float] | None = None) -> list[dict]:
     """Up to MAX_RUNS points where the candidate models' predictions differ most relative to their
     prediction error (maximin over pairs of the standardised squared difference), fewest first: the
-    runs stop once their summed separation of every pair reaches TARGET_SEPARATION."""
+    runs stop once their summed separation of every pair reaches its target_separation (the pair's AICc gap
+    ``aiccs`` included: either may be the truth).  The i-th run is
+    predicted as made i runs after the last one (a drift has gone on by then; a step has not)."""
     if len(models) < 2:
         return []
     points = _grid(data)
-    preds = [_prediction(m, points) for m in models]
     pairs = list(combinations(range(len(models)), 2))
-    sep = np.column_stack([(preds[a][0] - preds[b][0]) ** 2 / np.maximum(preds[a][1] + preds[b][1], 1e-300)
-                           for a, b in pairs])  # (points, pairs)
-    chosen: list[int] = []
+    gaps = [abs(aiccs[a] - aiccs[b]) if aiccs is not None else 0.0 for a, b in pairs]
+    target = np.array([target_separation(g) for g in gaps])
+    chosen: list[tuple[int, list, np.ndarray]] = []
     total = np.zeros(len(pairs))
-    for _ in range(MAX_RUNS):
-        gain = np.min(total[None, :] + sep, axis=1)
+    for later in range(1, MAX_RUNS + 1):
+        preds = [_prediction(m, points, later) for m in models]
+        sep = _separation(preds, pairs)  # (points, pairs)
+        gain = np.min((total[None, :] + sep) / target[None, :], axis=1)
         # a point already chosen may be chosen again (a replicate), but a new point is preferred on ties
-        order = np.lexsort((np.isin(np.arange(len(points)), chosen), -np.round(gain, 9)))
+        taken = np.isin(np.arange(len(points)), [c[0] for c in chosen])
+        order = np.lexsort((taken, -np.round(gain, 9)))
         best = int(order[0])
-        chosen.append(best)
+        chosen.append((best, preds, sep[best]))
         total = total + sep[best]
-        if np.min(total) >= TARGET_SEPARATION:
+        if np.all(total >= target):
             break
     out = []
-    for i in chosen:
+    for i, preds, sep_i in chosen:
         run = data.point_dict(points[i])
         run["purpose"] = PURPOSE
         run["expected"] = {label: _num(p[0][i]) for label, p in zip(labels, preds)}
-        run["separation"] = _num(float(np.min(sep[i])))
+        run["separation"] = _num(float(np.min(sep_i)))
         out.append(run)
     return out
 

@@ -20,7 +20,7 @@ from ..design import LEVERAGE_UNPREDICTABLE, Coding, model_matrix, model_units, 
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .discrimination import candidate_label, close_candidates, discriminating_runs
-from .catalogue import CAUSES, slip_candidates, _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
+from .catalogue import CAUSES, MISFIT_TESTS, slip_candidates, step_directions, _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, rests_on_one_run,
                       strongest_rival, unexplained_evidence, verdict_of)
 from .messages import _CAUSE_WORDS, _message, corner_only_runs
@@ -376,19 +376,11 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not
         return [], []
     if not_singled_out and not findings and not_singled_out["rival"]["cause"] not in CAUSES:
         return [], []
-    entries = []
-    choices = _choices(first_round)
-    for h in first_round.rejected(family_alpha):
-        spec, info = _apply(data, base_model, h)
-        mo = _Model(data, spec)
-        detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
-        # each cause pays for the place it was chosen from (a run, a change-point, a term, a covariate)
-        aicc = mo.aicc + 2.0 * math.log(choices.get(h.cause, 1))
-        entries.append({"cause": h.cause, "detail": detail, "aicc": aicc, "model": mo})
-    close = close_candidates(entries)
     first = (findings[0].cause, findings[0].detail) if findings else \
         (not_singled_out["cause"], not_singled_out["detail"])
-    if len(close) < 2 or not any((c["cause"], c["detail"]) == first for c in close):
+    entries = _candidate_entries(data, base_model, first_round, family_alpha)
+    close = close_candidates(entries, named=first)
+    if len(close) < 2:
         return [], []
     if not findings:
         rival = not_singled_out["rival"]
@@ -398,8 +390,37 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not
     candidates = [{"cause": c["cause"], "detail": c["detail"], "gain": _num(base_aicc - c["aicc"]),
                    "delta_aicc": _num(c["aicc"] - close[0]["aicc"])} for c in close]
     runs = discriminating_runs(data, [c["model"] for c in close], [candidate_label(c["cause"], c["detail"])
-                                                                   for c in close])
+                                                                   for c in close], [c["aicc"] for c in close])
     return candidates, runs
+
+
+#: The causes compared for ambiguity: the ones rejected by the family (CANDIDATES_REJECTED_ONLY) or every
+#: catalogue cause of the first round.
+CANDIDATES_REJECTED_ONLY = False
+
+
+def _candidate_entries(data: _Data, base_model: _Model, first_round, family_alpha: float) -> list[dict]:
+    """Each cause of the first round with its extension and its AICc, the extension paying for the place
+    it was chosen from (a run, a change-point, a term, a covariate); a step also at every other change-point,
+    so that a step whose first run is uncertain is not named at one of them."""
+    entries = []
+    choices = _choices(first_round)
+    hypotheses = first_round.rejected(family_alpha) if CANDIDATES_REJECTED_ONLY else \
+        [h for h in first_round.hypotheses if h.cause not in MISFIT_TESTS]
+    for h in hypotheses:
+        spec, info = _apply(data, base_model, h)
+        mo = _Model(data, spec)
+        detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
+        price = 2.0 * math.log(choices.get(h.cause, 1))
+        entries.append({"cause": h.cause, "detail": detail, "aicc": mo.aicc + price, "model": mo})
+        if h.cause == "step":
+            starts, _ = step_directions(base_model, _orth(base_model.xw))
+            for start in starts:
+                if start != int(h.detail):
+                    other = _Model(data, replace(base_model.spec, step=start))
+                    entries.append({"cause": "step", "detail": _run_value(data.runs[start]),
+                                    "aicc": other.aicc + price, "model": other})
+    return entries
 
 
 def _not_singled_out(data: _Data, model: _Model, h: _Hypothesis, hypotheses: list[_Hypothesis]) -> dict | None:
