@@ -134,16 +134,19 @@ def _separation(preds: list, pairs: list) -> np.ndarray:
 
 
 def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
-                        aiccs: list[float] | None = None) -> list[dict]:
+                        aiccs: list[float] | None = None, kinds: list | None = None) -> list[dict]:
     """Up to MAX_RUNS points where the candidate models' predictions differ most relative to their
     prediction error (maximin over pairs of the standardised squared difference), fewest first: the
     runs stop once their summed separation of every pair reaches its target_separation (the pair's AICc gap
-    ``aiccs`` included: either may be the truth).  The i-th run is
+    ``aiccs`` included: either may be the truth).  Models of one ``kinds`` entry (terms aliased on these
+    runs) are separated from the other kinds' models, not from each other.  The i-th run is
     predicted as made i runs after the last one (a drift has gone on by then; a step has not)."""
     if len(models) < 2:
         return []
     points = _grid(data)
-    pairs = list(combinations(range(len(models)), 2))
+    pairs = [(a, b) for a, b in combinations(range(len(models)), 2) if kinds is None or kinds[a] != kinds[b]]
+    if not pairs:
+        return []
     gaps = [abs(aiccs[a] - aiccs[b]) if aiccs is not None else 0.0 for a, b in pairs]
     target = np.array([target_separation(g) for g in gaps])
     chosen: list[tuple[int, list, np.ndarray]] = []

@@ -19,7 +19,7 @@ from ..blocks import block_columns
 from ..design import LEVERAGE_UNPREDICTABLE, Coding, model_matrix, model_units, quadratic_terms, term_name
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
-from .discrimination import candidate_label, close_candidates, discriminating_runs
+from .discrimination import candidate_kind, candidate_label, close_candidates, discriminating_runs
 from .catalogue import CAUSES, MISFIT_TESTS, slip_candidates, step_directions, _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, rests_on_one_run,
                       strongest_rival, unexplained_evidence, verdict_of)
@@ -389,8 +389,15 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not
     base_aicc = base_model.aicc
     candidates = [{"cause": c["cause"], "detail": c["detail"], "gain": _num(base_aicc - c["aicc"]),
                    "delta_aicc": _num(c["aicc"] - close[0]["aicc"])} for c in close]
-    runs = discriminating_runs(data, [c["model"] for c in close], [candidate_label(c["cause"], c["detail"])
-                                                                   for c in close], [c["aicc"] for c in close])
+    models, labels, aiccs = [], [], []
+    for c in close:  # a missing term is judged with each term aliased with it on these runs
+        for j, mo in enumerate([c["model"]] + c.get("aliased_models", [])):
+            models.append(mo)
+            labels.append(candidate_label(c["cause"], c["detail"] if j == 0 else mo.names[len(data.base_terms)]))
+            aiccs.append(c["aicc"])
+    runs = discriminating_runs(data, models, labels, aiccs, kinds=[candidate_kind(c["cause"], c["detail"])
+                                                                   for c in close for _ in
+                                                                   [0] + c.get("aliased_models", [])])
     return candidates, runs
 
 
@@ -412,7 +419,11 @@ def _candidate_entries(data: _Data, base_model: _Model, first_round, family_alph
         mo = _Model(data, spec)
         detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
         price = 2.0 * math.log(choices.get(h.cause, 1))
-        entries.append({"cause": h.cause, "detail": detail, "aicc": mo.aicc + price, "model": mo})
+        entry = {"cause": h.cause, "detail": detail, "aicc": mo.aicc + price, "model": mo}
+        if h.cause == "missing_term":  # terms the runs alias with it: the deciding runs must not confuse them
+            entry["aliased_models"] = [_Model(data, replace(base_model.spec, extra_terms=(t,)))
+                                       for t in h.detail.terms[1:]]
+        entries.append(entry)
         if h.cause == "step":
             starts, _ = step_directions(base_model, _orth(base_model.xw))
             for start in starts:
