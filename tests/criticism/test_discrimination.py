@@ -1,0 +1,94 @@
+"""Causes the runs cannot tell apart and the runs that decide (criticism.discrimination): the ambiguity rule,
+the power of the proposed runs, and the closed loop with the generator simulating the runs."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+import pytest
+from scipy import stats
+
+from demid.criticism import criticize, discrimination
+from demid.criticism.discrimination import (AMBIGUOUS_AICC, DECIDING_POWER, _prediction, close_candidates,
+                                            target_separation)
+from demid.criticism.level1 import _prepare
+from demid.criticism.models import _Model, _Spec
+from demid.design import model_matrix, quadratic_terms
+from tests.generators import FACTORS, ccd_table, design, random_quadratic
+
+
+def _entry(cause, detail, aicc):
+    return {"cause": cause, "detail": detail, "aicc": aicc}
+
+
+def test_a_cause_fitted_worse_than_a_rival_of_another_kind_is_not_named_over_it():
+    named = ("missing_term", "gamma^3")
+    entries = [_entry("response_transform", "log", -48.0), _entry("missing_term", "gamma^3", -26.0),
+               _entry("outlier", 19, -17.0)]
+    out = close_candidates(entries, named=named)
+    assert [(e["cause"], e["detail"]) for e in out] == [("response_transform", "log"), named]
+    # a rival just inside the margin is listed, one just outside is not
+    entries = [_entry("drift", "run", 0.0), _entry("step", 7, AMBIGUOUS_AICC - 0.1), _entry("outlier", 3, AMBIGUOUS_AICC + 0.1)]
+    assert [e["cause"] for e in close_candidates(entries, named=("drift", "run"))] == ["drift", "step"]
+    # an outlier and a slip of the same run are one candidate; steps at two change-points are two
+    entries = [_entry("factor_level", 8, -25.0), _entry("outlier", 8, -16.0), _entry("step", 9, -15.0),
+               _entry("step", 10, -14.0)]
+    out = close_candidates(entries, named=("outlier", 8))
+    assert [(e["cause"], e["detail"]) for e in out] == [("outlier", 8), ("step", 9), ("step", 10)]
+    assert close_candidates(entries, named=("drift", "run")) == []  # the named cause was not fitted
+
+
+@pytest.mark.parametrize("gap", [0.0, 3.0, 10.0])
+def test_target_separation_decides_with_its_power(gap):
+    """Under the other candidate, new runs of summed squared separation d^2 add d^2 + 2 d Z to the favoured
+    one's -2 log-likelihood; the target makes that exceed the margin plus the gap with DECIDING_POWER."""
+    d2 = target_separation(gap)
+    d = math.sqrt(d2)
+    assert stats.norm.sf((AMBIGUOUS_AICC + gap - d2) / (2 * d)) == pytest.approx(DECIDING_POWER, abs=1e-9)
+    z = np.random.default_rng(0).normal(size=200_000)
+    assert np.mean(d2 + 2 * d * z > AMBIGUOUS_AICC + gap) == pytest.approx(DECIDING_POWER, abs=0.005)
+
+
+def test_a_drift_goes_on_in_the_predictions_of_later_runs_a_step_does_not():
+    table, _ = ccd_table(7, 2, "drift", 8.0)
+    data, _ = _prepare(table, FACTORS[2], "y", None, ())
+    centre = np.zeros((1, 2))
+    drift, step = _Model(data, _Spec(drift=True)), _Model(data, _Spec(step=6))
+    per_run = drift.beta[drift.names.index("run")] / drift.run_scale
+    assert _prediction(drift, centre, 4)[0][0] - _prediction(drift, centre, 1)[0][0] == pytest.approx(3 * per_run)
+    assert _prediction(step, centre, 4)[0][0] == pytest.approx(_prediction(step, centre, 1)[0][0])
+
+
+def _simulate_drift(seed: int, k: int, size: float, runs: list[dict]) -> pd.DataFrame:
+    """The proposed runs as ccd_table's drift would have made them after its runs (the drift goes on)."""
+    rng = np.random.default_rng(seed)
+    factors, coding, coded, _ = design(k)
+    n = len(coded)
+    rng.permutation(n)
+    coef = random_quadratic(rng, k)
+    new = pd.DataFrame([{f: r[f] for f in factors} for r in runs])
+    run = np.arange(n + 1, n + 1 + len(new))
+    new_coded = coding.to_coded(new[factors].to_numpy(dtype=float))
+    noise = np.random.default_rng(10 ** 6 + seed).normal(size=len(new))
+    new["y"] = model_matrix(new_coded, quadratic_terms(k)) @ coef + noise + size * (run - (n + 1) / 2) / (n - 1)
+    new.insert(0, "run", run)
+    return new
+
+
+def test_a_drift_that_also_fits_a_step_is_ambiguous_and_the_proposed_runs_name_the_drift():
+    decided = []
+    for k in (2, 3):
+        for seed in range(20):
+            table, _ = ccd_table(seed, k, "drift", 8.0)
+            first = criticize(table, FACTORS[k], "y", n_null=499)
+            if first.verdict != "ambiguous" or {c["cause"] for c in first.candidates} != {"drift", "step"}:
+                continue
+            runs = first.discriminating_runs
+            assert 1 <= len(runs) <= discrimination.MAX_RUNS
+            again = criticize(pd.concat([table, _simulate_drift(seed, k, 8.0, runs)], ignore_index=True),
+                              FACTORS[k], "y", n_null=499)
+            decided.append((k, seed, [(f.cause, f.detail) for f in again.findings[:1]]))
+    assert len(decided) >= 3, decided
+    assert all(named == [("drift", "run")] for _, _, named in decided), decided
