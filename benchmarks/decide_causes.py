@@ -144,7 +144,7 @@ def verdict_of(result, truth: Truth) -> dict:
         out["wrong"] = not out["named"]
         out["wrong_cause"] = truth.kind not in CAUSE_OF or cause != CAUSE_OF[truth.kind]
     elif candidates:
-        inside = any(truth.right(c["cause"], c["detail"], [c["detail"]]) for c in candidates)
+        inside = any(truth.right(c["cause"], c["detail"], c.get("aliases") or [c["detail"]]) for c in candidates)
         out["wrong_cause"] = not any(truth.kind in CAUSE_OF and c["cause"] == CAUSE_OF[truth.kind]
                                      for c in candidates)
         out["ambiguous_true"] = inside

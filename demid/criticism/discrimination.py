@@ -105,42 +105,67 @@ def _grid(data: _Data) -> np.ndarray:
     return pts[np.linalg.norm(pts, axis=1) <= reach]
 
 
-def _prediction(model: _Model, points: np.ndarray, later: int = 1) -> tuple[np.ndarray, np.ndarray]:
-    """Mean and variance of a new run's response at the points under the model, the run made ``later`` runs
-    after the last one (original scale; a transform by the delta method; unequal scatter at the points'
-    covariate)."""
+def _prediction_parts(model: _Model, points: np.ndarray, later: int = 1) -> tuple:
+    """A new run's response at the points under the model, the run made ``later`` runs after the last one:
+    (mean, jac, noise, param_cov) with the prediction's covariance over several runs
+    jac param_cov jac' + diag(noise) -- the estimation error is shared by every run (a replicate does not
+    average it away), the run's own scatter is not (original scale; a transform by the delta method;
+    unequal scatter at the points' covariate)."""
     rows = model.new_run_row(points, later)
-    xtx_inv = np.linalg.pinv(model.xw.T @ model.xw)
     eta = rows @ model.beta
     sigma2 = model.ssr / max(model.df_resid, 1)
-    var_eta = sigma2 * np.einsum("ij,jk,ik->i", rows, xtx_inv, rows)
+    param_cov = sigma2 * np.linalg.pinv(model.xw.T @ model.xw)
     spec = model.spec
     noise = np.full(len(points), sigma2)
     if spec.weight_on is not None and spec.weight_on in model.data.factors:
         v = points[:, model.data.factors.index(spec.weight_on)] / model.data.alpha
         noise = sigma2 * np.exp(spec.weight_gamma * v)
     mean = _inv_boxcox(eta, spec.lam)
-    var = var_eta + noise
+    slope = np.ones(len(points))
     if spec.lam is not None:
         slope = np.abs(_inv_boxcox(eta + 1e-6, spec.lam) - _inv_boxcox(eta - 1e-6, spec.lam)) / 2e-6
-        var = var * slope ** 2
-    return mean, var
+    return mean, rows * slope[:, None], noise * slope ** 2, param_cov
 
 
-def _separation(preds: list, pairs: list) -> np.ndarray:
-    """Standardised squared difference of each pair's predictions at each point (points, pairs)."""
-    return np.column_stack([(preds[a][0] - preds[b][0]) ** 2 / np.maximum(preds[a][1] + preds[b][1], 1e-300)
-                            for a, b in pairs])
+def _prediction(model: _Model, points: np.ndarray, later: int = 1) -> tuple[np.ndarray, np.ndarray]:
+    """Mean and variance of one new run's response at each of the points (see _prediction_parts)."""
+    mean, jac, noise, cov = _prediction_parts(model, points, later)
+    return mean, np.einsum("ij,jk,ik->i", jac, cov, jac) + noise
+
+
+def _joint_separation(chosen_a: list, chosen_b: list, parts_a: tuple, parts_b: tuple) -> np.ndarray:
+    """delta' (S_a + S_b)^-1 delta of the chosen runs together with each candidate point (one value per
+    point): the squared Mahalanobis distance between two models' predictions of the runs, their estimation
+    errors correlated across the runs.  chosen_*: (mean, jac row, noise) of each run chosen so far; parts_*:
+    (mean, jac, noise, param_cov) at every point."""
+    n_points = len(parts_a[0])
+
+    def stacked(chosen, parts):
+        mean, jac, noise, cov = parts
+        means = np.column_stack([np.full(n_points, c[0]) for c in chosen] + [mean])  # (P, m)
+        jacs = np.stack([np.broadcast_to(c[1], jac.shape) for c in chosen] + [jac], axis=1)  # (P, m, p)
+        noises = np.column_stack([np.full(n_points, c[2]) for c in chosen] + [noise])
+        covs = np.einsum("qij,jk,qlk->qil", jacs, cov, jacs)
+        covs[:, np.arange(noises.shape[1]), np.arange(noises.shape[1])] += noises
+        return means, covs
+
+    mean_a, cov_a = stacked(chosen_a, parts_a)
+    mean_b, cov_b = stacked(chosen_b, parts_b)
+    delta = mean_a - mean_b
+    total = cov_a + cov_b
+    total[:, np.arange(delta.shape[1]), np.arange(delta.shape[1])] += 1e-300
+    return np.einsum("qi,qi->q", delta, np.linalg.solve(total, delta[:, :, None])[:, :, 0])
 
 
 def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
                         aiccs: list[float] | None = None, kinds: list | None = None) -> list[dict]:
     """Up to MAX_RUNS points where the candidate models' predictions differ most relative to their
-    prediction error (maximin over pairs of the standardised squared difference), fewest first: the
-    runs stop once their summed separation of every pair reaches its target_separation (the pair's AICc gap
-    ``aiccs`` included: either may be the truth).  Models of one ``kinds`` entry (terms aliased on these
-    runs) are separated from the other kinds' models, not from each other.  The i-th run is
-    predicted as made i runs after the last one (a drift has gone on by then; a step has not)."""
+    prediction error (T-optimal / Box-Hill: maximin over pairs of the squared Mahalanobis distance between
+    their predictions of the runs together), fewest first: the runs stop once the separation of every pair
+    reaches its target_separation (the pair's AICc gap ``aiccs`` included: either may be the truth).  Models
+    of one ``kinds`` entry (terms aliased on these runs) are separated from the other kinds' models, not
+    from each other.  The i-th run is predicted as made i runs after the last one (a drift has gone on by
+    then; a step has not)."""
     if len(models) < 2:
         return []
     points = _grid(data)
@@ -150,25 +175,23 @@ def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
     gaps = [abs(aiccs[a] - aiccs[b]) if aiccs is not None else 0.0 for a, b in pairs]
     target = np.array([target_separation(g) for g in gaps])
     chosen: list[tuple[int, list, np.ndarray]] = []
-    total = np.zeros(len(pairs))
     for later in range(1, MAX_RUNS + 1):
-        preds = [_prediction(m, points, later) for m in models]
-        sep = _separation(preds, pairs)  # (points, pairs)
-        gain = np.min((total[None, :] + sep) / target[None, :], axis=1)
+        parts = [_prediction_parts(m, points, later) for m in models]
+        sep = np.column_stack([_joint_separation([c[1][a] for c in chosen], [c[1][b] for c in chosen],
+                                                 parts[a], parts[b]) for a, b in pairs])  # (points, pairs)
+        gain = np.min(sep / target[None, :], axis=1)
         # a point already chosen may be chosen again (a replicate), but a new point is preferred on ties
         taken = np.isin(np.arange(len(points)), [c[0] for c in chosen])
-        order = np.lexsort((taken, -np.round(gain, 9)))
-        best = int(order[0])
-        chosen.append((best, preds, sep[best]))
-        total = total + sep[best]
-        if np.all(total >= target):
+        best = int(np.lexsort((taken, -np.round(gain, 9)))[0])
+        chosen.append((best, [(p[0][best], p[1][best], p[2][best]) for p in parts], sep[best]))
+        if np.all(sep[best] >= target):
             break
     out = []
-    for i, preds, sep_i in chosen:
+    for i, run_of_model, sep_i in chosen:
         run = data.point_dict(points[i])
         run["purpose"] = PURPOSE
-        run["expected"] = {label: _num(p[0][i]) for label, p in zip(labels, preds)}
-        run["separation"] = _num(float(np.min(sep_i)))
+        run["expected"] = {label: _num(p[0]) for label, p in zip(labels, run_of_model)}
+        run["separation"] = _num(float(np.min(sep_i)))  # of every pair by the runs so far
         out.append(run)
     return out
 

@@ -388,7 +388,8 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not
             return [], []
     base_aicc = base_model.aicc
     candidates = [{"cause": c["cause"], "detail": c["detail"], "gain": _num(base_aicc - c["aicc"]),
-                   "delta_aicc": _num(c["aicc"] - close[0]["aicc"])} for c in close]
+                   "delta_aicc": _num(c["aicc"] - close[0]["aicc"]), "aliases": c.get("aliases", [])}
+                  for c in close]
     models, labels, aiccs = [], [], []
     for c in close:  # a missing term is judged with each term aliased with it on these runs
         for j, mo in enumerate([c["model"]] + c.get("aliased_models", [])):
@@ -419,7 +420,7 @@ def _candidate_entries(data: _Data, base_model: _Model, first_round, family_alph
         mo = _Model(data, spec)
         detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
         price = 2.0 * math.log(choices.get(h.cause, 1))
-        entry = {"cause": h.cause, "detail": detail, "aicc": mo.aicc + price, "model": mo}
+        entry = {"cause": h.cause, "detail": detail, "aicc": mo.aicc + price, "model": mo, "aliases": list(h.aliases)}
         if h.cause == "missing_term":  # terms the runs alias with it: the deciding runs must not confuse them
             entry["aliased_models"] = [_Model(data, replace(base_model.spec, extra_terms=(t,)))
                                        for t in h.detail.terms[1:]]

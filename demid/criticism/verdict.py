@@ -164,11 +164,14 @@ def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], re
 def ambiguous_message(response: str, candidates: list[dict], runs: list[dict]) -> str:
     """Why no cause is named when several explain the misfit about equally, and the runs that would decide."""
     names = [_entry_text({"cause": c["cause"], "detail": c["detail"]}) for c in candidates]
+    from .discrimination import AMBIGUOUS_AICC
+
     spread = max(c["delta_aicc"] or 0.0 for c in candidates)
     text = (f"{response}: ambiguous — {' and '.join(names) if len(names) == 2 else ', '.join(names)} explain the "
-            f"misfit about equally (their extensions' AICc lie within {spread:.1f} of each other, less than 2: the "
-            f"runs give no real preference), so none of them is named: they fit the runs made so far about equally "
-            f"well and differ in what further runs would give.")
+            f"misfit about equally (their extensions' AICc lie within {spread:.1f} of each other, or the cause the "
+            f"tests point at fits worse than a rival; a lead of less than {AMBIGUOUS_AICC:g}, an evidence ratio "
+            f"below {math.exp(AMBIGUOUS_AICC / 2):.0f}:1, is no decisive preference), so none of them is named: they "
+            f"fit the runs made so far about equally well and differ in what further runs would give.")
     if runs:
         points = "; ".join("(" + ", ".join(f"{k}={v:g}" for k, v in r.items()
                                            if k not in ("purpose", "expected", "separation")) + ")" for r in runs)
