@@ -92,3 +92,37 @@ def test_a_drift_that_also_fits_a_step_is_ambiguous_and_the_proposed_runs_name_t
             decided.append((k, seed, [(f.cause, f.detail) for f in again.findings[:1]]))
     assert len(decided) >= 3, decided
     assert all(named == [("drift", "run")] for _, _, named in decided), decided
+
+
+def test_the_separation_of_several_runs_against_statsmodels_predictions():
+    """Two candidate models' predictions of three new runs (a point, its replicate, another point): the
+    squared Mahalanobis distance with each model's estimation covariance (statsmodels cov_params) shared by
+    the runs and its residual variance added per run; a replicate adds less than a run of its own."""
+    import statsmodels.api as sm
+
+    from demid.criticism.discrimination import _joint_separation, _prediction_parts
+    from demid.design import parse_term
+
+    table, _ = ccd_table(3, 2, "term", 6.0, term="mu_r^3")
+    data, _ = _prepare(table, FACTORS[2], "y", None, ())
+    cubic = parse_term("mu_r^3", FACTORS[2])
+    plain, extended = _Model(data, _Spec()), _Model(data, _Spec(extra_terms=(cubic,)))
+    points = np.array([[1.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])
+
+    def statsmodels_prediction(terms):
+        fit = sm.OLS(data.y, model_matrix(data.coded, terms)).fit()
+        rows = model_matrix(points, terms)
+        return rows @ fit.params, rows @ fit.cov_params() @ rows.T + fit.scale * np.eye(len(points))
+
+    mean_a, cov_a = statsmodels_prediction(quadratic_terms(2))
+    mean_b, cov_b = statsmodels_prediction(quadratic_terms(2) + [cubic])
+    delta = mean_a - mean_b
+    expected = float(delta @ np.linalg.solve(cov_a + cov_b, delta))
+
+    parts_a, parts_b = _prediction_parts(plain, points), _prediction_parts(extended, points)
+    chosen_a = [(parts_a[0][i], parts_a[1][i], parts_a[2][i]) for i in (0, 1)]
+    chosen_b = [(parts_b[0][i], parts_b[1][i], parts_b[2][i]) for i in (0, 1)]
+    assert _joint_separation(chosen_a, chosen_b, parts_a, parts_b)[2] == pytest.approx(expected, rel=1e-9)
+    one = _joint_separation([], [], parts_a, parts_b)
+    two = _joint_separation(chosen_a[:1], chosen_b[:1], parts_a, parts_b)[1]
+    assert one[0] < two < 2 * one[0]
