@@ -1,13 +1,21 @@
 """Causes the runs cannot tell apart, and the runs that would decide between them.
 
 When two or more catalogue causes explain the misfit about equally well, naming one of them is a guess.
-"About equally" is measured by the AICc of their one-parameter extensions: within
-:data:`AMBIGUOUS_AICC` of the best, the Akaike weights of the two are no further apart than e (2.7:1),
-so the runs give no real preference (Burnham & Anderson's rule of thumb: models within 2 have
-substantial support).  The verdict is then ``ambiguous`` with the candidates, and up to
-:data:`MAX_RUNS` new runs are proposed where the candidates' predictions differ most relative to
-their prediction error (the T-optimal / Box-Hill criterion for discriminating between models): each
-new run made after the existing ones (so a drift or a step continues, an outlier does not recur).
+Every cause of the first round is fitted as its extension of the quadratic (a step at every change-point),
+paying 2 log C in AICc for the place it was chosen from among C.  The cause the tests point at is named
+only when its extension's AICc leads the best one of every other kind by :data:`AMBIGUOUS_AICC` (6: an
+evidence ratio exp(6/2) = 20:1, "strong" evidence on Kass & Raftery's scale of 2 log B, where 2-6 is only
+"positive"; Burnham & Anderson: models within 4-7 of the best have considerably less support, not none).
+Otherwise the verdict is ``ambiguous`` with the candidates -- the named cause and every kind within the
+margin of it or fitted better -- and up to :data:`MAX_RUNS` new runs are proposed where the candidates'
+predictions differ most relative to their prediction error (the T-optimal / Box-Hill criterion for
+discriminating between models, the runs judged together: their estimation errors are shared), each new
+run made after the existing ones (so a drift goes on, a step stays, an outlier does not recur), until the
+separation is large enough to move the candidates' AICc apart by the margin with 80 % power.
+
+In benchmarks/decide_causes.py (360 tables, seeds 0-19) the margin of 6 against the former 2 between the
+best two: strict wrong causes on catalogue defects 0.050 against 0.062 (n_null 199), the true cause among
+the candidates instead; a margin of 4 gave 0.062.
 """
 
 from __future__ import annotations
@@ -24,7 +32,7 @@ from .models import _inv_boxcox, _num, _run_value
 if TYPE_CHECKING:
     from .models import _Data, _Model
 
-#: Candidates whose extensions' AICc lie within this of the best are not told apart by the runs.
+#: A cause is named only when its extension's AICc leads every rival kind's by this (see the module text).
 AMBIGUOUS_AICC = 6.0
 
 #: At most this many discriminating runs are proposed.

@@ -370,8 +370,8 @@ def _honest_causes(data: _Data, response: str, findings: list, model: _Model, ba
 def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not_singled_out: dict | None,
                family_alpha: float) -> tuple[list[dict], list[dict]]:
     """(candidates, discriminating runs) when the first cause named, or the candidate not singled out for
-    a rival of another kind, explains the misfit about as well as another rejected cause (their
-    extensions' AICc within discrimination.AMBIGUOUS_AICC); ([], []) otherwise."""
+    a rival of another kind, does not lead every cause of another kind by discrimination.AMBIGUOUS_AICC in
+    AICc (discrimination.close_candidates); ([], []) otherwise."""
     if first_round is None or not (findings or (not_singled_out and "rival" in not_singled_out)):
         return [], []
     if not_singled_out and not findings and not_singled_out["rival"]["cause"] not in CAUSES:
