@@ -35,6 +35,14 @@ if TYPE_CHECKING:
 #: A cause is named only when its extension's AICc leads every rival kind's by this (see the module text).
 AMBIGUOUS_AICC = 6.0
 
+#: A cause named with a rival of another kind whose extension's AICc is within this of its own is named
+#: with runs that would confirm it against the rival: a lead below 10 (evidence ratio 150:1) is "strong"
+#: but not "very strong" on Kass & Raftery's scale, and a misnamed cause can only be corrected by runs
+#: that separate it from the truth.
+CONFIRM_AICC = 10.0
+
+CONFIRM_PURPOSE = "confirm the named cause"
+
 #: At most this many discriminating runs are proposed.
 MAX_RUNS = 4
 
@@ -72,14 +80,14 @@ def candidate_kind(cause: str, detail) -> tuple:
     return ("step", str(detail)) if cause == "step" else (cause,)
 
 
-def close_candidates(entries: list[dict], named: tuple | None = None) -> list[dict]:
+def close_candidates(entries: list[dict], named: tuple | None = None, margin: float | None = None) -> list[dict]:
     """Candidates (dicts with cause, detail, aicc) the runs do not tell apart from the named cause, one per
     kind, best first; a single candidate when it stands out.
 
     Without ``named``: every kind whose best extension lies within AMBIGUOUS_AICC of the best one.  With
     ``named`` (cause, detail): the named cause and every kind whose best extension is better than the named
     one's or within AMBIGUOUS_AICC of it -- a cause picked by the strongest test but fitted worse than a
-    rival is not named over it."""
+    rival is not named over it.  ``margin`` replaces AMBIGUOUS_AICC."""
     ranked = sorted((e for e in entries if e.get("aicc") is not None and math.isfinite(e["aicc"])),
                     key=lambda e: e["aicc"])
     if not ranked:
@@ -89,13 +97,14 @@ def close_candidates(entries: list[dict], named: tuple | None = None) -> list[di
         anchor = next((e for e in ranked if (e["cause"], e["detail"]) == tuple(named)), None)
         if anchor is None:
             return []
+    margin = AMBIGUOUS_AICC if margin is None else margin
     out, kinds = [], set()
     for e in ranked:
         kind = candidate_kind(e["cause"], e["detail"])
         if kind in kinds:
             continue
         kinds.add(kind)
-        if e is anchor or e["aicc"] - anchor["aicc"] <= AMBIGUOUS_AICC:
+        if e is anchor or e["aicc"] - anchor["aicc"] <= margin:
             out.append(e)
     if named is not None and anchor not in out:  # another entry of its kind was better: the named one leads
         out = [anchor] + [e for e in out if candidate_kind(e["cause"], e["detail"])
@@ -166,7 +175,8 @@ def _joint_separation(chosen_a: list, chosen_b: list, parts_a: tuple, parts_b: t
 
 
 def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
-                        aiccs: list[float] | None = None, kinds: list | None = None) -> list[dict]:
+                        aiccs: list[float] | None = None, kinds: list | None = None,
+                        purpose: str = PURPOSE) -> list[dict]:
     """Up to MAX_RUNS points where the candidate models' predictions differ most relative to their
     prediction error (T-optimal / Box-Hill: maximin over pairs of the squared Mahalanobis distance between
     their predictions of the runs together), fewest first: the runs stop once the separation of every pair
@@ -197,7 +207,7 @@ def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
     out = []
     for i, run_of_model, sep_i in chosen:
         run = data.point_dict(points[i])
-        run["purpose"] = PURPOSE
+        run["purpose"] = purpose
         run["expected"] = {label: _num(p[0]) for label, p in zip(labels, run_of_model)}
         run["separation"] = _num(float(np.min(sep_i)))  # of every pair by the runs so far
         out.append(run)

@@ -19,7 +19,7 @@ from ..blocks import block_columns
 from ..design import LEVERAGE_UNPREDICTABLE, Coding, model_matrix, model_units, quadratic_terms, term_name
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
-from .discrimination import candidate_kind, candidate_label, close_candidates, discriminating_runs
+from .discrimination import CONFIRM_AICC, CONFIRM_PURPOSE, PURPOSE, candidate_kind, candidate_label, close_candidates, discriminating_runs
 from .catalogue import CAUSES, MISFIT_TESTS, slip_candidates, step_directions, _GAMMA_BOUND, _LAMBDA_FINE_GRID, _NICE_LAMBDAS, _Round, _boxcox_profile
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, rests_on_one_run,
                       strongest_rival, unexplained_evidence, verdict_of)
@@ -380,6 +380,9 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not
         (not_singled_out["cause"], not_singled_out["detail"])
     entries = _candidate_entries(data, base_model, first_round, family_alpha)
     close = close_candidates(entries, named=first)
+    if len(close) < 2 and findings:  # named: runs that would confirm it against a rival not far behind
+        rivals = close_candidates(entries, named=first, margin=CONFIRM_AICC)
+        return [], (_deciding_runs(data, rivals, CONFIRM_PURPOSE) if len(rivals) > 1 else [])
     if len(close) < 2:
         return [], []
     if not findings:
@@ -390,16 +393,20 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not
     candidates = [{"cause": c["cause"], "detail": c["detail"], "gain": _num(base_aicc - c["aicc"]),
                    "delta_aicc": _num(c["aicc"] - close[0]["aicc"]), "aliases": c.get("aliases", [])}
                   for c in close]
-    models, labels, aiccs = [], [], []
-    for c in close:  # a missing term is judged with each term aliased with it on these runs
+    return candidates, _deciding_runs(data, close, PURPOSE)
+
+
+def _deciding_runs(data: _Data, close: list[dict], purpose: str) -> list[dict]:
+    """The runs that separate the causes ``close`` (each missing term together with the terms the runs alias
+    with it)."""
+    models, labels, aiccs, kinds = [], [], [], []
+    for c in close:
         for j, mo in enumerate([c["model"]] + c.get("aliased_models", [])):
             models.append(mo)
             labels.append(candidate_label(c["cause"], c["detail"] if j == 0 else mo.names[len(data.base_terms)]))
             aiccs.append(c["aicc"])
-    runs = discriminating_runs(data, models, labels, aiccs, kinds=[candidate_kind(c["cause"], c["detail"])
-                                                                   for c in close for _ in
-                                                                   [0] + c.get("aliased_models", [])])
-    return candidates, runs
+            kinds.append(candidate_kind(c["cause"], c["detail"]))
+    return discriminating_runs(data, models, labels, aiccs, kinds, purpose)
 
 
 #: The causes compared for ambiguity: the ones rejected by the family (CANDIDATES_REJECTED_ONLY) or every

@@ -180,6 +180,19 @@ def ambiguous_message(response: str, candidates: list[dict], runs: list[dict]) -
     return text
 
 
+def _points_text(runs: list[dict]) -> str:
+    return "; ".join("(" + ", ".join(f"{k}={v:g}" for k, v in r.items()
+                                     if k not in ("purpose", "expected", "separation")) + ")" for r in runs)
+
+
+def confirming_message(runs: list[dict]) -> str:
+    """The runs that would confirm a named cause against a rival not far behind it."""
+    rivals = [label for label in runs[0]["expected"] if label != next(iter(runs[0]["expected"]))]
+    return (f" The cause is named with a rival not far behind ({', '.join(rivals)}: the named extension's AICc leads "
+            f"by less than 10, strong but not very strong evidence): {len(runs)} more run{'s' if len(runs) > 1 else ''}"
+            f" made after these, at {_points_text(runs)}, would confirm it or correct it.")
+
+
 def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power: float = POWER) -> float | None:
     """Size, in residual standard deviations, of a one-degree-of-freedom departure (a shifted run, an
     omitted term's contribution) that the family finds with probability ``power``.
@@ -263,6 +276,8 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
             detail["message"] += " " + text
         else:
             verdict, detail["message"] = "ambiguous", text
+    elif runs and verdict == "defect":
+        detail["message"] += confirming_message(list(runs))
     lone = unpredictable_runs_message(fit)
     if lone:
         detail["unpredictable_runs"] = [int(r) for r in np.asarray(fit.runs)[fit.fitted_exactly]]
