@@ -247,7 +247,8 @@ def main(argv=None) -> None:
     if len(needs):
         amb = needs[needs["first_candidates"].fillna("") != ""]
         ran = needs[needs["n_runs"] > 0]
-        print(f"ambiguous or misnamed first: {len(needs)} tables ({len(amb)} ambiguous, {len(ran)} with runs proposed); "
+        print(f"ambiguous or misnamed first: {len(needs)} tables ({len(amb)} ambiguous, {len(ran)} with runs "
+              f"proposed); "
               f"after the proposed runs named {needs['after_named'].mean():.3f} (ambiguous ones "
               f"{amb['after_named'].mean():.3f}), after as many random runs {needs['random_named'].mean():.3f} "
               f"({amb['random_named'].mean():.3f})")

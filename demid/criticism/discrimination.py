@@ -60,9 +60,6 @@ def target_separation(gap: float = 0.0) -> float:
     return d * d
 
 
-#: The separation aimed for between two candidates level in AICc.
-TARGET_SEPARATION = target_separation()
-
 PURPOSE = "decide between causes"
 
 #: Causes of one run: an outlier and a slipped factor value of the same run are one candidate.

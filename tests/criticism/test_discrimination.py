@@ -30,8 +30,12 @@ def test_a_cause_fitted_worse_than_a_rival_of_another_kind_is_not_named_over_it(
     out = close_candidates(entries, named=named)
     assert [(e["cause"], e["detail"]) for e in out] == [("response_transform", "log"), named]
     # a rival just inside the margin is listed, one just outside is not
-    entries = [_entry("drift", "run", 0.0), _entry("step", 7, AMBIGUOUS_AICC - 0.1), _entry("outlier", 3, AMBIGUOUS_AICC + 0.1)]
+    entries = [_entry("drift", "run", 0.0), _entry("step", 7, AMBIGUOUS_AICC - 0.1),
+               _entry("outlier", 3, AMBIGUOUS_AICC + 0.1)]
     assert [e["cause"] for e in close_candidates(entries, named=("drift", "run"))] == ["drift", "step"]
+    # the wider margin within which a named cause comes with confirming runs
+    wider = close_candidates(entries, named=("drift", "run"), margin=discrimination.CONFIRM_AICC)
+    assert [e["cause"] for e in wider] == ["drift", "step", "outlier"]
     # an outlier and a slip of the same run are one candidate; steps at two change-points are two
     entries = [_entry("factor_level", 8, -25.0), _entry("outlier", 8, -16.0), _entry("step", 9, -15.0),
                _entry("step", 10, -14.0)]
