@@ -2,7 +2,8 @@
 
 Each revision is cloned into a temporary folder and run there with its own package on PYTHONPATH:
 ``--runs`` clean ``snakemake -c2`` runs (results/ and .snakemake/ removed before each), then ``--runs``
-dry runs.  Per rule, the median wall and CPU seconds of its Snakemake ``benchmark:`` files.  With
+dry runs.  Each run's wall and CPU seconds (every process the run started), the sums of the
+``benchmark:`` files' ``s`` and ``cpu_time`` columns, and per rule their medians.  With
 ``--against REV`` the same for REV, and the ratios (this / REV): the clean-run goal is stated on one
 machine, and a ratio carries over to another.
 
@@ -13,6 +14,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import resource
 import statistics
 import subprocess
 import tempfile
@@ -22,9 +24,18 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 
 
-def _timed(cmd: list[str], cwd: Path, env: dict) -> float:
-    start = time.perf_counter()
+def _children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def _timed(cmd: list[str], cwd: Path, env: dict, cpu: list | None = None) -> float:
+    """Wall seconds of ``cmd``; with ``cpu``, its CPU seconds (every process it started, Snakemake's own
+    included: less sensitive to other load on the machine than wall time) are appended there."""
+    start, start_cpu = time.perf_counter(), _children_cpu()
     subprocess.run(cmd, cwd=cwd, env=env, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    if cpu is not None:
+        cpu.append(_children_cpu() - start_cpu)
     return time.perf_counter() - start
 
 
@@ -44,18 +55,23 @@ def measure(rev: str, runs: int) -> dict:
         subprocess.run(["git", "clone", "-q", str(REPO), str(clone)], check=True)
         subprocess.run(["git", "checkout", "-q", rev], cwd=clone, check=True)
         env = dict(os.environ, PYTHONPATH=str(clone))
-        walls, per_rule = [], []
+        walls, cpus, per_rule = [], [], []
         for _ in range(runs):
             subprocess.run(["rm", "-rf", "results", ".snakemake"], cwd=clone, check=True)
             for tsv in (clone / "benchmarks").glob("*/*.tsv"):
                 tsv.unlink()
-            walls.append(_timed(["snakemake", "-c2", "-q"], clone, env))
+            walls.append(_timed(["snakemake", "-c2", "-q"], clone, env, cpus))
             per_rule.append(_rule_times(clone))
-        dry = [_timed(["snakemake", "-n", "-q"], clone, env) for _ in range(runs)]
+        dry_cpus = []
+        dry = [_timed(["snakemake", "-n", "-q"], clone, env, dry_cpus) for _ in range(runs)]
         size = sum(f.stat().st_size for f in (clone / "results").rglob("*") if f.is_file())
     rules = {name: (statistics.median(r[name][0] for r in per_rule), statistics.median(r[name][1] for r in per_rule))
              for name in per_rule[0] if all(name in r for r in per_rule)}
-    return {"rev": rev, "walls": walls, "dry": dry, "rules": rules, "mb": size / 1e6}
+    # the benchmark files' sums per run (their cpu_time is sampled, so it misses the last moments of a job)
+    sums = [(sum(w for w, _ in r.values()), sum(c for _, c in r.values())) for r in per_rule]
+    return {"rev": rev, "walls": walls, "cpus": cpus, "dry": dry, "dry_cpus": dry_cpus, "rules": rules,
+            "rule_wall_sum": statistics.median(w for w, _ in sums), "rule_cpu_sum": statistics.median(c for _, c in sums),
+            "mb": size / 1e6}
 
 
 def _print(result: dict, base: dict | None) -> None:
@@ -66,8 +82,16 @@ def _print(result: dict, base: dict | None) -> None:
     print(f"{'':40s} {result['rev'][:9]:>9} {base['rev'][:9] if base else '':>9} {'ratio' if base else ''}")
     line("clean snakemake -c2, wall s (median)", statistics.median(result["walls"]),
          round(statistics.median(base["walls"]), 2) if base else None)
+    line("clean snakemake -c2, CPU s (median)", statistics.median(result["cpus"]),
+         round(statistics.median(base["cpus"]), 2) if base else None)
+    line("benchmark files: sum s (median)", result["rule_wall_sum"],
+         round(base["rule_wall_sum"], 2) if base else None)
+    line("benchmark files: sum cpu_time (median)", result["rule_cpu_sum"],
+         round(base["rule_cpu_sum"], 2) if base else None)
     line("snakemake -n, wall s (median)", statistics.median(result["dry"]),
          round(statistics.median(base["dry"]), 2) if base else None)
+    line("snakemake -n, CPU s (median)", statistics.median(result["dry_cpus"]),
+         round(statistics.median(base["dry_cpus"]), 2) if base else None)
     line("results/, MB", result["mb"], round(base["mb"], 1) if base else None)
     print("runs:", ", ".join(f"{w:.2f}" for w in result["walls"]),
           *(["| base:", ", ".join(f"{w:.2f}" for w in base["walls"])] if base else []))

@@ -5,6 +5,7 @@ module of demid but ``errors``; the cross-checks that call the rest of the packa
 from __future__ import annotations
 
 import copy
+import functools
 import re
 from pathlib import Path
 
@@ -19,6 +20,14 @@ SCHEMA_PATH = Path(__file__).resolve().parent / "schemas" / "config.schema.yaml"
 
 
 def load_schema(path: Path | str = SCHEMA_PATH) -> dict:
+    """The schema at ``path`` (a copy: the caller may change it)."""
+    return copy.deepcopy(_parsed_schema(str(Path(path).resolve())))
+
+
+@functools.lru_cache(maxsize=None)
+def _parsed_schema(path: str) -> dict:
+    # Parsed once per process: every MaterialSpec built from a bare entry reads the schema's defaults (the
+    # report builds 33), and the YAML parse costs several times the copy.
     # libyaml's safe loader when built (same YAML rules, ~10x faster): every parse of the workflow reads this
     loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
     with open(path, encoding="utf-8") as fh:

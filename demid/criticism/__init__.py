@@ -93,14 +93,24 @@ log-likelihoods, influence PRESS residuals, ``eval_measures.aicc``) and scipy
 false-alarm rates against oracle tests in ``benchmarks/criticism_power.py``.
 """
 
-from ..plots.criticism import residual_figure
-from .aliasing import AliasSet, separating_runs
-from .catalogue import CAUSES
-from .level1 import CriticismResult, Finding, criticize
-from .level2 import Level2Result, calibration_check
-from .material import MaterialCriticism, criticize_material, reference_point_position
-from .models import TRANSFORM_NAMES, ExtendedSurrogate, infer_axial_distance
+from importlib import import_module
 
-__all__ = ["CAUSES", "TRANSFORM_NAMES", "AliasSet", "CriticismResult", "ExtendedSurrogate", "Finding",
-           "Level2Result", "MaterialCriticism", "calibration_check", "criticize", "criticize_material",
-           "infer_axial_distance", "reference_point_position", "residual_figure", "separating_runs"]
+# Names are imported from their submodule on first use (PEP 562): a module that needs one light part
+# (demid.story reads .reach) does not pay for the figure's matplotlib and scipy.stats, nor for statsmodels.
+_WHERE = {
+    "residual_figure": "..plots.criticism",
+    "AliasSet": ".aliasing", "separating_runs": ".aliasing",
+    "CAUSES": ".catalogue",
+    "CriticismResult": ".level1", "Finding": ".level1", "criticize": ".level1",
+    "Level2Result": ".level2", "calibration_check": ".level2",
+    "MaterialCriticism": ".material", "criticize_material": ".material", "reference_point_position": ".material",
+    "TRANSFORM_NAMES": ".models", "ExtendedSurrogate": ".models", "infer_axial_distance": ".models",
+}
+
+__all__ = sorted(_WHERE)
+
+
+def __getattr__(name: str):
+    if name in _WHERE:
+        return getattr(import_module(_WHERE[name], __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -10,9 +10,6 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
-from scipy import special
-from statsmodels.regression import linear_model as sm  # OLS, WLS: statsmodels.api would add its graphics and tsa
-from statsmodels.tools.eval_measures import aicc as _sm_aicc
 
 from ..design import LEVERAGE_UNPREDICTABLE, model_matrix, model_units, term_name
 
@@ -66,7 +63,11 @@ def _hat(x: np.ndarray) -> np.ndarray:
 
 
 def _boxcox(y: np.ndarray, lam: float | None) -> np.ndarray:
-    return y if lam is None else special.boxcox(y, lam)
+    if lam is None:
+        return y
+    from scipy import special  # here, as statsmodels below: demid.story reads this module without either
+
+    return special.boxcox(y, lam)
 
 
 def _inv_boxcox(z: np.ndarray, lam: float | None) -> np.ndarray:
@@ -82,6 +83,8 @@ def _inv_boxcox(z: np.ndarray, lam: float | None) -> np.ndarray:
 
 def _aicc(llf: float, nobs: int, k: int) -> float:
     """AICc = -2 llf + 2k n/(n-k-1) (statsmodels); NaN when n - k - 1 <= 0."""
+    from statsmodels.tools.eval_measures import aicc as _sm_aicc
+
     return float(_sm_aicc(llf, nobs, k)) if nobs - k - 1 > 0 else float("nan")
 
 
@@ -195,6 +198,10 @@ class _Model:
             names.append("step")
         self.x = x
         self.names = names
+        # statsmodels here, not at module level: the light readers of this package (demid.story reads
+        # .reach) need none of it.  linear_model only: statsmodels.api would add its graphics and tsa.
+        from statsmodels.regression import linear_model as sm
+
         if spec.weight_on is not None:
             v = np.asarray(spec.weight_values, dtype=float)[keep]
             self.w = np.exp(-spec.weight_gamma * v)

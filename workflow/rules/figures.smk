@@ -1,3 +1,9 @@
+# A byte copy of a figure: run in Snakemake's own process (a non-local `run:` job would start a second
+# Snakemake, which parses and validates the whole workflow again, to copy two files).
+localrules:
+    paper_figure,
+
+
 rule paper_figure:
     input:
         figure=paper_figure_source,
