@@ -33,7 +33,10 @@ Options: ``--noise`` (sd relative to the response level, default 0.003), ``--obs
 (a single-observable scenario: a band across the domain), ``--whole-box-design`` (ablation:
 design runs spread over the whole next domain instead of its plausible part).
 
-Run:  python benchmarks/next_wave.py [--reps 8] [--count 9] [--quick]
+Held-out checks: ``--seed-start 100`` (seeds the default run does not use) and ``--held-out`` (two
+shapes not in the default set: an interaction-dominated band, steep exponentials).
+
+Run:  python benchmarks/next_wave.py [--reps 8] [--count 9] [--quick] [--seed-start 100] [--held-out]
 """
 
 from __future__ import annotations
@@ -102,8 +105,24 @@ def saturating_weak(x):
             "y2": 200 + 25 * np.sqrt(u[:, 1] + 0.03) + 6 * np.tanh(3 * (u[:, 0] - 0.3))}
 
 
+def interaction(x):
+    """Held out (``--held-out``): the first response is dominated by the interaction, so its band is a hyperbola."""
+    u = _u(x)
+    return {"y1": 40 + 30 * u[:, 0] * u[:, 1] + 2 * u[:, 0],
+            "y2": 100 + 15 * u[:, 1] - 12 * u[:, 0] + 3 * np.sin(2 * u[:, 0] * u[:, 1])}
+
+
+def steep_exponential(x):
+    """Held out (``--held-out``): each response grows exponentially in one factor (20-fold over the first)."""
+    u = _u(x)
+    return {"y1": 10 + 4 * np.exp(3 * u[:, 0]) + 3 * u[:, 1],
+            "y2": 50 + 20 * np.exp(2.5 * (u[:, 1] - 0.5)) - 5 * u[:, 0]}
+
+
 SIMULATORS = {"saturating": saturating, "periodic": periodic, "hill": hill, "saturating_cross": saturating_cross,
               "rolling_friction": rolling_friction, "saturating_weak": saturating_weak}
+# Shapes the next wave was not developed on (--held-out), to check it on simulators it has not seen.
+HELD_OUT = {"interaction": interaction, "steep_exponential": steep_exponential}
 # Simulators whose runs are noisier than --noise (sd relative to the response level): +-1 %.
 NOISE_OVERRIDE = {"saturating_weak": 0.01}
 
@@ -236,6 +255,10 @@ def main(argv=None):
     global NOISE_REL, OBSERVABLES
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", "--reps", type=int, default=8, help="seeds per simulator")
+    parser.add_argument("--seed-start", type=int, default=0, help="first seed (e.g. 100: seeds the benchmark "
+                        "does not use by default)")
+    parser.add_argument("--held-out", action="store_true",
+                        help="score the held-out simulators (interaction band, steep exponential) instead")
     parser.add_argument("--count", type=int, default=9, help="runs in the next wave (and random runs added)")
     parser.add_argument("--quick", action="store_true", help="3 seeds, coarser grids")
     parser.add_argument("--noise", type=float, default=NOISE_REL, help="noise sd relative to the response level")
@@ -251,7 +274,9 @@ def main(argv=None):
     seeds = args.seeds if args.seeds != 8 or not args.quick else 3
     n = 201 if args.quick else 401
     t0 = time.perf_counter()
-    rows = [run_case(name, sim, seed, args.count, n) for name, sim in SIMULATORS.items() for seed in range(seeds)]
+    simulators = HELD_OUT if args.held_out else SIMULATORS
+    rows = [run_case(name, sim, seed, args.count, n) for name, sim in simulators.items()
+            for seed in range(args.seed_start, args.seed_start + seeds)]
     frame = pd.DataFrame(rows)
     frame["sym_ratio"] = frame["sym_err_next"] / frame["sym_err_random"].where(frame["sym_err_random"] > 0)
     pd.set_option("display.width", 250)
@@ -259,7 +284,7 @@ def main(argv=None):
     print(frame[["simulator", "seed", "true_fraction_pct", "box_share_pct", "contained", "sym_err_next",
                  "sym_err_random", "sym_err_global", "sym_err_ccd", "sym_ratio", "span_err_next",
                  "span_err_random", "frac_err_next", "frac_err_random"]].round(4).to_string(index=False))
-    print(f"\n{len(frame)} cases ({len(SIMULATORS)} simulators x {seeds} seeds), count = {args.count}, "
+    print(f"\n{len(frame)} cases ({len(simulators)} simulators x {seeds} seeds from {args.seed_start}), count = {args.count}, "
           f"tolerance {TOLERANCE}, noise sd {100 * NOISE_REL:g} % of the response level, "
           f"{time.perf_counter() - t0:.0f} s")
     for metric, label in [("frac_err", "feasible-fraction error (relative)"),
