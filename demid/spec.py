@@ -262,7 +262,7 @@ class MaterialSpec:
 
 def evaluation_size(config: dict, material: dict) -> int:
     """Grid points per axis (Sobol points above 3 factors) of a material's set evaluation."""
-    from .sampling import uses_grid
+    from .sampling.domain import uses_grid
 
     if material.get("grid_points"):
         return int(material["grid_points"])

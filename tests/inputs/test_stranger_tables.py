@@ -389,7 +389,8 @@ def test_a_deliberately_wider_search_range_is_accepted_and_warned_about(tmp_path
 def test_a_target_far_outside_every_simulated_value_is_said_before_the_run(tmp_path, target, looks_like):
     from demid.data import far_target_warnings
 
-    table = validate_material(MaterialSpec.from_material("poraver", _demo_config()["materials"]["poraver"]), base_dir=REPO).table
+    poraver = MaterialSpec.from_material("poraver", _demo_config()["materials"]["poraver"])
+    table = validate_material(poraver, base_dir=REPO).table
     assert far_target_warnings(table, {"aor": 26.4, "shape": 154.75}, "t.csv") == []  # the demo's targets: silent
     (warning,) = far_target_warnings(table, {"aor": target, "shape": 154.75}, "t.csv")
     assert f"t.csv, column 'aor': the target {target:g} lies far outside every simulated value" in warning
@@ -403,7 +404,8 @@ def test_a_target_far_outside_every_simulated_value_is_said_before_the_run(tmp_p
     src = config["materials"]["poraver"]["data"]
     (keyed,) = far_target_warnings(table, {"aor": target}, src, "poraver")
     assert "(config key materials.poraver.responses.aor.target)" in keyed
-    assert keyed in validate_material(MaterialSpec.from_material("poraver", config["materials"]["poraver"]), base_dir=REPO).warnings
+    poraver = MaterialSpec.from_material("poraver", config["materials"]["poraver"])
+    assert keyed in validate_material(poraver, base_dir=REPO).warnings
 
 
 @pytest.mark.parametrize("scale", [1e-3, 1e3, 1e-6])
@@ -449,7 +451,8 @@ def test_a_response_with_the_same_value_in_every_run_is_warned_about(tmp_path):
     mat = {**_demo_config()["materials"]["poraver"], "data": str(path)}
     warnings = validate_material(MaterialSpec.from_material("poraver", mat), base_dir=REPO).warnings
     assert [w for w in warnings if "column 'shape': the same value (150) in every run" in w]
-    assert not [w for w in validate_material(MaterialSpec.from_material("poraver", _demo_config()["materials"]["poraver"]), base_dir=REPO).warnings
+    poraver = MaterialSpec.from_material("poraver", _demo_config()["materials"]["poraver"])
+    assert not [w for w in validate_material(poraver, base_dir=REPO).warnings
                 if "the same value" in w]
 
 
@@ -568,7 +571,8 @@ def test_a_wrong_design_alpha_names_the_key_and_the_alpha_the_runs_show(tmp_path
                                          rf"alpha = {table_alpha:.6g} .*not the declared {declared:g}; set "
                                          rf"design\.alpha: {table_alpha:.6g}$"):
         validate_material(MaterialSpec.from_material("m", cfg))
-    validate_material(MaterialSpec.from_material("m", {**cfg, "design": {**cfg["design"], "alpha": table_alpha}}))  # the hint validates
+    hinted = {**cfg, "design": {**cfg["design"], "alpha": table_alpha}}
+    validate_material(MaterialSpec.from_material("m", hinted))  # the hint validates
 
 
 def test_one_axial_cell_off_its_level_still_names_the_cell_not_alpha(tmp_path):
@@ -715,7 +719,8 @@ def test_a_box_behnken_table_declared_factorial_is_named(tmp_path, k):
                                          rf"of a Box-Behnken design .*not the 3\^{k} factorial; set design type: "
                                          rf"box_behnken$"):
         validate_material(MaterialSpec.from_material("m", cfg))
-    validate_material(MaterialSpec.from_material("m", {**cfg, "design": {"type": "box_behnken", "center_runs": 3}}))  # the hint validates
+    hinted = {**cfg, "design": {"type": "box_behnken", "center_runs": 3}}
+    validate_material(MaterialSpec.from_material("m", hinted))  # the hint validates
 
 
 def test_a_three_level_factorial_with_a_point_left_out_names_the_missing_point(tmp_path):
@@ -740,7 +745,8 @@ def test_a_wrong_alpha_on_levels_printed_to_two_decimals_gets_the_design_value(t
     with pytest.raises(InputError, match=rf"alpha = {table_alpha:.6g} .*not the declared {declared:g}; set "
                                          rf"design\.alpha: {table_alpha:.6g}$"):
         validate_material(MaterialSpec.from_material("m", cfg))
-    validate_material(MaterialSpec.from_material("m", {**cfg, "design": {**cfg["design"], "alpha": table_alpha}}))  # the hint validates
+    hinted = {**cfg, "design": {**cfg["design"], "alpha": table_alpha}}
+    validate_material(MaterialSpec.from_material("m", hinted))  # the hint validates
 
 
 @pytest.mark.parametrize("where, value", [

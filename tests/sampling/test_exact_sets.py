@@ -380,7 +380,7 @@ def test_bad_arguments():
 def demo():
     from demid.config import load_config
     from demid.data import validate_material
-        from demid.surrogate import fit_material
+    from demid.surrogate import fit_material
 
     config = load_config(ROOT / "config.yaml", base_dir=ROOT)
 
