@@ -21,7 +21,9 @@ design centre (clipped to the box: the ridge point restricted to the region).  T
   stationary, as the textbooks define it.
 
 Verified against Montgomery, *Design and Analysis of Experiments*, Example 11.2
-(a maximum) and closed-form saddles and ridges (``tests/combinations/test_canonical.py``).
+(a maximum) and closed-form saddles and ridges (``tests/combinations/test_canonical.py``), and on the
+printed data and analyses of Lawson's trebuchet (a saddle), Myers, Montgomery & Anderson-Cook's Table 6.2
+and Box, Hunter & Hunter's CO emissions (rising ridges) (``tests/combinations/test_canonical_published.py``).
 """
 
 from __future__ import annotations

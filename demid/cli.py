@@ -163,6 +163,7 @@ def _check_out(args, is_own) -> None:
 
 
 def cmd_fit(args) -> int:
+    from .canonical import fit_canonical
     from .io import write_json
     from .surrogate import fit_response
 
@@ -186,6 +187,8 @@ def cmd_fit(args) -> int:
             # in the table's own (actual) units; coded units (factorial points at +-1) alongside
             "coefficients": dict(zip(coef["term"], coef["coefficient_actual"])),
             "coefficients_coded": dict(zip(coef["term"], coef["coefficient_coded"])),
+            # as in the workflow's fits/{material}.json: one canonical analysis per fitted surface
+            "canonical": fit_canonical(fit).to_json(),
         }
         if blocks is not None:  # predictions above are at the mean block effect (the block-averaged surface)
             effects = fit.block_effects()

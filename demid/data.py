@@ -205,6 +205,12 @@ def check_header(header: list[str], factors, responses, src: str) -> None:
         hint = (f"; found '{same[0]}', which differs only in upper/lower case" if same
                 else f"; found '{close[0]}' — misspelled?" if close else f"; columns found: {', '.join(header)}")
         raise InputError(f"missing column (expected columns: {', '.join(needed)}){hint}", source=src, column=col)
+    for col in ("status", "block"):
+        # 'Block' or 'STATUS' would otherwise be read as an unlisted column and its meaning silently lost
+        same = [h for h in header if h != col and h.casefold() == col.casefold() and h not in needed]
+        if same and col not in header:
+            raise InputError(f"differs only in upper/lower case from the reserved column "
+                             f"'{col}': rename it to '{col}'", source=src, column=same[0])
 
 
 def read_table(path: Path | str, factors: list[str], responses: list[str],
@@ -300,11 +306,36 @@ def read_printed(path: Path | str, table: pd.DataFrame) -> pd.DataFrame:
     return printed.iloc[[order[str(int(r))] for r in table["run"]]].reset_index(drop=True)
 
 
+#: A target of the runs' sign off from the nearest simulated value by at least this factor, which a power of ten
+#: brings inside the simulated range, reads as a unit slip even when the runs spread widely (0.6 for 6 where the
+#: runs give 5 to 60): nearer the range than this, a target a power of ten away may just lie below or above it.
+UNIT_SLIP_RATIO = 3.0
+
+
+def _power_of_ten_repair(target: float, lo: float, hi: float) -> tuple[float, float] | None:
+    for power in sorted((p for p in range(-6, 7) if p), key=abs):
+        value = float(target) * 10.0 ** power
+        if lo <= value <= hi:
+            return 10.0 ** power, value
+    return None
+
+
+def _off_by_a_ratio(target: float, lo: float, hi: float) -> bool:
+    """The target shares the runs' sign and lies outside their range by at least :data:`UNIT_SLIP_RATIO`."""
+    if lo > 0 and target > 0:
+        return target * UNIT_SLIP_RATIO <= lo or target >= hi * UNIT_SLIP_RATIO
+    if hi < 0 and target < 0:
+        return _off_by_a_ratio(-target, -hi, -lo)
+    return False
+
+
 def implausible_targets(table: pd.DataFrame, targets: dict) -> dict[str, dict]:
     """Targets farther outside every simulated value of their response than the simulated values spread
-    (more than one range beyond the nearest run): per response ``lo``, ``hi`` (the simulated range) and,
-    where a power of ten brings the target inside that range (a unit or typing slip: 1.505 g cm^-3 for
-    1505 kg m^-3), ``factor`` and ``repaired``."""
+    (more than one range beyond the nearest run), or off from them by a power of ten (a factor of
+    :data:`UNIT_SLIP_RATIO` or more beyond the range, which a power of ten brings inside it): per response
+    ``lo``, ``hi`` (the simulated range), ``far`` (more than one range beyond the runs) and, where a power of
+    ten brings the target inside that range (a unit or typing slip: 1.505 g cm^-3 for 1505 kg m^-3),
+    ``factor`` and ``repaired``."""
     out = {}
     for response, target in targets.items():
         if response not in table:
@@ -314,14 +345,15 @@ def implausible_targets(table: pd.DataFrame, targets: dict) -> dict[str, dict]:
         if not len(y):
             continue
         lo, hi = float(y.min()), float(y.max())
-        if lo == hi or lo - (hi - lo) <= target <= hi + (hi - lo):
+        if lo == hi or lo <= target <= hi:
             continue
-        found = {"lo": lo, "hi": hi, "factor": None, "repaired": None}
-        for power in sorted((p for p in range(-6, 7) if p), key=abs):
-            value = float(target) * 10.0 ** power
-            if lo <= value <= hi:
-                found.update(factor=10.0 ** power, repaired=value)
-                break
+        repair = _power_of_ten_repair(target, lo, hi)
+        far = not (lo - (hi - lo) <= target <= hi + (hi - lo))
+        if not far and not (repair and _off_by_a_ratio(float(target), lo, hi)):
+            continue
+        found = {"lo": lo, "hi": hi, "factor": None, "repaired": None, "far": far}
+        if repair:
+            found.update(factor=repair[0], repaired=repair[1])
         out[response] = found
     return out
 

@@ -43,6 +43,17 @@ def rescaled_surrogate(surrogate, target: float, scale: float):
                    resid_var=scale ** 2 * float(surrogate.resid_var))
 
 
+def relative_tolerances(spec, observables, tolerance: float) -> dict[str, float]:
+    """Per observable, its band as a fraction of its target: a_k / |y*| (the scenario's ``tolerance`` without
+    an override).  Level 2 judges each observable's relative error against this, as the sets do."""
+    out = {}
+    for o in observables:
+        target = spec.targets[o]
+        band = observable_band(spec.response(o), target, tolerance)
+        out[o] = band / abs(float(target)) if target else float(tolerance)
+    return out
+
+
 def has_own_tolerance(spec) -> bool:
     return any(r.tolerance is not None or r.tolerance_abs is not None for r in spec.responses)
 

@@ -225,7 +225,8 @@ class MaterialCombinations:
             return (f"{res.statement}, but the set reaches the search range's "
                     f"{'both ends' if res.cut == 'both' else res.cut + ' end'} along this direction: its width "
                     f"there is "
-                    f"the range's, not the data's (cut by the search range; widen the range to see the band).")
+                    f"the range's, not the data's (cut by the search range; the next step says whether a wider range is "
+                    "advised).")
         free = res.free
         free_text = ("; free along " + ", ".join(_direction_text(free[:, j], labels) for j in range(free.shape[1]))
                      if free.shape[1] and res.curve is None else "; free along the band" if free.shape[1] else "")

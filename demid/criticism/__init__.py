@@ -36,9 +36,10 @@ response gets a verdict: ``adequate`` (with the size of defect the tests find wi
 ``defect``, ``unexplained``, ``ambiguous`` or ``does_not_predict`` (Q^2 < 0).
 
 Ambiguous causes (:mod:`.discrimination`).  When the cause named first (or the candidate not singled out
-for a rival) and another rejected cause of another kind have extensions within 2 in AICc, none is named:
-the verdict is ``ambiguous`` with ``candidates`` and up to four ``discriminating_runs`` (where their
-predictions differ most relative to their prediction error).
+for a rival) does not lead every catalogue cause of another kind by 6 in AICc (an evidence ratio of 20:1;
+a drift and a step, and steps at different change-points, are different kinds), none is named: the
+verdict is ``ambiguous`` with ``candidates`` and up to four ``discriminating_runs`` (where their
+predictions, made later in run order, differ most relative to their prediction error).
 
 Blocks (:mod:`demid.blocks`).  With a ``block`` column every model carries effect-coded block terms
 (predictions at the mean block effect) and pure error is taken within blocks.

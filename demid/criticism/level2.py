@@ -3,6 +3,13 @@
 :func:`calibration_check` finds the best point in the domain (minimax relative error),
 the errors there and at the reference point, the bottleneck observable, and bias
 (discrepancy) extensions with their cost in parameters.
+
+Each observable is judged against its own tolerance ε_k (``responses.<r>.tolerance`` /
+``tolerance_abs``, :func:`demid.tolerance.relative_tolerances`), as every set is: the searches
+minimise the largest *weighted* relative error ε·|e_k|/ε_k (ε the scenario's tolerance), which is the
+relative error of the rescaled surrogate the strict set is evaluated on
+(:func:`demid.tolerance.scenario_surrogates`).  Without an override every weight is 1 and the
+weighted error is the relative error itself.
 """
 
 from __future__ import annotations
@@ -27,8 +34,11 @@ class Level2Result:
     """The calibrated simulation against the experiment for one material.
 
     Relative errors are (y_hat - y*) / |y*| as in :mod:`demid.admissibility`;
-    ``best_*`` refers to the point of the domain minimising the largest |relative
-    error| over all observables with targets.  ``without[k]`` is that smallest
+    ``best_*`` refers to the point of the domain minimising the largest weighted |relative
+    error| ε·|e_k|/ε_k over all observables with targets (``tolerances``: ε_k per observable; the
+    plain relative error when every ε_k is the scenario's ε).  ``best_max_error``, ``without`` and the
+    shared bias's ``max_error`` are weighted errors, compared with ``tolerance``; ``best_errors``,
+    ``reference_errors`` and ``implied_bias`` are plain relative errors.  ``without[k]`` is the smallest
     largest error when observable k is left out (equivalently: given a free bias).
     """
 
@@ -59,6 +69,22 @@ class Level2Result:
     unmoved: list[str] = field(default_factory=list)  # observables no factor moves anywhere in the domain
     finding: str = ""  # the message without its advice: the report adds the study's advice (demid.story)
     reach: list = field(default_factory=list)  # demid.criticism.reach.Reach per bound the missing best point sits on
+    tolerances: dict[str, float] = field(default_factory=dict)  # observable -> its own relative tolerance ε_k
+
+    def own_tolerance(self, observable: str) -> float:
+        return float(self.tolerances.get(observable, self.tolerance))
+
+    @property
+    def uniform(self) -> bool:
+        """Every observable is judged at the scenario's tolerance (no own tolerance differs from it)."""
+        return all(abs(self.own_tolerance(o) - self.tolerance) <= 1e-12 * self.tolerance for o in self.observables)
+
+    def within(self, errors: dict[str, float]) -> bool:
+        return all(abs(e) <= self.own_tolerance(o) + 1e-12 for o, e in errors.items())
+
+    @property
+    def reference_within(self) -> bool | None:
+        return None if self.reference_errors is None else self.within(self.reference_errors)
 
     @property
     def reference_max_error(self) -> float | None:
@@ -74,9 +100,9 @@ class Level2Result:
                 "observable": o, "target": self.targets[o],
                 "at_best": self.best_values[o], "rel_error_best": self.best_errors[o],
                 "at_reference": self.reference_values[o] if self.reference_values else np.nan,
-                "rel_error_reference": ref, "tolerance": self.tolerance,
-                "within_tolerance": bool(abs(self.best_errors[o]) <= self.tolerance + 1e-12),
-                "within_tolerance_reference": (bool(abs(ref) <= self.tolerance + 1e-12)
+                "rel_error_reference": ref, "tolerance": self.own_tolerance(o),
+                "within_tolerance": bool(abs(self.best_errors[o]) <= self.own_tolerance(o) + 1e-12),
+                "within_tolerance_reference": (bool(abs(ref) <= self.own_tolerance(o) + 1e-12)
                                                if self.reference_errors else None),
                 "bottleneck": o == self.bottleneck,
                 "max_error_without": self.without.get(o, np.nan),
@@ -90,11 +116,13 @@ class Level2Result:
             return None if d is None else {k: _num(v) for k, v in d.items()}
         return {
             "observables": list(self.observables), "targets": clean(self.targets), "tolerance": self.tolerance,
+            "tolerances": {o: self.own_tolerance(o) for o in self.observables},
             "best_point": clean(self.best_point), "best_values": clean(self.best_values),
             "best_errors": clean(self.best_errors), "best_max_error": _num(self.best_max_error),
             "feasible": bool(self.feasible),
             "reference_point": clean(self.reference_point), "reference_values": clean(self.reference_values),
             "reference_errors": clean(self.reference_errors), "reference_max_error": self.reference_max_error,
+            "reference_within": self.reference_within,
             "bottleneck": self.bottleneck, "max_error_without": clean(self.without),
             "implied_bias": clean(self.implied_bias), "bias_candidates": list(self.bias_candidates),
             "biased_observable": self.biased_observable, "shared_bias": self.shared_bias,
@@ -107,12 +135,15 @@ class Level2Result:
 
 
 class _Level2Problem:
-    """Relative errors of all observables as a function of a point in unit-scaled search space."""
+    """Relative errors of all observables as a function of a point in unit-scaled search space.
 
-    def __init__(self, surrogates, domain, targets, observables):
+    ``weights`` (ε/ε_k per observable) turn a relative error into the weighted one the searches minimise."""
+
+    def __init__(self, surrogates, domain, targets, observables, weights=None):
         self.surrogates, self.domain = surrogates, domain
         self.observables = list(observables)
         self.targets = np.array([targets[o] for o in self.observables], dtype=float)
+        self.weights = np.ones(len(self.observables)) if weights is None else np.asarray(weights, dtype=float)
         self.lo, self.hi = domain.search_bounds()
 
     def actual(self, s: np.ndarray) -> np.ndarray:
@@ -126,11 +157,30 @@ class _Level2Problem:
         return relative_error(self.values(s), self.targets[:, None])
 
 
-def _worst(err: np.ndarray, shared: bool) -> np.ndarray:
-    """Largest |error| per column; with a shared bias, the best bias leaves half the spread."""
-    if shared:
-        return (err.max(axis=0) - err.min(axis=0)) / 2
-    return np.abs(err).max(axis=0)
+def _worst(err: np.ndarray, weights: np.ndarray, shared: bool) -> np.ndarray:
+    """Largest weighted |error| w_k |e_k| per column.  With a shared bias δ (one relative bias on every
+    observable), min over δ of max_k w_k |e_k - δ|: the V-shaped terms of two observables i, j meet at
+    height w_i w_j |e_i - e_j| / (w_i + w_j), and the lowest point of their upper envelope is the highest
+    of these pairwise meetings (half the spread when the weights are equal)."""
+    if not shared:
+        return (weights[:, None] * np.abs(err)).max(axis=0)
+    out = np.zeros(err.shape[1])
+    for i in range(len(err)):
+        for j in range(i + 1, len(err)):
+            wi, wj = weights[i], weights[j]
+            out = np.maximum(out, wi * wj * np.abs(err[i] - err[j]) / (wi + wj))
+    return out
+
+
+def _shared_bias(e: np.ndarray, w: np.ndarray) -> tuple[float, float]:
+    """(value, δ) of min over δ of max_k w_k |e_k - δ| at one point (see :func:`_worst`)."""
+    value, delta = 0.0, float(e[0]) if len(e) else 0.0
+    for i in range(len(e)):
+        for j in range(i + 1, len(e)):
+            v = w[i] * w[j] * abs(e[i] - e[j]) / (w[i] + w[j])
+            if v > value:
+                value, delta = float(v), float((w[i] * e[i] + w[j] * e[j]) / (w[i] + w[j]))
+    return value, delta
 
 
 def _minimax(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, rows: list[int],
@@ -140,7 +190,8 @@ def _minimax(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, 
     Grid search, then SLSQP on the epigraph form (min t s.t. |e_k(x) - delta| <= t)
     from the best few grid nodes.  Returns (value, unit point, delta).
     """
-    worst = _worst(grid_err[rows], shared)
+    weights = problem.weights[rows]
+    worst = _worst(grid_err[rows], weights, shared)
     order = np.argsort(worst, kind="stable")
     picks = [order[0]]
     for i in order[1:]:
@@ -152,8 +203,9 @@ def _minimax(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, 
 
     def evaluate(s):
         e = problem.errors(s)[rows, 0]
-        delta = (e.max() + e.min()) / 2 if shared else 0.0
-        return float(np.max(np.abs(e - delta))), delta
+        if shared:
+            return _shared_bias(e, weights)
+        return float(np.max(weights * np.abs(e))), 0.0
 
     best_val, best_s = float(worst[order[0]]), grid_s[order[0]].copy()
     best_delta = evaluate(best_s)[1]
@@ -162,7 +214,7 @@ def _minimax(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, 
         x0 = np.concatenate([grid_s[i], [v0], [delta0] if shared else []])
 
         def cons(v):
-            e = problem.errors(v[:d])[rows, 0] - (v[d + 1] if shared else 0.0)
+            e = weights * (problem.errors(v[:d])[rows, 0] - (v[d + 1] if shared else 0.0))
             return np.concatenate([v[d] - e, v[d] + e])
 
         bounds = [(0.0, 1.0)] * d + [(0.0, None)] + ([(None, None)] if shared else [])
@@ -192,7 +244,8 @@ def _smallest_bias(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.nda
     w = ``_BIAS_WEIGHT``: always feasible, so SLSQP needs no feasible start.
     """
     d = grid_s.shape[1]
-    score = np.max(np.abs(grid_err[others]), axis=0) + _BIAS_WEIGHT * np.abs(grid_err[row])
+    w = problem.weights[others]
+    score = np.max(w[:, None] * np.abs(grid_err[others]), axis=0) + _BIAS_WEIGHT * np.abs(grid_err[row])
     order = np.argsort(score, kind="stable")
     picks = [order[0]]
     for i in order[1:]:
@@ -203,12 +256,12 @@ def _smallest_bias(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.nda
 
     def cons(v):
         e = problem.errors(v[:d])[:, 0]
-        return np.concatenate([v[d] - e[others], v[d] + e[others], [v[d + 1] - e[row], v[d + 1] + e[row]]])
+        return np.concatenate([v[d] - w * e[others], v[d] + w * e[others], [v[d + 1] - e[row], v[d + 1] + e[row]]])
 
     best_score, best_s = np.inf, grid_s[order[0]]
     for i in picks:
         e0 = problem.errors(grid_s[i])[:, 0]
-        x0 = np.concatenate([grid_s[i], [np.max(np.abs(e0[others])), abs(e0[row])]])
+        x0 = np.concatenate([grid_s[i], [np.max(w * np.abs(e0[others])), abs(e0[row])]])
         with warnings.catch_warnings(), np.errstate(all="ignore"):
             warnings.simplefilter("ignore")
             res = optimize.minimize(lambda v: v[d] + _BIAS_WEIGHT * v[d + 1], x0, method="SLSQP",
@@ -217,7 +270,7 @@ def _smallest_bias(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.nda
                                     options={"maxiter": 300, "ftol": 1e-15})
         s = np.clip(res.x[:d], 0.0, 1.0)
         e = problem.errors(s)[:, 0]
-        value = np.max(np.abs(e[others])) + _BIAS_WEIGHT * abs(e[row])
+        value = np.max(w * np.abs(e[others])) + _BIAS_WEIGHT * abs(e[row])
         if value < best_score:
             best_score, best_s = value, s
     return float(problem.errors(best_s)[row, 0])
@@ -258,7 +311,8 @@ def _bottleneck(problem: _Level2Problem, grid_s, grid_err, tolerance: float, fea
 
 
 def calibration_check(surrogates: dict, domain, targets: dict[str, float], tolerance: float, n: int,
-                      reference_point: dict | None = None, strict_set=None, runs=None) -> Level2Result:
+                      reference_point: dict | None = None, strict_set=None, runs=None,
+                      tolerances: dict[str, float] | None = None, implausible=()) -> Level2Result:
     """Level-2 criticism: can any point of the domain meet every target, and if not, why not?
 
     ``surrogates`` maps observable -> object with ``predict(points_actual)``;
@@ -272,14 +326,21 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     the set reaches a search bound.  ``runs`` (the design runs' factor values, actual units, in
     ``domain`` order) locate search bounds and reference point relative to the simulated region.
     The message says "widen the range of X" when the best point or the set sits on a bound of X,
-    and warns of extrapolation.
+    and warns of extrapolation.  ``tolerances`` (observable -> its own relative tolerance ε_k, from
+    :func:`demid.tolerance.relative_tolerances`; missing: ``tolerance``) weight each relative error by
+    ε/ε_k, so that the best point, feasibility and the bottleneck are judged as the strict set is.
+    ``implausible`` (observables whose target lies far from every simulated value,
+    :func:`demid.data.implausible_targets`): no bound the best point sits on is followed outwards, since
+    the best point only chases the slipped target.
     """
     observables = [o for o in targets if o in surrogates]
     if not observables:
         raise ValueError("no observable has both a surrogate and a target")
     factors = list(domain.factors)
     d, k = len(factors), len(observables)
-    problem = _Level2Problem(surrogates, domain, targets, observables)
+    own = {o: float((tolerances or {}).get(o, tolerance)) for o in observables}
+    problem = _Level2Problem(surrogates, domain, targets, observables,
+                             [float(tolerance) / own[o] for o in observables])
     axes = [np.linspace(0.0, 1.0, n)] * d
     grid_s = np.column_stack([m.ravel() for m in np.meshgrid(*axes, indexing="ij")])
     grid_err = problem.errors(grid_s)
@@ -293,7 +354,7 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     movable = [i for i in every if i not in unmoved]
     best_val, best_s, _ = _minimax(problem, grid_s, grid_err, movable if unmoved and movable else every)
     if unmoved and movable:
-        best_val = float(np.max(np.abs(problem.errors(best_s)[:, 0])))
+        best_val = float(np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0])))
     feasible = best_val <= tolerance + 1e-12
     exact = getattr(strict_set, "exact", None)
     if exact is not None:
@@ -303,7 +364,7 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
             near = replace(exact, reference=exact.to_model(best_s))
             best_s = np.clip((domain.to_search(near.nearest_point[None, :])[0] - problem.lo)
                              / (problem.hi - problem.lo), 0.0, 1.0)
-            best_val = float(np.max(np.abs(problem.errors(best_s)[:, 0])))
+            best_val = float(np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0])))
     best_x = problem.actual(best_s)[0]
     best_values = dict(zip(observables, problem.values(best_s)[:, 0].tolist()))
     best_errors = dict(zip(observables, problem.errors(best_s)[:, 0].tolist()))
@@ -323,14 +384,16 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
         reference_point=None if reference_point is None else {f: float(reference_point[f]) for f in factors},
         reference_values=ref_values, reference_errors=ref_errors, bottleneck=bottleneck, without=without,
         implied_bias=implied, bias_candidates=candidates, biased_observable=biased, shared_bias=shared,
-        extensions=extensions, message="")
+        extensions=extensions, message="", tolerances=own)
     result.unmoved = [observables[i] for i in unmoved]
     result.best_at_bound = dict(zip(factors, domain.at_bound(best_x, best_x)))
     if feasible and getattr(strict_set, "at_bound", ()):
         result.set_at_bound = dict(zip(factors, strict_set.at_bound))
     best_touch, set_touch = touching(result.best_at_bound), touching(result.set_at_bound or {})
-    if unmoved and movable and max(abs(best_errors[observables[i]]) for i in movable) <= tolerance:
+    if unmoved and movable and result.within({observables[i]: best_errors[observables[i]] for i in movable}):
         best_touch = {}  # the others are met: only the unmoved observables miss, and no range moves them
+    if implausible and any(o in implausible for o in observables):
+        best_touch = {}  # a target in another unit is missed everywhere: where the best point sits says nothing
     if not feasible and best_touch:
         best_touch = _worth_widening(result, surrogates, domain, best_touch,
                                      [observables[i] for i in (movable or every)])
@@ -353,12 +416,12 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
 def _worth_widening(result: Level2Result, surrogates, domain, touch: dict, observables: list[str]) -> dict:
     """``touch`` without the bounds whose widening the surrogate says cannot reach the worst-missed target
     (or does not move it at all); the estimate per bound along which it moves is kept in ``result.reach``."""
-    worst = max(observables, key=lambda o: abs(result.best_errors[o]))
+    worst = max(observables, key=lambda o: abs(result.best_errors[o]) / result.own_tolerance(o))
     kept = {}
     for f, sides in touch.items():
         for side in sides:
             r = reach_beyond_bound(surrogates[worst], domain, f, side, result.best_point, worst,
-                                   result.targets[worst], result.tolerance)
+                                   result.targets[worst], result.own_tolerance(worst))
             if r.flat:
                 continue  # the worst-missed observable does not change along it: widening it buys nothing
             result.reach.append(r)

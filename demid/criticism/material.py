@@ -10,11 +10,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
+from ..data import implausible_targets
 from ..formulas import relative_error
 from ..plots.criticism import residual_figure
 from ..sampling import evaluate_set, uses_grid
 from ..sampling.evaluate import uses_exact
 from ..surrogate import fit_response
+from ..tolerance import relative_tolerances, scenario_surrogates
 from .level1 import criticize
 from .level2 import calibration_check
 from .run_order import assess_run_order
@@ -46,7 +48,8 @@ def _effect_points(n: int, d: int) -> int:
 
 
 class _ScenarioSets:
-    """Each scenario's strict set, evaluated on first use and then shared by every criticism step."""
+    """Each scenario's strict set (each observable at its own tolerance), evaluated on first use and then
+    shared by every criticism step."""
 
     def __init__(self, surrogates: dict, spec: MaterialSpec, n: int):
         self.surrogates, self.spec, self.n = surrogates, spec, n
@@ -54,7 +57,8 @@ class _ScenarioSets:
 
     def __call__(self, scen):
         if scen.name not in self.sets:
-            self.sets[scen.name] = evaluate_set(self.surrogates, self.spec.domain, scen.observables,
+            self.sets[scen.name] = evaluate_set(scenario_surrogates(self.surrogates, self.spec, scen.tolerance),
+                                                self.spec.domain, scen.observables,
                                                 self.spec.targets, scen.tolerance, self.n,
                                                 reference=self.spec.reference_point or None)
         return self.sets[scen.name]
@@ -70,8 +74,8 @@ def _identifiability_effect(surrogates: dict, extended, response: str, spec: Mat
         if response not in scen.observables:
             continue
         before = scenario_sets(scen)
-        after = evaluate_set({**surrogates, response: extended}, domain, scen.observables, targets,
-                            scen.tolerance, n)
+        after = evaluate_set(scenario_surrogates({**surrogates, response: extended}, spec, scen.tolerance), domain,
+                             scen.observables, targets, scen.tolerance, n)
         rows.append({"scenario": scen.name, "fraction_pct_before": 100 * before.fraction,
                      "fraction_pct_after": 100 * after.fraction,
                      "width_before": dict(zip(domain.factors, before.width)),
@@ -100,7 +104,8 @@ def reference_point_position(surrogates: dict, spec: MaterialSpec, n: int,
     for scen in spec.scenarios:
         name, obs = scen.name, scen.observables
         errors = {o: float(relative_error(surrogates[o].predict(point)[0], targets[o])) for o in obs}
-        inside = max(abs(e) for e in errors.values()) <= scen.tolerance
+        own = relative_tolerances(spec, obs, scen.tolerance)
+        inside = all(abs(e) <= own[o] for o, e in errors.items())
         aset = scenario_sets(scen)
         nearest, distance = None, None
         if aset.exact is not None:
@@ -186,14 +191,14 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, spec: MaterialSpec
         if with_targets and same:  # the scenario's own set, exact or sampled: the one identifiability shows
             strict = scenario_sets(same[0])
         elif with_targets and uses_exact(surrogates, with_targets, domain):
-            from ..tolerance import scenario_surrogates  # an observable's own tolerance, as in every set
-
             strict = evaluate_set(scenario_surrogates(surrogates, spec, spec.reference_tolerance), domain,
                                   with_targets, targets, spec.reference_tolerance, n_level2)
         simulated = table[[r for r in spec.response_names if r in table.columns]].notna().any(axis=1)
         level2 = calibration_check({r: surrogates[r] for r in targets}, domain, targets,
                                    spec.reference_tolerance, n_level2, spec.reference_point, strict_set=strict,
-                                   runs=table.loc[simulated, factors].to_numpy(dtype=float))
+                                   runs=table.loc[simulated, factors].to_numpy(dtype=float),
+                                   tolerances=relative_tolerances(spec, list(targets), spec.reference_tolerance),
+                                   implausible=tuple(implausible_targets(table, targets)))
     calibration = level2.to_frame() if level2 is not None else pd.DataFrame()
     summary = {
         "level1": {r: {"findings": len(p["findings"]), "messages": [f["message"] for f in p["findings"]],

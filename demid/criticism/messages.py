@@ -137,23 +137,61 @@ def _pct(x: float) -> str:
     return f"{100 * x:.2f} %" if abs(x) < 0.1 else f"{100 * x:.1f} %"
 
 
+def level2_tolerance_text(tolerance: float, tolerances: dict[str, float] | None, brackets: bool = True) -> str:
+    """"2.00 %", or with observables of their own tolerance "their own tolerances (d5 2.00 %, rho 0.33 %)"
+    ("their own tolerances: d5 2.00 %, rho 0.33 %" inside brackets already)."""
+    own = tolerances or {}
+    if all(abs(v - tolerance) <= 1e-12 * tolerance for v in own.values()):
+        return _pct(tolerance)
+    listed = ", ".join(f"{o} {_pct(v)}" for o, v in own.items())
+    return f"their own tolerances ({listed})" if brackets else f"their own tolerances: {listed}"
+
+
+def _times(ratio: float) -> str:
+    return f"{ratio:.2g}" if ratio >= 0.005 else "0"
+
+
+def level2_miss_text(errors: dict[str, float], tolerance: float, tolerances: dict[str, float] | None,
+                     at_most: bool = False) -> str:
+    """What follows "misses": "by 3.10 %" ("by at most 3.10 %"), or against each observable's own tolerance
+    the worst relative to its tolerance: "rho by 3.10 % (9.3 times its tolerance of 0.33 %)"."""
+    own = {o: float((tolerances or {}).get(o, tolerance)) for o in errors}
+    if all(abs(v - tolerance) <= 1e-12 * tolerance for v in own.values()):
+        return f"by {'at most ' if at_most else ''}{_pct(max(abs(e) for e in errors.values()))}"
+    worst = max(errors, key=lambda o: abs(errors[o]) / own[o])
+    return (f"{worst} by {_pct(abs(errors[worst]))} ({_times(abs(errors[worst]) / own[worst])} times its tolerance "
+            f"of {_pct(own[worst])})")
+
+
+def _weighted(r: Level2Result, value: float) -> str:
+    """A weighted error (level 2's minimax values): a percentage, or a multiple of the own tolerances."""
+    if r.uniform:
+        return _pct(value)
+    ratio = value / r.tolerance
+    return (f"{ratio:.2g} times their own tolerances" if ratio >= 0.005 else
+            "a negligible fraction of their own tolerances")
+
+
 def _level2_message(r: Level2Result) -> str:
     pt = ", ".join(f"{f}={_g(v)}" for f, v in r.best_point.items())
     k, d = len(r.observables), len(r.factors)
     obs = _and(r.observables)
     parts = []
+    within = level2_tolerance_text(r.tolerance, r.tolerances)
+    miss = level2_miss_text(r.best_errors, r.tolerance, r.tolerances, at_most=r.feasible)
     if r.feasible:
-        parts.append(f"Every target ({obs}) can be met within {_pct(r.tolerance)}: the best point ({pt}) "
-                     f"misses by at most {_pct(r.best_max_error)}.")
+        parts.append(f"Every target ({obs}) can be met within {within}: the best point ({pt}) "
+                     f"misses {miss}.")
     else:
-        worst = max(r.best_errors, key=lambda o: abs(r.best_errors[o]))
-        parts.append(f"No point of the domain meets every target ({obs}) within {_pct(r.tolerance)}; the "
-                     f"closest point ({pt}) still misses by {_pct(r.best_max_error)} ({worst} "
-                     f"{'over' if r.best_errors[worst] > 0 else 'under'}-predicted).")
+        worst = max(r.best_errors, key=lambda o: abs(r.best_errors[o]) / r.own_tolerance(o))
+        how = f"{'over' if r.best_errors[worst] > 0 else 'under'}-predicted"
+        parts.append(f"No point of the domain meets every target ({obs}) within {within}; the "
+                     f"closest point ({pt}) still misses "
+                     + (f"{miss} ({worst} {how})." if r.uniform else f"{miss[:-1]}; {how})."))
         if r.bottleneck is not None and r.without:
             b = r.bottleneck
             parts.append(f"{b} is the bottleneck: without it the others can be met within "
-                         f"{_pct(r.without[b])}, and the simulation would then read {b} "
+                         f"{_weighted(r, r.without[b])}, and the simulation would then read {b} "
                          f"{_pct(abs(r.implied_bias[b]))} {'high' if r.implied_bias[b] > 0 else 'low'}.")
             if r.biased_observable is not None:
                 parts.append(f"{b} is the only observable whose removal makes the rest consistent, so a "
@@ -167,9 +205,9 @@ def _level2_message(r: Level2Result) -> str:
                 parts.append("No single observable explains the mismatch on its own.")
     if r.reference_errors is not None:
         ref = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in r.reference_errors.items())
-        ok = r.reference_max_error <= r.tolerance + 1e-12
-        parts.append(f"At the reference point the errors are {ref}: it {'meets' if ok else 'misses'} the "
-                     f"{_pct(r.tolerance)} tolerance.")
+        ok = r.reference_within
+        parts.append(f"At the reference point the errors are {ref}: it {'meets' if ok else 'misses'} "
+                     + (f"the {_pct(r.tolerance)} tolerance." if r.uniform else f"{within}."))
     sb = r.shared_bias
     spare = k - d - 1
     meas = f"{k} measurement{'s' if k != 1 else ''} and {d} parameter{'s' if d != 1 else ''}"
@@ -180,7 +218,7 @@ def _level2_message(r: Level2Result) -> str:
                      f"fits once it is free).")
     else:
         parts.append(f"A shared relative bias of {100 * sb['delta']:+.2f} % on all targets would leave "
-                     f"{_pct(sb['max_error'])} at one extra parameter; "
+                     f"{_weighted(r, sb['max_error'])} at one extra parameter; "
                      + (f"{spare} spare measurement{'s' if spare != 1 else ''} remain{'' if spare != 1 else 's'} "
                         f"to test it." if spare > 0 else
                         f"with {meas} it uses the last spare measurement, so its fit cannot be taken as "

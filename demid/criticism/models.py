@@ -233,15 +233,15 @@ class _Model:
         after = (self.data.runs.astype(float) >= float(self.data.runs[step])).astype(float)
         return after[rows] - float(np.mean(after[self.keep]))
 
-    def new_run_row(self, coded: np.ndarray) -> np.ndarray:
+    def new_run_row(self, coded: np.ndarray, later: int = 1) -> np.ndarray:
         """Model-matrix rows (m, p) of new runs made after every run so far, at coded points: blocks at their
-        average, drift at the next run number, after a step."""
+        average, drift at the run number ``later`` runs after the last one, after a step."""
         coded = np.atleast_2d(coded)
         rows = [model_matrix(coded, self.mean_terms)]
         if self.data.blocks is not None:
             rows.append(np.zeros((len(coded), self.data.blocks.shape[1])))
         if self.spec.drift:
-            nxt = (float(np.max(self.data.runs.astype(float))) + 1.0 - self.run_center) / self.run_scale
+            nxt = (float(np.max(self.data.runs.astype(float))) + later - self.run_center) / self.run_scale
             rows.append(np.full((len(coded), 1), nxt))
         if self.spec.step is not None:
             after = (self.data.runs.astype(float) >= float(self.data.runs[self.spec.step])).astype(float)

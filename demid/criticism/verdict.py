@@ -164,17 +164,33 @@ def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], re
 def ambiguous_message(response: str, candidates: list[dict], runs: list[dict]) -> str:
     """Why no cause is named when several explain the misfit about equally, and the runs that would decide."""
     names = [_entry_text({"cause": c["cause"], "detail": c["detail"]}) for c in candidates]
+    from .discrimination import AMBIGUOUS_AICC
+
     spread = max(c["delta_aicc"] or 0.0 for c in candidates)
     text = (f"{response}: ambiguous — {' and '.join(names) if len(names) == 2 else ', '.join(names)} explain the "
-            f"misfit about equally (their extensions' AICc lie within {spread:.1f} of each other, less than 2: the "
-            f"runs give no real preference), so none of them is named: they fit the runs made so far about equally "
-            f"well and differ in what further runs would give.")
+            f"misfit about equally (their extensions' AICc lie within {spread:.1f} of each other, or the cause the "
+            f"tests point at fits worse than a rival; a lead of less than {AMBIGUOUS_AICC:g}, an evidence ratio "
+            f"below {math.exp(AMBIGUOUS_AICC / 2):.0f}:1, is no decisive preference), so none of them is named: they "
+            f"fit the runs made so far about equally well and differ in what further runs would give.")
     if runs:
         points = "; ".join("(" + ", ".join(f"{k}={v:g}" for k, v in r.items()
                                            if k not in ("purpose", "expected", "separation")) + ")" for r in runs)
         text += (f" {len(runs)} more run{'s' if len(runs) > 1 else ''} made after these, at {points}, would decide: "
                  f"there the candidates' predictions differ most relative to their prediction error.")
     return text
+
+
+def _points_text(runs: list[dict]) -> str:
+    return "; ".join("(" + ", ".join(f"{k}={v:g}" for k, v in r.items()
+                                     if k not in ("purpose", "expected", "separation")) + ")" for r in runs)
+
+
+def confirming_message(runs: list[dict]) -> str:
+    """The runs that would confirm a named cause against a rival not far behind it."""
+    rivals = [label for label in runs[0]["expected"] if label != next(iter(runs[0]["expected"]))]
+    return (f" The cause is named with a rival not far behind ({', '.join(rivals)}: the named extension's AICc leads "
+            f"by less than 10, strong but not very strong evidence): {len(runs)} more run{'s' if len(runs) > 1 else ''}"
+            f" made after these, at {_points_text(runs)}, would confirm it or correct it.")
 
 
 def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power: float = POWER) -> float | None:
@@ -260,6 +276,8 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
             detail["message"] += " " + text
         else:
             verdict, detail["message"] = "ambiguous", text
+    elif runs and verdict == "defect":
+        detail["message"] += confirming_message(list(runs))
     lone = unpredictable_runs_message(fit)
     if lone:
         detail["unpredictable_runs"] = [int(r) for r in np.asarray(fit.runs)[fit.fitted_exactly]]

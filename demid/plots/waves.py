@@ -6,6 +6,7 @@ from __future__ import annotations
 import pandas as pd
 
 from .labels import axis_label, tex_label
+from .layout import panel_grid
 from .style import SCENARIO_COLORS, styled
 
 
@@ -18,8 +19,11 @@ def waves_figure(history: pd.DataFrame, spec):
 
     scenarios = list(dict.fromkeys(history["scenario"]))
     labels = {sc.name: sc.label for sc in spec.scenarios}
-    fig, axes = plt.subplots(1, 1 + spec.dim, figsize=(3.2 * (1 + spec.dim), 3.0), squeeze=False)
-    axes = axes[0]
+    nrow, ncol, size = panel_grid(1 + spec.dim, 3.2, 3.0)  # panels wrap into rows within the page width
+    fig, grid = plt.subplots(nrow, ncol, figsize=size, squeeze=False)
+    axes = grid.ravel()
+    for ax in axes[1 + spec.dim:]:
+        ax.set_visible(False)
     per_wave = history.drop_duplicates(["wave", "scenario"])
     for i, scenario in enumerate(scenarios):
         rows = per_wave[per_wave["scenario"] == scenario]

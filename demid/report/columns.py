@@ -120,14 +120,18 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
     "calibration_residuals": {
         "observable": ("–", "Observable with a measured target."),
         "target": (RESPONSE_UNIT, "Measured target y*."),
-        "at_best": (RESPONSE_UNIT, "Predicted value at the best point (smallest largest relative error)."),
+        "at_best": (RESPONSE_UNIT, "Predicted value at the best point (smallest largest relative error, each "
+                                   "observable's weighed by ε/ε_k against its own tolerance where one is configured)."),
         "rel_error_best": (FRACTION, "(prediction − target)/target at the best point."),
         "at_reference": (RESPONSE_UNIT, "Predicted value at the configured reference point."),
         "rel_error_reference": (FRACTION, "(prediction − target)/target at the reference point."),
+        "tolerance": (FRACTION, "This observable's relative tolerance ε_k: its own (responses.<r>.tolerance, or "
+                                "tolerance_abs / |target|) or the scenario's."),
         "within_tolerance": ("–", "|rel_error_best| ≤ tolerance."),
         "within_tolerance_reference": ("–", "|rel_error_reference| ≤ tolerance (empty without reference point)."),
         "bottleneck": ("–", "True for the observable that keeps the targets from being met together."),
-        "max_error_without": (FRACTION, "Best achievable largest relative error when this observable is left out."),
+        "max_error_without": (FRACTION, "Best achievable largest relative error when this observable is left out "
+                                        "(each weighed by ε/ε_k where observables have their own tolerance)."),
         "implied_bias": (FRACTION, "Smallest relative simulation bias this observable would need while the other "
                                    "targets are met as well as they can be (0 when every target can be met within "
                                    "the tolerance together)."),

@@ -79,6 +79,28 @@ def ranking_display(ranking: pd.DataFrame, uninformative: dict | None = None) ->
     return shown
 
 
+def keys_labelled(frame: pd.DataFrame, spec) -> pd.DataFrame:
+    """A table's scenario, factor and observable keys shown as their configured labels (``aor+shape`` as
+    ``θ_Po + S_Po``); the CSV keeps the keys."""
+    scenarios = {sc.name: sc.label for sc in spec.scenarios}
+    factors = {f.name: f.label for f in spec.factors}
+
+    def observables(value):
+        if not isinstance(value, str) or value in ("–", "(none)"):
+            return value
+        return " + ".join(spec.response_labels.get(o, o) for o in value.split("+"))
+
+    out = frame.copy()
+    for column in out.columns:
+        if column == "scenario":
+            out[column] = out[column].map(lambda v: scenarios.get(v, v))
+        elif column == "factor":
+            out[column] = out[column].map(lambda v: factors.get(v, v))
+        elif column in ("observables", "best_subset", RANKING_HEADERS["best_subset"]):
+            out[column] = out[column].map(observables)
+    return out
+
+
 def _symbol_of(term: str, letters: dict[str, str]) -> str:
     from .rsm import _symbol
 
@@ -378,10 +400,16 @@ class ReportSections:
             if not path.is_file():
                 continue
             scen = read_parquet(path).drop_duplicates("scenario")
+            from ..spec import MaterialSpec
+            from ..tolerance import has_own_tolerance
+
+            own = has_own_tolerance(MaterialSpec.from_material(m, self.config["materials"][m]))
+            error = ("largest relative error, each observable's against its own tolerance, expressed at the "
+                     "scenario's" if own else "largest relative error")
             for _, row in scen[scen["feasible_fraction_pct"] == 0].iterrows():
                 lines.append(f"- **{self._label(m)}**, {row['scenario']}: no point of the domain meets every target "
-                             f"within {100 * row['tolerance']:g} %; the closest point misses by "
-                             f"{100 * row['best_max_rel_error']:.2f} % (largest relative error).")
+                             f"within {100 * row['tolerance']:g} %{' (or its own tolerance)' if own else ''}; the "
+                             f"closest point misses by {100 * row['best_max_rel_error']:.2f} % ({error}).")
         for m in self.materials:
             sub = table[table["material"] == m]
             scen = list(dict.fromkeys(sub["scenario"]))
@@ -491,7 +519,10 @@ class ReportSections:
             return []
         import json
 
+        from ..spec import MaterialSpec
+
         info = json.loads(summary.read_text(encoding="utf-8"))
+        spec = MaterialSpec.from_material(m, self.config["materials"][m])
         parts = [self._md("### Beyond deterministic admissibility")]
         robust = self._csv("robust_identifiability.csv")
         if robust is not None and len(robust[robust["material"] == m]):
@@ -501,14 +532,16 @@ class ReportSections:
             from ..sampling.residuals import PLAUSIBLE_DEFINITION
 
             lines = ["**Strict vs plausible (robust) admissible sets.** " + PLAUSIBLE_DEFINITION, "",
-                     markdown_table(sub[cols])]
+                     markdown_table(keys_labelled(sub[cols], spec))]
             scen = list(dict.fromkeys(sub["scenario"]))
+            shown = {sc.name: sc.label for sc in spec.scenarios}
             if len(scen) >= 2:
                 first = sub[sub["scenario"] == scen[0]].iloc[0]
                 last = sub[sub["scenario"] == scen[-1]].iloc[0]
                 def _contr(a, b):
                     return f"{100 * (b - a) / a:+.1f} %" if a > 0 else "n/a"
-                lines += ["", f"From {scen[0]} to {scen[-1]} the feasible fraction changes by "
+                lines += ["", f"From {shown.get(scen[0], scen[0])} to {shown.get(scen[-1], scen[-1])} the feasible "
+                          "fraction changes by "
                           f"{_contr(first['strict_fraction_pct'], last['strict_fraction_pct'])} (strict) and "
                           f"{_contr(first['robust_fraction_pct'], last['robust_fraction_pct'])} (robust)."]
             parts.append(self._md("\n".join(lines)))
@@ -529,7 +562,7 @@ class ReportSections:
                                      "last, without a gain: their "
                                      "posterior measures a discrepancy between simulation and experiment, not "
                                      "information" if out_of_reach else "") + ".\n\n"
-                                  + markdown_table(ranking_display(sub, info.get("uninformative")))
+                                  + markdown_table(keys_labelled(ranking_display(sub, info.get("uninformative")), spec))
                                   + ("\n\n" + info["advice"] if info.get("advice") else "")))
         parts.append(self._image(self.root / "figures" / f"posterior_{m}.png",
                                  f"Marginal posterior densities of the factors of {self._label(m)}, one curve per observable set"))

@@ -110,9 +110,26 @@ def labelled(text: str, spec) -> str:
     names = {k: v for k, v in names.items() if v and v != k}
     if not names or not text:
         return text
-    pattern = re.compile(r"(?<![\w./`])(" + "|".join(re.escape(k) for k in sorted(names, key=len, reverse=True))
-                         + r")(?![\w`]|\.\w)")
-    return pattern.sub(lambda m: names[m.group(1)], text)
+    words = [k for k in names if k in _ENGLISH_WORDS]  # "a": a factor only where a value or a bracket follows
+    others = [k for k in names if k not in _ENGLISH_WORDS]
+
+    def alternation(keys):
+        return "|".join(re.escape(k) for k in sorted(keys, key=len, reverse=True))
+
+    if others:
+        text = re.compile(r"(?<![\w./`])(" + alternation(others) + r")(?![\w`]|\.\w)").sub(
+            lambda m: names[m.group(1)], text)
+    if words:
+        text = re.compile(r"(?<![\w./`])(" + alternation(words) + r")(?=\s*[=≈]|[,;:)]|\.(?:\s|$)|$)").sub(
+            lambda m: names[m.group(1)], text)
+    return text
+
+
+#: Short English words a factor or response may be called (``a``, ``in``): in running text they are read as
+#: words, and replaced by the label only where a value, a bracket or punctuation follows (``a=0.1``, ``(a ≈ 2)``).
+_ENGLISH_WORDS = frozenset({"a", "an", "and", "any", "are", "as", "at", "be", "but", "by", "can", "do", "for", "if",
+                            "in", "is", "it", "its", "may", "no", "not", "of", "on", "one", "or", "per", "so", "the",
+                            "to", "up", "was", "we"})
 
 
 def verdict_sentence(response: str, res: dict) -> str:
@@ -157,9 +174,9 @@ def criticism_lines(info: dict, spec) -> list[str]:
         label = spec.response_labels.get(response, response)
         if res.get("verdict_message"):
             lines.append(f"Surrogate of {label} — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
-                         + verdict_sentence(response, res))
+                         + labelled(verdict_sentence(response, res), spec))
         elif res["messages"]:
-            lines.append(f"Surrogate of {label}: " + " ".join(res["messages"]))
+            lines.append(f"Surrogate of {label}: " + labelled(" ".join(res["messages"]), spec))
         else:
             lines.append(f"Surrogate of {label}: no defect found — the quadratic fits the simulation runs.")
     run_order = info.get("run_order") or {}
@@ -168,19 +185,30 @@ def criticism_lines(info: dict, spec) -> list[str]:
     lines += unreliable_surrogate_lines(info, spec)
     level2 = info.get("level2")
     if level2:
+        from ..criticism.messages import level2_miss_text, level2_tolerance_text
+
         tol = 100 * level2["tolerance"]
-        worst = 100 * level2["best_max_error"]
+        own = level2.get("tolerances")  # each observable's own tolerance (absent in older results)
+        own = own and dict(in_order(own, level2.get("observables") or ()))  # JSON sorts its keys
+        uniform = not own or all(abs(v - level2["tolerance"]) <= 1e-12 * level2["tolerance"] for v in own.values())
+        within = f"{tol:g} %" if uniform else labelled(level2_tolerance_text(level2["tolerance"], own), spec)
+        best = f"{100 * level2['best_max_error']:.2f} %"
+        own_miss = labelled(level2_miss_text(level2["best_errors"], level2["tolerance"], own), spec) if not uniform else ""
         if level2["feasible"]:
-            lines.append(f"Simulation vs experiment: every target can be met within {tol:g} % "
-                         f"(best point misses by at most {worst:.2f} %).")
+            lines.append(f"Simulation vs experiment: every target can be met within {within} "
+                         f"(best point misses {f'by at most {best}' if uniform else own_miss}).")
         else:
-            lines.append(f"Simulation vs experiment: the targets cannot all be met within {tol:g} %; the best point "
-                         f"misses by {worst:.2f} %" + (f", limited by {spec.response_labels.get(limit, limit)}"
-                                                        if (limit := level2.get("bottleneck")) else "") + ".")
+            lines.append(f"Simulation vs experiment: the targets cannot all be met within {within}; the best point "
+                         f"misses {f'by {best}' if uniform else own_miss}"
+                         + (f", limited by {spec.response_labels.get(limit, limit)}"
+                            if (limit := level2.get("bottleneck")) else "") + ".")
         if level2.get("reference_max_error") is not None:
+            inside = level2.get("reference_within")
+            inside = level2["reference_max_error"] <= level2["tolerance"] if inside is None else inside
             lines.append(f"Reference point: largest error {100 * level2['reference_max_error']:.2f} % "
-                         f"({'within' if level2['reference_max_error'] <= level2['tolerance'] else 'outside'} "
-                         f"the {tol:g} % tolerance).")
+                         f"({'within' if inside else 'outside'} "
+                         + (f"the {tol:g} % tolerance)." if uniform else
+                            labelled(level2_tolerance_text(level2["tolerance"], own, brackets=False), spec) + ")."))
         # a best point on a bound is told by the advice (demid.story), where widening can reach something
         lines += list(level2.get("extrapolation") or [])
     return lines

@@ -72,13 +72,16 @@ def _bound_text(f, side: str) -> str:
 
 
 def _check_targets(spec, implausible: dict, ranking) -> list[AdviceItem]:
-    from ..data import power_of_ten_repair
+    from ..data import UNIT_SLIP_RATIO, power_of_ten_repair
 
     items = []
     for r, found in implausible.items():
         key = f"materials.{spec.name}.responses.{r}.target"
-        head = (f"Check the target of {_label(spec, r)} (config key {key}): {spec.targets[r]:.6g} lies farther from "
-                f"every simulated value ({found['lo']:.4g} to {found['hi']:.4g}) than the simulated range itself")
+        where = ("farther from every simulated value ({lo:.4g} to {hi:.4g}) than the simulated range itself"
+                 if found.get("far", True) else
+                 "outside every simulated value ({lo:.4g} to {hi:.4g}) by more than a factor of {ratio:g}")
+        head = (f"Check the target of {_label(spec, r)} (config key {key}): {spec.targets[r]:.6g} lies "
+                + where.format(lo=found["lo"], hi=found["hi"], ratio=UNIT_SLIP_RATIO))
         if found["factor"] is not None:
             text = (f"{head}; {power_of_ten_repair(found)}, so it is likely a unit or typing slip. No widening "
                     "of the search range can reach it.")
@@ -98,20 +101,38 @@ def _check_targets(spec, implausible: dict, ranking) -> list[AdviceItem]:
     return items
 
 
+def _level2_within(spec, level2: dict) -> str:
+    """Level 2's tolerance in words: "2 %", or each observable's own (labelled)."""
+    from ..criticism.messages import level2_tolerance_text
+    from ..report.summary import labelled
+
+    from ..report.summary import in_order
+
+    own = dict(in_order(level2.get("tolerances") or {}, level2.get("observables") or ()))  # JSON sorts its keys
+    if all(abs(v - level2["tolerance"]) <= 1e-12 * level2["tolerance"] for v in own.values()):
+        return f"{100 * level2['tolerance']:g} %"
+    return labelled(level2_tolerance_text(level2["tolerance"], own), spec)
+
+
 def _recalibrate(spec, level1: dict, level2: dict, checked: set) -> list[AdviceItem]:
     items = []
     for r, res in (level1 or {}).items():
         if res.get("verdict") == "does_not_predict":
+            in_sets = any(r in sc.observables for sc in spec.scenarios)
+            pareto = spec.pareto is not None and r in (spec.pareto.error_of, spec.pareto.minimise)
+            uses = ("the sets that use it are not to be trusted" if in_sets else
+                    "the Pareto front that uses it is indicative only" if pareto else
+                    "do not use it to judge parameter sets")
             items.append(AdviceItem(spec.name, "recalibrate", "", "", r, (
                 f"Refit or resimulate {_label(spec, r)}: its surrogate does not predict left-out runs (Q² < 0), so "
-                "the sets that use it are not to be trusted.")))
+                f"{uses}.")))
     if level2 and not level2.get("feasible", True):
         limit = level2.get("bottleneck")
         if limit not in checked:
             which = (f"the target and the simulation of {_label(spec, limit)}, the observable that limits the best "
                      "match" if limit else "the targets and their simulation")
             items.append(AdviceItem(spec.name, "recalibrate", "", "", limit or "", (
-                f"No parameter set meets every target within {100 * level2['tolerance']:g} %: settle that first. "
+                f"No parameter set meets every target within {_level2_within(spec, level2)}: settle that first. "
                 f"Check {which}.")))
     return items
 

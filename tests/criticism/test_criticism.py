@@ -309,6 +309,7 @@ CAUSE_OF = {"term": "missing_term", "log": "response_transform", "outlier": "out
 
 @pytest.mark.parametrize("kind,k,size,kwargs", PLANTS, ids=[f"{p[0]}-{p[1]}f" for p in PLANTS])
 def test_planted_effect_is_named(kind, k, size, kwargs):
+    ambiguous = 0
     for seed in SEEDS:
         table, planted = ccd_table(100 + seed, k, kind, size, **kwargs)
         res = criticize(table, FACTORS[k], "y")
@@ -316,6 +317,14 @@ def test_planted_effect_is_named(kind, k, size, kwargs):
             # x1:x2:x3 rests on the corner runs alone, where a change of regime looks the same: not named
             assert not res.findings and res.unexplained["candidate"]["detail"] == planted.term
             assert res.unexplained["candidate"]["corner_only"] == 8
+            continue
+        if res.verdict == "ambiguous":
+            # a rival of another kind fits about as well (a 14-SD drift over 13 runs that also fits a step; a
+            # cubic term against one slipped value): the truth must be a candidate, runs must be proposed,
+            # and one table in five at most may be left undecided
+            ambiguous += 1
+            assert ambiguous <= 1 and res.discriminating_runs, (seed, res.verdict_message)
+            assert CAUSE_OF[kind] in [c["cause"] for c in res.candidates], (seed, res.candidates)
             continue
         assert res.findings, f"seed {seed}: nothing found for {planted}"
         first = res.findings[0]

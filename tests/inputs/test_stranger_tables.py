@@ -980,3 +980,16 @@ def test_the_command_line_warns_of_two_runs_made_one_point_by_a_factor_slip(tmp_
         assert re.search(rf"^demid: warning: .*runs \d+ and \d+, column 'x{j + 1}': both are the point .* typed as "
                          r"another level \(or a replicated point beside a run left out of the table\)$",
                          proc.stderr.strip(), re.M), proc.stderr
+
+
+@pytest.mark.parametrize("written, reserved", [("Block", "block"), ("BLOCK", "block"), ("Status", "status")])
+def test_a_reserved_column_in_another_case_is_refused_not_ignored(tmp_path, written, reserved):
+    # read as an unlisted column, a 'Block' column's shift would be fitted as noise without a word
+    header = "run,x1,x2,y,status," + written if reserved == "block" else "run,x1,x2,y," + written
+    rows = ["1,0.1,1,5.0,ok,1", "2,0.2,2,7.5,ok,2"] if reserved == "block" else ["1,0.1,1,5.0,ok", "2,0.2,2,7.5,ok"]
+    path = _tiny(tmp_path, rows, header=header)
+    with pytest.raises(InputError, match=rf"column '{written}': differs only in upper/lower case from the "
+                                         rf"reserved column '{reserved}': rename it to '{reserved}'"):
+        read_table(path, ["x1", "x2"], ["y"])
+    renamed = _tiny(tmp_path, rows, header=header.replace(written, reserved))
+    read_table(renamed, ["x1", "x2"], ["y"])

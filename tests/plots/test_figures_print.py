@@ -106,3 +106,26 @@ def test_names_read_in_config_then_natural_order():
     assert sorted(["d10", "d15", "d5"], key=natural_key) == ["d5", "d10", "d15"]
     as_read = {"d10": 2, "d15": 3, "d5": 1, "x": 0}  # a JSON file's sorted keys
     assert [k for k, _ in in_order(as_read, ["x"])] == ["x", "d5", "d10", "d15"]
+
+
+@pytest.mark.parametrize("n_factors", [2, 3])
+def test_the_waves_figure_fits_a_page_width(n_factors):
+    """One panel per factor plus the fraction panel: 3 or 4 panels of 3.2 in wrap into rows of 2 (≤ 7.2 in)."""
+    import pandas as pd
+
+    from demid.plots.waves import waves_figure
+    from demid.spec import MaterialSpec
+
+    names = ["a", "b", "c"][:n_factors]
+    material = {"data": "x.csv", "design": {"type": "custom"},
+                "factors": {f: {"lower": 0.0, "upper": 1.0} for f in names},
+                "responses": {"y": {"target": 1.0}}, "scenarios": {"s": {"observables": ["y"], "tolerance": 0.02}}}
+    spec = MaterialSpec.from_material("m", material, grid_points=11)
+    history = pd.DataFrame([{"material": "m", "wave": w, "runs_simulated": 9 * w, "runs_analysed": 9, "scenario": "s",
+                             "feasible_fraction_pct": 10.0, "feasible_fraction_of_omega_pct": 10.0 / w, "factor": f,
+                             "lower": 0.2, "upper": 0.6, "width": 0.4, "box_lower": 0.0, "box_upper": 1.0}
+                            for w in (1, 2) for f in names])
+    fig = waves_figure(history, spec)
+    width, _ = fig.get_size_inches()
+    assert width <= PAGE_WIDTH_IN + 1e-9
+    assert sum(ax.get_visible() for ax in fig.axes) == 1 + n_factors
