@@ -87,6 +87,10 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_surrogate.py", "tests/test_statistics_known_answers.py", "tests/test_core_contracts.py"],
     },
+    "demid/precision.py": {
+        "functions": ["round_off_floor", "round_off_only"],
+        "tests": ["tests/test_surrogate.py", "tests/inputs/test_factor_round_off.py", "tests/criticism/test_noise_free.py"],
+    },
     "demid/criticism/models.py": {
         "functions": ["infer_axial_distance", "_orth", "_residualize", "_hat", "_boxcox", "_inv_boxcox", "_aicc"],
         "tests": ["tests/test_statistics_known_answers.py", "tests/criticism/test_criticism.py", "tests/test_core_contracts.py",

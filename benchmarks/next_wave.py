@@ -163,8 +163,9 @@ def _cfg(lower, upper, targets, design, count=None):
 
 
 def _estimate(table, cfg, n):
-    surs = {f.response: f.surrogate() for f in fit_material(table, cfg)}
-    domain = MaterialSpec.from_material("benchmark", cfg).domain
+    spec = MaterialSpec.from_material("benchmark", cfg)
+    surs = {f.response: f.surrogate() for f in fit_material(table, spec)}
+    domain = spec.domain
     targets = {r: c["target"] for r, c in cfg["responses"].items()}
     aset = admissible_set(surs, domain, list(targets), targets, TOLERANCE, n)
     return surs, domain, aset
@@ -209,7 +210,7 @@ def run_case(name, sim, seed, count, n):
     ccd_cfg = _cfg(LO, HI, targets, {"type": "ccd", "alpha": 2 ** 0.5, "center_runs": 5}, count)
     surs, _, ccd_set = _estimate(ccd, ccd_cfg, n)
     robust = robust_identifiability_frame(surs, domain, {"both": (tuple(targets), TOLERANCE)}, targets, n, z=2.0)
-    wave = plan_next_wave("bench", ccd, surs, ccd_cfg, robust, z=2.0)
+    wave = plan_next_wave("bench", ccd, surs, MaterialSpec.from_material("bench", ccd_cfg), robust, z=2.0)
     box_lo, box_hi = wave.domain["lower"].to_numpy(), wave.domain["upper"].to_numpy()
     contained = bool(np.all(truth.lower >= box_lo - 1e-9) and np.all(truth.upper <= box_hi + 1e-9))
     # Smallest gap between the true set and a box side that was not clipped to the search range.

@@ -17,24 +17,22 @@ import pandas as pd
 from .sampling import (MAX_GRID_DIM, AdmissibleSet, CellCount, Domain, admissible_set,
                        cell_count, evaluate_set, plane_band_fraction, predict_grid, relative_residuals,
                        sobol_admissible_set)
-from .spec import as_spec
 from .tolerance import scenario_grid, scenario_surrogates
 
 if TYPE_CHECKING:
+    from .spec import MaterialSpec
     from .surrogate import Surrogate
 
 __all__ = ["MAX_GRID_DIM", "AdmissibleSet", "CellCount", "Domain", "admissible_set", "cell_count", "evaluate_scenarios",
            "evaluate_set", "plane_band_fraction", "predict_grid", "relative_residuals", "sobol_admissible_set"]
 
 
-def evaluate_scenarios(surrogates: dict[str, Surrogate], material, n: int | None = None,
+def evaluate_scenarios(surrogates: dict[str, Surrogate], spec: MaterialSpec, n: int | None = None,
                        grid_predictions: pd.DataFrame | None = None) -> tuple[pd.DataFrame, dict[str, AdmissibleSet]]:
     """Every configured scenario of a material: long table (one row per scenario x factor) and the sets.
 
-    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry); ``n``
-    defaults to its evaluation size.
+    ``spec`` is the material's :class:`~demid.spec.MaterialSpec`; ``n`` defaults to its evaluation size.
     """
-    spec = as_spec(material)
     n = spec.grid_points if n is None else n
     domain, targets = spec.domain, spec.targets
     frames, sets = [], {}

@@ -221,8 +221,10 @@ def _block_check(table, factors, coding, source):
 
 def cmd_validate(args) -> int:
     from .config import load_config
-    from .data import refuse_likely_typos, validate_material
+    from .data import read_printed, validate_material
     from .next_wave import check_next_runs
+    from .spec import MaterialSpec
+    from .transcription.typos import refuse_likely_typos
     from .waves import check_simulated
 
     from .config_text import refuse_unsafe_config_files
@@ -236,17 +238,18 @@ def cmd_validate(args) -> int:
         if mat.get("simulation"):  # no table yet: the workflow runs it and validates each wave's
             print(f"{name}: simulated by demid (simulation.command)")
             continue
-        vt = validate_material(name, mat, base_dir=base_dir)
-        confirmed = refuse_likely_typos(vt, name, mat, base_dir=base_dir)
-        for w in vt.warnings + _outside_the_runs(vt, name, mat):
+        spec = MaterialSpec.from_config(name, config)
+        vt = validate_material(spec, base_dir=base_dir)
+        confirmed = refuse_likely_typos(vt, spec, read_printed(Path(base_dir) / spec.data, vt.table))
+        for w in vt.warnings + _outside_the_runs(vt, spec):
             print(f"demid: warning: {w}", file=sys.stderr)
         for flag in confirmed:
-            print(f"demid: note: {mat['data']}, run {flag['run']}, column '{flag['column']}': value confirmed "
+            print(f"demid: note: {spec.data}, run {flag['run']}, column '{flag['column']}': value confirmed "
                   f"in confirmed_values although it looks like a typo", file=sys.stderr)
-        order = _run_order_note(vt, name, mat)
+        order = _run_order_note(vt, spec)
         if order:
-            print(f"demid: note: {mat['data']}: {order}", file=sys.stderr)
-        print(f"{name}: {mat['data']} OK ({run_counts(vt, (mat.get('design') or {}).get('type', 'ccd'), list(mat['responses']))})")
+            print(f"demid: note: {spec.data}: {order}", file=sys.stderr)
+        print(f"{name}: {spec.data} OK ({run_counts(vt, spec.design_type, spec.response_names)})")
     print(f"{args.config}: configuration and {sum('data' in m for m in config['materials'].values())} table(s) valid")
     return 0
 
@@ -274,23 +277,19 @@ def run_counts(vt, design_type: str, responses: list[str]) -> str:
     return text
 
 
-def _outside_the_runs(vt, name: str, mat: dict) -> list[str]:
+def _outside_the_runs(vt, spec) -> list[str]:
     """Search bounds or a reference point beyond what the runs simulated (the results would rest on
     extrapolation), said before anything runs; level 2 and the report say it again."""
     from .criticism.edges import extrapolation_warnings
-    from .spec import MaterialSpec
 
-    spec = MaterialSpec.from_material(name, mat)
     runs = vt.table[spec.factor_names].to_numpy(dtype=float)
-    return [f"{mat['data']}: {w}" for w in extrapolation_warnings(spec.domain, runs, spec.reference_point)]
+    return [f"{spec.data}: {w}" for w in extrapolation_warnings(spec.domain, runs, spec.reference_point)]
 
 
-def _run_order_note(vt, name: str, mat: dict) -> str:
+def _run_order_note(vt, spec) -> str:
     """Why drift will not be tested, when the run column cannot be the performed order ("" otherwise)."""
     from .criticism.material import material_run_order
-    from .spec import MaterialSpec
 
-    spec = MaterialSpec.from_material(name, mat)
     if spec.run_order == "unknown":
         return ""
     why = material_run_order(vt.table, spec, vt.coding).why

@@ -52,13 +52,14 @@ def _check_grid_sizes(config: dict, source: str) -> None:
 
 
 def _label_keys(mname: str, mat: dict):
-    yield f"materials.{mname}.label", mat.get("label", "")
+    """Every label and unit of a validated ``materials`` entry (the schema filled the absent ones)."""
+    yield f"materials.{mname}.label", mat["label"]
     for group in ("factors", "responses"):
         for name, item in mat[group].items():
             for field in ("label", "unit"):
-                yield f"materials.{mname}.{group}.{name}.{field}", item.get(field, "")
-    for name, scen in (mat.get("scenarios") or {}).items():
-        yield f"materials.{mname}.scenarios.{name}.label", scen.get("label", "")
+                yield f"materials.{mname}.{group}.{name}.{field}", item[field]
+    for name, scen in mat["scenarios"].items():
+        yield f"materials.{mname}.scenarios.{name}.label", scen["label"]
 
 
 def _check_labels(config: dict, source: str) -> None:
@@ -216,9 +217,9 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
                 raise InputError(f"config key {key}.pareto.error_of: response '{par['error_of']}' has no target",
                                  source=source)
         design = mat["design"]
-        if design["type"] == "ccd" and design.get("alpha", 1.0) < 1.0:
+        if design["type"] == "ccd" and design["alpha"] < 1.0:
             raise InputError(f"config key {key}.design.alpha: a CCD needs alpha >= 1", source=source)
-        unreadable = unreadable_alpha(design.get("alpha", 1.0)) if design["type"] == "ccd" else None
+        unreadable = unreadable_alpha(design["alpha"]) if design["type"] == "ccd" else None
         if unreadable:
             raise InputError(f"config key {key}.design.alpha: {design['alpha']:g} {unreadable}", source=source)
         _check_published_ranges(key, responses, source)

@@ -2,7 +2,9 @@
 
 Every problem is reported as one ``InputError`` line naming the file, the run
 and the column, saying what was found and what is expected.  The raw file is
-only ever read.
+only ever read.  Part of the input layer: the material arrives as its
+:class:`~demid.spec.MaterialSpec`; the likely-typo stop is
+:func:`demid.transcription.typos.refuse_likely_typos`.
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -23,7 +26,9 @@ from .design import Coding, factor_levels, model_matrix, model_units, quadratic_
 from .design_check import check_design, odd_level_values, require_estimable
 from .errors import InputError
 from .numbers import unusable_number
-from .spec import as_spec
+
+if TYPE_CHECKING:
+    from .spec import Factor, MaterialSpec
 
 UNICODE_MINUS = "\u2212"
 _DECIMAL_COMMA = re.compile(r"^[+-]?\d*,\d+$")
@@ -391,9 +396,10 @@ def far_target_warnings(table: pd.DataFrame, targets: dict, src: str, material: 
     return out
 
 
-def check_bounds(table: pd.DataFrame, factors_cfg: dict, src: str, rel_tol: float = 1e-6) -> None:
-    for f, fc in factors_cfg.items():
-        lo, hi = float(fc["lower"]), float(fc["upper"])
+def check_bounds(table: pd.DataFrame, factors: tuple[Factor, ...], src: str, rel_tol: float = 1e-6) -> None:
+    """Every factor value lies within its factor's bounds (up to ``rel_tol`` of the range)."""
+    for factor in factors:
+        f, lo, hi = factor.name, factor.lower, factor.upper
         slack = rel_tol * (hi - lo)
         bad = table[(table[f] < lo - slack) | (table[f] > hi + slack)]
         if len(bad):
@@ -406,17 +412,18 @@ def check_bounds(table: pd.DataFrame, factors_cfg: dict, src: str, rel_tol: floa
 _BOUND_SLIPS = ("decimal_shift", "transposition", "sign_lost")
 
 
-def check_bound_slips(table: pd.DataFrame, material: str, factors_cfg: dict, src: str) -> None:
+def check_bound_slips(table: pd.DataFrame, material: str, factors: tuple[Factor, ...], src: str) -> None:
     """A search bound beyond the runs that a one-keystroke slip turns into the runs' own extreme value
     (upper 9.24264 where the largest run is 0.924264) is a typo, not a wider search: refuse it.  Only
     bounds beyond the runs by a tenth of their range are considered (a bound rounded outwards, 2.9289 for
     2.92893, is no slip), and only the slips that move a value far: point, swap, sign."""
     from .transcription.typos import SLIP_WORDS, single_cell_slips
 
-    for f, fc in factors_cfg.items():
+    for factor in factors:
+        f = factor.name
         values = table[f].to_numpy(dtype=float)
         margin = 0.1 * (values.max() - values.min())
-        for side, bound, extreme in (("lower", fc["lower"], values.min()), ("upper", fc["upper"], values.max())):
+        for side, bound, extreme in (("lower", factor.lower, values.min()), ("upper", factor.upper, values.max())):
             if (bound > extreme - margin) if side == "lower" else (bound < extreme + margin):
                 continue
             for kind, _, value in single_cell_slips(repr(float(bound))):
@@ -442,40 +449,42 @@ def _block_notes(table: pd.DataFrame, factors: list[str], coding: Coding, log_fa
     return [f"{src}, column '{BLOCK_COLUMN}': {note}" for note in notes]
 
 
-def check_table_columns(material: str, mat_cfg: dict, base_dir: Path | str = ".") -> None:
+def check_table_columns(spec: MaterialSpec, base_dir: Path | str = ".") -> None:
     """The cheap part of :func:`validate_material`, for the workflow's start-up: the table can be read and its
     header names the run, every factor and every response.  Its cells, its design and its likely typos are
     checked once, in the material's job.  Raises InputError."""
-    header, _, _ = read_raw_numbered(Path(base_dir) / mat_cfg["data"])
-    check_header(header, mat_cfg["factors"], mat_cfg["responses"], str(Path(mat_cfg["data"])))
+    header, _, _ = read_raw_numbered(Path(base_dir) / spec.data)
+    check_header(header, spec.factor_names, spec.response_names, str(Path(spec.data)))
 
 
-def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") -> ValidatedTable:
-    """Read a material's table and run every transcription check; raises InputError."""
-    src = str(Path(mat_cfg["data"]))
-    path = Path(base_dir) / mat_cfg["data"]
-    factors = list(mat_cfg["factors"])
-    responses = list(mat_cfg["responses"])
-    log_factors = as_spec(mat_cfg, material).log_factors
-    table, warnings = read_table(path, factors, responses, mat_cfg.get("status_column", "status"))
+def validate_material(spec: MaterialSpec, base_dir: Path | str = ".") -> ValidatedTable:
+    """Read a material's table (``spec.data``, relative to ``base_dir``) and run every check of its cells and
+    design; raises InputError."""
+    material = spec.name
+    src = str(Path(spec.data))
+    path = Path(base_dir) / spec.data
+    factors = list(spec.factor_names)
+    responses = list(spec.response_names)
+    log_factors = spec.log_factors
+    table, warnings = read_table(path, factors, responses, spec.status_column)
     table = table[["run"] + factors + responses + ["status"] + [c for c in (BLOCK_COLUMN,) if c in table.columns]]
     for f in log_factors:
         bad = table[table[f] <= 0]
         if len(bad):
             raise InputError("a log-scale factor needs positive values", source=src,
                              run=int(bad["run"].iloc[0]), column=f)
-    check_bounds(table, mat_cfg["factors"], src)
-    check_bound_slips(table, material, mat_cfg["factors"], src)
+    check_bounds(table, spec.factors, src)
+    check_bound_slips(table, material, spec.factors, src)
     p = len(quadratic_terms(len(factors)))
     for r in responses:
         ok = np.isfinite(table[r].to_numpy())
         if ok.sum() <= p:
             raise InputError(f"only {int(ok.sum())} usable runs for a quadratic model with {p} coefficients; "
                              f"at least {p + 1} are needed", source=src, column=r)
-    coding, types = check_design(table, factors, mat_cfg["design"], src, f"materials.{material}", log_factors)
+    coding, types = check_design(table, factors, spec.design, src, f"materials.{material}", log_factors)
     warnings.extend(_block_notes(table, factors, coding, log_factors, src))
     coded = coding.to_coded(model_units(table[factors].to_numpy(), factors, log_factors))
-    levels = factor_levels(mat_cfg["design"]["type"], mat_cfg["design"].get("alpha", 1.0), len(factors))
+    levels = factor_levels(spec.design_type, spec.alpha, len(factors))
     if len(levels[0]):
         snapped = snap_to_factor_levels(coded, levels)
         warnings.extend(odd_level_values(table, factors, snapped, src))
@@ -487,8 +496,7 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
         if len(values) and np.ptp(values) == 0:
             warnings.append(f"{src}, column '{r}': the same value ({values[0]:g}) in every run, so it cannot "
                             "identify any factor (a column filled in by mistake?)")
-    targets = {r: float(c["target"]) for r, c in mat_cfg["responses"].items() if c.get("target") is not None}
-    warnings.extend(far_target_warnings(table, targets, src, material))
+    warnings.extend(far_target_warnings(table, spec.targets, src, material))
     failed: dict[str, list] = {}
     for r in responses:
         ok = np.isfinite(table[r].to_numpy())
@@ -501,66 +509,3 @@ def validate_material(material: str, mat_cfg: dict, base_dir: Path | str = ".") 
                             f"(failed simulation){note}")
     return ValidatedTable(table=table, coding=coding, point_types=types, warnings=warnings, failed=failed,
                           log_factors=log_factors)
-
-
-def _shortest(value: float) -> str:
-    return np.format_float_positional(float(value), trim="-")
-
-
-def _repair_explains(flag: dict, share: float = 0.2) -> bool:
-    """The repair removes most of the run's miss: a large slip, not a digit shuffle of a noisy value."""
-    predicted = flag["predicted_from_other_runs"]
-    return abs(flag["suggested"] - predicted) <= share * abs(flag["found"] - predicted)
-
-
-def refuse_likely_typos(validated: ValidatedTable, material: str, mat_cfg: dict,
-                        base_dir: Path | str = ".", printed: pd.DataFrame | None = None) -> list[dict]:
-    """Stop on a response cell that is far off the other runs' fit *and* reads like a digit-level slip.
-
-    A value the user has confirmed under ``confirmed_values`` passes; the confirmed flags are
-    returned so they can still be shown.  Raises InputError naming the file, run and column.
-    """
-    from .transcription import likely_typos
-    from .transcription.typos import SLIP_WORDS
-
-    src = str(Path(mat_cfg["data"]))
-    key = f"materials.{material}.confirmed_values"
-    spec = as_spec(mat_cfg, material)
-    runs = set(int(r) for r in validated.table["run"])
-    for run, column in spec.confirmed_values:
-        if column not in spec.response_names:
-            raise InputError(f"config key {key}: '{column}' is not a response of this material "
-                             f"(responses: {', '.join(spec.response_names)})", source=src)
-        if run not in runs:
-            raise InputError(f"config key {key}: run {run} is not in the table", source=src)
-    confirmed = set(spec.confirmed_values)
-    if printed is None:
-        printed = read_printed(Path(base_dir) / mat_cfg["data"], validated.table)
-    # Stopping a run needs stronger evidence than the report's warning (family-wise 1 %, not 5 %).
-    # A dropped digit stops the run too (29.4 for 129.4); the report's screen keeps its three kinds.
-    flags = likely_typos(validated, spec, printed, family_alpha=0.01,
-                         kinds=("transposition", "decimal_shift", "sign_lost", "digit_dropped"))
-    for flag in flags:
-        run, column = int(flag["run"]), flag["column"]
-        if (run, column) in confirmed or not _repair_explains(flag):
-            continue
-        found = printed.loc[validated.table["run"].to_numpy() == run, column].iloc[0]
-        raise InputError(f"{found} looks like {_shortest(flag['suggested'])} "
-                         f"with {SLIP_WORDS[flag['kind']]}; fix the cell{_other_repairs_text(flag)}, or confirm "
-                         f"the value with confirmed_values: [{{run: {run}, column: {column}}}]",
-                         source=src, run=run, column=column)
-    return flags
-
-
-def _other_repairs_text(flag: dict) -> str:
-    """Other repairs that fit the other runs as well, so that a user does not type in a guess: 10.91154 reads
-    as 109.1154 with the point shifted, but 100.91154 with a 0 dropped fits better."""
-    from .transcription.typos import SLIP_WORDS
-
-    others = flag.get("other_repairs", [])
-    if not others:
-        return ""
-    named = [f"{_shortest(c['value'])} ({SLIP_WORDS[c['kind']]})" for c in others[:2]]
-    shown = (", ".join(named) + f" and {len(others) - 2} more" if len(others) > 2 else " and ".join(named))
-    return (f" after checking it against the source: {shown} {'fits' if len(others) == 1 else 'fit'} the other "
-            f"runs as well (predicted {flag['predicted_from_other_runs']:.4g})")

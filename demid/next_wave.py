@@ -25,8 +25,7 @@ included, ``robust_z`` standard deviations), computed once by the uncertainty st
 The next wave is an ordinary study: bounds = next domain, data = earlier runs inside it plus
 the new runs, ``design: {type: custom}``.
 
-Every step takes the material's :class:`~demid.spec.MaterialSpec` (a bare ``materials`` entry is
-accepted too).  The module imports neither scipy nor statsmodels at load time, so the workflow's
+Every step takes the material's :class:`~demid.spec.MaterialSpec`.  The module imports neither scipy nor statsmodels at load time, so the workflow's
 parse step can run :func:`check_next_runs`.
 """
 
@@ -41,7 +40,7 @@ import pandas as pd
 
 from .design import model_matrix, parse_term, quadratic_terms, term_name
 from .errors import InputError
-from .spec import MaterialSpec, as_spec, join_observables
+from .spec import MaterialSpec, join_observables
 
 if TYPE_CHECKING:
     from .sampling import Domain
@@ -269,18 +268,17 @@ def plausible_points(surrogates: dict, spec: MaterialSpec, scenario: str, z: flo
     return grid_u[ok]
 
 
-def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec,
+def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: MaterialSpec,
                    robust: pd.DataFrame, findings: pd.DataFrame | None = None, *, z: float) -> NextWave:
     """The next domain and runs of one material with ``next_runs``.
 
-    ``spec``: the material's :class:`~demid.spec.MaterialSpec` (or its ``materials`` entry).
+    ``spec``: the material's :class:`~demid.spec.MaterialSpec`.
     ``robust``: the material's robust-identifiability frame (:func:`demid.uncertainty.analyse_material`);
     its plausible spans of the refocus scenario are used as they are.  ``findings``: the material's
     criticism findings (missing terms with aliases get separating runs).  ``z``: the config's
     ``robust_z``, the same as for the robust set, so that the plausible grid points used for the
     design are those of that set.
     """
-    spec = as_spec(spec, material)
     request = spec.next_runs
     factors = spec.factor_names
     domain = spec.domain
@@ -367,14 +365,13 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec,
 def plan_waves(specs: dict, frames: dict, *, z: float) -> dict[str, NextWave]:
     """:func:`plan_next_wave` for every material given.
 
-    ``specs``: material -> :class:`~demid.spec.MaterialSpec` (or its ``materials`` entry).
+    ``specs``: material -> :class:`~demid.spec.MaterialSpec`.
     ``frames``: ``tables``, ``fits``, ``robust``, ``findings`` -> material -> frame (the pipeline's
     validated table, fits, robust-identifiability and criticism-findings intermediates).
     """
     from .surrogate import surrogates_from_frame
 
     waves = {}
-    specs = {m: as_spec(s, m) for m, s in specs.items()}
     for m, spec in specs.items():
         table = frames["tables"][m]
         if "status" in table:
@@ -386,7 +383,6 @@ def plan_waves(specs: dict, frames: dict, *, z: float) -> dict[str, NextWave]:
 
 def tabulate_waves(specs: dict, waves: dict[str, NextWave]) -> tuple[pd.DataFrame, pd.DataFrame, dict]:
     """The two long tables (next domain, next runs) and the reasons of the planned waves."""
-    specs = {m: as_spec(s, m) for m, s in specs.items()}
     factors = list(dict.fromkeys(f for spec in specs.values() for f in spec.factor_names))
     predicted = list(dict.fromkeys(c for w in waves.values() for c in w.runs.columns if c.startswith("predicted_")))
     run_cols = ["material", "proposal"] + factors + ["purpose"] + predicted

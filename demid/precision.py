@@ -1,6 +1,8 @@
-"""The precision a printed table carries: the place of each value's last printed digit.
+"""The precision a printed table carries: the place of each value's last printed digit, and the residual size
+below which a fit is exact to that precision (the round-off floor).
 
-A bottom module (it imports nothing from demid) so that reading, design checks and the fit share one rule.
+A bottom module (it imports nothing from demid) so that reading, design checks, the typo screen and the fit
+share one rule.
 """
 
 from __future__ import annotations
@@ -85,3 +87,31 @@ def factor_round_off_sd(gradient: np.ndarray, x_actual: np.ndarray, unit, log_sc
             quantum = quantum / (np.abs(x_actual[:, j]) * np.log(10.0))
         variance += (gradient[:, j] * quantum / abs(unit[j])) ** 2 / 12.0
     return np.sqrt(variance)
+
+
+# Residuals smaller than this share of the response's magnitude are floating-point round-off
+# (an exact polynomial, a deterministic simulator's identical replicates), not scatter to test.
+ROUND_OFF = 1e-9
+
+
+def round_off_floor(y, factor_sd=None) -> float:
+    """Residual size below which a fit of ``y`` is exact to working precision — or to the precision the table
+    was printed to: that of ``y`` and, given ``factor_sd`` (per run, see :meth:`demid.surrogate.SurrogateFit.factor_round_off`),
+    that of the factors, carried through the fitted gradient."""
+    y = np.asarray(y, dtype=float)
+    if not y.size:
+        return 0.0
+    # Rounding to a place q adds errors of root mean square q / sqrt(12); a fit's residuals keep about half
+    # of that. 1.5 times the full variance is exceeded by rounding alone about once in 250 tables of 13 runs,
+    # while a miss of 0.4 of the last digit still counts as a miss.
+    variance = printed_quantum(y) ** 2 / 12
+    if factor_sd is not None:
+        variance = variance + np.asarray(factor_sd, dtype=float) ** 2
+    printed = float(np.sqrt(1.5 * np.mean(variance)))
+    return max(ROUND_OFF * float(np.max(np.abs(y))), printed)
+
+
+def round_off_only(residuals, y, factor_sd=None) -> bool:
+    """True when the residuals are round-off: their root mean square is below :func:`round_off_floor`."""
+    residuals = np.asarray(residuals, dtype=float)
+    return bool(residuals.size) and float(np.sqrt(np.mean(residuals ** 2))) <= round_off_floor(y, factor_sd)

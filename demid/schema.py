@@ -39,11 +39,6 @@ def material_property(key: str) -> dict:
     return copy.deepcopy(load_schema()["definitions"]["material"]["properties"][key])
 
 
-def material_default(key: str):
-    """The schema's default of a ``materials`` entry key (for specs built from bare, unvalidated entries)."""
-    return material_property(key)["default"]
-
-
 def material_with_defaults(material: dict) -> dict:
     """A copy of one ``materials`` entry with the schema's defaults filled in where keys are absent (an entry
     of a validated config already has them; a bare entry built by a library caller or a test gets them here,
@@ -52,6 +47,15 @@ def material_with_defaults(material: dict) -> dict:
     material = copy.deepcopy(material)
     _fill_defaults(material, schema["definitions"]["material"], schema)
     return material
+
+
+def definition_with_defaults(name: str, block: dict | None) -> dict:
+    """A copy of an optional block of the schema's definition ``name`` (absent: an empty block) with that
+    definition's defaults filled in, so that an optional block's settings default from the schema only."""
+    schema = load_schema()
+    block = copy.deepcopy(block or {})
+    _fill_defaults(block, schema["definitions"][name], schema)
+    return block
 
 
 def _key_path(parts) -> str:

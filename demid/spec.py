@@ -111,30 +111,31 @@ class MaterialSpec:
     # ------------------------------------------------------------------ construction
     @classmethod
     def from_material(cls, name: str, material: dict, grid_points: int | None = None) -> "MaterialSpec":
-        """The spec of one ``materials`` entry; keys the schema gives defaults may be absent (filled from it)."""
+        """The spec of one ``materials`` entry (with its ``design``, ``factors`` and ``responses``, which the schema
+        requires); keys the schema gives defaults may be absent: they are filled from the schema, the only source
+        of defaults.  The pipeline and the command line build specs with :meth:`from_config`."""
         from .schema import material_with_defaults
 
-        # The schema requires a design; a bare entry without one (library callers) is read as a CCD.
-        material = material_with_defaults(material if "design" in material else {**material, "design": {"type": "ccd"}})
+        material = material_with_defaults(material)
         design = material["design"]
         factors = tuple(
-            Factor(f, float(c["lower"]), float(c["upper"]), c["scale"] == "log", c.get("label") or f, c["unit"])
+            Factor(f, float(c["lower"]), float(c["upper"]), c["scale"] == "log", c["label"] or f, c["unit"])
             for f, c in material["factors"].items())
         responses = tuple(
-            Response(r, float(c["target"]) if c.get("target") is not None else None, c.get("label") or r,
+            Response(r, float(c["target"]) if c.get("target") is not None else None, c["label"] or r,
                      c["unit"], c.get("sigma"), c.get("sigma_rel"), c.get("tolerance"),
                      c.get("tolerance_abs"), c.get("discrepancy"))
-            for r, c in (material.get("responses") or {}).items())
+            for r, c in material["responses"].items())
         scenarios = tuple(
-            Scenario(s, tuple(c["observables"]), float(c["tolerance"]), c.get("label") or s)
-            for s, c in (material.get("scenarios") or {}).items())
+            Scenario(s, tuple(c["observables"]), float(c["tolerance"]), c["label"] or s)
+            for s, c in material["scenarios"].items())
         par = material.get("pareto")
         pareto = Pareto(par["error_of"], par["minimise"], float(par["max_error"])) if par else None
         nr = material.get("next_runs")
-        next_runs = NextRuns(int(nr["count"]), nr.get("scenario") or "", float(nr["margin"])) if nr else None
-        published = {r: c["published"] for r, c in (material.get("responses") or {}).items() if c.get("published")}
+        next_runs = NextRuns(int(nr["count"]), nr["scenario"], float(nr["margin"])) if nr else None
+        published = {r: c["published"] for r, c in material["responses"].items() if c.get("published")}
         return cls(
-            name=name, label=material.get("label") or name, data=material.get("data", ""),
+            name=name, label=material["label"] or name, data=material.get("data", ""),
             design_type=design["type"], alpha=float(design["alpha"]),
             center_runs=int(design["center_runs"]), factors=factors, responses=responses,
             scenarios=scenarios, reference_point=material.get("reference_point") or None, pareto=pareto,
@@ -174,7 +175,8 @@ class MaterialSpec:
 
     @cached_property
     def design(self) -> dict:
-        """The design block as the table validator reads it (type, alpha, center_runs)."""
+        """The design block as the table validator reads it (type, alpha, center_runs; the schema's defaults
+        filled in)."""
         return copy.deepcopy(self._material.get("design") or {})
 
     @cached_property
@@ -223,6 +225,18 @@ class MaterialSpec:
         believed) or ``unknown`` (never tested)."""
         return self._material["run_order"]
 
+    @property
+    def status_column(self) -> str:
+        """The table column that marks failed runs (``status_column``)."""
+        return self._material["status_column"]
+
+    @cached_property
+    def waves(self) -> dict:
+        """The ``waves`` block of a simulated material, with the schema's defaults (``max``, ``stop_early``)."""
+        from .schema import definition_with_defaults
+
+        return definition_with_defaults("waves", self._material.get("waves"))
+
     @cached_property
     def confirmed_values(self) -> tuple[tuple[int, str], ...]:
         """(run, response column) cells confirmed correct although they look like a typo, in config order."""
@@ -230,7 +244,7 @@ class MaterialSpec:
         return tuple(dict.fromkeys((int(c["run"]), c["column"]) for c in items))
 
     def material_config(self) -> dict:
-        """A copy of the validated ``materials`` entry, for the table validator (demid.data)."""
+        """A copy of the ``materials`` entry with the schema's defaults (a wave's entry is derived from it)."""
         return copy.deepcopy(self._material)
 
     def __repr__(self) -> str:  # stable and short
@@ -248,7 +262,7 @@ class MaterialSpec:
 
 def evaluation_size(config: dict, material: dict) -> int:
     """Grid points per axis (Sobol points above 3 factors) of a material's set evaluation."""
-    from .sampling import uses_grid
+    from .sampling.domain import uses_grid
 
     if material.get("grid_points"):
         return int(material["grid_points"])
@@ -257,7 +271,3 @@ def evaluation_size(config: dict, material: dict) -> int:
         return int(config["grid_points"])
     return int(config["grid_points_3d"] if uses_grid(d) else config["sobol_points"])
 
-
-def as_spec(material, name: str = "material") -> MaterialSpec:
-    """A MaterialSpec as is, or the spec of a bare ``materials`` entry (library and test callers)."""
-    return material if isinstance(material, MaterialSpec) else MaterialSpec.from_material(name, material)

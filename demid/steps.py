@@ -42,14 +42,14 @@ def validate_step(spec: MaterialSpec, data: str | Path, *, typo_stop: bool = Tru
     and has its columns.  With
     ``typo_stop`` (a hand-typed table, not a simulated wave) a likely slip stops with InputError."""
     from .config import check_labels
-    from .data import read_printed, refuse_likely_typos, validate_material
-    from .transcription import check_material, likely_typos, transcription_frame
+    from .data import read_printed, validate_material
+    from .transcription import check_material, likely_typos, refuse_likely_typos, transcription_frame
 
     check_labels(spec.name, spec.material_config())
-    validated = validate_material(spec.name, spec.material_config())
+    validated = validate_material(spec)
     printed = read_printed(data, validated.table)
     if typo_stop:
-        refuse_likely_typos(validated, spec.name, spec.material_config(), printed=printed)
+        refuse_likely_typos(validated, spec, printed)
     checks = check_material(validated, spec, printed)
     typos = likely_typos(validated, spec, printed)
     for flag in typos:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import warnings
 from dataclasses import asdict, dataclass, field
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -18,44 +19,20 @@ import pandas as pd
 from .blocks import block_columns, block_effects, block_labels, block_levels, pure_error_groups
 from .design import LEVERAGE_UNPREDICTABLE, Coding, Term, model_matrix, model_units, parse_term, quadratic_terms, term_name
 from .formulas import f_tail
-from .precision import factor_round_off_sd, printed_quantum
+from .precision import factor_round_off_sd, round_off_floor, round_off_only
 
+if TYPE_CHECKING:
+    from .spec import MaterialSpec
 
-# Residuals smaller than this share of the response's magnitude are floating-point round-off
-# (an exact polynomial, a deterministic simulator's identical replicates), not scatter to test.
-ROUND_OFF = 1e-9
 
 #: Up to this many runs the studentised residuals refit without each run (statsmodels' own loop).
 LOO_REFIT_MAX_RUNS = 200
-
-
-def round_off_floor(y, factor_sd=None) -> float:
-    """Residual size below which a fit of ``y`` is exact to working precision — or to the precision the table
-    was printed to: that of ``y`` and, given ``factor_sd`` (per run, see :meth:`SurrogateFit.factor_round_off`),
-    that of the factors, carried through the fitted gradient."""
-    y = np.asarray(y, dtype=float)
-    if not y.size:
-        return 0.0
-    # Rounding to a place q adds errors of root mean square q / sqrt(12); a fit's residuals keep about half
-    # of that. 1.5 times the full variance is exceeded by rounding alone about once in 250 tables of 13 runs,
-    # while a miss of 0.4 of the last digit still counts as a miss.
-    variance = printed_quantum(y) ** 2 / 12
-    if factor_sd is not None:
-        variance = variance + np.asarray(factor_sd, dtype=float) ** 2
-    printed = float(np.sqrt(1.5 * np.mean(variance)))
-    return max(ROUND_OFF * float(np.max(np.abs(y))), printed)
 
 
 def pure_error_ss(y, groups) -> float:
     """Sum of squares of the responses about their replicate-group means (pure error)."""
     y, groups = np.asarray(y, dtype=float), np.asarray(groups)
     return float(sum(np.sum((y[groups == g] - y[groups == g].mean()) ** 2) for g in np.unique(groups)))
-
-
-def round_off_only(residuals, y, factor_sd=None) -> bool:
-    """True when the residuals are round-off: their root mean square is below :func:`round_off_floor`."""
-    residuals = np.asarray(residuals, dtype=float)
-    return bool(residuals.size) and float(np.sqrt(np.mean(residuals ** 2))) <= round_off_floor(y, factor_sd)
 
 
 # --------------------------------------------------------------------------- results
@@ -542,16 +519,14 @@ def surrogates_from_frame(frame: pd.DataFrame, factors: list[str]) -> dict[str, 
 
 
 # --------------------------------------------------------------------------- per-material step
-def fit_material(table: pd.DataFrame, material, coding: Coding | None = None) -> list[SurrogateFit]:
+def fit_material(table: pd.DataFrame, spec: MaterialSpec, coding: Coding | None = None) -> list[SurrogateFit]:
     """Quadratic fit of every response of a validated table, in the declared design's coding.
 
-    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry); ``coding``
-    is the one validation inferred (None: inferred here the same way).
+    ``spec`` is the material's :class:`~demid.spec.MaterialSpec`; ``coding`` is the one validation
+    inferred (None: inferred here the same way).
     """
     from .design_check import infer_coding
-    from .spec import as_spec
 
-    spec = as_spec(material)
     factors, log_factors = spec.factor_names, spec.log_factors
     if coding is None:
         coding = infer_coding(table, factors, spec.design, spec.data, log_factors)

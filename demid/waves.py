@@ -17,13 +17,14 @@ import pandas as pd
 from .spec import MaterialSpec
 
 
-def waves_max(material: dict) -> int:
-    return int((material.get("waves") or {}).get("max", 1))
+def waves_max(spec: MaterialSpec) -> int:
+    """How many waves the material runs at most (``waves.max``)."""
+    return int(spec.waves["max"])
 
 
-def stops_early(material: dict) -> bool:
+def stops_early(spec: MaterialSpec) -> bool:
     """Whether the stop advice ends the material's waves before ``waves.max`` (``waves.stop_early``)."""
-    return bool((material.get("waves") or {}).get("stop_early", True))
+    return bool(spec.waves["stop_early"])
 
 
 def first_wave(spec: MaterialSpec, seed: int) -> pd.DataFrame:
@@ -135,8 +136,9 @@ def check_simulated(config: dict, source: str = "config") -> None:
         if mat["design"]["type"] == "custom":
             raise InputError(f"config key {key}.design.type: the first wave of a simulated material is its design; "
                              "declare ccd, box_behnken or factorial", source=source)
+        spec = MaterialSpec.from_material(name, mat)
         try:
-            first_wave(MaterialSpec.from_material(name, mat), int(mat["simulation"]["seed"]))
+            first_wave(spec, int(mat["simulation"]["seed"]))
         except InputError as err:
             raise InputError(f"config key {key}.design: the first wave cannot be generated: {err.detail}",
                              source=source) from None
@@ -146,8 +148,8 @@ def check_simulated(config: dict, source: str = "config") -> None:
             raise InputError(f"config key {key}.next_runs: with waves, each wave's next runs are waves.next_runs; "
                              "move next_runs there", source=source)
         nr = waves.get("next_runs")
-        if waves_max(mat) > 1 and not nr:
-            raise InputError(f"config key {key}.waves: max {waves_max(mat)} needs next_runs (e.g. next_runs: "
+        if waves_max(spec) > 1 and not nr:
+            raise InputError(f"config key {key}.waves: max {waves_max(spec)} needs next_runs (e.g. next_runs: "
                              "{count: 9}), the runs each further wave simulates", source=source)
         k = len(mat["factors"])
         needed = (k + 1) * (k + 2) // 2 + 1  # a quadratic's coefficients, and one degree of freedom

@@ -24,6 +24,7 @@ from demid.data import validate_material
 from demid.design import ccd_points, model_matrix, quadratic_terms
 from demid.errors import InputError
 from demid.io import atomic_path, save_figure, to_json_text, write_csv, write_json, write_parquet
+from demid.spec import MaterialSpec
 from demid.surrogate import Surrogate
 from demid.transcription import parse_printed, single_cell_slips
 
@@ -144,7 +145,8 @@ def test_scenarios_use_the_grid_up_to_three_factors_and_sobol_above():
                "scenarios": {"shell": {"observables": ["y"], "tolerance": eps}}}
         if k == 3:
             cfg["scenarios"]["wide"] = {"observables": ["y"], "tolerance": 2 * eps}
-        table, sets = evaluate_scenarios(sur, cfg, 31 if k == 3 else 2 ** 12)
+        table, sets = evaluate_scenarios(sur, MaterialSpec.from_material("m", {"design": {"type": "ccd"}, **cfg}),
+                                         31 if k == 3 else 2 ** 12)
         result = sets["shell"]
         if k == 3:
             exact = 4 / 3 * np.pi * target ** 1.5 * ((1 + eps) ** 1.5 - (1 - eps) ** 1.5)
@@ -329,10 +331,10 @@ def test_a_quadratic_in_two_factors_needs_seven_usable_runs(tmp_path, failed, ok
            "factors": {"x1": {"lower": 0.1, "upper": 0.9}, "x2": {"lower": 1.0, "upper": 11.0}},
            "responses": {"y": {"target": 10.0}}}
     if ok:
-        assert len(validate_material("m", cfg).failed["y"]) == len(failed)
+        assert len(validate_material(MaterialSpec.from_material("m", cfg)).failed["y"]) == len(failed)
     else:
         with pytest.raises(InputError, match="only 6 usable runs for a quadratic model with 6 coefficients"):
-            validate_material("m", cfg)
+            validate_material(MaterialSpec.from_material("m", cfg))
 
 
 def _ccd_csv(tmp_path, cells=None):
@@ -398,20 +400,21 @@ def test_off_level_value_names_its_run_and_the_nearest_level(tmp_path):
     with pytest.raises(InputError, match=rf"run {run}, column 'x1': value 0\.867696 is not a level of the declared "
                                          r"ccd design \(coded \+1\.300\); nearest valid level: 0\.9 "
                                          r"\(coded \+1\.414\)"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 def test_bounds_tolerance_is_relative_to_the_range():
     from demid.data import check_bounds
+    from demid.spec import Factor
 
-    factors = {"x": {"lower": 1000.0, "upper": 1001.0}}
+    factors = (Factor("x", 1000.0, 1001.0, False, "x", "-"),)
     check_bounds(pd.DataFrame({"run": [1, 2], "x": [1000.0, 1001.0000005]}), factors, "t.csv")  # 5e-7 of range
     with pytest.raises(InputError, match=r"run 2, column 'x': value 1001 lies outside the declared bounds"):
         check_bounds(pd.DataFrame({"run": [1, 2], "x": [1000.0, 1001.00001]}), factors, "t.csv")
     with pytest.raises(InputError, match=r"run 1, column 'x'"):
         check_bounds(pd.DataFrame({"run": [1, 2], "x": [999.99999, 1001.0]}), factors, "t.csv")
     # the tolerance is inclusive: exactly 1e-6 of the range outside is still accepted
-    check_bounds(pd.DataFrame({"run": [1, 2], "x": [-1e-6, 1 + 1e-6]}), {"x": {"lower": 0.0, "upper": 1.0}}, "t")
+    check_bounds(pd.DataFrame({"run": [1, 2], "x": [-1e-6, 1 + 1e-6]}), (Factor("x", 0.0, 1.0, False, "x", "-"),), "t")
 
 
 def test_design_description_and_cubic_terms():

@@ -33,20 +33,21 @@ def _annulus_material(count=9, tolerance=EPS, margin=0.1):
 
     table = make_ccd_table(responses, [0, 0], [1, 1], noise=0.0).rename(columns={"x1": "a", "x2": "b"})
     table["status"] = "ok"
-    cfg = {"data": "planted.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
-           "factors": {"a": {"lower": 0.0, "upper": 1.0}, "b": {"lower": 0.0, "upper": 1.0}},
-           "responses": {"y": {"target": R0 ** 2}},
-           "scenarios": {"y": {"observables": ["y"], "tolerance": tolerance}},
-           "next_runs": {"count": count, "scenario": "", "margin": margin}}
-    surrogates = {f.response: f.surrogate() for f in fit_material(table, cfg)}
-    robust = robust_identifiability_frame(surrogates, MaterialSpec.from_material("m", cfg).domain,
-                                          {"y": (("y",), tolerance)}, {"y": R0 ** 2}, 201, z=2.0)
-    return table, surrogates, cfg, robust
+    spec = MaterialSpec.from_material("m", {
+        "data": "planted.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+        "factors": {"a": {"lower": 0.0, "upper": 1.0}, "b": {"lower": 0.0, "upper": 1.0}},
+        "responses": {"y": {"target": R0 ** 2}},
+        "scenarios": {"y": {"observables": ["y"], "tolerance": tolerance}},
+        "next_runs": {"count": count, "scenario": "", "margin": margin}})
+    surrogates = {f.response: f.surrogate() for f in fit_material(table, spec)}
+    robust = robust_identifiability_frame(surrogates, spec.domain, {"y": (("y",), tolerance)}, {"y": R0 ** 2}, 201,
+                                          z=2.0)
+    return table, surrogates, spec, robust
 
 
 def test_next_domain_contains_the_planted_set_and_is_refocused():
-    table, surrogates, cfg, robust = _annulus_material()
-    wave = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
+    table, surrogates, spec, robust = _annulus_material()
+    wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
     assert list(wave.domain.columns) == DOMAIN_COLUMNS
     outer = R0 * np.sqrt(1 + EPS)
     lower, upper = wave.domain["lower"].to_numpy(), wave.domain["upper"].to_numpy()
@@ -68,8 +69,8 @@ def test_next_box_clips_to_range_and_handles_log_factors():
 def test_proposals_lie_in_the_box_on_the_plausible_set_and_predict_observables():
     """A quarter of the runs support the whole box, the rest lie on the band (here, noise-free, the
     admissible set itself)."""
-    table, surrogates, cfg, robust = _annulus_material(count=9)
-    wave = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
+    table, surrogates, spec, robust = _annulus_material(count=9)
+    wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
     runs = wave.runs
     assert list(runs.columns) == ["material", "proposal", "a", "b", "purpose", "predicted_y"]
     assert list(runs["proposal"]) == list(range(1, 10))
@@ -107,12 +108,12 @@ def test_the_proposals_support_the_whole_refocused_box(monkeypatch):
     D-criterion of the box's quadratic is far better than that choice's."""
     import demid.next_wave as nw
 
-    table, surrogates, cfg, robust = _annulus_material(count=9)
-    wave = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
+    table, surrogates, spec, robust = _annulus_material(count=9)
+    wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
     coded = _box_runs(wave, table)
     support = coded[len(coded) - len(wave.runs):][(wave.runs["purpose"] == PURPOSE_SUPPORT).to_numpy()]
     monkeypatch.setattr(nw, "BOX_SHARE", 0.0)
-    band_only = _box_runs(plan_next_wave("m", table, surrogates, cfg, robust, z=2.0), table)
+    band_only = _box_runs(plan_next_wave("m", table, surrogates, spec, robust, z=2.0), table)
     corners = np.array(list(product((-1.0, 1.0), repeat=2)))
 
     def corner_gap(pts):
@@ -184,9 +185,9 @@ def test_findings_name_the_alias_sets():
 
 
 def test_same_inputs_same_tables():
-    table, surrogates, cfg, robust = _annulus_material()
-    one = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
-    two = plan_next_wave("m", table, surrogates, cfg, robust, z=2.0)
+    table, surrogates, spec, robust = _annulus_material()
+    one = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
+    two = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
     pd.testing.assert_frame_equal(one.runs, two.runs)
     pd.testing.assert_frame_equal(one.domain, two.domain)
 
@@ -275,8 +276,8 @@ def test_runs_off_a_thin_plausible_set_are_labelled_so(monkeypatch):
 
     monkeypatch.setattr(nw, "BOX_SHARE", 0.0)
 
-    table, surrogates, cfg, robust = _annulus_material(count=9, tolerance=0.002)
-    wave = plan_next_wave("m", table, surrogates, cfg, robust, z=0.0)
+    table, surrogates, spec, robust = _annulus_material(count=9, tolerance=0.002)
+    wave = plan_next_wave("m", table, surrogates, spec, robust, z=0.0)
     rel = np.abs(wave.runs["predicted_y"] / R0 ** 2 - 1)
     on = wave.runs["purpose"] == PURPOSE_DESIGN
     off = wave.runs["purpose"] == PURPOSE_DESIGN_BOX

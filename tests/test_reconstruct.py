@@ -10,6 +10,7 @@ import yaml
 
 from demo import reconstruct as rec
 from demid.design import model_matrix, quadratic_terms
+from demid.spec import MaterialSpec
 from demid.surrogate import fit_response
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -90,7 +91,7 @@ def test_tables_pass_transcription_validation():
 
     config = load_config(ROOT / "config.yaml", base_dir=ROOT)
     for name, material in config["materials"].items():
-        checked = validate_material(name, material, base_dir=ROOT)
+        checked = validate_material(MaterialSpec.from_material(name, material), base_dir=ROOT)
         assert checked.warnings == []
         printed = pd.read_csv(ROOT / material["data"], dtype=str)
         results = check_table(checked.table, list(material["factors"]), material["responses"],

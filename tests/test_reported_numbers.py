@@ -119,7 +119,7 @@ def test_typo_flag_prediction_and_its_error_from_the_other_runs(tmp_path, seed):
     lines = [ln if not ln.startswith("5,") else ",".join(ln.split(",")[:-1] + [f"{true_value / 10:.3f}"])
              for ln in path.read_text().splitlines()]
     path.write_text("\n".join(lines) + "\n")
-    vt = validate_material("m", _cfg(path))
+    vt = validate_material(_cfg(path))
     (flag,) = likely_typos(vt, _cfg(path), read_printed(path, vt.table))
 
     data = vt.table

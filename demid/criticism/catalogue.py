@@ -16,7 +16,8 @@ from scipy import stats
 
 from ..blocks import pure_error_groups
 from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, model_matrix, term_name
-from ..surrogate import pure_error_ss, round_off_floor, round_off_only
+from ..precision import round_off_floor, round_off_only
+from ..surrogate import pure_error_ss
 from .aliasing import _term_classes
 from .models import _orth, _residualize
 

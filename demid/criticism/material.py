@@ -15,7 +15,6 @@ from ..formulas import relative_error
 from ..plots.criticism import residual_figure
 from ..sampling import evaluate_set, uses_grid
 from ..sampling.evaluate import uses_exact
-from ..spec import as_spec
 from ..surrogate import fit_response
 from ..tolerance import relative_tolerances, scenario_surrogates
 from .level1 import criticize
@@ -84,16 +83,15 @@ def _identifiability_effect(surrogates: dict, extended, response: str, spec: Mat
     return rows
 
 
-def reference_point_position(surrogates: dict, material, n: int,
+def reference_point_position(surrogates: dict, spec: MaterialSpec, n: int,
                              scenario_sets: _ScenarioSets | None = None) -> list[dict]:
     """Where the source's chosen point lies relative to each scenario's admissible set.
 
     ``inside`` is evaluated at the point itself; ``nearest`` is the closest admissible point (of the
     exact set for polynomial surrogates, else the closest admissible grid node)
     (distance in units of the search ranges, in percent, so factors of different scale compare).
-    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry).
+    ``spec`` is the material's :class:`~demid.spec.MaterialSpec`.
     """
-    spec = as_spec(material)
     ref = spec.reference_point
     if not ref:
         return []
@@ -137,20 +135,18 @@ def material_run_order(table: pd.DataFrame, spec: MaterialSpec, coding):
     return assess_run_order(runs, coded, responses, spec.run_order)
 
 
-def criticize_material(table: pd.DataFrame, surrogates: dict, material, n: int | None = None,
+def criticize_material(table: pd.DataFrame, surrogates: dict, spec: MaterialSpec, n: int | None = None,
                        title: str | None = None, strict_sets: dict | None = None,
                        coding: Coding | None = None, fits: dict | None = None) -> MaterialCriticism:
     """Level 1 for every response (with the identifiability effect of any extension) and level 2.
 
-    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry); ``n`` and
-    ``title`` default to its evaluation size and label.  ``strict_sets`` (scenario name -> the
+    ``spec`` is the material's :class:`~demid.spec.MaterialSpec`; ``n`` and ``title`` default to its evaluation size and label.  ``strict_sets`` (scenario name -> the
     exact strict set the admissibility step stored, with its reference distance) are reused, and so
     are ``coding``, the one validation inferred (None: inferred here the same way), and ``fits``
     (response -> its SurrogateFit in that coding; None: fitted here).
     """
     from ..design_check import infer_coding
 
-    spec = as_spec(material)
     n = spec.grid_points if n is None else n
     title = spec.label if title is None else title
     factors, log_factors, alpha = spec.factor_names, spec.log_factors, spec.axial_alpha

@@ -241,7 +241,7 @@ def exact_fit_message(response: str, fit: SurrogateFit) -> str:
     """What an adequate verdict means when the runs leave no scatter to test against ("" otherwise): the
     response never changes, or the quadratic goes through every run to round-off (a deterministic
     simulation of an exactly quadratic response)."""
-    from ..surrogate import round_off_floor, round_off_only
+    from ..precision import round_off_floor, round_off_only
 
     y = np.asarray(fit.y, dtype=float)
     if np.ptp(y) <= round_off_floor(y):

@@ -40,9 +40,13 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from itertools import product
 from math import comb
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
+
+if TYPE_CHECKING:
+    from .domain import Domain
 
 #: Highest number of factors handled exactly (more factors need quasi-Monte Carlo).
 MAX_EXACT_DIM = 3
@@ -859,14 +863,15 @@ def exact_set(polys, targets, tolerance: float, lower, upper, *, reference=None,
 
 
 def exact_set_for_surrogates(surrogates: dict, observables, targets: dict, tolerance: float,
-                             factors_cfg: dict, *, reference: dict | None = None) -> ExactSet:
-    """:func:`exact_set` for :class:`demid.surrogate.Surrogate` objects and a material's ``factors`` config.
+                             domain: Domain, *, reference: dict | None = None) -> ExactSet:
+    """:func:`exact_set` for :class:`demid.surrogate.Surrogate` objects over a material's search domain
+    (:attr:`demid.spec.MaterialSpec.domain`).
 
     Bounds and the reference point are given in actual units (as in the config); log-scale
     factors are converted to their model coordinate (log10) here.
     """
-    names = list(factors_cfg)
-    log = [factors_cfg[f].get("scale", "linear") == "log" for f in names]
+    names = list(domain.factors)
+    log = list(domain.log)
 
     def model(values):
         values = np.array(values, dtype=float)
@@ -876,8 +881,8 @@ def exact_set_for_surrogates(surrogates: dict, observables, targets: dict, toler
     for o in observables:
         if list(surrogates[o].factors) != names:
             raise ValueError(f"surrogate '{o}' has factors {surrogates[o].factors}, expected {names}")
-    lower = model([factors_cfg[f]["lower"] for f in names])
-    upper = model([factors_cfg[f]["upper"] for f in names])
+    lower = model(domain.lower)
+    upper = model(domain.upper)
     ref = None if reference is None else model([reference[f] for f in names])
     return exact_set([polynomial_from_surrogate(surrogates[o]) for o in observables],
                      [targets[o] for o in observables], tolerance, lower, upper, reference=ref,

@@ -68,7 +68,8 @@ of a second.
 
 from .check import Suspect, TranscriptionResult, check_material, check_table, check_transcription, transcription_frame
 from .printed import STATISTICS, PrintedValue, parse_printed
-from .typos import KINDS, likely_typos, single_cell_slips
+from .typos import KINDS, likely_typos, refuse_likely_typos, single_cell_slips
 
 __all__ = ["KINDS", "STATISTICS", "PrintedValue", "Suspect", "TranscriptionResult", "check_material", "check_table",
-           "check_transcription", "likely_typos", "parse_printed", "single_cell_slips", "transcription_frame"]
+           "check_transcription", "likely_typos", "parse_printed", "refuse_likely_typos", "single_cell_slips",
+           "transcription_frame"]

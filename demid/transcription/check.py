@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -12,12 +13,14 @@ import pandas as pd
 from ..design import Coding, quadratic_terms
 from ..errors import InputError
 from ..io import CSV_SIGNIFICANT_DIGITS
-from ..spec import as_spec
 from .engine import (_ALPHA_SLACK, _DesignFit, _coded_to_actual_matrix, _design_levels, _evaluate_designs,
                      _lack_of_fit_p, _levels_for_cell, _numeric, _runs)
 from .printed import (_agreement, _cell_texts, _format, _irregularity, _jsonable, _parse_published,
                       _precision_elsewhere, parse_printed)
 from .typos import _KIND_RANK, KINDS, SLIP_WORDS, single_cell_slips
+
+if TYPE_CHECKING:
+    from ..spec import MaterialSpec
 
 
 # --------------------------------------------------------------------------- results
@@ -429,13 +432,12 @@ def check_table(table: pd.DataFrame, factors: list[str], responses_cfg: dict, *,
     return results
 
 
-def check_material(validated, material, printed: pd.DataFrame | None = None) -> list[TranscriptionResult]:
+def check_material(validated, spec: MaterialSpec, printed: pd.DataFrame | None = None) -> list[TranscriptionResult]:
     """The transcription check of a validated material table against its config's ``published`` blocks.
 
-    ``material`` is a :class:`~demid.spec.MaterialSpec` (or a bare ``materials`` entry).  Uses the
-    validated table's design coding, so the check and the fits share one coding.
+    ``spec`` is the material's :class:`~demid.spec.MaterialSpec`.  Uses the validated table's design
+    coding, so the check and the fits share one coding.
     """
-    spec = as_spec(material)
     responses = {r: ({"published": spec.published[r]} if r in spec.published else {}) for r in spec.response_names}
     return check_table(validated.table, spec.factor_names, responses, alpha=spec.alpha,
                        design_type=spec.design_type, coding=validated.coding, log_factors=spec.log_factors,

@@ -1,8 +1,10 @@
-"""Single-cell slips a typist makes, and the validator's likely-typo flag.
+"""Single-cell slips a typist makes, the validator's likely-typo flag and the stop on a likely typo.
 
 :func:`single_cell_slips` lists every edit of one printed cell (sign lost, decimal shift,
 transposition, doubled, dropped or substituted digit); :func:`likely_typos` flags runs whose
-extreme studentised residual a slip would explain, even without published statistics.
+extreme studentised residual a slip would explain, even without published statistics;
+:func:`refuse_likely_typos` stops on such a cell unless the config confirms it.  Part of the input
+layer: it imports nothing above the design and precision modules.
 """
 
 from __future__ import annotations
@@ -13,11 +15,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..spec import as_spec
+from ..errors import InputError
 from .printed import _jsonable
 
 if TYPE_CHECKING:
     import pandas as pd
+
+    from ..spec import MaterialSpec
 
 
 # Priority order (fewer keystrokes first); also the tie-break among equal repairs.
@@ -167,7 +171,7 @@ def studentised_residuals(coded: np.ndarray, y: np.ndarray, terms) -> dict[str, 
     scale without the run, s_(i)^2 = (SSE - e_i^2 / (1 - h_i)) / (n - rank - 1).
     """
     from ..design import model_matrix
-    from ..surrogate import round_off_only
+    from ..precision import round_off_only
 
     x = model_matrix(coded, terms)
     pinv = np.linalg.pinv(x)
@@ -182,7 +186,7 @@ def studentised_residuals(coded: np.ndarray, y: np.ndarray, terms) -> dict[str, 
     return {"leverage": leverage, "residual": residual, "student_resid": student}
 
 
-def likely_typos(validated, material, printed: pd.DataFrame | None = None, *,
+def likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame | None = None, *,
                  family_alpha: float = 0.05, kinds=("transposition", "decimal_shift", "sign_lost")) -> list[dict]:
     """Response cells that look mistyped even without published statistics.
 
@@ -194,7 +198,6 @@ def likely_typos(validated, material, printed: pd.DataFrame | None = None, *,
     """
     from ..design import model_units, quadratic_terms
 
-    spec = as_spec(material)
     factors, log_factors = spec.factor_names, spec.log_factors
     terms = quadratic_terms(len(factors))
     table = validated.table
@@ -260,3 +263,61 @@ def likely_typos(validated, material, printed: pd.DataFrame | None = None, *,
                                          f"{student:.1f}, predicted {loo_pred:.4g}); "
                                          f"{best[2]:g} ({best[1].replace('_', ' ')}) would fit — likely typo"})
     return flags
+
+
+def _shortest(value: float) -> str:
+    return np.format_float_positional(float(value), trim="-")
+
+
+def _repair_explains(flag: dict, share: float = 0.2) -> bool:
+    """The repair removes most of the run's miss: a large slip, not a digit shuffle of a noisy value."""
+    predicted = flag["predicted_from_other_runs"]
+    return abs(flag["suggested"] - predicted) <= share * abs(flag["found"] - predicted)
+
+
+def refuse_likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame) -> list[dict]:
+    """Stop on a response cell that is far off the other runs' fit *and* reads like a digit-level slip.
+
+    ``validated`` is the material's :class:`~demid.data.ValidatedTable`, ``printed`` its cells as printed
+    (:func:`demid.data.read_printed`).  A value the user has confirmed under ``confirmed_values`` passes;
+    the confirmed flags are returned so they can still be shown.  Raises InputError naming the file, run
+    and column.
+    """
+    from pathlib import Path
+
+    src = str(Path(spec.data))
+    key = f"materials.{spec.name}.confirmed_values"
+    runs = set(int(r) for r in validated.table["run"])
+    for run, column in spec.confirmed_values:
+        if column not in spec.response_names:
+            raise InputError(f"config key {key}: '{column}' is not a response of this material "
+                             f"(responses: {', '.join(spec.response_names)})", source=src)
+        if run not in runs:
+            raise InputError(f"config key {key}: run {run} is not in the table", source=src)
+    confirmed = set(spec.confirmed_values)
+    # Stopping a run needs stronger evidence than the report's warning (family-wise 1 %, not 5 %).
+    # A dropped digit stops the run too (29.4 for 129.4); the report's screen keeps its three kinds.
+    flags = likely_typos(validated, spec, printed, family_alpha=0.01,
+                         kinds=("transposition", "decimal_shift", "sign_lost", "digit_dropped"))
+    for flag in flags:
+        run, column = int(flag["run"]), flag["column"]
+        if (run, column) in confirmed or not _repair_explains(flag):
+            continue
+        found = printed.loc[validated.table["run"].to_numpy() == run, column].iloc[0]
+        raise InputError(f"{found} looks like {_shortest(flag['suggested'])} "
+                         f"with {SLIP_WORDS[flag['kind']]}; fix the cell{_other_repairs_text(flag)}, or confirm "
+                         f"the value with confirmed_values: [{{run: {run}, column: {column}}}]",
+                         source=src, run=run, column=column)
+    return flags
+
+
+def _other_repairs_text(flag: dict) -> str:
+    """Other repairs that fit the other runs as well, so that a user does not type in a guess: 10.91154 reads
+    as 109.1154 with the point shifted, but 100.91154 with a 0 dropped fits better."""
+    others = flag.get("other_repairs", [])
+    if not others:
+        return ""
+    named = [f"{_shortest(c['value'])} ({SLIP_WORDS[c['kind']]})" for c in others[:2]]
+    shown = (", ".join(named) + f" and {len(others) - 2} more" if len(others) > 2 else " and ".join(named))
+    return (f" after checking it against the source: {shown} {'fits' if len(others) == 1 else 'fit'} the other "
+            f"runs as well (predicted {flag['predicted_from_other_runs']:.4g})")

@@ -15,7 +15,7 @@ from ..plots.labels import axis_label, tex_label
 from ..plots.uncertainty import posterior_figure, tolerance_sweep_figure
 from ..sampling import uses_grid
 from ..sampling.evaluate import evaluate_set, uses_exact
-from ..spec import FALLBACK_TOLERANCE, as_spec
+from ..spec import FALLBACK_TOLERANCE
 from .posterior import INFORMATION_GAIN_COLUMNS, information_gain_frame, subset_posteriors
 from .ranking import RANKING_COLUMNS, next_measurement_advice, rank_observable_sets
 from ..sampling.residuals import PLAUSIBLE_DEFINITION
@@ -27,6 +27,7 @@ from .sweep import DEFAULT_SWEEP_TOLERANCES, SWEEP_COLUMNS, tolerance_sweep
 
 if TYPE_CHECKING:
     from ..sampling.grid import AdmissibleSet
+    from ..spec import MaterialSpec
     from ..surrogate import Surrogate
 
 
@@ -79,19 +80,18 @@ class MaterialUncertainty:
                                 unreachable=self.unreachable, observable_labels=self.observable_labels)
 
 
-def analyse_material(surrogates: dict[str, Surrogate], material, *, z: float = 2.0,
+def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z: float = 2.0,
                      tolerances=DEFAULT_SWEEP_TOLERANCES, sizes: dict[str, int] | None = None,
                      strict_sets: dict[str, AdmissibleSet] | None = None, seed: int = 0) -> MaterialUncertainty:
     """Robust sets, tolerance sweep, posteriors, ranking and advice for one configured material.
 
-    ``material`` is a :class:`~demid.spec.MaterialSpec` (or one entry of the config's
-    ``materials``: factors, responses with ``target`` and optional ``sigma``/``sigma_rel``, scenarios).  Robust sets use the
+    ``spec`` is the material's :class:`~demid.spec.MaterialSpec` (factors, responses with ``target`` and
+    optional ``sigma``/``sigma_rel``, scenarios).  Robust sets use the
     configured measurement sigma only (0 when absent); posteriors and the ranking use it
     or, when absent, ``sigma_rel`` = reference tolerance / 2, where the reference
     tolerance is that of the scenario with the most observables.  ``notes`` states the
     grid sizes and sigma bases used, for the report.
     """
-    spec = as_spec(material)
     domain = spec.domain
     targets = {r: t for r, t in spec.targets.items() if r in surrogates}
     scenarios = {sc.name: (sc.observables, sc.tolerance) for sc in spec.scenarios}

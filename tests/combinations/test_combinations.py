@@ -139,6 +139,7 @@ def _band_spec():
     from demid.spec import MaterialSpec
 
     return MaterialSpec.from_material("m", {
+        "design": {"type": "ccd"},
         "factors": {"a": {"lower": 0, "upper": 1}, "b": {"lower": 0, "upper": 1}},
         "responses": {"y1": {"target": 1.0}, "across": {"target": 0.0}, "parallel": {"target": 2.0},
                       "tilted": {}},
@@ -172,6 +173,7 @@ def test_advice_names_the_observable_that_cuts_the_band():
     from demid.spec import MaterialSpec
 
     both = MaterialSpec.from_material("m", {
+        "design": {"type": "ccd"},
         "factors": {"a": {"lower": 0, "upper": 1}, "b": {"lower": 0, "upper": 1}},
         "responses": {"y1": {"target": 1.0}, "across": {"target": 0.0}},
         "scenarios": {"band": {"observables": ["y1"], "tolerance": 0.02},

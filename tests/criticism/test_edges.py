@@ -92,7 +92,7 @@ def test_identifiability_rows_carry_at_bound_and_the_verdict_follows_it():
     factors = ["x", "w"]
     surrogates = {"y1": _linear("y1", factors, 0), "y2": _linear("y2", factors, 1)}
     material = _material({"y1": 19.9, "y2": 15.0})
-    table, sets = evaluate_scenarios(surrogates, material, 51)
+    table, sets = evaluate_scenarios(surrogates, MaterialSpec.from_material("m", material), 51)
     assert IDENTIFIABILITY_COLUMNS[-1] == "at_bound"
     assert list(table["at_bound"]) == ["upper", "none"]
     spec = MaterialSpec.from_material("m", material)

@@ -222,7 +222,7 @@ def test_verdict_column_documented_and_written():
 
 
 def test_report_warns_about_scenarios_using_a_surrogate_that_does_not_predict():
-    material = {"factors": {"a": {"lower": 0, "upper": 1}, "b": {"lower": 0, "upper": 1}},
+    material = {"design": {"type": "ccd"}, "factors": {"a": {"lower": 0, "upper": 1}, "b": {"lower": 0, "upper": 1}},
                 "responses": {"S": {"target": 1.0}, "T": {"target": 2.0}},
                 "scenarios": {"both": {"observables": ["S", "T"], "tolerance": 0.05},
                               "t_only": {"observables": ["T"], "tolerance": 0.05}},

@@ -147,7 +147,7 @@ def test_printed_precision_does_not_mask_real_misfit():
     ([1 / 3, 2.0], None),  # a value with every digit: nothing was rounded for print
 ])
 def test_the_printed_place_of_each_value(values, quantum):
-    from demid.surrogate import printed_quantum
+    from demid.precision import printed_quantum
 
     found = printed_quantum(values)
     if quantum is None:

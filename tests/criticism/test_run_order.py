@@ -156,7 +156,8 @@ def test_config_key_default_and_validation(tmp_path):
     config = load_config(_config(tmp_path), base_dir=tmp_path)
     assert config["materials"]["m"]["run_order"] == "performed"  # the schema's default
     assert MaterialSpec.from_config("m", config).run_order == "performed"
-    assert MaterialSpec.from_material("m", {"factors": {"a": {"lower": 0, "upper": 1}}}).run_order == "performed"
+    bare = {"design": {"type": "ccd"}, "factors": {"a": {"lower": 0, "upper": 1}}, "responses": {"y": {}}}
+    assert MaterialSpec.from_material("m", bare).run_order == "performed"  # a bare entry gets the schema's default
     unknown = load_config(_config(tmp_path, "    run_order: unknown\n"), base_dir=tmp_path)
     assert MaterialSpec.from_config("m", unknown).run_order == "unknown"
     with pytest.raises(InputError, match="run_order"):

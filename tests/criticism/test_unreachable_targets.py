@@ -8,6 +8,7 @@ import pytest
 from demid.design import quadratic_terms
 from demid.io import save_figure
 from demid.sampling.domain import Domain
+from demid.spec import MaterialSpec
 from demid.surrogate import Surrogate, fit_response
 from demid.uncertainty import analyse_material
 from demid.uncertainty.ranking import next_measurement_advice, reachable_targets
@@ -19,11 +20,12 @@ def _material(y2_target):
     table = make_ccd_table(lambda x: {"y1": 100 + 20 * x[:, 0] - 2 * x[:, 1] + 10 * x[:, 0] ** 2,
                                       "y2": 80 + 5 * x[:, 0] + 3 * x[:, 1] - 0.1 * x[:, 1] ** 2},
                            [0.1, 1.0], [0.9, 11.0], noise=0.3, seed=8, decimals=3)
-    cfg = {"data": "t.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
-           "factors": {"x1": {"lower": 0.1, "upper": 0.9}, "x2": {"lower": 1.0, "upper": 11.0}},
-           "responses": {"y1": {"target": 10 * table["y1"].max()}, "y2": {"target": y2_target}},
-           "scenarios": {"y1_only": {"observables": ["y1"], "tolerance": 0.02},
-                         "both": {"observables": ["y1", "y2"], "tolerance": 0.02}}}
+    cfg = MaterialSpec.from_material("m", {
+        "data": "t.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+        "factors": {"x1": {"lower": 0.1, "upper": 0.9}, "x2": {"lower": 1.0, "upper": 11.0}},
+        "responses": {"y1": {"target": 10 * table["y1"].max()}, "y2": {"target": y2_target}},
+        "scenarios": {"y1_only": {"observables": ["y1"], "tolerance": 0.02},
+                      "both": {"observables": ["y1", "y2"], "tolerance": 0.02}}})
     surrogates = {r: fit_response(table, ["x1", "x2"], r, alpha=1.41421).surrogate() for r in ("y1", "y2")}
     return surrogates, cfg
 
@@ -51,12 +53,13 @@ def _linear(name: str, j: int) -> Surrogate:
     return Surrogate(name, ["x", "w"], quadratic_terms(2), coef, np.zeros((6, 6)), 0.0, 7)
 
 
-def _linear_material(y1_target: float) -> tuple[dict, dict]:
+def _linear_material(y1_target: float) -> tuple[dict, MaterialSpec]:
     surrogates = {"y1": _linear("y1", 0), "y2": _linear("y2", 1)}
-    cfg = {"data": "t.csv", "design": {"type": "ccd", "alpha": 1.0, "center_runs": 1},
-           "factors": {"x": {"lower": 0.0, "upper": 1.0}, "w": {"lower": 0.0, "upper": 1.0}},
-           "responses": {"y1": {"target": y1_target}, "y2": {"target": 15.0}},
-           "scenarios": {"both": {"observables": ["y1", "y2"], "tolerance": 0.02}}}
+    cfg = MaterialSpec.from_material("m", {
+        "data": "t.csv", "design": {"type": "ccd", "alpha": 1.0, "center_runs": 1},
+        "factors": {"x": {"lower": 0.0, "upper": 1.0}, "w": {"lower": 0.0, "upper": 1.0}},
+        "responses": {"y1": {"target": y1_target}, "y2": {"target": 15.0}},
+        "scenarios": {"both": {"observables": ["y1", "y2"], "tolerance": 0.02}}})
     return surrogates, cfg
 
 
@@ -109,14 +112,16 @@ def test_targets_that_cannot_be_met_together_are_a_discrepancy_not_information()
     ranked first with the most 'information'.  It ranks last without a gain; targets that can be met together
     (12 and 12.1: x in [0.196, 0.204] and [0.197, 0.206]) keep theirs."""
     surrogates, cfg = _same_direction(12.0, 18.0)
-    ranking = analyse_material(surrogates, cfg, tolerances=[0.02, 0.1]).ranking.set_index("observables")
+    ranking = analyse_material(surrogates, MaterialSpec.from_material("m", cfg),
+                               tolerances=[0.02, 0.1]).ranking.set_index("observables")
     assert ranking.loc["y1", "targets_reachable"] and ranking.loc["y2", "targets_reachable"]
     assert not ranking.loc["y1+y2", "targets_reachable"] and np.isnan(ranking.loc["y1+y2", "information_gain_bits"])
     assert ranking.loc["y1+y2", "rank"] == 3 and ranking.loc["y1+y2", "rank_by_fraction"] == 3
     advice = next_measurement_advice(ranking.reset_index())
     assert "The targets of y1 + y2 can each be met but not together within the tolerance" in advice
     surrogates, cfg = _same_direction(12.0, 12.1)
-    ranking = analyse_material(surrogates, cfg, tolerances=[0.02, 0.1]).ranking.set_index("observables")
+    ranking = analyse_material(surrogates, MaterialSpec.from_material("m", cfg),
+                               tolerances=[0.02, 0.1]).ranking.set_index("observables")
     assert ranking.loc["y1+y2", "targets_reachable"] and np.isfinite(ranking.loc["y1+y2", "information_gain_bits"])
 
 
@@ -131,7 +136,8 @@ def test_the_gain_over_best_subset_is_the_gain_over_that_subset():
            "factors": {"x": {"lower": 0.0, "upper": 1.0}, "w": {"lower": 0.0, "upper": 1.0}},
            "responses": {"y1": {"target": 15.0, "sigma_rel": 0.2}, "y2": {"target": 11.0, "sigma_rel": 0.002}},
            "scenarios": {"both": {"observables": ["y1", "y2"], "tolerance": 0.02}}}
-    ranking = analyse_material(surrogates, cfg, tolerances=[0.02, 0.1]).ranking.set_index("observables")
+    ranking = analyse_material(surrogates, MaterialSpec.from_material("m", cfg),
+                               tolerances=[0.02, 0.1]).ranking.set_index("observables")
     assert ranking.loc["y1+y2", "best_subset"] == "y1"  # premise: y1 is the narrower set ...
     assert ranking.loc["y2", "information_gain_bits"] > ranking.loc["y1", "information_gain_bits"]  # ... y2 gains more
     for name, row in ranking.iterrows():

@@ -5,6 +5,7 @@ import pytest
 
 from demid.data import parse_number, read_table, validate_material
 from demid.errors import InputError
+from demid.spec import MaterialSpec
 
 from ..helpers import make_ccd_table
 
@@ -58,7 +59,7 @@ def test_failed_run_with_status_column_is_excluded_with_warning(table_path):
     table["status"] = "ok"
     table.loc[table["run"] == 3, ["y", "status"]] = [np.nan, "failed"]
     table.to_csv(table_path, index=False)
-    vt = validate_material("m", _material(table_path))
+    vt = validate_material(MaterialSpec.from_material("m", _material(table_path)))
     assert vt.failed == {"y": [3]}
     assert any("run(s) 3 excluded" in w for w in vt.warnings)
 
@@ -71,7 +72,7 @@ def test_failed_centre_runs_report_lost_pure_error(table_path):
     centre = table[(table["x1"] == 0.5) & (table["x2"] == 6.0)]["run"].tolist()
     table.loc[table["run"].isin(centre[:4]), ["y", "status"]] = [np.nan, "failed"]
     table.to_csv(table_path, index=False)
-    vt = validate_material("m", _material(table_path))
+    vt = validate_material(MaterialSpec.from_material("m", _material(table_path)))
     assert any("pure error is no longer available" in w for w in vt.warnings)
 
 
@@ -79,7 +80,7 @@ def test_wrong_centre_run_count_names_config_key(table_path):
     cfg = _material(table_path)
     cfg["design"]["center_runs"] = 4
     with pytest.raises(InputError, match=r"materials\.m\.design\.center_runs: expected 4 centre run"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 def test_log_scale_factor_design(tmp_path):
@@ -91,7 +92,7 @@ def test_log_scale_factor_design(tmp_path):
     table.to_csv(path, index=False)
     cfg = _material(path)
     cfg["factors"]["x2"] = {"lower": 0.001, "upper": 0.1, "scale": "log"}
-    vt = validate_material("m", cfg)
+    vt = validate_material(MaterialSpec.from_material("m", cfg))
     assert vt.coding.center[1] == pytest.approx(-2.0)
     assert sorted(set(vt.point_types)) == ["axial", "center", "factorial"]
     coded = vt.to_frame()["coded:x2"].to_numpy()  # coded in log10 units: levels 0, +-1, +-alpha

@@ -13,6 +13,7 @@ from demid.config import check_semantics, validate_schema
 from demid.data import validate_material
 from demid.design_generation import FactorRange, generate_sheet, parse_factor
 from demid.errors import InputError
+from demid.spec import MaterialSpec
 
 
 def _run(*args, cwd=None):
@@ -102,7 +103,7 @@ def test_cli_sheet_validates_as_its_design(tmp_path, args):
     fragment["materials"]["study"]["scenarios"] = {"y": {"observables": ["y"], "tolerance": 0.05}}  # and a scenario
     config = validate_schema(fragment)
     check_semantics(config, base_dir=tmp_path)
-    vt = validate_material("study", config["materials"]["study"], base_dir=tmp_path)
+    vt = validate_material(MaterialSpec.from_material("study", config["materials"]["study"]), base_dir=tmp_path)
     counts = vt.summary("study")["point_types"]
     assert counts.get("center", 0) == centres
     if dtype == "ccd":
@@ -126,7 +127,7 @@ def test_a_sheet_with_a_moved_point_does_not_validate(tmp_path):
     fragment["materials"]["study"]["scenarios"] = {"y": {"observables": ["y"], "tolerance": 0.05}}  # and a scenario
     config = validate_schema(fragment)
     with pytest.raises(InputError, match="not a level"):
-        validate_material("study", config["materials"]["study"], base_dir=tmp_path)
+        validate_material(MaterialSpec.from_material("study", config["materials"]["study"]), base_dir=tmp_path)
 
 
 @pytest.mark.parametrize("argv, fragment", [

@@ -17,6 +17,7 @@ import pytest
 from demid.data import validate_material
 from demid.design import box_behnken_points, ccd_points, model_matrix, quadratic_terms, term_name
 from demid.design_inference import infer_design
+from demid.spec import MaterialSpec
 
 
 def _cli(*args):
@@ -169,7 +170,7 @@ def test_a_ccd_with_levels_rounded_to_practical_values_validates_against_its_dec
     cfg = {"data": str(path), "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
            "factors": {"x1": {"lower": 0.146, "upper": 0.854}, "x2": {"lower": 5.0, "upper": 15.0}},
            "responses": {"y": {}}}
-    vt = validate_material("m", cfg)
+    vt = validate_material(MaterialSpec.from_material("m", cfg))
     assert vt.coding.center == pytest.approx((0.5, 10.0)) and vt.coding.unit == pytest.approx((0.25, 3.5))
     assert sorted(vt.point_types.tolist()).count("axial") == 4
 

@@ -10,7 +10,8 @@ import pytest
 
 from demid.criticism import criticize
 from demid.design import box_behnken_points, ccd_points, model_matrix, quadratic_terms
-from demid.surrogate import fit_response, round_off_floor
+from demid.precision import round_off_floor
+from demid.surrogate import fit_response
 
 _DESIGNS = {"ccd2": lambda: ccd_points(2, 1.41421, 3), "ccd3": lambda: ccd_points(3, 1.68179, 3),
             "bbd3": lambda: box_behnken_points(3, 3)}

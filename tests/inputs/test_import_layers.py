@@ -1,4 +1,5 @@
-"""No import circles in the package, counting imports inside functions too.
+"""No import circles in the package, counting imports inside functions too, and an input layer that
+imports nothing above it.
 
 The graph is built here from the source with ``ast``, independently of any other tool: every
 ``import``/``from … import`` statement anywhere in a module (module level, functions, methods) is an
@@ -132,6 +133,94 @@ def test_the_cycle_finder_finds_planted_circles(tmp_path):
     assert circles(edges) == [["demid.a", "demid.b", "demid.sub.c"]]
     (pkg / "b.py").write_text("x = 1\n")
     assert circles(import_edges(modules)) == []
+
+
+#: The input layer and, per module, every demid module it may import (at module level or inside a function).
+#: Reading and checking what a user gives -- the schema, the config checks, table reading, design inference,
+#: the typo check and the MaterialSpec built from them -- is the bottom of the package: none of it imports a
+#: fit, a set, a criticism, a figure or a report.  The last four entries are leaves the layer borrows (the
+#: search box, a CSV precision constant, label typesetting, the simulation command's check); they import
+#: only from the layer.  A new import here is a decision about the layer: add it to this table deliberately.
+INPUT_LAYER = {
+    "demid.errors": set(),
+    "demid.numbers": set(),
+    "demid.precision": set(),
+    "demid.formulas": set(),
+    "demid.design": set(),
+    "demid.blocks": {"demid.design"},
+    "demid.schema": {"demid.errors", "demid.numbers"},
+    "demid.config_text": {"demid.errors", "demid.schema"},
+    "demid.published_values": {"demid.errors", "demid.schema"},
+    "demid.config": {"demid.design", "demid.errors", "demid.plots.labels", "demid.published_values", "demid.schema",
+                     "demid.simulation", "demid.spec", "demid.transcription.printed"},
+    "demid.spec": {"demid.sampling.domain", "demid.schema"},
+    "demid.design_check": {"demid.design", "demid.errors", "demid.precision"},
+    "demid.design_inference": {"demid.design", "demid.errors", "demid.precision"},
+    "demid.data": {"demid.blocks", "demid.design", "demid.design_check", "demid.errors", "demid.numbers",
+                   "demid.transcription.typos"},
+    "demid.transcription": {"demid.transcription.check", "demid.transcription.printed", "demid.transcription.typos"},
+    "demid.transcription.printed": {"demid.design", "demid.errors", "demid.formulas", "demid.published_values"},
+    "demid.transcription.typos": {"demid.design", "demid.errors", "demid.precision", "demid.transcription.printed"},
+    "demid.transcription.engine": {"demid.design", "demid.errors", "demid.formulas", "demid.transcription.printed"},
+    "demid.transcription.check": {"demid.design", "demid.errors", "demid.io", "demid.transcription.engine",
+                                  "demid.transcription.printed", "demid.transcription.typos"},
+    "demid.sampling": {"demid.sampling.domain"},
+    "demid.sampling.domain": {"demid.design"},
+    "demid.io": set(),
+    "demid.plots": set(),
+    "demid.plots.labels": set(),
+    "demid.simulation": {"demid.errors"},
+}
+
+
+def _packages(module: str) -> list[str]:
+    """The packages importing ``module`` runs first (``demid.transcription`` for ``demid.transcription.typos``);
+    the lazy top-level ``demid`` package is left out."""
+    parts = module.split(".")
+    return [".".join(parts[:i]) for i in range(2, len(parts))]
+
+
+def layer_violations(edges: dict[str, set[str]], layer: dict[str, set[str]]) -> list[str]:
+    """Imports of a layer's modules that the layer does not allow, and imports that reach a module (or a
+    package whose ``__init__`` would run) outside the layer."""
+    found = []
+    for module, allowed in layer.items():
+        for target in sorted(edges.get(module, set())):
+            if target not in allowed:
+                found.append(f"{module} imports {target}")
+            found += [f"{module} imports {target}, whose package {package} lies outside the layer"
+                      for package in _packages(target) if package not in layer]
+    return found
+
+
+def test_the_layer_check_fails_when_the_table_reader_imports_the_fit(tmp_path):
+    pkg = tmp_path / "demid"
+    (pkg / "transcription").mkdir(parents=True)
+    for name in ("__init__", "design", "surrogate", "transcription/__init__", "transcription/typos"):
+        (pkg / f"{name}.py").write_text("")
+    (pkg / "data.py").write_text("from .design import x\ndef read():\n    from .transcription.typos import y\n")
+    layer = {"demid.design": set(), "demid.data": {"demid.design", "demid.transcription.typos"},
+             "demid.transcription.typos": set()}
+    modules = package_modules(pkg)
+    assert layer_violations(import_edges(modules), layer) == [
+        "demid.data imports demid.transcription.typos, whose package demid.transcription lies outside the layer"]
+    layer["demid.transcription"] = set()
+    assert layer_violations(import_edges(modules), layer) == []
+    # the table reader climbing up to the fit, inside a function, is refused
+    (pkg / "data.py").write_text("from .design import x\ndef read():\n    from .surrogate import fit\n")
+    assert layer_violations(import_edges(modules), layer) == ["demid.data imports demid.surrogate"]
+    (pkg / "transcription" / "typos.py").write_text("from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n"
+                                                     "    from ..surrogate import Surrogate\n")
+    assert layer_violations(import_edges(modules), layer) == ["demid.data imports demid.surrogate"]
+
+
+def test_the_input_layer_imports_nothing_above_it():
+    edges = import_edges(package_modules())
+    assert set(INPUT_LAYER) <= set(edges), f"not modules of demid: {sorted(set(INPUT_LAYER) - set(edges))}"
+    for module, allowed in INPUT_LAYER.items():
+        assert allowed <= set(INPUT_LAYER), f"{module} may import outside the layer: {allowed - set(INPUT_LAYER)}"
+    found = layer_violations(edges, INPUT_LAYER)
+    assert not found, "the input layer imports above itself: " + "; ".join(found)
 
 
 def test_no_import_circles_in_the_package():

@@ -18,6 +18,7 @@ from demid.config import load_config, validate_schema
 from demid.data import read_table, validate_material
 from demid.design import ccd_points, model_matrix, quadratic_terms
 from demid.errors import InputError
+from demid.spec import MaterialSpec
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -73,7 +74,7 @@ def test_valid_designs_validate_and_are_coded_by_their_geometry(tmp_path, case):
     k = coded.shape[1]
     lower = np.linspace(0.1, 2.0, k)
     cfg, coded_order, unit, centre = _write_design(tmp_path, coded, lower, lower * 7 + 1, design, seed=k)
-    vt = validate_material("m", cfg)
+    vt = validate_material(MaterialSpec.from_material("m", cfg))
     # the coding recovers the design's own coded points (factorial points at +-1, centre at 0)
     got = vt.coding.to_coded(vt.table[list(cfg["factors"])].to_numpy())
     assert np.allclose(got, coded_order[np.argsort(np.arange(len(coded_order)))], atol=1e-4)
@@ -91,7 +92,7 @@ def test_mistyped_factor_cell_is_located_not_absorbed_into_the_coding(tmp_path):
     path.write_text("\n".join(lines) + "\n")
     with pytest.raises(InputError, match=r"run 4, column 'x2': value 3\.3 is not a level of the declared ccd design "
                                          r"\(coded \+0\.252\); nearest valid level: 3 \(coded \+0\)$"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 @pytest.mark.parametrize("k,alpha", [(2, 1.41421), (3, 1.73205), (3, 1.68179), (2, 1.0)])
@@ -113,7 +114,7 @@ def test_ccd_whose_centre_runs_all_failed_is_refused(tmp_path, k, alpha):
                r"cannot be trusted: all 3 centre run\(s\) failed, so its value at the design centre would be "
                r"extrapolated")
     with pytest.raises(InputError, match=r"column 'y': the quadratic model " + message):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 def _tiny(tmp_path, rows, header="run,x1,x2,y,status"):
@@ -271,7 +272,7 @@ def test_readme_example_config_validates_on_the_shipped_table(tmp_path):
     path.write_text(block, encoding="utf-8")
     config = load_config(path, base_dir=REPO)
     for name, mat in config["materials"].items():
-        validate_material(name, mat, base_dir=REPO)
+        validate_material(MaterialSpec.from_material(name, mat), base_dir=REPO)
 
 
 # ----------------------------------------------------------------------------- command line
@@ -361,11 +362,11 @@ def test_a_search_bound_one_slip_from_the_runs_extreme_is_refused(tmp_path, boun
         config = _load(tmp_path, lambda c: c["materials"]["poraver"]["factors"]["e"].update({bound: value}))
         with pytest.raises(InputError, match=rf"materials\.poraver\.factors\.e\.{bound}: {value:g} lies beyond the "
                                              rf"runs.*looks like {0.924264 if bound == 'upper' else 0.075736:g}"):
-            validate_material("poraver", config["materials"]["poraver"], base_dir=REPO)
+            validate_material(MaterialSpec.from_material("poraver", config["materials"]["poraver"]), base_dir=REPO)
     else:  # a bound inside the runs is the runs-outside-bounds error, located at the run
         config = _load(tmp_path, lambda c: c["materials"]["poraver"]["factors"]["e"].update({bound: value}))
         with pytest.raises(InputError, match="outside the declared bounds"):
-            validate_material("poraver", config["materials"]["poraver"], base_dir=REPO)
+            validate_material(MaterialSpec.from_material("poraver", config["materials"]["poraver"]), base_dir=REPO)
 
 
 def test_a_deliberately_wider_search_range_is_accepted_and_warned_about(tmp_path):
@@ -388,7 +389,8 @@ def test_a_deliberately_wider_search_range_is_accepted_and_warned_about(tmp_path
 def test_a_target_far_outside_every_simulated_value_is_said_before_the_run(tmp_path, target, looks_like):
     from demid.data import far_target_warnings
 
-    table = validate_material("poraver", _demo_config()["materials"]["poraver"], base_dir=REPO).table
+    poraver = MaterialSpec.from_material("poraver", _demo_config()["materials"]["poraver"])
+    table = validate_material(poraver, base_dir=REPO).table
     assert far_target_warnings(table, {"aor": 26.4, "shape": 154.75}, "t.csv") == []  # the demo's targets: silent
     (warning,) = far_target_warnings(table, {"aor": target, "shape": 154.75}, "t.csv")
     assert f"t.csv, column 'aor': the target {target:g} lies far outside every simulated value" in warning
@@ -402,7 +404,8 @@ def test_a_target_far_outside_every_simulated_value_is_said_before_the_run(tmp_p
     src = config["materials"]["poraver"]["data"]
     (keyed,) = far_target_warnings(table, {"aor": target}, src, "poraver")
     assert "(config key materials.poraver.responses.aor.target)" in keyed
-    assert keyed in validate_material("poraver", config["materials"]["poraver"], base_dir=REPO).warnings
+    poraver = MaterialSpec.from_material("poraver", config["materials"]["poraver"])
+    assert keyed in validate_material(poraver, base_dir=REPO).warnings
 
 
 @pytest.mark.parametrize("scale", [1e-3, 1e3, 1e-6])
@@ -446,9 +449,10 @@ def test_a_response_with_the_same_value_in_every_run_is_warned_about(tmp_path):
     path = tmp_path / "t.csv"
     path.write_text("\n".join([table[0], *rows]) + "\n", encoding="utf-8")
     mat = {**_demo_config()["materials"]["poraver"], "data": str(path)}
-    warnings = validate_material("poraver", mat, base_dir=REPO).warnings
+    warnings = validate_material(MaterialSpec.from_material("poraver", mat), base_dir=REPO).warnings
     assert [w for w in warnings if "column 'shape': the same value (150) in every run" in w]
-    assert not [w for w in validate_material("poraver", _demo_config()["materials"]["poraver"], base_dir=REPO).warnings
+    poraver = MaterialSpec.from_material("poraver", _demo_config()["materials"]["poraver"])
+    assert not [w for w in validate_material(poraver, base_dir=REPO).warnings
                 if "the same value" in w]
 
 
@@ -481,7 +485,7 @@ def test_a_factor_cell_typed_as_another_runs_level_is_located(tmp_path, design_n
     with pytest.raises(InputError, match=rf"run {row + 1}, column 'x{j + 1}': the point \(.*\) is not an? .* point of "
                                          rf"the declared {design['type']} design; with x{j + 1} = {float(truth):g} it "
                                          r"would be the centre run the design is short of"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 def test_a_level_value_that_differs_from_the_other_runs_at_its_level_is_warned_about(tmp_path):
@@ -489,7 +493,7 @@ def test_a_level_value_that_differs_from_the_other_runs_at_its_level_is_warned_a
     typo is likely; a table whose levels are printed consistently gets no such warning."""
     cfg, coded_order, unit, centre = _write_design(tmp_path, ccd_points(2, 1.41421, 3), [0.1, 1.0], [0.9, 5.0],
                                                    {"type": "ccd", "alpha": 1.41421, "center_runs": 3})
-    assert not [w for w in validate_material("m", cfg).warnings if "a typo?" in w]
+    assert not [w for w in validate_material(MaterialSpec.from_material("m", cfg)).warnings if "a typo?" in w]
     row = int(np.flatnonzero(np.all(coded_order == 0, axis=1))[0])
     path = Path(cfg["data"])
     lines = path.read_text().splitlines()
@@ -498,7 +502,7 @@ def test_a_level_value_that_differs_from_the_other_runs_at_its_level_is_warned_a
     cells[1] = f"{float(cells[1]) + 0.0003:.6f}"
     lines[row + 1] = ",".join(cells)
     path.write_text("\n".join(lines) + "\n")
-    (warning,) = [w for w in validate_material("m", cfg).warnings if "a typo?" in w]
+    (warning,) = [w for w in validate_material(MaterialSpec.from_material("m", cfg)).warnings if "a typo?" in w]
     # the centre level of x1: 3 centre runs and the 2 axial runs of x2, 4 of them unchanged
     assert f"run {row + 1}, column 'x1': {float(cells[1]):.10g}, where the other 4 runs at this level read " \
            f"{float(usual):.10g}" in warning
@@ -566,8 +570,9 @@ def test_a_wrong_design_alpha_names_the_key_and_the_alpha_the_runs_show(tmp_path
     with pytest.raises(InputError, match=rf"config key materials\.m\.design\.alpha: the runs form a CCD with "
                                          rf"alpha = {table_alpha:.6g} .*not the declared {declared:g}; set "
                                          rf"design\.alpha: {table_alpha:.6g}$"):
-        validate_material("m", cfg)
-    validate_material("m", {**cfg, "design": {**cfg["design"], "alpha": table_alpha}})  # the hint validates
+        validate_material(MaterialSpec.from_material("m", cfg))
+    hinted = {**cfg, "design": {**cfg["design"], "alpha": table_alpha}}
+    validate_material(MaterialSpec.from_material("m", hinted))  # the hint validates
 
 
 def test_one_axial_cell_off_its_level_still_names_the_cell_not_alpha(tmp_path):
@@ -578,7 +583,7 @@ def test_one_axial_cell_off_its_level_still_names_the_cell_not_alpha(tmp_path):
     assert text.count("0.900000") == 2  # the two +alpha cells, one per factor
     path.write_text(text.replace("0.900000", "0.850000", 1))  # inside the bounds, off every level
     with pytest.raises(InputError, match=r"run \d+, column 'x\d': value 0\.85 is not a level.*\(coded \+1\.414\)$"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 @pytest.mark.parametrize("command", ["fit", "criticize"])
@@ -617,7 +622,7 @@ def test_a_two_level_factorial_with_centre_runs_is_told_why_its_squares_cannot_b
     with pytest.raises(InputError, match=rf"column 'y': the quadratic model cannot be estimated \(rank "
                                          rf"{(k + 1) * (k + 2) // 2 - k + 1} of {(k + 1) * (k + 2) // 2} terms\): the "
                                          rf"usable runs cannot tell {re.escape(squares)} apart .*axial runs \(a CCD\)"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 def test_the_readme_factorial_line_validates_a_three_level_factorial(tmp_path):
@@ -625,7 +630,7 @@ def test_the_readme_factorial_line_validates_a_three_level_factorial(tmp_path):
     design = yaml.safe_load(line.split("#")[0])["design"]
     coded = _full_factorial(2, [-1, 0, 1])
     cfg, _, _, _ = _write_design(tmp_path, coded, [0.1, 0.1], [0.9, 0.9], design)
-    validate_material("m", cfg)
+    validate_material(MaterialSpec.from_material("m", cfg))
 
 
 @pytest.mark.parametrize("content, match", [
@@ -659,17 +664,17 @@ def test_a_wrong_alpha_on_a_table_printed_to_four_decimals_gets_the_rotatable_va
                             for c in lines[1:]]
     path.write_text("\n".join(rounded) + "\n")
     with pytest.raises(InputError, match=r"alpha = 1\.41421 .*not the declared 1\.682; set design\.alpha: 1\.41421$"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 def test_a_wrong_alpha_is_named_before_a_wrong_centre_run_count(tmp_path):
     cfg, _, _, _ = _write_design(tmp_path, ccd_points(2, 1.41421, 3), [0.1, 0.1], [0.9, 0.9],
                                  {"type": "ccd", "alpha": 1.682, "center_runs": 5})
     with pytest.raises(InputError, match=r"design\.alpha: the runs form a CCD with alpha = 1\.41421"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
     cfg["design"]["alpha"] = 1.41421
     with pytest.raises(InputError, match=r"design\.center_runs: expected 5 centre run\(s\) .* found 3"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 @pytest.mark.parametrize("k, declared", [(2, 1.41421), (3, 1.68179), (3, 1.0)])
@@ -680,7 +685,7 @@ def test_a_two_level_factorial_declared_a_ccd_is_told_it_has_no_axial_runs(tmp_p
                                  {"type": "ccd", "alpha": declared, "center_runs": 4})
     with pytest.raises(InputError, match=rf"config key materials\.m\.design: the table has no axial runs: its runs "
                                          rf"are a two-level factorial with 4 centre run\(s\).*3\^{k} factorial"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 @pytest.mark.parametrize("k, alpha", [(2, 1.41421), (3, 1.68179)])
@@ -696,13 +701,13 @@ def test_a_log_spaced_factor_declared_linear_is_told_its_scale(tmp_path, k, alph
     cfg["factors"]["x1"] = {"lower": 0.001, "upper": 0.1}
     with pytest.raises(InputError, match=r"config key materials\.m\.factors\.x1\.scale: the levels of x1 are evenly "
                                          r"spaced on a log scale, not the declared linear one; set scale: log$"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
     cfg["factors"]["x1"]["scale"] = "log"
-    validate_material("m", cfg)  # the hint validates
+    validate_material(MaterialSpec.from_material("m", cfg))  # the hint validates
     cfg["factors"]["x2"]["scale"] = "log"  # a linear factor declared log
     with pytest.raises(InputError, match=r"factors\.x2\.scale: the levels of x2 are evenly spaced on a linear scale, "
                                          r"not the declared log one; remove scale: log$"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 @pytest.mark.parametrize("k", [3, 4])
@@ -713,8 +718,9 @@ def test_a_box_behnken_table_declared_factorial_is_named(tmp_path, k):
     with pytest.raises(InputError, match=rf"config key materials\.m\.design\.type: the runs are the edge midpoints "
                                          rf"of a Box-Behnken design .*not the 3\^{k} factorial; set design type: "
                                          rf"box_behnken$"):
-        validate_material("m", cfg)
-    validate_material("m", {**cfg, "design": {"type": "box_behnken", "center_runs": 3}})  # the hint validates
+        validate_material(MaterialSpec.from_material("m", cfg))
+    hinted = {**cfg, "design": {"type": "box_behnken", "center_runs": 3}}
+    validate_material(MaterialSpec.from_material("m", hinted))  # the hint validates
 
 
 def test_a_three_level_factorial_with_a_point_left_out_names_the_missing_point(tmp_path):
@@ -723,7 +729,7 @@ def test_a_three_level_factorial_with_a_point_left_out_names_the_missing_point(t
                                  {"type": "factorial", "center_runs": 1})
     with pytest.raises(InputError, match=r"config key materials\.m\.design: a 3\^2 factorial has 8 non-centre points, "
                                          r"the table has 7; missing 1, e\.g\. the point \(x1=\+1, x2=-1\)"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 @pytest.mark.parametrize("k, table_alpha, declared", [(2, 1.41421, 1.682), (3, 1.68179, 1.41421), (3, 1.68179, 1.0)])
@@ -738,8 +744,9 @@ def test_a_wrong_alpha_on_levels_printed_to_two_decimals_gets_the_design_value(t
                                                      + [c.split(",")[-1]]) for c in lines[1:]]) + "\n")
     with pytest.raises(InputError, match=rf"alpha = {table_alpha:.6g} .*not the declared {declared:g}; set "
                                          rf"design\.alpha: {table_alpha:.6g}$"):
-        validate_material("m", cfg)
-    validate_material("m", {**cfg, "design": {**cfg["design"], "alpha": table_alpha}})  # the hint validates
+        validate_material(MaterialSpec.from_material("m", cfg))
+    hinted = {**cfg, "design": {**cfg["design"], "alpha": table_alpha}}
+    validate_material(MaterialSpec.from_material("m", hinted))  # the hint validates
 
 
 @pytest.mark.parametrize("where, value", [
@@ -839,7 +846,7 @@ def test_a_factor_in_tiny_or_huge_units_validates_like_the_same_factor_in_unit_u
     path.write_text("\n".join([lines[0]] + [",".join([c[0], f"{float(c[1]) * scale:.6e}", *c[2:]])
                                             for c in (ln.split(",") for ln in lines[1:])]) + "\n")
     cfg["factors"]["x1"] = {"lower": 0.1 * scale, "upper": 0.9 * scale}
-    vt = validate_material("m", cfg)
+    vt = validate_material(MaterialSpec.from_material("m", cfg))
     assert vt.summary("m")["point_types"] == {"axial": 4, "center": 3, "factorial": 4}
 
 
@@ -850,8 +857,8 @@ def test_a_ccd_with_replicated_axial_points_is_pointed_to_custom(tmp_path):
                                  {"type": "ccd", "alpha": 1.41421, "center_runs": 3})
     with pytest.raises(InputError, match=r"design: the table has 8 axial runs where a 2-factor CCD has 4: replicated "
                                          r"points\? .*declare design type custom"):
-        validate_material("m", cfg)
-    validate_material("m", {**cfg, "design": {"type": "custom"}})
+        validate_material(MaterialSpec.from_material("m", cfg))
+    validate_material(MaterialSpec.from_material("m", {**cfg, "design": {"type": "custom"}}))
 
 
 def test_a_run_number_too_large_to_be_exact_is_refused(tmp_path):
@@ -905,7 +912,7 @@ def test_a_factor_cell_that_makes_a_run_another_runs_point_is_located(tmp_path, 
         alpha = 1.0 if design_name.startswith("face") else round((2 ** k) ** 0.25, 5)
         coded, design = ccd_points(k, alpha, 3), {"type": "ccd", "alpha": alpha, "center_runs": 3}
     cfg, coded_order, unit, centre = _write_design(tmp_path, coded, [0.1] * k, [0.9] * k, design, seed=seed)
-    validate_material("m", cfg)
+    validate_material(MaterialSpec.from_material("m", cfg))
     rng = np.random.default_rng(seed)
     slips = _duplicating_slips(coded_order)
     row, j, level = slips[int(rng.integers(len(slips)))]
@@ -923,7 +930,7 @@ def test_a_factor_cell_that_makes_a_run_another_runs_point_is_located(tmp_path, 
                                          rf"point \(.*\), which a .* runs once, and the design's point \(.*\) has no "
                                          rf"run: in one of them x{j + 1} is likely (\S+), typed as another "
                                          r"level$") as raised:
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
     assert float(re.search(r"is likely (\S+),", str(raised.value)).group(1)) == pytest.approx(truth, rel=1e-4)
 
 
@@ -943,13 +950,13 @@ def test_a_design_point_left_out_or_run_twice_is_named(tmp_path, design_name):
     path.write_text("\n".join(lines[:row + 1] + lines[row + 2:]) + "\n")
     with pytest.raises(InputError, match=rf"t\.csv: the .*'s point \(x1 .*\) has no run \({len(coded) - 1} runs in the table\); "
                                          r"keep a failed run in the table with status failed"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
     cells = lines[row + 1].split(",")
     path.write_text("\n".join(lines + [",".join(["99"] + cells[1:])]) + "\n")
     with pytest.raises(InputError, match=rf"t\.csv, runs {row + 1} and 99: both are the point \(.*\), which a .* runs "
                                          r"once; a replicated point makes it another design: declare design type "
                                          r"custom"):
-        validate_material("m", cfg)
+        validate_material(MaterialSpec.from_material("m", cfg))
 
 
 @pytest.mark.parametrize("seed", [0, 1])

@@ -90,6 +90,7 @@ def test_report_text_speaks_in_configured_labels():
     from demid.spec import MaterialSpec
 
     spec = MaterialSpec.from_material("m", {
+        "design": {"type": "ccd"},
         "factors": {"mu_s": {"lower": 0.1, "upper": 0.9, "label": "μ_s"}, "e": {"lower": 0.2, "upper": 0.8}},
         "responses": {"angle_of_repose": {"target": 24, "label": "θ"}},
         "scenarios": {"a": {"observables": ["angle_of_repose"], "tolerance": 0.04}}})

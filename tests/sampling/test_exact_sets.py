@@ -13,7 +13,9 @@ import pytest
 from scipy import integrate
 
 from demid.design import quadratic_terms
+from demid.sampling.domain import Domain
 from demid.sampling.exact import Polynomial, exact_set, exact_set_for_surrogates, polynomial_from_surrogate
+from demid.spec import MaterialSpec
 from demid.surrogate import Surrogate
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -349,8 +351,8 @@ def test_surrogate_adapter_with_a_log_factor():
     poly = polynomial_from_surrogate(sur)
     z = np.array([[0.3, -0.2], [-0.7, 0.9]])
     np.testing.assert_allclose(poly(z), sur.predict(np.column_stack([10 ** z[:, 0], z[:, 1]])))
-    factors = {"x": {"lower": 0.1, "upper": 10, "scale": "log"}, "w": {"lower": -1, "upper": 1}}
-    es = exact_set_for_surrogates({"y": sur}, ["y"], {"y": 0.5}, 0.2, factors, reference={"x": 1.0, "w": 0.0})
+    domain = Domain(("x", "w"), (0.1, -1.0), (10.0, 1.0), (True, False))
+    es = exact_set_for_surrogates({"y": sur}, ["y"], {"y": 0.5}, 0.2, domain, reference={"x": 1.0, "w": 0.0})
     assert es.fraction == pytest.approx(np.pi * 0.2 / 4, rel=1e-9)
     r2 = np.sqrt(0.6)
     np.testing.assert_allclose(es.spans[["lower", "upper"]].to_numpy(), [[10 ** -r2, 10 ** r2], [-r2, r2]],
@@ -378,24 +380,24 @@ def test_bad_arguments():
 def demo():
     from demid.config import load_config
     from demid.data import validate_material
-    from demid.spec import MaterialSpec
     from demid.surrogate import fit_material
 
     config = load_config(ROOT / "config.yaml", base_dir=ROOT)
 
     def material(name):
         cfg = config["materials"][name]
-        table = validate_material(name, cfg, base_dir=ROOT).table
-        surrogates = {f.response: f.surrogate() for f in fit_material(table, cfg)}
-        return cfg, surrogates, MaterialSpec.from_material(name, cfg).targets
+        spec = MaterialSpec.from_config(name, config)
+        table = validate_material(spec, base_dir=ROOT).table
+        surrogates = {f.response: f.surrogate() for f in fit_material(table, spec)}
+        return cfg, surrogates, spec.targets, spec.domain
 
     return material
 
 
 def test_demo_mortar_full_sequence(demo):
-    cfg, surrogates, targets = demo("mortar")
+    cfg, surrogates, targets, domain = demo("mortar")
     scen = cfg["scenarios"]["full_sequence"]
-    es = exact_set_for_surrogates(surrogates, scen["observables"], targets, scen["tolerance"], cfg["factors"],
+    es = exact_set_for_surrogates(surrogates, scen["observables"], targets, scen["tolerance"], domain,
                                   reference=cfg["reference_point"])
     lo = np.array([cfg["factors"][f]["lower"] for f in ("mu_r", "gamma")])
     hi = np.array([cfg["factors"][f]["upper"] for f in ("mu_r", "gamma")])
@@ -421,9 +423,9 @@ def test_demo_mortar_full_sequence(demo):
 
 
 def test_demo_paste_diameter_only(demo):
-    cfg, surrogates, targets = demo("paste")
+    cfg, surrogates, targets, domain = demo("paste")
     scen = cfg["scenarios"]["diameter_only"]
-    es = exact_set_for_surrogates(surrogates, scen["observables"], targets, scen["tolerance"], cfg["factors"])
+    es = exact_set_for_surrogates(surrogates, scen["observables"], targets, scen["tolerance"], domain)
     # reference: lines along mu_s on a 300 x 300 midpoint grid of (mu_r, gamma), line intervals from the
     # quadratic formula (vectorised, written here), at two resolutions to bound the midpoint rule's error
     names = list(cfg["factors"])

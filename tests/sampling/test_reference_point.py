@@ -5,6 +5,7 @@ import pytest
 
 from demid.criticism import reference_point_position
 from demid.design import quadratic_terms
+from demid.spec import MaterialSpec
 from demid.surrogate import Surrogate
 
 
@@ -12,9 +13,10 @@ def _disk_material(reference):
     # y = a^2 + b^2 on [-1, 1]^2, target 0.25 at 20 %: annulus 0.2 <= r^2 <= 0.3
     coef = np.array([0, 0, 0, 0, 1.0, 1.0])
     sur = Surrogate("y", ["a", "b"], quadratic_terms(2), coef, np.zeros((6, 6)), 0.0, 7)
-    cfg = {"factors": {"a": {"lower": -1, "upper": 1}, "b": {"lower": -1, "upper": 1}},
-           "responses": {"y": {"target": 0.25}}, "reference_point": reference,
-           "scenarios": {"ring": {"observables": ["y"], "tolerance": 0.2}}}
+    cfg = MaterialSpec.from_material("m", {
+        "design": {"type": "ccd"}, "factors": {"a": {"lower": -1, "upper": 1}, "b": {"lower": -1, "upper": 1}},
+        "responses": {"y": {"target": 0.25}}, "reference_point": reference,
+        "scenarios": {"ring": {"observables": ["y"], "tolerance": 0.2}}})
     return {"y": sur}, cfg
 
 

@@ -3,15 +3,16 @@
 import pytest
 
 from demid.data import read_printed, validate_material
+from demid.spec import MaterialSpec
 from demid.transcription import likely_typos
 
 from ..helpers import make_ccd_table
 
 
 def _cfg(path):
-    return {"data": str(path), "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
-            "factors": {"x1": {"lower": 0.1, "upper": 0.9}, "x2": {"lower": 1, "upper": 11}},
-            "responses": {"y": {}}}
+    return MaterialSpec.from_material("m", {
+        "data": str(path), "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+        "factors": {"x1": {"lower": 0.1, "upper": 0.9}, "x2": {"lower": 1, "upper": 11}}, "responses": {"y": {}}})
 
 
 @pytest.mark.parametrize("seed", range(5))
@@ -21,7 +22,7 @@ def test_planted_slip_is_flagged_and_clean_table_is_silent(tmp_path, seed, slip)
                            [0.1, 1], [0.9, 11], noise=0.3, seed=seed, decimals=2)
     path = tmp_path / "t.csv"
     table.to_csv(path, index=False)
-    vt = validate_material("m", _cfg(path))
+    vt = validate_material(_cfg(path))
     assert likely_typos(vt, _cfg(path), read_printed(path, vt.table)) == []
 
     true_value = table.loc[table["run"] == 5, "y"].iloc[0]
@@ -37,7 +38,7 @@ def test_planted_slip_is_flagged_and_clean_table_is_silent(tmp_path, seed, slip)
     lines = path.read_text().splitlines()
     lines = [ln if not ln.startswith("5,") else ",".join(ln.split(",")[:-1] + [typo]) for ln in lines]
     path.write_text("\n".join(lines) + "\n")
-    vt = validate_material("m", _cfg(path))
+    vt = validate_material(_cfg(path))
     flags = likely_typos(vt, _cfg(path), read_printed(path, vt.table))
     assert [(f["run"], f["column"]) for f in flags] == [(5, "y")]
     assert flags[0]["suggested"] == pytest.approx(true_value)
@@ -90,6 +91,6 @@ def test_a_shifted_point_is_not_read_as_a_swap_with_a_leading_zero(tmp_path, see
     lines = table.to_csv(index=False).splitlines()
     lines = [ln if not ln.startswith("5,") else ",".join(ln.split(",")[:-1] + ["500.3"]) for ln in lines]
     path.write_text("\n".join(lines) + "\n")
-    vt = validate_material("m", _cfg(path))
+    vt = validate_material(_cfg(path))
     flags = likely_typos(vt, _cfg(path), read_printed(path, vt.table))
     assert [(f["run"], f["kind"], f["suggested"]) for f in flags] == [(5, "decimal_shift", 50.03)]

@@ -10,8 +10,10 @@ import numpy as np
 import pytest
 
 from demid.config import load_config
-from demid.data import refuse_likely_typos, validate_material
+from demid.data import read_printed, validate_material
 from demid.errors import InputError
+from demid.spec import MaterialSpec
+from demid.transcription.typos import refuse_likely_typos
 
 from ..helpers import make_ccd_table
 
@@ -73,8 +75,9 @@ def _shift(text, rng):
 
 def _validate(tmp_path):
     config = load_config(tmp_path / "study.yaml", base_dir=tmp_path)
-    mat = config["materials"]["m"]
-    return refuse_likely_typos(validate_material("m", mat, base_dir=tmp_path), "m", mat, base_dir=tmp_path)
+    spec = MaterialSpec.from_config("m", config)
+    validated = validate_material(spec, base_dir=tmp_path)
+    return refuse_likely_typos(validated, spec, read_printed(tmp_path / spec.data, validated.table))
 
 
 @pytest.mark.parametrize("seed", [11, 12, 13, 14, 15, 16])
@@ -138,8 +141,10 @@ def test_cli_validate_stops_on_typo_from_another_folder(tmp_path):
 
 def test_demo_tables_do_not_trip_the_typo_stop():
     config = load_config("config.yaml")
-    for name, mat in config["materials"].items():
-        assert refuse_likely_typos(validate_material(name, mat), name, mat) == []
+    for name in config["materials"]:
+        spec = MaterialSpec.from_config(name, config)
+        validated = validate_material(spec)
+        assert refuse_likely_typos(validated, spec, read_printed(spec.data, validated.table)) == []
 
 
 @pytest.mark.parametrize("seed", [21, 22, 23, 24, 25, 26])

@@ -11,6 +11,7 @@ from scipy import stats
 from demid import uncertainty as unc
 from demid.admissibility import Domain, admissible_set
 from demid.design import ccd_points, model_matrix, quadratic_terms, rotatable_alpha
+from demid.spec import MaterialSpec
 from demid.surrogate import Surrogate, fit_response
 
 SQUARE = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0))
@@ -363,8 +364,9 @@ def test_qmc_posterior_above_three_factors_matches_truncated_normal():
 
 
 # --------------------------------------------------------------------------- one material end to end
-def _material_cfg(factors: dict, responses: dict, scenarios: dict) -> dict:
-    return {"factors": factors, "responses": responses, "scenarios": scenarios}
+def _material_cfg(factors: dict, responses: dict, scenarios: dict) -> MaterialSpec:
+    return MaterialSpec.from_material("m", {"design": {"type": "ccd"}, "factors": factors, "responses": responses,
+                                            "scenarios": scenarios})
 
 
 def test_analyse_material_two_factors(mortar_like):

@@ -29,10 +29,13 @@ try:
     check_semantics(config, source=CONFIG_SOURCE, labels=False)  # labels: in each material's job
     check_next_runs(config, source=CONFIG_SOURCE)
     check_simulated(config, source=CONFIG_SOURCE)
+    # One MaterialSpec per material, built once from the validated config; rules pass it as their
+    # only per-material parameter.
+    SPECS = {name: MaterialSpec.from_config(name, config) for name in config["materials"]}
     for _name, _material in config["materials"].items():
         if _material.get("simulation"):  # its tables do not exist yet: each wave validates its own
             continue
-        check_table_columns(_name, _material)
+        check_table_columns(SPECS[_name])
 except InputError as err:
     sys.exit(f"demid: error: {err}")
 
@@ -64,11 +67,6 @@ SUMMARY_TABLES = [f"{RESULTS}/tables/{stem}.csv" for stem in SUMMARY_TABLE_FILES
 
 wildcard_constraints:
     material="|".join(MATERIALS),
-
-
-# One MaterialSpec per material, built once from the validated config; rules pass it as their
-# only per-material parameter.
-SPECS = {name: MaterialSpec.from_config(name, config) for name in MATERIALS}
 
 
 def material_spec(wildcards):

@@ -83,9 +83,9 @@ def wave_outputs(pareto=False):
 def last_wave(material):
     """The material's last wave: waves.max, or the first whose advice says stop."""
     wave = 1
-    while wave < waves_max(config["materials"][material]):
+    while wave < waves_max(SPECS[material]):
         decision = checkpoints.propose_wave.get(material=material, wave=str(wave)).output.decision
-        if stops_early(config["materials"][material]) and json.loads(Path(decision).read_text(encoding="utf-8"))["stop"]:
+        if stops_early(SPECS[material]) and json.loads(Path(decision).read_text(encoding="utf-8"))["stop"]:
             break
         wave += 1
     return wave
