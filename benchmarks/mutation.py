@@ -21,6 +21,7 @@ by hand, not in CI (the default sample took ~35 min on a loaded two-core machine
     python benchmarks/mutation.py --list --show    # ... and print every mutant id
     python benchmarks/mutation.py --module demid/io.py --all
     python benchmarks/mutation.py --sample 200 --seed 1
+    python benchmarks/mutation.py --module demid/sampling/exact.py --per-module 40 --seed 14
 
 The module -> tests table below is by file path: when a module moves, update its
 row (path, functions, tests) and nothing else.
@@ -579,8 +580,15 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--sample", type=int, default=60, help="approximate sample size over all modules")
     ap.add_argument("--seed", type=int, default=14)
+    ap.add_argument("--per-module", type=int, metavar="N",
+                    help="instead of a share of all mutants, the N mutants of each module with the lowest "
+                         "hash draw (a module is scored in minutes; the same N mutants before and after a "
+                         "change to the tests)")
     ap.add_argument("--all", action="store_true", help="every mutant instead of a sample")
     ap.add_argument("--module", action="append", help="only this module path (repeatable)")
+    ap.add_argument("--ids", type=Path, metavar="FILE",
+                    help="only the mutants whose id is a line of FILE (e.g. the survivors of an earlier run, "
+                         "re-run after tests were added: a mutant once killed stays killed)")
     ap.add_argument("--list", action="store_true", help="count mutants and exit")
     ap.add_argument("--show", action="store_true", help="print every mutant id with --list")
     args = ap.parse_args(argv)
@@ -607,6 +615,14 @@ def main(argv=None) -> int:
     for m, muts in per_module.items():
         # The same share of every module (at least 10 mutants); a mutant is drawn by a hash of its id,
         # so an edit elsewhere in a file does not change which of its mutants are drawn.
+        if args.ids:
+            wanted = {line.strip() for line in args.ids.read_text(encoding="utf-8").splitlines()}
+            chosen[m] = [mu for mu in muts if mu.id in wanted]
+            continue
+        if args.per_module and not args.all:
+            drawn = sorted(muts, key=lambda mu: _draw(mu.id, args.seed))[:args.per_module]
+            chosen[m] = sorted(drawn, key=lambda mu: (mu.line, mu.id))
+            continue
         share = 1.0 if args.all else max(10 / max(len(muts), 1), args.sample / max(everything, 1))
         chosen[m] = [mu for mu in muts if _draw(mu.id, args.seed) < share]
 
@@ -621,6 +637,8 @@ def main(argv=None) -> int:
     results: list[tuple[Mutant, str]] = []
     try:
         for m, muts in chosen.items():
+            if not muts:
+                continue
             tests = existing(TABLE[m]["tests"], tree)
             status, base_time = run_tests(tree, tests, timeout=1800)
             if status != "survived":
@@ -659,7 +677,8 @@ def main(argv=None) -> int:
     k, sv = tot["killed"], tot["survived"]
     print(f"{'total':28s} {tot['run']:5d} {k:7d} {sv:9d} {tot['equivalent']:6d} "
           f"{100.0 * k / max(k + sv, 1):6.1f}%")
-    scope = "all mutants" if args.all else f"{tot['run']} of {total} mutants, seed {args.seed}"
+    scope = "all mutants" if args.all else f"{tot['run']} of {total} mutants, seed {args.seed}" + (
+        f", {args.per_module} per module" if args.per_module else "")
     print(f"\nmutation score: {100.0 * k / max(k + sv, 1):.1f} % ({k} killed of {k + sv}; "
           f"{tot['equivalent']} equivalent excluded; {scope})")
     survivors = [mu for mu, s in results if s == "survived"]
