@@ -192,6 +192,18 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/inputs/test_design.py", "tests/inputs/test_data.py", "tests/test_core_contracts.py",
                   "tests/inputs/test_stranger_tables.py::test_valid_designs_validate_and_are_coded_by_their_geometry"],
     },
+    "demid/tolerance.py": {
+        "functions": None,
+        "tests": ["tests/test_tolerance.py"],
+    },
+    "demid/formulas.py": {
+        "functions": None,
+        "tests": ["tests/test_formulas.py"],
+    },
+    "demid/precision.py": {
+        "functions": None,
+        "tests": ["tests/test_precision.py", "tests/inputs/test_factor_round_off.py"],
+    },
     "demid/io.py": {
         "functions": None,
         "tests": ["tests/test_core_contracts.py", "-kjson or png or parquet or csv or atomic"],
