@@ -265,6 +265,10 @@ EQUIVALENT: dict[str, str] = {
     "demid/tolerance.py::rescaled_surrogate::0 => -1#0": "a polynomial has one intercept term: first and last agree",
     "demid/tolerance.py::rescaled_surrogate::float(target) => target#0":
         "target is a number: its product with a float is the same float",
+    "demid/tolerance.py::rescaled_surrogate::float(surrogate.resid_var) => surrogate.resid_var#0":
+        "resid_var is a float already (a Surrogate field)",
+    "demid/tolerance.py::scenario_bands::float(response.discrepancy or 0.0) => response.discrepancy or 0.0#0":
+        "the schema reads discrepancy as a number: c * delta and delta == 0.0 are the same for an int",
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",

@@ -79,6 +79,9 @@ def test_scenario_surrogates_and_grid_rescale_only_the_observables_with_their_ow
     np.testing.assert_allclose(moved["y"], 4.0 + c * (grid["y"] - 4.0))
     np.testing.assert_allclose(moved["z"], grid["z"])
     np.testing.assert_allclose(grid["y"], surrogates["y"].predict(x))  # the caller's frame is not modified
+    # a grid of other responses only (one observable set's columns) is left as it is
+    only_z = grid[["z"]]
+    np.testing.assert_allclose(scenario_grid(only_z, spec, eps)["z"], grid["z"])
     plain = _spec(_response("y", 4.0), _response("z", 2.0))
     assert scenario_surrogates(surrogates, plain, eps) is surrogates
     assert scenario_grid(grid, plain, eps) is grid
