@@ -96,3 +96,22 @@ def test_measurement_bands_scale_with_the_own_band():
     assert bands["y"].sigma == pytest.approx(c * 0.2) and bands["y"].discrepancy == pytest.approx(c * 0.3)
     assert bands["z"].sigma == pytest.approx(0.05 * 2.0) and bands["z"].discrepancy == 0.0
     assert "w" not in bands
+
+
+def test_a_discrepancy_without_a_sigma_still_gets_its_band():
+    spec = _spec(_response("y", 4.0, tolerance_abs=0.5, discrepancy=0.3))
+    band = scenario_bands(spec, ["y"], 0.1)["y"]
+    assert band.sigma is None and band.discrepancy == pytest.approx(0.1 * 4.0 / 0.5 * 0.3)
+
+
+def test_plausible_basis_names_each_source_of_the_band():
+    from demid.tolerance import plausible_basis
+
+    plain = _spec(_response("y", 4.0))
+    assert plausible_basis(plain, "y").startswith("no sigma configured")
+    rich = _spec(SimpleNamespace(**vars(_response("y", 4.0, tolerance_abs=0.5, sigma=0.2, discrepancy=0.3)),
+                                 unit="mm"))
+    text = plausible_basis(rich, "y")
+    assert text == "config sigma = 0.2; own tolerance ±0.5 mm; discrepancy δ = 0.3"
+    relative = _spec(SimpleNamespace(**vars(_response("y", 4.0, tolerance=0.05)), unit="-"))
+    assert plausible_basis(relative, "y").endswith("; own tolerance 0.05")
