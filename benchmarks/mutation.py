@@ -269,6 +269,8 @@ EQUIVALENT: dict[str, str] = {
         "resid_var is a float already (a Surrogate field)",
     "demid/tolerance.py::scenario_bands::float(response.discrepancy or 0.0) => response.discrepancy or 0.0#0":
         "the schema reads discrepancy as a number: c * delta and delta == 0.0 are the same for an int",
+    "demid/formulas.py::f_tail::0 => -1#1": "scipy's fdtrc returns NaN for a degree of freedom <= 0 as well",
+    "demid/formulas.py::f_tail::0 => -1#2": "scipy's fdtrc returns NaN for a degree of freedom <= 0 as well",
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",

@@ -54,6 +54,10 @@ def test_exact_only_for_polynomials_in_at_most_three_factors_on_the_domains_scal
     assert not uses_exact(lin, ("y",), log_domain)  # the surrogate is linear in a, the domain logarithmic
     assert uses_exact({"y": _linear("y", three, [1, 0, 0], log_factors=("a",))}, ("y",), log_domain)
     assert not uses_exact({"y": _linear("y", ("b", "a", "c"), [1, 0, 0])}, ("y",), _unit_domain(three))
+    # every observable must qualify, not one of them
+    mixed = {"y": _linear("y", three, [1, 0, 0], log_factors=("a",)), "z": _linear("z", three, [0, 1, 0])}
+    assert uses_exact(mixed, ("y",), log_domain) and not uses_exact(mixed, ("y", "z"), log_domain)
+    assert not uses_exact(mixed, ("z", "y"), log_domain)
 
 
 def test_four_factors_fall_back_to_a_sample_with_the_same_fraction():
