@@ -77,3 +77,24 @@ def test_an_empty_set_keeps_the_grids_closest_approach_when_it_is_closer():
     assert aset.fraction == 0 and aset.fraction_error == 0
     assert aset.best_error == pytest.approx(1 / 3, abs=1e-9)
     np.testing.assert_allclose(aset.best_point, [1.0, 1.0], atol=1e-9)
+
+
+@pytest.mark.parametrize("reference, distance, nearest", [
+    ({"a": 0.2, "b": 0.5}, 0.25, [0.45, 0.5]),
+    ({"a": 0.9, "b": 0.1}, float(np.hypot(0.35, 0.35)), [0.55, 0.45]),
+    ({"a": 0.5, "b": 0.52}, 0.0, [0.5, 0.52]),
+])
+def test_reference_distance_to_the_box_and_its_nearest_point(reference, distance, nearest):
+    """The reference point's distance to the square [0.45, 0.55]^2 (fractions of the unit search range)."""
+    factors = ("a", "b")
+    surrogates = {f"y{i}": _linear(f"y{i}", factors, np.eye(2)[i]) for i in range(2)}
+    aset = evaluate_set(surrogates, _unit_domain(factors), ("y0", "y1"), {"y0": 0.5, "y1": 0.5}, 0.1, 11,
+                        reference=reference)
+    assert aset.exact.reference_distance == pytest.approx(distance, abs=1e-7)
+    np.testing.assert_allclose(aset.exact.nearest_point, nearest, atol=1e-7)
+    # on a log-scale factor the distance is measured in log10 units of the range
+    log_domain = Domain(factors, (1.0, 0.0), (100.0, 1.0), (True, False))
+    logged = {o: _linear(o, factors, np.eye(2)[i], log_factors=("a",)) for i, o in enumerate(("y0", "y1"))}
+    far = evaluate_set(logged, log_domain, ("y0", "y1"), {"y0": 1.0, "y1": 0.5}, 0.1, 11,
+                       reference={"a": 10 ** 0.4, "b": 0.5})
+    assert far.exact.reference_distance == pytest.approx((0.9 - 0.4) / 2, abs=1e-7)
