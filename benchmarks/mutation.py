@@ -130,7 +130,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/level2.py": {
         "functions": None,
-        "tests": ["tests/test_reported_numbers.py", "tests/criticism/test_criticism.py", "tests/criticism/test_edges.py",
+        "tests": ["tests/criticism/test_level2_known_answers.py", "tests/test_reported_numbers.py",
+                  "tests/criticism/test_criticism.py", "tests/criticism/test_edges.py",
                   "tests/criticism/test_unreachable_targets.py", "-klevel2 or edge or reach"],
     },
     "demid/criticism/verdict.py": {

@@ -1,0 +1,48 @@
+"""Level 2's reported numbers on a case solved by hand.
+
+Two factors a, b on the unit square; y1 = a and y3 = a with targets 0.5 and 0.6 cannot both be met
+within 5 % (a in [0.475, 0.525] against [0.57, 0.63]); y2 = b with target 0.437 is met on a whole line.
+"""
+
+import numpy as np
+import pytest
+
+from demid.criticism.level2 import calibration_check
+from demid.design import quadratic_terms
+from demid.sampling import Domain
+from demid.surrogate import Surrogate
+
+
+def _linear(name, slope_a, slope_b):
+    coef = np.array([0.0, slope_a, slope_b, 0.0, 0.0, 0.0])  # Intercept, a, b, a:b, a^2, b^2
+    return Surrogate(name, ["a", "b"], quadratic_terms(2), coef, np.zeros((6, 6)), 0.0, 7)
+
+
+@pytest.fixture(scope="module")
+def result():
+    surrogates = {"y1": _linear("y1", 1, 0), "y2": _linear("y2", 0, 1), "y3": _linear("y3", 1, 0)}
+    domain = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0), (False, False))
+    return calibration_check(surrogates, domain, {"y1": 0.5, "y2": 0.437, "y3": 0.6}, 0.05, 11)
+
+
+def test_best_point_balances_the_two_conflicting_targets(result):
+    """max(|a - 0.5| / 0.5, |a - 0.6| / 0.6) is smallest where both are equal: a = 6/11, error 1/11."""
+    assert not result.feasible
+    assert result.best_max_error == pytest.approx(1 / 11, abs=1e-7)
+    assert result.best_point["a"] == pytest.approx(6 / 11, abs=1e-6)
+    assert result.best_errors["y1"] == pytest.approx(1 / 11, abs=1e-7)
+    assert result.best_errors["y3"] == pytest.approx(-1 / 11, abs=1e-7)
+
+
+def test_implied_biases_are_the_errors_closest_to_zero_where_the_others_are_met(result):
+    """Without y2 its target is met anywhere on a = 6/11 (bias 0, b = 0.437 lies between grid nodes);
+    without y1 the others pin a = 0.6 (y1's error 0.2); without y3, a = 0.5 (error -1/6)."""
+    assert result.implied_bias["y2"] == pytest.approx(0.0, abs=1e-6)
+    assert result.implied_bias["y1"] == pytest.approx(0.2, abs=1e-7)
+    assert result.implied_bias["y3"] == pytest.approx(-1 / 6, abs=1e-7)
+    assert result.without["y1"] == pytest.approx(0.0, abs=1e-7)
+    assert result.without["y3"] == pytest.approx(0.0, abs=1e-7)
+    assert result.without["y2"] == pytest.approx(1 / 11, abs=1e-7)
+    # y1 and y3 tie on the error left without them; the smaller bias names the bottleneck
+    assert result.bottleneck == "y3"
+    assert result.bias_candidates == ["y1", "y3"] and result.biased_observable is None
