@@ -21,6 +21,9 @@ def test_a_column_printed_to_significant_digits_is_read_per_value():
     # four significant digits: -1228 to units, 29.18 to hundredths, 0.5012 to 1e-4
     out = printed_quantum([-1228.0, 29.18, 0.5012, 345.6])
     np.testing.assert_allclose(out, [1.0, 1e-2, 1e-4, 1e-1], rtol=1e-12)
+    # 12.30 printed to four digits lost its trailing zero: still read to hundredths
+    out = printed_quantum([-1228.0, 29.18, 0.5012, 345.6, 12.3])
+    np.testing.assert_allclose(out, [1.0, 1e-2, 1e-4, 1e-1, 1e-2], rtol=1e-12)
 
 
 def test_zeros_nans_and_unrounded_values_carry_no_quantum():
