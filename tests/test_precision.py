@@ -11,6 +11,8 @@ from demid.precision import factor_print_quantum, factor_round_off_sd, printed_q
     ([79.9, 80.25, 81.0], 1e-2),
     ([1200.0, 1300.0, 1250.0], 1.0),        # never coarser than units when reading decimals
     ([0.5, 1.25, 2.0], 1e-2),
+    ([2.0, 3.0, 5.0], 1.0),                  # one significant digit each
+    ([0.2, 0.5, 0.7], 0.1),
     ([1.25, 2.75, 13.15, 12.35, 4.0], 1e-2),  # most show two decimals; 4.0 lost its zeros, not a digit
 ])
 def test_a_column_printed_to_decimals_is_read_to_its_finest_place(column, quantum):

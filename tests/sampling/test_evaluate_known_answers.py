@@ -98,3 +98,19 @@ def test_reference_distance_to_the_box_and_its_nearest_point(reference, distance
     far = evaluate_set(logged, log_domain, ("y0", "y1"), {"y0": 1.0, "y1": 0.5}, 0.1, 11,
                        reference={"a": 10 ** 0.4, "b": 0.5})
     assert far.exact.reference_distance == pytest.approx((0.9 - 0.4) / 2, abs=1e-7)
+
+
+def test_closest_approach_of_an_empty_set_finds_the_deeper_of_two_wells():
+    """y = 16 (a - 1/4)^2 (a - 3/4)^2 + a/10 has two wells; with target -1 no point comes within 10 % and the
+    closest approach is the deeper well near a = 1/4 (brute force on a fine grid), not the one near 3/4."""
+    from numpy.polynomial import polynomial as P
+
+    coef = 16 * P.polymul(P.polyfromroots([0.25, 0.25]), P.polyfromroots([0.75, 0.75])) + np.array([0, 0.1, 0, 0, 0])
+    terms = [(e, 0) for e in range(5)]
+    surrogate = Surrogate("y", ["a", "b"], terms, coef, np.zeros((5, 5)), 0.0, 5)
+    aset = evaluate_set({"y": surrogate}, _unit_domain(("a", "b")), ("y",), {"y": -1.0}, 0.1, 21)
+    a = np.linspace(0.0, 1.0, 200_001)
+    y = P.polyval(a, coef)
+    assert aset.fraction == 0
+    assert aset.best_error == pytest.approx(float(np.min(np.abs(y + 1.0))), abs=1e-8)
+    assert aset.best_point[0] == pytest.approx(float(a[np.argmin(y)]), abs=1e-4)
