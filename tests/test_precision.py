@@ -36,6 +36,8 @@ def test_zeros_nans_and_unrounded_values_carry_no_quantum():
 def test_factor_quantum_only_for_values_that_reach_the_printed_place():
     x = np.array([0.075736, 0.5, 2.0, 0.924264])
     np.testing.assert_allclose(factor_print_quantum(x), [1e-6, 0.0, 0.0, 1e-6], rtol=1e-12)
+    # a level at zero carries no rounding and leaves the others' alone
+    np.testing.assert_allclose(factor_print_quantum([0.0, 0.075736, 0.924264]), [0.0, 1e-6, 1e-6], rtol=1e-12)
     # a column printed to three significant digits is no rounding of a derived level
     assert np.all(factor_print_quantum([0.0757, 0.5, 0.924]) == 0.0)
 
