@@ -275,6 +275,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/precision.py::factor_print_quantum::0 => -1#1":
         "printed_quantum is 0 for a finite non-zero value only when it is 0 for the whole column; such values "
         "then give |own / 0 - 1| = inf, never a rounding: 0 either way",
+    "demid/formulas.py::f_tail::dfd > 0 => dfd >= 0#0": "scipy's fdtrc returns NaN for a zero degree of freedom too",
+    "demid/formulas.py::f_tail::dfn > 0 => dfn >= 0#0": "scipy's fdtrc returns NaN for a zero degree of freedom too",
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",
