@@ -277,6 +277,11 @@ EQUIVALENT: dict[str, str] = {
         "then give |own / 0 - 1| = inf, never a rounding: 0 either way",
     "demid/formulas.py::f_tail::dfd > 0 => dfd >= 0#0": "scipy's fdtrc returns NaN for a zero degree of freedom too",
     "demid/formulas.py::f_tail::dfn > 0 => dfn >= 0#0": "scipy's fdtrc returns NaN for a zero degree of freedom too",
+    "demid/sampling/evaluate.py::_evaluate_set::float(tolerance) => tolerance#0":
+        "every caller passes a float tolerance (the schema's number or a sweep's float)",
+    "demid/sampling/evaluate.py::_evaluate_set::np.isfinite(base.best_error) and base.best_error < best_error => "
+    "base.best_error < best_error#0": "a NaN compares False: the guard only states the intent",
+    "demid/sampling/evaluate.py::_evaluate_set::float(exact.fraction) => exact.fraction#0": _NUMPY_FLOAT,
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",

@@ -114,3 +114,19 @@ def test_closest_approach_of_an_empty_set_finds_the_deeper_of_two_wells():
     assert aset.fraction == 0
     assert aset.best_error == pytest.approx(float(np.min(np.abs(y + 1.0))), abs=1e-8)
     assert aset.best_point[0] == pytest.approx(float(a[np.argmin(y)]), abs=1e-4)
+
+
+def test_the_grid_is_evaluated_only_when_asked_for():
+    """An exact set evaluates no nodes unless a caller needs the node mask (figures); with it, the mask is
+    the n x n grid and the share of admissible nodes approaches the exact fraction."""
+    factors = ("a", "b")
+    surrogates = {f"y{i}": _linear(f"y{i}", factors, np.eye(2)[i]) for i in range(2)}
+    args = (surrogates, _unit_domain(factors), ("y0", "y1"), {"y0": 0.5, "y1": 0.5}, 0.1, 101)
+    plain = evaluate_set(*args)
+    assert plain.n_nodes == 0 and plain.n_admissible_nodes == 0 and plain.n_refined_cells == 0
+    assert plain.mask.size == 0 and np.isnan(plain.node_fraction)
+    gridded = evaluate_set(*args, grid=True)
+    assert gridded.fraction == pytest.approx(0.01, rel=1e-6)  # the numbers still come from the exact set
+    assert gridded.mask.size == gridded.n_nodes == 101 ** 2
+    # nodes 0.45, 0.46, ..., 0.55 per axis (11, the edges within round-off of the band)
+    assert gridded.n_admissible_nodes in (9 ** 2, 10 ** 2, 11 ** 2)
