@@ -282,6 +282,10 @@ EQUIVALENT: dict[str, str] = {
     "demid/sampling/evaluate.py::_evaluate_set::np.isfinite(base.best_error) and base.best_error < best_error => "
     "base.best_error < best_error#0": "a NaN compares False: the guard only states the intent",
     "demid/sampling/evaluate.py::_evaluate_set::float(exact.fraction) => exact.fraction#0": _NUMPY_FLOAT,
+    "demid/criticism/level2.py::_bottleneck::0 => -1#1":
+        "observables[0] is only read when 'without' is empty, i.e. for a single observable: first and last agree",
+    "demid/criticism/level2.py::calibration_check::0 => -1#6":
+        "best_s is one point, so the errors have one column: [:, 0] and [:, -1] are the same",
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",

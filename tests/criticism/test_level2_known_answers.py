@@ -46,3 +46,23 @@ def test_implied_biases_are_the_errors_closest_to_zero_where_the_others_are_met(
     # y1 and y3 tie on the error left without them; the smaller bias names the bottleneck
     assert result.bottleneck == "y3"
     assert result.bias_candidates == ["y1", "y3"] and result.biased_observable is None
+
+
+def test_shared_bias_and_the_extensions_count_parameters_and_spare_measurements(result):
+    """Every prediction is 0 at a = b = 0, so every relative error is -1 there: one shared relative bias of -1
+    explains all three targets.  Two factors and three measurements: the calibrated simulation has one spare
+    measurement, one added bias none, a bias on every observable two unknowns too many."""
+    shared = result.shared_bias
+    assert shared["delta"] == pytest.approx(-1.0, abs=1e-7) and shared["max_error"] == pytest.approx(0.0, abs=1e-7)
+    assert shared["n_params"] == 3
+    rows = {row["model"]: row for row in result.extensions}
+    calibrated = rows["simulation as calibrated (no discrepancy)"]
+    assert (calibrated["n_params"], calibrated["spare_measurements"]) == (2, 1)
+    assert calibrated["note"].startswith("testable: 1 spare")
+    assert calibrated["max_error"] == pytest.approx(1 / 11, abs=1e-7)
+    one = rows["bias on y3"]
+    assert (one["n_params"], one["spare_measurements"]) == (3, 0) and one["note"].startswith("saturated")
+    assert one["max_error"] == pytest.approx(0.0, abs=1e-7)
+    every = rows["bias on every observable"]
+    assert (every["n_params"], every["spare_measurements"]) == (5, -2)
+    assert every["note"].startswith("not identifiable")
