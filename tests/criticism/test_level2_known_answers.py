@@ -66,3 +66,21 @@ def test_shared_bias_and_the_extensions_count_parameters_and_spare_measurements(
     every = rows["bias on every observable"]
     assert (every["n_params"], every["spare_measurements"]) == (5, -2)
     assert every["note"].startswith("not identifiable")
+
+
+def test_implied_bias_is_the_deeper_well_when_the_grid_prefers_the_shallower():
+    """y2 = 16 (b - 1/4)^2 (b - 7/10)^2 + b/100 cannot reach its target -1; where y1 = a meets 0.5 (any b), the
+    bias y2 needs is smallest at the well near b = 1/4 (brute force on a fine grid), although the grid node
+    b = 0.7 sits at the bottom of the shallower well and is the grid's best."""
+    from numpy.polynomial import polynomial as P
+
+    well = 16 * P.polymul(P.polyfromroots([0.25, 0.25]), P.polyfromroots([0.7, 0.7])) + np.array([0, 0.01, 0, 0, 0])
+    terms = [(0, 0), (1, 0)] + [(0, e) for e in range(1, 5)]
+    y1 = Surrogate("y1", ["a", "b"], terms, np.array([0.0, 1.0, 0.0, 0.0, 0.0, 0.0]), np.zeros((6, 6)), 0.0, 5)
+    y2 = Surrogate("y2", ["a", "b"], terms, np.array([well[0], 0.0, *well[1:]]), np.zeros((6, 6)), 0.0, 5)
+    domain = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0), (False, False))
+    result = calibration_check({"y1": y1, "y2": y2}, domain, {"y1": 0.5, "y2": -1.0}, 0.05, 11)
+    b = np.linspace(0.0, 1.0, 400_001)
+    assert not result.feasible
+    assert result.implied_bias["y2"] == pytest.approx(float(np.min(P.polyval(b, well))) + 1.0, abs=1e-8)
+    assert result.implied_bias["y1"] == pytest.approx(0.0, abs=1e-8)
