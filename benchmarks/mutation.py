@@ -21,6 +21,7 @@ by hand, not in CI (the default sample took ~35 min on a loaded two-core machine
     python benchmarks/mutation.py --list --show    # ... and print every mutant id
     python benchmarks/mutation.py --module demid/io.py --all
     python benchmarks/mutation.py --sample 200 --seed 1
+    python benchmarks/mutation.py --module demid/sampling/exact.py --per-module 40 --seed 14
 
 The module -> tests table below is by file path: when a module moves, update its
 row (path, functions, tests) and nothing else.
@@ -116,12 +117,14 @@ TABLE: dict[str, dict] = {
     },
     "demid/sampling/exact.py": {
         "functions": None,
-        "tests": ["tests/sampling/test_exact_sets.py", "tests/test_reported_numbers.py", "tests/sampling/test_reference_point.py",
+        "tests": ["tests/sampling/test_exact_sets.py", "tests/sampling/test_quadrature_error_estimate.py",
+                  "tests/test_reported_numbers.py", "tests/sampling/test_reference_point.py",
                   "tests/sampling/test_set_estimators.py", "tests/test_core_contracts.py"],
     },
     "demid/sampling/evaluate.py": {
         "functions": None,
-        "tests": ["tests/sampling/test_exact_sets.py", "tests/test_reported_numbers.py", "tests/criticism/test_unreachable_targets.py",
+        "tests": ["tests/sampling/test_evaluate_known_answers.py", "tests/sampling/test_exact_sets.py",
+                  "tests/test_reported_numbers.py", "tests/criticism/test_unreachable_targets.py",
                   "tests/sampling/test_set_estimators.py", "tests/test_core_contracts.py"],
     },
     "demid/criticism/level1.py": {
@@ -131,7 +134,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/level2.py": {
         "functions": None,
-        "tests": ["tests/test_reported_numbers.py", "tests/criticism/test_criticism.py", "tests/criticism/test_edges.py",
+        "tests": ["tests/criticism/test_level2_known_answers.py", "tests/test_reported_numbers.py",
+                  "tests/criticism/test_criticism.py", "tests/criticism/test_edges.py",
                   "tests/criticism/test_unreachable_targets.py", "-klevel2 or edge or reach"],
     },
     "demid/criticism/verdict.py": {
@@ -195,6 +199,18 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/inputs/test_design.py", "tests/inputs/test_data.py", "tests/test_core_contracts.py",
                   "tests/inputs/test_stranger_tables.py::test_valid_designs_validate_and_are_coded_by_their_geometry"],
     },
+    "demid/tolerance.py": {
+        "functions": None,
+        "tests": ["tests/test_tolerance.py"],
+    },
+    "demid/formulas.py": {
+        "functions": None,
+        "tests": ["tests/test_formulas.py"],
+    },
+    "demid/precision.py": {
+        "functions": None,
+        "tests": ["tests/test_precision.py", "tests/inputs/test_factor_round_off.py"],
+    },
     "demid/io.py": {
         "functions": None,
         "tests": ["tests/test_core_contracts.py", "-kjson or png or parquet or csv or atomic"],
@@ -228,6 +244,52 @@ EQUIVALENT: dict[str, str] = {
         _NUMPY_FLOAT + " (node_fraction only enters a float column of to_frame)",
     "demid/sampling/sobol.py::sobol_fraction::float(means.mean()) => means.mean()#0":
         _NUMPY_FLOAT + " (the fraction enters arithmetic, max/min, float columns and JSON through _clean)",
+    "demid/sampling/exact.py::_real_roots_unit::coef.shape[:-1] + (0,) => coef.shape[:-1] - (0,)#0":
+        "the degree-0 branch is never reached: exact_set raises every degree to at least 1 and the edge "
+        "polynomials of a plane have the tensor's D+1 >= 2 coefficients",
+    "demid/sampling/exact.py::_Planes.spans::1 => 2#2":
+        "the fill value of 'last' is never read: only planes with a feasible piece are used, and their entry "
+        "is overwritten",
+    "demid/sampling/exact.py::_chebyshev_roots::1 => 2#7":
+        "the last column is never written: a resultant's degree in s is at most top^2 (Bezout), below the "
+        "2 top^2 the Chebyshev nodes allow, and interpolation noise under 1e-11 is zeroed before the degree "
+        "is read",
+    "demid/sampling/exact.py::_companion_roots::imag_tol * np.maximum(1.0, np.abs(eig.real)) => "
+    "np.maximum(1.0, np.abs(eig.real))#0":
+        "a complex pair taken for real roots only adds cut points: every piece between cut points is judged "
+        "at its midpoint, so the admissible intervals (and the breakpoints' pieces) are the same",
+    "demid/sampling/exact.py::_integrate::estimate <= target[owners] * h / length[owners] => "
+    "estimate < target[owners] * h / length[owners]#0":
+        "differs only when a piece's error estimate equals its share of the target to the last bit; the "
+        "piece is then bisected once more and integrated to the same value within the estimate",
+    "demid/criticism/level2.py::_minimax::200 => 201#0":
+        "SLSQP's iteration cap: the epigraph problems converge in far fewer iterations",
+    # --- tolerance
+    "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
+        "the product with the float abs(float(target)) is a float either way",
+    "demid/tolerance.py::rescaled_surrogate::0 => -1#0": "a polynomial has one intercept term: first and last agree",
+    "demid/tolerance.py::rescaled_surrogate::float(target) => target#0":
+        "target is a number: its product with a float is the same float",
+    "demid/tolerance.py::rescaled_surrogate::float(surrogate.resid_var) => surrogate.resid_var#0":
+        "resid_var is a float already (a Surrogate field)",
+    "demid/tolerance.py::scenario_bands::float(response.discrepancy or 0.0) => response.discrepancy or 0.0#0":
+        "the schema reads discrepancy as a number: c * delta and delta == 0.0 are the same for an int",
+    "demid/formulas.py::f_tail::0 => -1#1": "scipy's fdtrc returns NaN for a degree of freedom <= 0 as well",
+    "demid/formulas.py::f_tail::0 => -1#2": "scipy's fdtrc returns NaN for a degree of freedom <= 0 as well",
+    "demid/precision.py::factor_print_quantum::0 => -1#1":
+        "printed_quantum is 0 for a finite non-zero value only when it is 0 for the whole column; such values "
+        "then give |own / 0 - 1| = inf, never a rounding: 0 either way",
+    "demid/formulas.py::f_tail::dfd > 0 => dfd >= 0#0": "scipy's fdtrc returns NaN for a zero degree of freedom too",
+    "demid/formulas.py::f_tail::dfn > 0 => dfn >= 0#0": "scipy's fdtrc returns NaN for a zero degree of freedom too",
+    "demid/sampling/evaluate.py::_evaluate_set::float(tolerance) => tolerance#0":
+        "every caller passes a float tolerance (the schema's number or a sweep's float)",
+    "demid/sampling/evaluate.py::_evaluate_set::np.isfinite(base.best_error) and base.best_error < best_error => "
+    "base.best_error < best_error#0": "a NaN compares False: the guard only states the intent",
+    "demid/sampling/evaluate.py::_evaluate_set::float(exact.fraction) => exact.fraction#0": _NUMPY_FLOAT,
+    "demid/criticism/level2.py::_bottleneck::0 => -1#1":
+        "observables[0] is only read when 'without' is empty, i.e. for a single observable: first and last agree",
+    "demid/criticism/level2.py::calibration_check::0 => -1#6":
+        "best_s is one point, so the errors have one column: [:, 0] and [:, -1] are the same",
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",
@@ -583,8 +645,15 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--sample", type=int, default=60, help="approximate sample size over all modules")
     ap.add_argument("--seed", type=int, default=14)
+    ap.add_argument("--per-module", type=int, metavar="N",
+                    help="instead of a share of all mutants, the N mutants of each module with the lowest "
+                         "hash draw (a module is scored in minutes; the same N mutants before and after a "
+                         "change to the tests)")
     ap.add_argument("--all", action="store_true", help="every mutant instead of a sample")
     ap.add_argument("--module", action="append", help="only this module path (repeatable)")
+    ap.add_argument("--ids", type=Path, metavar="FILE",
+                    help="only the mutants whose id is a line of FILE (e.g. the survivors of an earlier run, "
+                         "re-run after tests were added: a mutant once killed stays killed)")
     ap.add_argument("--list", action="store_true", help="count mutants and exit")
     ap.add_argument("--show", action="store_true", help="print every mutant id with --list")
     args = ap.parse_args(argv)
@@ -611,6 +680,14 @@ def main(argv=None) -> int:
     for m, muts in per_module.items():
         # The same share of every module (at least 10 mutants); a mutant is drawn by a hash of its id,
         # so an edit elsewhere in a file does not change which of its mutants are drawn.
+        if args.ids:
+            wanted = {line.strip() for line in args.ids.read_text(encoding="utf-8").splitlines()}
+            chosen[m] = [mu for mu in muts if mu.id in wanted]
+            continue
+        if args.per_module and not args.all:
+            drawn = sorted(muts, key=lambda mu: _draw(mu.id, args.seed))[:args.per_module]
+            chosen[m] = sorted(drawn, key=lambda mu: (mu.line, mu.id))
+            continue
         share = 1.0 if args.all else max(10 / max(len(muts), 1), args.sample / max(everything, 1))
         chosen[m] = [mu for mu in muts if _draw(mu.id, args.seed) < share]
 
@@ -625,6 +702,8 @@ def main(argv=None) -> int:
     results: list[tuple[Mutant, str]] = []
     try:
         for m, muts in chosen.items():
+            if not muts:
+                continue
             tests = existing(TABLE[m]["tests"], tree)
             status, base_time = run_tests(tree, tests, timeout=1800)
             if status != "survived":
@@ -663,7 +742,8 @@ def main(argv=None) -> int:
     k, sv = tot["killed"], tot["survived"]
     print(f"{'total':28s} {tot['run']:5d} {k:7d} {sv:9d} {tot['equivalent']:6d} "
           f"{100.0 * k / max(k + sv, 1):6.1f}%")
-    scope = "all mutants" if args.all else f"{tot['run']} of {total} mutants, seed {args.seed}"
+    scope = "all mutants" if args.all else f"{tot['run']} of {total} mutants, seed {args.seed}" + (
+        f", {args.per_module} per module" if args.per_module else "")
     print(f"\nmutation score: {100.0 * k / max(k + sv, 1):.1f} % ({k} killed of {k + sv}; "
           f"{tot['equivalent']} equivalent excluded; {scope})")
     survivors = [mu for mu, s in results if s == "survived"]
