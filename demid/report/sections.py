@@ -101,6 +101,23 @@ def keys_labelled(frame: pd.DataFrame, spec) -> pd.DataFrame:
     return out
 
 
+def study_keys_labelled(frame: pd.DataFrame, specs: dict) -> pd.DataFrame:
+    """A study-wide table (one row per material and ...) shown in labels: each row's scenario, factor,
+    observables and response keys through its own material's spec, the material as its label."""
+    parts = []
+    for material, rows in frame.groupby("material", sort=False):
+        spec = specs.get(material)
+        if spec is None:
+            parts.append(rows)
+            continue
+        shown = keys_labelled(rows, spec)
+        if "response" in shown.columns:
+            shown["response"] = shown["response"].map(lambda v: spec.response_labels.get(v, v))
+        shown["material"] = spec.label
+        parts.append(shown)
+    return pd.concat(parts).loc[frame.index] if parts else frame
+
+
 def _symbol_of(term: str, letters: dict[str, str]) -> str:
     from .rsm import _symbol
 
@@ -188,9 +205,16 @@ class ReportSections:
         return pd.read_csv(path) if path.is_file() else None
 
     def _label(self, material: str) -> str:
-        from ..spec import MaterialSpec
+        return self._specs()[material].label
 
-        return MaterialSpec.from_material(material, self.config["materials"][material]).label
+    def _specs(self) -> dict:
+        """Each material's spec, built once for the report."""
+        if getattr(self, "_spec_cache", None) is None:
+            from ..spec import MaterialSpec
+
+            self._spec_cache = {m: MaterialSpec.from_material(m, entry)
+                                for m, entry in self.config["materials"].items()}
+        return self._spec_cache
 
     # sections
     def all(self) -> list:
@@ -388,13 +412,14 @@ class ReportSections:
             return []
         return [self._md(f"## Surrogate fidelity{self._paper('Table 2')}\n\nrmse = √(SSE/n); resid_std = √(SSE/(n−p)); "
                          "q2 = 1 − PRESS/SST (leave-one-out); lack of fit is tested against pure error from "
-                         "replicated runs.\n\n" + markdown_table(table))]
+                         "replicated runs.\n\n" + markdown_table(study_keys_labelled(table, self._specs())))]
 
     def identifiability(self) -> list:
         table = self._csv("identifiability.csv")
         if table is None:
             return []
-        lines = [f"## Admissible sets{self._paper('Table 3')}", "", markdown_table(table[IDENTIFIABILITY_COLUMNS]), ""]
+        lines = [f"## Admissible sets{self._paper('Table 3')}", "",
+                 markdown_table(study_keys_labelled(table[IDENTIFIABILITY_COLUMNS], self._specs())), ""]
         for m in self.materials:
             path = self.root / "scenarios" / f"{m}.parquet"
             if not path.is_file():
@@ -406,8 +431,9 @@ class ReportSections:
             own = has_own_tolerance(MaterialSpec.from_material(m, self.config["materials"][m]))
             error = ("largest relative error, each observable's against its own tolerance, expressed at the "
                      "scenario's" if own else "largest relative error")
+            scenario_label = {sc.name: sc.label for sc in self._specs()[m].scenarios}
             for _, row in scen[scen["feasible_fraction_pct"] == 0].iterrows():
-                lines.append(f"- **{self._label(m)}**, {row['scenario']}: no point of the domain meets every target "
+                lines.append(f"- **{self._label(m)}**, {scenario_label.get(row['scenario'], row['scenario'])}: no point of the domain meets every target "
                              f"within {100 * row['tolerance']:g} %{' (or its own tolerance)' if own else ''}; the "
                              f"closest point misses by {100 * row['best_max_rel_error']:.2f} % ({error}).")
         for m in self.materials:
@@ -416,6 +442,9 @@ class ReportSections:
             if len(scen) < 2:
                 continue
             base = sub[sub["scenario"] == scen[0]]
+            spec = self._specs()[m]
+            scenario_label = {sc.name: sc.label for sc in spec.scenarios}
+            factor_label = {f.name: f.label for f in spec.factors}
             for s in scen[1:]:
                 other = sub[sub["scenario"] == s]
                 f0 = base["feasible_fraction_pct"].iloc[0]
@@ -426,8 +455,9 @@ class ReportSections:
                     w0 = base.loc[base["factor"] == fac, "width"].iloc[0]
                     w1 = other.loc[other["factor"] == fac, "width"].iloc[0]
                     if w0 > 0 and w1 == w1:
-                        widths.append(f"W({fac}) {100 * (w1 - w0) / w0:+.1f} %")
-                lines.append(f"- **{self._label(m)}**: {s} vs {scen[0]}: Φ {f0:.4g} % → {f1:.4g} % "
+                        widths.append(f"W({factor_label.get(fac, fac)}) {100 * (w1 - w0) / w0:+.1f} %")
+                lines.append(f"- **{self._label(m)}**: {scenario_label.get(s, s)} vs "
+                             f"{scenario_label.get(scen[0], scen[0])}: Φ {f0:.4g} % → {f1:.4g} % "
                              f"({change}); " + ", ".join(widths))
         return [self._md("\n".join(lines))]
 
