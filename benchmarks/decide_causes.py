@@ -218,12 +218,15 @@ def main(argv=None) -> None:
     parser.add_argument("--seed0", type=int, default=0)
     parser.add_argument("--n-null", type=int, default=499)
     parser.add_argument("--factors", default="2,3")
+    parser.add_argument("--kinds", help="only these defect kinds (comma-separated; default all)")
     parser.add_argument("--out", help="per-table rows (CSV)")
     args = parser.parse_args(argv)
     start = time.time()
     rows = []
     for k in (int(v) for v in args.factors.split(",")):
         for kind, size in CELLS[k]:
+            if args.kinds and kind not in args.kinds.split(","):
+                continue
             for r in range(args.reps):
                 rows.append(one_table(args.seed0 + r, k, kind, size, args.n_null))
     frame = pd.DataFrame(rows)
