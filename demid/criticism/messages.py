@@ -106,7 +106,9 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
                 f"simulation input?): observed {_g(info['observed'])}, the other runs predict it within "
                 f"{abs(info['t_moved']):.1f} standard errors at {f} = {_g(info['fitting_value'])} and "
                 f"{abs(info['t_recorded']):.1f} at the recorded value (Bayes factor {info['bayes_factor']:.1f} "
-                f"against a shift of that run alone). Check the input of that run; using "
+                f"against a shift of that run alone). Check the input of that run: no further run tells a slip from "
+                f"another error of that run alone (a new run at the recorded value or at {_g(info['fitting_value'])} "
+                f"follows the surface either way), its input does; using "
                 f"{f} = {_g(info['fitting_value'])} for it {gain}.")
     if h.cause == "drift":
         slope = info.get("drift_per_run", float("nan"))

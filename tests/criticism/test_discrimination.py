@@ -121,7 +121,9 @@ def test_the_separation_of_several_runs_against_statsmodels_predictions():
     mean_a, cov_a = statsmodels_prediction(quadratic_terms(2))
     mean_b, cov_b = statsmodels_prediction(quadratic_terms(2) + [cubic])
     delta = mean_a - mean_b
-    expected = float(delta @ np.linalg.solve(cov_a + cov_b, delta))
+    # the means' part, and the spreads' part: the symmetrised Kullback-Leibler divergence of N(0, cov_a), N(0, cov_b)
+    spread = (np.trace(np.linalg.inv(cov_a) @ cov_b) + np.trace(np.linalg.inv(cov_b) @ cov_a) - 2 * len(points)) / 4
+    expected = float(delta @ np.linalg.solve(cov_a + cov_b, delta)) + spread
 
     parts_a, parts_b = _prediction_parts(plain, points), _prediction_parts(extended, points)
     chosen_a = [(parts_a[0][i], parts_a[1][i], parts_a[2][i]) for i in (0, 1)]
@@ -130,6 +132,39 @@ def test_the_separation_of_several_runs_against_statsmodels_predictions():
     one = _joint_separation([], [], parts_a, parts_b)
     two = _joint_separation(chosen_a[:1], chosen_b[:1], parts_a, parts_b)[1]
     assert one[0] < two < 2 * one[0]
+
+
+def test_the_spread_separation_is_the_symmetrised_divergence_of_the_two_predictive_distributions():
+    """Monte Carlo of E_a[log p_a - log p_b] and E_b[log p_b - log p_a] (scipy's densities), averaged: the part
+    of the divergence of N(0, S_a) and N(0, S_b) their spreads make; zero for equal spreads."""
+    from demid.criticism.discrimination import spread_separation
+
+    cov_a = np.array([[1.0, 0.3, 0.0], [0.3, 2.0, 0.2], [0.0, 0.2, 0.5]])
+    cov_b = np.array([[4.0, 0.1, 0.0], [0.1, 0.6, 0.0], [0.0, 0.0, 0.5]])
+    rng = np.random.default_rng(0)
+    pa, pb = stats.multivariate_normal(np.zeros(3), cov_a), stats.multivariate_normal(np.zeros(3), cov_b)
+    xa, xb = pa.rvs(400_000, random_state=rng), pb.rvs(400_000, random_state=rng)
+    kl = (np.mean(pa.logpdf(xa) - pb.logpdf(xa)) + np.mean(pb.logpdf(xb) - pa.logpdf(xb))) / 2
+    got = spread_separation(np.stack([cov_a, cov_a]), np.stack([cov_b, cov_a]))
+    assert got[0] == pytest.approx(kl, rel=0.02)  # the means' part is the same divergence for equal spreads
+    assert got[1] == pytest.approx(0.0, abs=1e-12)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_unequal_scatter_and_equal_scatter_are_separated_by_runs_at_an_end_of_the_scatter_factor(seed):
+    """Two models with nearly the same mean surface, one with scatter growing 12-fold across a factor: the runs
+    that decide are at an end of that factor's range (where the scatters differ most), not where the means
+    happen to differ, and they separate the two far beyond what their means alone would."""
+    table, planted = ccd_table(seed, 2, "het", 30.0)
+    data, _ = _prepare(table, FACTORS[2], "y", None, ())
+    j = FACTORS[2].index(planted.factor)
+    v = data.coded[:, j] / data.alpha
+    plain = _Model(data, _Spec())
+    het = _Model(data, _Spec(weight_on=planted.factor, weight_gamma=2.5, weight_values=tuple(float(x) for x in v)))
+    runs = discrimination.discriminating_runs(data, [plain, het], ["equal", "unequal"])
+    coded = data.coding.to_coded(np.array([[r[f] for f in FACTORS[2]] for r in runs]))
+    assert np.allclose(np.abs(coded[:, j]), data.alpha, atol=1e-3)
+    assert runs[-1]["separation"] > target_separation(0.0) / 2
 
 
 def test_a_cause_named_with_a_rival_not_far_behind_comes_with_runs_that_confirm_or_correct_it():

@@ -270,6 +270,32 @@ def test_cli_json_carries_the_verdict_and_the_slip(tmp_path):
     assert result["unexplained"] is None and result["verdict_detail"]["message"]
 
 
+@pytest.mark.parametrize("seed,n_factors,where", [(4, 3, {"factor": "mu_s", "rows": (7,)}),
+                                                  (2, 2, {"factor": "gamma", "rows": (5,)}), (718, 3, {})])
+def test_no_further_run_tells_a_slip_from_a_shift_of_the_same_run(seed, n_factors, where):
+    """The slipped run's two readings, the run made at the fitting value or the run alone shifted, predict every
+    new run alike (at the recorded value, at the fitting one, anywhere in the design's reach): the best MAX_RUNS
+    runs separate them by far less than runs that decide need (target_separation), so the message sends the
+    user to the run's input, not to more runs."""
+    from demid.criticism import discrimination
+    from demid.criticism.level1 import _prepare
+    from demid.criticism.models import _Model, _Spec
+
+    table, planted = off_catalogue_table(seed, n_factors, "slip", **where)
+    data, _ = _prepare(table, FACTORS[n_factors], "y", None, ())
+    f = criticize(table, FACTORS[n_factors], "y", n_null=199).findings[0]
+    assert f.cause == "factor_level" and f.detail == planted.runs[0]
+    assert "no further run tells a slip" in f.message
+    i, j = int(np.flatnonzero(data.runs == f.detail)[0]), FACTORS[n_factors].index(f.info["factor"])
+    point = np.array(table.loc[i, FACTORS[n_factors]], dtype=float)
+    point[j] = f.info["fitting_value"]
+    moved = float(data.coding.to_coded(point[None, :])[0, j])
+    shifted, slipped = _Model(data, _Spec(dropped=(i,))), _Model(data, _Spec(moved=((i, j, moved),)))
+    runs = discrimination.discriminating_runs(data, [shifted, slipped], ["shift", "slip"])
+    assert len(runs) == discrimination.MAX_RUNS
+    assert runs[-1]["separation"] < discrimination.target_separation(0.0) / 5
+
+
 # --------------------------------------------------------------------------- a cause must be singled out
 def _hyp(cause, p, detail=None):
     from demid.criticism.catalogue import _Hypothesis
