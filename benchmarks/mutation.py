@@ -211,6 +211,19 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_precision.py", "tests/inputs/test_factor_round_off.py"],
     },
+    "demid/canonical.py": {
+        "functions": None,
+        "tests": ["tests/combinations/test_canonical.py", "tests/combinations/test_canonical_published.py"],
+    },
+    "demid/wave_value.py": {
+        "functions": None,
+        "tests": ["tests/test_wave_value.py",
+                  "tests/story/test_story.py::test_a_wave_that_cannot_narrow_the_set_says_stop_and_one_that_can_does_not"],
+    },
+    "demid/story/verdicts.py": {
+        "functions": None,
+        "tests": ["tests/story/test_verdicts.py"],
+    },
     "demid/io.py": {
         "functions": None,
         "tests": ["tests/test_core_contracts.py", "-kjson or png or parquet or csv or atomic"],
@@ -264,6 +277,28 @@ EQUIVALENT: dict[str, str] = {
         "piece is then bisected once more and integrated to the same value within the estimate",
     "demid/criticism/level2.py::_minimax::200 => 201#0":
         "SLSQP's iteration cap: the epigraph problems converge in far fewer iterations",
+    # --- canonical analysis
+    "demid/canonical.py::quadratic_parts::float(coef) => coef#0":
+        "b0 only enters surface(), which returns float(b0 + ...): the same float for a numpy coefficient",
+    "demid/canonical.py::canonical_analysis::0 => -1#1":
+        "'largest == 0' only guards the all-zero B, for which 'min|lambda| <= 1e-12 * largest' (0 <= 0) is "
+        "true as well: singular either way",
+    "demid/canonical.py::canonical_analysis::float(threshold) => threshold#0":
+        "threshold is a float (0.1 * float(largest), or a caller's number, which only enters comparisons, "
+        "a product and float() in to_json)",
+    "demid/canonical.py::canonical_analysis::values > 0 => values >= 0#0":
+        "read only when no eigenvalue is small: every |lambda| >= threshold, and with the default threshold "
+        "(every caller: 0.1 max|lambda| > 0 there) no eigenvalue is 0",
+    # --- value of a next wave
+    "demid/wave_value.py::_evaluation_points::41 => 42#0":
+        "the resolution of the three-factor evaluation grid: 42 nodes per axis estimate the plausible fraction "
+        "as well as 41",
+    "demid/wave_value.py::_evaluation_points::True => False#0":
+        "the unscrambled Sobol sequence is an equally stratified low-discrepancy sample of the same size: "
+        "the fraction is estimated as well",
+    "demid/wave_value.py::expected_contraction::miss <= field.half_width(points, se=_updated_se(field.surrogate, "
+    "points, new_runs)) => miss < field.half_width(points, se=_updated_se(field.surrogate, points, new_runs))#0":
+        "differs only for a node whose miss equals its half-width to the last bit",
     # --- tolerance
     "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
         "the product with the float abs(float(target)) is a float either way",
