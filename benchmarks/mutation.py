@@ -299,6 +299,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/wave_value.py::expected_contraction::miss <= field.half_width(points, se=_updated_se(field.surrogate, "
     "points, new_runs)) => miss < field.half_width(points, se=_updated_se(field.surrogate, points, new_runs))#0":
         "differs only for a node whose miss equals its half-width to the last bit",
+    # --- verdicts
+    "demid/story/verdicts.py::verdict_frame::float(strict['upper'].iloc[0]) => strict['upper'].iloc[0]#0":
+        _NUMPY_FLOAT + " (the bounds of identifiability.csv are a float column: NaN marks an empty set)",
     # --- tolerance
     "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
         "the product with the float abs(float(target)) is a float either way",
