@@ -94,3 +94,55 @@ def test_a_shifted_point_is_not_read_as_a_swap_with_a_leading_zero(tmp_path, see
     vt = validate_material(_cfg(path))
     flags = likely_typos(vt, _cfg(path), read_printed(path, vt.table))
     assert [(f["run"], f["kind"], f["suggested"]) for f in flags] == [(5, "decimal_shift", 50.03)]
+
+
+@pytest.mark.parametrize("text", ["12.345", "7", "100", "0.5", "-3.25", "1.5e3", "2E+2", "1.5e-3", "\u22120.04",
+                                  "nan", "abc", " 4.10 "])
+def test_decimals_count_the_digits_after_the_point_of_the_positional_form(text):
+    from decimal import Decimal, InvalidOperation
+
+    from demid.transcription.typos import _decimals
+
+    # independently: write the number out positionally and count what follows the point
+    try:
+        number = Decimal(text.strip().replace("\u2212", "-"))
+        positional = format(number, "f") if number.is_finite() else ""
+    except InvalidOperation:
+        positional = ""
+    expected = len(positional.split(".")[1]) if "." in positional else 0
+    assert _decimals(text) == expected
+
+
+@pytest.mark.parametrize("text", ["10.5", "359.17", "-20.04", "7", "1001.5", "0.25"])
+def test_added_digit_repairs_remove_each_digit_once(text):
+    from demid.transcription.typos import _added_digit_repairs
+
+    # brute force: every cell with one digit removed that still prints like a table number (no leading zero
+    # before another digit) and reads as another value
+    expected = set()
+    for i, ch in enumerate(text):
+        candidate = text[:i] + text[i + 1:]
+        bare = candidate.lstrip("-")
+        if not ch.isdigit() or not any(c.isdigit() for c in bare) or (len(bare) > 1 and bare[0] == "0"
+                                                                       and bare[1].isdigit()):
+            continue
+        if float(candidate) != float(text):
+            expected.add(("digit_added", candidate, float(candidate)))
+    got = _added_digit_repairs(text)
+    assert set(got) == expected
+    if text == "10.5":
+        assert ("digit_added", "0.5", 0.5) in got  # 0.5 is printed with its leading zero
+
+
+@pytest.mark.parametrize("found, suggested, predicted, explains", [
+    (100.0, 10.3, 10.0, True),    # the repair leaves 0.3 of a 90 miss
+    (10.0, 9.5, 9.0, False),      # it leaves half of the miss: a shuffle of a noisy value
+    (10.0, 9.2, 9.0, True),       # exactly the 20 % share still counts
+    (-50.0, 52.0, 50.0, True),    # a lost sign: 2 of a 100 miss
+    (2.0, 1.0, -1.0, False)])     # 2 of a 3 miss
+def test_a_repair_explains_the_miss_when_it_removes_four_fifths_of_it(found, suggested, predicted, explains):
+    from demid.transcription.typos import _repair_explains
+
+    flag = {"found": found, "suggested": suggested, "predicted_from_other_runs": predicted}
+    assert _repair_explains(flag) is explains
+    assert (abs(suggested - predicted) <= 0.2 * abs(found - predicted) + 1e-12) is explains
