@@ -146,3 +146,42 @@ def test_a_repair_explains_the_miss_when_it_removes_four_fifths_of_it(found, sug
     flag = {"found": found, "suggested": suggested, "predicted_from_other_runs": predicted}
     assert _repair_explains(flag) is explains
     assert (abs(suggested - predicted) <= 0.2 * abs(found - predicted) + 1e-12) is explains
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_the_named_repair_is_the_fitting_one_closest_to_the_prediction_from_the_other_runs(tmp_path, seed):
+    # a leading digit dropped (112.3 printed 12.3) with noise sd 4: several inserted digits (102.3, 112.3,
+    # 12x.3) land within three prediction errors; the named one is the closest to the leave-one-out prediction,
+    # refitted here with statsmodels in a basis of its own
+    import numpy as np
+    import statsmodels.api as sm
+
+    table = make_ccd_table(lambda x: {"y": 112 + 6 * x[:, 0] - 0.4 * x[:, 1] + 2 * x[:, 0] ** 2},
+                           [0.1, 1], [0.9, 11], noise=4.0, seed=seed, decimals=1)
+    texts = [f"{v:.1f}" for v in table["y"]]
+    i = next(j for j, t in enumerate(texts) if len(t) == 5 and t[0] == "1" and t[1] != "0")
+    run = int(table["run"].iloc[i])
+    path = tmp_path / "t.csv"
+    table.to_csv(path, index=False)
+    lines = path.read_text().splitlines()
+    lines = [ln if not ln.startswith(f"{run},") else ",".join(ln.split(",")[:-1] + [texts[i][1:]]) for ln in lines]
+    path.write_text("\n".join(lines) + "\n")
+    vt = validate_material(_cfg(path))
+    flags = likely_typos(vt, _cfg(path), read_printed(path, vt.table), kinds=("digit_dropped",))
+    assert [f["run"] for f in flags] == [run]
+    x = table[["x1", "x2"]].to_numpy(dtype=float)
+    basis = np.column_stack([np.ones(len(x)), x[:, 0], x[:, 1], x[:, 0] ** 2, x[:, 0] * x[:, 1], x[:, 1] ** 2])
+    others = np.arange(len(x)) != i
+    fit = sm.OLS(table["y"].to_numpy(dtype=float)[others], basis[others]).fit()
+    prediction = fit.get_prediction(basis[i:i + 1])
+    loo, se = float(prediction.predicted_mean[0]), float(prediction.se_obs[0])
+    assert flags[0]["predicted_from_other_runs"] == pytest.approx(loo, rel=1e-9)
+    assert flags[0]["prediction_se"] == pytest.approx(se, rel=1e-9)
+    # every digit inserted anywhere in the printed cell, one decimal at most, no leading zero
+    printed = texts[i][1:]
+    candidates = {float(printed[:k] + d + printed[k:]) for k in range(len(printed) + 1) for d in "0123456789"
+                  if not (printed[:k] + d + printed[k:]).startswith("0")
+                  and len((printed[:k] + d + printed[k:]).split(".")[1]) <= 1}
+    fitting = sorted((abs(v - loo), v) for v in candidates if abs(v - loo) <= 3 * se)
+    assert fitting  # several for some seeds: there the closest is not the smallest, nor the first found
+    assert flags[0]["suggested"] == pytest.approx(fitting[0][1])
