@@ -227,7 +227,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/blocks.py": {
         "functions": None,
-        "tests": ["tests/criticism/test_blocks_steps.py"],
+        "tests": ["tests/test_blocks.py", "tests/criticism/test_blocks_steps.py"],
     },
     "demid/io.py": {
         "functions": None,
@@ -311,6 +311,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/ranking.py::rank_observable_sets::abs(contraction) < 1e-09 => abs(contraction) <= 1e-09#0":
         "differs only for a contraction of exactly 1e-9 %, which becomes 0 instead: both the round-off of an "
         "unchanged set",
+    # --- blocks
+    "demid/blocks.py::label_text::int(value) => value#0": "str() of a numpy integer prints the same digits",
+    "demid/blocks.py::label_text::float(value) => value#0":
+        "value is a float or a numpy floating, both of which have is_integer()",
+    "demid/blocks.py::check_blocks::np.abs(coded) < _ZERO => np.abs(coded) <= _ZERO#0":
+        "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
     # --- tolerance
     "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
         "the product with the float abs(float(target)) is a float either way",
