@@ -229,6 +229,14 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_blocks.py", "tests/criticism/test_blocks_steps.py"],
     },
+    "demid/combinations/axes.py": {
+        "functions": None,
+        "tests": ["tests/combinations/test_combinations.py"],
+    },
+    "demid/combinations/material.py": {
+        "functions": None,
+        "tests": ["tests/combinations/test_combinations.py"],
+    },
     "demid/io.py": {
         "functions": None,
         "tests": ["tests/test_core_contracts.py", "-kjson or png or parquet or csv or atomic"],
