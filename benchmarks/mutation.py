@@ -325,6 +325,15 @@ EQUIVALENT: dict[str, str] = {
         "value is a float or a numpy floating, both of which have is_integer()",
     "demid/blocks.py::check_blocks::np.abs(coded) < _ZERO => np.abs(coded) <= _ZERO#0":
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
+    # --- next wave
+    "demid/next_wave.py::propose_runs::1 => 2#2":
+        "reshape(-2, k): numpy takes any negative size as the one unknown dimension, so the shape is the same "
+        "(checked with numpy 2.4.6)",
+    # --- combinations
+    "demid/combinations/axes.py::linear_statement::float(a[np.argmax(np.abs(normal))]) => "
+    "a[np.argmax(np.abs(normal))]#0": _NUMPY_FLOAT + " (lead only divides and is formatted)",
+    "demid/combinations/material.py::_cut_side::proj.min() <= box_min + tol => proj.min() < box_min + tol#0":
+        "differs only for a projection equal to the box's end plus the touch tolerance to the last bit",
     # --- tolerance
     "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
         "the product with the float abs(float(target)) is a float either way",
