@@ -218,8 +218,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/wave_value.py": {
         "functions": None,
-        "tests": ["tests/test_wave_value.py",
-                  "tests/story/test_story.py::test_a_wave_that_cannot_narrow_the_set_says_stop_and_one_that_can_does_not"],
+        "tests": ["tests/test_wave_value.py", "tests/story/test_story.py::"
+                  "test_a_wave_that_cannot_narrow_the_set_says_stop_and_one_that_can_does_not"],
     },
     "demid/story/verdicts.py": {
         "functions": None,

@@ -108,8 +108,9 @@ def test_in_combination_and_the_display_table():
     assert by.loc[("s1", "a"), "reason"].endswith("; the plausible set is narrow along a combination of it with B "
                                                  "(tables/combinations.csv)")
     assert by.loc[("s1", "b"), "verdict"] == "unresolved"
-    assert by.loc[("s1", "b"), "reason"].endswith("; identified in combination with A if surrogate and measurements "
-                                                 "were exact (the strict set; the plausible set is not narrow along it)")
+    assert by.loc[("s1", "b"), "reason"].endswith(
+        "; identified in combination with A if surrogate and measurements were exact (the strict set; the "
+        "plausible set is not narrow along it)")
     assert by.loc[("s2", "a"), "verdict"] == "identified"
     assert in_combination(verdicts, spec, {}) is verdicts
     shown = verdict_display(combined, spec)
