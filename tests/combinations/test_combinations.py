@@ -316,3 +316,36 @@ def test_direction_text_writes_signed_loadings_in_brackets():
 
     assert _direction_text(np.array([0.6, -0.8]), ["a", "b"]) == "(0.60·a − 0.80·b)"
     assert _direction_text(np.array([-0.6, 0.001, 0.8]), ["a", "b", "c"]) == "(−0.60·a + 0.80·c)"
+
+
+def test_a_slab_in_three_factors_is_identified_in_combination_of_the_factors_its_normal_loads():
+    # a slab 0.05 thick along n = (0.6, 0.8, 0), 1.6 long along (-0.8, 0.6, 0) and 0.6 along c, centred in
+    # [-1, 1]^3: a and b are identified in combination (loadings 0.6 and 0.8), c is not (its loading is 0)
+    from demid.combinations.axes import linear_statement
+    from demid.combinations.material import MaterialCombinations
+    from demid.spec import MaterialSpec
+
+    spec = MaterialSpec.from_material("m", {
+        "design": {"type": "ccd"},
+        "factors": {f: {"lower": 0, "upper": 2} for f in "abc"},
+        "responses": {"y": {"target": 1.0}}, "scenarios": {"s": {"observables": ["y"], "tolerance": 0.02}}})
+    coding = Coding(("a", "b", "c"), (1.0, 1.0, 1.0), (1.0, 1.0, 1.0))
+    n, long, c = np.array([0.6, 0.8, 0.0]), np.array([-0.8, 0.6, 0.0]), np.array([0.0, 0.0, 1.0])
+    s, t, u = np.meshgrid(np.linspace(-0.025, 0.025, 6), np.linspace(-0.8, 0.8, 81), np.linspace(-0.3, 0.3, 31),
+                          indexing="ij")
+    points = s.reshape(-1, 1) * n + t.reshape(-1, 1) * long + u.reshape(-1, 1) * c
+    res = set_combinations(points, [-1] * 3, [1] * 3, ["a", "b", "c"], scenario="s", set_name="strict")
+    assert res.identified and res.cut == "none" and res.curve is None
+    a, const, w, text = linear_statement(res.axes.directions[:, 0], res.axes.centre, res.axes.widths[0], coding,
+                                         ["a", "b", "c"], [False] * 3)
+    res.statement, res.equation = text, {"coefficients_search_units": [float(v) for v in a], "constant": const,
+                                         "half_width": w}
+    combos = MaterialCombinations(spec, coding, [res], [], -np.ones(3), np.ones(3))
+    assert combos.in_combination() == {"s": {"a": ["b"], "b": ["a"]}}
+    assert combos.in_combination("plausible") == {}
+    out = combos.to_json()
+    assert out["in_combination"] == {"s": {"a": ["b"], "b": ["a"]}}
+    assert "curve" not in out["sets"][0]  # a set in three factors has no band curve
+    # n . (x - 1) = 0 in actual units: 0.6 a + 0.8 b = 1.4, unit coefficients with the largest positive
+    assert out["sets"][0]["coefficients_search_units"] == pytest.approx([0.6, 0.8, 0.0], abs=1e-9)
+    assert out["sets"][0]["constant"] == pytest.approx(1.4, abs=1e-9)
