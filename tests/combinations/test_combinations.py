@@ -349,3 +349,37 @@ def test_a_slab_in_three_factors_is_identified_in_combination_of_the_factors_its
     # n . (x - 1) = 0 in actual units: 0.6 a + 0.8 b = 1.4, unit coefficients with the largest positive
     assert out["sets"][0]["coefficients_search_units"] == pytest.approx([0.6, 0.8, 0.0], abs=1e-9)
     assert out["sets"][0]["constant"] == pytest.approx(1.4, abs=1e-9)
+
+
+class _Function:
+    def __init__(self, f):
+        self.f = f
+
+    def predict(self, points):
+        points = np.asarray(points, dtype=float)
+        return self.f(points[:, 0], points[:, 1])
+
+
+def test_on_a_curved_band_an_observable_constant_along_it_is_0_degrees_off():
+    # y1 = b - 1.6 (a - 0.5)^2: the band b = 0.3 + 1.6 (a - 0.5)^2 (± 0.6 %) bends inside the box.  'parallel'
+    # = 2 y1 is constant along the band: its gradient is the band's normal at every point, 0 degrees off (a
+    # straight free direction would see it change); 'across' = a changes along it and is named
+    from demid.combinations import break_ridge_advice
+
+    spec = _band_spec()
+    coding = Coding(("a", "b"), (0.5, 0.5), (0.5, 0.5))
+    pts = grid(401)
+    y1 = pts[:, 1] - 1.6 * (pts[:, 0] - 0.5) ** 2
+    band = pts[np.abs(y1 - 0.3) <= 0.006]
+    res = set_combinations(coding.to_coded(band), [-1, -1], [1, 1], ["a", "b"], scenario="band", set_name="strict",
+                           step=[0.005, 0.005])
+    assert res.identified and res.cut == "none"
+    surrogates = {"y1": _Function(lambda a, b: b - 1.6 * (a - 0.5) ** 2),
+                  "parallel": _Function(lambda a, b: 2 * (b - 1.6 * (a - 0.5) ** 2)),
+                  "across": _Function(lambda a, b: a)}
+    text = break_ridge_advice(res, band, surrogates, spec, coding, ["y1"])
+    assert "across changes most along the set" in text
+    # 0 degrees up to the grid: the band's centre line is read from 401 x 401 nodes
+    import re
+
+    assert float(re.search(r"parallel (\d+)°", text).group(1)) <= 5
