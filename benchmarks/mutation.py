@@ -129,8 +129,10 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/level1.py": {
         "functions": None,
-        "tests": ["tests/criticism/test_criticism.py", "tests/test_reported_numbers.py", "tests/criticism/test_lone_runs.py",
-                  "tests/criticism/test_noise_free.py", "-knot 3f"],
+        "tests": ["tests/criticism/test_level1_known_answers.py", "tests/criticism/test_criticism.py",
+                  "tests/test_reported_numbers.py", "tests/criticism/test_lone_runs.py", "tests/criticism/test_noise_free.py",
+                  "tests/criticism/test_blocks_steps.py::test_outlier_against_a_batch_gives_ambiguous_and_runs_that_decide",
+                  "-knot 3f"],
     },
     "demid/criticism/level2.py": {
         "functions": None,
@@ -334,6 +336,10 @@ EQUIVALENT: dict[str, str] = {
     "a[np.argmax(np.abs(normal))]#0": _NUMPY_FLOAT + " (lead only divides and is formatted)",
     "demid/combinations/material.py::_cut_side::proj.min() <= box_min + tol => proj.min() < box_min + tol#0":
         "differs only for a projection equal to the box's end plus the touch tolerance to the last bit",
+    "demid/criticism/level1.py::_apply::0 => -1#4":
+        "data.to_actual of a single coded row returns one row: its first and last rows are the same",
+    "demid/criticism/level1.py::_apply::int(np.argmax(prof)) => np.argmax(prof)#0":
+        "best only indexes the lambda grid: a numpy integer indexes the same element",
     # --- tolerance
     "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
         "the product with the float abs(float(target)) is a float either way",
