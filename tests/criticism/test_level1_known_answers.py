@@ -36,3 +36,28 @@ def test_a_slipped_factor_value_is_moved_and_the_loo_errors_are_the_refits(seed)
     assert finding.loo_rmse_baseline == pytest.approx(_loo_rmse(table, FACTORS[2]), rel=1e-9)
     assert finding.loo_rmse_extended == pytest.approx(_loo_rmse(fixed, FACTORS[2]), rel=1e-9)
     assert finding.loo_rmse_extended < finding.loo_rmse_baseline / 3
+
+
+@pytest.mark.parametrize("seed", [0, 3])
+def test_the_extended_lack_of_fit_test_is_the_classical_one_with_the_named_term(seed):
+    # a cubic term planted: named, and the extension's lack-of-fit F is the textbook one of the quadratic plus
+    # gamma^3 (actual units span the same polynomials): pure error from the repeated design points
+    from scipy import stats
+
+    from ..generators import ccd_table
+
+    table, _ = ccd_table(seed, 2, "term", 6.0)
+    result = criticize(table, FACTORS[2], "y", n_null=199)
+    assert [(f.cause, f.detail) for f in result.findings] == [("missing_term", "gamma^3")]
+    x = table[FACTORS[2]].to_numpy(dtype=float)
+    a, b = x[:, 0], x[:, 1]
+    design = np.column_stack([np.ones(len(a)), a, b, a * a, a * b, b * b, b ** 3])
+    y = table["y"].to_numpy(dtype=float)
+    sse = float(np.sum((y - design @ np.linalg.lstsq(design, y, rcond=None)[0]) ** 2))
+    points, group = np.unique(np.round(x, 9), axis=0, return_inverse=True)
+    group = group.ravel()
+    sspe = float(sum(np.sum((y[group == g] - y[group == g].mean()) ** 2) for g in range(len(points))))
+    df_lof, df_pe = len(points) - design.shape[1], len(y) - len(points)
+    f_lof = ((sse - sspe) / df_lof) / (sspe / df_pe)
+    assert result.extended["lof_f"] == pytest.approx(f_lof, rel=1e-6)
+    assert result.extended["lof_p"] == pytest.approx(stats.f.sf(f_lof, df_lof, df_pe), rel=1e-6)
