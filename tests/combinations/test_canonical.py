@@ -135,3 +135,66 @@ def test_canonical_text_of_a_singular_surface():
     text = canonical_text(stored, SimpleNamespace(factors=["a", "b"]), spec, {"a": "A", "b": "B"}, "y")
     assert "no stationary point (the quadratic part is singular)" in text
     assert "A **rising ridge** along (A +1.000, B +0.000)" in text
+
+
+def test_a_stationary_point_on_a_face_of_the_region_is_inside():
+    # B = I, b = (2, -2): x_s = -B^-1 b / 2 = (-1, 1), a corner of the box [-1, 1]^2 (both faces count as inside)
+    c = canonical_analysis(0.0, np.array([2.0, -2.0]), np.eye(2), region_lower=[-1, -1], region_upper=[1, 1])
+    assert c.kind == "minimum"
+    assert c.stationary_coded == pytest.approx([-1, 1])
+    assert c.inside
+    # a hair beyond the lower face is outside
+    c = canonical_analysis(0.0, np.array([2.0 + 1e-6, 0.0]), np.eye(2), region_lower=[-1, -1], region_upper=[1, 1])
+    assert not c.inside
+
+
+def test_a_largest_eigenvalue_of_one_is_no_singular_surface():
+    # B = diag(-1, -0.5), b = (1, 1): x_s = (0.5, 1), y_s = b0 + b'x_s / 2 = 3 + 0.75 (a maximum)
+    c = canonical_analysis(3.0, np.array([1.0, 1.0]), np.diag([-1.0, -0.5]), region_lower=[-2, -2],
+                           region_upper=[2, 2])
+    assert c.kind == "maximum"
+    assert c.stationary_coded == pytest.approx([0.5, 1.0])
+    assert c.value == pytest.approx(3.75)
+
+
+@pytest.mark.parametrize("slope, kind", [(0.12, "stationary ridge"), (0.16, "rising ridge")])
+def test_rising_is_judged_over_the_half_diagonal_of_the_region(slope, kind):
+    # B = diag(-1, 0): a ridge along x2 with slope g = b2 and threshold 0.1 (0.1 max|lambda|).  Over the
+    # region's radius R = half the diagonal of [-1, 1]^2 = sqrt 2 the slope moves the response by |g| R, a
+    # curvature at the threshold by 0.1 R^2: rising iff |g| > 0.1 sqrt 2 = 0.1414
+    c = canonical_analysis(0.0, np.array([0.0, slope]), np.diag([-1.0, 0.0]), region_lower=[-1, -1],
+                           region_upper=[1, 1])
+    assert c.threshold == pytest.approx(0.1)
+    assert c.ridge_slopes == pytest.approx([slope])
+    assert c.kind == kind
+
+
+def test_fit_canonical_without_every_linear_term_takes_the_coded_unit_box():
+    # a model without the x2 main effect: its runs' coded box cannot be read from the linear columns, so the
+    # region is [-1, 1]^2; y = 1 + 0.4 x1 + x1^2 + x2^2 + 0 x1 x2 has x_s = (-0.2, 0), a minimum inside it
+    from types import SimpleNamespace
+
+    import pandas as pd
+    import statsmodels.api as sm
+
+    terms = [(0, 0), (1, 0), (2, 0), (0, 2), (1, 1)]
+    grid = np.array([(a, b) for a in (-1.5, 0.0, 1.5) for b in (-1.0, 0.0, 1.0)])
+    exog = np.column_stack([np.prod(grid ** np.array(t), axis=1) for t in terms])
+    y = exog @ np.array([1.0, 0.4, 1.0, 1.0, 0.0])
+    results = sm.OLS(y, pd.DataFrame(exog)).fit()
+    fit = SimpleNamespace(factors=["a", "b"], terms=terms, results=results, log_factors=(),
+                          coding=SimpleNamespace(to_actual=lambda coded: 10 * np.asarray(coded)))
+    from demid.canonical import fit_canonical
+
+    c = fit_canonical(fit)
+    assert c.kind == "minimum" and c.inside
+    assert c.stationary_coded == pytest.approx([-0.2, 0.0], abs=1e-9)
+    assert c.stationary_actual == pytest.approx([-2.0, 0.0], abs=1e-8)
+    assert c.value == pytest.approx(1 - 0.04, abs=1e-9)
+    # y = -2.4 x1 + x1^2 + x2^2: x_s = (1.2, 0), inside the runs' x1 range [-1.5, 1.5] but outside [-1, 1]^2
+    y = exog @ np.array([0.0, -2.4, 1.0, 1.0, 0.0])
+    fit = SimpleNamespace(factors=["a", "b"], terms=terms, results=sm.OLS(y, pd.DataFrame(exog)).fit(),
+                          log_factors=(), coding=SimpleNamespace(to_actual=lambda coded: np.asarray(coded)))
+    c = fit_canonical(fit)
+    assert c.stationary_coded == pytest.approx([1.2, 0.0], abs=1e-9)
+    assert c.kind == "minimum" and not c.inside

@@ -241,3 +241,145 @@ def test_statement_of_a_log_scaled_factor():
     _, _, _, text = linear_statement(axes.directions[:, 0], axes.centre, axes.widths[0], coding, ["a", "g"],
                                      [False, True])
     assert text.startswith("a − 2·log10 g = −2 ± ") or text.startswith("log10 g − 0.5·a = 1 ± ")
+
+
+@pytest.mark.parametrize("narrow", [(-0.6, 0.8), (0.8, -0.6), (1 / np.sqrt(2), -1 / np.sqrt(2)),
+                                    (1 / np.sqrt(2), 1 / np.sqrt(2))])
+def test_directions_are_signed_by_their_largest_loading_the_first_of_equal_ones(narrow):
+    # a rectangle of points, 0.1 wide along the unit vector ``narrow`` and 1.6 long across it: the principal
+    # axes are the rectangle's axes (by symmetry), each signed so that its largest loading (the first of two
+    # equal ones) is positive; widths: a uniform band of width w has sd w / sqrt 12
+    n = np.asarray(narrow, dtype=float)
+    long = np.array([-n[1], n[0]])
+    s, t = np.meshgrid(np.linspace(-0.05, 0.05, 11), np.linspace(-0.8, 0.8, 161), indexing="ij")
+    points = s.reshape(-1, 1) * n + t.reshape(-1, 1) * long
+    axes = principal_axes(points, [-1, -1], [1, 1])
+
+    def signed(v):
+        big = np.flatnonzero(np.isclose(np.abs(v), np.abs(v).max(), rtol=0, atol=1e-9))[0]
+        return v if v[big] > 0 else -v
+
+    assert axes.directions[:, 0] == pytest.approx(signed(n), abs=1e-9)
+    assert axes.directions[:, 1] == pytest.approx(signed(long), abs=1e-9)
+    sd = np.std(np.linspace(-0.05, 0.05, 11))
+    assert axes.widths[0] / axes.widths[1] == pytest.approx(sd / np.std(np.linspace(-0.8, 0.8, 161)), rel=1e-9)
+
+
+def test_local_thickness_of_a_straight_band_is_its_width_over_the_box_extent_along_the_normal():
+    # a band 0.1 wide along n = (-0.6, 0.8), 1.6 long, in the box [-1, 1]^2: in every cell the local normal is n
+    # and the local width sqrt 12 sd of the 11 levels across; the box's extent along n is 0.6 * 2 + 0.8 * 2 = 2.8
+    from demid.combinations.axes import local_thickness
+
+    n = np.array([-0.6, 0.8])
+    long = np.array([0.8, 0.6])
+    across = np.linspace(-0.05, 0.05, 11)
+    # 160 columns: no column on a cell boundary (there round-off would split its points between two cells)
+    s, t = np.meshgrid(across, np.linspace(-0.8, 0.8, 160), indexing="ij")
+    points = s.reshape(-1, 1) * n + t.reshape(-1, 1) * long
+    local = local_thickness(points, principal_axes(points, [-1, -1], [1, 1]), [-1, -1], [1, 1])
+    width = np.sqrt(12) * np.std(across)
+    assert len(local.widths) == 8 and local.counts.sum() == len(points)
+    assert np.abs(local.normals @ n) == pytest.approx(np.ones(8), abs=1e-9)
+    assert local.widths == pytest.approx(np.full(8, width), rel=1e-6)
+    assert local.fractions == pytest.approx(np.full(8, width / 2.8), rel=1e-6)
+    assert local.fraction == pytest.approx(width / 2.8, rel=1e-6)
+
+
+@pytest.mark.parametrize("x_range, side", [((1.9, 2.1), 0), ((0.0, 0.3), 1), ((3.7, 4.0), 2), ((0.0, 4.0), 3)])
+def test_cut_side_in_a_box_that_does_not_end_at_one(x_range, side):
+    # the box [0, 4] x [1, 5] along the normal (1, 0): its ends are 0 and 4
+    from demid.combinations.material import _cut_side
+    from demid.sampling.domain import AT_BOUND
+
+    x, y = np.meshgrid(np.linspace(*x_range, 7), np.linspace(1, 5, 9), indexing="ij")
+    points = np.column_stack([x.ravel(), y.ravel()])
+    assert _cut_side(points, np.array([1.0, 0.0]), [0.0, 1.0], [4.0, 5.0]) == AT_BOUND[side]
+
+
+def test_a_flat_sheet_in_three_factors_has_its_normal_at_every_point():
+    # a slab 0.02 thick along n = (2, -1, 2) / 3 through the origin of [-1, 1]^3 (thinner than a cell is wide):
+    # the normal of every cell, and so at every point, is +-n
+    n = np.array([2.0, -1.0, 2.0]) / 3
+    u = np.array([1.0, 2.0, 0.0]) / np.sqrt(5)
+    v = np.cross(n, u)
+    s, a, b = np.meshgrid(np.linspace(-0.01, 0.01, 5), np.linspace(-0.5, 0.5, 41), np.linspace(-0.5, 0.5, 41),
+                          indexing="ij")
+    points = s.reshape(-1, 1) * n + a.reshape(-1, 1) * u + b.reshape(-1, 1) * v
+    res = set_combinations(points, [-1] * 3, [1] * 3, ["a", "b", "c"], scenario="s", set_name="strict")
+    assert res.local is not None
+    normals = res.normals_at(points[::97])
+    assert np.abs(normals @ n) == pytest.approx(np.ones(len(normals)), abs=1e-3)  # cells cut the grid unevenly
+
+
+def test_direction_text_writes_signed_loadings_in_brackets():
+    from demid.combinations.material import _direction_text
+
+    assert _direction_text(np.array([0.6, -0.8]), ["a", "b"]) == "(0.60·a − 0.80·b)"
+    assert _direction_text(np.array([-0.6, 0.001, 0.8]), ["a", "b", "c"]) == "(−0.60·a + 0.80·c)"
+
+
+def test_a_slab_in_three_factors_is_identified_in_combination_of_the_factors_its_normal_loads():
+    # a slab 0.05 thick along n = (0.6, 0.8, 0), 1.6 long along (-0.8, 0.6, 0) and 0.6 along c, centred in
+    # [-1, 1]^3: a and b are identified in combination (loadings 0.6 and 0.8), c is not (its loading is 0)
+    from demid.combinations.axes import linear_statement
+    from demid.combinations.material import MaterialCombinations
+    from demid.spec import MaterialSpec
+
+    spec = MaterialSpec.from_material("m", {
+        "design": {"type": "ccd"},
+        "factors": {f: {"lower": 0, "upper": 2} for f in "abc"},
+        "responses": {"y": {"target": 1.0}}, "scenarios": {"s": {"observables": ["y"], "tolerance": 0.02}}})
+    coding = Coding(("a", "b", "c"), (1.0, 1.0, 1.0), (1.0, 1.0, 1.0))
+    n, long, c = np.array([0.6, 0.8, 0.0]), np.array([-0.8, 0.6, 0.0]), np.array([0.0, 0.0, 1.0])
+    s, t, u = np.meshgrid(np.linspace(-0.025, 0.025, 6), np.linspace(-0.8, 0.8, 81), np.linspace(-0.3, 0.3, 31),
+                          indexing="ij")
+    points = s.reshape(-1, 1) * n + t.reshape(-1, 1) * long + u.reshape(-1, 1) * c
+    res = set_combinations(points, [-1] * 3, [1] * 3, ["a", "b", "c"], scenario="s", set_name="strict")
+    assert res.identified and res.cut == "none" and res.curve is None
+    a, const, w, text = linear_statement(res.axes.directions[:, 0], res.axes.centre, res.axes.widths[0], coding,
+                                         ["a", "b", "c"], [False] * 3)
+    res.statement, res.equation = text, {"coefficients_search_units": [float(v) for v in a], "constant": const,
+                                         "half_width": w}
+    combos = MaterialCombinations(spec, coding, [res], [], -np.ones(3), np.ones(3))
+    assert combos.in_combination() == {"s": {"a": ["b"], "b": ["a"]}}
+    assert combos.in_combination("plausible") == {}
+    out = combos.to_json()
+    assert out["in_combination"] == {"s": {"a": ["b"], "b": ["a"]}}
+    assert "curve" not in out["sets"][0]  # a set in three factors has no band curve
+    # n . (x - 1) = 0 in actual units: 0.6 a + 0.8 b = 1.4, unit coefficients with the largest positive
+    assert out["sets"][0]["coefficients_search_units"] == pytest.approx([0.6, 0.8, 0.0], abs=1e-9)
+    assert out["sets"][0]["constant"] == pytest.approx(1.4, abs=1e-9)
+
+
+class _Function:
+    def __init__(self, f):
+        self.f = f
+
+    def predict(self, points):
+        points = np.asarray(points, dtype=float)
+        return self.f(points[:, 0], points[:, 1])
+
+
+def test_on_a_curved_band_an_observable_constant_along_it_is_0_degrees_off():
+    # y1 = b - 1.6 (a - 0.5)^2: the band b = 0.3 + 1.6 (a - 0.5)^2 (± 0.6 %) bends inside the box.  'parallel'
+    # = 2 y1 is constant along the band: its gradient is the band's normal at every point, 0 degrees off (a
+    # straight free direction would see it change); 'across' = a changes along it and is named
+    from demid.combinations import break_ridge_advice
+
+    spec = _band_spec()
+    coding = Coding(("a", "b"), (0.5, 0.5), (0.5, 0.5))
+    pts = grid(401)
+    y1 = pts[:, 1] - 1.6 * (pts[:, 0] - 0.5) ** 2
+    band = pts[np.abs(y1 - 0.3) <= 0.006]
+    res = set_combinations(coding.to_coded(band), [-1, -1], [1, 1], ["a", "b"], scenario="band", set_name="strict",
+                           step=[0.005, 0.005])
+    assert res.identified and res.cut == "none"
+    surrogates = {"y1": _Function(lambda a, b: b - 1.6 * (a - 0.5) ** 2),
+                  "parallel": _Function(lambda a, b: 2 * (b - 1.6 * (a - 0.5) ** 2)),
+                  "across": _Function(lambda a, b: a)}
+    text = break_ridge_advice(res, band, surrogates, spec, coding, ["y1"])
+    assert "across changes most along the set" in text
+    # 0 degrees up to the grid: the band's centre line is read from 401 x 401 nodes
+    import re
+
+    assert float(re.search(r"parallel (\d+)°", text).group(1)) <= 5
