@@ -36,6 +36,9 @@ def test_a_slipped_factor_value_is_moved_and_the_loo_errors_are_the_refits(seed)
     assert finding.loo_rmse_baseline == pytest.approx(_loo_rmse(table, FACTORS[2]), rel=1e-9)
     assert finding.loo_rmse_extended == pytest.approx(_loo_rmse(fixed, FACTORS[2]), rel=1e-9)
     assert finding.loo_rmse_extended < finding.loo_rmse_baseline / 3
+    # the moved value is not in the table: no lack-of-fit test is reported for the extension, never the baseline's
+    assert result.extended["lof_f"] is None and result.extended["lof_p"] is None
+    assert result.baseline["lof_f"] is not None
     ratio = _loo_rmse(fixed, FACTORS[2]) / _loo_rmse(table, FACTORS[2])
     assert result.summary == (f"y: 1 finding(s) at a family-wise 5 % level: factor_level ({planted.runs[0]}); "
                               f"together they change the leave-one-out error by {100 * (ratio - 1):+.0f} %.")
