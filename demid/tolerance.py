@@ -54,6 +54,12 @@ def relative_tolerances(spec, observables, tolerance: float) -> dict[str, float]
     return out
 
 
+def same_tolerances(tolerance: float, tolerances) -> bool:
+    """Every own tolerance in ``tolerances`` (observable -> ε_k) is the scenario's ``tolerance`` (to round-off):
+    the texts then speak of one tolerance, and weighted errors are plain relative errors."""
+    return all(abs(float(v) - tolerance) <= 1e-12 * tolerance for v in (tolerances or {}).values())
+
+
 def has_own_tolerance(spec) -> bool:
     return any(r.tolerance is not None or r.tolerance_abs is not None for r in spec.responses)
 

@@ -22,6 +22,7 @@ import pandas as pd
 from scipy import optimize
 
 from ..formulas import relative_error
+from ..tolerance import same_tolerances
 from .edges import extrapolation_warnings, touching, widen_advice
 from .messages import _level2_message
 from .models import _num
@@ -77,7 +78,7 @@ class Level2Result:
     @property
     def uniform(self) -> bool:
         """Every observable is judged at the scenario's tolerance (no own tolerance differs from it)."""
-        return all(abs(self.own_tolerance(o) - self.tolerance) <= 1e-12 * self.tolerance for o in self.observables)
+        return same_tolerances(self.tolerance, {o: self.own_tolerance(o) for o in self.observables})
 
     def within(self, errors: dict[str, float]) -> bool:
         return all(abs(e) <= self.own_tolerance(o) + 1e-12 for o, e in errors.items())
@@ -158,29 +159,35 @@ class _Level2Problem:
 
 
 def _worst(err: np.ndarray, weights: np.ndarray, shared: bool) -> np.ndarray:
-    """Largest weighted |error| w_k |e_k| per column.  With a shared bias δ (one relative bias on every
-    observable), min over δ of max_k w_k |e_k - δ|: the V-shaped terms of two observables i, j meet at
-    height w_i w_j |e_i - e_j| / (w_i + w_j), and the lowest point of their upper envelope is the highest
-    of these pairwise meetings (half the spread when the weights are equal)."""
+    """Largest weighted |error| w_k |e_k| per column; with a shared bias, what is left after the best one
+    (:func:`_shared_bias_envelope`)."""
     if not shared:
         return (weights[:, None] * np.abs(err)).max(axis=0)
-    out = np.zeros(err.shape[1])
+    return _shared_bias_envelope(err, weights)[0]
+
+
+def _shared_bias_envelope(err: np.ndarray, weights: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per column of ``err`` (observables x points), min over δ of max_k w_k |e_k - δ| and the δ attaining it,
+    for one relative bias δ shared by every observable: the V-shaped terms of two observables i, j meet at
+    height w_i w_j |e_i - e_j| / (w_i + w_j) where δ = (w_i e_i + w_j e_j) / (w_i + w_j), and the lowest point
+    of their upper envelope is the highest of these pairwise meetings (half the spread when the weights are
+    equal)."""
+    value = np.zeros(err.shape[1])
+    delta = err[0].astype(float) if len(err) else np.zeros(err.shape[1])
     for i in range(len(err)):
         for j in range(i + 1, len(err)):
             wi, wj = weights[i], weights[j]
-            out = np.maximum(out, wi * wj * np.abs(err[i] - err[j]) / (wi + wj))
-    return out
+            meet = wi * wj * np.abs(err[i] - err[j]) / (wi + wj)
+            higher = meet > value
+            value = np.where(higher, meet, value)
+            delta = np.where(higher, (wi * err[i] + wj * err[j]) / (wi + wj), delta)
+    return value, delta
 
 
 def _shared_bias(e: np.ndarray, w: np.ndarray) -> tuple[float, float]:
-    """(value, δ) of min over δ of max_k w_k |e_k - δ| at one point (see :func:`_worst`)."""
-    value, delta = 0.0, float(e[0]) if len(e) else 0.0
-    for i in range(len(e)):
-        for j in range(i + 1, len(e)):
-            v = w[i] * w[j] * abs(e[i] - e[j]) / (w[i] + w[j])
-            if v > value:
-                value, delta = float(v), float((w[i] * e[i] + w[j] * e[j]) / (w[i] + w[j]))
-    return value, delta
+    """(value, δ) of the shared bias at one point (:func:`_shared_bias_envelope`)."""
+    value, delta = _shared_bias_envelope(np.asarray(e, dtype=float)[:, None], w)
+    return float(value[0]), float(delta[0])
 
 
 def _minimax(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, rows: list[int],

@@ -142,8 +142,10 @@ def _pct(x: float) -> str:
 def level2_tolerance_text(tolerance: float, tolerances: dict[str, float] | None, brackets: bool = True) -> str:
     """"2.00 %", or with observables of their own tolerance "their own tolerances (d5 2.00 %, rho 0.33 %)"
     ("their own tolerances: d5 2.00 %, rho 0.33 %" inside brackets already)."""
+    from ..tolerance import same_tolerances
+
     own = tolerances or {}
-    if all(abs(v - tolerance) <= 1e-12 * tolerance for v in own.values()):
+    if same_tolerances(tolerance, own):
         return _pct(tolerance)
     listed = ", ".join(f"{o} {_pct(v)}" for o, v in own.items())
     return f"their own tolerances ({listed})" if brackets else f"their own tolerances: {listed}"
@@ -157,8 +159,10 @@ def level2_miss_text(errors: dict[str, float], tolerance: float, tolerances: dic
                      at_most: bool = False) -> str:
     """What follows "misses": "by 3.10 %" ("by at most 3.10 %"), or against each observable's own tolerance
     the worst relative to its tolerance: "rho by 3.10 % (9.3 times its tolerance of 0.33 %)"."""
+    from ..tolerance import same_tolerances
+
     own = {o: float((tolerances or {}).get(o, tolerance)) for o in errors}
-    if all(abs(v - tolerance) <= 1e-12 * tolerance for v in own.values()):
+    if same_tolerances(tolerance, own):
         return f"by {'at most ' if at_most else ''}{_pct(max(abs(e) for e in errors.values()))}"
     worst = max(errors, key=lambda o: abs(errors[o]) / own[o])
     return (f"{worst} by {_pct(abs(errors[worst]))} ({_times(abs(errors[worst]) / own[worst])} times its tolerance "

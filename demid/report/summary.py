@@ -100,6 +100,25 @@ def in_order(mapping: dict, names=()) -> list[tuple]:
     return [(k, mapping[k]) for k in known + rest]
 
 
+def level2_own_tolerances(level2: dict) -> dict | None:
+    """Level 2's own tolerance per observable in config order, or None when every observable is judged at
+    the scenario's (also for results written before own tolerances were recorded)."""
+    from ..tolerance import same_tolerances
+
+    own = dict(in_order(level2.get("tolerances") or {}, level2.get("observables") or ()))  # JSON sorts its keys
+    return None if same_tolerances(level2["tolerance"], own) else own
+
+
+def level2_within(level2: dict, spec, brackets: bool = True) -> str:
+    """Level 2's tolerance in words: "2 %", or each observable's own (labelled)."""
+    from ..criticism.messages import level2_tolerance_text
+
+    own = level2_own_tolerances(level2)
+    if own is None:
+        return f"{100 * level2['tolerance']:g} %"
+    return labelled(level2_tolerance_text(level2["tolerance"], own, brackets=brackets), spec)
+
+
 def labelled(text: str, spec) -> str:
     """``text`` with every factor and response key that stands as a word (``mu_s=0.9``, ``angle_of_repose
     under-predicted``) written as its configured label; keys inside a config path (``responses.d5.target``)
@@ -185,13 +204,12 @@ def criticism_lines(info: dict, spec) -> list[str]:
     lines += unreliable_surrogate_lines(info, spec)
     level2 = info.get("level2")
     if level2:
-        from ..criticism.messages import level2_miss_text, level2_tolerance_text
+        from ..criticism.messages import level2_miss_text
 
         tol = 100 * level2["tolerance"]
-        own = level2.get("tolerances")  # each observable's own tolerance (absent in older results)
-        own = own and dict(in_order(own, level2.get("observables") or ()))  # JSON sorts its keys
-        uniform = not own or all(abs(v - level2["tolerance"]) <= 1e-12 * level2["tolerance"] for v in own.values())
-        within = f"{tol:g} %" if uniform else labelled(level2_tolerance_text(level2["tolerance"], own), spec)
+        own = level2_own_tolerances(level2)
+        uniform = own is None
+        within = level2_within(level2, spec)
         best = f"{100 * level2['best_max_error']:.2f} %"
         own_miss = labelled(level2_miss_text(level2["best_errors"], level2["tolerance"], own), spec) if not uniform else ""
         if level2["feasible"]:
@@ -208,7 +226,7 @@ def criticism_lines(info: dict, spec) -> list[str]:
             lines.append(f"Reference point: largest error {100 * level2['reference_max_error']:.2f} % "
                          f"({'within' if inside else 'outside'} "
                          + (f"the {tol:g} % tolerance)." if uniform else
-                            labelled(level2_tolerance_text(level2["tolerance"], own, brackets=False), spec) + ")."))
+                            level2_within(level2, spec, brackets=False) + ")."))
         # a best point on a bound is told by the advice (demid.story), where widening can reach something
         lines += list(level2.get("extrapolation") or [])
     return lines

@@ -101,20 +101,9 @@ def _check_targets(spec, implausible: dict, ranking) -> list[AdviceItem]:
     return items
 
 
-def _level2_within(spec, level2: dict) -> str:
-    """Level 2's tolerance in words: "2 %", or each observable's own (labelled)."""
-    from ..criticism.messages import level2_tolerance_text
-    from ..report.summary import labelled
-
-    from ..report.summary import in_order
-
-    own = dict(in_order(level2.get("tolerances") or {}, level2.get("observables") or ()))  # JSON sorts its keys
-    if all(abs(v - level2["tolerance"]) <= 1e-12 * level2["tolerance"] for v in own.values()):
-        return f"{100 * level2['tolerance']:g} %"
-    return labelled(level2_tolerance_text(level2["tolerance"], own), spec)
-
-
 def _recalibrate(spec, level1: dict, level2: dict, checked: set) -> list[AdviceItem]:
+    from ..report.summary import level2_within
+
     items = []
     for r, res in (level1 or {}).items():
         if res.get("verdict") == "does_not_predict":
@@ -132,7 +121,7 @@ def _recalibrate(spec, level1: dict, level2: dict, checked: set) -> list[AdviceI
             which = (f"the target and the simulation of {_label(spec, limit)}, the observable that limits the best "
                      "match" if limit else "the targets and their simulation")
             items.append(AdviceItem(spec.name, "recalibrate", "", "", limit or "", (
-                f"No parameter set meets every target within {_level2_within(spec, level2)}: settle that first. "
+                f"No parameter set meets every target within {level2_within(level2, spec)}: settle that first. "
                 f"Check {which}.")))
     return items
 
