@@ -231,7 +231,6 @@ class ReportSections:
 
     def model_extensions(self) -> list:
         """Extending the model: a material that extends another against it (tables/model_extensions.csv)."""
-        from ..spec import MaterialSpec
         from ..story.extensions import extension_sentence
 
         table = self._csv("model_extensions.csv")
@@ -239,7 +238,7 @@ class ReportSections:
             return []
         lines = ["## Extending the model", ""]
         for row in table.fillna("").to_dict("records"):
-            spec = MaterialSpec.from_material(row["material"], self.config["materials"][row["material"]])
+            spec = self._specs()[row["material"]]
             scenario = next((sc.label for sc in spec.scenarios if sc.name == row["scenario"]), row["scenario"])
             labels = {m: self._label(m) for m in (row["material"], row["extends"])}
             lines.append("- " + extension_sentence(row, labels, {f.name: f.label for f in spec.factors}, scenario))
@@ -251,7 +250,6 @@ class ReportSections:
         Verdicts and advice are read from ``tables/verdicts.csv`` and ``tables/advice.csv`` (rule
         ``story``): the same rows level 2 and the next-wave section show."""
         from ..sampling.residuals import PLAUSIBLE_DEFINITION
-        from ..spec import MaterialSpec
         from ..story import StudyAdvice, verdict_display
         from .summary import VERDICT_TEXT, combination_lines, criticism_lines, in_order
 
@@ -263,7 +261,7 @@ class ReportSections:
         verdicts_all = self._csv("verdicts.csv")
         advice = StudyAdvice.from_frame(self._csv("advice.csv"))
         for m in self.materials:
-            spec = MaterialSpec.from_material(m, self.config["materials"][m])
+            spec = self._specs()[m]
             lines = [f"### {spec.label}", ""]
             info = self._json(self.root / "criticism" / f"{m}.json")
             unc = self._json(self.root / "uncertainty" / f"{m}.json")
@@ -425,10 +423,9 @@ class ReportSections:
             if not path.is_file():
                 continue
             scen = read_parquet(path).drop_duplicates("scenario")
-            from ..spec import MaterialSpec
             from ..tolerance import has_own_tolerance
 
-            own = has_own_tolerance(MaterialSpec.from_material(m, self.config["materials"][m]))
+            own = has_own_tolerance(self._specs()[m])
             error = ("largest relative error, each observable's against its own tolerance, expressed at the "
                      "scenario's" if own else "largest relative error")
             scenario_label = {sc.name: sc.label for sc in self._specs()[m].scenarios}
@@ -495,10 +492,9 @@ class ReportSections:
                  "catalogue of causes (a missing cubic or mixed term, a response transform, an outlying run, "
                  "run-order drift, non-constant variance) with family-wise error control; a finding is kept only "
                  "with its extension and the measured gain (leave-one-out RMSE, AICc)."]
-        from ..spec import MaterialSpec
         from .summary import VERDICT_WORDS, in_order, labelled, unreliable_surrogate_lines, verdict_sentence
 
-        spec = MaterialSpec.from_material(m, self.config["materials"][m])
+        spec = self._specs()[m]
         for response, res in in_order(info["level1"], spec.response_names):
             name = spec.response_labels.get(response, response)
             if res.get("verdict_message"):
@@ -549,10 +545,8 @@ class ReportSections:
             return []
         import json
 
-        from ..spec import MaterialSpec
-
         info = json.loads(summary.read_text(encoding="utf-8"))
-        spec = MaterialSpec.from_material(m, self.config["materials"][m])
+        spec = self._specs()[m]
         parts = [self._md("### Beyond deterministic admissibility")]
         robust = self._csv("robust_identifiability.csv")
         if robust is not None and len(robust[robust["material"] == m]):
@@ -620,7 +614,6 @@ class ReportSections:
 
     def response_surfaces(self, m: str) -> list:
         """Per response: equation (coded, actual), block ANOVA, coefficients, stationary point."""
-        from ..spec import MaterialSpec
         import json
 
         from .rsm import block_anova, canonical_text, coefficient_table, equation, stored_fits
@@ -629,7 +622,7 @@ class ReportSections:
         fits, anova = self.root / "fits" / f"{m}.parquet", self.root / "fits" / f"{m}_anova.parquet"
         if not (table.is_file() and fits.is_file() and anova.is_file()):
             return []
-        spec = MaterialSpec.from_material(m, self.config["materials"][m])
+        spec = self._specs()[m]
         letters = {f: chr(ord("A") + i) for i, f in enumerate(spec.factor_names)}
         coding = None
         fit_json = self.root / "fits" / f"{m}.json"
