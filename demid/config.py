@@ -51,31 +51,23 @@ def _check_grid_sizes(config: dict, source: str) -> None:
                              f"{most}", source=source)
 
 
-def _label_keys(mname: str, mat: dict):
-    """Every label and unit of a validated ``materials`` entry (the schema filled the absent ones)."""
-    yield f"materials.{mname}.label", mat["label"]
-    for group in ("factors", "responses"):
-        for name, item in mat[group].items():
-            for field in ("label", "unit"):
-                yield f"materials.{mname}.{group}.{name}.{field}", item[field]
-    for name, scen in mat["scenarios"].items():
-        yield f"materials.{mname}.scenarios.{name}.label", scen["label"]
-
-
 def _check_labels(config: dict, source: str) -> None:
     """Labels drawn as matplotlib mathtext ($...$, or `_`/`^` typeset by demid): a typo would only fail in a late job."""
+    from .spec import label_entries
+
     for mname, mat in config["materials"].items():
-        check_labels(mname, mat, source)
+        check_labels(label_entries(mname, mat), source)
 
 
-def check_labels(mname: str, mat: dict, source: str | None = None) -> None:
-    """One material's labels, parsed as matplotlib draws them (the workflow checks them in the material's job:
-    matplotlib's parser costs more than every other start-up check together)."""
+def check_labels(entries, source: str | None = None) -> None:
+    """One material's labels (``(config key, text)`` pairs: :meth:`MaterialSpec.label_entries`), parsed as
+    matplotlib draws them (the workflow checks them in the material's job: matplotlib's parser costs more than
+    every other start-up check together)."""
     from .plots.labels import tex_label, tex_unit
 
     # Checked as drawn: demid typesets `_` and `^` itself, so a label without `$` can become mathtext too.
     drawn = [(key, text, tex_unit(text) if key.endswith(".unit") else tex_label(text))
-             for key, text in _label_keys(mname, mat)]
+             for key, text in entries]
     math = [(key, text, shown) for key, text, shown in drawn if shown.count("$") - shown.count(r"\$") >= 2]
     if not math:
         return

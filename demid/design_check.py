@@ -14,6 +14,7 @@ from .design import (Coding, axial_distances, box_behnken_points, ccd_points, cl
                      model_matrix, model_units, quadratic_terms, rotatable_alpha, snap_to_factor_levels, term_name)
 from .errors import InputError
 from .precision import printed_quantum
+from .schema import design_with_defaults
 
 
 def _level_coding(values: np.ndarray, counts: np.ndarray, levels: np.ndarray,
@@ -58,8 +59,9 @@ def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str
                  log_factors=()) -> Coding:
     """Centre and unit per factor from the design's geometry: the placement of the declared design's
     nominal levels that puts the most runs on a level (see :func:`_level_coding`)."""
+    design = design_with_defaults(design)
     dtype = design["type"]
-    alpha = axial_distances(design.get("alpha", 1.0), len(factors))
+    alpha = axial_distances(design["alpha"], len(factors))
     z = model_units(table[factors].to_numpy(), factors, log_factors)
     if dtype == "custom":
         return Coding.from_levels(factors, z, alpha)
@@ -117,6 +119,7 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
                  log_factors=(), level_tol: float = 0.02, counts: bool = True) -> tuple[Coding, np.ndarray]:
     """Check that factor values sit on the declared design's levels, every run is a point of the design
     and (``counts``) the point counts match.  ``config_key`` None: the design came from the command line."""
+    design = design_with_defaults(design)
     args = (table, factors, design, src, config_key, log_factors, level_tol, counts)
     try:
         return _check_design(*args)
@@ -125,7 +128,7 @@ def check_design(table: pd.DataFrame, factors: list[str], design: dict, src: str
             raise  # nothing was declared: the inferred design's own refusal is the line to show
         _refuse_wrong_scale(*args)
         shown = _ccd_alpha_of_table(table, factors, log_factors) if design["type"] == "ccd" else None
-        declared = float(design.get("alpha", 1.0))
+        declared = float(design["alpha"])
         # A wrong design.alpha puts every axial run off its level: name the key, not the first such cell.
         # Counts are not required of the probe: a wrong centre-run count is said once alpha is right.
         # Printed (rounded) levels blur the design's own value (1.41432 from 4 decimals, 1.42857 from 2):
@@ -190,7 +193,7 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
                   log_factors=(), level_tol: float = 0.02, counts: bool = True) -> tuple[Coding, np.ndarray]:
     dtype = design["type"]
     k = len(factors)
-    alpha = axial_distances(design.get("alpha", 1.0), k)
+    alpha = axial_distances(design["alpha"], k)
     coding = infer_coding(table, factors, design, src, log_factors)
     z = model_units(table[factors].to_numpy(), factors, log_factors)
     coded = coding.to_coded(z)
@@ -220,7 +223,7 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
         return coding, types
     if dtype == "ccd":
         expected = {"factorial": 2 ** k, "axial": 2 * k,
-                    "center": int(design.get("center_runs", 0))}
+                    "center": int(design["center_runs"])}
         found = {t: int(np.sum(types == t)) for t in expected}
         if found["axial"] == 0:
             raise InputError(f"config key {config_key}.design: the table has no axial runs: its runs are a two-level "
@@ -242,9 +245,9 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
     elif dtype == "factorial":
         _refuse_incomplete_factorial(factors, snapped, config_key, src)
         n_center = int(np.sum(types == "center"))
-        if n_center != int(design.get("center_runs", 0)):
+        if n_center != int(design["center_runs"]):
             raise InputError(f"config key {config_key}.design.center_runs: expected "
-                             f"{design.get('center_runs', 0)} centre runs, found {n_center}", source=src)
+                             f"{design['center_runs']} centre runs, found {n_center}", source=src)
     elif dtype == "box_behnken":
         n_edge, n_center = int(np.sum(types == "edge")), int(np.sum(types == "center"))
         edges = _expected_counts(design, k)["edge"]
@@ -254,16 +257,16 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
                              "design is not a plain box_behnken; declare design type custom to fit it as it is",
                              source=src)
         _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src)
-        if n_center != int(design.get("center_runs", 0)):
+        if n_center != int(design["center_runs"]):
             raise InputError(f"config key {config_key}.design.center_runs: expected "
-                             f"{design.get('center_runs', 0)} centre runs, found {n_center}", source=src)
+                             f"{design['center_runs']} centre runs, found {n_center}", source=src)
     return coding, types
 
 
 def _design_points(design: dict, k: int) -> np.ndarray:
     """The coded non-centre points of a CCD or Box-Behnken design, each once."""
     if design["type"] == "ccd":
-        return ccd_points(k, axial_distances(design.get("alpha", 1.0), k), center_runs=0)
+        return ccd_points(k, axial_distances(design["alpha"], k), center_runs=0)
     return box_behnken_points(k, 0)
 
 
@@ -326,9 +329,10 @@ def factor_slip_warning(table: pd.DataFrame, factors: list[str], design: dict, c
     """Where runs may be left out of a table (the command line), two runs on one point beside an empty point
     are a factor value typed as another level — or a replicated point beside a run left out, which the table
     cannot tell apart: a warning, not an error."""
+    design = design_with_defaults(design)
     if design["type"] not in _DESIGN_POINTS:
         return None
-    levels = factor_levels(design["type"], design.get("alpha", 1.0), len(factors))
+    levels = factor_levels(design["type"], design["alpha"], len(factors))
     coded = coding.to_coded(model_units(table[factors].to_numpy(dtype=float), factors, log_factors))
     snapped = snap_to_factor_levels(coded, levels)
     try:
@@ -352,7 +356,7 @@ def _printed_level(table, f, j, snapped, level, coding, log_factors) -> float:
 
 
 def _n_center_text(design: dict) -> str:
-    n = int(design.get("center_runs", 0))
+    n = int(design["center_runs"])
     return f"{n} centre run{'s' if n != 1 else ''}"
 
 
@@ -383,7 +387,7 @@ _POINT_WORDS = {"factorial": "factorial", "axial": "axial", "center": "centre", 
 
 
 def _expected_counts(design: dict, k: int) -> dict[str, int]:
-    centre = int(design.get("center_runs", 0))
+    centre = int(design["center_runs"])
     if design["type"] == "ccd":
         return {"factorial": 2 ** k, "axial": 2 * k, "center": centre}
     return {"edge": 2 * k * (k - 1), "center": centre}
@@ -402,7 +406,7 @@ def _refuse_misplaced_points(table, factors, design, snapped, types, levels, cod
     i = int(bad[0])
     counts = {t: int(np.sum(types == t)) for t in allowed}
     short = {t for t, n in _expected_counts(design, len(factors)).items() if counts.get(t, 0) < n}
-    alpha = axial_distances(design.get("alpha", 1.0), len(factors))
+    alpha = axial_distances(design["alpha"], len(factors))
     repairs = []
     for j, f in enumerate(factors):
         for level in levels[j]:

@@ -58,6 +58,16 @@ def definition_with_defaults(name: str, block: dict | None) -> dict:
     return block
 
 
+def design_with_defaults(design: dict) -> dict:
+    """A copy of a ``design`` block (from the config, ``--design`` or the table's inferred geometry) with the
+    schema's defaults (``alpha``, ``center_runs``) filled in where absent; keys the schema does not know (an
+    inferred design's ``inferred`` flag) are kept."""
+    schema = load_schema()
+    design = copy.deepcopy(design)
+    _fill_defaults(design, schema["definitions"]["material"]["properties"]["design"], schema)
+    return design
+
+
 def _key_path(parts) -> str:
     return ".".join(str(p) for p in parts) or "(top level)"
 

@@ -26,6 +26,18 @@ def _axis_label(label: str, unit: str) -> str:
     return f"{label} [{unit}]" if unit and unit != "-" else label
 
 
+def label_entries(name: str, material: dict):
+    """``(config key, text)`` of every label and unit of a validated ``materials`` entry (the schema filled
+    the absent ones): what the label check parses."""
+    yield f"materials.{name}.label", material["label"]
+    for group in ("factors", "responses"):
+        for key, item in material[group].items():
+            for field in ("label", "unit"):
+                yield f"materials.{name}.{group}.{key}.{field}", item[field]
+    for key, scenario in material["scenarios"].items():
+        yield f"materials.{name}.scenarios.{key}.label", scenario["label"]
+
+
 @dataclass(frozen=True)
 class Factor:
     name: str
@@ -242,6 +254,10 @@ class MaterialSpec:
         """(run, response column) cells confirmed correct although they look like a typo, in config order."""
         items = self._material.get("confirmed_values") or []
         return tuple(dict.fromkeys((int(c["run"]), c["column"]) for c in items))
+
+    def label_entries(self):
+        """``(config key, text)`` of every label and unit of this material, as configured."""
+        return label_entries(self.name, self._material)
 
     def material_config(self) -> dict:
         """A copy of the ``materials`` entry with the schema's defaults (a wave's entry is derived from it)."""

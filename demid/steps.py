@@ -45,7 +45,7 @@ def validate_step(spec: MaterialSpec, data: str | Path, *, typo_stop: bool = Tru
     from .data import read_printed, validate_material
     from .transcription import check_material, likely_typos, refuse_likely_typos, transcription_frame
 
-    check_labels(spec.name, spec.material_config())
+    check_labels(spec.label_entries())
     validated = validate_material(spec)
     printed = read_printed(data, validated.table)
     if typo_stop:

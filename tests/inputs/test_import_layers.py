@@ -154,7 +154,7 @@ INPUT_LAYER = {
     "demid.config": {"demid.design", "demid.errors", "demid.plots.labels", "demid.published_values", "demid.schema",
                      "demid.simulation", "demid.spec", "demid.transcription.printed"},
     "demid.spec": {"demid.sampling.domain", "demid.schema"},
-    "demid.design_check": {"demid.design", "demid.errors", "demid.precision"},
+    "demid.design_check": {"demid.design", "demid.errors", "demid.precision", "demid.schema"},
     "demid.design_inference": {"demid.design", "demid.errors", "demid.precision"},
     "demid.data": {"demid.blocks", "demid.design", "demid.design_check", "demid.errors", "demid.numbers",
                    "demid.transcription.typos"},
