@@ -40,6 +40,30 @@ RESIDUAL_MISFIT_LEVEL = 0.2
 #: equal prior odds, the more probable explanation of the run is named and the other listed with it.
 SLIP_BAYES_FACTOR = 1.0
 
+#: An outlier and a slipped factor value of the same run are the same evidence at the design's levels (no further
+#: run tells them apart, messages): each is reported with the other as its alias unless the slip's Bayes factor
+#: against a shift of the run is beyond this either way -- exp(AMBIGUOUS_AICC / 2) = 20:1, the evidence ratio the
+#: ambiguity rule asks of causes the runs can tell apart.  A named slip then reads "a slipped value of run N, or
+#: an outlier of it" (in benchmarks/decide_causes.py the Bayes factors of named slips lie between 1 and 3, on
+#: planted slips and planted outliers alike).
+ONE_RUN_READINGS_BAYES_FACTOR = 20.0
+
+
+def other_reading_of_the_run(h, hypotheses) -> str | None:
+    """The other reading of the run a one-run cause h names ("outlier" for a slip, "factor_level" for an outlier
+    whose run a slip also fits), or None when the slip's Bayes factor singles one reading out
+    (ONE_RUN_READINGS_BAYES_FACTOR) or no slip of the run was fitted."""
+    slip = h if h.cause == "factor_level" else next(
+        (g for g in hypotheses if g.cause == "factor_level" and h.cause == "outlier" and g.detail.row == int(h.detail)),
+        None)
+    if slip is None or h.cause not in ("outlier", "factor_level"):
+        return None
+    factor = slip.info.get("bayes_factor", 0.0)
+    if not 1.0 / ONE_RUN_READINGS_BAYES_FACTOR < factor < ONE_RUN_READINGS_BAYES_FACTOR:
+        return None
+    return "outlier" if h.cause == "factor_level" else "factor_level"
+
+
 #: Not used as a rule: a margin between the named cause and a rival of another kind (AICc of their
 #: extensions, 2 or 0) was tried; in benchmarks/honest_causes.py it cost a tenth of the correctly named
 #: log transforms, outliers and cubic terms (the strongest test is right more often than the best AICc
