@@ -210,11 +210,14 @@ def _points_text(runs: list[dict]) -> str:
 
 
 def confirming_message(runs: list[dict]) -> str:
-    """The runs that would confirm a named cause against a rival not far behind it."""
-    rivals = [label for label in runs[0]["expected"] if label != next(iter(runs[0]["expected"]))]
-    return (f" The cause is named with a rival not far behind ({', '.join(rivals)}: the named extension's AICc leads "
-            f"by less than 10, strong but not very strong evidence): {len(runs)} more run{'s' if len(runs) > 1 else ''}"
-            f" made after these, at {_points_text(runs)}, would confirm it or correct it.")
+    """The runs that would confirm a named cause against its nearest rivals (discrimination.CONFIRM_AICC)."""
+    expected = runs[0]["expected"]
+    named = next(iter(expected))
+    rivals = [label for label in expected if label != named]
+    return (f" The runs cannot rule out every rival ({', '.join(rivals)}: fitted less well, but a misnamed cause is "
+            f"corrected only by runs that separate it from the truth): {len(runs)} more run{'s' if len(runs) > 1 else ''}"
+            f" made after these, at {_points_text(runs)}, where {named} and {'they' if len(rivals) > 1 else 'it'} "
+            f"predict most differently, would confirm it or correct it.")
 
 
 def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power: float = POWER) -> float | None:
