@@ -214,8 +214,9 @@ def confirming_message(runs: list[dict]) -> str:
     expected = runs[0]["expected"]
     named = next(iter(expected))
     rivals = [label for label in expected if label != named]
+    plural = "s" if len(runs) > 1 else ""
     return (f" The runs cannot rule out every rival ({', '.join(rivals)}: fitted less well, but a misnamed cause is "
-            f"corrected only by runs that separate it from the truth): {len(runs)} more run{'s' if len(runs) > 1 else ''}"
+            f"corrected only by runs that separate it from the truth): {len(runs)} more run{plural}"
             f" made after these, at {_points_text(runs)}, where {named} and {'they' if len(rivals) > 1 else 'it'} "
             f"predict most differently, would confirm it or correct it.")
 
