@@ -63,6 +63,39 @@ noisy end is read as a slip, a cubic term, a step or an outlier by an AICc margi
 cause is far behind; an outlier read as a slip of the same run; a step placed one run late); 3 log responses
 still level with a cubic term after four runs; one drift/step and one pair of change-points still level.
 
+Every named cause with confirming runs (against the nearest kind when none is within CONFIRM_AICC; a named term
+also against the terms the runs alias with it), and an outlier and a slipped value of the same run listed as
+each other's alias unless the slip's Bayes factor reaches 20:1 either way (a finding counts as right when the
+planted cause is its cause or among its aliases, as a planted term among a named term's aliases did before).
+n_null 499, all kinds; seeds 0-19 | seeds 20-39 (held out, not used to choose anything), before -> after:
+
+    catalogue first named            0.588 -> 0.596   | 0.579 -> 0.596
+    ambiguous with the truth         0.087 -> 0.087   | 0.096 -> 0.096
+    strict wrong (catalogue)         0.046 -> 0.037   | 0.067 -> 0.050   (any detail: 0.037 -> 0.029 | 0.050 -> 0.033)
+    wrong on off-catalogue defects   0.275 -> 0.275   | 0.200 -> 0.200
+    detection, all defects           0.809 -> 0.809   | 0.816 -> 0.816   (lack-of-fit test 0.547 | 0.572)
+    false alarms, clean tables       0.075 -> 0.075   | 0.075 -> 0.075
+    ambiguous or misnamed first      32 -> 30 tables  | 39 -> 35          (with runs proposed 25 -> 30 | 32 -> 35)
+    named after the proposed runs    0.656 -> 0.800   | 0.590 -> 0.714   (as many random runs 0.433 | 0.543)
+    right names with confirming runs 8 -> 143 tables, still right after them 0.875 -> 0.979 (random 0.979) |
+                                     11 -> 143, 1.000 -> 0.979 (random 0.979)
+
+Confirming runs for a term without the aliased terms as separate models lost a tenth of the right names (2-factor
+cubic terms renamed as the alias the new runs happened to favour: still right 0.929, random 0.972).  Tried and not
+kept: for a cause that rests on one run (an outlier, a slip, or an extension gaining less than 2 in AICc without
+that run), the unequal-scatter extension growing towards that run added to the models the runs separate (seeds
+0-19, kinds outlier, het, term: named after the runs 0.70 -> 0.60, one unequal scatter lost): the runs were spread over more pairs, and the remaining misnamed unequal-scatter tables are not a
+wild run at the noisy end (their suspect run sits at the centre, or the scatter of the other runs grows away
+from it).  The "rest of the runs" test (unequal scatter on the runs without the wildest, towards it) does not
+separate them either: at nominal p <= 0.1 it fires on 10 of 40 unequal-scatter tables, 11 of 40 clean ones, and on
+8 of 19 correctly named outliers, 18 of 30 correctly named log responses and 5 of 26 correctly named steps.
+
+What is left (seeds 0-19, 6 of 30): three unequal-scatter tables (a cubic term confirmed against a slip, a step
+whose runs leave scatter and a slip level, a cubic term and a slip ambiguous without the scatter among them), a log
+response level with a cubic term, two steps level with drift or a second change-point.  Seeds 20-39, 10 of 35:
+five unequal-scatter tables (two named as an outlier, two decided for scatter on another covariate, one
+ambiguous), three steps, two outliers level with unequal scatter.
+
     python benchmarks/decide_causes.py --reps 10 [--n-null 499] [--seed0 20] [--kinds het,outlier]
 """
 
@@ -125,8 +158,8 @@ class Truth:
 
     def right(self, cause, detail, aliases) -> bool:
         p = self.planted
-        if self.kind not in CAUSE_OF or cause != CAUSE_OF[self.kind]:
-            return False
+        if self.kind not in CAUSE_OF or (cause != CAUSE_OF[self.kind] and CAUSE_OF[self.kind] not in aliases):
+            return False  # (a cause the finding lists as its alias counts: a term aliased, a run's other reading)
         return {"term": lambda: p.term in aliases, "log": lambda: detail == "log",
                 "outlier": lambda: detail == p.run, "drift": lambda: True,
                 "het": lambda: detail == p.factor, "step": lambda: detail == self.first}[self.kind]()
@@ -173,7 +206,8 @@ def verdict_of(result, truth: Truth) -> dict:
         cause, detail, aliases = named[0]
         out["named"] = truth.right(cause, detail, aliases)
         out["wrong"] = not out["named"]
-        out["wrong_cause"] = truth.kind not in CAUSE_OF or cause != CAUSE_OF[truth.kind]
+        out["wrong_cause"] = truth.kind not in CAUSE_OF or (cause != CAUSE_OF[truth.kind]
+                                                            and CAUSE_OF[truth.kind] not in aliases)
     elif candidates:
         inside = any(truth.right(c["cause"], c["detail"], c.get("aliases") or [c["detail"]]) for c in candidates)
         out["wrong_cause"] = not any(truth.kind in CAUSE_OF and c["cause"] == CAUSE_OF[truth.kind]

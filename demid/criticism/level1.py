@@ -23,8 +23,8 @@ from .discrimination import (CONFIRM_AICC, CONFIRM_PURPOSE, PURPOSE, candidate_k
                              close_candidates, discriminating_runs)
 from .catalogue import (CAUSES, MISFIT_TESTS, slip_candidates, step_directions, _GAMMA_BOUND, _LAMBDA_FINE_GRID,
                         _NICE_LAMBDAS, _Round, _boxcox_profile)
-from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, rests_on_one_run,
-                      strongest_rival, unexplained_evidence, verdict_of)
+from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, other_reading_of_the_run,
+                      rests_on_one_run, strongest_rival, unexplained_evidence, verdict_of)
 from .messages import _CAUSE_WORDS, _message, corner_only_runs
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
                      infer_axial_distance)
@@ -304,7 +304,8 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
         both = new.predictable & model.predictable
         if findings and not new.loo_rmse_on(both) < model.loo_rmse_on(both):
             break  # a further extension must also predict left-out runs better
-        findings.append(_finding(data, response, model, h, spec, info, new, alternatives))
+        findings.append(_finding(data, response, model, h, spec, info, new, alternatives,
+                                 other_reading_of_the_run(h, rnd.hypotheses)))
         model = new
         last_round = None
         if model.df_resid - 1 < 3 or model.spec.weight_on is not None:
@@ -382,9 +383,8 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not
         (not_singled_out["cause"], not_singled_out["detail"])
     entries = _candidate_entries(data, base_model, first_round)
     close = close_candidates(entries, named=first)
-    if len(close) < 2 and findings:  # named: runs that would confirm it against a rival not far behind
-        rivals = close_candidates(entries, named=first, margin=CONFIRM_AICC)
-        return [], (_deciding_runs(data, rivals, CONFIRM_PURPOSE) if len(rivals) > 1 else [])
+    if len(close) < 2 and findings:  # named: runs that would confirm it against its nearest rivals
+        return [], _deciding_runs(data, _confirming_rivals(entries, first), CONFIRM_PURPOSE)
     if len(close) < 2:
         return [], []
     if not findings:
@@ -398,6 +398,19 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not
     return candidates, _deciding_runs(data, close, PURPOSE)
 
 
+def _confirming_rivals(entries: list[dict], named: tuple) -> list[dict]:
+    """The named cause and the rivals its confirming runs are to separate it from: every kind within
+    CONFIRM_AICC of it, or else the nearest kind however far behind (a cause misnamed by a wide margin can
+    only be corrected by runs that separate it from something; the nearest rival is the likeliest)."""
+    rivals = close_candidates(entries, named=named, margin=CONFIRM_AICC)
+    if len(rivals) > 1:
+        return rivals
+    every = close_candidates(entries, named=named, margin=math.inf)
+    anchor = [e for e in every if (e["cause"], e["detail"]) == tuple(named)]
+    others = [e for e in every if (e["cause"], e["detail"]) != tuple(named)]
+    return anchor + others[:1]
+
+
 def _deciding_runs(data: _Data, close: list[dict], purpose: str) -> list[dict]:
     """The runs that separate the causes ``close`` (each missing term together with the terms the runs alias
     with it)."""
@@ -407,7 +420,10 @@ def _deciding_runs(data: _Data, close: list[dict], purpose: str) -> list[dict]:
             models.append(mo)
             labels.append(candidate_label(c["cause"], c["detail"] if j == 0 else mo.names[len(data.base_terms)]))
             aiccs.append(c["aicc"])
-            kinds.append(candidate_kind(c["cause"], c["detail"]))
+            # confirming a named term: the runs also tell it from the terms they alias with it, or a term named
+            # right on these runs could be renamed as its alias on the new ones
+            kinds.append(candidate_kind(c["cause"], c["detail"]) if j == 0 or purpose != CONFIRM_PURPOSE
+                         else ("alias", labels[-1]))
     return discriminating_runs(data, models, labels, aiccs, kinds, purpose)
 
 
@@ -509,8 +525,9 @@ def _with_alternatives(data: _Data, fitted_alternatives: list, best: int) -> tup
 
 
 def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _Spec, info: dict, new: _Model,
-             alternatives: list[dict]) -> Finding:
-    """The finding of one round: the named cause, its gain on the same runs, and its message."""
+             alternatives: list[dict], other_reading: str | None = None) -> Finding:
+    """The finding of one round: the named cause, its gain on the same runs, and its message; ``other_reading``
+    of the same run (an outlier for a slip, a slip for an outlier) is listed as its alias."""
     if h.cause == "response_transform":
         info["lam"] = spec.lam
     if h.cause == "drift":
@@ -526,6 +543,12 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
         pts = separating_runs(data.coded[model.keep], model.mean_terms, h.detail.terms, data.alpha)
         extra_runs = [data.point_dict(p) for p in pts]
     message = _message(data, h, info, before, after, int(same.sum()), extra_runs, model)
+    if other_reading == "factor_level":
+        message += (" A slipped factor value of the same run fits it too (a Bayes factor short of 20:1 either way): no "
+                    "further run tells the two apart, the run's input does.")
+    elif other_reading == "outlier":
+        message += (f" The same evidence reads as an outlier of run {_detail_json(data, h)} (the Bayes factor of the "
+                    f"slip, {info['bayes_factor']:.1f}, is no decisive preference).")
     close = [a for a in alternatives if a["loglik_vs_named"] is not None and a["loglik_vs_named"] > -2.0]
     if close:
         message += (" Almost as likely: " + "; ".join(f"{_CAUSE_WORDS[a['cause']]} {a['detail']}" for a in close)
@@ -539,7 +562,8 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
     if alternatives:
         public_info["alternatives"] = alternatives
     return Finding(
-        response=response, cause=h.cause, detail=detail, aliases=list(h.aliases), p_value=h.p_family,
+        response=response, cause=h.cause, detail=detail,
+        aliases=list(h.aliases) + ([other_reading] if other_reading else []), p_value=h.p_family,
         p_nominal=float(np.exp(h.logp)), statistic=h.statistic, message=message,
         loo_rmse_baseline=before, loo_rmse_extended=after, delta_aicc=new.aicc - model.aicc,
         compared_runs=int(same.sum()), extra_runs=extra_runs, info=public_info)

@@ -40,6 +40,30 @@ RESIDUAL_MISFIT_LEVEL = 0.2
 #: equal prior odds, the more probable explanation of the run is named and the other listed with it.
 SLIP_BAYES_FACTOR = 1.0
 
+#: An outlier and a slipped factor value of the same run are the same evidence at the design's levels (no further
+#: run tells them apart, messages): each is reported with the other as its alias unless the slip's Bayes factor
+#: against a shift of the run is beyond this either way -- exp(AMBIGUOUS_AICC / 2) = 20:1, the evidence ratio the
+#: ambiguity rule asks of causes the runs can tell apart.  A named slip then reads "a slipped value of run N, or
+#: an outlier of it" (in benchmarks/decide_causes.py the Bayes factors of named slips lie between 1 and 3, on
+#: planted slips and planted outliers alike).
+ONE_RUN_READINGS_BAYES_FACTOR = 20.0
+
+
+def other_reading_of_the_run(h, hypotheses) -> str | None:
+    """The other reading of the run a one-run cause h names ("outlier" for a slip, "factor_level" for an outlier
+    whose run a slip also fits), or None when the slip's Bayes factor singles one reading out
+    (ONE_RUN_READINGS_BAYES_FACTOR) or no slip of the run was fitted."""
+    slip = h if h.cause == "factor_level" else next(
+        (g for g in hypotheses if g.cause == "factor_level" and h.cause == "outlier" and g.detail.row == int(h.detail)),
+        None)
+    if slip is None or h.cause not in ("outlier", "factor_level"):
+        return None
+    factor = slip.info.get("bayes_factor", 0.0)
+    if not 1.0 / ONE_RUN_READINGS_BAYES_FACTOR < factor < ONE_RUN_READINGS_BAYES_FACTOR:
+        return None
+    return "outlier" if h.cause == "factor_level" else "factor_level"
+
+
 #: Not used as a rule: a margin between the named cause and a rival of another kind (AICc of their
 #: extensions, 2 or 0) was tried; in benchmarks/honest_causes.py it cost a tenth of the correctly named
 #: log transforms, outliers and cubic terms (the strongest test is right more often than the best AICc
@@ -186,11 +210,15 @@ def _points_text(runs: list[dict]) -> str:
 
 
 def confirming_message(runs: list[dict]) -> str:
-    """The runs that would confirm a named cause against a rival not far behind it."""
-    rivals = [label for label in runs[0]["expected"] if label != next(iter(runs[0]["expected"]))]
-    return (f" The cause is named with a rival not far behind ({', '.join(rivals)}: the named extension's AICc leads "
-            f"by less than 10, strong but not very strong evidence): {len(runs)} more run{'s' if len(runs) > 1 else ''}"
-            f" made after these, at {_points_text(runs)}, would confirm it or correct it.")
+    """The runs that would confirm a named cause against its nearest rivals (discrimination.CONFIRM_AICC)."""
+    expected = runs[0]["expected"]
+    named = next(iter(expected))
+    rivals = [label for label in expected if label != named]
+    plural = "s" if len(runs) > 1 else ""
+    return (f" The runs cannot rule out every rival ({', '.join(rivals)}: fitted less well, but a misnamed cause is "
+            f"corrected only by runs that separate it from the truth): {len(runs)} more run{plural}"
+            f" made after these, at {_points_text(runs)}, where {named} and {'they' if len(rivals) > 1 else 'it'} "
+            f"predict most differently, would confirm it or correct it.")
 
 
 def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power: float = POWER) -> float | None:
