@@ -234,6 +234,7 @@ def one_table(seed: int, k: int, kind: str, size: float, n_null: int) -> dict:
     row["lof"] = bool(fit_response(truth.table, factors, "y").statistics().lof_p < 0.05)
     runs = getattr(first, "discriminating_runs", [])
     row["n_runs"] = len(runs)
+    row["runs"] = " ".join("(" + ",".join(f"{r[f]:g}" for f in factors) + ")" for r in runs)
     # ambiguous first (candidates listed, whatever the verdict's headline) or misnamed first
     needs = kind in CAUSE_OF and (bool(first.candidates) or row["first_wrong"])
     row["needs"] = needs
@@ -260,6 +261,9 @@ def main(argv=None) -> None:
     parser.add_argument("--factors", default="2,3")
     parser.add_argument("--kinds", help="only these defect kinds (comma-separated; default all)")
     parser.add_argument("--out", help="per-table rows (CSV)")
+    parser.add_argument("--verbose", action="store_true",
+                        help="print each table ambiguous or misnamed first: its first verdict, the proposed runs, "
+                             "the verdict after them")
     args = parser.parse_args(argv)
     start = time.time()
     rows = []
@@ -305,6 +309,13 @@ def main(argv=None) -> None:
     if len(sure):
         print(f"named right first with confirming runs: {len(sure)} tables; still named right after them "
               f"{sure['after_named'].mean():.3f}, after as many random runs {sure['random_named'].mean():.3f}")
+    if args.verbose and len(needs):
+        print()
+        for _, r in needs.iterrows():
+            print(f"k={r['k']} {r['kind']} seed {r['seed']}: first {r['first_verdict']} {r['first_cause']} "
+                  f"[{r['first_candidates']}] | runs {r['runs']} | after {r.get('after_verdict', '')} "
+                  f"{r.get('after_cause', '')} [{r.get('after_candidates', '')}] named {r['after_named']} | random "
+                  f"{r.get('random_cause', '')} named {r['random_named']}")
     if args.out:
         frame.to_csv(args.out, index=False)
     print(f"elapsed {time.time() - start:.0f} s")

@@ -192,12 +192,23 @@ def spread_separation(cov_a: np.ndarray, cov_b: np.ndarray) -> np.ndarray:
     return np.maximum((ab + ba - 2 * m) / 4.0, 0.0)
 
 
+def pair_progress(progress: np.ndarray) -> np.ndarray:
+    """How far the runs with each candidate point take the pairs towards deciding them (points, pairs): each
+    pair's separation over its target, capped at 1 (beyond its target a pair is decided, more separation buys
+    nothing), summed over the pairs; the least-separated pair breaks ties.  Not the maximin over pairs of
+    T-optimal designs for several models: where no one point separates every pair (steps at three change-points
+    differ each in the side of one run; a replicate of that run separates one pair and not the others) the
+    maximin spends the runs where every pair differs a little and decides none of them."""
+    return np.sum(np.minimum(progress, 1.0), axis=1) + 1e-3 * np.min(progress, axis=1)
+
+
 def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
                         aiccs: list[float] | None = None, kinds: list | None = None,
                         purpose: str = PURPOSE) -> list[dict]:
     """Up to MAX_RUNS points where the candidate models' predictions differ most relative to their
-    prediction error (T-optimal / Box-Hill: maximin over pairs of the squared Mahalanobis distance between
-    their predictions of the runs together, plus the divergence of their spreads), fewest first: the runs stop once the separation of every pair
+    prediction error (T-optimal / Box-Hill: the squared Mahalanobis distance between two models' predictions of
+    the runs together, plus the divergence of their spreads, over its target, capped and summed over the pairs:
+    pair_progress), fewest first: the runs stop once the separation of every pair
     reaches its target_separation (the pair's AICc gap ``aiccs`` included: either may be the truth).  Models
     of one ``kinds`` entry (terms aliased on these runs) are separated from the other kinds' models, not
     from each other.  The i-th run is predicted as made i runs after the last one (a drift has gone on by
@@ -215,7 +226,7 @@ def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
         parts = [_prediction_parts(m, points, later) for m in models]
         sep = np.column_stack([_joint_separation([c[1][a] for c in chosen], [c[1][b] for c in chosen],
                                                  parts[a], parts[b]) for a, b in pairs])  # (points, pairs)
-        gain = np.min(sep / target[None, :], axis=1)
+        gain = pair_progress(sep / target[None, :])
         # a point already chosen may be chosen again (a replicate), but a new point is preferred on ties
         taken = np.isin(np.arange(len(points)), [c[0] for c in chosen])
         best = int(np.lexsort((taken, -np.round(gain, 9)))[0])

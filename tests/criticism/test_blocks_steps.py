@@ -285,3 +285,38 @@ def test_report_reads_a_blocked_fit_as_the_fit_made_it():
     reduced = OLS(refits[0].y, np.delete(x, linear, axis=1)).fit()
     partial = float(reduced.ssr - refits[0].results.ssr)
     assert mine.set_index("source").loc["↳ Linear", "sum_sq"] == pytest.approx(partial, rel=1e-9)
+
+
+def _simulate_after_step(seed: int, k: int, shift: float, runs: list[dict], n: int) -> pd.DataFrame:
+    """The proposed runs as made after the table of _block_shift_table (clean ccd_table, later half shifted):
+    made after the step, every one of them carries the shift."""
+    rng = np.random.default_rng(seed)
+    factors, coding, coded, _ = design(k)
+    rng.permutation(len(coded))
+    coef = random_quadratic(rng, k)
+    new = pd.DataFrame([{f: r[f] for f in factors} for r in runs])
+    new_coded = coding.to_coded(new[factors].to_numpy(dtype=float))
+    noise = np.random.default_rng(10 ** 6 + seed).normal(size=len(new))
+    new["y"] = model_matrix(new_coded, quadratic_terms(k)) @ coef + noise + shift
+    new.insert(0, "run", np.arange(n + 1, n + 1 + len(new)))
+    return new
+
+
+def test_later_replicates_of_the_runs_between_two_change_points_tell_which_side_they_were_on():
+    """Two change-points level with each other differ only in the side of the step the runs between them fell
+    on, and so in the surface fitted near those runs' points.  A run made there after the table is after the step
+    under either reading: it repeats the level of a run between them if that run was after the step already, and
+    differs from it by the shift if not.  The proposed runs go there, and after them the planted change-point is
+    named (not "run 10 or 11": the runs' order fixes which side each run fell on, later runs measure it)."""
+    decided = []
+    for k in (2, 3):
+        for seed in range(20):
+            table, first = _block_shift_table(seed, 6.0, k, with_block=False)
+            result = criticize(table, FACTORS[k], "y", n_null=499)
+            if result.verdict != "ambiguous" or {c["cause"] for c in result.candidates} != {"step"}:
+                continue
+            new = _simulate_after_step(seed, k, 6.0, result.discriminating_runs, len(table))
+            again = criticize(pd.concat([table, new], ignore_index=True), FACTORS[k], "y", n_null=499)
+            decided.append((k, seed, first, [(f.cause, f.detail) for f in again.findings[:1]]))
+    assert len(decided) >= 3, decided
+    assert all(named == [("step", first)] for _, _, first, named in decided), decided
