@@ -22,6 +22,8 @@ random runs), 0.39 (4) and 0.47 (6) of the tables; at n_null 499, with the runs 
 confirming runs, 0.046 and 0.594 (random 0.406).  Counting the spread of the predictions (n_null 199): first
 verdicts unchanged, named after the proposed runs 0.556 -> 0.611 (two log responses level with a cubic term and
 one unequal scatter decided; one outlier no longer), right names still right after confirming runs 0.82 -> 0.91.
+Each run chosen for the progress it makes towards every pair's target, capped at the target and summed over the
+pairs (pair_progress), not for the least-separated pair's (the maximin): see benchmarks/decide_causes.py.
 """
 
 from __future__ import annotations

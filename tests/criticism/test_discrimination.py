@@ -12,7 +12,7 @@ from scipy import stats
 
 from demid.criticism import criticize, discrimination
 from demid.criticism.discrimination import (AMBIGUOUS_AICC, DECIDING_POWER, _prediction, close_candidates,
-                                            target_separation)
+                                            pair_progress, target_separation)
 from demid.criticism.level1 import _prepare
 from demid.criticism.models import _Model, _Spec
 from demid.design import model_matrix, quadratic_terms
@@ -42,6 +42,17 @@ def test_a_cause_fitted_worse_than_a_rival_of_another_kind_is_not_named_over_it(
     out = close_candidates(entries, named=("outlier", 8))
     assert [(e["cause"], e["detail"]) for e in out] == [("outlier", 8), ("step", 9), ("step", 10)]
     assert close_candidates(entries, named=("drift", "run")) == []  # the named cause was not fitted
+
+
+def test_a_run_that_decides_one_pair_is_preferred_to_one_that_moves_every_pair_a_little():
+    """Progress over target per pair (points x pairs): a point that takes one pair past its target and leaves the
+    other where it was beats one that takes both a third of the way (maximin would pick the latter and, where no
+    point separates every pair, spend every run deciding none); beyond its target a pair counts no more."""
+    progress = np.array([[3.0, 0.0], [0.3, 0.3], [1.0, 0.0], [0.9, 0.45]])
+    gain = pair_progress(progress)
+    assert gain[0] > gain[1] and gain[0] == pytest.approx(gain[2], abs=1e-2)
+    assert int(np.argmax(gain)) == 3  # 1.35 of the two targets
+    assert np.min(progress[:2], axis=1).argmax() == 1 and pair_progress(progress[:2]).argmax() == 0
 
 
 @pytest.mark.parametrize("gap", [0.0, 3.0, 10.0])
