@@ -152,20 +152,6 @@ def save_figure(fig, path: Path | str, dpi: int = FIGURE_DPI) -> None:
     plt.close(fig)
 
 
-def copy_files(pairs: dict, log: Path | str) -> None:
-    """Byte copies, source -> destination, each written atomically; what was copied goes to ``log``.
-    Paths are arguments, never a shell command line, so any character in a folder name is safe."""
-    import shutil
-
-    lines = []
-    for source, destination in pairs.items():
-        with atomic_path(destination) as tmp:
-            shutil.copyfile(source, tmp)
-        lines.append(f"{source} -> {destination}\n")
-    Path(log).parent.mkdir(parents=True, exist_ok=True)
-    Path(log).write_text("".join(lines), encoding="utf-8")
-
-
 def content_digest(path: Path | str) -> str:
     """sha256 of a file's bytes ("" when there is no such file).  Rules carry it as a parameter, so that
     an input edited at any time, even while its job runs, is seen by the next run (an edit during the

@@ -3,7 +3,7 @@ import sys
 from pathlib import Path
 
 from demid.config import check_semantics, load_yaml, validate_schema
-from demid.io import content_digest, copy_files
+from demid.io import content_digest
 from demid.data import check_table_columns
 from demid.errors import InputError
 from demid.next_wave import check_next_runs
