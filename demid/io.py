@@ -152,6 +152,49 @@ def save_figure(fig, path: Path | str, dpi: int = FIGURE_DPI) -> None:
     plt.close(fig)
 
 
+def save_figures(figures: dict, also=None) -> None:
+    """Every figure of ``figures`` ({path: figure}) as :func:`save_figure` writes it, in two processes where
+    the platform can fork (each then holds the figures already): a material's figures are independent of
+    each other and drawing them is about half of its job, so a core the other jobs leave free (while the
+    run's last job ends, or any job on a larger machine) draws half of them.  ``also`` (no arguments) runs
+    in this process meanwhile, e.g. the tables' writing.  Every figure is drawn by the same code in one
+    process, so the bytes are those of a single process."""
+    import sys
+    import traceback
+
+    items = list(figures.items())
+    if len(items) < 2 or not hasattr(os, "fork"):
+        if also is not None:
+            also()
+        for path, fig in items:
+            save_figure(fig, path)
+        return
+    ours, theirs = items[0::2], items[1::2]
+    sys.stdout.flush()
+    sys.stderr.flush()
+    pid = os.fork()
+    if pid == 0:  # the child: its share, then out without running the parent's exit handlers
+        status = 1
+        try:
+            for path, fig in theirs:
+                save_figure(fig, path)
+            status = 0
+        except BaseException:  # noqa: BLE001 - reported, and the parent fails the job
+            traceback.print_exc()
+        finally:
+            sys.stderr.flush()
+            os._exit(status)
+    try:
+        if also is not None:
+            also()
+        for path, fig in ours:
+            save_figure(fig, path)
+    finally:
+        _, status = os.waitpid(pid, 0)
+    if os.waitstatus_to_exitcode(status) != 0:
+        raise RuntimeError(f"writing {', '.join(str(p) for p, _ in theirs)} failed (the error is above)")
+
+
 def content_digest(path: Path | str) -> str:
     """sha256 of a file's bytes ("" when there is no such file).  Rules carry it as a parameter, so that
     an input edited at any time, even while its job runs, is seen by the next run (an edit during the
