@@ -169,7 +169,13 @@ def save_figures(figures: dict, also=None) -> None:
         for path, fig in items:
             save_figure(fig, path)
         return
-    ours, theirs = items[0::2], items[1::2]
+    # shared out by area, largest first to the side with less so far (a figure's cost grows with its size);
+    # this process, which also writes the tables, takes the smaller share when they are equal
+    ours, theirs, area = [], [], [0.0, 0.0]
+    for path, fig in sorted(items, key=lambda item: -float(np.prod(item[1].get_size_inches()))):
+        side = 1 if area[1] <= area[0] else 0
+        (theirs if side else ours).append((path, fig))
+        area[side] += float(np.prod(fig.get_size_inches()))
     sys.stdout.flush()
     sys.stderr.flush()
     pid = os.fork()

@@ -224,7 +224,7 @@ def test_figures_drawn_in_two_processes_are_the_bytes_of_one(tmp_path):
         def draw(self, renderer):
             raise ValueError("cannot draw")
 
-    with pytest.raises(RuntimeError, match="b.png"):  # the second figure goes to the other process
+    with pytest.raises(RuntimeError, match="b.png"):  # the larger figure goes to the other process
         save_figures({tmp_path / "a.png": draw(0), tmp_path / "b.png": Broken()})
 
 
