@@ -14,7 +14,7 @@ times swing by a factor of two between runs; CPU seconds are steadier but also i
 
 - 54f7080 -> cc18223 (paper figures copied by ``cp``, not a second Snakemake; figures drawn in two
   processes; OpenBLAS on one thread per job; the report's kernel stopped at once; lighter imports).
-  ``--runs 3 --against 54f7080`` (load 6 falling to 0.8 while it ran, so the base met the calmer
+  ``--runs 3 --against 54f7080`` at 38268f2 (load 6 falling to 0.8 while it ran, so the base met the calmer
   machine): clean-run CPU 36.2 -> 31.8 s (0.88), wall 47.7 -> 48.5 s; dry run 1.57 -> 1.69 CPU s (noise).
   Clean runs alternating base and this commit (same load for both): at load ~5, wall 58.7 -> 48.4 s,
   CPU 37.3 -> 32.2 s; at load 1-2.5, wall 30.5 -> 28.5 s, CPU 34.1 -> 29.0 s (0.85); the calmest pair
