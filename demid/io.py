@@ -152,18 +152,53 @@ def save_figure(fig, path: Path | str, dpi: int = FIGURE_DPI) -> None:
     plt.close(fig)
 
 
-def copy_files(pairs: dict, log: Path | str) -> None:
-    """Byte copies, source -> destination, each written atomically; what was copied goes to ``log``.
-    Paths are arguments, never a shell command line, so any character in a folder name is safe."""
-    import shutil
+def save_figures(figures: dict, also=None) -> None:
+    """Every figure of ``figures`` ({path: figure}) as :func:`save_figure` writes it, in two processes where
+    the platform can fork (each then holds the figures already): a material's figures are independent of
+    each other and drawing them is about half of its job, so a core the other jobs leave free (while the
+    run's last job ends, or any job on a larger machine) draws half of them.  ``also`` (no arguments) runs
+    in this process meanwhile, e.g. the tables' writing.  Every figure is drawn by the same code in one
+    process, so the bytes are those of a single process."""
+    import sys
+    import traceback
 
-    lines = []
-    for source, destination in pairs.items():
-        with atomic_path(destination) as tmp:
-            shutil.copyfile(source, tmp)
-        lines.append(f"{source} -> {destination}\n")
-    Path(log).parent.mkdir(parents=True, exist_ok=True)
-    Path(log).write_text("".join(lines), encoding="utf-8")
+    items = list(figures.items())
+    if len(items) < 2 or not hasattr(os, "fork"):
+        if also is not None:
+            also()
+        for path, fig in items:
+            save_figure(fig, path)
+        return
+    # shared out by area, largest first to the side with less so far (a figure's cost grows with its size);
+    # this process, which also writes the tables, takes the smaller share when they are equal
+    ours, theirs, area = [], [], [0.0, 0.0]
+    for path, fig in sorted(items, key=lambda item: -float(np.prod(item[1].get_size_inches()))):
+        side = 1 if area[1] <= area[0] else 0
+        (theirs if side else ours).append((path, fig))
+        area[side] += float(np.prod(fig.get_size_inches()))
+    sys.stdout.flush()
+    sys.stderr.flush()
+    pid = os.fork()
+    if pid == 0:  # the child: its share, then out without running the parent's exit handlers
+        status = 1
+        try:
+            for path, fig in theirs:
+                save_figure(fig, path)
+            status = 0
+        except BaseException:  # noqa: BLE001 - reported, and the parent fails the job
+            traceback.print_exc()
+        finally:
+            sys.stderr.flush()
+            os._exit(status)
+    try:
+        if also is not None:
+            also()
+        for path, fig in ours:
+            save_figure(fig, path)
+    finally:
+        _, status = os.waitpid(pid, 0)
+    if os.waitstatus_to_exitcode(status) != 0:
+        raise RuntimeError(f"writing {', '.join(str(p) for p, _ in theirs)} failed (the error is above)")
 
 
 def content_digest(path: Path | str) -> str:

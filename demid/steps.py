@@ -213,16 +213,17 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
 
 def write_material_analysis(result: MaterialAnalysis, out) -> None:
     """Write a material's outputs to the paths ``out`` names (a Snakemake rule's ``output``, by name)."""
-    from .io import save_figure, write_csv, write_json, write_parquet
+    from .io import save_figures, write_csv, write_json, write_parquet
 
-    for name, frame in result.parquet.items():
-        write_parquet(frame, getattr(out, name))
-    for name, frame in result.csv.items():
-        write_csv(frame, getattr(out, name))
-    for name, document in result.json.items():
-        write_json(document, getattr(out, name))
-    Path(out.criticism).mkdir(parents=True, exist_ok=True)
-    for response, document in result.responses.items():
-        write_json(document, Path(out.criticism) / f"{response}.json")
-    for name, figure in result.figures.items():
-        save_figure(figure, getattr(out, name))
+    def tables():
+        for name, frame in result.parquet.items():
+            write_parquet(frame, getattr(out, name))
+        for name, frame in result.csv.items():
+            write_csv(frame, getattr(out, name))
+        for name, document in result.json.items():
+            write_json(document, getattr(out, name))
+        Path(out.criticism).mkdir(parents=True, exist_ok=True)
+        for response, document in result.responses.items():
+            write_json(document, Path(out.criticism) / f"{response}.json")
+
+    save_figures({getattr(out, name): figure for name, figure in result.figures.items()}, also=tables)

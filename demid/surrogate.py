@@ -195,13 +195,14 @@ def predict_all(surrogates: dict[str, Surrogate], points, chunk: int = 65_536) -
             groups.setdefault(key, []).append(name)
         else:
             out[name] = sur.predict(points)
+    points = np.asarray(points, dtype=float)
+    points = points.reshape(1, -1) if points.ndim == 1 else points
     for names in groups.values():
         first = surrogates[names[0]]
-        z = first.model_units(points)
         for name in names:
-            out[name] = np.empty(z.shape[0])
-        for start in range(0, z.shape[0], chunk):
-            matrix = model_matrix(z[start:start + chunk], first.terms)
+            out[name] = np.empty(points.shape[0])
+        for start in range(0, points.shape[0], chunk):  # model units a chunk at a time: no copy of all points
+            matrix = model_matrix(first.model_units(points[start:start + chunk]), first.terms)
             for name in names:
                 out[name][start:start + chunk] = matrix @ surrogates[name].coefficients
     return {name: out[name] for name in surrogates}

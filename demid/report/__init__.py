@@ -1,14 +1,25 @@
 """Cross-material tables and the HTML report.
 
 ``tables`` (the CSVs under tables/), ``sections`` (the report's text, read by the
-notebook) and ``render`` (papermill execution and HTML).
+notebook) and ``render`` (papermill execution and HTML).  Names are imported from their
+submodule on first use (PEP 562): the report job's own process only executes and renders the
+notebook (the kernel builds the sections), so it does not import pandas and the sections for nothing.
 """
 
-from .render import execute_report, render_html
-from .sections import ReportSections, markdown_table
-from .tables import (IDENTIFIABILITY_COLUMNS, SURROGATE_FIT_COLUMNS, TRANSCRIPTION_COLUMNS, identifiability_table,
-                     pareto_intervals, stack_material_tables, summary_tables, surrogate_fit_table)
+from importlib import import_module
 
-__all__ = ["IDENTIFIABILITY_COLUMNS", "SURROGATE_FIT_COLUMNS", "TRANSCRIPTION_COLUMNS", "ReportSections",
-           "execute_report", "identifiability_table", "markdown_table", "pareto_intervals", "render_html",
-           "stack_material_tables", "summary_tables", "surrogate_fit_table"]
+_WHERE = {
+    "execute_report": "render", "render_html": "render",
+    "ReportSections": "sections", "markdown_table": "sections",
+    "IDENTIFIABILITY_COLUMNS": "tables", "SURROGATE_FIT_COLUMNS": "tables", "TRANSCRIPTION_COLUMNS": "tables",
+    "identifiability_table": "tables", "pareto_intervals": "tables", "stack_material_tables": "tables",
+    "summary_tables": "tables", "surrogate_fit_table": "tables",
+}
+
+__all__ = sorted(_WHERE)
+
+
+def __getattr__(name: str):
+    if name in _WHERE:
+        return getattr(import_module(f".{_WHERE[name]}", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -69,7 +69,9 @@ def _drop_run_details(path: str | Path) -> None:
 def _execute(pm, notebook, output, results_dir, config_json) -> None:
     pm.execute_notebook(str(notebook), str(output), parameters={"results_dir": results_dir,
                                                                   "config_json": config_json},
-                        kernel_name="python3", progress_bar=False, log_output=False, cwd=str(Path.cwd()))
+                        kernel_name="python3", progress_bar=False, log_output=False, cwd=str(Path.cwd()),
+                        # every output is in by then: a graceful shutdown only waits for the kernel to exit
+                        shutdown_kernel="immediate")
 
 
 def render_html(notebook: str | Path, output: str | Path) -> None:

@@ -104,9 +104,7 @@ class Domain:
 
     def grid(self, n: int) -> np.ndarray:
         """All grid nodes in actual units, shape (n**d, d), 'ij' (C) order."""
-        axes = self.axes(n)
-        out = np.empty((n ** self.dim, self.dim))
-        for i, ax in enumerate(axes):
-            inner = n ** (self.dim - i - 1)
-            out[:, i] = np.tile(np.repeat(ax, inner), n ** i)
-        return out
+        out = np.empty((n,) * self.dim + (self.dim,))
+        for i, ax in enumerate(self.axes(n)):  # broadcast along the other axes: no tiled copies
+            out[..., i] = ax.reshape([n if j == i else 1 for j in range(self.dim)])
+        return out.reshape(n ** self.dim, self.dim)

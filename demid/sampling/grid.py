@@ -32,7 +32,7 @@ def predict_grid(surrogates: dict[str, Surrogate], domain: Domain, n: int) -> pd
     from ..surrogate import predict_all
 
     points = domain.sample(n)
-    frame = pd.DataFrame(points, columns=list(domain.factors))
+    frame = pd.DataFrame(points, columns=list(domain.factors), copy=False)  # the points are this frame's own
     for name, values in predict_all(surrogates, points).items():
         frame[name] = values
     return frame

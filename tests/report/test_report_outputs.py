@@ -191,6 +191,43 @@ def test_figures_are_png_at_300_dpi_and_svg_byte_identical_on_rerun(tmp_path):
     assert "<dc:date>" not in svg and "Matplotlib v" not in svg
 
 
+def test_figures_drawn_in_two_processes_are_the_bytes_of_one(tmp_path):
+    """save_figures shares the figures out over a forked process: every file is written, byte for byte
+    what save_figure writes alone, the tables' writer runs meanwhile, and a figure that cannot be drawn in
+    the other process fails the call (it is not silently missing)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    from demid.io import save_figure, save_figures
+
+    def draw(k):
+        fig = Figure(figsize=(2, 1.5))
+        ax = fig.subplots()
+        ax.plot([0, 1], [k, 0], label=f"line {k}")
+        ax.set_xlabel(tex_label("μ_r,Po"))
+        ax.legend()
+        return fig
+
+    alone, shared = tmp_path / "alone", tmp_path / "shared"
+    for k in range(5):
+        save_figure(draw(k), alone / f"f{k}.png")
+    written = []
+    save_figures({shared / f"f{k}.png": draw(k) for k in range(5)}, also=lambda: written.append("tables"))
+    assert written == ["tables"]
+    for k in range(5):
+        for suffix in (".png", ".svg"):
+            assert (shared / f"f{k}{suffix}").read_bytes() == (alone / f"f{k}{suffix}").read_bytes()
+
+    class Broken(Figure):
+        def draw(self, renderer):
+            raise ValueError("cannot draw")
+
+    with pytest.raises(RuntimeError, match="b.png"):  # the larger figure goes to the other process
+        save_figures({tmp_path / "a.png": draw(0), tmp_path / "b.png": Broken()})
+
+
 @pytest.mark.parametrize("log_factor", [False, True])
 def test_stored_fit_prints_what_a_refit_prints(log_factor):
     """The report reads the fits the fit step stored (parquet round trip) instead of fitting again:
