@@ -68,8 +68,8 @@ def start_nodes(domain: Domain) -> np.ndarray:
     return domain.to_unit(domain.grid(21 if domain.dim <= 3 else 5))
 
 
-def _closest_approach(surrogates: dict, domain: Domain, observables, targets: dict[str, float],
-                      start: np.ndarray | None) -> tuple[float, np.ndarray]:
+def closest_approach(surrogates: dict, domain: Domain, observables, targets: dict[str, float],
+                     start: np.ndarray | None) -> tuple[float, np.ndarray]:
     """min over the domain of max_k |relative residual| (Nelder-Mead in unit coordinates from
     ``start``, actual units, or the best node of a small grid)."""
     from scipy import optimize
@@ -128,7 +128,7 @@ def _evaluate_set(surrogates, domain, observables, targets, tolerance, n, predic
     best_error, best_point = base.best_error, base.best_point
     if exact.fraction <= 0:
         # closest approach of an empty set (the grid node, polished by a local search)
-        best_error, best_point = _closest_approach(surrogates, domain, observables, targets,
+        best_error, best_point = closest_approach(surrogates, domain, observables, targets,
                                                    best_point if len(best_point) else None)
         if np.isfinite(base.best_error) and base.best_error < best_error:
             best_error, best_point = base.best_error, base.best_point

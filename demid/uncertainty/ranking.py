@@ -11,7 +11,7 @@ import numpy as np
 import pandas as pd
 
 from ..sampling import uses_grid
-from ..sampling.evaluate import _closest_approach, relative_errors, start_nodes
+from ..sampling.evaluate import closest_approach, relative_errors, start_nodes
 from ..sampling.grid import predict_grid
 from ..spec import join_observables
 from .posterior import NO_OBSERVABLE, subset_posteriors
@@ -143,7 +143,7 @@ def reachable_targets(surrogates: dict[str, Surrogate], domain: Domain, observab
         if fractions[o] > 0:
             out[o] = True
             continue
-        closest, _ = _closest_approach(surrogates, domain, (o,), targets, None)
+        closest, _ = closest_approach(surrogates, domain, (o,), targets, None)
         out[o] = bool(closest <= tolerance * (1 + 1e-9))
     return out
 
