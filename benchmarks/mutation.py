@@ -25,6 +25,35 @@ by hand, not in CI (the default sample took ~35 min on a loaded two-core machine
 
 The module -> tests table below is by file path: when a module moves, update its
 row (path, functions, tests) and nothing else.
+
+Survivors that only change a setting of a numerical search (how many local starts, the
+resolution of the grid they start from) are listed in :data:`SETTINGS`: left out of the
+score like equivalent mutants, but printed apart, with the score counting them as survivors.
+
+Measured (seed 14, ``--per-module N``: the same N mutants per module before and after the
+tests named; score = killed / (run - equivalent - settings); "before, same lists": the before
+run scored with the equivalent and settings lists of the after run):
+
+    module                      N   before (as run)   before, same lists   after
+    criticism/level2.py         20  12/19   63.2 %    12/16   75.0 %       16/16  100 %
+    sampling/evaluate.py        20  14/17   82.4 %    14/14  100 %         14/14  100 %
+    next_wave.py                20  15/19   78.9 %    15/17   88.2 %       17/17  100 %
+    criticism/catalogue.py      20  12/20   60.0 %    12/18   66.7 %       18/18  100 %
+    uncertainty/posterior.py    15  11/15   73.3 %    11/14   78.6 %       14/14  100 %
+    pareto.py                   15   7/15   46.7 %     7/13   53.8 %       13/13  100 %
+    uncertainty/robust.py       15   6/15   40.0 %     6/12   50.0 %       12/12  100 %
+    surrogate.py                15  12/13   92.3 %    12/12  100 %         12/12  100 %
+    total                      140  89/133  66.9 %    89/116  76.7 %      116/116 100 %
+
+Five of the 140 are search settings (level2: 2, evaluate: 3); counting them as survivors the
+after score is 116/121 = 95.9 %.  Before: the tests of commit 54f7080; after: with
+tests/criticism/test_catalogue_known_answers.py and the known answers added to the level-1,
+level-2, next-wave, Pareto, uncertainty, reported-numbers and quadrature tests.  The audit's
+hand-written mutants of reported numbers (Box-Cox lambda interval, an unexplained verdict's
+family p, the 2-D fraction's error, the closest approach of an empty set, the typo screen's
+degrees of freedom and prediction error, reachability), redone as 13 string edits, one of them
+equivalent (the grid's closest approach never beats the local search started from it), were
+9/12 killed before and 12/12 after.
 """
 
 from __future__ import annotations
@@ -463,6 +492,9 @@ EQUIVALENT: dict[str, str] = {
         "scipy's L-BFGS-B broadcasts a single (lower, upper) pair to every coordinate (checked with scipy 1.17.1)",
     "demid/uncertainty/robust.py::robust_admissible_set::observables = tuple(observables) => pass#0":
         "plausibility_fields takes any sequence, and admissible_set turns observables into a tuple itself",
+    "demid/uncertainty/robust.py::summarise_set::z == 0 and n % 2 == 1 => n % 2 == 1#0":
+        "grid predictions only reach summarise_set with z = 0: tolerance_sweep makes them only for strict sets, "
+        "and the ranking asks for no error",
     "demid/uncertainty/robust.py::robust_identifiability_frame::float(tolerance) => tolerance#0":
         "every caller passes a float tolerance (the schema's number): the column is the same float",
     "demid/surrogate.py::SurrogateFit.fitted_exactly::self.hat_diag >= LEVERAGE_UNPREDICTABLE => "
@@ -490,7 +522,7 @@ SETTINGS: dict[str, str] = {
 }
 
 # Files and folders copied into the private tree the mutants are written to.
-COPY = ["demid", "tests", "data", "scripts", "workflow", "config.yaml", "Snakefile", "pyproject.toml"]
+COPY = ["demid", "tests", "data", "demo", "scripts", "workflow", "config.yaml", "Snakefile", "pyproject.toml"]
 
 SWAP_COMPARE = {ast.Lt: ast.LtE, ast.LtE: ast.Lt, ast.Gt: ast.GtE, ast.GtE: ast.Gt, ast.Eq: ast.NotEq,
                 ast.NotEq: ast.Eq, ast.Is: ast.IsNot, ast.IsNot: ast.Is, ast.In: ast.NotIn, ast.NotIn: ast.In}

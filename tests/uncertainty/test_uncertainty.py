@@ -490,3 +490,18 @@ def test_robust_identifiability_frame_known_answers():
                                                  sigma={"y1": 0.02, "y2": 0.02}, strict_sets={"both": grid})
     assert_allclose(regridded["strict_fraction_pct"], 100 * exact.fraction, rtol=1e-12)
     assert (regridded["method"] == EXACT_METHOD).all()
+
+
+def test_an_even_grid_sweep_errors_are_those_of_the_set_alone():
+    """The fraction's error is estimated on the odd grid (n rounded up), which an even n's predictions do not
+    fill: the sweep's errors at an even n are those of the set computed alone.  (A surrogate linear in b on a
+    log10 b axis is no polynomial of the search units, so the grid judges the set.)"""
+    domain = Domain(("a", "b"), (0.0, 1.0), (1.0, 10.0), (False, True))
+    sur = {"y": linear(0.0, [1.0, 0.1])}
+    frame = unc.tolerance_sweep(sur, domain, {"s": (["y"], 0.1)}, {"y": 0.8}, [0.05], 40)
+    for eps in (0.05, 0.1):
+        alone = unc.summarise_set(sur, domain, ("y",), {"y": 0.8}, eps, 40, polish=False)
+        rows = frame[frame["tolerance"] == eps]
+        assert_allclose(rows["fraction_error_pct"], 100 * alone.error, rtol=1e-12)
+        assert_allclose(rows["feasible_fraction_pct"], 100 * alone.fraction, rtol=1e-12)
+        assert alone.error > 0
