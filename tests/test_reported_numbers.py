@@ -526,6 +526,37 @@ def test_ambiguous_message_quotes_the_largest_aicc_gap_and_the_deciding_runs():
     assert "1 more run made after these, at (a=0.5, b=-1.25), would decide" in text
 
 
+@pytest.mark.parametrize("verdict", ["does_not_predict", "defect", "adequate"])
+def test_the_verdict_message_joins_the_ambiguity_or_the_confirming_runs(monkeypatch, verdict):
+    """A surrogate that does not predict keeps its verdict and adds the ambiguity after a space; any other verdict
+    with candidates becomes 'ambiguous' with that message alone; a named defect with a rival close behind adds the
+    runs that would confirm it."""
+    from types import SimpleNamespace
+
+    from demid.criticism import verdict as v
+
+    monkeypatch.setattr(v, "_verdict", lambda *a: (verdict, {"message": "y: base."}))
+    monkeypatch.setattr(v, "unpredictable_runs_message", lambda fit: "")
+    data = SimpleNamespace(response="y")
+    candidates = [{"cause": "missing_term", "detail": "a^3", "delta_aicc": 0.0},
+                  {"cause": "response_transform", "detail": "boxcox", "delta_aicc": 1.37}]
+    runs = [{"a": 0.5, "b": -1.25, "purpose": "x", "expected": {"missing_term": 1.0, "drift": 2.0}}]
+    ambiguous = v.ambiguous_message("y", candidates, runs)
+    got, detail = v.verdict_of(data, None, [], None, [], 0.05, candidates, runs)
+    if verdict == "does_not_predict":
+        assert (got, detail["message"]) == (verdict, "y: base. " + ambiguous)
+    else:
+        assert (got, detail["message"]) == ("ambiguous", ambiguous)
+    got, detail = v.verdict_of(data, None, [], None, [], 0.05, (), runs)
+    if verdict == "defect":
+        assert detail["message"] == (
+            "y: base. The cause is named with a rival not far behind (drift: the named extension's AICc leads by less "
+            "than 10, strong but not very strong evidence): 1 more run made after these, at (a=0.5, b=-1.25), would "
+            "confirm it or correct it.")
+    else:
+        assert detail["message"] == "y: base."
+
+
 def test_next_measurement_advice_quotes_the_gains_and_fractions_of_the_ranking():
     """The advice reads the ranking's numbers: the best first measurement with its gain and fraction, the
     gain of each added measurement (from → to), the fraction's contraction, the runner-up's gain and the
