@@ -286,3 +286,45 @@ def test_runs_off_a_thin_plausible_set_are_labelled_so(monkeypatch):
     assert (on | off | (wave.runs["purpose"] == PURPOSE_SUPPORT)).all()
     assert (rel[on] <= 0.002 + 1e-9).all() and (rel[off] > 0.002).all()  # the labels say where each run is
     assert f"{int(off.sum())} off the band" in wave.reason
+
+
+@pytest.mark.parametrize("count", [1, 2])
+def test_separation_takes_the_runs_it_needs_even_all_of_them(count):
+    """Earlier runs on the 3 x 3 grid and a band of 3-level points leave b^3 aliased with a^2:b: one run must
+    separate them, so with one run to propose it is that run, with two a band run and that run; never more
+    runs than asked for."""
+    members = ((0, 3), (2, 1))
+    lo, hi = np.array([0.0, 10.0]), np.array([2.0, 30.0])
+    grid = np.array([[a, b] for a, b in product((0.0, 1.0, 2.0), (10.0, 20.0, 30.0))])
+    points, labels = propose_runs(lo, hi, grid, count, [(members, ["y"])], plausible=grid)
+    assert len(points) == count and len(labels) == count
+    assert labels[-1] == (members, ["y"]) and labels[:-1] == ["band"] * (count - 1)
+
+    def coded(p):
+        return (p - (lo + hi) / 2) / ((hi - lo) / 2)
+
+    assert not _independent(coded(np.vstack([grid, points[:-1]])), list(members))
+    assert _independent(coded(np.vstack([grid, points])), list(members))
+
+
+def test_the_reason_lists_the_factors_whose_range_narrows_and_counts_the_earlier_runs_inside():
+    """With a margin of half the range the annulus' box keeps the whole range of b and narrows a at its upper
+    end only: the reason names a alone, with the box's ends, and counts the earlier runs inside the box
+    (counted here from the table).  A margin covering every edge keeps the range and says so."""
+    table, surrogates, spec, robust = _annulus_material(margin=0.5)
+    wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
+    box = wave.domain.set_index("factor")
+    assert box.loc["b", "lower"] == 0.0 and box.loc["b", "upper"] == 1.0 and box.loc["a", "lower"] == 0.0
+    a_hi = box.loc["a", "upper"]
+    assert a_hi == pytest.approx(CENTRE[0] + R0 * np.sqrt(1 + EPS) + 0.5, abs=2e-3)
+    inside = int((table["a"].between(0.0, a_hi) & table["b"].between(0.0, 1.0)).sum())
+    assert inside < len(table)  # premise: the box leaves some earlier runs out
+    assert wave.reason.startswith(f"Refocused on the plausible set of scenario 'y' (y) with a margin of 0.5 of "
+                                  f"the range: a 0–{a_hi:.4g}; 9 new runs from a D-optimal quadratic design "
+                                  f"given the {inside} earlier run(s) inside the box: ")
+    table, surrogates, spec, robust = _annulus_material(margin=0.7)
+    kept = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
+    assert kept.domain[["lower", "upper"]].to_numpy().tolist() == [[0.0, 1.0], [0.0, 1.0]]
+    assert kept.reason.startswith("The plausible set of scenario 'y' (y) reaches (within the margin) every edge of "
+                                  f"the current range, so the range is kept; 9 new runs from a D-optimal quadratic "
+                                  f"design given the {len(table)} earlier run(s) inside the box: ")

@@ -97,3 +97,48 @@ def test_a_four_factor_front_is_refined_to_the_known_optimum():
     # the sampled front alone is far from it (the premise of the refinement)
     raw = sampled.intervals.set_index("factor")
     assert raw.loc["x3", "upper"] - raw.loc["x3", "lower"] > 0.01 or raw.loc["x2", "upper"] > 0.01
+
+
+@pytest.mark.parametrize("best_x1", [0.3, 0.7])
+def test_every_polished_front_point_is_the_optimum_at_its_error(best_x1):
+    """y1 = 10 + 10 x1 against the target 15 (error e = |10 x1 - 5| / 15) and y3 = 100 + 10 x2 + 10 (x1 - b)^2
+    + 5 (x3 - 0.4)^2 + 5 (x4 - 0.6)^2 on [0, 1]^4, b = 0.3 (under-predicting y1 pays) or 0.7 (over-predicting
+    does): at error e the least y3 is 100 + 10 (0.2 - 1.5 e)^2, up to the front's end at e = 2/15, where y3 = 100.
+    Every polished point lies on that curve, the front runs from e = 0 to its end, and its columns are the
+    factors, the error and the objective."""
+    from demid.design import quadratic_terms
+    from demid.pareto import polish_front
+    from demid.sampling.domain import Domain
+    from demid.sampling.grid import predict_grid
+    from demid.surrogate import Surrogate
+
+    names, terms = ["x1", "x2", "x3", "x4"], quadratic_terms(4)
+    first = np.zeros(len(terms))
+    first[[0, 1]] = [10.0, 10.0]
+    second = np.zeros(len(terms))  # Intercept, x1..x4, six interactions, x1^2..x4^2
+    second[[0, 1, 2, 3, 4]] = [100 + 10 * best_x1 ** 2 + 0.8 + 1.8, -20 * best_x1, 10.0, -4.0, -6.0]
+    second[-4:] = [10.0, 0.0, 5.0, 5.0]
+    surrogates = {y: Surrogate(y, names, terms, c, np.zeros((len(terms), len(terms))), 0.0, 30)
+                  for y, c in (("y1", first), ("y3", second))}
+    domain = Domain(tuple(names), (0.0,) * 4, (1.0,) * 4)
+    grid = predict_grid(surrogates, domain, 4096)
+    sampled = pareto_analysis(grid, names, "y1", 15.0, "y3", 0.02)
+    front = polish_front(surrogates, domain, names, "y1", 15.0, "y3", 0.02, sampled.front)
+    assert list(front.columns) == [*names, "error", "objective"]
+    e = front["error"].to_numpy()
+    assert np.all(e <= 2 / 15 * (1 + 1e-6))  # the polish meets each cap to a millionth
+    assert front["objective"].to_numpy() == pytest.approx(100 + 10 * (0.2 - 1.5 * e) ** 2, abs=1e-5)
+    assert e.min() <= 0.02 / 20 + 1e-12 and e.max() == pytest.approx(2 / 15, abs=1e-6)  # first cap: 0.02 / 20
+    x1 = front["x1"].to_numpy()
+    side = -1.0 if best_x1 < 0.5 else 1.0
+    assert x1 == pytest.approx(0.5 + side * 1.5 * e, abs=1e-5)
+    # beyond the cap the front is polished at 20 even steps up to its end, found by the polish itself when the
+    # sampled front stops short of it
+    short = sampled.front[sampled.front["error"] <= 0.05]
+    assert short["error"].max() < 0.06
+    tail = polish_front(surrogates, domain, names, "y1", 15.0, "y3", 0.02, short)
+    e = np.sort(tail["error"].to_numpy())
+    assert e.max() == pytest.approx(2 / 15, abs=1e-5)  # the end as L-BFGS-B finds the least y3
+    assert np.all(np.diff(e[e >= 0.02]) <= (2 / 15 - 0.02) / 20 + 1e-6)
+    assert tail["objective"].to_numpy() == pytest.approx(100 + 10 * (0.2 - 1.5 * tail["error"].to_numpy()) ** 2,
+                                                         abs=1e-5)

@@ -138,6 +138,39 @@ def test_typo_flag_prediction_and_its_error_from_the_other_runs(tmp_path, seed):
     assert full.outlier_test(method="bonf")[i, 2] < 0.05
 
 
+@pytest.mark.parametrize("seed", range(2))
+def test_typo_screen_flags_at_the_bonferroni_p_with_n_minus_p_minus_1_degrees_of_freedom(tmp_path, seed):
+    """A run is screened when its Bonferroni p (statsmodels' outlier test: n times the two-sided t tail with
+    n - p - 1 degrees of freedom) is below the family level: a level just above the slipped run's p flags it,
+    one just below does not."""
+    from demid.data import read_printed, validate_material
+    from demid.design import model_matrix, model_units, quadratic_terms
+    from demid.transcription import likely_typos
+
+    from .helpers import make_ccd_table
+    from .transcription.test_likely_typos import _cfg
+
+    table = make_ccd_table(lambda x: {"y": 100 + 20 * x[:, 0] - 3 * x[:, 1] + 8 * x[:, 0] ** 2},
+                           [0.1, 1], [0.9, 11], noise=3.0, seed=seed, decimals=2)
+    true_value = table.loc[table["run"] == 5, "y"].iloc[0]
+    path = tmp_path / "t.csv"
+    table.to_csv(path, index=False)
+    lines = [ln if not ln.startswith("5,") else ",".join(ln.split(",")[:-1] + [f"{true_value / 10:.3f}"])
+             for ln in path.read_text().splitlines()]
+    path.write_text("\n".join(lines) + "\n")
+    vt = validate_material(_cfg(path))
+    data = vt.table
+    x = model_matrix(vt.coding.to_coded(model_units(data[["x1", "x2"]].to_numpy(float), ["x1", "x2"], ())),
+                     quadratic_terms(2))
+    i = int(np.flatnonzero(data["run"].to_numpy() == 5)[0])
+    p_bonf = float(sm.OLS(data["y"].to_numpy(float), x).fit().outlier_test(method="bonf")[i, 2])
+    assert 1e-12 < p_bonf < 0.5  # premise: a p the screen's tail (absolute error ~1e-16) computes to 2 %
+    printed = read_printed(path, vt.table)
+    flagged = likely_typos(vt, _cfg(path), printed, family_alpha=p_bonf * 1.02)
+    assert [f["run"] for f in flagged] == [5]
+    assert likely_typos(vt, _cfg(path), printed, family_alpha=p_bonf / 1.02) == []
+
+
 # --------------------------------------------------------------------------- the verdict's numbers
 def _lack_of_fit_p(table, factors, response="y"):
     """Lack of fit against the replicated runs: the quadratic against the cell-means model (statsmodels)."""
@@ -491,6 +524,37 @@ def test_ambiguous_message_quotes_the_largest_aicc_gap_and_the_deciding_runs():
     assert "missing term a^3 and response transform explain" in text
     assert "lie within 1.4 of each other" in text
     assert "1 more run made after these, at (a=0.5, b=-1.25), would decide" in text
+
+
+@pytest.mark.parametrize("verdict", ["does_not_predict", "defect", "adequate"])
+def test_the_verdict_message_joins_the_ambiguity_or_the_confirming_runs(monkeypatch, verdict):
+    """A surrogate that does not predict keeps its verdict and adds the ambiguity after a space; any other verdict
+    with candidates becomes 'ambiguous' with that message alone; a named defect with a rival close behind adds the
+    runs that would confirm it."""
+    from types import SimpleNamespace
+
+    from demid.criticism import verdict as v
+
+    monkeypatch.setattr(v, "_verdict", lambda *a: (verdict, {"message": "y: base."}))
+    monkeypatch.setattr(v, "unpredictable_runs_message", lambda fit: "")
+    data = SimpleNamespace(response="y")
+    candidates = [{"cause": "missing_term", "detail": "a^3", "delta_aicc": 0.0},
+                  {"cause": "response_transform", "detail": "boxcox", "delta_aicc": 1.37}]
+    runs = [{"a": 0.5, "b": -1.25, "purpose": "x", "expected": {"missing_term": 1.0, "drift": 2.0}}]
+    ambiguous = v.ambiguous_message("y", candidates, runs)
+    got, detail = v.verdict_of(data, None, [], None, [], 0.05, candidates, runs)
+    if verdict == "does_not_predict":
+        assert (got, detail["message"]) == (verdict, "y: base. " + ambiguous)
+    else:
+        assert (got, detail["message"]) == ("ambiguous", ambiguous)
+    got, detail = v.verdict_of(data, None, [], None, [], 0.05, (), runs)
+    if verdict == "defect":
+        assert detail["message"] == (
+            "y: base. The cause is named with a rival not far behind (drift: the named extension's AICc leads by less "
+            "than 10, strong but not very strong evidence): 1 more run made after these, at (a=0.5, b=-1.25), would "
+            "confirm it or correct it.")
+    else:
+        assert detail["message"] == "y: base."
 
 
 def test_next_measurement_advice_quotes_the_gains_and_fractions_of_the_ranking():

@@ -22,6 +22,23 @@ def _loo_rmse(table, factors, response="y") -> float:
     return float(np.sqrt(np.mean(loo ** 2)))
 
 
+def _prediction_t(table, fixed, run, moved) -> float:
+    """(y_i - x_i b) / (s sqrt(1 + x_i (X'X)^-1 x_i')) with b, s and X from the quadratic fitted to the other
+    runs, x_i the run's row at its recorded (or moved) factor values: its externally studentised residual."""
+    def rows(frame):
+        a, b = (frame[f].to_numpy(dtype=float) for f in FACTORS[2])
+        return np.column_stack([np.ones(len(a)), a, b, a * a, a * b, b * b])
+
+    i = int(np.flatnonzero(table["run"].to_numpy() == run)[0])
+    x, y = rows(table), table["y"].to_numpy(dtype=float)
+    others = np.arange(len(y)) != i
+    inv = np.linalg.inv(x[others].T @ x[others])
+    beta = inv @ x[others].T @ y[others]
+    s = np.sqrt(np.sum((y[others] - x[others] @ beta) ** 2) / (others.sum() - x.shape[1]))
+    row = rows(fixed if moved else table)[i]
+    return float((y[i] - row @ beta) / (s * np.sqrt(1 + row @ inv @ row)))
+
+
 @pytest.mark.parametrize("seed", [2, 3])
 def test_a_slipped_factor_value_is_moved_and_the_loo_errors_are_the_refits(seed):
     table, planted = off_catalogue_table(seed, 2, "slip", factor="gamma", rows=(3,))
@@ -36,6 +53,9 @@ def test_a_slipped_factor_value_is_moved_and_the_loo_errors_are_the_refits(seed)
     assert finding.loo_rmse_baseline == pytest.approx(_loo_rmse(table, FACTORS[2]), rel=1e-9)
     assert finding.loo_rmse_extended == pytest.approx(_loo_rmse(fixed, FACTORS[2]), rel=1e-9)
     assert finding.loo_rmse_extended < finding.loo_rmse_baseline / 3
+    # the run's prediction from the other runs, in standard errors, at the recorded and at the moved value
+    assert finding.info["t_recorded"] == pytest.approx(_prediction_t(table, fixed, planted.runs[0], False), rel=1e-7)
+    assert finding.info["t_moved"] == pytest.approx(_prediction_t(table, fixed, planted.runs[0], True), rel=1e-7)
     # the moved value is not in the table: no lack-of-fit test is reported for the extension, never the baseline's
     assert result.extended["lof_f"] is None and result.extended["lof_p"] is None
     assert result.baseline["lof_f"] is not None

@@ -51,3 +51,27 @@ def test_error_estimate_bounds_the_true_error_on_each_owner():
     total, error = _integrate(func, [0, 1, 2], [0.0] * 3, [1.0] * 3, 3, rtol=1e-9)
     assert np.all(np.abs(total[:, 0] - exact) <= error + 1e-15)
     assert np.all(error <= 1e-8 * exact)
+
+
+@pytest.mark.parametrize("target, tolerance", [(0.04, 0.5), (0.09, 0.2)])
+def test_a_two_factor_fraction_error_adds_both_integrations_estimates_and_their_difference(target, tolerance):
+    """In two factors the set is integrated twice, along each axis (each with its Gauss-Kronrod estimate, checked
+    above): the fraction is the first integral, its error the sum of both estimates and of the difference between
+    the two integrals.  The annulus y = (a - 1/2)^2 + (b - 1/2)^2 within a tolerance of t has the area
+    pi t 2 tolerance: both integrals lie within their own estimates of it."""
+    from demid.design import quadratic_terms
+    from demid.sampling import Domain
+    from demid.sampling.evaluate import evaluate_set
+    from demid.surrogate import Surrogate
+
+    coef = np.array([0.5, -1.0, -1.0, 0.0, 1.0, 1.0])  # Intercept, a, b, a:b, a^2, b^2
+    sur = Surrogate("y", ["a", "b"], quadratic_terms(2), coef, np.zeros((6, 6)), 0.0, 7)
+    domain = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0), (False, False))
+    exact = evaluate_set({"y": sur}, domain, ("y",), {"y": target}, tolerance, 101).exact
+    (along0,), (err0,) = exact._shape.integral(0)
+    (along1,), (err1,) = exact._shape.integral(1)
+    area = np.pi * target * 2 * tolerance
+    assert abs(along0 - area) <= err0 + 1e-15 and abs(along1 - area) <= err1 + 1e-15
+    assert err0 > 0 and err1 > 0 and along0 != along1  # premise: every part of the sum counts
+    assert exact.fraction == along0
+    assert exact.fraction_error == pytest.approx(err0 + err1 + abs(along0 - along1), rel=1e-12, abs=0.0)

@@ -233,6 +233,47 @@ def test_log_factor_posterior_quantiles_in_actual_units():
     assert post.mean[1] == pytest.approx(10.0 ** -1.0 * np.exp((0.2 * np.log(10)) ** 2 / 2), rel=1e-4)
 
 
+def test_log_factor_marginal_is_tabulated_at_actual_values():
+    """The marginal table gives a log factor's axis in actual units (10 ** the log10 grid) and its density per
+    log10 unit: here the normal density of sd 0.2 around -1 (the bounds lie 10 sd away)."""
+    domain = Domain(("a", "b"), (0.0, 1e-3), (1.0, 1e1), (False, True))
+    sur = {"y": quadratic([0.0, 0.0, 1.0], ("a", "b"), log_factors=("b",))}
+    post = unc.grid_posterior(sur, domain, ["y"], {"y": -1.0}, {"y": 0.2}, 201)
+    frame = post.marginal_frame()
+    b = frame[frame["factor"] == "b"]
+    assert_allclose(b["value"], 10.0 ** np.linspace(-3.0, 1.0, 201), rtol=1e-12)
+    assert_allclose(b["density"], stats.norm(-1.0, 0.2).pdf(np.linspace(-3.0, 1.0, 201)), rtol=1e-3, atol=1e-9)
+    assert_allclose(frame.loc[frame["factor"] == "a", "value"], np.linspace(0.0, 1.0, 201), rtol=1e-12)
+
+
+def test_gaussian_loglik_is_the_normal_log_density_with_the_surrogates_error():
+    """log N(y*; yhat(x), sigma^2 + se(x)^2), against scipy's normal log density."""
+    sur = linear(0.5, [2.0, -1.0], variance_intercept=0.09)
+    points = np.array([[0.0, 0.0], [0.3, 0.8], [1.0, 0.1]])
+    scale = np.sqrt(0.4 ** 2 + sur.se_mean(points) ** 2)
+    assert_allclose(unc.gaussian_loglik(sur, points, 1.2, 0.4),
+                    stats.norm(sur.predict(points), scale).logpdf(1.2), rtol=1e-12)
+
+
+def test_qmc_posterior_draws_the_requested_number_of_points_in_eight_scrambles(monkeypatch):
+    """Above three factors the posterior weighs sobol_points prior points: 8 scrambles of sobol_points / 8."""
+    from scipy.stats import qmc
+
+    drawn = []
+    base2 = qmc.Sobol.random_base2
+
+    def spy(self, m):
+        drawn.append(m)
+        return base2(self, m)
+
+    monkeypatch.setattr(qmc.Sobol, "random_base2", spy)
+    factors = ("a", "b", "c", "d")
+    domain = Domain(factors, (0.0,) * 4, (1.0,) * 4)
+    sur = {"y": linear(2.0, [3.0, 0.0, 0.0, 0.0], 0.25, factors)}
+    unc.subset_posteriors(sur, domain, ["y"], {"y": 3.0}, {"y": 1.5}, 11, sobol_points=2 ** 12)
+    assert drawn == [9] * 8  # 2^9 = 2^12 / 8
+
+
 def test_zero_variance_likelihood_is_rejected():
     with pytest.raises(ValueError, match="sigma"):
         unc.grid_posterior({"y": ring([0.5, 0.5])}, SQUARE, ["y"], {"y": 0.1}, {"y": 0.0}, 21)
@@ -406,3 +447,61 @@ def test_analyse_material_four_factors_uses_sobol():
     assert row["robust_fraction_pct"] == row["strict_fraction_pct"]  # exact surrogate: no se_mean
     assert row["strict_upper"] == pytest.approx(0.5 + np.sqrt(0.09 * 1.5), abs=1e-6)
     assert "Sobol" in result.notes[2] and result.ranking["information_gain_bits"].iloc[0] > 0
+
+
+def test_robust_identifiability_frame_known_answers():
+    """y1 = a and y2 = b with targets 0.5 at 10 %: the strict set is the box [0.45, 0.55]^2 (1 % of the unit
+    square, widths 0.1); with sigma = 0.02 and no surrogate error the plausible band is 0.5 +- 2 sigma, the box
+    [0.46, 0.54]^2 (0.64 %, widths 0.08).  Fractions and their errors are in percent; a strict set handed in is
+    reported as it is when exact, recomputed exactly when it is a grid set."""
+    from dataclasses import replace
+
+    from demid.sampling.evaluate import EXACT_METHOD, evaluate_set
+
+    surrogates = {"y1": linear(0.0, [1.0, 0.0]), "y2": linear(0.0, [0.0, 1.0])}
+    surrogates["y2"].response = "y2"
+    targets, scenarios = {"y1": 0.5, "y2": 0.5}, {"both": (["y1", "y2"], 0.1)}
+    two = unc.robust_identifiability_frame(surrogates, SQUARE, {"a": (["y1"], 0.1), **scenarios}, targets, 41,
+                                           z=2.0, sigma={"y1": 0.02, "y2": 0.02})
+    assert list(two.index) == [0, 1, 2, 3]  # one row per scenario and factor, numbered through
+    frame = two[two["scenario"] == "both"].reset_index(drop=True)
+    assert_allclose(frame["strict_fraction_pct"], 1.0, rtol=1e-6)
+    assert_allclose(frame[["strict_lower", "strict_upper", "strict_width"]].to_numpy(), [[0.45, 0.55, 0.1]] * 2,
+                    atol=1e-9)
+    assert_allclose(frame[["robust_lower", "robust_upper", "robust_width"]].to_numpy(), [[0.46, 0.54, 0.08]] * 2,
+                    atol=1e-6)
+    robust = unc.summarise_set(surrogates, SQUARE, ("y1", "y2"), targets, 0.1, 41, z=2.0,
+                               sigma={"y1": 0.02, "y2": 0.02})
+    assert frame["robust_fraction_pct"].iloc[0] == pytest.approx(100 * robust.fraction, rel=1e-12)
+    assert frame["robust_fraction_error_pct"].iloc[0] == pytest.approx(100 * robust.error, rel=1e-12)
+    assert 0 < robust.error and abs(robust.fraction - 0.0064) <= robust.error + 1e-9
+    exact = evaluate_set(surrogates, SQUARE, ("y1", "y2"), targets, 0.1, 41)
+    assert frame["strict_fraction_error_pct"].iloc[0] == pytest.approx(100 * exact.fraction_error, rel=1e-12)
+    assert frame["method"].iloc[0] == EXACT_METHOD
+    # an exact strict set handed in is the one reported (here marked by a fraction of its own)
+    marked = replace(exact, fraction=0.02)
+    given = unc.robust_identifiability_frame(surrogates, SQUARE, scenarios, targets, 41, z=2.0,
+                                             sigma={"y1": 0.02, "y2": 0.02}, strict_sets={"both": marked})
+    assert_allclose(given["strict_fraction_pct"], 2.0, rtol=1e-12)
+    # a grid set on the same grid is not: the exact set is computed
+    grid = unc.admissible_set(surrogates, SQUARE, ("y1", "y2"), targets, 0.1, 41)
+    assert grid.exact is None
+    regridded = unc.robust_identifiability_frame(surrogates, SQUARE, scenarios, targets, 41, z=2.0,
+                                                 sigma={"y1": 0.02, "y2": 0.02}, strict_sets={"both": grid})
+    assert_allclose(regridded["strict_fraction_pct"], 100 * exact.fraction, rtol=1e-12)
+    assert (regridded["method"] == EXACT_METHOD).all()
+
+
+def test_an_even_grid_sweep_errors_are_those_of_the_set_alone():
+    """The fraction's error is estimated on the odd grid (n rounded up), which an even n's predictions do not
+    fill: the sweep's errors at an even n are those of the set computed alone.  (A surrogate linear in b on a
+    log10 b axis is no polynomial of the search units, so the grid judges the set.)"""
+    domain = Domain(("a", "b"), (0.0, 1.0), (1.0, 10.0), (False, True))
+    sur = {"y": linear(0.0, [1.0, 0.1])}
+    frame = unc.tolerance_sweep(sur, domain, {"s": (["y"], 0.1)}, {"y": 0.8}, [0.05], 40)
+    for eps in (0.05, 0.1):
+        alone = unc.summarise_set(sur, domain, ("y",), {"y": 0.8}, eps, 40, polish=False)
+        rows = frame[frame["tolerance"] == eps]
+        assert_allclose(rows["fraction_error_pct"], 100 * alone.error, rtol=1e-12)
+        assert_allclose(rows["feasible_fraction_pct"], 100 * alone.fraction, rtol=1e-12)
+        assert alone.error > 0
