@@ -152,6 +152,20 @@ def save_figure(fig, path: Path | str, dpi: int = FIGURE_DPI) -> None:
     plt.close(fig)
 
 
+def copy_files(pairs: dict, log: Path | str) -> None:
+    """Byte copies, source -> destination, each written atomically; what was copied goes to ``log``.
+    Paths are arguments, never a shell command line, so any character in a folder name is safe."""
+    import shutil
+
+    lines = []
+    for source, destination in pairs.items():
+        with atomic_path(destination) as tmp:
+            shutil.copyfile(source, tmp)
+        lines.append(f"{source} -> {destination}\n")
+    Path(log).parent.mkdir(parents=True, exist_ok=True)
+    Path(log).write_text("".join(lines), encoding="utf-8")
+
+
 def save_figures(figures: dict, also=None) -> None:
     """Every figure of ``figures`` ({path: figure}) as :func:`save_figure` writes it, in two processes where
     the platform can fork (each then holds the figures already): a material's figures are independent of

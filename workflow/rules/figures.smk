@@ -1,5 +1,6 @@
-# A byte copy of a figure, by `cp` in Snakemake's own process: a `run:` job, local or not, is started as a
-# second Snakemake, which parses and validates the whole workflow again (2-3 s of a core) to copy two files.
+# A byte copy of a figure, by a short script: a `run:` job, local or not, is started as a second Snakemake,
+# which parses and validates the whole workflow again (2-3 s of a core) to copy two files; and no rule runs a
+# shell (paths, results_dir among them, may hold spaces or `$(...)`).
 localrules:
     paper_figure,
 
@@ -25,7 +26,5 @@ rule paper_figure:
         "logs/figures/{paper_figure}_{material}.log",
     benchmark:
         "benchmarks/figures/{paper_figure}_{material}.tsv"
-    shell:
-        # every path quoted (:q): results_dir may hold spaces or `$(...)`, which reach cp as text only
-        "cp -v -- {input.figure:q} {output.figure:q} > {log:q} && "
-        "cp -v -- {input.figure_svg:q} {output.figure_svg:q} >> {log:q}"
+    script:
+        "../../scripts/copy_figure.py"
