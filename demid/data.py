@@ -26,6 +26,7 @@ from .design import Coding, factor_levels, model_matrix, model_units, quadratic_
 from .design_check import check_design, odd_level_values, require_estimable
 from .errors import InputError
 from .numbers import unusable_number
+from .precision import PRINTED_PLACE, printed_place
 
 if TYPE_CHECKING:
     from .spec import Factor, MaterialSpec
@@ -294,6 +295,8 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
         raise InputError("the table has a header but no runs", source=src)
     table = pd.DataFrame.from_records(records)
     table = table.sort_values("run", kind="stable").reset_index(drop=True)
+    # the design check judges a level within the print's own rounding, which only the text shows
+    table.attrs[PRINTED_PLACE] = {col: printed_place(row[idx[col]] for row in rows) for col in factors}
     return table, warnings
 
 

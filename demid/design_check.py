@@ -13,18 +13,20 @@ import pandas as pd
 from .design import (Coding, axial_distances, box_behnken_points, ccd_points, classify_points, factor_levels,
                      model_matrix, model_units, quadratic_terms, rotatable_alpha, snap_to_factor_levels, term_name)
 from .errors import InputError
-from .precision import printed_quantum
+from .precision import PRINTED_PLACE, printed_quantum
 from .schema import design_with_defaults
 
 
 def _level_coding(values: np.ndarray, counts: np.ndarray, levels: np.ndarray,
-                  tol: float = 0.02) -> tuple[float, float] | None:
+                  tol: float = 0.02, half_place: float = 0.0) -> tuple[float, float] | None:
     """Centre and unit that put the most runs on the nominal ``levels`` (coded units).
 
     Every pair of distinct values is tried against every pair of levels; ties go to the most
     symmetric placement (lowest and highest level found equally far from the centre), then the narrowest.  A single
     mistyped cell sits on no level, so it cannot move the coding; no value is privileged by how
-    often it occurs (a 3x3 factorial or a CCD with one centre run is coded like any other).
+    often it occurs (a 3x3 factorial or a CCD with one centre run is coded like any other).  ``half_place``
+    (half the column's printed place, where the text is known) widens ``tol`` per level as the check does
+    (:func:`_level_tolerance`), so that a coarse print's rounded levels still place the coding.
     """
     best, best_key = None, None
     for i, j in combinations(range(len(values)), 2):
@@ -33,7 +35,8 @@ def _level_coding(values: np.ndarray, counts: np.ndarray, levels: np.ndarray,
             centre = values[i] - unit * levels[a]
             coded = (values - centre) / unit
             nearest = np.abs(coded[:, None] - levels[None, :]).argmin(axis=1)
-            on = np.abs(coded - levels[nearest]) <= tol
+            level_tol = _print_tolerance(tol, half_place, unit, levels)
+            on = np.abs(coded - levels[nearest]) <= level_tol[nearest]
             # Last, the narrowest placement: three values of a CCD factor are its factorial levels and the
             # centre (a CCD has no factor without factorial points), not its axial levels.
             key = (int(counts[on].sum()), -round(abs(coded[on].max() + coded[on].min()), 6), int(on.sum()),
@@ -69,7 +72,8 @@ def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str
     centers, units = [], []
     for i, f in enumerate(factors):
         values, counts = np.unique(_round_to_scale(z[:, i], 11), return_counts=True)
-        found = _level_coding(values, counts, levels[i]) if len(values) > 1 else None
+        half_place = 0.0 if f in log_factors else 0.5 * _text_place(table, f)
+        found = _level_coding(values, counts, levels[i], half_place=half_place) if len(values) > 1 else None
         if found is None:
             raise InputError(f"the factor takes the single value {values[0]:g} in every run; a {dtype} design "
                              "varies each factor over at least two levels", source=src, column=f)
@@ -171,14 +175,35 @@ def _said(design: dict) -> str:
     return "inferred" if design.get("inferred") else "declared"
 
 
-def _level_tolerance(values: np.ndarray, unit: float, level_tol: float, log_scale: bool) -> float:
-    """Coded distance within which a value of one factor reads as a level: ``level_tol`` of that factor's coded
-    unit, or half the last printed digit of its column where printing rounded more than that (a CCD's axial
-    level 0.851 printed as 0.85).  Log-scale factors keep ``level_tol``: their print is in other units."""
+def _text_place(table: pd.DataFrame, column: str) -> float:
+    """The place of the finest digit the column prints, as read from the table's text (0: not read from text)."""
+    return float(table.attrs.get(PRINTED_PLACE, {}).get(column, 0.0))
+
+
+def _print_tolerance(level_tol: float, half_place: float, unit: float, levels: np.ndarray) -> np.ndarray:
+    """Per nominal level, the coded distance a print's rounding allows: the coding is read from printed values
+    too (the centre run, the factorial pair), so half a printed place moves the value, the centre and, times
+    the level's distance from the centre, the unit."""
+    levels = np.abs(np.asarray(levels, dtype=float))
+    if not half_place or not unit:
+        return np.full(levels.shape, level_tol)
+    return np.maximum(level_tol, half_place / abs(unit) * (2.0 + levels))
+
+
+def _level_tolerance(table: pd.DataFrame, column: str, unit: float, level_tol: float, log_scale: bool,
+                     levels: np.ndarray) -> np.ndarray:
+    """Per nominal level, the coded distance within which a value of one factor reads as that level: ``level_tol``
+    of the factor's coded unit, or what the print's rounding allows where it rounded more than that (a CCD's
+    axial level 0.851 printed as 0.85).  Read from the text where the table was (:func:`_print_tolerance`);
+    otherwise half the last digit the values show, a float having lost its trailing zeros.  Log-scale factors
+    keep ``level_tol``: their print is in other units."""
     if log_scale or not unit:
-        return level_tol
-    quantum = printed_quantum(values)
-    return max(level_tol, 0.5 * float(np.max(quantum, initial=0.0)) / abs(unit))
+        return np.full(np.shape(levels), level_tol)
+    place = _text_place(table, column)
+    if place:
+        return _print_tolerance(level_tol, 0.5 * place, unit, levels)
+    quantum = printed_quantum(table[column].to_numpy(dtype=float))
+    return np.full(np.shape(levels), max(level_tol, 0.5 * float(np.max(quantum, initial=0.0)) / abs(unit)))
 
 
 def _passes(*args) -> bool:
@@ -202,10 +227,10 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
     levels_of = factor_levels(dtype, alpha, k)
     for i, f in enumerate(factors):
         levels = levels_of[i]
-        tolerance = _level_tolerance(table[f].to_numpy(dtype=float), coding.unit[i], level_tol, f in log_factors)
+        tolerance = _level_tolerance(table, f, coding.unit[i], level_tol, f in log_factors, levels)
         for r, c in zip(table["run"], coded[:, i]):
             dist = np.abs(levels - c)
-            if dist.min() > tolerance:
+            if not np.any(dist <= tolerance):
                 nearest = levels[np.argmin(dist)]
                 near_actual = coding.to_actual(np.where(np.arange(len(factors)) == i, nearest, 0.0))[i]
                 if f in log_factors:

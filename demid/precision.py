@@ -10,6 +10,27 @@ from __future__ import annotations
 import numpy as np
 
 
+#: ``DataFrame.attrs`` key of a table read from text: per factor column, the place of the finest digit its cells
+#: print (trailing zeros kept, which a float loses: 0.900000 is printed to 1e-6, not to 0.1).
+PRINTED_PLACE = "printed_place"
+
+
+def printed_place(cells) -> float:
+    """The place of the finest digit any of ``cells`` (strings as printed) shows: 1e-6 for 0.900000, 1 for 83,
+    1e-4 for 1.5e-3, 100 for 1.2E+3; 0 when no cell is a number."""
+    from decimal import Decimal, InvalidOperation
+
+    exponents = []
+    for cell in cells:
+        try:
+            exponent = Decimal(str(cell).strip().replace("\u2212", "-")).as_tuple().exponent
+        except InvalidOperation:
+            continue
+        if isinstance(exponent, int):
+            exponents.append(exponent)
+    return float(10.0 ** min(exponents)) if exponents else 0.0
+
+
 def printed_quantum(y) -> np.ndarray:
     """Per value, the place of its last printed digit (1e-4 for 10.1235; 0 throughout when some value carries
     more than 12 significant digits): the rounding a printed table adds to it is at most half of that.

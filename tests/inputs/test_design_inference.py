@@ -215,3 +215,53 @@ def test_a_box_behnken_cell_off_its_level_is_refused_naming_the_inferred_design(
     assert proc.returncode == 2 and proc.stderr.count("\n") == 1, proc.stderr
     assert re.search(rf"run {int(table['run'].iloc[row])}, column 'x1': value 0\.56 is not a level of the inferred "
                      r"box_behnken design \(coded \+0\.300\); nearest valid level: 0\.5", proc.stderr), proc.stderr
+
+
+def _print_factors_as_integers(path, names):
+    table = pd.read_csv(path)
+    table[names] = table[names].round().astype(int)
+    path.write_text(table.to_csv(index=False, float_format="%.9f"))
+
+
+@pytest.mark.parametrize("seed", range(6))
+@pytest.mark.parametrize("kind", ["ccd", "box_behnken", "factorial"])
+def test_levels_printed_to_few_digits_of_the_factors_unit_validate_without_design(tmp_path, seed, kind):
+    """Every factor cell printed to whole units where a factor's coded unit is only 5-9 of them: the centre and
+    the factorial levels are rounded too, so the coding read from them is off by up to half a digit at each end
+    and an axial level by up to (2 + alpha) half digits.  Such a table is the design as printed, not a slip."""
+    rng = np.random.default_rng(seed)
+    k = 2 + seed % 2 if kind != "box_behnken" else 3
+    coded = {"ccd": lambda: ccd_points(k, (2 ** k) ** 0.25, 5), "box_behnken": lambda: box_behnken_points(3, 3),
+             "factorial": lambda: _full_factorial(k, (-1.0, 0.0, 1.0))}[kind]()
+    centre, unit = rng.uniform(50, 150, k), rng.uniform(5, 9, k)
+    path, names, _ = _plant(tmp_path, coded, centre, unit, seed, decimals=0)
+    _print_factors_as_integers(path, names)
+    out = tmp_path / "c.json"
+    proc = _cli("criticize", "--data", str(path), "--factors", ",".join(names), "--response", "y", "--out", str(out))
+    assert proc.returncode == 0, proc.stderr
+    family = {"ccd": "central composite", "box_behnken": "Box-Behnken", "factorial": "full factorial"}[kind]
+    assert family in proc.stderr
+    assert json.loads(out.read_text())["verdict"] == "adequate"  # the exact quadratic of the printed cells
+
+
+def test_the_same_levels_printed_with_trailing_zeros_are_held_to_that_print(tmp_path):
+    """The rounding allowed is the print's, read from the text: levels that are whole numbers but printed to
+    nine decimals are not rounded, so a factorial level a unit off its place is refused."""
+    coded = ccd_points(2, 1.41421, 5)
+    path, names, _ = _plant(tmp_path, coded, np.array([107.4, 64.3]), np.array([5.9, 8.2]), seed=3, decimals=0)
+    proc = _cli("fit", "--data", str(path), "--factors", "x1,x2", "--responses", "y", "--out", str(tmp_path / "f"))
+    assert proc.returncode == 2 and "is not a level of the inferred" in proc.stderr, proc.stderr
+    _print_factors_as_integers(path, names)
+    proc = _cli("fit", "--data", str(path), "--factors", "x1,x2", "--responses", "y", "--out", str(tmp_path / "f"))
+    assert proc.returncode == 0, proc.stderr
+
+
+def test_a_slipped_cell_is_still_refused_where_levels_are_printed_to_few_digits(tmp_path):
+    coded = ccd_points(2, 1.41421, 5)
+    path, names, _ = _plant(tmp_path, coded, np.array([107.4, 64.3]), np.array([5.9, 8.2]), seed=3, decimals=0)
+    _print_factors_as_integers(path, names)
+    table = pd.read_csv(path)
+    run = _set(table, table.x1 == table.x1.max(), "x1", table.x1.max() + 3)  # half a coded unit off its level
+    path.write_text(table.to_csv(index=False))
+    proc = _cli("fit", "--data", str(path), "--factors", "x1,x2", "--responses", "y", "--out", str(tmp_path / "f"))
+    assert proc.returncode == 2 and re.search(rf"runs? (\d+ and )?{run}\b[^:]*, column 'x1'", proc.stderr), proc.stderr

@@ -157,7 +157,7 @@ INPUT_LAYER = {
     "demid.design_check": {"demid.design", "demid.errors", "demid.precision", "demid.schema"},
     "demid.design_inference": {"demid.design", "demid.errors", "demid.precision"},
     "demid.data": {"demid.blocks", "demid.design", "demid.design_check", "demid.errors", "demid.numbers",
-                   "demid.transcription.typos"},
+                   "demid.precision", "demid.transcription.typos"},
     "demid.transcription": {"demid.transcription.check", "demid.transcription.printed", "demid.transcription.typos"},
     "demid.transcription.printed": {"demid.design", "demid.errors", "demid.formulas", "demid.published_values"},
     "demid.transcription.typos": {"demid.design", "demid.errors", "demid.precision", "demid.transcription.printed"},
