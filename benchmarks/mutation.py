@@ -280,6 +280,22 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/combinations/test_combinations.py"],
     },
+    "demid/criticism/discrimination.py": {
+        "functions": None,
+        "tests": ["tests/criticism/test_discrimination.py"],
+    },
+    "demid/criticism/reach.py": {
+        "functions": None,
+        "tests": ["tests/criticism/test_reach.py"],
+    },
+    "demid/uncertainty/sweep.py": {
+        "functions": None,
+        "tests": ["tests/uncertainty/test_uncertainty.py", "-ksweep"],
+    },
+    "demid/uncertainty/sigma.py": {
+        "functions": None,
+        "tests": ["tests/uncertainty/test_uncertainty.py", "-ksigma"],
+    },
     "demid/io.py": {
         "functions": None,
         "tests": ["tests/test_core_contracts.py", "-kjson or png or parquet or csv or atomic"],
@@ -520,6 +536,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/surrogate.py::SurrogateFit.fitted_exactly::self.hat_diag >= LEVERAGE_UNPREDICTABLE => "
     "self.hat_diag > LEVERAGE_UNPREDICTABLE#0":
         "differs only for a leverage of exactly 0.99 to the last bit",
+    "demid/criticism/discrimination.py::close_candidates::named is not None and anchor not in out => "
+    "anchor not in out#0":
+        "without a named cause the anchor is the first ranked entry, always kept: the first of its kind, "
+        "and it is the anchor",
+    "demid/criticism/discrimination.py::_joint_separation::0 => 1#0":
+        "parts_a[1] is the Jacobian at the points: it has as many rows as parts_a[0] has points",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
