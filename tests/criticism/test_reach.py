@@ -9,7 +9,7 @@ import pandas as pd
 import pytest
 
 from demid.criticism import calibration_check
-from demid.criticism.reach import WIDEN_LIMIT, Reach, reach_beyond_bound, saturation_advice
+from demid.criticism.reach import WIDEN_LIMIT, Reach, _smallest_positive_root, reach_beyond_bound, saturation_advice
 from demid.design import quadratic_terms
 from demid.sampling.domain import Domain
 from demid.spec import MaterialSpec
@@ -78,6 +78,19 @@ def test_a_small_extension_keeps_the_widen_advice():
     assert result.widen == {"x": ["upper"]} and "Widen the range of x" in result.message
     assert [(i.kind, i.factor, i.bound) for i in _advice(result.to_json()) if i.factor == "x"] == [
         ("widen", "x", "upper")]
+
+
+def test_a_straight_response_reaches_the_band_where_its_line_does():
+    # y = 10 + 8x: 18 at the bound, slope 8; the band edge 19 is 1/8 of the range beyond it (x = 1.125)
+    result = _check(_quadratic(10, 8, 0), _target(19.0))
+    (reach,) = result.reach
+    assert reach.widen and not reach.levels_off
+    assert reach.quadratic_extension == pytest.approx(0.125, rel=1e-6)
+    assert reach.quadratic_factor_value == pytest.approx(1.125, rel=1e-6)
+    # the root of b t + c = 0 (no t^2 term) when it is positive, none otherwise
+    assert _smallest_positive_root(0.0, 8.0, -1.0) == pytest.approx(0.125)
+    assert _smallest_positive_root(0.0, 8.0, -12.0) == pytest.approx(1.5)
+    assert _smallest_positive_root(0.0, 8.0, 1.0) == np.inf and _smallest_positive_root(0.0, 0.0, -1.0) == np.inf
 
 
 def test_a_huge_extension_is_not_advised_as_widen():
