@@ -554,6 +554,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/sweep.py::tolerance_sweep::float(t) => t#0":
         "the schema's sweep tolerances lie strictly between 0 and 1, so they are floats; an int and its float "
         "would hash and compare equal in the set anyway",
+    "demid/uncertainty/sweep.py::tolerance_sweep::0 => -1#2":
+        "with the strict set never reused, summarise_set recomputes it by evaluate_set, whose exact set takes no "
+        "resolution (exact_set_on_domain has no n): the same numbers, at the cost of a second evaluation",
     "demid/uncertainty/sweep.py::tolerance_sweep::float(nominal) => nominal#1":
         "eps == nominal compares numbers: an int nominal equals its float",
     "demid/uncertainty/sweep.py::tolerance_sweep::given is not None and given.exact is not None => "

@@ -93,6 +93,18 @@ def test_a_straight_response_reaches_the_band_where_its_line_does():
     assert _smallest_positive_root(0.0, 8.0, 1.0) == np.inf and _smallest_positive_root(0.0, 0.0, -1.0) == np.inf
 
 
+def test_a_band_edge_just_below_where_the_response_levels_off_is_reached():
+    # y = 10 + 12x - 4x²: 18 at the bound, levels off at 19 (x = 1.5); the band edge 18.95 is reached where
+    # -4t² + 4t - 0.95 = 0, t = (4 - sqrt(0.8)) / 8 (a discriminant below one, not below zero)
+    result = _check(_quadratic(10, 12, -4), _target(18.95))
+    (reach,) = result.reach
+    t = (4 - np.sqrt(0.8)) / 8
+    assert reach.quadratic_extension == pytest.approx(t, rel=1e-6) and reach.widen and not reach.levels_off
+    assert reach.quadratic_factor_value == pytest.approx(1 + t, rel=1e-6)
+    assert _smallest_positive_root(-1.0, 1.0, -0.2) == pytest.approx((1 - np.sqrt(0.2)) / 2)
+    assert _smallest_positive_root(-1.0, 1.0, -0.3) == np.inf  # discriminant -0.2: never
+
+
 def test_a_huge_extension_is_not_advised_as_widen():
     # y = 10 + x: at the bound 11, slope 1; the band edge 13 needs x = 3, twice the range beyond the bound
     result = _check(_quadratic(10, 1, 0), _target(13.0))
