@@ -562,6 +562,12 @@ EQUIVALENT: dict[str, str] = {
         "and it is the anchor",
     "demid/criticism/discrimination.py::_joint_separation::0 => 1#0":
         "parts_a[1] is the Jacobian at the points: it has as many rows as parts_a[0] has points",
+    "demid/tolerance.py::relative_tolerances::float(tolerance) => tolerance#0":
+        "a scenario's tolerance lies strictly between 0 and 1 (the schema), so it is already a float, and so is "
+        "FALLBACK_TOLERANCE",
+    "demid/precision.py::round_off_only::residuals = np.asarray(residuals, dtype=float) => pass#0":
+        "every caller passes a float array or statsmodels' float residual Series: size, ** 2 and np.mean give "
+        "the same numbers",
     "demid/uncertainty/sigma.py::measurement_sigma::float(default_rel) => default_rel#0":
         "default_rel * abs(float(target)) is the same float for an int or a float default_rel",
     "demid/uncertainty/sigma.py::measurement_sigmas::float(z) => z#0":
