@@ -609,6 +609,11 @@ SETTINGS: dict[str, str] = {
         "resolution of the grid the reachability search starts from (four factors and more)",
     "demid/uncertainty/ranking.py::_met_together::np.argsort(worst, kind='stable') => np.argsort(worst)#0":
         "which of equally good grid nodes start the searches (numpy's default sort is deterministic too)",
+    "demid/sampling/polish.py::_start_points::1.0 / d => 1.0#1":
+        "the cap on the grid the polishing starts from when no node is admissible (its resolution)",
+    "demid/sampling/polish.py::_start_points::min(n, int(1000000.0 ** (1.0 / d))) => "
+    "max(n, int(1000000.0 ** (1.0 / d)))#0":
+        "the resolution of the grid the polishing starts from when no node is admissible",
     "demid/uncertainty/sweep.py::tolerance_sweep::2 ** 14 => 2 * 14#0":
         "the default number of scrambled Sobol points (more than three factors); the pipeline passes its own",
 }
