@@ -200,3 +200,31 @@ def test_a_cause_named_with_a_rival_not_far_behind_comes_with_runs_that_confirm_
         confirmed += first.findings[0].cause == "drift"
         corrected += first.findings[0].cause != "drift"
     assert confirmed >= 2 and corrected >= 1, (confirmed, corrected)
+
+
+@pytest.mark.parametrize("lam", [0.0, 0.5])
+def test_a_transformed_models_prediction_is_back_transformed_with_the_delta_method_variance(lam):
+    """A model fitted on the Box-Cox scale predicts a new run's response (original scale) as the back-transform
+    of the statsmodels prediction on that scale, with variance (d y / d z)^2 (x' cov x + scale), the slope of
+    the back-transform written in closed form: exp(z) for lambda 0, (1 + lambda z)^(1/lambda - 1) otherwise."""
+    import statsmodels.api as sm
+    from scipy import special
+
+    table, _ = ccd_table(5, 2, "clean")
+    table["y"] = table["y"] - table["y"].min() + 5.0  # positive, so the transform applies
+    data, _ = _prepare(table, FACTORS[2], "y", None, ())
+    model = _Model(data, _Spec(lam=lam))
+    points = np.array([[0.0, 0.0], [1.0, -1.0], [-data.alpha, 0.0]])
+
+    terms = quadratic_terms(2)
+    fit = sm.OLS(special.boxcox(data.y, lam), model_matrix(data.coded, terms)).fit()
+    rows = model_matrix(points, terms)
+    z = rows @ fit.params
+    if lam == 0.0:
+        mean, slope = np.exp(z), np.exp(z)
+    else:
+        mean, slope = (1 + lam * z) ** (1 / lam), (1 + lam * z) ** (1 / lam - 1)
+    variance = slope ** 2 * (np.einsum("ij,jk,ik->i", rows, fit.cov_params(), rows) + fit.scale)
+    got_mean, got_variance = _prediction(model, points)
+    assert got_mean == pytest.approx(mean, rel=1e-9)
+    assert got_variance == pytest.approx(variance, rel=1e-6)

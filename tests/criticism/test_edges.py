@@ -205,3 +205,20 @@ def test_an_observable_no_factor_moves_is_named_and_does_not_pick_the_best_point
     assert abs(result.best_errors["z1"]) <= 1e-6 and result.best_errors["z2"] == -1.0
     assert result.unmoved == ["z2"] and result.widen == {} and "Widen" not in result.message
     assert "z2 is predicted the same everywhere in the search range (no factor moves it)" in result.message
+
+
+def test_extrapolation_warnings_in_actual_units_of_a_scaled_and_a_log_factor():
+    """The diamond of runs on x in [10, 20] (linear) and w in [1, 100] (log): the runs cover x = 12 to 18 (a
+    fifth of the range to four fifths) and all of w.  A reference point inside the diamond, or on its vertex,
+    gets no warning; one at x = 19 is outside the runs' range but inside the search range."""
+    from demid.criticism.edges import extrapolation_warnings
+
+    domain = Domain(("x", "w"), (10.0, 1.0), (20.0, 100.0), log=(False, True))
+    runs = np.column_stack([10.0 + 10.0 * DIAMOND[:, 0], 10.0 ** (2.0 * DIAMOND[:, 1])])
+    (only,) = extrapolation_warnings(domain, runs, None)
+    assert "search range of x, 10 to 20, reaches beyond the runs, which cover 12 to 18;" in only
+    assert "lower and upper bound" in only
+    for inside in ({"x": 16.0, "w": 10.0 ** 1.2}, {"x": 18.0, "w": 10.0}, {"x": 15.0, "w": 100.0}):
+        assert extrapolation_warnings(domain, runs, inside) == [only], inside
+    out = extrapolation_warnings(domain, runs, {"x": 19.0, "w": 10.0})
+    assert len(out) == 2 and "outside the range of the runs (x = 19 (runs: 12 to 18))" in out[1]

@@ -73,3 +73,13 @@ def test_log_scale_factor_grid_is_log_spaced():
     result = admissible_set({"y": sur}, dom, ["y"], {"y": -2.0}, 0.1, 201)
     assert result.fraction == pytest.approx(0.2, rel=0.01)
     assert result.lower[1] == pytest.approx(10 ** -2.2, rel=0.01)
+
+
+def test_unit_cube_coordinates_of_a_linear_and_a_log_factor():
+    """a in [2, 4] (linear), b in [10, 1000] (log): a = 3, b = 100 is the cube's centre; a = 2.5, b = 10^1.5 a
+    quarter of each range; from_unit goes back."""
+    domain = Domain(("a", "b"), (2.0, 10.0), (4.0, 1000.0), log=(False, True))
+    points = np.array([[3.0, 100.0], [2.5, 10 ** 1.5], [4.0, 10.0]])
+    unit = domain.to_unit(points)
+    np.testing.assert_allclose(unit, [[0.5, 0.5], [0.25, 0.25], [1.0, 0.0]], atol=1e-12)
+    np.testing.assert_allclose(domain.from_unit(unit), points, rtol=1e-12)

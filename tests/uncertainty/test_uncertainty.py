@@ -505,3 +505,36 @@ def test_an_even_grid_sweep_errors_are_those_of_the_set_alone():
         assert_allclose(rows["fraction_error_pct"], 100 * alone.error, rtol=1e-12)
         assert_allclose(rows["feasible_fraction_pct"], 100 * alone.fraction, rtol=1e-12)
         assert alone.error > 0
+
+
+def test_tolerance_sweep_fractions_and_spans_are_the_closed_form_annulus_and_the_nominal_row_reuses_table_3():
+    """y = |x - c|^2 with target T on the unit square: the strict set at tolerance eps is the annulus
+    T(1 - eps) <= r^2 <= T(1 + eps), of area 2 pi T eps, spanning c +- sqrt(T(1 + eps)) in each factor.  The
+    nominal row is the strict set passed in (Table 3's, computed at another resolution), to the last bit."""
+    from demid.sampling.evaluate import evaluate_set
+
+    surrogates, target, nominal = {"y": ring([0.5, 0.5])}, 0.04, 0.05
+    strict = evaluate_set(surrogates, SQUARE, ("y",), {"y": target}, nominal, 61)
+    frame = unc.tolerance_sweep(surrogates, SQUARE, {"s": (["y"], nominal)}, {"y": target}, [0.02, 0.1], 21,
+                                strict_sets={"s": strict})
+    rows = frame.drop_duplicates("tolerance").set_index("tolerance")
+    assert list(rows.index) == [0.02, nominal, 0.1]
+    for eps in rows.index:
+        assert rows.loc[eps, "feasible_fraction_pct"] == pytest.approx(100 * 2 * np.pi * target * eps, rel=1e-6)
+        at = frame[frame["tolerance"] == eps]
+        half = np.sqrt(target * (1 + eps))
+        assert_allclose(at["lower"], 0.5 - half, rtol=1e-6)
+        assert_allclose(at["upper"], 0.5 + half, rtol=1e-6)
+        assert_allclose(at["width"], 2 * half, rtol=1e-6)
+    assert rows.loc[nominal, "feasible_fraction_pct"] == 100.0 * strict.fraction
+    assert rows.loc[nominal, "fraction_error_pct"] == 100.0 * strict.fraction_error
+
+
+def test_measurement_sigma_of_a_negative_target_and_a_response_without_config():
+    """A negative target's default sigma is default_rel |y*|; a response absent from the config has no
+    sigma of its own: the tolerance read as a two-sigma band, -40 at 4 %: 0.02 x 40 = 0.8."""
+    assert unc.measurement_sigma(None, -40.0, default_rel=0.02) == pytest.approx(0.8)
+    assert unc.sigma_basis(None) == "none (surrogate uncertainty only)"
+    sigma, basis = unc.measurement_sigmas({}, ["c"], {"c": -40.0}, tolerance=0.04)
+    assert sigma == {"c": pytest.approx(0.8)}
+    assert basis == {"c": "default sigma_rel = 0.02 (tolerance/2)"}
