@@ -6,20 +6,14 @@ The per-material steps, in pipeline order, each taking a :class:`MaterialSpec`:
 (PEP 562), so ``import demid`` stays cheap for every pipeline job.
 """
 
-from importlib import import_module
+from .lazy import lazy_exports
 
 __version__ = "0.1.0"
 
 _WHERE = {
-    "MaterialSpec": "spec", "load_config": "config", "InputError": "errors", "validate_material": "data",
-    "check_material": "transcription", "fit_material": "surrogate", "evaluate_scenarios": "admissibility",
-    "pareto_analysis": "pareto", "analyse_material": "uncertainty", "criticize_material": "criticism",
+    "MaterialSpec": ".spec", "load_config": ".config", "InputError": ".errors", "validate_material": ".data",
+    "check_material": ".transcription", "fit_material": ".surrogate", "evaluate_scenarios": ".admissibility",
+    "pareto_analysis": ".pareto", "analyse_material": ".uncertainty", "criticize_material": ".criticism",
 }
 
-__all__ = sorted(_WHERE)
-
-
-def __getattr__(name: str):
-    if name in _WHERE:
-        return getattr(import_module(f".{_WHERE[name]}", __name__), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+__getattr__, __all__ = lazy_exports(__name__, _WHERE)

@@ -95,7 +95,7 @@ log-likelihoods, influence PRESS residuals, ``eval_measures.aicc``) and scipy
 false-alarm rates against oracle tests in ``benchmarks/criticism_power.py``.
 """
 
-from importlib import import_module
+from ..lazy import lazy_exports
 
 # Names are imported from their submodule on first use (PEP 562): a module that needs one light part
 # (demid.story reads .reach) does not pay for the figure's matplotlib and scipy.stats, nor for statsmodels.
@@ -109,10 +109,4 @@ _WHERE = {
     "TRANSFORM_NAMES": ".models", "ExtendedSurrogate": ".models", "infer_axial_distance": ".models",
 }
 
-__all__ = sorted(_WHERE)
-
-
-def __getattr__(name: str):
-    if name in _WHERE:
-        return getattr(import_module(_WHERE[name], __name__), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+__getattr__, __all__ = lazy_exports(__name__, _WHERE)

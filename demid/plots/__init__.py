@@ -6,18 +6,12 @@ backend, rcParams and colours of the first three.  Submodules are imported on fi
 (PEP 562), so importing one kind of figure does not apply another kind's style.
 """
 
-from importlib import import_module
+from ..lazy import lazy_exports
 
 _WHERE = {
-    "sets_figure": "sets", "surface_figure": "surface", "surface_figure_from_surrogates": "surface",
-    "pareto_figure": "pareto", "tolerance_sweep_figure": "uncertainty", "posterior_figure": "uncertainty",
-    "residual_figure": "criticism", "combinations_figure": "combinations",
+    "sets_figure": ".sets", "surface_figure": ".surface", "surface_figure_from_surrogates": ".surface",
+    "pareto_figure": ".pareto", "tolerance_sweep_figure": ".uncertainty", "posterior_figure": ".uncertainty",
+    "residual_figure": ".criticism", "combinations_figure": ".combinations",
 }
 
-__all__ = sorted(_WHERE)
-
-
-def __getattr__(name: str):
-    if name in _WHERE:
-        return getattr(import_module(f".{_WHERE[name]}", __name__), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+__getattr__, __all__ = lazy_exports(__name__, _WHERE)

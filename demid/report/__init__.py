@@ -6,20 +6,14 @@ submodule on first use (PEP 562): the report job's own process only executes and
 notebook (the kernel builds the sections), so it does not import pandas and the sections for nothing.
 """
 
-from importlib import import_module
+from ..lazy import lazy_exports
 
 _WHERE = {
-    "execute_report": "render", "render_html": "render",
-    "ReportSections": "sections", "markdown_table": "sections",
-    "IDENTIFIABILITY_COLUMNS": "tables", "SURROGATE_FIT_COLUMNS": "tables", "TRANSCRIPTION_COLUMNS": "tables",
-    "identifiability_table": "tables", "pareto_intervals": "tables", "stack_material_tables": "tables",
-    "summary_tables": "tables", "surrogate_fit_table": "tables",
+    "execute_report": ".render", "render_html": ".render",
+    "ReportSections": ".sections", "markdown_table": ".sections",
+    "IDENTIFIABILITY_COLUMNS": ".tables", "SURROGATE_FIT_COLUMNS": ".tables", "TRANSCRIPTION_COLUMNS": ".tables",
+    "identifiability_table": ".tables", "pareto_intervals": ".tables", "stack_material_tables": ".tables",
+    "summary_tables": ".tables", "surrogate_fit_table": ".tables",
 }
 
-__all__ = sorted(_WHERE)
-
-
-def __getattr__(name: str):
-    if name in _WHERE:
-        return getattr(import_module(f".{_WHERE[name]}", __name__), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+__getattr__, __all__ = lazy_exports(__name__, _WHERE)

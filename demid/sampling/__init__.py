@@ -10,23 +10,17 @@ The estimators (scipy) load on first use (PEP 562), so the workflow's parse step
 spec import only the domain.
 """
 
-from importlib import import_module
-
+from ..lazy import lazy_exports
 from .domain import MAX_GRID_DIM, Domain, uses_grid
 
 _WHERE = {
-    "AdmissibleSet": "grid", "CellCount": "grid", "FractionEstimate": "grid", "admissible_set": "grid",
-    "cell_count": "grid", "fraction_with_error": "grid", "plane_band_fraction": "grid", "predict_grid": "grid",
-    "PlausibilityField": "residuals", "plausibility_fields": "residuals", "relative_residuals": "residuals",
-    "SobolFraction": "sobol", "sobol_admissible_set": "sobol", "sobol_fraction": "sobol",
-    "polish_spans": "polish", "evaluate_set": "evaluate", "uses_exact": "evaluate",
-    "ExactSet": "exact", "exact_set": "exact",
+    "AdmissibleSet": ".grid", "CellCount": ".grid", "FractionEstimate": ".grid", "admissible_set": ".grid",
+    "cell_count": ".grid", "fraction_with_error": ".grid", "plane_band_fraction": ".grid", "predict_grid": ".grid",
+    "PlausibilityField": ".residuals", "plausibility_fields": ".residuals", "relative_residuals": ".residuals",
+    "SobolFraction": ".sobol", "sobol_admissible_set": ".sobol", "sobol_fraction": ".sobol",
+    "polish_spans": ".polish", "evaluate_set": ".evaluate", "uses_exact": ".evaluate",
+    "ExactSet": ".exact", "exact_set": ".exact",
 }
 
-__all__ = ["MAX_GRID_DIM", "Domain", "uses_grid", *sorted(_WHERE)]
-
-
-def __getattr__(name: str):
-    if name in _WHERE:
-        return getattr(import_module(f".{_WHERE[name]}", __name__), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+__getattr__, _lazy_names = lazy_exports(__name__, _WHERE)
+__all__ = ["MAX_GRID_DIM", "Domain", "uses_grid", *_lazy_names]

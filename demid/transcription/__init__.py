@@ -66,21 +66,15 @@ table (about 2,000 response and 140 factor hypotheses) takes a few hundredths
 of a second.
 """
 
-from importlib import import_module
+from ..lazy import lazy_exports
 
 # Names are imported from their submodule on first use (PEP 562): the workflow's start-up reads only
 # ``printed`` (whether a published value is possible), not the check and its refitting engine.
 _WHERE = {
-    "Suspect": "check", "TranscriptionResult": "check", "check_material": "check", "check_table": "check",
-    "check_transcription": "check", "transcription_frame": "check",
-    "STATISTICS": "printed", "PrintedValue": "printed", "parse_printed": "printed",
-    "KINDS": "typos", "likely_typos": "typos", "refuse_likely_typos": "typos", "single_cell_slips": "typos",
+    "Suspect": ".check", "TranscriptionResult": ".check", "check_material": ".check", "check_table": ".check",
+    "check_transcription": ".check", "transcription_frame": ".check",
+    "STATISTICS": ".printed", "PrintedValue": ".printed", "parse_printed": ".printed",
+    "KINDS": ".typos", "likely_typos": ".typos", "refuse_likely_typos": ".typos", "single_cell_slips": ".typos",
 }
 
-__all__ = sorted(_WHERE)
-
-
-def __getattr__(name: str):
-    if name in _WHERE:
-        return getattr(import_module(f".{_WHERE[name]}", __name__), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+__getattr__, __all__ = lazy_exports(__name__, _WHERE)
