@@ -43,29 +43,31 @@ def material_with_defaults(material: dict) -> dict:
     """A copy of one ``materials`` entry with the schema's defaults filled in where keys are absent (an entry
     of a validated config already has them; a bare entry built by a library caller or a test gets them here,
     so that the schema stays the only source of defaults)."""
-    schema = load_schema()
-    material = copy.deepcopy(material)
-    _fill_defaults(material, schema["definitions"]["material"], schema)
-    return material
+    return _with_defaults(material, "definitions", "material")
 
 
 def definition_with_defaults(name: str, block: dict | None) -> dict:
     """A copy of an optional block of the schema's definition ``name`` (absent: an empty block) with that
     definition's defaults filled in, so that an optional block's settings default from the schema only."""
-    schema = load_schema()
-    block = copy.deepcopy(block or {})
-    _fill_defaults(block, schema["definitions"][name], schema)
-    return block
+    return _with_defaults(block or {}, "definitions", name)
 
 
 def design_with_defaults(design: dict) -> dict:
     """A copy of a ``design`` block (from the config, ``--design`` or the table's inferred geometry) with the
     schema's defaults (``alpha``, ``center_runs``) filled in where absent; keys the schema does not know (an
     inferred design's ``inferred`` flag) are kept."""
+    return _with_defaults(design, "definitions", "material", "properties", "design")
+
+
+def _with_defaults(block: dict, *path: str) -> dict:
+    """A copy of ``block`` with the defaults of the schema node at ``path`` filled in where absent."""
     schema = load_schema()
-    design = copy.deepcopy(design)
-    _fill_defaults(design, schema["definitions"]["material"]["properties"]["design"], schema)
-    return design
+    node = schema
+    for key in path:
+        node = node[key]
+    block = copy.deepcopy(block)
+    _fill_defaults(block, node, schema)
+    return block
 
 
 def _key_path(parts) -> str:
