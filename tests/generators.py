@@ -142,6 +142,23 @@ class Level2Case:
     biased: str | None
 
 
+def later_runs(seed: int, n_factors: int, runs: list[dict]) -> tuple[pd.DataFrame, np.ndarray]:
+    """Runs proposed after a ``ccd_table(seed, n_factors)`` table, as its generator would have made them: its
+    clean quadratic plus unit noise (a stream of their own), numbered after the table's runs.  Returns the runs
+    (``run``, the factors, ``y``) and their coded points; a caller adds the defect that goes on after the table."""
+    rng = np.random.default_rng(seed)
+    factors, coding, coded, _ = design(n_factors)
+    n = len(coded)
+    rng.permutation(n)  # as ccd_table draws the run order before the coefficients
+    coef = random_quadratic(rng, n_factors)
+    new = pd.DataFrame([{f: r[f] for f in factors} for r in runs])
+    new_coded = coding.to_coded(new[factors].to_numpy(dtype=float))
+    noise = np.random.default_rng(10 ** 6 + seed).normal(size=len(new))
+    new["y"] = model_matrix(new_coded, quadratic_terms(n_factors)) @ coef + noise
+    new.insert(0, "run", np.arange(n + 1, n + 1 + len(new)))
+    return new, new_coded
+
+
 def mortar_case(seed: int, biased: str | None = None, shift: float = 4.0,
                 tolerance: float = 0.02, observables: tuple[str, ...] = MORTAR_OBSERVABLES) -> Level2Case:
     """Three mortar-like diameter surrogates, targets met exactly at a random interior point.

@@ -13,7 +13,7 @@ from demid.criticism import criticize
 from demid.design import model_matrix, quadratic_terms
 from demid.design_generation import FactorRange, generate_sheet
 from demid.surrogate import fit_response
-from tests.generators import FACTORS, ccd_table, design, off_catalogue_table, random_quadratic
+from tests.generators import FACTORS, ccd_table, design, later_runs, off_catalogue_table, random_quadratic
 
 SEEDS = range(5)
 
@@ -287,18 +287,11 @@ def test_report_reads_a_blocked_fit_as_the_fit_made_it():
     assert mine.set_index("source").loc["↳ Linear", "sum_sq"] == pytest.approx(partial, rel=1e-9)
 
 
-def _simulate_after_step(seed: int, k: int, shift: float, runs: list[dict], n: int) -> pd.DataFrame:
+def _simulate_after_step(seed: int, k: int, shift: float, runs: list[dict]) -> pd.DataFrame:
     """The proposed runs as made after the table of _block_shift_table (clean ccd_table, later half shifted):
     made after the step, every one of them carries the shift."""
-    rng = np.random.default_rng(seed)
-    factors, coding, coded, _ = design(k)
-    rng.permutation(len(coded))
-    coef = random_quadratic(rng, k)
-    new = pd.DataFrame([{f: r[f] for f in factors} for r in runs])
-    new_coded = coding.to_coded(new[factors].to_numpy(dtype=float))
-    noise = np.random.default_rng(10 ** 6 + seed).normal(size=len(new))
-    new["y"] = model_matrix(new_coded, quadratic_terms(k)) @ coef + noise + shift
-    new.insert(0, "run", np.arange(n + 1, n + 1 + len(new)))
+    new, _ = later_runs(seed, k, runs)
+    new["y"] += shift
     return new
 
 
@@ -315,7 +308,7 @@ def test_later_replicates_of_the_runs_between_two_change_points_tell_which_side_
             result = criticize(table, FACTORS[k], "y", n_null=499)
             if result.verdict != "ambiguous" or {c["cause"] for c in result.candidates} != {"step"}:
                 continue
-            new = _simulate_after_step(seed, k, 6.0, result.discriminating_runs, len(table))
+            new = _simulate_after_step(seed, k, 6.0, result.discriminating_runs)
             again = criticize(pd.concat([table, new], ignore_index=True), FACTORS[k], "y", n_null=499)
             decided.append((k, seed, first, [(f.cause, f.detail) for f in again.findings[:1]]))
     assert len(decided) >= 3, decided

@@ -11,8 +11,8 @@ from demid.criticism import criticize, discrimination
 from demid.criticism.catalogue import SlipCandidate, _Hypothesis
 from demid.criticism.level1 import _confirming_rivals
 from demid.criticism.verdict import ONE_RUN_READINGS_BAYES_FACTOR, other_reading_of_the_run
-from demid.design import model_matrix, parse_term, quadratic_terms
-from tests.generators import FACTORS, ccd_table, design, random_quadratic
+from demid.design import model_matrix, parse_term
+from tests.generators import FACTORS, ccd_table, design, later_runs
 
 
 # --------------------------------------------------------------------------- one run, two readings
@@ -67,17 +67,8 @@ def test_a_named_cause_without_a_close_rival_is_confirmed_against_the_nearest_ki
 
 def _simulate_term(seed: int, k: int, term: str, size: float, runs: list[dict]) -> pd.DataFrame:
     """The proposed runs as ccd_table's missing term would have made them after its runs."""
-    rng = np.random.default_rng(seed)
-    factors, coding, coded, _ = design(k)
-    n = len(coded)
-    rng.permutation(n)
-    coef = random_quadratic(rng, k)
-    new = pd.DataFrame([{f: r[f] for f in factors} for r in runs])
-    new_coded = coding.to_coded(new[factors].to_numpy(dtype=float))
-    noise = np.random.default_rng(10 ** 6 + seed).normal(size=len(new))
-    new["y"] = (model_matrix(new_coded, quadratic_terms(k)) @ coef + noise
-                + size * model_matrix(new_coded, [parse_term(term, factors)])[:, 0])
-    new.insert(0, "run", np.arange(n + 1, n + 1 + len(new)))
+    new, new_coded = later_runs(seed, k, runs)
+    new["y"] += size * model_matrix(new_coded, [parse_term(term, design(k)[0])])[:, 0]
     return new
 
 

@@ -16,7 +16,7 @@ from demid.criticism.discrimination import (AMBIGUOUS_AICC, DECIDING_POWER, _pre
 from demid.criticism.level1 import _prepare
 from demid.criticism.models import _Model, _Spec
 from demid.design import model_matrix, quadratic_terms
-from tests.generators import FACTORS, ccd_table, design, random_quadratic
+from tests.generators import FACTORS, ccd_table, later_runs
 
 
 def _entry(cause, detail, aicc):
@@ -78,17 +78,9 @@ def test_a_drift_goes_on_in_the_predictions_of_later_runs_a_step_does_not():
 
 def _simulate_drift(seed: int, k: int, size: float, runs: list[dict]) -> pd.DataFrame:
     """The proposed runs as ccd_table's drift would have made them after its runs (the drift goes on)."""
-    rng = np.random.default_rng(seed)
-    factors, coding, coded, _ = design(k)
-    n = len(coded)
-    rng.permutation(n)
-    coef = random_quadratic(rng, k)
-    new = pd.DataFrame([{f: r[f] for f in factors} for r in runs])
-    run = np.arange(n + 1, n + 1 + len(new))
-    new_coded = coding.to_coded(new[factors].to_numpy(dtype=float))
-    noise = np.random.default_rng(10 ** 6 + seed).normal(size=len(new))
-    new["y"] = model_matrix(new_coded, quadratic_terms(k)) @ coef + noise + size * (run - (n + 1) / 2) / (n - 1)
-    new.insert(0, "run", run)
+    new, _ = later_runs(seed, k, runs)
+    n = new["run"].iloc[0] - 1
+    new["y"] += size * (new["run"].to_numpy() - (n + 1) / 2) / (n - 1)
     return new
 
 
