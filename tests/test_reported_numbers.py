@@ -99,20 +99,16 @@ def test_exact_fraction_error_bounds_the_annulus_area(target, tolerance):
     np.testing.assert_allclose(aset.upper, [0.5 + radius] * 2, atol=1e-9)
 
 
-# --------------------------------------------------------------------------- the typo screen's prediction
-@pytest.mark.parametrize("seed", range(3))
-def test_typo_flag_prediction_and_its_error_from_the_other_runs(tmp_path, seed):
-    """The flag's prediction and standard error are those of an OLS fit without the run (statsmodels'
-    ``get_prediction(...).se_obs``); its studentised residual is statsmodels' external one."""
-    from demid.data import read_printed, validate_material
-    from demid.design import model_matrix, model_units, quadratic_terms
-    from demid.transcription import likely_typos
+def _table_with_run_5_slipped(tmp_path, seed: int, noise: float):
+    """A two-factor CCD table (responses to 2 decimals) whose run 5 response is printed a tenth of its value: the
+    file and its validated material."""
+    from demid.data import validate_material
 
     from .helpers import make_ccd_table
     from .transcription.test_likely_typos import _cfg
 
     table = make_ccd_table(lambda x: {"y": 100 + 20 * x[:, 0] - 3 * x[:, 1] + 8 * x[:, 0] ** 2},
-                           [0.1, 1], [0.9, 11], noise=0.3, seed=seed, decimals=2)
+                           [0.1, 1], [0.9, 11], noise=noise, seed=seed, decimals=2)
     true_value = table.loc[table["run"] == 5, "y"].iloc[0]
     path = tmp_path / "t.csv"
     table.to_csv(path, index=False)
@@ -120,6 +116,21 @@ def test_typo_flag_prediction_and_its_error_from_the_other_runs(tmp_path, seed):
              for ln in path.read_text().splitlines()]
     path.write_text("\n".join(lines) + "\n")
     vt = validate_material(_cfg(path))
+    return path, vt
+
+
+# --------------------------------------------------------------------------- the typo screen's prediction
+@pytest.mark.parametrize("seed", range(3))
+def test_typo_flag_prediction_and_its_error_from_the_other_runs(tmp_path, seed):
+    """The flag's prediction and standard error are those of an OLS fit without the run (statsmodels'
+    ``get_prediction(...).se_obs``); its studentised residual is statsmodels' external one."""
+    from demid.data import read_printed
+    from demid.design import model_matrix, model_units, quadratic_terms
+    from demid.transcription import likely_typos
+
+    from .transcription.test_likely_typos import _cfg
+
+    path, vt = _table_with_run_5_slipped(tmp_path, seed, noise=0.3)
     (flag,) = likely_typos(vt, _cfg(path), read_printed(path, vt.table))
 
     data = vt.table
@@ -143,22 +154,13 @@ def test_typo_screen_flags_at_the_bonferroni_p_with_n_minus_p_minus_1_degrees_of
     """A run is screened when its Bonferroni p (statsmodels' outlier test: n times the two-sided t tail with
     n - p - 1 degrees of freedom) is below the family level: a level just above the slipped run's p flags it,
     one just below does not."""
-    from demid.data import read_printed, validate_material
+    from demid.data import read_printed
     from demid.design import model_matrix, model_units, quadratic_terms
     from demid.transcription import likely_typos
 
-    from .helpers import make_ccd_table
     from .transcription.test_likely_typos import _cfg
 
-    table = make_ccd_table(lambda x: {"y": 100 + 20 * x[:, 0] - 3 * x[:, 1] + 8 * x[:, 0] ** 2},
-                           [0.1, 1], [0.9, 11], noise=3.0, seed=seed, decimals=2)
-    true_value = table.loc[table["run"] == 5, "y"].iloc[0]
-    path = tmp_path / "t.csv"
-    table.to_csv(path, index=False)
-    lines = [ln if not ln.startswith("5,") else ",".join(ln.split(",")[:-1] + [f"{true_value / 10:.3f}"])
-             for ln in path.read_text().splitlines()]
-    path.write_text("\n".join(lines) + "\n")
-    vt = validate_material(_cfg(path))
+    path, vt = _table_with_run_5_slipped(tmp_path, seed, noise=3.0)
     data = vt.table
     x = model_matrix(vt.coding.to_coded(model_units(data[["x1", "x2"]].to_numpy(float), ["x1", "x2"], ())),
                      quadratic_terms(2))
