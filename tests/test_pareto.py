@@ -67,13 +67,11 @@ def test_sort_order_is_the_two_key_lexsort_with_ties():
         assert np.array_equal(_by_first_then_second(first, second, idx), idx[np.lexsort((second[idx], first[idx]))])
 
 
-def test_a_four_factor_front_is_refined_to_the_known_optimum():
-    """Above three factors the front comes from Sobol points: 4096 of them left a handful of front points and
-    intervals outside the optimum.  y1 = 10 + 10 x1 (target 15: error |x1 - 0.5| / 1.5) against
-    y3 = 100 + 10 x2 + 10 (x1 - 0.3)^2 + 5 (x3 - 0.4)^2 + 5 (x4 - 0.6)^2 on [0, 1]^4: under an error cap e the
-    optimum is x1 = 0.5 - 1.5 e, x2 = 0, x3 = 0.4, x4 = 0.6, so below 2 % x1 lies in (0.47, 0.5]."""
+def _bowl(best_x1: float):
+    """y1 = 10 + 10 x1 (target 15) against y3 = 100 + 10 x2 + 10 (x1 - b)^2 + 5 (x3 - 0.4)^2 + 5 (x4 - 0.6)^2 on
+    [0, 1]^4, b = ``best_x1``: the factor names, the surrogates, the domain and the front sampled from 4096 Sobol
+    points (error cap 2 %)."""
     from demid.design import quadratic_terms
-    from demid.pareto import front_intervals, polish_front
     from demid.sampling.domain import Domain
     from demid.sampling.grid import predict_grid
     from demid.surrogate import Surrogate
@@ -81,14 +79,24 @@ def test_a_four_factor_front_is_refined_to_the_known_optimum():
     names, terms = ["x1", "x2", "x3", "x4"], quadratic_terms(4)
     first = np.zeros(len(terms))
     first[[0, 1]] = [10.0, 10.0]
-    second = np.zeros(len(terms))
-    second[[0, 1, 2, 3, 4]] = [103.5, -6.0, 10.0, -4.0, -6.0]
+    second = np.zeros(len(terms))  # Intercept, x1..x4, six interactions, x1^2..x4^2
+    second[[0, 1, 2, 3, 4]] = [100 + 10 * best_x1 ** 2 + 0.8 + 1.8, -20 * best_x1, 10.0, -4.0, -6.0]
     second[-4:] = [10.0, 0.0, 5.0, 5.0]
     surrogates = {y: Surrogate(y, names, terms, c, np.zeros((len(terms), len(terms))), 0.0, 30)
                   for y, c in (("y1", first), ("y3", second))}
     domain = Domain(tuple(names), (0.0,) * 4, (1.0,) * 4)
     grid = predict_grid(surrogates, domain, 4096)
-    sampled = pareto_analysis(grid, names, "y1", 15.0, "y3", 0.02)
+    return names, surrogates, domain, pareto_analysis(grid, names, "y1", 15.0, "y3", 0.02)
+
+
+def test_a_four_factor_front_is_refined_to_the_known_optimum():
+    """Above three factors the front comes from Sobol points: 4096 of them left a handful of front points and
+    intervals outside the optimum.  y1 = 10 + 10 x1 (target 15: error |x1 - 0.5| / 1.5) against
+    y3 = 100 + 10 x2 + 10 (x1 - 0.3)^2 + 5 (x3 - 0.4)^2 + 5 (x4 - 0.6)^2 on [0, 1]^4: under an error cap e the
+    optimum is x1 = 0.5 - 1.5 e, x2 = 0, x3 = 0.4, x4 = 0.6, so below 2 % x1 lies in (0.47, 0.5]."""
+    from demid.pareto import front_intervals, polish_front
+
+    names, surrogates, domain, sampled = _bowl(0.3)
     front = polish_front(surrogates, domain, names, "y1", 15.0, "y3", 0.02, sampled.front)
     iv = front_intervals(front, names, 0.02).set_index("factor")
     assert iv.loc["x1", "lower"] == pytest.approx(0.47, abs=2e-3) and iv.loc["x1", "upper"] == pytest.approx(0.5, abs=1e-4)
@@ -106,23 +114,9 @@ def test_every_polished_front_point_is_the_optimum_at_its_error(best_x1):
     does): at error e the least y3 is 100 + 10 (0.2 - 1.5 e)^2, up to the front's end at e = 2/15, where y3 = 100.
     Every polished point lies on that curve, the front runs from e = 0 to its end, and its columns are the
     factors, the error and the objective."""
-    from demid.design import quadratic_terms
     from demid.pareto import polish_front
-    from demid.sampling.domain import Domain
-    from demid.sampling.grid import predict_grid
-    from demid.surrogate import Surrogate
 
-    names, terms = ["x1", "x2", "x3", "x4"], quadratic_terms(4)
-    first = np.zeros(len(terms))
-    first[[0, 1]] = [10.0, 10.0]
-    second = np.zeros(len(terms))  # Intercept, x1..x4, six interactions, x1^2..x4^2
-    second[[0, 1, 2, 3, 4]] = [100 + 10 * best_x1 ** 2 + 0.8 + 1.8, -20 * best_x1, 10.0, -4.0, -6.0]
-    second[-4:] = [10.0, 0.0, 5.0, 5.0]
-    surrogates = {y: Surrogate(y, names, terms, c, np.zeros((len(terms), len(terms))), 0.0, 30)
-                  for y, c in (("y1", first), ("y3", second))}
-    domain = Domain(tuple(names), (0.0,) * 4, (1.0,) * 4)
-    grid = predict_grid(surrogates, domain, 4096)
-    sampled = pareto_analysis(grid, names, "y1", 15.0, "y3", 0.02)
+    names, surrogates, domain, sampled = _bowl(best_x1)
     front = polish_front(surrogates, domain, names, "y1", 15.0, "y3", 0.02, sampled.front)
     assert list(front.columns) == [*names, "error", "objective"]
     e = front["error"].to_numpy()
