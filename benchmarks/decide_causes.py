@@ -226,13 +226,13 @@ class Truth:
             return False  # (a cause the finding lists as its alias counts: a term aliased, a run's other reading)
         return {"term": lambda: p.term in aliases, "log": lambda: detail == "log",
                 "outlier": lambda: detail == p.run, "drift": lambda: True,
-                "het": lambda: detail == p.factor, "step": lambda: detail == self.first}[self.kind]()
+                "het": lambda: p.factor in (aliases or [detail]), "step": lambda: detail == self.first}[self.kind]()
 
-    def simulate(self, coded: np.ndarray) -> np.ndarray:
-        """Responses of new runs at coded points, made after the table's runs."""
+    def simulate(self, coded: np.ndarray, made_before: int = 0) -> np.ndarray:
+        """Responses of new runs at coded points, made after the table's runs and ``made_before`` later ones."""
         coded = np.atleast_2d(coded)
         m = len(coded)
-        runs = self.n + 1 + np.arange(m)
+        runs = self.n + 1 + made_before + np.arange(m)
         mean = model_matrix(coded, quadratic_terms(self.k)) @ self.coef
         eps = self.noise.normal(size=m)
         if self.kind == "log":
@@ -252,11 +252,14 @@ class Truth:
             y += self.size * self.noise.uniform(-1, 1, size=m) ** 3 * np.any(coded != 0, axis=1)
         return y
 
-    def augmented(self, coded: np.ndarray) -> pd.DataFrame:
+    def augmented(self, coded: np.ndarray, table: pd.DataFrame | None = None) -> pd.DataFrame:
+        """``table`` (default: the generator's) with new runs at coded points made after all of its runs."""
+        table = self.table if table is None else table
+        made_before = len(table) - self.n
         new = pd.DataFrame(self.coding.to_actual(np.atleast_2d(coded)), columns=self.factors)
-        new.insert(0, "run", self.n + 1 + np.arange(len(new)))
-        new["y"] = self.simulate(coded)
-        return pd.concat([self.table, new], ignore_index=True)
+        new.insert(0, "run", self.n + 1 + made_before + np.arange(len(new)))
+        new["y"] = self.simulate(coded, made_before)
+        return pd.concat([table, new], ignore_index=True)
 
 
 def verdict_of(result, truth: Truth) -> dict:
@@ -305,16 +308,40 @@ def one_table(seed: int, k: int, kind: str, size: float, n_null: int) -> dict:
     row["confirming"] = bool(runs) and not first.candidates  # named, with runs that would confirm it
     if (needs or row["confirming"]) and runs:
         proposed = truth.coding.to_coded(np.array([[r[f] for f in factors] for r in first.discriminating_runs]))
-        after = criticize(truth.augmented(proposed), factors, "y", alpha=truth.alpha, n_null=n_null)
+        table = truth.augmented(proposed)
+        after = criticize(table, factors, "y", alpha=truth.alpha, n_null=n_null)
         row.update({f"after_{a}": b for a, b in verdict_of(after, truth).items()})
         grid = _grid(truth)
-        pick = np.random.default_rng(2 * 10 ** 6 + seed).choice(len(grid), size=len(proposed), replace=True)
-        rand = criticize(truth.augmented(grid[pick]), factors, "y", alpha=truth.alpha, n_null=n_null)
+        rng = np.random.default_rng(2 * 10 ** 6 + seed)
+        random_table = truth.augmented(grid[rng.choice(len(grid), size=len(proposed), replace=True)])
+        rand = criticize(random_table, factors, "y", alpha=truth.alpha, n_null=n_null)
         row.update({f"random_{a}": b for a, b in verdict_of(rand, truth).items()})
+        if needs:
+            _second_round(row, truth, after, table, rand, random_table, rng, n_null)
     elif needs:
         row.update({"after_named": row["first_named"], "random_named": row["first_named"],
                     "after_wrong": row["first_wrong"], "random_wrong": row["first_wrong"]})
+        row.update({"after2_named": row["first_named"], "random2_named": row["first_named"], "n_runs2": 0})
     return row
+
+
+def _second_round(row: dict, truth: Truth, after, table: pd.DataFrame, rand, random_table: pd.DataFrame,
+                  rng: np.random.Generator, n_null: int) -> None:
+    """The loop's next step: the runs the verdict after the first proposed runs proposes in turn (to decide
+    or to confirm), simulated and criticised; the control adds as many random runs to its own table."""
+    runs = after.discriminating_runs
+    row["n_runs2"] = len(runs)
+    if not runs:
+        row.update({"after2_named": row["after_named"], "random2_named": row["random_named"]})
+        return
+    factors = truth.factors
+    proposed = truth.coding.to_coded(np.array([[r[f] for f in factors] for r in runs]))
+    second = criticize(truth.augmented(proposed, table), factors, "y", alpha=truth.alpha, n_null=n_null)
+    row.update({f"after2_{a}": b for a, b in verdict_of(second, truth).items()})
+    grid = _grid(truth)
+    more = truth.augmented(grid[rng.choice(len(grid), size=len(proposed), replace=True)], random_table)
+    row.update({f"random2_{a}": b for a, b in verdict_of(criticize(more, factors, "y", alpha=truth.alpha,
+                                                                    n_null=n_null), truth).items()})
 
 
 def main(argv=None) -> None:
@@ -369,6 +396,10 @@ def main(argv=None) -> None:
               f"after the proposed runs named {needs['after_named'].mean():.3f} (ambiguous ones "
               f"{amb['after_named'].mean():.3f}), after as many random runs {needs['random_named'].mean():.3f} "
               f"({amb['random_named'].mean():.3f})")
+        print(f"  after a second round (the runs the verdict after the first ones proposes; made in "
+              f"{int((needs['n_runs2'] > 0).sum())} tables, {needs['n_runs2'].sum() / max((needs['n_runs2'] > 0).sum(), 1):.1f} runs "
+              f"on average): named {needs['after2_named'].mean():.3f}, after as many random runs "
+              f"{needs['random2_named'].mean():.3f}")
     sure = frame[frame["confirming"] & frame["first_named"]]
     if len(sure):
         print(f"named right first with confirming runs: {len(sure)} tables; still named right after them "

@@ -35,6 +35,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import stats
 
+from ..design import model_matrix
 from .models import _inv_boxcox, _num, _run_value
 
 if TYPE_CHECKING:
@@ -141,14 +142,27 @@ def _prediction_parts(model: _Model, points: np.ndarray, later: int = 1) -> tupl
     param_cov = sigma2 * np.linalg.pinv(model.xw.T @ model.xw)
     spec = model.spec
     noise = np.full(len(points), sigma2)
-    if spec.weight_on is not None and spec.weight_on in model.data.factors:
-        v = points[:, model.data.factors.index(spec.weight_on)] / model.data.alpha
-        noise = sigma2 * np.exp(spec.weight_gamma * v)
+    if spec.weight_on is not None:
+        noise = sigma2 * np.exp(spec.weight_gamma * _scatter_covariate(model, points))
     mean = _inv_boxcox(eta, spec.lam)
     slope = np.ones(len(points))
     if spec.lam is not None:
         slope = np.abs(_inv_boxcox(eta + 1e-6, spec.lam) - _inv_boxcox(eta - 1e-6, spec.lam)) / 2e-6
     return mean, rows * slope[:, None], noise * slope ** 2, param_cov
+
+
+def _scatter_covariate(model: _Model, points: np.ndarray) -> np.ndarray:
+    """The covariate unequal scatter follows, at the points: a factor scaled by the axial distance, or the
+    predicted value, rescaled.  The latter is the unweighted fit's prediction (blocks at their average),
+    so its value at a new point is that fit's, its coefficients recovered exactly from the runs' values."""
+    data, spec = model.data, model.spec
+    if spec.weight_on in data.factors:
+        return points[:, data.factors.index(spec.weight_on)] / data.alpha
+    x = model_matrix(data.coded, model.mean_terms)
+    if data.blocks is not None:
+        x = np.column_stack([x, data.blocks])
+    coef = np.linalg.lstsq(x, np.asarray(spec.weight_values, dtype=float), rcond=None)[0]
+    return model_matrix(points, model.mean_terms) @ coef[:len(model.mean_terms)]
 
 
 def _prediction(model: _Model, points: np.ndarray, later: int = 1) -> tuple[np.ndarray, np.ndarray]:

@@ -19,8 +19,8 @@ from ..blocks import block_columns
 from ..design import LEVERAGE_UNPREDICTABLE, Coding, model_matrix, model_units, quadratic_terms, term_name
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
-from .discrimination import (CONFIRM_AICC, CONFIRM_PURPOSE, PURPOSE, candidate_kind, candidate_label,
-                             close_candidates, discriminating_runs)
+from .discrimination import (AMBIGUOUS_AICC, CONFIRM_AICC, CONFIRM_PURPOSE, PURPOSE, candidate_kind,
+                             candidate_label, close_candidates, discriminating_runs)
 from .catalogue import (CAUSES, MISFIT_TESTS, slip_candidates, step_directions, _GAMMA_BOUND, _LAMBDA_FINE_GRID,
                         _NICE_LAMBDAS, _Round, _boxcox_profile)
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, other_reading_of_the_run,
@@ -305,7 +305,8 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
         if findings and not new.loo_rmse_on(both) < model.loo_rmse_on(both):
             break  # a further extension must also predict left-out runs better
         findings.append(_finding(data, response, model, h, spec, info, new, alternatives,
-                                 other_reading_of_the_run(h, rnd.hypotheses)))
+                                 other_reading_of_the_run(h, rnd.hypotheses),
+                                 _scatter_aliases(data, model, h, new, rnd.hypotheses)))
         model = new
         last_round = None
         if model.df_resid - 1 < 3 or model.spec.weight_on is not None:
@@ -384,7 +385,7 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not
     entries = _candidate_entries(data, base_model, first_round)
     close = close_candidates(entries, named=first)
     if len(close) < 2 and findings:  # named: runs that would confirm it against its nearest rivals
-        return [], _deciding_runs(data, _confirming_rivals(entries, first), CONFIRM_PURPOSE)
+        return [], _deciding_runs(data, _confirming_rivals(entries, first), CONFIRM_PURPOSE, named=first)
     if len(close) < 2:
         return [], []
     if not findings:
@@ -411,17 +412,20 @@ def _confirming_rivals(entries: list[dict], named: tuple) -> list[dict]:
     return anchor + others[:1]
 
 
-def _deciding_runs(data: _Data, close: list[dict], purpose: str) -> list[dict]:
+def _deciding_runs(data: _Data, close: list[dict], purpose: str, named: tuple | None = None) -> list[dict]:
     """The runs that separate the causes ``close`` (each missing term together with the terms the runs alias
-    with it)."""
+    with it; the ``named`` cause's scatter with the covariates it follows about as well)."""
     models, labels, aiccs, kinds = [], [], [], []
     for c in close:
-        for j, mo in enumerate([c["model"]] + c.get("aliased_models", [])):
+        # a rival's covariates are not: runs spent telling them apart would not decide the named cause
+        aliased = c["cause"] == "missing_term" or (c["cause"], c["detail"]) == named
+        for j, (mo, detail) in enumerate(zip([c["model"]] + (c.get("aliased_models", []) if aliased else []),
+                                             [c["detail"]] + c.get("aliased", []))):
             models.append(mo)
-            labels.append(candidate_label(c["cause"], c["detail"] if j == 0 else mo.names[len(data.base_terms)]))
+            labels.append(candidate_label(c["cause"], detail))
             aiccs.append(c["aicc"])
-            # confirming a named term: the runs also tell it from the terms they alias with it, or a term named
-            # right on these runs could be renamed as its alias on the new ones
+            # confirming a named term (or scatter's covariate): the runs also tell it from the terms (covariates)
+            # they alias with it, or a term named right on these runs could be renamed as its alias on the new ones
             kinds.append(candidate_kind(c["cause"], c["detail"]) if j == 0 or purpose != CONFIRM_PURPOSE
                          else ("alias", labels[-1]))
     return discriminating_runs(data, models, labels, aiccs, kinds, purpose)
@@ -445,6 +449,7 @@ def _candidate_entries(data: _Data, base_model: _Model, first_round) -> list[dic
         if h.cause == "missing_term":  # terms the runs alias with it: the deciding runs must not confuse them
             entry["aliased_models"] = [_Model(data, replace(base_model.spec, extra_terms=(t,)))
                                        for t in h.detail.terms[1:]]
+            entry["aliased"] = [term_name(t, data.factors) for t in h.detail.terms[1:]]
         entries.append(entry)
         if h.cause == "step":
             starts, _ = step_directions(base_model, _orth(base_model.xw))
@@ -453,7 +458,20 @@ def _candidate_entries(data: _Data, base_model: _Model, first_round) -> list[dic
                     other = _Model(data, replace(base_model.spec, step=start))
                     entries.append({"cause": "step", "detail": _run_value(data.runs[start]),
                                     "aicc": other.aicc + price, "model": other})
+    _alias_scatter_covariates(entries)
     return entries
+
+
+def _alias_scatter_covariates(entries: list[dict]) -> None:
+    """Each unequal-scatter entry carries the covariates fitted about as well (better, or within
+    AMBIGUOUS_AICC) as its aliases, as a missing term carries the terms the runs alias with it."""
+    scatter = [e for e in entries if e["cause"] == "heteroscedasticity"]
+    for e in scatter:
+        close = sorted((o for o in scatter if o is not e and o["aicc"] - e["aicc"] <= AMBIGUOUS_AICC),
+                       key=lambda o: o["aicc"])
+        if close:
+            e.update(aliases=[e["detail"]] + [o["detail"] for o in close], aliased=[o["detail"] for o in close],
+                     aliased_models=[o["model"] for o in close])
 
 
 def _not_singled_out(data: _Data, model: _Model, h: _Hypothesis, hypotheses: list[_Hypothesis]) -> dict | None:
@@ -524,10 +542,24 @@ def _with_alternatives(data: _Data, fitted_alternatives: list, best: int) -> tup
     return h, spec, info, new, alternatives
 
 
+def _scatter_aliases(data: _Data, model: _Model, h: _Hypothesis, new: _Model, hypotheses: list) -> list[str]:
+    """For unequal scatter: the covariates it follows about as well as the named one (its extension within
+    AMBIGUOUS_AICC of the named one's), the named one first -- the runs do not tell which; [] when none is that
+    close (or for another cause).  The fitted value is often nearly one factor on a small design."""
+    if h.cause != "heteroscedasticity":
+        return []
+    close = sorted((mo.aicc, other.detail) for other in hypotheses
+                   if other.cause == h.cause and other.detail != h.detail
+                   for mo in [_Model(data, _apply(data, model, other)[0])] if mo.aicc - new.aicc <= AMBIGUOUS_AICC)
+    return [h.detail] + [detail for _, detail in close] if close else []
+
+
 def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _Spec, info: dict, new: _Model,
-             alternatives: list[dict], other_reading: str | None = None) -> Finding:
+             alternatives: list[dict], other_reading: str | None = None,
+             scatter_aliases: list[str] = ()) -> Finding:
     """The finding of one round: the named cause, its gain on the same runs, and its message; ``other_reading``
-    of the same run (an outlier for a slip, a slip for an outlier) is listed as its alias."""
+    of the same run (an outlier for a slip, a slip for an outlier) is listed as its alias, and so are the
+    ``scatter_aliases`` of unequal scatter."""
     if h.cause == "response_transform":
         info["lam"] = spec.lam
     if h.cause == "drift":
@@ -549,7 +581,12 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
     elif other_reading == "outlier":
         message += (f" The same evidence reads as an outlier of run {_detail_json(data, h)} (the Bayes factor of the "
                     f"slip, {info['bayes_factor']:.1f}, is no decisive preference).")
-    close = [a for a in alternatives if a["loglik_vs_named"] is not None and a["loglik_vs_named"] > -2.0]
+    if scatter_aliases:
+        others = ", ".join("the predicted value" if a == "fitted" else a for a in scatter_aliases[1:])
+        message += (f" The scatter follows {others} about as well (within {AMBIGUOUS_AICC:g} in AICc): these runs "
+                    "do not tell which; the confirming runs are chosen to.")
+    close = [a for a in alternatives if a["loglik_vs_named"] is not None and a["loglik_vs_named"] > -2.0
+             and not (a["cause"] == h.cause and a["detail"] in scatter_aliases)]
     if close:
         message += (" Almost as likely: " + "; ".join(f"{_CAUSE_WORDS[a['cause']]} {a['detail']}" for a in close)
                     + ".")
@@ -563,7 +600,8 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
         public_info["alternatives"] = alternatives
     return Finding(
         response=response, cause=h.cause, detail=detail,
-        aliases=list(h.aliases) + ([other_reading] if other_reading else []), p_value=h.p_family,
+        aliases=list(h.aliases) + ([other_reading] if other_reading else []) + list(scatter_aliases),
+        p_value=h.p_family,
         p_nominal=float(np.exp(h.logp)), statistic=h.statistic, message=message,
         loo_rmse_baseline=before, loo_rmse_extended=after, delta_aicc=new.aicc - model.aicc,
         compared_runs=int(same.sum()), extra_runs=extra_runs, info=public_info)
