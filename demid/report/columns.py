@@ -106,7 +106,9 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
                        "catalogued cause accounts for, or 'none' when every test came back clean."),
         "detail": ("–", "What exactly: the missing term, the transform, the outlying run, the run that fits another "
                         "factor level (factor_level), the tests that fired (unexplained, ';'-separated), …"),
-        "aliases": ("–", "Terms the design cannot tell apart from the missing term, ';'-separated."),
+        "aliases": ("–", "Readings these runs cannot tell apart from the named one, ';'-separated: the terms "
+                         "aliased with a missing term, the other reading of one run (outlier or slipped factor "
+                         "value), the covariates unequal scatter follows about as well."),
         "p_value": ("–", "Family-wise adjusted p-value of the finding."),
         "loo_rmse_baseline": (RESPONSE_UNIT, "Leave-one-out RMSE of the plain quadratic."),
         "loo_rmse_extended": (RESPONSE_UNIT, "Leave-one-out RMSE with the finding's extension."),
