@@ -27,6 +27,8 @@ needs            catalogue tables ambiguous first (candidates listed, also under
 after_named      among those: the planted cause named singly after the proposed runs (a table without
                  proposed runs keeps its first verdict, i.e. counts as not named)
 random_named     the same after as many random runs
+after2_named     after a second round: the runs the verdict after the first ones proposes (to decide or to
+                 confirm) simulated in turn, as the loop goes on (random2_named: as many random runs more)
 confirming       named with runs that would confirm it (a rival within discrimination.CONFIRM_AICC): the
                  runs are simulated too, and how often a right name survives them is reported
 
@@ -187,7 +189,8 @@ but not yet by the margin; the second round decides most of them.  Tried and not
 estimated by restricted maximum likelihood (the mean's degrees of freedom counted, as Verbyla 1993 and Smyth's
 dglm do), the log-likelihood then taken at that estimate.  REML has an interior maximum where ML has none
 (gamma 4.9 on a 30-fold scatter, bound 5), but with the bound raised to 8 the scatter reading leads on 16-50 % of
-cubic-term tables and 29-31 % of outlier tables (seeds 0-19, among those with a verdict to compare): no more informative than the bounded ML fit.
+cubic-term tables and 29-31 % of outlier tables (seeds 0-19, among those with a verdict to compare): no more
+informative than the bounded ML fit.
 
     python benchmarks/decide_causes.py --reps 10 [--n-null 499] [--seed0 20] [--kinds het,outlier] [--verbose]
 """
@@ -425,9 +428,9 @@ def main(argv=None) -> None:
               f"after the proposed runs named {needs['after_named'].mean():.3f} (ambiguous ones "
               f"{amb['after_named'].mean():.3f}), after as many random runs {needs['random_named'].mean():.3f} "
               f"({amb['random_named'].mean():.3f})")
-        print(f"  after a second round (the runs the verdict after the first ones proposes; made in "
-              f"{int((needs['n_runs2'] > 0).sum())} tables, {needs['n_runs2'].sum() / max((needs['n_runs2'] > 0).sum(), 1):.1f} runs "
-              f"on average): named {needs['after2_named'].mean():.3f}, after as many random runs "
+        made = int((needs["n_runs2"] > 0).sum())
+        print(f"  after a second round (the runs the verdict after the first ones proposes; made in {made} tables, "
+              f"{needs['n_runs2'].sum() / max(made, 1):.1f} runs on average): named {needs['after2_named'].mean():.3f}, after as many random runs "
               f"{needs['random2_named'].mean():.3f}")
     sure = frame[frame["confirming"] & frame["first_named"]]
     if len(sure):
