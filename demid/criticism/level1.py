@@ -445,7 +445,10 @@ def _candidate_entries(data: _Data, base_model: _Model, first_round) -> list[dic
         mo = _Model(data, spec)
         detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
         price = 2.0 * math.log(choices.get(h.cause, 1))
-        entry = {"cause": h.cause, "detail": detail, "aicc": mo.aicc + price, "model": mo, "aliases": list(h.aliases)}
+        # a run's other reading (an outlier for a slip and back) is its alias here as in a named finding
+        other = other_reading_of_the_run(h, first_round.hypotheses)
+        entry = {"cause": h.cause, "detail": detail, "aicc": mo.aicc + price, "model": mo,
+                 "aliases": list(h.aliases) + ([other] if other else [])}
         if h.cause == "missing_term":  # terms the runs alias with it: the deciding runs must not confuse them
             entry["aliased_models"] = [_Model(data, replace(base_model.spec, extra_terms=(t,)))
                                        for t in h.detail.terms[1:]]

@@ -187,7 +187,7 @@ def unexplained_evidence(response: str, fired: list[dict], tried: list[dict], re
 
 def ambiguous_message(response: str, candidates: list[dict], runs: list[dict]) -> str:
     """Why no cause is named when several explain the misfit about equally, and the runs that would decide."""
-    names = [_entry_text({"cause": c["cause"], "detail": c["detail"]}) for c in candidates]
+    names = [_with_aliases(_entry_text({"cause": c["cause"], "detail": c["detail"]}), c) for c in candidates]
     from .discrimination import AMBIGUOUS_AICC
 
     spread = max(c["delta_aicc"] or 0.0 for c in candidates)
@@ -197,11 +197,22 @@ def ambiguous_message(response: str, candidates: list[dict], runs: list[dict]) -
             f"below {math.exp(AMBIGUOUS_AICC / 2):.0f}:1, is no decisive preference), so none of them is named: they "
             f"fit the runs made so far about equally well and differ in what further runs would give.")
     if runs:
-        points = "; ".join("(" + ", ".join(f"{k}={v:g}" for k, v in r.items()
-                                           if k not in ("purpose", "expected", "separation")) + ")" for r in runs)
-        text += (f" {len(runs)} more run{'s' if len(runs) > 1 else ''} made after these, at {points}, would decide: "
-                 f"there the candidates' predictions differ most relative to their prediction error.")
+        text += (f" {len(runs)} more run{'s' if len(runs) > 1 else ''} made after these, at {_points_text(runs)}, "
+                 f"would decide: there the candidates' predictions differ most relative to their prediction error.")
     return text
+
+
+_ALIAS_WORDS = {"outlier": "an outlier", "factor_level": "a slipped factor value", "fitted": "the predicted value"}
+
+
+def _with_aliases(text: str, candidate: dict) -> str:
+    """The candidate's text with what its runs read as equally well: the terms aliased with a missing term, a
+    run's other reading, the other covariates of unequal scatter."""
+    others = [a for a in candidate.get("aliases") or [] if str(a) != str(candidate["detail"])]
+    if not others:
+        return text
+    alias = "or " + ", ".join(_ALIAS_WORDS.get(a, a) for a in others)
+    return text[:-1] + f"; {alias})" if text.endswith(")") else f"{text} ({alias})"
 
 
 def _points_text(runs: list[dict]) -> str:
