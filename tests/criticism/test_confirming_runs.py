@@ -50,6 +50,37 @@ def test_an_outlier_read_as_a_slip_of_the_same_run_is_reported_with_the_outlier_
     assert slips >= 1
 
 
+def test_an_ambiguous_verdicts_slip_of_the_planted_run_lists_the_outlier_as_its_alias():
+    """Planted outliers (2 and 3 factors, seeds 0-39): where the verdict is ambiguous and a one-run candidate sits
+    at the planted run, it is the outlier or a slip that lists the outlier as its alias (and says so), as a
+    named slip does; the case occurs."""
+    slips = 0
+    for k in (2, 3):
+        for seed in range(40):
+            table, planted = ccd_table(seed, k, "outlier", 10.0)
+            result = criticize(table, FACTORS[k], "y", n_null=199)
+            for c in result.candidates:
+                if c["cause"] in ("outlier", "factor_level") and c["detail"] == planted.run:
+                    assert c["cause"] == "outlier" or "outlier" in c["aliases"], (k, seed, c)
+                    if c["cause"] == "factor_level":
+                        assert f"(run {planted.run}; or an outlier)" in result.summary
+                        slips += 1
+    assert slips >= 1
+
+
+def test_an_ambiguous_verdict_says_what_each_candidates_runs_read_as_equally_well():
+    from demid.criticism.verdict import ambiguous_message
+
+    candidates = [{"cause": "missing_term", "detail": "gamma^3", "delta_aicc": 0.0,
+                   "aliases": ["gamma^3", "mu_s^2:gamma"]},
+                  {"cause": "heteroscedasticity", "detail": "gamma", "delta_aicc": 2.0, "aliases": ["gamma", "fitted"]},
+                  {"cause": "factor_level", "detail": 20, "delta_aicc": 4.0, "aliases": ["outlier"]},
+                  {"cause": "outlier", "detail": 11, "delta_aicc": 5.0, "aliases": []}]
+    text = ambiguous_message("y", candidates, [])
+    assert ("missing term gamma^3 (or mu_s^2:gamma), unequal scatter with gamma (or the predicted value), "
+            "run fitting another factor level (run 20; or an outlier), outlying run (run 11) explain" in text)
+
+
 # --------------------------------------------------------------------------- confirming runs
 def _entry(cause, detail, aicc):
     return {"cause": cause, "detail": detail, "aicc": aicc}
