@@ -26,6 +26,12 @@ def _axis_label(label: str, unit: str) -> str:
     return f"{label} [{unit}]" if unit and unit != "-" else label
 
 
+def _limits(block: dict | None) -> tuple[float | None, float | None]:
+    """A factor's physical ``limits`` entry as (lower, upper), None where a side has none."""
+    block = block or {}
+    return tuple(float(block[side]) if block.get(side) is not None else None for side in ("lower", "upper"))
+
+
 def label_entries(name: str, material: dict):
     """``(config key, text)`` of every label and unit of a validated ``materials`` entry (the schema filled
     the absent ones): what the label check parses."""
@@ -46,6 +52,7 @@ class Factor:
     log: bool
     label: str
     unit: str
+    limits: tuple[float | None, float | None] = (None, None)  # physical limits (actual units), None: none
 
     @property
     def axis_label(self) -> str:
@@ -131,7 +138,8 @@ class MaterialSpec:
         material = material_with_defaults(material)
         design = material["design"]
         factors = tuple(
-            Factor(f, float(c["lower"]), float(c["upper"]), c["scale"] == "log", c["label"] or f, c["unit"])
+            Factor(f, float(c["lower"]), float(c["upper"]), c["scale"] == "log", c["label"] or f, c["unit"],
+                   _limits(c.get("limits")))
             for f, c in material["factors"].items())
         responses = tuple(
             Response(r, float(c["target"]) if c.get("target") is not None else None, c["label"] or r,
@@ -178,7 +186,8 @@ class MaterialSpec:
         from .sampling.domain import Domain
 
         return Domain(tuple(self.factor_names), tuple(f.lower for f in self.factors),
-                      tuple(f.upper for f in self.factors), tuple(f.log for f in self.factors))
+                      tuple(f.upper for f in self.factors), tuple(f.log for f in self.factors),
+                      tuple(f.limits for f in self.factors))
 
     @property
     def axial_alpha(self) -> float:

@@ -29,20 +29,29 @@ def touching(at_bound) -> dict[str, tuple[str, ...]]:
 
 
 def widen_advice(domain: Domain, best: dict[str, tuple[str, ...]], aset: dict[str, tuple[str, ...]]) -> list[str]:
-    """"Widen the range of X" sentences: per factor whose best point or admissible set sits on a bound."""
+    """"Widen the range of X" sentences: per factor whose best point or admissible set sits on a bound that is
+    not its physical limit (up to the limit, where it has one)."""
+    from ..sampling.domain import sides_at_limit
+
     out = []
     for i, f in enumerate(domain.factors):
-        sides = sorted(set(best.get(f, ())) | set(aset.get(f, ())), key=("lower", "upper").index)
+        fixed = sides_at_limit((domain.lower[i], domain.upper[i]), domain.limits[i])
+        best_sides = [s for s in best.get(f, ()) if s not in fixed]
+        set_sides = [s for s in aset.get(f, ()) if s not in fixed]
+        sides = sorted(set(best_sides) | set(set_sides), key=("lower", "upper").index)
         if not sides:
             continue
         what = []
-        if best.get(f):
-            what.append(f"the best point lies on its {' and '.join(best[f])} bound, so a better match may lie "
+        if best_sides:
+            what.append(f"the best point lies on its {' and '.join(best_sides)} bound, so a better match may lie "
                         f"outside the searched range")
-        if aset.get(f):
-            what.append(f"the admissible set reaches its {' and '.join(aset[f])} bound and may extend beyond it")
+        if set_sides:
+            what.append(f"the admissible set reaches its {' and '.join(set_sides)} bound and may extend beyond it")
+        limits = dict(zip(("lower", "upper"), domain.limits[i]))
         beyond = " and ".join(f"{'below' if s == 'lower' else 'above'} "
-                              f"{_g(domain.lower[i] if s == 'lower' else domain.upper[i])}" for s in sides)
+                              f"{_g(domain.lower[i] if s == 'lower' else domain.upper[i])}"
+                              + (f" (up to its physical limit {_g(limits[s])})" if limits[s] is not None else "")
+                              for s in sides)
         out.append(f"Widen the range of {f}: {'; '.join(what)}. Simulate runs {beyond} and search there.")
     return out
 

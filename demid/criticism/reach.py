@@ -41,8 +41,15 @@ class Reach:
     straight_factor_value: float   # the factor's value a straight line needs (nan: never)
     quadratic_factor_value: float  # the factor's value the quadratic needs (nan: never)
     levels_off_factor_value: float
-    widen: bool                    # the quadratic reaches the band within WIDEN_LIMIT of the range
+    widen: bool                    # the quadratic reaches the band within WIDEN_LIMIT and the physical limit
     log: bool = False              # a log-scale factor: the slope is per decade
+    limit_extension: float = np.inf  # fraction of the range from the bound to the factor's physical limit
+    limit_value: float = np.nan      # that limit (nan: none on this side)
+
+    @property
+    def beyond_limit(self) -> bool:
+        """The surrogate reaches the band only beyond the factor's physical limit (or the bound is the limit)."""
+        return bool(self.limit_extension <= 0.0 or self.limit_extension < self.quadratic_extension < np.inf)
 
     @property
     def levels_off(self) -> bool:
@@ -118,13 +125,15 @@ def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, o
     quadratic = _smallest_positive_root(bend / 2, rate, -gap)
     turn = -rate / bend if rate > 0 and bend < 0 else np.inf
     level = f0 + g * turn + c * turn ** 2 / 2 if np.isfinite(turn) else np.nan
+    room = domain.room_beyond(factor, side)
     return Reach(factor=factor, side=side, observable=observable, value=float(f0), target=float(target),
                  band_edge=float(edge), slope=float(outward * g / width), curvature=float(c),
                  straight_extension=float(max(straight, 0.0)), quadratic_extension=float(max(quadratic, 0.0)),
                  levels_off_extension=float(turn), levels_off_value=float(level),
                  straight_factor_value=factor_value(straight), quadratic_factor_value=factor_value(quadratic),
                  levels_off_factor_value=factor_value(turn),
-                 widen=bool(quadratic <= WIDEN_LIMIT), log=bool(domain.log[i]))
+                 widen=bool(quadratic <= min(WIDEN_LIMIT, room) and room > 0.0), log=bool(domain.log[i]),
+                 limit_extension=room, limit_value=factor_value(room))
 
 
 def _spaced(unit: str) -> str:
@@ -134,6 +143,13 @@ def _spaced(unit: str) -> str:
 def saturation_finding(r: Reach, factor: str, observable: str, unit: str = "") -> str:
     """Level 2's finding in words, for a bound where widening is not advised (``r.widen`` False)."""
     u = _spaced(unit)
+    if r.beyond_limit:
+        if r.limit_extension <= 0.0:
+            return (f"The range of {factor} already ends at its physical limit {_g(r.limit_value)}, where "
+                    f"{observable} still misses its target {_g(r.target)}{u}: no simulation beyond it is possible.")
+        return (f"The surrogate of {observable} reaches its target band only at {factor} ≈ "
+                f"{_g(r.quadratic_factor_value)}, beyond the physical limit of {factor} ({_g(r.limit_value)}): a "
+                f"wider range of {factor} cannot reach the target.")
     if r.levels_off:
         return (f"Along {factor} the surrogate of {observable} levels off at {_g(r.levels_off_value)}{u} "
                 f"({factor} ≈ {_g(r.levels_off_factor_value)}), short of its target {_g(r.target)}{u}: the response "
@@ -149,6 +165,13 @@ def saturation_finding(r: Reach, factor: str, observable: str, unit: str = "") -
 def saturation_advice(r: Reach, factor: str, observable: str, unit: str = "") -> str:
     """What to do instead of widening: the model lacks something, or the target is off."""
     u = _spaced(unit)
+    if r.beyond_limit:
+        where = ("its range already ends at its physical limit" if r.limit_extension <= 0.0 else
+                 f"the surrogate reaches the target only at {factor} ≈ {_g(r.quadratic_factor_value)}, beyond its "
+                 "physical limit")
+        return (f"Do not widen {factor} for {observable} = {_g(r.target)}{u}: {where} {_g(r.limit_value)}. The "
+                f"missing {_g(abs(r.missing))}{u} of {observable} needs another mechanism in the model (a factor not "
+                f"varied) or a check of the target.")
     toward = r.slope * (1 if r.side == "upper" else -1) * (1 if r.missing > 0 else -1) > 0
     straight = (f"; a straight line would reach the target band at {factor} ≈ {_g(r.straight_factor_value)}"
                 if np.isfinite(r.straight_factor_value) else "")

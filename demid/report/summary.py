@@ -14,7 +14,7 @@ import re
 import numpy as np
 import pandas as pd
 
-from ..sampling.domain import BOUND_TOUCH, Domain
+from ..sampling.domain import BOUND_TOUCH, Domain, sides_at_limit
 
 #: Width of the admissible interval, as a fraction of the search range, up to which a factor is *identified*.
 IDENTIFIED_MAX_WIDTH = 0.10
@@ -43,12 +43,13 @@ def unit_text(unit: str) -> str:
 
 
 def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False,
-                   at_bound: str | None = None) -> tuple[str, float]:
+                   at_bound: str | None = None, limits: tuple = (None, None)) -> tuple[str, float]:
     """Verdict and width (fraction of the search range) of one admissible interval.
 
     ``at_bound`` is the interval's ``at_bound`` value from the identifiability table (which
     ends of the search range the set reaches); without it, it is derived the same way
-    (:meth:`~demid.sampling.domain.Domain.at_bound`).
+    (:meth:`~demid.sampling.domain.Domain.at_bound`).  An end of the range at the factor's physical
+    ``limits`` does not cut the set: no value lies beyond it.
     """
     if not (np.isfinite(lower) and np.isfinite(upper)):
         return "no admissible point", float("nan")
@@ -58,10 +59,16 @@ def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: 
         return "unresolved", width
     if not isinstance(at_bound, str):  # not given (or an older table without the column)
         at_bound = Domain(("x",), (bound_lower,), (bound_upper,), (log,)).at_bound([lower], [upper])[0]
-    if at_bound != "none":
-        sides = "lower and upper" if at_bound == "both" else at_bound
-        return f"cut by the search range ({sides} bound)", width
+    cut = [side for side in sides_reached(at_bound)
+           if side not in sides_at_limit((bound_lower, bound_upper), limits)]
+    if cut:
+        return f"cut by the search range ({' and '.join(cut)} bound)", width
     return ("identified" if width <= IDENTIFIED_MAX_WIDTH else "bounded"), width
+
+
+def sides_reached(at_bound: str) -> list[str]:
+    """The ends named by an ``at_bound`` value, lower first."""
+    return ["lower", "upper"] if at_bound == "both" else [] if at_bound == "none" else [at_bound]
 
 
 def verdict_table(identifiability: pd.DataFrame, spec) -> pd.DataFrame:
@@ -70,7 +77,7 @@ def verdict_table(identifiability: pd.DataFrame, spec) -> pd.DataFrame:
     for _, row in identifiability.iterrows():
         factor = spec.factor(row["factor"])
         verdict, width = factor_verdict(float(row["lower"]), float(row["upper"]), factor.lower, factor.upper, factor.log,
-                                        row.get("at_bound"))
+                                        row.get("at_bound"), factor.limits)
         label = next((sc.label for sc in spec.scenarios if sc.name == row["scenario"]), row["scenario"])
         rows.append({"scenario": label, "factor": factor.label, "unit": unit_text(factor.unit),
                      "admissible interval": "–" if verdict == "no admissible point"

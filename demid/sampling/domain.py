@@ -28,6 +28,13 @@ def uses_grid(dim: int) -> bool:
     return dim <= MAX_GRID_DIM
 
 
+def sides_at_limit(bounds: tuple, limits: tuple) -> list[str]:
+    """The ends of a factor's search range (lower, upper) that are its physical limits (lower, upper; None:
+    none): no value lies beyond them, so a set reaching them is not cut there."""
+    return [side for side, bound, limit, beyond in zip(("lower", "upper"), bounds, limits, (1.0, -1.0))
+            if limit is not None and beyond * (limit - bound) >= 0.0]
+
+
 @dataclass(frozen=True)
 class Domain:
     """The search domain Omega: a box in search units (actual, or log10 for log factors)."""
@@ -36,10 +43,27 @@ class Domain:
     lower: tuple[float, ...]
     upper: tuple[float, ...]
     log: tuple[bool, ...] = ()
+    # per factor, its physical limits (lower, upper) in actual units, None where it has none
+    limits: tuple[tuple[float | None, float | None], ...] = ()
 
     def __post_init__(self):
         if not self.log:
             object.__setattr__(self, "log", tuple(False for _ in self.factors))
+        if not self.limits:
+            object.__setattr__(self, "limits", tuple((None, None) for _ in self.factors))
+
+    def room_beyond(self, factor: str, side: str) -> float:
+        """How far the search range of ``factor`` could be widened on ``side`` before its physical limit, as a
+        fraction of the range in search units (inf: no limit on that side; a log factor's limit 0 is none)."""
+        i = self.factors.index(factor)
+        limit = self.limits[i][0 if side == "lower" else 1]
+        if limit is None or (self.log[i] and limit <= 0):
+            return float("inf")
+        lo, hi = self.search_bounds()
+        at = float(self.to_search(np.array([[limit if j == i else self.lower[j]
+                                              for j in range(self.dim)]], dtype=float))[0, i])
+        room = (lo[i] - at) if side == "lower" else (at - hi[i])
+        return max(float(room / (hi[i] - lo[i])), 0.0)
 
     @property
     def dim(self) -> int:

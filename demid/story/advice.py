@@ -68,7 +68,9 @@ def _bound_text(f, side: str) -> str:
     from ..report.summary import unit_text
 
     unit = f" {unit_text(f.unit)}" if f.unit != "-" else ""
-    return f"{side} bound ({(f.lower if side == 'lower' else f.upper):.4g}{unit})"
+    limit = f.limits[0 if side == "lower" else 1]
+    up_to = f", up to its physical limit {limit:.4g}{unit}," if limit is not None else ""
+    return f"{side} bound ({(f.lower if side == 'lower' else f.upper):.4g}{unit}){up_to}"
 
 
 def _check_targets(spec, implausible: dict, ranking) -> list[AdviceItem]:

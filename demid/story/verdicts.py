@@ -10,7 +10,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..report.summary import IDENTIFIED_MAX_WIDTH, factor_verdict
+from ..report.summary import IDENTIFIED_MAX_WIDTH, factor_verdict, sides_reached
+from ..sampling.domain import Domain, sides_at_limit
 
 VERDICT_COLUMNS = ["material", "scenario", "factor", "strict_lower", "strict_upper", "plausible_lower",
                    "plausible_upper", "verdict", "reason"]
@@ -48,6 +49,18 @@ def _reason(verdict: str, width: float, strict_verdict: str, strict_width: float
     return text
 
 
+def _at_limit(factor, lower: float, upper: float) -> str:
+    """The reason's words for a plausible interval that reaches an end of the range at a physical limit."""
+    if not (np.isfinite(lower) and np.isfinite(upper)):
+        return ""
+    domain = Domain((factor.name,), (factor.lower,), (factor.upper,), (factor.log,))
+    ends = [s for s in sides_reached(domain.at_bound([lower], [upper])[0])
+            if s in sides_at_limit((factor.lower, factor.upper), factor.limits)]
+    limits = dict(zip(("lower", "upper"), factor.limits))
+    return "".join(f"; it ends at the physical {s} limit ({limits[s]:.4g}), beyond which no value is possible"
+                   for s in ends)
+
+
 def verdict_frame(spec, identifiability: pd.DataFrame, robust: pd.DataFrame,
                   uninformative: dict[str, str] | None = None, implausible=()) -> pd.DataFrame:
     """One row per scenario x factor of one material (:data:`VERDICT_COLUMNS`).
@@ -72,13 +85,14 @@ def verdict_frame(spec, identifiability: pd.DataFrame, robust: pd.DataFrame,
             if float(plaus["robust_fraction_pct"].iloc[0]) == 0:
                 p_lo = p_hi = float("nan")
             strict_verdict, strict_width = factor_verdict(s_lo, s_hi, f.lower, f.upper, f.log,
-                                                          strict["at_bound"].iloc[0] if "at_bound" in strict else None)
+                                                          strict["at_bound"].iloc[0] if "at_bound" in strict else None,
+                                                          f.limits)
             if sc.observables and all(o in uninformative for o in sc.observables):
                 verdict = UNINFORMATIVE
                 reason = "; ".join(f"{spec.response_labels.get(o, o)}: {uninformative[o]}" for o in sc.observables)
             else:
-                verdict, width = factor_verdict(p_lo, p_hi, f.lower, f.upper, f.log)
-                reason = _reason(verdict, width, strict_verdict, strict_width, (s_lo, s_hi))
+                verdict, width = factor_verdict(p_lo, p_hi, f.lower, f.upper, f.log, limits=f.limits)
+                reason = _reason(verdict, width, strict_verdict, strict_width, (s_lo, s_hi)) + _at_limit(f, p_lo, p_hi)
                 slipped = [spec.response_labels.get(o, o) for o in sc.observables if o in implausible]
                 if verdict == "no admissible point" and slipped:
                     reason = (f"no point of the search range is plausible: the target of {', '.join(slipped)} lies "
