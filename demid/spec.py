@@ -32,6 +32,19 @@ def _limits(block: dict | None) -> tuple[float | None, float | None]:
     return tuple(float(block[side]) if block.get(side) is not None else None for side in ("lower", "upper"))
 
 
+def limits_problem(lower: float, upper: float, limits: dict | None) -> str | None:
+    """Why a factor's physical ``limits`` do not contain its search range [lower, upper] (the key and the
+    values), or None."""
+    limits = limits or {}
+    if limits.get("lower") is not None and limits["lower"] > lower:
+        return (f"limits.lower: {limits['lower']:g} is above the search range's lower bound {lower:g} (the range "
+                "must lie within the physical limits)")
+    if limits.get("upper") is not None and limits["upper"] < upper:
+        return (f"limits.upper: {limits['upper']:g} is below the search range's upper bound {upper:g} (the range "
+                "must lie within the physical limits)")
+    return None
+
+
 def label_entries(name: str, material: dict):
     """``(config key, text)`` of every label and unit of a validated ``materials`` entry (the schema filled
     the absent ones): what the label check parses."""

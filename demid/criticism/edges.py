@@ -50,7 +50,8 @@ def widen_advice(domain: Domain, best: dict[str, tuple[str, ...]], aset: dict[st
         limits = dict(zip(("lower", "upper"), domain.limits[i]))
         beyond = " and ".join(f"{'below' if s == 'lower' else 'above'} "
                               f"{_g(domain.lower[i] if s == 'lower' else domain.upper[i])}"
-                              + (f" (up to its physical limit {_g(limits[s])})" if limits[s] is not None else "")
+                              + (f" ({'down' if s == 'lower' else 'up'} to its physical limit {_g(limits[s])})"
+                                 if limits[s] is not None else "")
                               for s in sides)
         out.append(f"Widen the range of {f}: {'; '.join(what)}. Simulate runs {beyond} and search there.")
     return out

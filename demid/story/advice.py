@@ -69,7 +69,8 @@ def _bound_text(f, side: str) -> str:
 
     unit = f" {unit_text(f.unit)}" if f.unit != "-" else ""
     limit = f.limits[0 if side == "lower" else 1]
-    up_to = f", up to its physical limit {limit:.4g}{unit}," if limit is not None else ""
+    up_to = (f", {'down' if side == 'lower' else 'up'} to its physical limit {limit:.4g}{unit},"
+             if limit is not None else "")
     return f"{side} bound ({(f.lower if side == 'lower' else f.upper):.4g}{unit}){up_to}"
 
 

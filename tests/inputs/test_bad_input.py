@@ -90,6 +90,10 @@ def _bounds_reversed(t, c):
     return t, c.replace("b: {lower: 1.0, upper: 11.0}", "b: {lower: 11.0, upper: 1.0}")
 
 
+def _limit_inside_range(t, c):
+    return t, c.replace("a: {lower: 0.1, upper: 0.9}", "a: {lower: 0.1, upper: 0.9, limits: {lower: 0, upper: 0.8}}")
+
+
 def _missing_file(t, c):
     return t, c.replace("data: data/m.csv", "data: data/missing.csv")
 
@@ -117,6 +121,8 @@ CASES = [
     ("tolerance zero", _bad_tolerance, [r"study\.yaml", r"materials\.m\.scenarios\.y1_only\.tolerance"]),
     ("tolerance above one", _tolerance_one, [r"study\.yaml", r"materials\.m\.scenarios\.both\.tolerance"]),
     ("bounds reversed", _bounds_reversed, [r"study\.yaml", r"materials\.m\.factors\.b", r"lower"]),
+    ("physical limit inside the range", _limit_inside_range, [r"config key materials\.m\.factors\.a\.limits\.upper",
+                                                              r"0\.8 is below the search range's upper bound 0\.9"]),
     ("missing data file", _missing_file, [r"study\.yaml", r"materials\.m\.data", r"missing\.csv",
                                           r"looked for /\S+/data/missing\.csv"]),
     ("repeated config key", _repeated_key, [r"study\.yaml", r"line 12: key 'y1' is given twice", r"first at line 10"]),
