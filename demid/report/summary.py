@@ -27,7 +27,8 @@ VERDICT_TEXT = (
     f"both bounds; **unresolved**: {100 * UNRESOLVED_MIN_WIDTH:g} % of the range or more is admissible, the "
     f"observables say (almost) nothing about the factor; **cut by the search range**: narrower than that but "
     f"touching a search bound (within {100 * BOUND_TOUCH:g} % of the range), so the true interval may extend "
-    f"beyond it; **no admissible point**: no point of the domain meets every target. Widths are measured in "
+    f"beyond it (a bound at the factor's physical limit, `limits` in the config, cuts nothing: no value lies "
+    f"beyond it); **no admissible point**: no point of the domain meets every target. Widths are measured in "
     f"search units (log10 for log-scaled factors)."
 )
 
