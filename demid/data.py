@@ -436,17 +436,6 @@ def check_bound_slips(table: pd.DataFrame, material: str, factors: tuple[Factor,
                                      f"and looks like {value:g} with {SLIP_WORDS[kind]}; fix the bound", source=src)
 
 
-def check_limits(material: str, factors: tuple[Factor, ...], src: str) -> None:
-    """Each factor's physical limits contain its search range (after the bounds' slips: a slipped bound is
-    named as such, not as a bound beyond a limit)."""
-    from .spec import limits_problem
-
-    for factor in factors:
-        problem = limits_problem(factor.lower, factor.upper, dict(zip(("lower", "upper"), factor.limits)))
-        if problem:
-            raise InputError(f"config key materials.{material}.factors.{factor.name}.{problem}", source=src)
-
-
 def _block_notes(table: pd.DataFrame, factors: list[str], coding: Coding, log_factors, src: str) -> list[str]:
     """How the runs' blocks sit in the design (demid.blocks): a block term that cannot be estimated stops;
     a block without centre runs and non-orthogonal blocking are said."""
@@ -489,7 +478,9 @@ def validate_material(spec: MaterialSpec, base_dir: Path | str = ".") -> Validat
                              run=int(bad["run"].iloc[0]), column=f)
     check_bounds(table, spec.factors, src)
     check_bound_slips(table, material, spec.factors, src)
-    check_limits(material, spec.factors, src)
+    problem = spec.limits_problem()  # after the bounds' slips: a slipped bound is named as such
+    if problem:
+        raise InputError(problem, source=src)
     p = len(quadratic_terms(len(factors)))
     for r in responses:
         ok = np.isfinite(table[r].to_numpy())

@@ -182,6 +182,15 @@ class MaterialSpec:
         return cls.from_material(name, material, grid_points=evaluation_size(config, material))
 
     # ------------------------------------------------------------------ derived values
+    def limits_problem(self) -> str | None:
+        """The first factor whose physical limits do not contain its search range, as its config key and why
+        (None: every factor's do)."""
+        for f in self.factors:
+            problem = limits_problem(f.lower, f.upper, dict(zip(("lower", "upper"), f.limits)))
+            if problem:
+                return f"config key materials.{self.name}.factors.{f.name}.{problem}"
+        return None
+
     @cached_property
     def factor_names(self) -> list[str]:
         return [f.name for f in self.factors]
