@@ -110,15 +110,16 @@ class SetCombination:
 
 
 def set_combinations(points_coded: np.ndarray, lower, upper, factors, *, scenario: str, set_name: str,
-                     step=None, weights=None) -> SetCombination:
+                     step=None, weights=None, at_limit=()) -> SetCombination:
     """Principal axes of a set of coded points in the coded box ``[lower, upper]``, and for two
     factors the band's curve, its bend and its local thickness.  ``step``: the grid step per axis
     (coded; None or NaN for sample points); ``weights``: the volume each point stands for (equal when
-    None: grid nodes, uniform sample points), used by the principal axes."""
+    None: grid nodes, uniform sample points), used by the principal axes; ``at_limit``: per factor, the
+    ends of its range that are physical limits (:func:`~demid.sampling.domain.sides_at_limit`)."""
     axes = principal_axes(points_coded, lower, upper, weights=weights, factors=factors)
     out = SetCombination(scenario, set_name, axes)
     if axes is not None:
-        out.cut = _cut_side(points_coded, axes.directions[:, 0], lower, upper)
+        out.cut = _cut_side(points_coded, axes.directions[:, 0], lower, upper, at_limit)
     if axes is not None and len(factors) > 2:
         out.local = local_thickness(points_coded, axes, lower, upper)
         if out.local is not None:
@@ -142,9 +143,10 @@ def set_combinations(points_coded: np.ndarray, lower, upper, factors, *, scenari
     return out
 
 
-def _cut_side(points: np.ndarray, normal: np.ndarray, lower, upper) -> str:
+def _cut_side(points: np.ndarray, normal: np.ndarray, lower, upper, at_limit=()) -> str:
     """Which ends of the box, along ``normal``, the set reaches (within :data:`BOUND_TOUCH` of the box's
-    extent along it): there the set's width is the search range's, not the data's."""
+    extent along it): there the set's width is the search range's, not the data's -- unless every bound that
+    makes that end is a physical limit (``at_limit``, per factor), beyond which no value lies."""
     from ..sampling.domain import AT_BOUND, BOUND_TOUCH
 
     lo, hi = np.asarray(lower, dtype=float), np.asarray(upper, dtype=float)
@@ -153,6 +155,13 @@ def _cut_side(points: np.ndarray, normal: np.ndarray, lower, upper) -> str:
     proj = points @ normal
     tol = BOUND_TOUCH * (box_max - box_min) + 1e-12
     low, high = proj.min() <= box_min + tol, proj.max() >= box_max - tol
+    if at_limit:
+        # the factors whose bounds move that end by more than the touch tolerance
+        moving = np.abs(normal) * (hi - lo) > tol
+        low = low and not all(("lower" if n > 0 else "upper") in sides
+                              for n, sides, m in zip(normal, at_limit, moving) if m)
+        high = high and not all(("upper" if n > 0 else "lower") in sides
+                                for n, sides, m in zip(normal, at_limit, moving) if m)
     return AT_BOUND[int(low) + 2 * int(high)]
 
 
@@ -349,11 +358,14 @@ def material_combinations(surrogates: dict, spec: MaterialSpec, coding: Coding, 
                           ) -> MaterialCombinations:
     """Combinations of every scenario's strict and plausible set, and the break-the-ridge advice
     (from the plausible set when it has points, else the strict one)."""
+    from ..sampling.domain import sides_at_limit
+
     domain = spec.domain
     lower, upper = coded_box(spec, coding)
     factors = spec.factor_names
     labels = [f.label for f in spec.factors]
     logs = [f.log for f in spec.factors]
+    at_limit = [sides_at_limit((f.lower, f.upper), f.limits) for f in spec.factors]
     results, advice, clouds = [], [], {}
     for sc in spec.scenarios:
         searched = {}
@@ -364,7 +376,7 @@ def material_combinations(surrogates: dict, spec: MaterialSpec, coding: Coding, 
             points, step = admitted_points(aset, domain)
             coded = coding.to_coded(points) if len(points) else points
             res = set_combinations(coded, lower, upper, factors, scenario=sc.name, set_name=name,
-                                   step=step / np.asarray(coding.unit))
+                                   step=step / np.asarray(coding.unit), at_limit=at_limit)
             if res.axes is not None:
                 a, c, w, text = linear_statement(res.axes.directions[:, 0], res.axes.centre, res.axes.widths[0],
                                                  coding, labels, logs)

@@ -383,3 +383,22 @@ def test_on_a_curved_band_an_observable_constant_along_it_is_0_degrees_off():
     import re
 
     assert float(re.search(r"parallel (\d+)°", text).group(1)) <= 5
+
+
+def test_an_end_made_of_physical_limits_does_not_cut_the_set():
+    """The box [0, 4] x [1, 5]; a set filling it reaches both ends along every direction.  Along (1, 0) an end
+    made of x's bound at its physical limit cuts nothing; along the diagonal the upper end is the corner
+    (4, 5), cut unless both bounds there are limits."""
+    from demid.combinations.material import _cut_side
+
+    x, y = np.meshgrid(np.linspace(0, 4, 9), np.linspace(1, 5, 9), indexing="ij")
+    points = np.column_stack([x.ravel(), y.ravel()])
+    box = ([0.0, 1.0], [4.0, 5.0])
+    along_x, diagonal = np.array([1.0, 0.0]), np.array([1.0, 1.0]) / np.sqrt(2)
+    assert _cut_side(points, along_x, *box) == "both"
+    assert _cut_side(points, along_x, *box, (["upper"], [])) == "lower"
+    assert _cut_side(points, along_x, *box, (["lower", "upper"], [])) == "none"
+    assert _cut_side(points, along_x, *box, ([], ["lower", "upper"])) == "both"  # y's limits make no end here
+    assert _cut_side(points, diagonal, *box, (["upper"], [])) == "both"
+    assert _cut_side(points, diagonal, *box, (["upper"], ["upper"])) == "lower"
+    assert _cut_side(points, -diagonal, *box, (["upper"], ["upper"])) == "upper"  # the same corner, seen reversed
