@@ -36,12 +36,13 @@ def limits_problem(lower: float, upper: float, limits: dict | None) -> str | Non
     """Why a factor's physical ``limits`` do not contain its search range [lower, upper] (the key and the
     values), or None."""
     limits = limits or {}
-    if limits.get("lower") is not None and limits["lower"] > lower:
-        return (f"limits.lower: {limits['lower']:g} is above the search range's lower bound {lower:g} (the range "
-                "must lie within the physical limits)")
-    if limits.get("upper") is not None and limits["upper"] < upper:
-        return (f"limits.upper: {limits['upper']:g} is below the search range's upper bound {upper:g} (the range "
-                "must lie within the physical limits)")
+    slack = 1e-6 * abs(upper - lower)  # a bound written rounded (a next wave's box) is no violation
+    if limits.get("lower") is not None and limits["lower"] > lower + slack:
+        return (f"limits.lower: {limits['lower']:.10g} is above the search range's lower bound {lower:.10g} (the "
+                "range must lie within the physical limits)")
+    if limits.get("upper") is not None and limits["upper"] < upper - slack:
+        return (f"limits.upper: {limits['upper']:.10g} is below the search range's upper bound {upper:.10g} (the "
+                "range must lie within the physical limits)")
     return None
 
 

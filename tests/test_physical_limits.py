@@ -82,7 +82,9 @@ def test_the_verdict_says_the_interval_ends_at_the_physical_limit():
                             "robust_fraction_pct": 5.0}])
     frame = verdict_frame(spec, strict, robust).set_index("factor")
     assert frame.loc["x", "verdict"] == "identified"
-    assert "it ends at the physical upper limit (1)" in frame.loc["x", "reason"]
+    assert frame.loc["x", "reason"].startswith("the plausible interval is 8 % of the search range wide and clear of "
+                                               "the lower bound, ending at the physical upper limit (1), beyond which "
+                                               "no value lies")
     assert "physical" not in frame.loc["w", "reason"]
     assert not [i for i in material_advice(spec, frame.reset_index()) if i.kind == "widen"]
     # without the limit the same interval is cut, and the range is widened there
@@ -115,3 +117,28 @@ def test_limits_must_contain_the_search_range():
                                                               "bound 0.1")
     assert limits_problem(0.1, 0.9, {"upper": 0.8}).startswith("limits.upper: 0.8 is below the search range's upper "
                                                               "bound 0.9")
+    # a bound written rounded to 6 digits (a next wave's box) is still within, and still at, the limit
+    assert limits_problem(0.0, 0.707107, {"upper": 0.7071068}) is None
+    from demid.sampling.domain import sides_at_limit
+    assert sides_at_limit((0.0, 0.707107), (None, 0.7071068)) == ["upper"]
+    assert sides_at_limit((0.0, 0.7071), (None, 0.7071068)) == []
+
+
+def test_a_response_levelling_off_beyond_the_limit_is_said_to_stay_short_up_to_the_limit():
+    # y = 10 + 12x - 4x²: 18 at the bound x = 1, levels off at x = 1.5 (19) short of the band edge 24.5; the
+    # straight line reaches it at x = 2.625.  With the limit 1.2 neither value can be simulated.
+    from demid.surrogate import Surrogate as S
+
+    terms = quadratic_terms(2)
+    coef = np.zeros(len(terms))
+    coef[0], coef[1], coef[4] = 10, 12, -4
+    spec = _spec({"upper": 1.2}, target=24.5 / (1 - TOL))
+    surrogate = S("y", ["x", "w"], terms, coef, np.zeros((len(terms), len(terms))), 0.0, 7)
+    result = calibration_check({"y": surrogate}, spec.domain, {"y": spec.responses[0].target}, TOL, 21)
+    (reach,) = result.reach
+    assert reach.levels_off and not reach.widen and not reach.beyond_limit
+    assert "stays short of its target 25 up to the physical limit of x (1.2)" in result.finding
+    assert "x ≈ 1.5" not in result.finding
+    (item,) = [i for i in material_advice(spec, pd.DataFrame(columns=["scenario", "factor", "verdict"]),
+                                          criticism={"level2": result.to_json()}) if i.factor == "x"]
+    assert item.kind == "recalibrate" and "straight line" not in item.text

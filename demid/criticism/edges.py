@@ -28,16 +28,28 @@ def touching(at_bound) -> dict[str, tuple[str, ...]]:
     return {f: _SIDES[v] for f, v in at_bound.items() if _SIDES[v]}
 
 
+def movable_sides(domain: Domain, touch: dict[str, tuple[str, ...]]) -> dict[str, tuple[str, ...]]:
+    """``touch`` ({factor: sides}) without the sides at the factor's physical limit: the bounds a wider
+    range could move."""
+    from ..sampling.domain import sides_at_limit
+
+    out = {}
+    for f, sides in touch.items():
+        i = domain.factors.index(f)
+        fixed = sides_at_limit((domain.lower[i], domain.upper[i]), domain.limits[i])
+        kept = tuple(s for s in sides if s not in fixed)
+        if kept:
+            out[f] = kept
+    return out
+
+
 def widen_advice(domain: Domain, best: dict[str, tuple[str, ...]], aset: dict[str, tuple[str, ...]]) -> list[str]:
     """"Widen the range of X" sentences: per factor whose best point or admissible set sits on a bound that is
     not its physical limit (up to the limit, where it has one)."""
-    from ..sampling.domain import sides_at_limit
-
+    best, aset = movable_sides(domain, best), movable_sides(domain, aset)
     out = []
     for i, f in enumerate(domain.factors):
-        fixed = sides_at_limit((domain.lower[i], domain.upper[i]), domain.limits[i])
-        best_sides = [s for s in best.get(f, ()) if s not in fixed]
-        set_sides = [s for s in aset.get(f, ()) if s not in fixed]
+        best_sides, set_sides = best.get(f, ()), aset.get(f, ())
         sides = sorted(set(best_sides) | set(set_sides), key=("lower", "upper").index)
         if not sides:
             continue

@@ -306,7 +306,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
             break  # a further extension must also predict left-out runs better
         findings.append(_finding(data, response, model, h, spec, info, new, alternatives,
                                  other_reading_of_the_run(h, rnd.hypotheses),
-                                 _scatter_aliases(data, model, h, new, rnd.hypotheses)))
+                                 _scatter_aliases(data, model, h, new, rnd.hypotheses), first=not findings))
         model = new
         last_round = None
         if model.df_resid - 1 < 3 or model.spec.weight_on is not None:
@@ -546,9 +546,10 @@ def _with_alternatives(data: _Data, fitted_alternatives: list, best: int) -> tup
 
 
 def _scatter_aliases(data: _Data, model: _Model, h: _Hypothesis, new: _Model, hypotheses: list) -> list[str]:
-    """For unequal scatter: the covariates it follows about as well as the named one (its extension within
-    AMBIGUOUS_AICC of the named one's), the named one first -- the runs do not tell which; [] when none is that
-    close (or for another cause).  The fitted value is often nearly one factor on a small design."""
+    """For unequal scatter: the covariates it follows as well as the named one or nearly so (their extension's
+    AICc at most AMBIGUOUS_AICC above the named one's; a covariate not among the rejected tests may fit better),
+    the named one first -- the runs do not tell which; [] when none is that close (or for another cause).  The
+    fitted value is often nearly one factor on a small design."""
     if h.cause != "heteroscedasticity":
         return []
     close = sorted((mo.aicc, other.detail) for other in hypotheses
@@ -559,10 +560,10 @@ def _scatter_aliases(data: _Data, model: _Model, h: _Hypothesis, new: _Model, hy
 
 def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _Spec, info: dict, new: _Model,
              alternatives: list[dict], other_reading: str | None = None,
-             scatter_aliases: list[str] = ()) -> Finding:
+             scatter_aliases: list[str] = (), first: bool = True) -> Finding:
     """The finding of one round: the named cause, its gain on the same runs, and its message; ``other_reading``
     of the same run (an outlier for a slip, a slip for an outlier) is listed as its alias, and so are the
-    ``scatter_aliases`` of unequal scatter."""
+    ``scatter_aliases`` of unequal scatter (the ``first`` finding's confirming runs separate them)."""
     if h.cause == "response_transform":
         info["lam"] = spec.lam
     if h.cause == "drift":
@@ -586,8 +587,9 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
                     f"slip, {info['bayes_factor']:.1f}, is no decisive preference).")
     if scatter_aliases:
         others = ", ".join("the predicted value" if a == "fitted" else a for a in scatter_aliases[1:])
-        message += (f" The scatter follows {others} about as well (within {AMBIGUOUS_AICC:g} in AICc): these runs "
-                    "do not tell which; the confirming runs are chosen to.")
+        message += (f" The scatter follows {others} as well or nearly so (AICc at most {AMBIGUOUS_AICC:g} worse): "
+                    "these runs do not tell which" + ("; the runs proposed to confirm it are chosen to tell them "
+                                                      "apart." if first else "."))
     close = [a for a in alternatives if a["loglik_vs_named"] is not None and a["loglik_vs_named"] > -2.0
              and not (a["cause"] == h.cause and a["detail"] in scatter_aliases)]
     if close:

@@ -23,7 +23,7 @@ from scipy import optimize
 
 from ..formulas import relative_error
 from ..tolerance import same_tolerances
-from .edges import extrapolation_warnings, touching, widen_advice
+from .edges import extrapolation_warnings, movable_sides, touching, widen_advice
 from .messages import _level2_message
 from .models import _num
 from .reach import reach_beyond_bound, saturation_advice, saturation_finding
@@ -404,8 +404,10 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     if not feasible and best_touch:
         best_touch = _worth_widening(result, surrogates, domain, best_touch,
                                      [observables[i] for i in (movable or every)])
-    result.widen = {f: sorted(set(best_touch.get(f, ())) | set(set_touch.get(f, ())), key=("lower", "upper").index)
-                    for f in factors if f in best_touch or f in set_touch}
+    # the bounds to move outwards: not one at a physical limit (its reach above says so when it matters)
+    moving_best, moving_set = movable_sides(domain, best_touch), movable_sides(domain, set_touch)
+    result.widen = {f: sorted(set(moving_best.get(f, ())) | set(moving_set.get(f, ())), key=("lower", "upper").index)
+                    for f in factors if f in moving_best or f in moving_set}
     result.extrapolation = extrapolation_warnings(domain, runs, reference_point)
     stuck = [f"{o} is predicted the same everywhere in the search range (no factor moves it), so no calibration "
              f"brings it nearer its target: check its simulation output." for o in result.unmoved]

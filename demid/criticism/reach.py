@@ -150,6 +150,9 @@ def saturation_finding(r: Reach, factor: str, observable: str, unit: str = "") -
         return (f"The surrogate of {observable} reaches its target band only at {factor} ≈ "
                 f"{_g(r.quadratic_factor_value)}, beyond the physical limit of {factor} ({_g(r.limit_value)}): a "
                 f"wider range of {factor} cannot reach the target.")
+    if r.levels_off and r.levels_off_extension > r.limit_extension:
+        return (f"Along {factor} the surrogate of {observable} stays short of its target {_g(r.target)}{u} up to the "
+                f"physical limit of {factor} ({_g(r.limit_value)}): a wider range of {factor} cannot reach it.")
     if r.levels_off:
         return (f"Along {factor} the surrogate of {observable} levels off at {_g(r.levels_off_value)}{u} "
                 f"({factor} ≈ {_g(r.levels_off_factor_value)}), short of its target {_g(r.target)}{u}: the response "
@@ -174,7 +177,7 @@ def saturation_advice(r: Reach, factor: str, observable: str, unit: str = "") ->
                 f"varied) or a check of the target.")
     toward = r.slope * (1 if r.side == "upper" else -1) * (1 if r.missing > 0 else -1) > 0
     straight = (f"; a straight line would reach the target band at {factor} ≈ {_g(r.straight_factor_value)}"
-                if np.isfinite(r.straight_factor_value) else "")
+                if np.isfinite(r.straight_factor_value) and r.straight_extension <= r.limit_extension else "")
     per = "decade of" if r.log else "unit"
     return (f"Do not widen {factor} for {observable} = {_g(r.target)}{u}: at the bound {observable} "
             f"{'gains only' if toward else 'moves away by'} {_g(abs(r.slope))}{u} per {per} {factor}{straight}. "

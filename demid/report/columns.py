@@ -47,7 +47,8 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
     "identifiability": {
         "at_bound": ("–", f"Which ends of the factor's search range the admissible set reaches (within "
                           f"{100 * BOUND_TOUCH:g} % of the range): none, lower, upper or both. A set that reaches "
-                          f"a bound may extend beyond it: widen the range there. none when the set is empty."),
+                          f"a bound may extend beyond it: widen the range there, unless the bound is the factor's "
+                          f"physical limit. none when the set is empty."),
     },
     "transcription_check": {
         "statistic": ("–", "Published fit statistic checked (r2, rmse, …)."),

@@ -23,7 +23,10 @@ def _pct(width: float) -> str:
     return f"{100 * width:.3g} % of the search range"
 
 
-def _reason(verdict: str, width: float, strict_verdict: str, strict_width: float, strict: tuple) -> str:
+def _reason(verdict: str, width: float, strict_verdict: str, strict_width: float, strict: tuple,
+            limit_ends: dict | None = None) -> str:
+    """``limit_ends``: the ends of the plausible interval at a physical limit (side -> limit)."""
+    limit_ends = limit_ends or {}
     if verdict == "no admissible point":
         text = ("no point of the search range is plausible: a discrepancy between simulation and experiment "
                 "(see level 2)")
@@ -32,12 +35,13 @@ def _reason(verdict: str, width: float, strict_verdict: str, strict_width: float
     elif verdict.startswith("cut"):
         sides = verdict.split("(")[1].rstrip(")")
         text = (f"the plausible interval ({_pct(width)}) reaches the {sides}: the set may extend beyond the "
-                "search range")
+                "search range" + "".join(f"; its {s} end is the physical limit ({v:.4g})"
+                                         for s, v in limit_ends.items()))
     elif verdict == "identified":
-        text = f"the plausible interval is {_pct(width)} wide and clear of both bounds"
+        text = f"the plausible interval is {_pct(width)} wide and {_clear_of_bounds(limit_ends)}"
     else:
         text = (f"the plausible interval is {_pct(width)} wide (identified needs at most "
-                f"{100 * IDENTIFIED_MAX_WIDTH:g} %) and clear of both bounds")
+                f"{100 * IDENTIFIED_MAX_WIDTH:g} %) and {_clear_of_bounds(limit_ends)}")
     if strict_verdict != verdict:
         if strict_verdict == "no admissible point":
             text += "; strictly (surrogate and measurements exact) no point meets every target"
@@ -49,16 +53,26 @@ def _reason(verdict: str, width: float, strict_verdict: str, strict_width: float
     return text
 
 
-def _at_limit(factor, lower: float, upper: float) -> str:
-    """The reason's words for a plausible interval that reaches an end of the range at a physical limit."""
+def _clear_of_bounds(limit_ends: dict) -> str:
+    if not limit_ends:
+        return "clear of both bounds"
+    if len(limit_ends) == 2:
+        return (f"reaches the physical limits at both ends ({limit_ends['lower']:.4g} and "
+                f"{limit_ends['upper']:.4g}), beyond which no value lies")
+    (side, value), = limit_ends.items()
+    other = "upper" if side == "lower" else "lower"
+    return (f"clear of the {other} bound, ending at the physical {side} limit ({value:.4g}), beyond which no value "
+            "lies")
+
+
+def _limit_ends(factor, lower: float, upper: float) -> dict:
+    """The ends of an interval that reach an end of the factor's range at its physical limit: side -> limit."""
     if not (np.isfinite(lower) and np.isfinite(upper)):
-        return ""
+        return {}
     domain = Domain((factor.name,), (factor.lower,), (factor.upper,), (factor.log,))
-    ends = [s for s in sides_reached(domain.at_bound([lower], [upper])[0])
-            if s in sides_at_limit((factor.lower, factor.upper), factor.limits)]
     limits = dict(zip(("lower", "upper"), factor.limits))
-    return "".join(f"; it ends at the physical {s} limit ({limits[s]:.4g}), beyond which no value is possible"
-                   for s in ends)
+    return {s: limits[s] for s in sides_reached(domain.at_bound([lower], [upper])[0])
+            if s in sides_at_limit((factor.lower, factor.upper), factor.limits)}
 
 
 def verdict_frame(spec, identifiability: pd.DataFrame, robust: pd.DataFrame,
@@ -92,7 +106,8 @@ def verdict_frame(spec, identifiability: pd.DataFrame, robust: pd.DataFrame,
                 reason = "; ".join(f"{spec.response_labels.get(o, o)}: {uninformative[o]}" for o in sc.observables)
             else:
                 verdict, width = factor_verdict(p_lo, p_hi, f.lower, f.upper, f.log, limits=f.limits)
-                reason = _reason(verdict, width, strict_verdict, strict_width, (s_lo, s_hi)) + _at_limit(f, p_lo, p_hi)
+                reason = _reason(verdict, width, strict_verdict, strict_width, (s_lo, s_hi),
+                                 _limit_ends(f, p_lo, p_hi))
                 slipped = [spec.response_labels.get(o, o) for o in sc.observables if o in implausible]
                 if verdict == "no admissible point" and slipped:
                     reason = (f"no point of the search range is plausible: the target of {', '.join(slipped)} lies "

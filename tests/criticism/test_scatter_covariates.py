@@ -70,7 +70,7 @@ def test_covariates_the_scatter_follows_about_as_well_are_listed_as_its_aliases(
         named += 1
         if mean_follows == "same":
             assert sorted(f.aliases) == sorted([factor, "fitted"]) and f.detail in f.aliases
-            assert "do not tell which" in f.message
+            assert "do not tell which; the runs proposed to confirm it are chosen to tell them apart" in f.message
             labels = set(res.discriminating_runs[0]["expected"])
             assert {f"heteroscedasticity ({d})" for d in f.aliases} <= labels
         else:
