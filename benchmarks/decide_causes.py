@@ -169,7 +169,8 @@ not added: runs spent on them do not decide the named cause), and the predicted 
 follows the unweighted fit there (it was taken as constant, so no run was ever chosen for it).  A planted scatter
 counts as named when its factor is the named covariate or among the aliases, as a planted term among a named
 term's aliases does.  An ambiguous verdict's one-run candidate lists the run's other reading (outlier or slipped
-value) as its alias as a named finding does (one more planted outlier among the candidates on seeds 20-39).  Each table's loop also goes one step further: the runs its verdict after the proposed runs
+value) as its alias as a named finding does (one more planted outlier among the candidates on seeds
+20-39).  Each table's loop also goes one step further: the runs its verdict after the proposed runs
 proposes in turn (to decide or to confirm) are simulated and the table criticised again (``after a second
 round``), the control adding as many random runs to its own table.  n_null 499, all kinds, before -> after;
 seeds 0-19 | 20-39 | 40-59 (40-59 never looked at before these numbers):
@@ -431,8 +432,8 @@ def main(argv=None) -> None:
               f"({amb['random_named'].mean():.3f})")
         made = int((needs["n_runs2"] > 0).sum())
         print(f"  after a second round (the runs the verdict after the first ones proposes; made in {made} tables, "
-              f"{needs['n_runs2'].sum() / max(made, 1):.1f} runs on average): named {needs['after2_named'].mean():.3f}, after as many random runs "
-              f"{needs['random2_named'].mean():.3f}")
+              f"{needs['n_runs2'].sum() / max(made, 1):.1f} runs on average): named "
+              f"{needs['after2_named'].mean():.3f}, after as many random runs {needs['random2_named'].mean():.3f}")
     sure = frame[frame["confirming"] & frame["first_named"]]
     if len(sure):
         print(f"named right first with confirming runs: {len(sure)} tables; still named right after them "

@@ -24,12 +24,12 @@ UNRESOLVED_MIN_WIDTH = 0.90
 VERDICT_TEXT = (
     f"**identified**: admissible interval at most {100 * IDENTIFIED_MAX_WIDTH:g} % of the search range wide and "
     f"clear of both bounds (or ending at a physical limit); **bounded**: narrower than "
-    f"{100 * UNRESOLVED_MIN_WIDTH:g} % of the range and clear of both bounds (or at a limit); **unresolved**: {100 * UNRESOLVED_MIN_WIDTH:g} % of the range or more is admissible, the "
-    f"observables say (almost) nothing about the factor; **cut by the search range**: narrower than that but "
-    f"touching a search bound (within {100 * BOUND_TOUCH:g} % of the range), so the true interval may extend "
-    f"beyond it (a bound at the factor's physical limit, `limits` in the config, cuts nothing: no value lies "
-    f"beyond it); **no admissible point**: no point of the domain meets every target. Widths are measured in "
-    f"search units (log10 for log-scaled factors)."
+    f"{100 * UNRESOLVED_MIN_WIDTH:g} % of the range and clear of both bounds (or at a limit); **unresolved**: "
+    f"{100 * UNRESOLVED_MIN_WIDTH:g} % of the range or more is admissible, the observables say (almost) nothing "
+    f"about the factor; **cut by the search range**: narrower than that but touching a search bound (within "
+    f"{100 * BOUND_TOUCH:g} % of the range), so the true interval may extend beyond it (a bound at the factor's "
+    f"physical limit, `limits` in the config, cuts nothing: no value lies beyond it); **no admissible point**: no "
+    f"point of the domain meets every target. Widths are measured in search units (log10 for log-scaled factors)."
 )
 
 
