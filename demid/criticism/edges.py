@@ -20,12 +20,13 @@ from .models import _g
 if TYPE_CHECKING:
     from ..sampling.domain import Domain
 
-_SIDES = {"lower": ("lower",), "upper": ("upper",), "both": ("lower", "upper"), "none": ()}
 
 
 def touching(at_bound) -> dict[str, tuple[str, ...]]:
     """{factor: sides} of an ``at_bound`` mapping (factor -> none/lower/upper/both), touching factors only."""
-    return {f: _SIDES[v] for f, v in at_bound.items() if _SIDES[v]}
+    from ..sampling.domain import SIDES_OF
+
+    return {f: SIDES_OF[v] for f, v in at_bound.items() if SIDES_OF[v]}
 
 
 def movable_sides(domain: Domain, touch: dict[str, tuple[str, ...]]) -> dict[str, tuple[str, ...]]:

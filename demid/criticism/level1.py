@@ -470,8 +470,7 @@ def _alias_scatter_covariates(entries: list[dict]) -> None:
     AMBIGUOUS_AICC) as its aliases, as a missing term carries the terms the runs alias with it."""
     scatter = [e for e in entries if e["cause"] == "heteroscedasticity"]
     for e in scatter:
-        close = sorted((o for o in scatter if o is not e and o["aicc"] - e["aicc"] <= AMBIGUOUS_AICC),
-                       key=lambda o: o["aicc"])
+        close = _nearly_as_good(e["aicc"], [(o["aicc"], o) for o in scatter if o is not e])
         if close:
             e.update(aliases=[e["detail"]] + [o["detail"] for o in close], aliased=[o["detail"] for o in close],
                      aliased_models=[o["model"] for o in close])
@@ -552,10 +551,15 @@ def _scatter_aliases(data: _Data, model: _Model, h: _Hypothesis, new: _Model, hy
     fitted value is often nearly one factor on a small design."""
     if h.cause != "heteroscedasticity":
         return []
-    close = sorted((mo.aicc, other.detail) for other in hypotheses
-                   if other.cause == h.cause and other.detail != h.detail
-                   for mo in [_Model(data, _apply(data, model, other)[0])] if mo.aicc - new.aicc <= AMBIGUOUS_AICC)
-    return [h.detail] + [detail for _, detail in close] if close else []
+    close = _nearly_as_good(new.aicc, [(_Model(data, _apply(data, model, other)[0]).aicc, other.detail)
+                                       for other in hypotheses if other.cause == h.cause and other.detail != h.detail])
+    return [h.detail] + close if close else []
+
+
+def _nearly_as_good(anchor_aicc: float, others: list[tuple[float, object]]) -> list:
+    """Of ``others`` ((AICc, item) pairs), the items fitted as well as the anchor or nearly so (AICc at most
+    AMBIGUOUS_AICC above it), best first: the covariates of unequal scatter the runs do not tell apart."""
+    return [item for aicc, item in sorted(others, key=lambda pair: pair[0]) if aicc - anchor_aicc <= AMBIGUOUS_AICC]
 
 
 def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _Spec, info: dict, new: _Model,

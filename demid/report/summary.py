@@ -14,7 +14,7 @@ import re
 import numpy as np
 import pandas as pd
 
-from ..sampling.domain import BOUND_TOUCH, Domain, sides_at_limit
+from ..sampling.domain import BOUND_TOUCH, SIDES_OF, Domain, sides_at_limit
 
 #: Width of the admissible interval, as a fraction of the search range, up to which a factor is *identified*.
 IDENTIFIED_MAX_WIDTH = 0.10
@@ -59,17 +59,16 @@ def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: 
     if width >= UNRESOLVED_MIN_WIDTH:
         return "unresolved", width
     if not isinstance(at_bound, str):  # not given (or an older table without the column)
-        at_bound = Domain(("x",), (bound_lower,), (bound_upper,), (log,)).at_bound([lower], [upper])[0]
-    cut = [side for side in sides_reached(at_bound)
-           if side not in sides_at_limit((bound_lower, bound_upper), limits)]
+        at_bound = interval_at_bound(lower, upper, bound_lower, bound_upper, log)
+    cut = [side for side in SIDES_OF[at_bound] if side not in sides_at_limit((bound_lower, bound_upper), limits)]
     if cut:
         return f"cut by the search range ({' and '.join(cut)} bound)", width
     return ("identified" if width <= IDENTIFIED_MAX_WIDTH else "bounded"), width
 
 
-def sides_reached(at_bound: str) -> list[str]:
-    """The ends named by an ``at_bound`` value, lower first."""
-    return ["lower", "upper"] if at_bound == "both" else [] if at_bound == "none" else [at_bound]
+def interval_at_bound(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False) -> str:
+    """The ``at_bound`` value of one interval in its factor's range (:meth:`Domain.at_bound`)."""
+    return Domain(("x",), (bound_lower,), (bound_upper,), (log,)).at_bound([lower], [upper])[0]
 
 
 def verdict_table(identifiability: pd.DataFrame, spec) -> pd.DataFrame:

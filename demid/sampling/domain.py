@@ -19,6 +19,9 @@ BOUND_TOUCH = 0.005
 #: Values of the ``at_bound`` column: which ends of the search range a set reaches, per factor.
 AT_BOUND = ("none", "lower", "upper", "both")
 
+#: The ends each ``at_bound`` value names, lower first.
+SIDES_OF = {"none": (), "lower": ("lower",), "upper": ("upper",), "both": ("lower", "upper")}
+
 
 def uses_grid(dim: int) -> bool:
     """True when a ``dim``-factor domain is evaluated on a full grid, False for Sobol points.

@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..report.summary import IDENTIFIED_MAX_WIDTH, factor_verdict, sides_reached
-from ..sampling.domain import Domain, sides_at_limit
+from ..report.summary import IDENTIFIED_MAX_WIDTH, factor_verdict, interval_at_bound
+from ..sampling.domain import SIDES_OF, sides_at_limit
 
 VERDICT_COLUMNS = ["material", "scenario", "factor", "strict_lower", "strict_upper", "plausible_lower",
                    "plausible_upper", "verdict", "reason"]
@@ -69,9 +69,8 @@ def _limit_ends(factor, lower: float, upper: float) -> dict:
     """The ends of an interval that reach an end of the factor's range at its physical limit: side -> limit."""
     if not (np.isfinite(lower) and np.isfinite(upper)):
         return {}
-    domain = Domain((factor.name,), (factor.lower,), (factor.upper,), (factor.log,))
     limits = dict(zip(("lower", "upper"), factor.limits))
-    return {s: limits[s] for s in sides_reached(domain.at_bound([lower], [upper])[0])
+    return {s: limits[s] for s in SIDES_OF[interval_at_bound(lower, upper, factor.lower, factor.upper, factor.log)]
             if s in sides_at_limit((factor.lower, factor.upper), factor.limits)}
 
 
