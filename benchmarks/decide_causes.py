@@ -361,9 +361,10 @@ def one_table(seed: int, k: int, kind: str, size: float, n_null: int) -> dict:
 
 def _second_round(row: dict, truth: Truth, after, table: pd.DataFrame, rand, random_table: pd.DataFrame,
                   rng: np.random.Generator, n_null: int) -> None:
-    """The loop's next step: the runs the verdict after the first proposed runs proposes in turn (to decide
-    or to confirm), simulated and criticised; the control adds as many random runs to its own table."""
-    runs = after.discriminating_runs
+    """The loop's next step: the runs the verdict after the first proposed runs proposes in turn for the next
+    wave (to decide, or to confirm against a rival within CONFIRM_AICC), simulated and criticised; the control
+    adds as many random runs to its own table."""
+    runs = after.discriminating_runs if after.runs_for_next_wave else []
     row["n_runs2"] = len(runs)
     if not runs:
         row.update({"after2_named": row["after_named"], "random2_named": row["random_named"]})

@@ -63,6 +63,7 @@ BOX_SHARE = 1 / 4
 BAND_Z_FACTOR = 2.0
 PURPOSE_SEPARATE = "separate aliased terms {terms} ({responses})"
 PURPOSE_DECIDE = "decide between causes"
+PURPOSE_CONFIRM = "confirm the named cause"
 
 
 @dataclass
@@ -162,23 +163,43 @@ def aliased_findings(findings: pd.DataFrame | None, factors: list[str]) -> list[
 
 
 def deciding_runs(findings: pd.DataFrame | None, factors: list[str]) -> list[dict]:
-    """The runs the criticism proposes to decide between causes it cannot tell apart (an ``ambiguous`` row's
-    ``discriminating_runs``), each point once, in the order proposed."""
+    """The runs the criticism proposes for the next wave (a row's ``discriminating_runs``): those that decide
+    between causes it cannot tell apart first, then those that confirm a named cause against a rival within
+    10 in AICc; in the order proposed, with its ``purpose``.  A replicate is kept (replicates are what tell a
+    wild run from unequal scatter); a point that several responses propose is made as often as the one that
+    proposes it most often, not once for each."""
     import json
 
     if findings is None or not len(findings) or "discriminating_runs" not in findings:
         return []
-    out, seen = [], set()
-    for _, row in findings[findings["cause"] == "ambiguous"].iterrows():
+    proposed = []
+    for _, row in findings.iterrows():
         text = row["discriminating_runs"]
-        if not isinstance(text, str) or not text:
-            continue
-        for run in json.loads(text):
-            key = tuple(float(run[f]) for f in factors)
-            if key not in seen:
-                seen.add(key)
-                out.append({**{f: float(run[f]) for f in factors}, "response": str(row["response"])})
+        if isinstance(text, str) and text:
+            proposed += [(run, str(row["response"])) for run in json.loads(text)]
+    # decide first: until then no cause can be trusted (sorted is stable: the proposed order within each)
+    proposed.sort(key=lambda item: item[0].get("purpose", PURPOSE_DECIDE) != PURPOSE_DECIDE)
+    out, made, asked = [], {}, {}
+    for run, response in proposed:
+        key = tuple(float(run[f]) for f in factors)
+        asked[key, response] = asked.get((key, response), 0) + 1
+        if asked[key, response] > made.get(key, 0):
+            made[key] = made.get(key, 0) + 1
+            out.append({**{f: float(run[f]) for f in factors}, "response": response,
+                        "purpose": run.get("purpose", PURPOSE_DECIDE)})
     return out
+
+
+def _deciding_reason(deciding: list[dict]) -> str:
+    """The reason's clause for the criticism's runs: how many, what for, for which responses."""
+    parts = []
+    for purpose, what in ((PURPOSE_DECIDE, "to decide between causes the criticism cannot tell apart"),
+                          (PURPOSE_CONFIRM, "to confirm a cause the criticism named against a rival it leads "
+                                            "by less than 10 in AICc")):
+        runs = [d for d in deciding if d["purpose"] == purpose]
+        if runs:
+            parts.append(f"{len(runs)} run(s) {what} ({', '.join(dict.fromkeys(d['response'] for d in runs))})")
+    return "; first " + ", then ".join(parts) if parts else ""
 
 
 def _full_rank(points: np.ndarray, k: int) -> int:
@@ -305,7 +326,7 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     deciding = deciding_runs(findings, factors)  # first: they decide what the surrogate can be trusted with
     if deciding:
         points = np.vstack([np.array([[d[f] for f in factors] for d in deciding]), points])
-        purposes = [PURPOSE_DECIDE for _ in deciding] + purposes
+        purposes = [d["purpose"] for d in deciding] + purposes
     runs = pd.DataFrame({"material": material, "proposal": np.arange(1, len(points) + 1)})
     for i, f in enumerate(factors):
         # rounded for the sheet; a run inside the next domain (support runs sit on its edges) stays inside
@@ -332,9 +353,7 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     n_sep = sum(not isinstance(lab, str) for lab in labels)
     n_box = labels.count("box")
     n_support = labels.count("support")
-    if deciding:
-        reason += (f"; first {len(deciding)} run(s) to decide between causes the criticism cannot tell apart "
-                   f"({', '.join(dict.fromkeys(d['response'] for d in deciding))})")
+    reason += _deciding_reason(deciding)
     n_design = len(points) - len(deciding)
     n_band = n_design - n_sep - n_box - n_support
     reason += (f"; {n_design} new runs from a D-optimal quadratic design given the {int(inside.sum())} earlier "

@@ -96,6 +96,8 @@ class CriticismResult:
     run_order: RunOrder | None = None
     candidates: list[dict] = field(default_factory=list)  # causes the runs cannot tell apart (discrimination)
     discriminating_runs: list[dict] = field(default_factory=list)
+    # the runs go to the next wave: always to decide; to confirm only while a rival lies within CONFIRM_AICC
+    runs_for_next_wave: bool = False
 
     def to_json(self) -> dict:
         """JSON-ready dict: response, baseline, findings, extended, gain (+ alias sets, catalogue, summary)."""
@@ -143,9 +145,12 @@ class CriticismResult:
                          "detail": ";".join(f"{c['cause']} ({c['detail']})" for c in self.candidates), "aliases": "",
                          "p_value": None, "loo_rmse_baseline": self.baseline.get("loo_rmse"),
                          "loo_rmse_extended": self.baseline.get("loo_rmse"), "delta_aicc": 0.0,
-                         "message": self.verdict_message, "verdict": self.verdict,
-                         "discriminating_runs": json.dumps(self.discriminating_runs)})
-            cols = cols + ["discriminating_runs"]  # read by the next wave (next_wave.deciding_runs)
+                         "message": self.verdict_message, "verdict": self.verdict})
+        if self.runs_for_next_wave and rows:
+            # on the row they serve (the ambiguous one, or the finding they confirm); read by the next wave
+            # (next_wave.deciding_runs)
+            rows[0 if self.findings else -1]["discriminating_runs"] = json.dumps(self.discriminating_runs)
+            cols = cols + ["discriminating_runs"]
         if self.unexplained:
             u = self.unexplained
             rows.append({"response": self.response, "cause": "unexplained", "detail": u["detail"], "aliases": "",
@@ -315,7 +320,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     findings, model, unexplained, naming = _honest_causes(data, response, findings, model, base_model, first_round,
                                                           last_round, not_singled_out, family_alpha)
 
-    candidates, runs = _ambiguity(data, base_model, first_round, findings, not_singled_out, family_alpha)
+    candidates, runs, runs_for_next_wave = _ambiguity(data, base_model, first_round, findings, not_singled_out)
     if candidates:  # the runs cannot tell these causes apart: none of them is named
         findings, model, unexplained = [], base_model, None
     baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
@@ -325,7 +330,9 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     if not run_order.drift_tested:
         summary += " " + run_order.message
     verdict, verdict_detail = verdict_of(data, fit, findings, unexplained, catalogue, family_alpha,
-                                         candidates, runs)
+                                         candidates, runs, runs_for_next_wave)
+    # confirming runs are offered in the message of a named cause's verdict only; the next wave makes no others
+    runs_for_next_wave = bool(runs) and (bool(candidates) or (runs_for_next_wave and verdict == "defect"))
     if candidates:
         summary = verdict_detail["message"]
     return CriticismResult(response=response, factors=list(factors), baseline=baseline, findings=findings,
@@ -333,7 +340,8 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
                            summary=summary, family_alpha=family_alpha, unexplained=unexplained, verdict=verdict,
                            verdict_detail=verdict_detail, naming=naming, residuals=_residual_frame(fit),
                            _extended_model=model, _baseline_model=base_model, run_order=run_order,
-                           candidates=candidates, discriminating_runs=runs)
+                           candidates=candidates, discriminating_runs=runs,
+                           runs_for_next_wave=runs_for_next_wave)
 
 
 def _honest_causes(data: _Data, response: str, findings: list, model: _Model, base_model: _Model, first_round,
@@ -371,45 +379,50 @@ def _honest_causes(data: _Data, response: str, findings: list, model: _Model, ba
     return findings, model, unexplained, naming
 
 
-def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list, not_singled_out: dict | None,
-               family_alpha: float) -> tuple[list[dict], list[dict]]:
-    """(candidates, discriminating runs) when the first cause named, or the candidate not singled out for
-    a rival of another kind, does not lead every cause of another kind by discrimination.AMBIGUOUS_AICC in
-    AICc (discrimination.close_candidates); ([], []) otherwise."""
+def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list,
+               not_singled_out: dict | None) -> tuple[list[dict], list[dict], bool]:
+    """(candidates, discriminating runs, whether the next wave makes them) when the first cause named, or the
+    candidate not singled out for a rival of another kind, does not lead every cause of another kind by
+    discrimination.AMBIGUOUS_AICC in AICc (discrimination.close_candidates): the runs decide, and the next
+    wave makes them.  A cause named: ([], the runs that would confirm it, whether a rival lies within
+    CONFIRM_AICC of it) -- the loop goes on confirming a cause until its lead is very strong, not beyond.
+    ([], [], False) otherwise."""
     if first_round is None or not (findings or (not_singled_out and "rival" in not_singled_out)):
-        return [], []
+        return [], [], False
     if not_singled_out and not findings and not_singled_out["rival"]["cause"] not in CAUSES:
-        return [], []
+        return [], [], False
     first = (findings[0].cause, findings[0].detail) if findings else \
         (not_singled_out["cause"], not_singled_out["detail"])
     entries = _candidate_entries(data, base_model, first_round)
     close = close_candidates(entries, named=first)
     if len(close) < 2 and findings:  # named: runs that would confirm it against its nearest rivals
-        return [], _deciding_runs(data, _confirming_rivals(entries, first), CONFIRM_PURPOSE, named=first)
+        rivals, within = _confirming_rivals(entries, first)
+        return [], _deciding_runs(data, rivals, CONFIRM_PURPOSE, named=first), within
     if len(close) < 2:
-        return [], []
+        return [], [], False
     if not findings:
         rival = not_singled_out["rival"]
         if not any((c["cause"], c["detail"]) == (rival["cause"], rival["detail"]) for c in close):
-            return [], []
+            return [], [], False
     base_aicc = base_model.aicc
     candidates = [{"cause": c["cause"], "detail": c["detail"], "gain": _num(base_aicc - c["aicc"]),
                    "delta_aicc": _num(c["aicc"] - close[0]["aicc"]), "aliases": c.get("aliases", [])}
                   for c in close]
-    return candidates, _deciding_runs(data, close, PURPOSE)
+    return candidates, _deciding_runs(data, close, PURPOSE), True
 
 
-def _confirming_rivals(entries: list[dict], named: tuple) -> list[dict]:
+def _confirming_rivals(entries: list[dict], named: tuple) -> tuple[list[dict], bool]:
     """The named cause and the rivals its confirming runs are to separate it from: every kind within
     CONFIRM_AICC of it, or else the nearest kind however far behind (a cause misnamed by a wide margin can
-    only be corrected by runs that separate it from something; the nearest rival is the likeliest)."""
+    only be corrected by runs that separate it from something; the nearest rival is the likeliest); and
+    whether they were within CONFIRM_AICC."""
     rivals = close_candidates(entries, named=named, margin=CONFIRM_AICC)
     if len(rivals) > 1:
-        return rivals
+        return rivals, True
     every = close_candidates(entries, named=named, margin=math.inf)
     anchor = [e for e in every if (e["cause"], e["detail"]) == tuple(named)]
     others = [e for e in every if (e["cause"], e["detail"]) != tuple(named)]
-    return anchor + others[:1]
+    return anchor + others[:1], False
 
 
 def _deciding_runs(data: _Data, close: list[dict], purpose: str, named: tuple | None = None) -> list[dict]:

@@ -117,8 +117,14 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "message": ("–", "The finding in words."),
         "verdict": ("–", "What the evidence supports for this response (repeated on each of its rows): 'adequate' "
                          "(no test fired; the message says what size of defect could have been missed), 'defect' "
-                         "(cause named), 'unexplained' (misfit, cause not singled out) or 'does_not_predict' "
-                         "(Q² < 0: do not use the surrogate to decide admissibility)."),
+                         "(cause named), 'ambiguous' (two or more causes explain the misfit about equally: the "
+                         "row's cause is 'ambiguous', its detail the candidates), 'unexplained' (misfit, cause not "
+                         "singled out) or 'does_not_predict' (Q² < 0: do not use the surrogate to decide "
+                         "admissibility)."),
+        "discriminating_runs": ("–", "On the row they serve, the runs a next wave makes first (JSON list of points, "
+                                     "each with its purpose): those that decide between the candidates of an "
+                                     "'ambiguous' row, or those that confirm a named cause against a rival within 10 "
+                                     "in AICc. The column is present only when some response has such runs."),
     },
     "calibration_residuals": {
         "observable": ("–", "Observable with a measured target."),
@@ -189,9 +195,11 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
     },
     "next_runs": {
         "proposal": ("–", "Number of the proposed run (1..count)."),
-        "purpose": ("–", "Why the run is proposed: a design run in the refocused box (over the whole box, so its "
-                         "edges are supported, or on the band near the plausible set), or a run that separates "
-                         "terms the criticism found aliased."),
+        "purpose": ("–", "Why the run is proposed: first the criticism's runs, to decide between causes it cannot "
+                         "tell apart ('decide between causes') and then to confirm a named cause against a rival "
+                         "within 10 in AICc ('confirm the named cause'); then a design run in the refocused box "
+                         "(over the whole box, so its edges are supported, or on the band near the plausible set), "
+                         "or a run that separates terms the criticism found aliased."),
     },
 }
 
@@ -227,7 +235,7 @@ TABLE_COLUMNS = {
                            "gain_vs_best_subset_bits", "information_gain_error_bits", "tolerance", "rank_by_fraction",
                            "targets_reachable"],
     "criticism": ["material", "response", "cause", "detail", "aliases", "p_value", "loo_rmse_baseline",
-                  "loo_rmse_extended", "delta_aicc", "message", "verdict"],
+                  "loo_rmse_extended", "delta_aicc", "message", "verdict", "discriminating_runs"],
     "calibration_residuals": ["material", "observable", "target", "at_best", "rel_error_best", "at_reference",
                               "rel_error_reference", "tolerance", "within_tolerance", "within_tolerance_reference",
                               "bottleneck", "max_error_without", "implied_bias", "bias_candidate"],

@@ -89,11 +89,12 @@ def _entry(cause, detail, aicc):
 def test_a_named_cause_without_a_close_rival_is_confirmed_against_the_nearest_kind():
     entries = [_entry("drift", "run", 0.0), _entry("outlier", 3, 25.0), _entry("step", 7, 14.0),
                _entry("step", 8, 12.0), _entry("missing_term", "a^3", 40.0)]
-    assert [(e["cause"], e["detail"]) for e in _confirming_rivals(entries, ("drift", "run"))] == \
-        [("drift", "run"), ("step", 8)]
-    # within CONFIRM_AICC every kind is kept, as before
+    rivals, within = _confirming_rivals(entries, ("drift", "run"))
+    assert [(e["cause"], e["detail"]) for e in rivals] == [("drift", "run"), ("step", 8)] and not within
+    # within CONFIRM_AICC every kind is kept, as before, and the next wave makes the runs
     entries[1]["aicc"] = discrimination.CONFIRM_AICC - 0.5
-    assert [e["cause"] for e in _confirming_rivals(entries, ("drift", "run"))] == ["drift", "outlier"]
+    rivals, within = _confirming_rivals(entries, ("drift", "run"))
+    assert [e["cause"] for e in rivals] == ["drift", "outlier"] and within
 
 
 def _simulate_term(seed: int, k: int, term: str, size: float, runs: list[dict]) -> pd.DataFrame:
@@ -124,3 +125,87 @@ def test_a_named_term_comes_with_confirming_runs_that_keep_it_named_among_its_al
         assert f.cause == "missing_term" and planted.term in f.aliases, (seed, f.aliases)
         checked += 1
     assert checked >= 8
+
+
+# --------------------------------------------------------------------------- confirming runs in the next wave
+def _nearest_rival_gap(monkeypatch, table: pd.DataFrame, k: int) -> tuple:
+    """criticize's result and the AICc by which its named cause leads the nearest cause of another kind,
+    read from the candidate entries the criticism compares (the rule within 10 checked here, not reused)."""
+    from demid.criticism import level1
+
+    seen = []
+    original = level1._candidate_entries
+    monkeypatch.setattr(level1, "_candidate_entries", lambda *a: seen.append(original(*a)) or seen[-1])
+    result = criticize(table, FACTORS[k], "y", n_null=199)
+    if not result.findings or not seen:
+        return result, None
+    named = (result.findings[0].cause, result.findings[0].detail)
+    kind = discrimination.candidate_kind(*named)
+    own = [e["aicc"] for e in seen[-1] if (e["cause"], e["detail"]) == named]
+    others = [e["aicc"] for e in seen[-1] if discrimination.candidate_kind(e["cause"], e["detail"]) != kind
+              and e.get("aicc") is not None and np.isfinite(e["aicc"])]
+    return result, min(others) - own[0]
+
+
+def test_a_next_wave_makes_the_confirming_runs_while_a_rival_lies_within_ten():
+    """Planted defects (2 factors, seeds 0-11): the confirming runs reach the criticism frame's finding row, and
+    from there next_runs with purpose 'confirm the named cause', exactly when the nearest rival of another kind
+    lies within 10 in AICc of the named cause; the message says which.  Both cases occur."""
+    from demid.next_wave import PURPOSE_CONFIRM, deciding_runs
+
+    assert PURPOSE_CONFIRM == discrimination.CONFIRM_PURPOSE
+    seen = set()
+    mp = pytest.MonkeyPatch()
+    try:
+        for kind, size in (("term", 6.0), ("drift", 8.0), ("outlier", 10.0)):
+            for seed in range(12):
+                table, _ = ccd_table(seed, 2, kind, size)
+                result, gap = _nearest_rival_gap(mp, table, 2)
+                if gap is None or result.verdict != "defect" or not result.discriminating_runs:
+                    continue
+                close = gap <= discrimination.CONFIRM_AICC
+                seen.add(close)
+                frame = result.to_frame()
+                runs = deciding_runs(frame, FACTORS[2])
+                assert result.runs_for_next_wave == close, (kind, seed, gap)
+                assert ("a next wave (next_runs) makes them" in result.verdict_message) == close
+                if close:
+                    assert [{f: r[f] for f in FACTORS[2]} for r in runs] == \
+                        [{f: r[f] for f in FACTORS[2]} for r in result.discriminating_runs]
+                    assert {r["purpose"] for r in runs} == {PURPOSE_CONFIRM}
+                    assert isinstance(frame.loc[0, "discriminating_runs"], str)
+                else:
+                    assert runs == [] and "discriminating_runs" not in frame
+    finally:
+        mp.undo()
+    assert seen == {True, False}
+
+
+def test_the_next_wave_makes_the_deciding_runs_before_the_confirming_ones():
+    """Criticism rows of two responses (a confirming row first): next_runs lists the deciding runs first, then the
+    confirming ones, each with its own purpose; a replicate is kept, a point both responses propose once made
+    serves both; the reason counts both."""
+    import json
+
+    from demid.next_wave import PURPOSE_CONFIRM, PURPOSE_DECIDE, deciding_runs, plan_next_wave
+    from tests.test_next_wave import _annulus_material
+
+    confirm = [{"a": 0.3, "b": 0.7, "purpose": PURPOSE_CONFIRM}, {"a": 0.5, "b": 0.5, "purpose": PURPOSE_CONFIRM},
+               {"a": 0.3, "b": 0.7, "purpose": PURPOSE_CONFIRM}]
+    decide = [{"a": 0.5, "b": 0.5, "purpose": PURPOSE_DECIDE}, {"a": 0.2, "b": 0.8, "purpose": PURPOSE_DECIDE},
+              {"a": 0.2, "b": 0.8, "purpose": PURPOSE_DECIDE}]
+    findings = pd.DataFrame([
+        {"response": "y", "cause": "drift", "detail": "run", "aliases": "", "discriminating_runs": json.dumps(confirm)},
+        {"response": "y2", "cause": "ambiguous", "detail": "outlier (3);step (9)", "aliases": "",
+         "discriminating_runs": json.dumps(decide)}])
+    runs = deciding_runs(findings, ["a", "b"])
+    assert [(r["a"], r["b"], r["purpose"], r["response"]) for r in runs] == [
+        (0.5, 0.5, PURPOSE_DECIDE, "y2"), (0.2, 0.8, PURPOSE_DECIDE, "y2"), (0.2, 0.8, PURPOSE_DECIDE, "y2"),
+        (0.3, 0.7, PURPOSE_CONFIRM, "y"), (0.3, 0.7, PURPOSE_CONFIRM, "y")]
+    table, surrogates, cfg, robust = _annulus_material(count=5)
+    plain = plan_next_wave("m", table, surrogates, cfg, robust, None, z=2.0)
+    wave = plan_next_wave("m", table, surrogates, cfg, robust, findings, z=2.0)
+    assert wave.runs["purpose"].tolist()[:5] == [PURPOSE_DECIDE] * 3 + [PURPOSE_CONFIRM] * 2
+    assert wave.runs["purpose"].tolist()[5:] == plain.runs["purpose"].tolist()
+    assert ("first 3 run(s) to decide between causes the criticism cannot tell apart (y2), then 2 run(s) to "
+            "confirm a cause the criticism named against a rival it leads by less than 10 in AICc (y)") in wave.reason

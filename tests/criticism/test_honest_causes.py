@@ -215,7 +215,7 @@ def test_noise_only_response_does_not_predict():
 
 
 def test_verdict_column_documented_and_written():
-    assert TABLE_COLUMNS["criticism"][-1] == "verdict"
+    assert TABLE_COLUMNS["criticism"][-2:] == ["verdict", "discriminating_runs"]
     cols = columns_table({})
     row = cols[(cols["table"] == "criticism.csv") & (cols["column"] == "verdict")]
     assert len(row) == 1 and "does_not_predict" in row["description"].iloc[0]
