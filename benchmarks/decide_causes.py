@@ -194,19 +194,14 @@ dglm do), the log-likelihood then taken at that estimate.  REML has an interior 
 cubic-term tables and 29-31 % of outlier tables (seeds 0-19, among those with a verdict to compare): no more
 informative than the bounded ML fit.
 
-The second round now makes what the loop makes (next_wave.deciding_runs): the deciding runs, and confirming runs
-only while a rival lies within CONFIRM_AICC (``runs_for_next_wave``); a cause leading every rival by more is not
-confirmed again.  n_null 499, seeds 0-19 | 20-39 | 40-59, every confirming run made -> the loop's rule:
-
-    second round made in                  30 -> 9 tables        | 32 -> 9                      | 31 -> 6
-    named after a second round            0.867 -> 0.867        | 0.886 -> 0.886               | 0.906 -> 0.938
-      as many random runs                 0.767 -> 0.600        | 0.686 -> 0.571               | 0.844 -> 0.594
-
-(the random control makes as many runs as the second round, now in fewer tables).  The confirming runs against a
-rival far behind decided nothing the first round had not, and on seeds 40-59 cost a right name.  Tried and not
-kept: the pairs of candidates weighted so that each pair of causes counts once however many aliased terms stand
-for one (a missing term with two aliases made 3 of every 4 pairs): runs moved in 28 tables, no verdict after them
-changed on any of the three ranges.
+Tried and not kept: the pairs of candidates weighted so that each pair of causes counts once however many aliased
+terms stand for one (a missing term with two aliases made 3 of every 4 pairs): runs moved in 28 tables, no verdict
+after them changed on seeds 0-59.  A next wave making the confirming runs only while a rival lies within
+CONFIRM_AICC (a cause leading by more not confirmed again): second round 0.867 | 0.886 | 0.906 -> 0.867 | 0.886 |
+0.938 in 9 | 9 | 6 tables instead of 30 | 32 | 31, but the first round, made by the same rule, names 0.733 | 0.743 |
+0.688 instead of 0.833 | 0.800 | 0.844: the confirming runs against a rival far behind correct 3 | 2 | 5 misnamed
+tables.  The runs a table's verdict proposes are the runs the loop makes (CriticismResult.runs_for_next_wave:
+deciding runs, and confirming runs offered by a named cause's verdict), first round and second.
 
     python benchmarks/decide_causes.py --reps 10 [--n-null 499] [--seed0 20] [--kinds het,outlier] [--verbose]
 """
@@ -347,7 +342,7 @@ def one_table(seed: int, k: int, kind: str, size: float, n_null: int) -> dict:
     row = {"k": k, "kind": kind, "size": size, "seed": seed, **{f"first_{a}": b for a, b in
                                                                  verdict_of(first, truth).items()}}
     row["lof"] = bool(fit_response(truth.table, factors, "y").statistics().lof_p < 0.05)
-    runs = getattr(first, "discriminating_runs", [])
+    runs = first.discriminating_runs if first.runs_for_next_wave else []  # what the loop makes
     row["n_runs"] = len(runs)
     row["runs"] = " ".join("(" + ",".join(f"{r[f]:g}" for f in factors) + ")" for r in runs)
     # ambiguous first (candidates listed, whatever the verdict's headline) or misnamed first
@@ -355,7 +350,7 @@ def one_table(seed: int, k: int, kind: str, size: float, n_null: int) -> dict:
     row["needs"] = needs
     row["confirming"] = bool(runs) and not first.candidates  # named, with runs that would confirm it
     if (needs or row["confirming"]) and runs:
-        proposed = truth.coding.to_coded(np.array([[r[f] for f in factors] for r in first.discriminating_runs]))
+        proposed = truth.coding.to_coded(np.array([[r[f] for f in factors] for r in runs]))
         table = truth.augmented(proposed)
         after = criticize(table, factors, "y", alpha=truth.alpha, n_null=n_null)
         row.update({f"after_{a}": b for a, b in verdict_of(after, truth).items()})
@@ -376,8 +371,8 @@ def one_table(seed: int, k: int, kind: str, size: float, n_null: int) -> dict:
 def _second_round(row: dict, truth: Truth, after, table: pd.DataFrame, rand, random_table: pd.DataFrame,
                   rng: np.random.Generator, n_null: int) -> None:
     """The loop's next step: the runs the verdict after the first proposed runs proposes in turn for the next
-    wave (to decide, or to confirm against a rival within CONFIRM_AICC), simulated and criticised; the control
-    adds as many random runs to its own table."""
+    wave (to decide or to confirm), simulated and criticised; the control adds as many random runs to its own
+    table."""
     runs = after.discriminating_runs if after.runs_for_next_wave else []
     row["n_runs2"] = len(runs)
     if not runs:

@@ -164,8 +164,8 @@ def aliased_findings(findings: pd.DataFrame | None, factors: list[str]) -> list[
 
 def deciding_runs(findings: pd.DataFrame | None, factors: list[str]) -> list[dict]:
     """The runs the criticism proposes for the next wave (a row's ``discriminating_runs``): those that decide
-    between causes it cannot tell apart first, then those that confirm a named cause against a rival within
-    10 in AICc; in the order proposed, with its ``purpose``.  A replicate is kept (replicates are what tell a
+    between causes it cannot tell apart first, then those that would confirm or correct a named cause; in the
+    order proposed, with its ``purpose``.  A replicate is kept (replicates are what tell a
     wild run from unequal scatter); a point that several responses propose is made as often as the one that
     proposes it most often, not once for each."""
     import json
@@ -194,8 +194,7 @@ def _deciding_reason(deciding: list[dict]) -> str:
     """The reason's clause for the criticism's runs: how many, what for, for which responses."""
     parts = []
     for purpose, what in ((PURPOSE_DECIDE, "to decide between causes the criticism cannot tell apart"),
-                          (PURPOSE_CONFIRM, "to confirm a cause the criticism named against a rival it leads "
-                                            "by less than 10 in AICc")):
+                          (PURPOSE_CONFIRM, "to confirm or correct a cause the criticism named")):
         runs = [d for d in deciding if d["purpose"] == purpose]
         if runs:
             parts.append(f"{len(runs)} run(s) {what} ({', '.join(dict.fromkeys(d['response'] for d in runs))})")

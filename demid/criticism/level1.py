@@ -96,8 +96,6 @@ class CriticismResult:
     run_order: RunOrder | None = None
     candidates: list[dict] = field(default_factory=list)  # causes the runs cannot tell apart (discrimination)
     discriminating_runs: list[dict] = field(default_factory=list)
-    # the runs go to the next wave: always to decide; to confirm only while a rival lies within CONFIRM_AICC
-    runs_for_next_wave: bool = False
 
     def to_json(self) -> dict:
         """JSON-ready dict: response, baseline, findings, extended, gain (+ alias sets, catalogue, summary)."""
@@ -158,6 +156,12 @@ class CriticismResult:
                          "loo_rmse_extended": self.baseline.get("loo_rmse"), "delta_aicc": 0.0,
                          "message": u["message"], "verdict": self.verdict})
         return pd.DataFrame(rows, columns=cols)
+
+    @property
+    def runs_for_next_wave(self) -> bool:
+        """Whether a next wave makes the discriminating runs: those that decide between candidates, and those
+        that confirm a named cause, which the verdict's message offers (verdict 'defect'); no others."""
+        return bool(self.discriminating_runs) and (bool(self.candidates) or self.verdict == "defect")
 
     @property
     def verdict_message(self) -> str:
@@ -320,7 +324,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     findings, model, unexplained, naming = _honest_causes(data, response, findings, model, base_model, first_round,
                                                           last_round, not_singled_out, family_alpha)
 
-    candidates, runs, runs_for_next_wave = _ambiguity(data, base_model, first_round, findings, not_singled_out)
+    candidates, runs = _ambiguity(data, base_model, first_round, findings, not_singled_out)
     if candidates:  # the runs cannot tell these causes apart: none of them is named
         findings, model, unexplained = [], base_model, None
     baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
@@ -330,9 +334,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     if not run_order.drift_tested:
         summary += " " + run_order.message
     verdict, verdict_detail = verdict_of(data, fit, findings, unexplained, catalogue, family_alpha,
-                                         candidates, runs, runs_for_next_wave)
-    # confirming runs are offered in the message of a named cause's verdict only; the next wave makes no others
-    runs_for_next_wave = bool(runs) and (bool(candidates) or (runs_for_next_wave and verdict == "defect"))
+                                         candidates, runs)
     if candidates:
         summary = verdict_detail["message"]
     return CriticismResult(response=response, factors=list(factors), baseline=baseline, findings=findings,
@@ -340,8 +342,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
                            summary=summary, family_alpha=family_alpha, unexplained=unexplained, verdict=verdict,
                            verdict_detail=verdict_detail, naming=naming, residuals=_residual_frame(fit),
                            _extended_model=model, _baseline_model=base_model, run_order=run_order,
-                           candidates=candidates, discriminating_runs=runs,
-                           runs_for_next_wave=runs_for_next_wave)
+                           candidates=candidates, discriminating_runs=runs)
 
 
 def _honest_causes(data: _Data, response: str, findings: list, model: _Model, base_model: _Model, first_round,
@@ -380,49 +381,45 @@ def _honest_causes(data: _Data, response: str, findings: list, model: _Model, ba
 
 
 def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list,
-               not_singled_out: dict | None) -> tuple[list[dict], list[dict], bool]:
-    """(candidates, discriminating runs, whether the next wave makes them) when the first cause named, or the
-    candidate not singled out for a rival of another kind, does not lead every cause of another kind by
-    discrimination.AMBIGUOUS_AICC in AICc (discrimination.close_candidates): the runs decide, and the next
-    wave makes them.  A cause named: ([], the runs that would confirm it, whether a rival lies within
-    CONFIRM_AICC of it) -- the loop goes on confirming a cause until its lead is very strong, not beyond.
-    ([], [], False) otherwise."""
+               not_singled_out: dict | None) -> tuple[list[dict], list[dict]]:
+    """(candidates, discriminating runs) when the first cause named, or the candidate not singled out for
+    a rival of another kind, does not lead every cause of another kind by discrimination.AMBIGUOUS_AICC in
+    AICc (discrimination.close_candidates); a cause named: ([], the runs that would confirm it); ([], [])
+    otherwise."""
     if first_round is None or not (findings or (not_singled_out and "rival" in not_singled_out)):
-        return [], [], False
+        return [], []
     if not_singled_out and not findings and not_singled_out["rival"]["cause"] not in CAUSES:
-        return [], [], False
+        return [], []
     first = (findings[0].cause, findings[0].detail) if findings else \
         (not_singled_out["cause"], not_singled_out["detail"])
     entries = _candidate_entries(data, base_model, first_round)
     close = close_candidates(entries, named=first)
     if len(close) < 2 and findings:  # named: runs that would confirm it against its nearest rivals
-        rivals, within = _confirming_rivals(entries, first)
-        return [], _deciding_runs(data, rivals, CONFIRM_PURPOSE, named=first), within
+        return [], _deciding_runs(data, _confirming_rivals(entries, first), CONFIRM_PURPOSE, named=first)
     if len(close) < 2:
-        return [], [], False
+        return [], []
     if not findings:
         rival = not_singled_out["rival"]
         if not any((c["cause"], c["detail"]) == (rival["cause"], rival["detail"]) for c in close):
-            return [], [], False
+            return [], []
     base_aicc = base_model.aicc
     candidates = [{"cause": c["cause"], "detail": c["detail"], "gain": _num(base_aicc - c["aicc"]),
                    "delta_aicc": _num(c["aicc"] - close[0]["aicc"]), "aliases": c.get("aliases", [])}
                   for c in close]
-    return candidates, _deciding_runs(data, close, PURPOSE), True
+    return candidates, _deciding_runs(data, close, PURPOSE)
 
 
-def _confirming_rivals(entries: list[dict], named: tuple) -> tuple[list[dict], bool]:
+def _confirming_rivals(entries: list[dict], named: tuple) -> list[dict]:
     """The named cause and the rivals its confirming runs are to separate it from: every kind within
     CONFIRM_AICC of it, or else the nearest kind however far behind (a cause misnamed by a wide margin can
-    only be corrected by runs that separate it from something; the nearest rival is the likeliest); and
-    whether they were within CONFIRM_AICC."""
+    only be corrected by runs that separate it from something; the nearest rival is the likeliest)."""
     rivals = close_candidates(entries, named=named, margin=CONFIRM_AICC)
     if len(rivals) > 1:
-        return rivals, True
+        return rivals
     every = close_candidates(entries, named=named, margin=math.inf)
     anchor = [e for e in every if (e["cause"], e["detail"]) == tuple(named)]
     others = [e for e in every if (e["cause"], e["detail"]) != tuple(named)]
-    return anchor + others[:1], False
+    return anchor + others[:1]
 
 
 def _deciding_runs(data: _Data, close: list[dict], purpose: str, named: tuple | None = None) -> list[dict]:

@@ -220,19 +220,16 @@ def _points_text(runs: list[dict]) -> str:
                                      if k not in ("purpose", "expected", "separation")) + ")" for r in runs)
 
 
-def confirming_message(runs: list[dict], next_wave: bool) -> str:
-    """The runs that would confirm a named cause against its nearest rivals (discrimination.CONFIRM_AICC), and
-    whether a next wave makes them (while a rival lies within CONFIRM_AICC)."""
+def confirming_message(runs: list[dict]) -> str:
+    """The runs that would confirm a named cause against its nearest rivals (discrimination.CONFIRM_AICC)."""
     expected = runs[0]["expected"]
     named = next(iter(expected))
     rivals = [label for label in expected if label != named]
     plural = "s" if len(runs) > 1 else ""
-    wave = ("a next wave (next_runs) makes them" if next_wave else
-            "a next wave does not: the named cause leads every rival by more than 10 in AICc")
     return (f" The runs cannot rule out every rival ({', '.join(rivals)}: fitted less well, but a misnamed cause is "
             f"corrected only by runs that separate it from the truth): {len(runs)} more run{plural}"
             f" made after these, at {_points_text(runs)}, where {named} and {'they' if len(rivals) > 1 else 'it'} "
-            f"predict most differently, would confirm it or correct it; {wave}.")
+            f"predict most differently, would confirm it or correct it; a next wave (next_runs) makes them.")
 
 
 def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power: float = POWER) -> float | None:
@@ -309,8 +306,7 @@ def unpredictable_runs_message(fit: SurrogateFit) -> str:
 
 
 def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
-               family_alpha: float, candidates: list[dict] = (), runs: list[dict] = (),
-               runs_for_next_wave: bool = True) -> tuple[str, dict]:
+               family_alpha: float, candidates: list[dict] = (), runs: list[dict] = ()) -> tuple[str, dict]:
     """The verdict and what supports it (numbers for the JSON, a message for the report)."""
     verdict, detail = _verdict(data, fit, findings, unexplained, catalogue, family_alpha)
     if candidates:
@@ -320,7 +316,7 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
         else:
             verdict, detail["message"] = "ambiguous", text
     elif runs and verdict == "defect":
-        detail["message"] += confirming_message(list(runs), runs_for_next_wave)
+        detail["message"] += confirming_message(list(runs))
     lone = unpredictable_runs_message(fit)
     if lone:
         detail["unpredictable_runs"] = [int(r) for r in np.asarray(fit.runs)[fit.fitted_exactly]]

@@ -123,8 +123,8 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
                          "admissibility)."),
         "discriminating_runs": ("–", "On the row they serve, the runs a next wave makes first (JSON list of points, "
                                      "each with its purpose): those that decide between the candidates of an "
-                                     "'ambiguous' row, or those that confirm a named cause against a rival within 10 "
-                                     "in AICc. The column is present only when some response has such runs."),
+                                     "'ambiguous' row, or those that would confirm or correct a named cause. The "
+                                     "column is present only when some response has such runs."),
     },
     "calibration_residuals": {
         "observable": ("–", "Observable with a measured target."),
@@ -196,8 +196,8 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
     "next_runs": {
         "proposal": ("–", "Number of the proposed run (1..count)."),
         "purpose": ("–", "Why the run is proposed: first the criticism's runs, to decide between causes it cannot "
-                         "tell apart ('decide between causes') and then to confirm a named cause against a rival "
-                         "within 10 in AICc ('confirm the named cause'); then a design run in the refocused box "
+                         "tell apart ('decide between causes') and then to confirm or correct a named cause "
+                         "('confirm the named cause'); then a design run in the refocused box "
                          "(over the whole box, so its edges are supported, or on the band near the plausible set), "
                          "or a run that separates terms the criticism found aliased."),
     },
