@@ -526,6 +526,10 @@ def test_ambiguous_message_quotes_the_largest_aicc_gap_and_the_deciding_runs():
     assert "missing term a^3 and response transform explain" in text
     assert "lie within 1.4 of each other" in text
     assert "1 more run made after these, at (a=0.5, b=-1.25), would decide" in text
+    replicated = [{"a": 0.5, "b": -1.25, "purpose": "x"}, {"a": 0.1, "b": 0.0, "purpose": "x"},
+                  {"a": 0.5, "b": -1.25, "purpose": "x"}, {"a": 0.5, "b": -1.25, "purpose": "x"}]
+    text = ambiguous_message("y", candidates, replicated)
+    assert "4 more runs made after these, at (a=0.5, b=-1.25) ×3; (a=0.1, b=0), would decide" in text
 
 
 @pytest.mark.parametrize("verdict", ["does_not_predict", "defect", "adequate"])

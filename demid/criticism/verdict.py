@@ -216,8 +216,13 @@ def _with_aliases(text: str, candidate: dict) -> str:
 
 
 def _points_text(runs: list[dict]) -> str:
-    return "; ".join("(" + ", ".join(f"{k}={v:g}" for k, v in r.items()
-                                     if k not in ("purpose", "expected", "separation")) + ")" for r in runs)
+    """Each point once, in the order first proposed, with how many runs it gets ("(a=0.1, b=6) ×3")."""
+    counts: dict[str, int] = {}
+    for r in runs:
+        point = "(" + ", ".join(f"{k}={v:g}" for k, v in r.items()
+                                if k not in ("purpose", "expected", "separation")) + ")"
+        counts[point] = counts.get(point, 0) + 1
+    return "; ".join(point + (f" ×{n}" if n > 1 else "") for point, n in counts.items())
 
 
 def confirming_message(runs: list[dict]) -> str:
