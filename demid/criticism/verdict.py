@@ -345,7 +345,8 @@ def _verdict(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict |
                              f"use {r} inherit its error.{why}")
         return "does_not_predict", detail
     if findings:
-        detail["message"] = f"{r}: defect named — " + " ".join(f.message for f in findings)
+        # each finding's message names the response already; the verdict names it once
+        detail["message"] = f"{r}: defect named — " + " ".join(f.message.removeprefix(f"{r}: ") for f in findings)
         return "defect", detail
     if unexplained:
         detail["message"] = unexplained["message"]
