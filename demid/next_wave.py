@@ -165,9 +165,9 @@ def aliased_findings(findings: pd.DataFrame | None, factors: list[str]) -> list[
 def deciding_runs(findings: pd.DataFrame | None, factors: list[str]) -> list[dict]:
     """The runs the criticism proposes for the next wave (a row's ``discriminating_runs``): those that decide
     between causes it cannot tell apart first, then those that would confirm or correct a named cause; in the
-    order proposed, with its ``purpose``.  A replicate is kept (replicates are what tell a
-    wild run from unequal scatter); a point that several responses propose is made as often as the one that
-    proposes it most often, not once for each."""
+    order proposed, each with its ``purpose``.  A replicate is kept (replicates are what tell a wild run from
+    unequal scatter); a point that several responses propose is made as often as the one that proposes it
+    most often, not once for each."""
     import json
 
     if findings is None or not len(findings) or "discriminating_runs" not in findings:
@@ -188,6 +188,31 @@ def deciding_runs(findings: pd.DataFrame | None, factors: list[str]) -> list[dic
             out.append({**{f: float(run[f]) for f in factors}, "response": response,
                         "purpose": run.get("purpose", PURPOSE_DECIDE)})
     return out
+
+
+#: A criticism run this far (a share of the search range) outside the next box is taken as meant on its bound: the
+#: criticism writes its points to 4 digits of the design's range (criticism.models._Data.point_dict).
+CRITICISM_ROUNDING = 1e-3
+
+
+def criticism_runs_in_box(runs: list[dict], factors: list[str], domain: Domain, lo: np.ndarray,
+                          hi: np.ndarray) -> tuple[list[dict], int]:
+    """The criticism's runs that the next wave can use, and how many it cannot: its table keeps only runs inside
+    the next box [lo, hi] (search units), so a run outside would be simulated for nothing.  A run outside by
+    no more than the criticism's rounding is put on the bound."""
+    if not runs:
+        return [], 0
+    u = domain.to_search(np.array([[r[f] for f in factors] for r in runs], dtype=float))
+    cur_lo, cur_hi = domain.search_bounds()
+    slack = CRITICISM_ROUNDING * (cur_hi - cur_lo)
+    usable = np.all((u >= lo - slack) & (u <= hi + slack), axis=1)
+    box = domain.to_actual(np.array([lo, hi]))
+    out = []
+    for run, ok, point in zip(runs, usable, u):
+        if ok:
+            out.append({**run, **{f: float(box[0, i] if point[i] < lo[i] else box[1, i] if point[i] > hi[i]
+                                         else run[f]) for i, f in enumerate(factors)}})
+    return out, int(np.sum(~usable))
 
 
 def _deciding_reason(deciding: list[dict]) -> str:
@@ -322,7 +347,8 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     purposes = [kind_purpose[lab] if isinstance(lab, str) else
                 PURPOSE_SEPARATE.format(terms=" = ".join(term_name(t, factors) for t in lab[0]),
                                         responses=", ".join(lab[1])) for lab in labels]
-    deciding = deciding_runs(findings, factors)  # first: they decide what the surrogate can be trusted with
+    # first: they decide what the surrogate can be trusted with
+    deciding, left_out = criticism_runs_in_box(deciding_runs(findings, factors), factors, domain, lo, hi)
     if deciding:
         points = np.vstack([np.array([[d[f] for f in factors] for d in deciding]), points])
         purposes = [d["purpose"] for d in deciding] + purposes
@@ -353,6 +379,9 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     n_box = labels.count("box")
     n_support = labels.count("support")
     reason += _deciding_reason(deciding)
+    if left_out:
+        reason += (f"; {left_out} run(s) the criticism proposed lie outside the refocused box and are left out (the "
+                   f"next wave's table keeps only runs inside it)")
     n_design = len(points) - len(deciding)
     n_band = n_design - n_sep - n_box - n_support
     reason += (f"; {n_design} new runs from a D-optimal quadratic design given the {int(inside.sum())} earlier "

@@ -188,3 +188,32 @@ def test_the_next_wave_makes_the_deciding_runs_before_the_confirming_ones():
     assert wave.runs["purpose"].tolist()[5:] == plain.runs["purpose"].tolist()
     assert ("first 3 run(s) to decide between causes the criticism cannot tell apart (y2), then 2 run(s) to "
             "confirm or correct a cause the criticism named (y)") in wave.reason
+
+
+def test_criticism_runs_outside_the_next_box_are_left_out_and_the_reason_says_so():
+    """The next wave's table keeps only runs inside its box: a criticism run far outside it is not proposed (the
+    reason counts it), one outside by less than the criticism's rounding is put on the bound, one inside is
+    kept as it is."""
+    import json
+
+    from demid.next_wave import CRITICISM_ROUNDING, PURPOSE_DECIDE, plan_next_wave
+    from tests.test_next_wave import _annulus_material
+
+    table, surrogates, cfg, robust = _annulus_material(count=5)
+    plain = plan_next_wave("m", table, surrogates, cfg, robust, None, z=2.0)
+    box = plain.domain.set_index("factor")
+    (a_lo, a_hi), (b_lo, b_hi) = box.loc["a", ["lower", "upper"]], box.loc["b", ["lower", "upper"]]
+    assert a_hi < 0.9 and b_lo > 0.1  # refocused: room outside the box within the search range [0, 1]
+    edge = {"a": a_hi + CRITICISM_ROUNDING / 4, "b": (b_lo + b_hi) / 2, "purpose": PURPOSE_DECIDE}
+    far = {"a": 0.95, "b": 0.05, "purpose": PURPOSE_DECIDE}
+    inside = {"a": (a_lo + a_hi) / 2, "b": (b_lo + b_hi) / 2, "purpose": PURPOSE_DECIDE}
+    findings = pd.DataFrame([{"response": "y", "cause": "ambiguous", "detail": "outlier (3);step (9)", "aliases": "",
+                              "discriminating_runs": json.dumps([far, edge, inside])}])
+    wave = plan_next_wave("m", table, surrogates, cfg, robust, findings, z=2.0)
+    assert len(wave.runs) == len(plain.runs) + 2
+    assert wave.runs["a"].iloc[0] == a_hi  # on the bound exactly (the sheet rounds to 10 digits)
+    assert wave.runs[["a", "b"]].to_numpy()[:2] == pytest.approx(np.array([[a_hi, edge["b"]],
+                                                                           [inside["a"], inside["b"]]]), rel=1e-9)
+    assert wave.runs["purpose"].tolist()[:2] == [PURPOSE_DECIDE] * 2
+    assert "first 2 run(s) to decide between causes" in wave.reason
+    assert "; 1 run(s) the criticism proposed lie outside the refocused box and are left out" in wave.reason
