@@ -204,6 +204,9 @@ tables.  Planning the runs with the upper 80 % confidence limit of each candidat
 sizes are planned from a variance estimated on few degrees of freedom; 6-9 here) instead of its estimate: first
 round 0.833 | 0.800 | 0.844 -> 0.833 | 0.771 | 0.812, second 0.867 | 0.886 | 0.906 -> 0.833 | 0.857 | 0.906 -- more
 pairs stay short of their targets within four runs, and the runs go where every pair differs a little.
+A replicate of each suspect run (an outlier's or a slipped value's) made first, as the issue's "replicate of a
+suspect run", before the runs chosen by the criterion: seeds 0-19 and 40-59 unchanged, 20-39 0.800 -> 0.743 (two
+unequal-scatter tables lost, the 3-factor outlier at a high-leverage corner still unflagged after its runs).
 The runs a table's verdict proposes are the runs the loop makes (CriticismResult.runs_for_next_wave:
 deciding runs, and confirming runs offered by a named cause's verdict), first round and second.
 
