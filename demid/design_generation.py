@@ -215,8 +215,8 @@ def fragment_yaml(sheet: RunSheet, material: str, data_path: str, responses=()) 
     body = yaml.safe_dump({"materials": {material: sheet.material_config(data_path, responses)}},
                           sort_keys=False, default_flow_style=None)
     scenarios = ("# and `scenarios:` (e.g. all: {observables: [...], tolerance: 0.05}) before running the pipeline.\n"
-                 "# A factor with a physical limit (a coefficient of restitution at most 1, a friction coefficient at "
-                 "least 0)\n# takes `limits: {lower: 0, upper: 1}`: advice to widen its range stops there.\n")
+                 "# A factor with a physical limit takes `limits:` (a coefficient of restitution {lower: 0, upper: 1},\n"
+                 "# a friction coefficient {lower: 0}): advice to widen its range stops there.\n")
     note = ("# Generated with the run sheet; add a target to each response that is measured,\n"
             if responses else "# Generated with the run sheet; add `responses:` (one per simulated response "
                               "column, with targets),\n") + scenarios

@@ -121,10 +121,11 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
                          "row's cause is 'ambiguous', its detail the candidates), 'unexplained' (misfit, cause not "
                          "singled out) or 'does_not_predict' (Q² < 0: do not use the surrogate to decide "
                          "admissibility)."),
-        "discriminating_runs": ("–", "On the row they serve, the runs a next wave makes first (JSON list of points, "
+        "discriminating_runs": ("–", "On the row they serve, the runs the criticism proposes (JSON list of points, "
                                      "each with its purpose): those that decide between the candidates of an "
-                                     "'ambiguous' row, or those that would confirm or correct a named cause. The "
-                                     "column is present only when some response has such runs."),
+                                     "'ambiguous' row, or those that would confirm or correct a named cause. A next "
+                                     "wave makes them first, those inside its refocused box. The column is present "
+                                     "only when some response has such runs."),
     },
     "calibration_residuals": {
         "observable": ("–", "Observable with a measured target."),
