@@ -559,7 +559,7 @@ def test_the_verdict_message_joins_the_ambiguity_or_the_confirming_runs(monkeypa
             "y: base. The runs cannot rule out every rival (drift: fitted less well, but a misnamed cause is corrected "
             "only by runs that separate it from the truth): 1 more run made after these, at (a=0.5, b=-1.25), where "
             "missing_term and it predict most differently, would confirm it or correct it; a next wave (next_runs) "
-            "makes them.")
+            "makes those inside its box first.")
     else:
         assert detail["message"] == "y: base."
 

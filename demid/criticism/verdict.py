@@ -234,7 +234,8 @@ def confirming_message(runs: list[dict]) -> str:
     return (f" The runs cannot rule out every rival ({', '.join(rivals)}: fitted less well, but a misnamed cause is "
             f"corrected only by runs that separate it from the truth): {len(runs)} more run{plural}"
             f" made after these, at {_points_text(runs)}, where {named} and {'they' if len(rivals) > 1 else 'it'} "
-            f"predict most differently, would confirm it or correct it; a next wave (next_runs) makes them.")
+            f"predict most differently, would confirm it or correct it; a next wave (next_runs) makes those inside "
+            f"its box first.")
 
 
 def detectable_departure(df_resid: int, n_tests: int, family_alpha: float, power: float = POWER) -> float | None:

@@ -151,7 +151,7 @@ def test_a_next_wave_makes_the_runs_the_criticism_proposes_and_no_others():
                 row = frame.index[frame["cause"] == "ambiguous"][0] if result.candidates else 0
                 assert isinstance(frame.loc[row, "discriminating_runs"], str)
                 if not result.candidates:
-                    assert "a next wave (next_runs) makes them." in result.verdict_message
+                    assert "a next wave (next_runs) makes those inside its box first." in result.verdict_message
                     # the finding's message joins the verdict's without naming the response twice
                     assert result.verdict_message.startswith("y: defect named — ")
                     assert not result.verdict_message.startswith("y: defect named — y: ")
