@@ -113,6 +113,24 @@ def next_box(domain: Domain, plausible_lower, plausible_upper, margin: float) ->
     return np.maximum(lo_u, p_lo - pad), np.minimum(hi_u, p_hi + pad)
 
 
+def planned_box(spec: MaterialSpec, robust: pd.DataFrame) -> tuple[np.ndarray, np.ndarray, bool]:
+    """The next box (search units) of a material with ``next_runs``: the plausible spans of its refocus
+    scenario (the robust-identifiability frame) widened by the margin and clipped; and whether the plausible
+    set is empty (the range is then kept)."""
+    rows = robust[robust["scenario"] == refocus_scenario(spec)].set_index("factor").loc[spec.factor_names]
+    empty = float(rows["robust_fraction_pct"].iloc[0]) == 0 or not np.isfinite(rows["robust_lower"]).all()
+    lo, hi = next_box(spec.domain, rows["robust_lower"].to_numpy(), rows["robust_upper"].to_numpy(),
+                      spec.next_runs.margin)
+    return lo, hi, empty
+
+
+def box_points(domain: Domain, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """The box's grid (the one its design runs come from) in actual units: where the criticism chooses the
+    runs a next wave makes, so that they lie where the wave's table keeps them."""
+    grid = _candidates(len(lo))
+    return domain.to_actual(lo + (grid + 1.0) / 2.0 * (hi - lo))
+
+
 def _candidates(k: int) -> np.ndarray:
     levels = (-1.0, -0.5, 0.0, 0.5, 1.0) if k <= 3 else (-1.0, 0.0, 1.0)
     return np.array(list(product(levels, repeat=k)))
@@ -328,10 +346,7 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     factors = spec.factor_names
     domain = spec.domain
     scenario = refocus_scenario(spec)
-    rows = robust[robust["scenario"] == scenario].set_index("factor").loc[factors]
-    empty = float(rows["robust_fraction_pct"].iloc[0]) == 0 or not np.isfinite(rows["robust_lower"]).all()
-    lo, hi = next_box(domain, rows["robust_lower"].to_numpy(), rows["robust_upper"].to_numpy(),
-                      request.margin)
+    lo, hi, empty = planned_box(spec, robust)
     lower_actual, upper_actual = domain.to_actual(lo)[0], domain.to_actual(hi)[0]
     dom_frame = pd.DataFrame({"material": material, "factor": factors, "lower": lower_actual,
                               "upper": upper_actual})

@@ -19,6 +19,8 @@ from typing import TYPE_CHECKING
 import pandas as pd
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from .design import Coding
     from .spec import MaterialSpec
 
@@ -167,6 +169,17 @@ class MaterialAnalysis:
     warnings: list[str]
 
 
+def _next_box_points(spec: MaterialSpec, robust: pd.DataFrame) -> np.ndarray | None:
+    """Where the criticism chooses the runs it proposes when a next wave will make them: the next box's grid
+    (the wave's table keeps only runs inside the box); None without ``next_runs``."""
+    if spec.next_runs is None:
+        return None
+    from .next_wave import box_points, planned_box
+
+    lo, hi, _ = planned_box(spec, robust)
+    return box_points(spec.domain, lo, hi)
+
+
 def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
                   typo_stop: bool = True) -> MaterialAnalysis:
     """One material from its transcribed table to every per-material output: validation and the
@@ -188,7 +201,8 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
                                    strict_sets=stored_strict_sets(scenarios, surrogates, spec))
     criticism = criticize_material(table, surrogates, spec, coding=validated.coding,
                                    fits={fit.response: fit for fit in fitted},
-                                   strict_sets=stored_strict_sets(scenarios, surrogates, spec, reference=True))
+                                   strict_sets=stored_strict_sets(scenarios, surrogates, spec, reference=True),
+                                   run_candidates=_next_box_points(spec, uncertainty.robust))
     combos = combinations_step(surrogates, spec, validated.coding, fitted, sets.sets or {}, z=z,
                                ranking=uncertainty.ranking)
     figures = {"sets_figure": sets.figure, "surface_figure": sets.surface,

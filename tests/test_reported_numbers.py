@@ -543,7 +543,7 @@ def test_the_verdict_message_joins_the_ambiguity_or_the_confirming_runs(monkeypa
 
     monkeypatch.setattr(v, "_verdict", lambda *a: (verdict, {"message": "y: base."}))
     monkeypatch.setattr(v, "unpredictable_runs_message", lambda fit: "")
-    data = SimpleNamespace(response="y")
+    data = SimpleNamespace(response="y", run_candidates=None)
     candidates = [{"cause": "missing_term", "detail": "a^3", "delta_aicc": 0.0},
                   {"cause": "response_transform", "detail": "boxcox", "delta_aicc": 1.37}]
     runs = [{"a": 0.5, "b": -1.25, "purpose": "x", "expected": {"missing_term": 1.0, "drift": 2.0}}]

@@ -41,7 +41,8 @@ a drift and a step, and steps at different change-points, are different kinds), 
 verdict is ``ambiguous`` with ``candidates`` and up to four ``discriminating_runs`` (where their
 predictions, made later in run order, differ most relative to their prediction error).  A named cause
 carries ``discriminating_runs`` that would confirm it against its nearest rivals (a next wave makes those
-inside its box, after the deciding runs: ``runs_for_next_wave``); an outlier and a slipped
+inside its box, after the deciding runs: ``runs_for_next_wave``; with ``run_candidates``, the next box's
+grid, every run is chosen there); an outlier and a slipped
 factor value of the same run list each other as ``aliases`` (no further run tells them apart).
 
 Blocks (:mod:`demid.blocks`).  With a ``block`` column every model carries effect-coded block terms

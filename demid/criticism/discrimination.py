@@ -122,8 +122,11 @@ def close_candidates(entries: list[dict], named: tuple | None = None, margin: fl
 
 
 def _grid(data: _Data) -> np.ndarray:
-    """Candidate points in coded units: the design's levels (-alpha, -1, 0, 1, alpha) in every factor,
-    within the design's reach (no farther from the centre than its farthest run)."""
+    """Candidate points in coded units: the data's own (a next wave's box grid) when it has them, else the
+    design's levels (-alpha, -1, 0, 1, alpha) in every factor, within the design's reach (no farther from
+    the centre than its farthest run)."""
+    if data.run_candidates is not None:
+        return np.asarray(data.run_candidates, dtype=float)
     levels = sorted({-data.alpha, -1.0, 0.0, 1.0, data.alpha})
     pts = np.array(list(product(levels, repeat=len(data.factors))), dtype=float)
     reach = float(np.max(np.linalg.norm(data.coded, axis=1))) + 1e-9

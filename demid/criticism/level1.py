@@ -269,7 +269,7 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
 def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: float | None = None,
               family_alpha: float = 0.05, log_factors: tuple[str, ...] = (), max_findings: int = 3,
               n_null: int = 1999, seed: int = 0, run_order: str | RunOrder = "performed",
-              fit: SurrogateFit | None = None) -> CriticismResult:
+              fit: SurrogateFit | None = None, run_candidates: np.ndarray | None = None) -> CriticismResult:
     """Level-1 model criticism of the quadratic surrogate of one response.
 
     ``alpha`` is the CCD axial distance used for coding (None: inferred from the
@@ -278,10 +278,15 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     the family-adjusted p-values.  ``run_order`` is the declared order of the ``run`` column
     (``performed`` or ``unknown``), or the material's :class:`~demid.criticism.run_order.RunOrder`
     already assessed: drift is tested only where it can be believed.  ``fit`` is the response's
-    quadratic fit already made (its coding is then the one used; None: fitted here).  See the package
-    docstring (demid.criticism) for the catalogue.
+    quadratic fit already made (its coding is then the one used; None: fitted here).  ``run_candidates``
+    (actual units) are the points the runs it proposes are chosen from (None: the design's levels within its
+    reach).  See the package docstring (demid.criticism) for the catalogue.
     """
     data, fit = _prepare(table, list(factors), response, alpha, tuple(log_factors), fit)
+    if run_candidates is not None:
+        actual = np.atleast_2d(np.asarray(run_candidates, dtype=float))
+        data = replace(data, run_candidates=data.coding.to_coded(model_units(actual, list(factors),
+                                                                            list(log_factors))))
     if not isinstance(run_order, RunOrder):
         run_order = assess_run_order(data.runs, data.coded, {response: data.y}, run_order)
     data = replace(data, drift_tested=run_order.drift_tested)

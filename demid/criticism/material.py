@@ -137,13 +137,15 @@ def material_run_order(table: pd.DataFrame, spec: MaterialSpec, coding):
 
 def criticize_material(table: pd.DataFrame, surrogates: dict, spec: MaterialSpec, n: int | None = None,
                        title: str | None = None, strict_sets: dict | None = None,
-                       coding: Coding | None = None, fits: dict | None = None) -> MaterialCriticism:
+                       coding: Coding | None = None, fits: dict | None = None,
+                       run_candidates: np.ndarray | None = None) -> MaterialCriticism:
     """Level 1 for every response (with the identifiability effect of any extension) and level 2.
 
     ``spec`` is the material's :class:`~demid.spec.MaterialSpec`; ``n`` and ``title`` default to its evaluation size and label.  ``strict_sets`` (scenario name -> the
     exact strict set the admissibility step stored, with its reference distance) are reused, and so
     are ``coding``, the one validation inferred (None: inferred here the same way), and ``fits``
-    (response -> its SurrogateFit in that coding; None: fitted here).
+    (response -> its SurrogateFit in that coding; None: fitted here).  ``run_candidates`` (actual units):
+    the points the proposed runs are chosen from (a next wave's box grid; None: the design's levels).
     """
     from ..design_check import infer_coding
 
@@ -166,7 +168,7 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, spec: MaterialSpec
     response_json, frames, results = {}, [], []
     for response in spec.response_names:
         result = criticize(table, factors, response, alpha=alpha, log_factors=log_factors, run_order=run_order,
-                           fit=fits[response])
+                           fit=fits[response], run_candidates=run_candidates)
         payload = result.to_json()
         if result.findings:
             payload["identifiability"] = _identifiability_effect(surrogates, result.extended_surrogate(), response,

@@ -119,6 +119,9 @@ class _Data:
     factor_round_off: np.ndarray | None = None
     blocks: np.ndarray | None = None  # effect-coded block columns (n, B-1) of runs made in blocks (demid.blocks)
     block_labels: np.ndarray | None = None
+    # coded points the runs it proposes are chosen from (None: the design's levels within its reach); a next
+    # wave's box grid, so that the runs lie where the next wave keeps them
+    run_candidates: np.ndarray | None = None
 
     @property
     def n(self) -> int:

@@ -323,6 +323,9 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
             verdict, detail["message"] = "ambiguous", text
     elif runs and verdict == "defect":
         detail["message"] += confirming_message(list(runs))
+    if runs and (candidates or verdict == "defect") and data.run_candidates is not None:
+        detail["message"] += (" The runs are chosen on the next wave's box grid, the only place where its table "
+                              "keeps them.")
     lone = unpredictable_runs_message(fit)
     if lone:
         detail["unpredictable_runs"] = [int(r) for r in np.asarray(fit.runs)[fit.fitted_exactly]]

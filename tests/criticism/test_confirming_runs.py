@@ -217,3 +217,33 @@ def test_criticism_runs_outside_the_next_box_are_left_out_and_the_reason_says_so
     assert wave.runs["purpose"].tolist()[:2] == [PURPOSE_DECIDE] * 2
     assert "first 2 run(s) to decide between causes" in wave.reason
     assert "; 1 run(s) the criticism proposed lie outside the refocused box and are left out" in wave.reason
+
+
+def test_with_a_next_box_the_criticism_chooses_its_runs_inside_it():
+    """Given the next box's grid (next_wave.box_points), every run the criticism proposes lies inside the box, so
+    the next wave leaves none out; without it (the design's levels) some proposed runs lie outside the same box.
+    Planted drifts and outliers, 2 factors, seeds 0-5; a box over the upper half of each factor's range."""
+    from demid.next_wave import box_points, criticism_runs_in_box
+    from demid.sampling import Domain
+    from tests.generators import RANGES
+
+    factors = FACTORS[2]
+    domain = Domain(tuple(factors), tuple(RANGES[f][0] for f in factors), tuple(RANGES[f][1] for f in factors))
+    lo_u, hi_u = domain.search_bounds()
+    lo, hi = lo_u + 0.45 * (hi_u - lo_u), hi_u
+    candidates = box_points(domain, lo, hi)
+    outside_without, proposed = 0, 0
+    for kind, size in (("drift", 8.0), ("outlier", 10.0)):
+        for seed in range(6):
+            table, _ = ccd_table(seed, 2, kind, size)
+            inside = criticize(table, factors, "y", n_null=199, run_candidates=candidates)
+            if inside.runs_for_next_wave:
+                kept, left_out = criticism_runs_in_box(inside.discriminating_runs, factors, domain, lo, hi)
+                assert left_out == 0 and len(kept) == len(inside.discriminating_runs), (kind, seed)
+                assert "chosen on the next wave's box grid" in inside.verdict_message
+                proposed += 1
+            plain = criticize(table, factors, "y", n_null=199)
+            if plain.runs_for_next_wave:
+                outside_without += criticism_runs_in_box(plain.discriminating_runs, factors, domain, lo, hi)[1]
+                assert "box grid" not in plain.verdict_message
+    assert proposed >= 3 and outside_without > 0
