@@ -24,7 +24,7 @@ from .discrimination import (AMBIGUOUS_AICC, CONFIRM_AICC, CONFIRM_PURPOSE, PURP
 from .catalogue import (CAUSES, MISFIT_TESTS, slip_candidates, step_directions, _GAMMA_BOUND, _LAMBDA_FINE_GRID,
                         _NICE_LAMBDAS, _Round, _boxcox_profile)
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, other_reading_of_the_run,
-                      rests_on_one_run, strongest_rival, unexplained_evidence, verdict_of)
+                      rests_on_one_run, runs_for_next_wave, strongest_rival, unexplained_evidence, verdict_of)
 from .messages import _CAUSE_WORDS, _message, corner_only_runs
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
                      infer_axial_distance)
@@ -159,9 +159,8 @@ class CriticismResult:
 
     @property
     def runs_for_next_wave(self) -> bool:
-        """Whether a next wave makes the discriminating runs: those that decide between candidates, and those
-        that confirm a named cause, which the verdict's message offers (verdict 'defect'); no others."""
-        return bool(self.discriminating_runs) and (bool(self.candidates) or self.verdict == "defect")
+        """Whether a next wave makes the discriminating runs (verdict.runs_for_next_wave)."""
+        return runs_for_next_wave(self.discriminating_runs, self.candidates, self.verdict)
 
     @property
     def verdict_message(self) -> str:

@@ -311,6 +311,12 @@ def unpredictable_runs_message(fit: SurrogateFit) -> str:
             f"there and Q² is undefined; a replicate of {'that run' if len(runs) == 1 else 'those runs'} would check it.")
 
 
+def runs_for_next_wave(runs, candidates, verdict: str) -> bool:
+    """Whether a next wave makes the discriminating runs: those that decide between candidates, and those that
+    confirm a named cause, which the verdict's message offers (verdict 'defect'); no others."""
+    return bool(runs) and (bool(candidates) or verdict == "defect")
+
+
 def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
                family_alpha: float, candidates: list[dict] = (), runs: list[dict] = ()) -> tuple[str, dict]:
     """The verdict and what supports it (numbers for the JSON, a message for the report)."""
@@ -323,7 +329,7 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
             verdict, detail["message"] = "ambiguous", text
     elif runs and verdict == "defect":
         detail["message"] += confirming_message(list(runs))
-    if runs and (candidates or verdict == "defect") and data.run_candidates is not None:
+    if runs_for_next_wave(runs, candidates, verdict) and data.run_candidates is not None:
         detail["message"] += (" The runs are chosen on the next wave's box grid, the only place where its table "
                               "keeps them.")
     lone = unpredictable_runs_message(fit)
