@@ -35,8 +35,10 @@ def _limits(block: dict | None) -> tuple[float | None, float | None]:
 def limits_problem(lower: float, upper: float, limits: dict | None) -> str | None:
     """Why a factor's physical ``limits`` do not contain its search range [lower, upper] (the key and the
     values), or None."""
+    from .sampling.domain import LIMIT_SLACK
+
     limits = limits or {}
-    slack = 1e-6 * abs(upper - lower)  # a bound written rounded (a next wave's box) is no violation
+    slack = LIMIT_SLACK * abs(upper - lower)
     if limits.get("lower") is not None and limits["lower"] > lower + slack:
         return (f"limits.lower: {limits['lower']:.10g} is above the search range's lower bound {lower:.10g} (the "
                 "range must lie within the physical limits)")

@@ -31,10 +31,15 @@ def uses_grid(dim: int) -> bool:
     return dim <= MAX_GRID_DIM
 
 
+#: A bound this share of its range inside a physical limit is at it: a bound written rounded (a next wave's box,
+#: 6-10 digits) is still at the limit, and no violation of it.
+LIMIT_SLACK = 1e-6
+
+
 def sides_at_limit(bounds: tuple, limits: tuple) -> list[str]:
     """The ends of a factor's search range (lower, upper) that are its physical limits (lower, upper; None:
     none): no value lies beyond them, so a set reaching them is not cut there."""
-    slack = 1e-6 * abs(bounds[1] - bounds[0])  # a bound written rounded (a next wave's box) is still at the limit
+    slack = LIMIT_SLACK * abs(bounds[1] - bounds[0])
     return [side for side, bound, limit, beyond in zip(("lower", "upper"), bounds, limits, (1.0, -1.0))
             if limit is not None and beyond * (limit - bound) >= -slack]
 
