@@ -535,8 +535,8 @@ def test_ambiguous_message_quotes_the_largest_aicc_gap_and_the_deciding_runs():
 @pytest.mark.parametrize("verdict", ["does_not_predict", "defect", "adequate"])
 def test_the_verdict_message_joins_the_ambiguity_or_the_confirming_runs(monkeypatch, verdict):
     """A surrogate that does not predict keeps its verdict and adds the ambiguity after a space; any other verdict
-    with candidates becomes 'ambiguous' with that message alone; a named defect adds the
-    runs that would confirm it."""
+    with candidates becomes 'ambiguous' with that message alone; a named cause (a defect, or under a surrogate that
+    does not predict) adds the runs that would confirm it."""
     from types import SimpleNamespace
 
     from demid.criticism import verdict as v
@@ -554,7 +554,7 @@ def test_the_verdict_message_joins_the_ambiguity_or_the_confirming_runs(monkeypa
     else:
         assert (got, detail["message"]) == ("ambiguous", ambiguous)
     got, detail = v.verdict_of(data, None, [], None, [], 0.05, (), runs)
-    if verdict == "defect":
+    if verdict in ("defect", "does_not_predict"):
         assert detail["message"] == (
             "y: base. The runs cannot rule out every rival (drift: fitted less well, but a misnamed cause is corrected "
             "only by runs that separate it from the truth): 1 more run made after these, at (a=0.5, b=-1.25), where "

@@ -29,6 +29,9 @@ if TYPE_CHECKING:
 
 VERDICTS = ("adequate", "defect", "unexplained", "does_not_predict", "ambiguous")
 
+#: Verdicts that may name a cause, and then offer the runs that would confirm it.
+NAMING_VERDICTS = ("defect", "does_not_predict")
+
 #: After the named extensions, a family member still rejected at this fraction of the family level
 #: means misfit the named causes do not explain (1 % for the default 5 %: a correct extension then
 #: leaves a false residual alarm in about one table in a hundred; the full 5 % cost a twentieth of the
@@ -313,8 +316,9 @@ def unpredictable_runs_message(fit: SurrogateFit) -> str:
 
 def runs_for_next_wave(runs, candidates, verdict: str) -> bool:
     """Whether a next wave makes the discriminating runs: those that decide between candidates, and those that
-    confirm a named cause, which the verdict's message offers (verdict 'defect'); no others."""
-    return bool(runs) and (bool(candidates) or verdict == "defect")
+    confirm a named cause, which the verdict's message offers (verdicts 'defect' and 'does_not_predict' with a
+    cause named); no others."""
+    return bool(runs) and (bool(candidates) or verdict in NAMING_VERDICTS)
 
 
 def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
@@ -327,7 +331,7 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
             detail["message"] += " " + text
         else:
             verdict, detail["message"] = "ambiguous", text
-    elif runs and verdict == "defect":
+    elif runs and verdict in NAMING_VERDICTS:
         detail["message"] += confirming_message(list(runs))
     if runs_for_next_wave(runs, candidates, verdict) and data.run_candidates is not None:
         detail["message"] += (" The runs are chosen on the next wave's box grid, the only place where its table "

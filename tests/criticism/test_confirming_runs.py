@@ -10,7 +10,7 @@ import pytest
 from demid.criticism import criticize, discrimination
 from demid.criticism.catalogue import SlipCandidate, _Hypothesis
 from demid.criticism.level1 import _confirming_rivals
-from demid.criticism.verdict import ONE_RUN_READINGS_BAYES_FACTOR, other_reading_of_the_run
+from demid.criticism.verdict import NAMING_VERDICTS, ONE_RUN_READINGS_BAYES_FACTOR, other_reading_of_the_run
 from demid.design import model_matrix, parse_term
 from tests.generators import FACTORS, ccd_table, design, later_runs
 
@@ -143,14 +143,14 @@ def test_a_next_wave_makes_the_runs_the_criticism_proposes_and_no_others():
             runs = deciding_runs(frame, FACTORS[2])
             proposed = [{f: r[f] for f in FACTORS[2]} for r in result.discriminating_runs]
             # candidates (an 'ambiguous' row, also under does_not_predict) or a named cause's verdict
-            if (result.candidates or result.verdict == "defect") and proposed:
+            if (result.candidates or result.verdict in NAMING_VERDICTS) and proposed:
                 seen.add("decide" if result.candidates else "confirm")
                 purpose = PURPOSE_DECIDE if result.candidates else PURPOSE_CONFIRM
                 assert [{f: r[f] for f in FACTORS[2]} for r in runs] == proposed, (kind, seed)
                 assert {r["purpose"] for r in runs} == {purpose}
                 row = frame.index[frame["cause"] == "ambiguous"][0] if result.candidates else 0
                 assert isinstance(frame.loc[row, "discriminating_runs"], str)
-                if not result.candidates:
+                if result.verdict == "defect":
                     assert "a next wave (next_runs) makes those inside its box first." in result.verdict_message
                     # the finding's message joins the verdict's without naming the response twice
                     assert result.verdict_message.startswith("y: defect named — ")
@@ -158,6 +158,30 @@ def test_a_next_wave_makes_the_runs_the_criticism_proposes_and_no_others():
             else:
                 assert runs == [] and "discriminating_runs" not in frame, (kind, seed)
     assert seen == {"decide", "confirm"}
+
+
+def test_a_cause_named_when_the_quadratic_does_not_predict_is_offered_its_confirming_runs():
+    """Large planted outliers (2 factors, seeds 0-15): where the quadratic predicts worse than the mean
+    (does_not_predict) and the criticism names a cause, the verdict offers the runs that would confirm it, as a
+    defect's does, and they reach the next wave; the case occurs."""
+    from demid.next_wave import PURPOSE_CONFIRM, deciding_runs
+
+    seen = 0
+    for seed in range(16):
+        table, _ = ccd_table(seed, 2, "outlier", 20.0)
+        result = criticize(table, FACTORS[2], "y", n_null=199)
+        if result.verdict != "does_not_predict" or not result.findings:
+            continue
+        seen += 1
+        assert result.discriminating_runs and result.runs_for_next_wave, seed
+        text = result.verdict_message
+        assert text.startswith("y: does not predict")
+        assert "a next wave (next_runs) makes those inside its box first." in text
+        runs = deciding_runs(result.to_frame(), FACTORS[2])
+        assert [{f: r[f] for f in FACTORS[2]} for r in runs] == [{f: r[f] for f in FACTORS[2]}
+                                                                 for r in result.discriminating_runs]
+        assert {r["purpose"] for r in runs} == {PURPOSE_CONFIRM}
+    assert seen >= 2
 
 
 def test_the_next_wave_makes_the_deciding_runs_before_the_confirming_ones():

@@ -483,8 +483,10 @@ def test_json_and_frame_contract(tmp_path):
         assert {"cause", "detail", "aliases", "p_value", "message"} <= set(f) and f["cause"] in CAUSES
     assert isinstance(doc["findings"][0]["detail"], int)
     frame = res.to_frame()
+    # the runs a next wave makes (here the named outlier's confirming runs) on the row they serve
+    assert res.runs_for_next_wave
     assert list(frame.columns) == ["response", "cause", "detail", "aliases", "p_value", "loo_rmse_baseline",
-                                   "loo_rmse_extended", "delta_aicc", "message", "verdict"]
+                                   "loo_rmse_extended", "delta_aicc", "message", "verdict", "discriminating_runs"]
     frame.to_csv(tmp_path / "criticism.csv", index=False)
     assert len(pd.read_csv(tmp_path / "criticism.csv")) == len(res.findings)
 
