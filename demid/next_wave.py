@@ -38,6 +38,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
+from . import run_purposes
 from .design import model_matrix, parse_term, quadratic_terms, term_name
 from .errors import InputError
 from .spec import MaterialSpec, join_observables
@@ -62,8 +63,8 @@ BOX_SHARE = 1 / 4
 # plausible set instead of sitting inside it (benchmarks/next_wave.py: chosen over 1 and 3).
 BAND_Z_FACTOR = 2.0
 PURPOSE_SEPARATE = "separate aliased terms {terms} ({responses})"
-PURPOSE_DECIDE = "decide between causes"
-PURPOSE_CONFIRM = "confirm the named cause"
+PURPOSE_DECIDE = run_purposes.DECIDE
+PURPOSE_CONFIRM = run_purposes.CONFIRM
 
 
 @dataclass

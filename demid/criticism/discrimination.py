@@ -35,6 +35,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import stats
 
+from .. import run_purposes
 from ..design import model_matrix
 from .models import _inv_boxcox, _num, _run_value
 
@@ -52,7 +53,7 @@ AMBIGUOUS_AICC = 6.0
 #: (seeds 0-19) were misnamed by a margin of 10-35 and got no runs at all.
 CONFIRM_AICC = 10.0
 
-CONFIRM_PURPOSE = "confirm the named cause"
+CONFIRM_PURPOSE = run_purposes.CONFIRM
 
 #: At most this many discriminating runs are proposed.
 MAX_RUNS = 4
@@ -71,7 +72,7 @@ def target_separation(gap: float = 0.0) -> float:
     return d * d
 
 
-PURPOSE = "decide between causes"
+PURPOSE = run_purposes.DECIDE
 
 #: Causes of one run: an outlier and a slipped factor value of the same run are one candidate.
 _ONE_RUN = ("outlier", "factor_level")

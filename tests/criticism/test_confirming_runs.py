@@ -133,7 +133,6 @@ def test_a_next_wave_makes_the_runs_the_criticism_proposes_and_no_others():
     message says; an ambiguous verdict's deciding runs reach its row; a verdict without runs puts none there."""
     from demid.next_wave import PURPOSE_CONFIRM, PURPOSE_DECIDE, deciding_runs
 
-    assert PURPOSE_CONFIRM == discrimination.CONFIRM_PURPOSE and PURPOSE_DECIDE == discrimination.PURPOSE
     seen = set()
     for kind, size in (("term", 6.0), ("drift", 8.0), ("outlier", 10.0), ("clean", 0.0)):
         for seed in range(8):
