@@ -210,7 +210,8 @@ def deciding_runs(findings: pd.DataFrame | None, factors: list[str]) -> list[dic
 
 
 #: A criticism run this far (a share of the search range) outside the next box is taken as meant on its bound: the
-#: criticism writes its points to 4 digits of the design's range (criticism.models._Data.point_dict).
+#: criticism writes its points rounded (criticism.models._Data.point_dict: on the box's grid to 6 significant
+#: digits, as this module writes its own runs; on the design's levels to 4 digits of the design's range).
 CRITICISM_ROUNDING = 1e-3
 
 

@@ -136,8 +136,11 @@ class _Data:
 
     def point_dict(self, coded_point) -> dict:
         """A point in actual units to 4 digits of each factor's design range (the lower bound 0 reads 0, not
-        the -3.7e-07 a rounded alpha leaves)."""
+        the -3.7e-07 a rounded alpha leaves); a point of the next wave's box grid (``run_candidates``) to 6
+        significant digits, as the next wave writes its own runs on that grid, so that both say the same point."""
         x = self.to_actual(coded_point)[0]
+        if self.run_candidates is not None:
+            return {f: float(f"{v:.6g}") + 0.0 for f, v in zip(self.factors, x)}
         ends = self.to_actual(np.array([[-self.alpha] * len(self.factors), [self.alpha] * len(self.factors)]))
         out = {}
         for f, v, lo, hi in zip(self.factors, x, ends[0], ends[1]):

@@ -245,7 +245,8 @@ def test_criticism_runs_outside_the_next_box_are_left_out_and_the_reason_says_so
 def test_with_a_next_box_the_criticism_chooses_its_runs_inside_it():
     """Given the next box's grid (next_wave.box_points), every run the criticism proposes lies inside the box, so
     the next wave leaves none out; without it (the design's levels) some proposed runs lie outside the same box.
-    Planted drifts and outliers, 2 factors, seeds 0-5; a box over the upper half of each factor's range."""
+    and each run is a point of that grid, as the next wave writes it.  Planted drifts and outliers, 2 factors, seeds
+    0-5; a box over the upper half of each factor's range."""
     from demid.next_wave import box_points, criticism_runs_in_box
     from demid.sampling import Domain
     from tests.generators import RANGES
@@ -253,7 +254,7 @@ def test_with_a_next_box_the_criticism_chooses_its_runs_inside_it():
     factors = FACTORS[2]
     domain = Domain(tuple(factors), tuple(RANGES[f][0] for f in factors), tuple(RANGES[f][1] for f in factors))
     lo_u, hi_u = domain.search_bounds()
-    lo, hi = lo_u + 0.45 * (hi_u - lo_u), hi_u
+    lo, hi = lo_u + 0.4537 * (hi_u - lo_u), hi_u  # bounds that 4 digits of the range do not write exactly
     candidates = box_points(domain, lo, hi)
     outside_without, proposed = 0, 0
     for kind, size in (("drift", 8.0), ("outlier", 10.0)):
@@ -263,6 +264,13 @@ def test_with_a_next_box_the_criticism_chooses_its_runs_inside_it():
             if inside.runs_for_next_wave:
                 kept, left_out = criticism_runs_in_box(inside.discriminating_runs, factors, domain, lo, hi)
                 assert left_out == 0 and len(kept) == len(inside.discriminating_runs), (kind, seed)
+                # none moved: the next wave writes the points the criticism names (both to 6 digits)
+                assert [{f: f"{r[f]:.6g}" for f in factors} for r in kept] == [
+                    {f: f"{r[f]:.6g}" for f in factors} for r in inside.discriminating_runs], (kind, seed)
+                # each one a point of the box's grid, written as the next wave writes its own (6 digits)
+                points = np.array([[r[f] for f in factors] for r in kept])
+                assert np.all(np.min(np.max(np.abs(points[:, None, :] - candidates[None, :, :]), axis=2), axis=1)
+                              <= 5e-6 * np.max(np.abs(candidates))), (kind, seed)
                 assert "chosen on the next wave's box grid" in inside.verdict_message
                 proposed += 1
             plain = criticize(table, factors, "y", n_null=199)
