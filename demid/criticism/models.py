@@ -139,11 +139,12 @@ class _Data:
         the -3.7e-07 a rounded alpha leaves); a point of the next wave's box grid (``run_candidates``) to 6
         significant digits, as the next wave writes its own runs on that grid, so that both say the same point."""
         x = self.to_actual(coded_point)[0]
-        if self.run_candidates is not None:
-            return {f: float(f"{v:.6g}") + 0.0 for f, v in zip(self.factors, x)}
         ends = self.to_actual(np.array([[-self.alpha] * len(self.factors), [self.alpha] * len(self.factors)]))
         out = {}
         for f, v, lo, hi in zip(self.factors, x, ends[0], ends[1]):
+            if self.run_candidates is not None:  # a bound at 0 stays 0 through the coding's round trip
+                out[f] = float(f"{0.0 if abs(v) < 1e-9 * abs(hi - lo) else v:.6g}") + 0.0
+                continue
             # a log factor spans decades: its small values keep their own digits
             step = (10.0 ** (math.floor(math.log10(abs(hi - lo))) - 3)
                     if hi != lo and f not in self.log_factors else 0.0)

@@ -149,8 +149,9 @@ def test_a_next_wave_makes_the_runs_the_criticism_proposes_and_no_others():
                 assert {r["purpose"] for r in runs} == {purpose}
                 row = frame.index[frame["cause"] == "ambiguous"][0] if result.candidates else 0
                 assert isinstance(frame.loc[row, "discriminating_runs"], str)
-                if result.verdict == "defect":
+                if not result.candidates:
                     assert "a next wave (next_runs) makes those inside its box first." in result.verdict_message
+                if result.verdict == "defect":
                     # the finding's message joins the verdict's without naming the response twice
                     assert result.verdict_message.startswith("y: defect named — ")
                     assert not result.verdict_message.startswith("y: defect named — y: ")
@@ -244,9 +245,9 @@ def test_criticism_runs_outside_the_next_box_are_left_out_and_the_reason_says_so
 
 def test_with_a_next_box_the_criticism_chooses_its_runs_inside_it():
     """Given the next box's grid (next_wave.box_points), every run the criticism proposes lies inside the box, so
-    the next wave leaves none out; without it (the design's levels) some proposed runs lie outside the same box.
-    and each run is a point of that grid, as the next wave writes it.  Planted drifts and outliers, 2 factors, seeds
-    0-5; a box over the upper half of each factor's range."""
+    the next wave leaves none out, and each is a point of that grid written as the next wave writes its own; without
+    it (the design's levels) some proposed runs lie outside the same box.  Planted drifts and outliers, 2 factors,
+    seeds 0-5; a box over the upper half of each factor's range."""
     from demid.next_wave import box_points, criticism_runs_in_box
     from demid.sampling import Domain
     from tests.generators import RANGES
@@ -278,3 +279,24 @@ def test_with_a_next_box_the_criticism_chooses_its_runs_inside_it():
                 outside_without += criticism_runs_in_box(plain.discriminating_runs, factors, domain, lo, hi)[1]
                 assert "box grid" not in plain.verdict_message
     assert proposed >= 3 and outside_without > 0
+
+
+def test_a_run_on_the_box_grid_is_written_to_six_digits_and_a_bound_at_zero_as_zero():
+    """_Data.point_dict of a box-grid point: 6 significant digits, as next_runs.csv writes its runs; float noise
+    of the coding's round trip at a bound of 0 is written 0, not 1e-17."""
+    from dataclasses import replace
+
+    from demid.criticism.level1 import _prepare
+
+    table, _ = ccd_table(0, 2, "clean", 0.0)
+    table["mu_r"] = table["mu_r"] - table["mu_r"].min()  # the factor's range starts at 0
+    data, _ = _prepare(table, FACTORS[2], "y", None, (), None)
+    grid = replace(data, run_candidates=np.zeros((1, 2)))
+    for actual, written in (([1e-17, 8.0], {"mu_r": 0.0, "gamma": 8.0}), ([-2e-16, 8.0], {"mu_r": 0.0, "gamma": 8.0}),
+                            ([0.123456789, 3.14159265], {"mu_r": 0.123457, "gamma": 3.14159})):
+        point = data.coding.to_coded(np.array([actual]))
+        assert grid.point_dict(point) == written, actual
+        assert str(grid.point_dict(point)["mu_r"]) != "-0.0"
+    # without the grid, the design's levels: 4 digits of the range
+    assert data.point_dict(data.coding.to_coded(np.array([[0.123456789, 3.14159265]]))) == {"mu_r": 0.1235,
+                                                                                          "gamma": 3.14}
