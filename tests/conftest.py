@@ -3,6 +3,7 @@ run once per session."""
 
 from __future__ import annotations
 
+import fcntl
 import shutil
 
 import pytest
@@ -45,12 +46,33 @@ def study_dir(tmp_path):
 
 
 @pytest.fixture(scope="session")
-def demo_run(tmp_path_factory):
+def demo_run(tmp_path_factory, request):
     """The demo study run once per test session exactly as a user runs it (configured grids), in a
-    temporary folder.  Read it, never edit it: tests that change inputs work on :func:`demo_copy`."""
+    temporary folder.  Read it, never edit it: tests that change inputs work on :func:`demo_copy`.
+
+    With parallel workers (pytest-xdist) every worker has a session of its own; the first to ask runs
+    the demo under a file lock in the folder the workers share, the others wait for it and read the
+    same run (a demo run costs more than any test that reads it)."""
+    if not hasattr(request.config, "workerinput"):  # no parallel workers
+        return _run_demo(tmp_path_factory.mktemp("demo_run"))
+    shared = tmp_path_factory.getbasetemp().parent
+    root, done = shared / "demo_run", shared / "demo_run.done"
+    with open(shared / "demo_run.lock", "w", encoding="utf-8") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            if not done.exists():
+                shutil.rmtree(root, ignore_errors=True)
+                root.mkdir()
+                _run_demo(root)
+                done.touch()
+        finally:
+            fcntl.flock(lock, fcntl.LOCK_UN)
+    return root
+
+
+def _run_demo(root):
     from .workflow_helpers import REPO, run_snakemake
 
-    root = tmp_path_factory.mktemp("demo_run")
     shutil.copytree(REPO / "data", root / "data")
     shutil.copy(REPO / "config.yaml", root / "config.yaml")
     proc = run_snakemake(root, root / "config.yaml", timeout=1200)

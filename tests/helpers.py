@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import numpy as np
 import pandas as pd
 
@@ -39,3 +42,46 @@ def write_small_ccd_table(root) -> None:
     table = make_ccd_table(responses, [0.1, 1.0], [0.9, 11.0], noise=0.3, seed=3, decimals=3)
     (root / "data").mkdir()
     table.rename(columns={"x1": "a", "x2": "b"}).to_csv(root / "data" / "m.csv", index=False)
+
+
+def run_demid(*args, cwd=None, env=None) -> subprocess.CompletedProcess:
+    """``python -m demid ARGS`` run inside this test process, as a finished process would report it.
+
+    A fresh interpreter per call costs about two CPU seconds of imports, most of the fast suite's time
+    in the command-line tests; the command itself is what they test. The return code is main()'s (an
+    argparse refusal's 2 included), stdout and stderr are captured, and an exception that would escape
+    main() is printed as the interpreter would (a traceback, code 1), so a test that refuses
+    tracebacks still sees one. Warnings are shown, not raised, as in the interpreter."""
+    import contextlib
+    import io
+    import os
+    import traceback
+    import warnings
+
+    from demid.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    saved_env, saved_cwd = dict(os.environ), os.getcwd()
+    try:
+        if env is not None:
+            os.environ.clear()
+            os.environ.update(env)
+        if cwd is not None:
+            os.chdir(cwd)
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), warnings.catch_warnings():
+            warnings.simplefilter("default")
+            try:
+                code = main([str(a) for a in args])
+            except SystemExit as stop:
+                code = stop.code if isinstance(stop.code, int) else (0 if stop.code is None else 1)
+                if not isinstance(stop.code, (int, type(None))):
+                    print(stop.code, file=sys.stderr)
+            except Exception:  # noqa: BLE001 - reported exactly as the interpreter reports it
+                traceback.print_exc()
+                code = 1
+    finally:
+        os.chdir(saved_cwd)
+        if env is not None:
+            os.environ.clear()
+            os.environ.update(saved_env)
+    return subprocess.CompletedProcess(["demid", *map(str, args)], int(code or 0), out.getvalue(), err.getvalue())

@@ -9,12 +9,13 @@ import pytest
 import statsmodels.api as sm
 
 from demid.design import model_matrix, quadratic_terms
+from ..helpers import run_demid
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
 def _run(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "demid", *args], capture_output=True, text=True, cwd=cwd)
+    return run_demid(*args, cwd=cwd)
 
 
 def test_fit_json_contract_matches_statsmodels(study_dir, tmp_path):

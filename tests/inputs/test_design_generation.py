@@ -14,10 +14,11 @@ from demid.data import validate_material
 from demid.design_generation import FactorRange, generate_sheet, parse_factor
 from demid.errors import InputError
 from demid.spec import MaterialSpec
+from ..helpers import run_demid
 
 
 def _run(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "demid", *args], capture_output=True, text=True, cwd=cwd)
+    return run_demid(*args, cwd=cwd)
 
 
 def _rows(points):

@@ -18,10 +18,11 @@ from demid.data import validate_material
 from demid.design import box_behnken_points, ccd_points, model_matrix, quadratic_terms, term_name
 from demid.design_inference import infer_design
 from demid.spec import MaterialSpec
+from ..helpers import run_demid
 
 
 def _cli(*args):
-    return subprocess.run([sys.executable, "-m", "demid", *args], capture_output=True, text=True)
+    return run_demid(*args)
 
 
 def _full_factorial(k, levels):

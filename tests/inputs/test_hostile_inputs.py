@@ -16,6 +16,7 @@ import pytest
 import yaml
 
 from ..workflow_helpers import REPO, planned_jobs, run_snakemake
+from ..helpers import run_demid
 
 MARK = "PWNED"
 SCRIPT = f"<script>document.title='{MARK}'</script>"
@@ -256,8 +257,7 @@ def test_no_rule_runs_a_shell():
 
 # --------------------------------------------------------------------------- --out
 def _demid(cwd: Path, *args: str) -> subprocess.CompletedProcess:
-    env = dict(os.environ, PYTHONWARNINGS="ignore")
-    return subprocess.run([sys.executable, "-m", "demid", *args], capture_output=True, text=True, cwd=cwd, env=env)
+    return run_demid(*args, cwd=cwd)
 
 
 @pytest.fixture

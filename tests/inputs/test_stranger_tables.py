@@ -19,6 +19,7 @@ from demid.data import read_table, validate_material
 from demid.design import ccd_points, model_matrix, quadratic_terms
 from demid.errors import InputError
 from demid.spec import MaterialSpec
+from ..helpers import run_demid
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -277,7 +278,7 @@ def test_readme_example_config_validates_on_the_shipped_table(tmp_path):
 
 # ----------------------------------------------------------------------------- command line
 def _cli(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "demid", *args], capture_output=True, text=True, cwd=cwd)
+    return run_demid(*args, cwd=cwd)
 
 
 def test_criticize_refuses_a_factor_at_two_levels(tmp_path):
