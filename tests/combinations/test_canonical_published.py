@@ -12,8 +12,6 @@ Every expected number below is copied from its source, not from demid.
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 
 import numpy as np
 import pandas as pd
@@ -22,6 +20,7 @@ import pytest
 from demid.canonical import fit_canonical
 from demid.design import Coding
 from demid.surrogate import fit_response
+from ..helpers import run_demid
 
 # Lawson, J. (2015) Design and Analysis of Experiments with R, CRC Press, Section 10.7 (p. 410, "Example 16":
 # summary(treb.quad) of rsm); data set `Treb` of the R package daewr: a trebuchet, distance thrown y [ft] vs arm
@@ -192,8 +191,7 @@ def _fit_json(tmp_path, table, factors, response):
     path = tmp_path / "table.csv"
     table.to_csv(path, index=False)
     out = tmp_path / "fit.json"
-    proc = subprocess.run([sys.executable, "-m", "demid", "fit", "--data", str(path), "--factors", ",".join(factors),
-                           "--responses", response, "--out", str(out)], capture_output=True, text=True)
+    proc = run_demid("fit", "--data", path, "--factors", ",".join(factors), "--responses", response, "--out", out)
     assert proc.returncode == 0, proc.stderr
     assert "design inferred from the table" in proc.stderr
     return json.loads(out.read_text())[response]["canonical"]

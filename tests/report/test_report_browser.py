@@ -20,6 +20,8 @@ import pytest
 
 from ..workflow_helpers import run_snakemake
 
+pytestmark = pytest.mark.workflow  # a whole Snakemake run, then a browser
+
 BROWSERS = ("chromium", "chromium-browser", "google-chrome")
 WIDTH = 1280
 PROBE = """<script>
