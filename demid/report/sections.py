@@ -42,11 +42,17 @@ def markdown_table(frame: pd.DataFrame, digits: int = 4) -> str:
     if frame.empty:
         return "_(empty)_"
     cols = list(frame.columns)
-    heads = [REPORT_HEADERS.get(c, c) for c in cols]
+    heads = [_cell(REPORT_HEADERS.get(c, c)) for c in cols]
     lines = ["| " + " | ".join(heads) + " |", "|" + "|".join("---" for _ in cols) + "|"]
     for _, row in frame.iterrows():
-        lines.append("| " + " | ".join(_fmt(row[c], digits) for c in cols) + " |")
+        lines.append("| " + " | ".join(_cell(_fmt(row[c], digits)) for c in cols) + " |")
     return "\n".join(lines)
+
+
+def _cell(text: str) -> str:
+    """A table cell's text as Markdown: a bar inside it (``|studentised residual|``) would end the cell and
+    leave the whole table as raw text, so it is escaped; a line break would end the row."""
+    return str(text).replace("|", "\\|").replace("\n", " ")
 
 
 # Report headers of observable_ranking.csv: what the column says, with its unit.
@@ -268,7 +274,8 @@ class ReportSections:
             level2 = info.get("level2") or {}
             verdicts = (verdicts_all[verdicts_all["material"] == m] if verdicts_all is not None
                         else pd.DataFrame(columns=["scenario", "factor", "verdict"]))
-            lines += self._recommended_lines(spec, unc.get("recommended"), verdicts, level2)
+            widened = {(i.factor, i.bound) for i in advice.items if i.material == m and i.kind == "widen"}
+            lines += self._recommended_lines(spec, unc.get("recommended"), verdicts, level2, widened)
             for o, why in in_order(unc.get("uninformative") or {}, spec.response_names):
                 lines.append(f"{spec.response_labels.get(o, o)} is an **uninformative observable**: {why}.")
             if len(verdicts):
@@ -281,9 +288,11 @@ class ReportSections:
             crit = criticism_lines(info, spec)
             if crit:
                 lines += ["", "**What the models get wrong:**", ""] + [f"- {c}" for c in crit]
-            steps = advice.texts(m)
-            if steps:
-                lines += ["", "**Next step:**", ""] + [f"- {s}" for s in steps]
+            decision, also = advice.next_step(m)
+            if decision:
+                lines += ["", "**Next step:**", "", f"- {decision}"]
+            if also:
+                lines += ["", "**Also:**", ""] + [f"- {s}" for s in also]
             parts.append(self._md("\n".join(lines)))
         return parts
 
@@ -293,13 +302,15 @@ class ReportSections:
 
         return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
 
-    def _recommended_lines(self, spec, recommended: dict | None, verdicts: pd.DataFrame, level2: dict) -> list[str]:
+    def _recommended_lines(self, spec, recommended: dict | None, verdicts: pd.DataFrame, level2: dict,
+                           widened: set = frozenset()) -> list[str]:
         """The most robust plausible point with each factor's plausible interval beside it, to the digits that
-        interval supports; plainly said when the set is wide, or when no point meets every target."""
+        interval supports; plainly said when the set is wide, or when no point meets every target, or when the
+        point sits on a search bound or outside the runs (``widened``: the (factor, side) pairs advised wider)."""
         import numpy as np
 
         from ..uncertainty.recommended import digits_for
-        from .summary import unit_text
+        from .summary import point_on_edge_text, unit_text
 
         if not recommended:
             return []
@@ -350,7 +361,14 @@ class ReportSections:
         if wide:
             text += (f" The plausible set is wide in {', '.join(wide)}: any point of those intervals matches the "
                      "measurements as well, so this point is one choice among many.")
-        return [text] + lines
+        edge = point_on_edge_text(spec, recommended["point"], self._runs(spec),
+                                  {} if rows is None else rows["verdict"].astype(str).to_dict(), widened)
+        return [text] + ([edge] if edge else []) + lines
+
+    def _runs(self, spec):
+        """The material's design runs (factor columns, actual units), or None before validation."""
+        path = self.root / "validated" / f"{spec.name}.parquet"
+        return read_parquet(path)[spec.factor_names].to_numpy(dtype=float) if path.is_file() else None
 
     def glossary(self) -> list:
         return [self._md(
