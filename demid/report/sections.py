@@ -153,6 +153,42 @@ def typeset_labels(text: str, labels: list[str]) -> str:
     return "`".join(pieces)
 
 
+#: The report's terms, each with the anchor the text links to (:func:`term`): key, name, definition.
+GLOSSARY = (
+    ("omega", "Ω (search range)", "the box of factor values between the configured bounds (the design's ±α levels)."),
+    ("tolerance", "ε (tolerance)", "relative distance from the measured target within which a prediction counts as "
+     "a match; a fraction in the tables (0.02 = 2 %)."),
+    ("phi", "Φ (feasible fraction)", "share of Ω, in %, whose predictions match every target within ε."),
+    ("plausible-set", "plausible set", "the points whose every predicted observable lies within z combined standard "
+     "deviations (surrogate, measurement, discrepancy) of its target; the span of the set per factor is the "
+     "plausible interval, on which the verdicts are judged."),
+    ("implausibility", "implausibility", "at a point, the largest over the observables of |prediction − target| "
+     "divided by the plausible band's half-width: below 1 the point is plausible; the recommended point has the "
+     "smallest."),
+    ("z", "z", "the half-width of the plausible band in standard deviations (z = 2 covers about 95 %)."),
+    ("sigma", "σ, σ_rel", "measurement uncertainty of a target, absolute or relative; when a response declares "
+     "none, the tolerance is the measurement band (σ = ε·|y*|/z), never added to it."),
+    ("delta", "δ", "optional model-discrepancy standard deviation of a response (`discrepancy`)."),
+    ("q2", "Q²", "1 − PRESS/SST: how well the quadratic predicts each run left out of its fit; 1 is perfect, below "
+     "0 it predicts worse than the runs' mean (the surrogate does not predict)."),
+    ("aicc", "AICc", "Akaike's information criterion corrected for small samples: a lower value means a better "
+     "trade of fit against the number of terms; a drop of 2 or more favours the extended model."),
+    ("ridge", "ridge", "a direction along which a fitted surface hardly changes (a near-zero eigenvalue of its "
+     "quadratic part): along it different factor values give the same response, so the observable cannot tell "
+     "them apart."),
+    ("combination", "combination", "a weighted sum of factors the data pin down while each factor alone is free "
+     "(the narrow axis of the set: a ridge of the observables); tables/combinations.csv."),
+    ("bits", "bits / information gain", "Kullback–Leibler divergence from the uniform prior on Ω to the posterior, "
+     "in bits; one bit halves the plausible volume."),
+    ("se", "se", "standard error of the surrogate's mean prediction."),
+)
+
+
+def term(words: str, key: str) -> str:
+    """``words`` linked to their entry of the report's glossary (:data:`GLOSSARY`)."""
+    return f"[{words}](#term-{key})"
+
+
 class ReportSections:
     """Builds the report's displayable parts from the results folder; optional parts are skipped."""
 
@@ -169,7 +205,24 @@ class ReportSections:
 
         from .safe_html import markdown_html
 
-        return HTML(markdown_html(typeset_labels(text, self._plain_labels)))
+        return HTML(self._unique_anchors(markdown_html(typeset_labels(text, self._plain_labels))))
+
+    def _unique_anchors(self, html: str) -> str:
+        """Heading anchors made unique over the whole report: the second "What the model gets wrong" becomes
+        ``…-2`` (its link with it), so an in-page link never lands on the first material's heading."""
+        import re
+
+        used = self.__dict__.setdefault("_anchors", {})
+
+        def renamed(match: re.Match) -> str:
+            anchor = match.group(2)
+            used[anchor] = used.get(anchor, 0) + 1
+            if used[anchor] == 1:
+                return match.group(0)
+            new = f"{anchor}-{used[anchor]}"
+            return match.group(0).replace(f'id="{anchor}"', f'id="{new}"').replace(f'href="#{anchor}"', f'href="#{new}"')
+
+        return re.sub(r'<(h[1-6]) id="([^"]+)">.*?</\1>', renamed, html, flags=re.S)
 
     @cached_property
     def _plain_labels(self) -> list[str]:
@@ -259,13 +312,18 @@ class ReportSections:
         from ..story import StudyAdvice, verdict_display
         from .summary import VERDICT_TEXT, combination_lines, criticism_lines, in_order
 
-        parts = [self._md("## Summary\n\nPer factor and observable scenario the **plausible interval** is judged; "
-                          "the strict interval (the set if surrogate and measurements were exact: section "
-                          f"*Admissible sets*{self._paper('Table 3')}) stands beside it. **Plausible set**: " + PLAUSIBLE_DEFINITION + " Verdicts: " + VERDICT_TEXT
-                          + " **uninformative observable**: every observable of the scenario leaves at least 99 % "
-                          "of the search range admissible on its own (its band covers its whole simulated range).")]
         verdicts_all = self._csv("verdicts.csv")
         advice = StudyAdvice.from_frame(self._csv("advice.csv"))
+        answers = [self._answer_line(m, verdicts_all, advice) for m in self.materials]
+        parts = [self._md("## Summary\n\n" + "\n".join(f"- {a}" for a in answers if a) + "\n\n"
+                          "**How to read it.** Per factor and observable scenario the "
+                          f"{term('plausible interval', 'plausible-set')} is judged; the strict interval (the set if "
+                          "surrogate and measurements were exact: section "
+                          f"*Admissible sets*{self._paper('Table 3')}) stands beside it. {term('Plausible set', 'plausible-set')}: "
+                          + PLAUSIBLE_DEFINITION + " Verdicts: " + VERDICT_TEXT
+                          + " **uninformative observable**: every observable of the scenario leaves at least 99 % "
+                          "of the search range admissible on its own (its band covers its whole simulated range). "
+                          "Other terms: [Terms](#Terms).")]
         for m in self.materials:
             spec = self._specs()[m]
             lines = [f"### {spec.label}", ""]
@@ -283,7 +341,8 @@ class ReportSections:
             combos = self._json(self.root / "combinations" / f"{m}.json")
             combo_lines = combination_lines(combos, spec)
             if combo_lines:
-                lines += ["", "**What is identified in combination** (principal axes of each set in coded units; "
+                lines += ["", f"**What is identified in {term('combination', 'combination')}** (principal axes of each "
+                          "set in coded units; "
                           "tables/combinations.csv):", ""] + [f"- {c}" for c in combo_lines]
             crit = criticism_lines(info, spec)
             if crit:
@@ -295,6 +354,26 @@ class ReportSections:
                 lines += ["", "**Also:**", ""] + [f"- {s}" for s in also]
             parts.append(self._md("\n".join(lines)))
         return parts
+
+    def _answer_line(self, m: str, verdicts_all: pd.DataFrame | None, advice) -> str:
+        """One material's answer in a line: with its fullest scenario, the factors identified, those not
+        (with their verdict), and the next step."""
+        spec = self._specs()[m]
+        if verdicts_all is None or not len(verdicts_all[verdicts_all["material"] == m]):
+            return ""
+        rows = verdicts_all[verdicts_all["material"] == m]
+        scenario = max(spec.scenarios, key=lambda sc: len(sc.observables))
+        rows = rows[rows["scenario"] == scenario.name]
+        found = [spec.factor(f).label for f, v in zip(rows["factor"], rows["verdict"]) if str(v) == "identified"]
+        combined = [spec.factor(f).label for f, v in zip(rows["factor"], rows["verdict"])
+                    if "identified in combination" in str(v)]
+        missing = [f"{spec.factor(f).label} {v}" for f, v in zip(rows["factor"], rows["verdict"])
+                   if str(v) != "identified" and "identified in combination" not in str(v)]
+        text = (f"**{spec.label}**, with *{scenario.label}*: identified: {', '.join(found) or 'none'}"
+                + (f"; in {term('combination', 'combination')} only: {', '.join(combined)}" if combined else "")
+                + f"; not identified: {', '.join(missing) or 'none'}.")
+        decision, _ = advice.next_step(m)
+        return text + (f" **Next step:** {decision}" if decision else "")
 
     @staticmethod
     def _json(path: Path) -> dict:
@@ -352,7 +431,8 @@ class ReportSections:
                 "**No parameter set meets every target** within the tolerance; counting the surrogate's and the "
                 "measurements' uncertainty, the most plausible point")
         text = (f"{head} (the point of the plausible set of *{label}* with the largest margin to every band, "
-                f"implausibility {recommended['implausibility']:.2f}): " + "; ".join(shown) + ".")
+                f"{term('implausibility', 'implausibility')} {recommended['implausibility']:.2f}): "
+                + "; ".join(shown) + ".")
         if unresolved:
             names = ", ".join(unresolved[:-1]) + " and " + unresolved[-1] if len(unresolved) > 1 else unresolved[0]
             them = "it" if len(unresolved) == 1 else "each"
@@ -371,19 +451,8 @@ class ReportSections:
         return read_parquet(path)[spec.factor_names].to_numpy(dtype=float) if path.is_file() else None
 
     def glossary(self) -> list:
-        return [self._md(
-            "## Terms\n\n"
-            "- **Ω (search range)**: the box of factor values between the configured bounds (the design's ±α levels).\n"
-            "- **ε (tolerance)**: relative distance from the measured target within which a prediction counts as a "
-            "match; a fraction in the tables (0.02 = 2 %).\n"
-            "- **Φ (feasible fraction)**: share of Ω, in %, whose predictions match every target within ε.\n"
-            "- **z**: the half-width of the plausible band in standard deviations (z = 2 covers about 95 %).\n"
-            "- **σ, σ_rel**: measurement uncertainty of a target, absolute or relative; when a response declares "
-            "none, the tolerance is the measurement band (σ = ε·|y*|/z), never added to it.\n"
-            "- **δ**: optional model-discrepancy standard deviation of a response (`discrepancy`).\n"
-            "- **bits / information gain**: Kullback–Leibler divergence from the uniform prior on Ω to the "
-            "posterior, in bits; one bit halves the plausible volume.\n"
-            "- **se**: standard error of the surrogate's mean prediction.")]
+        return [self._md("## Terms\n\n" + "\n".join(f"- <strong id=\"term-{key}\">{name}</strong>: {text}"
+                                                    for key, name, text in GLOSSARY))]
 
     def header(self) -> list:
         text = ["# demid — identifiability report", "",
@@ -391,7 +460,7 @@ class ReportSections:
                 "For every material, quadratic response surfaces are fitted to the designed simulation runs, "
                 "and the *admissible set* — parameter points whose predicted observables all lie within a "
                 "relative tolerance of the measured targets — is compared across observable scenarios "
-                "(feasible fraction Φ of the domain and per-parameter span W).", "",
+                f"(feasible fraction {term('Φ', 'phi')} of the domain and per-parameter span W).", "",
                 f"Materials: {', '.join(self._label(m) for m in self.materials)}."]
         published = self.config.get("published")
         if published and Path(published).is_file():
@@ -509,7 +578,8 @@ class ReportSections:
                  "**Level 1 — surrogate against the simulation runs.** Each quadratic is tested against a fixed "
                  "catalogue of causes (a missing cubic or mixed term, a response transform, an outlying run, "
                  "run-order drift, non-constant variance) with family-wise error control; a finding is kept only "
-                 "with its extension and the measured gain (leave-one-out RMSE, AICc)."]
+                 f"with its extension and the measured gain (leave-one-out RMSE, {term('AICc', 'aicc')}); a "
+                 f"surrogate whose {term('Q²', 'q2')} is below 0 does not predict."]
         from .summary import VERDICT_WORDS, in_order, labelled, unreliable_surrogate_lines, verdict_sentence
 
         spec = self._specs()[m]
@@ -645,7 +715,8 @@ class ReportSections:
         coding = None
         fit_json = self.root / "fits" / f"{m}.json"
         canonical = json.loads(fit_json.read_text(encoding="utf-8")) if fit_json.is_file() else {}
-        lines = ["### Response-surface models", ""]
+        lines = ["### Response-surface models", "", f"A {term('ridge', 'ridge')} in a canonical analysis is a "
+                 "direction along which the response hardly changes.", ""]
         # the stored fits, as the fit step wrote them: the report does not fit again
         for fit in stored_fits(read_parquet(fits), read_parquet(anova), read_parquet(table), spec):
             coding = fit.coding
