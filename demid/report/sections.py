@@ -104,6 +104,8 @@ def keys_labelled(frame: pd.DataFrame, spec) -> pd.DataFrame:
             out[column] = out[column].map(lambda v: factors.get(v, v))
         elif column in ("observables", "best_subset", RANKING_HEADERS["best_subset"]):
             out[column] = out[column].map(observables)
+        elif column == "response":
+            out[column] = out[column].map(lambda v: spec.response_labels.get(v, v))
     return out
 
 
@@ -117,8 +119,6 @@ def study_keys_labelled(frame: pd.DataFrame, specs: dict) -> pd.DataFrame:
             parts.append(rows)
             continue
         shown = keys_labelled(rows, spec)
-        if "response" in shown.columns:
-            shown["response"] = shown["response"].map(lambda v: spec.response_labels.get(v, v))
         shown["material"] = spec.label
         parts.append(shown)
     return pd.concat(parts).loc[frame.index] if parts else frame
@@ -254,6 +254,21 @@ class ReportSections:
         return HTML(sanitize(f'<figure style="margin:0"><img src="data:image/png;base64,{data}" alt="{alt}" '
                     f'style="width:{css_px}px;max-width:100%;height:auto"><figcaption style="font-size:small">'
                     f'{alt} — vector version: <code>figures/{path.stem}.svg</code></figcaption></figure>', figure=True))
+
+    def _speak(self, text: str, m: str) -> str:
+        """``text`` with the material's factor, response and scenario keys written as their labels (a key
+        inside a config path or a file name stays)."""
+        import re
+
+        from .summary import labelled
+
+        spec = self._specs()[m]
+        text = labelled(text, spec)
+        names = {sc.name: sc.label for sc in spec.scenarios if sc.label and sc.label != sc.name}
+        if not names or not text:
+            return text
+        keys = "|".join(re.escape(k) for k in sorted(names, key=len, reverse=True))
+        return re.sub(r"(?<![\w./`'])'?(" + keys + r")'?(?![\w`]|\.\w)", lambda k: names[k.group(1)], text)
 
     def _paper(self, what: str) -> str:
         """`` (paper Table 2)`` where published numbers are declared, else nothing: headings stay generic."""
@@ -486,10 +501,16 @@ class ReportSections:
             text += (f" `printed_agrees` is False on {len(off)} of them: the reproduction lies within the stated "
                      "tolerance but does not round to every digit the paper printed (a table rebuilt from published "
                      "summaries, or transcribed from rounded values, meets a tolerance without matching the last "
-                     "printed digit): " + "; ".join(f"{row.quantity} ({row.material}): printed {row.published:g}, "
+                     "printed digit): " + "; ".join(f"{self._speak(row.quantity, row.material)} "
+                                                    f"({self._label(row.material)}): printed {row.published:g}, "
                                                     f"reproduced {row.reproduced:.6g}" for row in off.itertuples())
                      + ".")
-        return [self._md(text + "\n\n" + markdown_table(table))]
+        shown = table.copy()
+        known = shown["material"].isin(self.materials)
+        shown.loc[known, "quantity"] = [self._speak(q, m) for q, m in zip(shown.loc[known, "quantity"],
+                                                                          shown.loc[known, "material"])]
+        shown.loc[known, "material"] = shown.loc[known, "material"].map(self._label)
+        return [self._md(text + "\n\n" + markdown_table(shown))]
 
     def surrogate_fit(self) -> list:
         table = self._csv("surrogate_fit.csv")
@@ -545,10 +566,12 @@ class ReportSections:
                              f"({change}); " + ", ".join(widths))
         return [self._md("\n".join(lines))]
 
-    def transcription(self, checks: dict) -> list:
-        """Per response: does the refit reproduce the statistics the source published?"""
+    def transcription(self, checks: dict, labels: dict | None = None) -> list:
+        """Per response: does the refit reproduce the statistics the source published?  ``labels``: response
+        key -> label."""
         if not checks:
             return []
+        labels = labels or {}
         from .summary import in_order
 
         lines = ["**Transcription check** against the statistics the source published:"]
@@ -557,7 +580,7 @@ class ReportSections:
                               f"{_fmt(res['reproduced'][k])}{'' if res['agrees'][k] else ' ✗'}"
                               for k in res["published"])
             verdict = "agrees" if res["consistent"] else "**disagrees**"
-            lines.append(f"- `{response}` {verdict} ({stats}).")
+            lines.append(f"- {labels.get(response, response)} {verdict} ({stats}).")
             if not res["consistent"]:
                 lines.append(f"  {res['message']}")
                 for s in res["suspects"][:5]:
@@ -602,7 +625,10 @@ class ReportSections:
         if findings is not None and "response" in findings.columns and len(findings[findings["material"] == m]):
             cols = [c for c in ["response", "cause", "detail", "p_value", "loo_rmse_baseline", "loo_rmse_extended",
                                 "delta_aicc"] if c in findings.columns]
-            lines += ["", markdown_table(findings[findings["material"] == m][cols])]
+            shown = keys_labelled(findings[findings["material"] == m][cols], spec)
+            if "detail" in shown:
+                shown["detail"] = shown["detail"].fillna("").astype(str).map(lambda t: self._speak(t, m))
+            lines += ["", markdown_table(shown)]
         level2 = info.get("level2")
         if level2:
             from ..story import LEVEL2_KINDS, StudyAdvice
@@ -611,16 +637,17 @@ class ReportSections:
             lines += ["", "**Level 2 — calibrated simulation against the experiment.** "
                       + " ".join([labelled(level2.get("finding") or level2["message"], spec), *advice])]
         for pos in info.get("reference_point") or []:
-            errs = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in in_order(pos["errors"]))
+            errs = ", ".join(f"{spec.response_labels.get(o, o)} {100 * e:+.2f} %" for o, e in in_order(pos["errors"]))
             if pos["inside"]:
                 where = "lies inside the admissible set"
             elif pos["nearest_admissible"] is None:
                 where = "cannot lie in it: the admissible set is empty"
             else:
-                near = ", ".join(f"{f}={v:.4g}" for f, v in in_order(pos["nearest_admissible"]))
+                near = ", ".join(f"{spec.factor(f).label} = {v:.4g}" for f, v in in_order(pos["nearest_admissible"],
+                                                                                         spec.factor_names))
                 where = (f"lies outside it, {pos['distance_pct_of_range']:.1f} % of the search range from the "
                          f"nearest admissible point ({near})")
-            lines.append(f"- Reference point vs scenario *{pos['scenario']}*: it {where} (errors {errs}).")
+            lines.append(f"- Reference point vs scenario *{self._speak(pos['scenario'], m)}*: it {where} (errors {errs}).")
         parts = [self._md("\n".join(lines))]
         parts.append(self._image(self.root / "figures" / f"residuals_{m}.png",
                                  f"Residuals of each response surface of {self._label(m)} against fitted value, run order and normal quantiles"))
@@ -679,7 +706,7 @@ class ReportSections:
         parts.append(self._image(self.root / "figures" / f"posterior_{m}.png",
                                  f"Marginal posterior densities of the factors of {self._label(m)}, one curve per observable set"))
         if info.get("notes"):
-            parts.append(self._md("\n".join(f"- {n}" for n in info["notes"])))
+            parts.append(self._md("\n".join(f"- {self._speak(n, m)}" for n in info["notes"])))
         return parts
 
     def next_wave(self, m: str) -> list:
@@ -695,7 +722,9 @@ class ReportSections:
         reason = json.loads(reasons.read_text(encoding="utf-8")).get(m, "")
         advice = " ".join(StudyAdvice.from_frame(self._csv("advice.csv")).texts(m, NEXT_WAVE_KINDS))
         sub = runs[runs["material"] == m].dropna(axis=1, how="all")
-        return [self._md("### What to simulate next\n\n" + reason + (" " + advice if advice else "")
+        spec = self._specs()[m]
+        sub = keys_labelled(sub, spec).rename(columns={f.name: f.label for f in spec.factors})
+        return [self._md("### What to simulate next\n\n" + self._speak(reason, m) + (" " + advice if advice else "")
                          + " Once simulated, they are studied in the next domain (tables/next_domain.csv) with the "
                          "earlier runs inside it (`design: {type: custom}`).\n\n"
                          + markdown_table(sub.drop(columns="material")))]
@@ -723,6 +752,7 @@ class ReportSections:
             label = spec.response_labels.get(fit.response, fit.response)
             coef = coefficient_table(fit)
             coef.insert(1, "symbol", [_symbol_of(t, letters) for t in coef["term"]])
+            coef["term"] = [t if t == "Intercept" else _symbol_of(t, spec.factor_labels) for t in coef["term"]]
             actual = fit.coefficients()["coefficient_actual"].to_numpy()
             where = canonical_text(canonical.get(fit.response, {}).get("canonical"), fit, spec, letters, label)
             anova = block_anova(fit)
@@ -760,7 +790,7 @@ class ReportSections:
             if info["warnings"]:
                 text += "\n\n" + "\n".join(f"- ⚠ {w}" for w in info["warnings"])
             parts.append(self._md(text))
-            parts += self.transcription(info.get("transcription") or {})
+            parts += self.transcription(info.get("transcription") or {}, self._specs()[m].response_labels)
         star = "; ★ = reference point" if cfg.get("reference_point") else ""
         projected = ("; with more than two factors each panel is the set's projection onto a pair of factors "
                      "(a point is coloured when some value of the other factors is admissible)"
@@ -775,7 +805,9 @@ class ReportSections:
                                  f"Fitted response surfaces of {self._label(m)} with design runs and target contours"))
         if cfg.get("pareto"):
             par = cfg["pareto"]
-            text = f"**Pareto trade-off**: relative error of {par['error_of']} vs predicted {par['minimise']}."
+            said = self._specs()[m].response_labels
+            text = (f"**Pareto trade-off**: relative error of {said.get(par['error_of'], par['error_of'])} vs "
+                    f"predicted {said.get(par['minimise'], par['minimise'])}.")
             crit_path = self.root / "criticism" / f"{m}.json"
             if crit_path.is_file():
                 import json
@@ -785,7 +817,8 @@ class ReportSections:
                 bad = [r for r in dict.fromkeys((par["error_of"], par["minimise"]))
                        if r in unpredictive_responses(json.loads(crit_path.read_text(encoding="utf-8")))]
                 if bad:
-                    text += (f" ⚠ It relies on the surrogate of {', '.join(bad)}, which does not predict left-out "
+                    text += (f" ⚠ It relies on the surrogate of {', '.join(said.get(r, r) for r in bad)}, which "
+                             "does not predict left-out "
                              f"runs (Q² < 0): treat the front as indicative only.")
             parts.append(self._md(text))
             parts.append(self._image(self.root / "figures" / f"pareto_{m}.png",
@@ -794,7 +827,7 @@ class ReportSections:
             if pareto is not None:
                 iv = pareto[pareto["kind"] == "interval"][["factor", "lower", "upper", "n_points"]]
                 parts.append(self._md(f"Intervals over Pareto points with error < {100 * par['max_error']:g} %:\n\n"
-                                      + markdown_table(iv)))
+                                      + markdown_table(keys_labelled(iv, self._specs()[m]))))
         parts += self.criticism(m)
         parts += self.uncertainty(m)
         parts += self.next_wave(m)
@@ -803,5 +836,5 @@ class ReportSections:
         if diag.is_file():
             parts.append(self._md("**Residual diagnostics** (Breusch–Pagan, RESET, Shapiro–Wilk p-values; "
                                   "largest VIF, Cook's distance, |studentised residual|)\n\n"
-                                  + markdown_table(read_parquet(diag), 3)))
+                                  + markdown_table(keys_labelled(read_parquet(diag), self._specs()[m]), 3)))
         return parts
