@@ -36,11 +36,20 @@ REPORT_HEADERS = {
 }
 
 
+#: Columns of p-values: printed by :func:`~demid.precision.p_text` (2 digits, "< 0.0001" below it).
+P_COLUMNS = frozenset({"p_value", "lof_p", "breusch_pagan_p", "reset_p", "shapiro_p", "PR(>F)"})
+
+
 def markdown_table(frame: pd.DataFrame, digits: int = 4) -> str:
     """A GitHub-style Markdown table (no extra dependency), numbers to ``digits`` significant digits;
     headers in words (:data:`REPORT_HEADERS`)."""
     if frame.empty:
         return "_(empty)_"
+    from ..precision import p_text
+
+    frame = frame.copy()
+    for c in [c for c in frame.columns if c in P_COLUMNS]:
+        frame[c] = [p_text(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else v for v in frame[c]]
     cols = list(frame.columns)
     heads = [_cell(REPORT_HEADERS.get(c, c)) for c in cols]
     lines = ["| " + " | ".join(heads) + " |", "|" + "|".join("---" for _ in cols) + "|"]
@@ -78,6 +87,16 @@ def ranking_display(ranking: pd.DataFrame, uninformative: dict | None = None) ->
     if "best smaller set" in shown:
         shown["best smaller set"] = shown["best smaller set"].replace({"(none)": "–"})
     gain = RANKING_HEADERS["information_gain_bits"]
+    error = RANKING_HEADERS["information_gain_error_bits"]
+    if error in shown:
+        from ..precision import uncertainty_text, value_text
+
+        shown[error] = shown[error].astype(object)
+        shown[gain] = shown[gain].astype(object)
+        for i in ranking.index:
+            value, err = float(ranking.loc[i, "information_gain_bits"]), float(ranking.loc[i, "information_gain_error_bits"])
+            shown.loc[i, gain] = value_text(value, err, max_digits=3)
+            shown.loc[i, error] = uncertainty_text(err)
     if uninformative and gain in shown:
         shown[gain] = shown[gain].astype(object)
         for i in ranking.index[ranking["observables"].isin(list(uninformative))]:
@@ -124,6 +143,20 @@ def study_keys_labelled(frame: pd.DataFrame, specs: dict) -> pd.DataFrame:
     return pd.concat(parts).loc[frame.index] if parts else frame
 
 
+def coefficients_shown(coef: pd.DataFrame) -> pd.DataFrame:
+    """A coefficient table as printed: each estimate to the digits its standard error supports (≈ 0 where it
+    cannot be told from zero), the standard error to two digits, t to two and p by :func:`~demid.precision.p_text`."""
+    from ..precision import ZERO, uncertainty_text, value_text
+
+    out = coef.copy().astype({c: object for c in ("estimate", "std_error", "t") if c in coef})
+    for i in coef.index:
+        est, se = float(coef.loc[i, "estimate"]), float(coef.loc[i, "std_error"])
+        out.loc[i, "estimate"] = value_text(est, se)
+        out.loc[i, "std_error"] = uncertainty_text(se)
+        out.loc[i, "t"] = ZERO if out.loc[i, "estimate"] == ZERO else value_text(float(coef.loc[i, "t"]), max_digits=3)
+    return out
+
+
 def _symbol_of(term: str, letters: dict[str, str]) -> str:
     from .rsm import _symbol
 
@@ -145,7 +178,8 @@ def typeset_labels(text: str, labels: list[str]) -> str:
         pretty[label] = re.sub(r"\^\{?(-?[0-9.]+)\}?", r"<sup>\1</sup>", shown)
     if not pretty:
         return text
-    pattern = re.compile(r"(?<!\w)(?:" + "|".join(re.escape(k) for k in pretty) + r")(?!\w)")
+    # a label stands alone, or before a square or cube (a coefficient's term: e_Po²)
+    pattern = re.compile(r"(?<!\w)(?:" + "|".join(re.escape(k) for k in pretty) + r")(?![^\W²³])")
     # Odd-numbered pieces of a split on backticks are code spans: keep them verbatim.
     pieces = text.split("`")
     for k in range(0, len(pieces), 2):
@@ -506,6 +540,9 @@ class ReportSections:
                                                     f"reproduced {row.reproduced:.6g}" for row in off.itertuples())
                      + ".")
         shown = table.copy()
+        # a difference at floating-point round-off of the value is no difference (1.4e-14 of 100)
+        noise = shown["abs_diff"].abs() <= 1e-9 * shown["published"].abs().clip(lower=1e-300)
+        shown.loc[noise, ["abs_diff", "rel_diff"]] = 0.0
         known = shown["material"].isin(self.materials)
         shown.loc[known, "quantity"] = [self._speak(q, m) for q, m in zip(shown.loc[known, "quantity"],
                                                                           shown.loc[known, "material"])]
@@ -531,6 +568,7 @@ class ReportSections:
             if not path.is_file():
                 continue
             scen = read_parquet(path).drop_duplicates("scenario")
+            from ..precision import percent_text
             from ..tolerance import has_own_tolerance
 
             own = has_own_tolerance(self._specs()[m])
@@ -540,7 +578,7 @@ class ReportSections:
             for _, row in scen[scen["feasible_fraction_pct"] == 0].iterrows():
                 lines.append(f"- **{self._label(m)}**, {scenario_label.get(row['scenario'], row['scenario'])}: no point of the domain meets every target "
                              f"within {100 * row['tolerance']:g} %{' (or its own tolerance)' if own else ''}; the "
-                             f"closest point misses by {100 * row['best_max_rel_error']:.2f} % ({error}).")
+                             f"closest point misses by {percent_text(row['best_max_rel_error'])} ({error}).")
         for m in self.materials:
             sub = table[table["material"] == m]
             scen = list(dict.fromkeys(sub["scenario"]))
@@ -603,6 +641,7 @@ class ReportSections:
                  "run-order drift, non-constant variance) with family-wise error control; a finding is kept only "
                  f"with its extension and the measured gain (leave-one-out RMSE, {term('AICc', 'aicc')}); a "
                  f"surrogate whose {term('Q²', 'q2')} is below 0 does not predict."]
+        from ..precision import percent_text
         from .summary import VERDICT_WORDS, in_order, labelled, unreliable_surrogate_lines, verdict_sentence
 
         spec = self._specs()[m]
@@ -637,7 +676,8 @@ class ReportSections:
             lines += ["", "**Level 2 — calibrated simulation against the experiment.** "
                       + " ".join([labelled(level2.get("finding") or level2["message"], spec), *advice])]
         for pos in info.get("reference_point") or []:
-            errs = ", ".join(f"{spec.response_labels.get(o, o)} {100 * e:+.2f} %" for o, e in in_order(pos["errors"]))
+            errs = ", ".join(f"{spec.response_labels.get(o, o)} {'+' if e > 0 else ''}{percent_text(e)}"
+                             for o, e in in_order(pos["errors"]))
             if pos["inside"]:
                 where = "lies inside the admissible set"
             elif pos["nearest_admissible"] is None:
@@ -723,7 +763,13 @@ class ReportSections:
         advice = " ".join(StudyAdvice.from_frame(self._csv("advice.csv")).texts(m, NEXT_WAVE_KINDS))
         sub = runs[runs["material"] == m].dropna(axis=1, how="all")
         spec = self._specs()[m]
-        sub = keys_labelled(sub, spec).rename(columns={f.name: f.label for f in spec.factors})
+        sub = keys_labelled(sub, spec)
+        from ..precision import coordinate_text
+
+        for f in spec.factors:
+            if f.name in sub:
+                sub[f.name] = [coordinate_text(float(v), f.lower, f.upper) for v in sub[f.name]]
+        sub = sub.rename(columns={f.name: f.label for f in spec.factors})
         return [self._md("### What to simulate next\n\n" + self._speak(reason, m) + (" " + advice if advice else "")
                          + " Once simulated, they are studied in the next domain (tables/next_domain.csv) with the "
                          "earlier runs inside it (`design: {type: custom}`).\n\n"
@@ -765,7 +811,7 @@ class ReportSections:
                       "", where, "", "ANOVA (block sums of squares are partial: the increase of the residual sum of "
                       "squares when the block is dropped from the full quadratic):", "",
                       markdown_table(anova), "", "Coefficients in coded units:", "",
-                      markdown_table(coef), ""]
+                      markdown_table(coefficients_shown(coef)), ""]
             if getattr(fit, "blocked", False):
                 lines += ["The runs were made in blocks (the table's `block` column): the fit carries a block term, "
                           "and the equations, sets and scenarios use the block-averaged surface (the response at the "

@@ -212,12 +212,13 @@ def criticism_lines(info: dict, spec) -> list[str]:
     level2 = info.get("level2")
     if level2:
         from ..criticism.messages import level2_miss_text
+        from ..precision import percent_text
 
         tol = 100 * level2["tolerance"]
         own = level2_own_tolerances(level2)
         uniform = own is None
         within = level2_within(level2, spec)
-        best = f"{100 * level2['best_max_error']:.2f} %"
+        best = percent_text(level2["best_max_error"])
         own_miss = labelled(level2_miss_text(level2["best_errors"], level2["tolerance"], own), spec) if not uniform else ""
         if level2["feasible"]:
             lines.append(f"Simulation vs experiment: every target can be met within {within} "
@@ -230,7 +231,7 @@ def criticism_lines(info: dict, spec) -> list[str]:
         if level2.get("reference_max_error") is not None:
             inside = level2.get("reference_within")
             inside = level2["reference_max_error"] <= level2["tolerance"] if inside is None else inside
-            lines.append(f"Reference point: largest error {100 * level2['reference_max_error']:.2f} % "
+            lines.append(f"Reference point: largest error {percent_text(level2['reference_max_error'])} "
                          f"({'within' if inside else 'outside'} "
                          + (f"the {tol:g} % tolerance)." if uniform else
                             level2_within(level2, spec, brackets=False) + ")."))
