@@ -492,7 +492,7 @@ class ReportSections:
                      "measurements as well, so this point is one choice among many.")
         edge = point_on_edge_text(spec, recommended["point"], self._runs(spec),
                                   {} if rows is None else rows["verdict"].astype(str).to_dict(), widened)
-        return [text] + ([edge] if edge else []) + lines
+        return [text] + (["", edge, ""] if edge else []) + lines
 
     def _runs(self, spec):
         """The material's design runs (factor columns, actual units), or None before validation."""
