@@ -54,7 +54,7 @@ class StudyAdvice:
         if frame is None or not len(frame):
             return cls([])
         clean = frame.fillna("").astype(str)
-        text_columns = ADVICE_COLUMNS[:-1]
+        text_columns = [c for c in ADVICE_COLUMNS if c != "decision"]
         return cls([AdviceItem(*(row[c] for c in text_columns), decision=row.get("decision", "").lower() == "true")
                     for _, row in clean.iterrows()])
 
