@@ -33,6 +33,8 @@ REPORT_HEADERS = {
     "max_cooks_d": "max Cook's D", "max_abs_student_resid": "max |studentised residual|",
     "breusch_pagan_lm": "Breusch–Pagan LM", "breusch_pagan_p": "Breusch–Pagan p", "reset_f": "RESET F",
     "reset_p": "RESET p", "shapiro_w": "Shapiro–Wilk W", "shapiro_p": "Shapiro–Wilk p",
+    "loo_rmse_baseline": "leave-one-out RMSE, quadratic", "loo_rmse_extended": "leave-one-out RMSE, extended",
+    "delta_aicc": "ΔAICc (extended − quadratic)",
 }
 
 
@@ -665,6 +667,7 @@ class ReportSections:
             cols = [c for c in ["response", "cause", "detail", "p_value", "loo_rmse_baseline", "loo_rmse_extended",
                                 "delta_aicc"] if c in findings.columns]
             shown = keys_labelled(findings[findings["material"] == m][cols], spec)
+            shown["cause"] = shown["cause"].astype(str).str.replace(";", ", ").str.replace("_", " ")
             if "detail" in shown:
                 shown["detail"] = shown["detail"].fillna("").astype(str).map(lambda t: self._speak(t, m))
             lines += ["", markdown_table(shown)]
