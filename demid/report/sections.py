@@ -96,8 +96,8 @@ def ranking_display(ranking: pd.DataFrame, uninformative: dict | None = None) ->
         shown[error] = shown[error].astype(object)
         shown[gain] = shown[gain].astype(object)
         for i in ranking.index:
-            value, err = float(ranking.loc[i, "information_gain_bits"]), float(ranking.loc[i, "information_gain_error_bits"])
-            shown.loc[i, gain] = value_text(value, err, max_digits=3)
+            err = float(ranking.loc[i, "information_gain_error_bits"])
+            shown.loc[i, gain] = value_text(float(ranking.loc[i, "information_gain_bits"]), err, max_digits=3)
             shown.loc[i, error] = uncertainty_text(err)
     if uninformative and gain in shown:
         shown[gain] = shown[gain].astype(object)
@@ -370,7 +370,8 @@ class ReportSections:
                           "**How to read it.** Per factor and observable scenario the "
                           f"{term('plausible interval', 'plausible-set')} is judged; the strict interval (the set if "
                           "surrogate and measurements were exact: section "
-                          f"*Admissible sets*{self._paper('Table 3')}) stands beside it. {term('Plausible set', 'plausible-set')}: "
+                          f"*Admissible sets*{self._paper('Table 3')}) stands beside it. "
+                          f"{term('Plausible set', 'plausible-set')}: "
                           + PLAUSIBLE_DEFINITION + " Verdicts: " + VERDICT_TEXT
                           + " **uninformative observable**: every observable of the scenario leaves at least 99 % "
                           "of the search range admissible on its own (its band covers its whole simulated range). "
@@ -690,7 +691,8 @@ class ReportSections:
                                                                                          spec.factor_names))
                 where = (f"lies outside it, {pos['distance_pct_of_range']:.1f} % of the search range from the "
                          f"nearest admissible point ({near})")
-            lines.append(f"- Reference point vs scenario *{self._speak(pos['scenario'], m)}*: it {where} (errors {errs}).")
+            scenario = self._speak(pos["scenario"], m)
+            lines.append(f"- Reference point vs scenario *{scenario}*: it {where} (errors {errs}).")
         parts = [self._md("\n".join(lines))]
         parts.append(self._image(self.root / "figures" / f"residuals_{m}.png",
                                  f"Residuals of each response surface of {self._label(m)} against fitted value, run order and normal quantiles"))
