@@ -136,3 +136,109 @@ def round_off_only(residuals, y, factor_sd=None) -> bool:
     """True when the residuals are round-off: their root mean square is below :func:`round_off_floor`."""
     residuals = np.asarray(residuals, dtype=float)
     return bool(residuals.size) and float(np.sqrt(np.mean(residuals ** 2))) <= round_off_floor(y, factor_sd)
+
+
+# --------------------------------------------------------------------------- the digits a printed number carries
+# The report's one rule for printing a number: to the digits its uncertainty supports — the place of the second
+# significant digit of its standard error (or of the tolerance, for a quantity a person set) — never more than
+# MAX_DIGITS significant digits; an effect that rounds to zero at that place is written as indistinguishable
+# from zero; a relative difference past FAR_RATIO is written as such, not as a percentage of five digits.
+
+#: Significant digits of an uncertainty (standard error, half-width, tolerance) as printed.
+UNCERTAINTY_DIGITS = 2
+#: Significant digits a value is never printed beyond (a fit's estimate, a predicted value).
+MAX_DIGITS = 4
+#: A relative difference beyond this many times the reference is written "more than 10×".
+FAR_RATIO = 10.0
+#: A proposed run's coordinate is written to this share of its factor's range: finer than a simulation's input
+#: resolves, coarser than six digits of a float.
+COORDINATE_RESOLUTION = 1e-3
+#: The smallest p-value printed as a number; below it "< 0.0001".
+SMALLEST_P = 1e-4
+#: How an effect indistinguishable from zero is written.
+ZERO = "≈ 0"
+
+
+def place_of(uncertainty: float, digits: int = UNCERTAINTY_DIGITS) -> float:
+    """The power of ten of ``uncertainty``'s ``digits``-th significant digit once rounded to them: 0.01 for
+    0.093, 1 for 12, 0.01 for 0.0998 (which rounds to 0.10)."""
+    rounded = float(f"{abs(uncertainty):.{digits}g}")
+    return float(10.0 ** (np.floor(np.log10(rounded)) - digits + 1))
+
+
+def _minus(text: str) -> str:
+    """A leading minus as the typographic one (an exponent's stays ASCII)."""
+    return "−" + text[1:] if text.startswith("-") else text
+
+
+def at_place(value: float, place: float) -> str:
+    """``value`` rounded to ``place`` (a power of ten), written with exactly the decimals that place shows."""
+    decimals = max(0, int(-np.floor(np.log10(place) + 1e-9)))
+    rounded = round(value / place) * place
+    return _minus(f"{rounded:.{decimals}f}") if rounded != 0 else "0"
+
+
+def uncertainty_text(uncertainty: float) -> str:
+    """A standard error, half-width or tolerance to :data:`UNCERTAINTY_DIGITS` significant digits."""
+    if not np.isfinite(uncertainty):
+        return "–"
+    if uncertainty == 0:
+        return "0"
+    if abs(uncertainty) >= 10 ** (UNCERTAINTY_DIGITS + 2) or abs(uncertainty) < 1e-4:
+        return _minus(f"{uncertainty:.{UNCERTAINTY_DIGITS}g}")
+    return at_place(uncertainty, place_of(uncertainty))
+
+
+def value_text(value: float, uncertainty: float | None = None, max_digits: int = MAX_DIGITS) -> str:
+    """``value`` to the digits ``uncertainty`` supports (at most ``max_digits`` significant); :data:`ZERO`
+    where it rounds to zero at that place (the data cannot tell it from zero)."""
+    if value is None or not np.isfinite(value):
+        return "–"
+    own = place_of(value, max_digits) if value != 0 else 0.0
+    if uncertainty is None or not np.isfinite(uncertainty) or uncertainty <= 0:
+        return _minus(f"{value:.{max_digits}g}") if value != 0 else "0"
+    place = max(place_of(uncertainty), own)
+    if abs(value) < place / 2:
+        return ZERO
+    if abs(value) >= 10 ** (max_digits + 2) or abs(value) < 1e-4:
+        digits = max(1, int(np.floor(np.log10(abs(value))) - np.log10(place) + 1))
+        return _minus(f"{value:.{digits}g}")
+    return at_place(value, place)
+
+
+def pm_text(value: float, uncertainty: float) -> str:
+    """``value ± uncertainty``, each to the digits the uncertainty supports."""
+    shown = value_text(value, uncertainty)
+    return f"{'0' if shown == ZERO else shown} ± {uncertainty_text(uncertainty)}"
+
+
+def p_text(p: float) -> str:
+    """A p-value to two significant digits, below :data:`SMALLEST_P` as "< 0.0001"."""
+    if p is None or not np.isfinite(p):
+        return "–"
+    return f"< {SMALLEST_P:g}" if p < SMALLEST_P else f"{p:.2g}"
+
+
+def percent_text(fraction: float, digits: int = 3) -> str:
+    """A relative difference (a fraction) as a percentage to ``digits`` significant digits; "0 %" for none,
+    "< 0.01 %" for a trace, "more than 10×" past :data:`FAR_RATIO` (a percentage of five digits says nothing
+    a reader can use)."""
+    if fraction is None or not np.isfinite(fraction):
+        return "–"
+    size = abs(fraction)
+    if size > FAR_RATIO:
+        return f"more than {FAR_RATIO:g}×"
+    if size == 0:
+        return "0 %"
+    if size < 1e-4:
+        return "< 0.01 %"
+    return _minus(f"{100 * fraction:.{digits}g} %")
+
+
+def coordinate_text(value: float, lower: float, upper: float) -> str:
+    """A proposed run's factor value to :data:`COORDINATE_RESOLUTION` of its range (what a simulation input
+    resolves): 0.0757 for 0.075736 in [0.0757, 0.924]."""
+    if not np.isfinite(value):
+        return "–"
+    span = abs(upper - lower) or abs(value) or 1.0
+    return at_place(value, float(10.0 ** np.floor(np.log10(COORDINATE_RESOLUTION * span))))

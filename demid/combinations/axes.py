@@ -177,8 +177,9 @@ def linear_statement(normal: np.ndarray, centre: np.ndarray, width: float, codin
     text = ""
     for i, (sign, term) in enumerate(terms):
         text += (("−" if sign == "−" else "") + term) if i == 0 else f" {sign} {term}"
-    constant = f"{c_shown:.{digits}g}".replace("-", "−")
-    return a, c, w, f"{text} = {constant} ± {w_shown:.{digits - 1}g}"
+    from ..precision import pm_text
+
+    return a, c, w, f"{text} = {pm_text(c_shown, w_shown)}"  # the constant to the digits its half-width supports
 
 
 @dataclass(frozen=True)

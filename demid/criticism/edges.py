@@ -106,13 +106,13 @@ def extrapolation_warnings(domain: Domain, runs: np.ndarray | None, reference_po
         if outside:
             out.append(f"Extrapolation: the reference point lies outside the range of the runs ({'; '.join(outside)}); "
                        f"its predicted values are extrapolated and its errors are not evidence about the simulation.")
-        elif not _in_hull(z, u, tol):
+        elif not in_hull(z, u, tol):
             out.append("Extrapolation: the reference point lies outside the region the design runs cover (their "
                        "convex hull), although within each factor's range; its predicted values are extrapolated.")
     return out
 
 
-def _in_hull(points: np.ndarray, u: np.ndarray, tol: float) -> bool:
+def in_hull(points: np.ndarray, u: np.ndarray, tol: float) -> bool:
     """True when u is within ``tol`` (per coordinate) of the convex hull of ``points`` (linear program)."""
     n, d = points.shape
     # lambda >= 0, sum lambda = 1, |points^T lambda - u| <= tol

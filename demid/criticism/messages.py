@@ -136,6 +136,10 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
 
 
 def _pct(x: float) -> str:
+    from ..precision import FAR_RATIO, percent_text
+
+    if abs(x) < 5e-5 or abs(x) > FAR_RATIO:  # none, a trace, or past 10×: said so (demid.precision)
+        return percent_text(x)
     return f"{100 * x:.2f} %" if abs(x) < 0.1 else f"{100 * x:.1f} %"
 
 
@@ -165,8 +169,9 @@ def level2_miss_text(errors: dict[str, float], tolerance: float, tolerances: dic
     if same_tolerances(tolerance, own):
         return f"by {'at most ' if at_most else ''}{_pct(max(abs(e) for e in errors.values()))}"
     worst = max(errors, key=lambda o: abs(errors[o]) / own[o])
-    return (f"{worst} by {_pct(abs(errors[worst]))} ({_times(abs(errors[worst]) / own[worst])} times its tolerance "
-            f"of {_pct(own[worst])})")
+    ratio = abs(errors[worst]) / own[worst]
+    times = f"{_times(ratio)} times" if ratio >= 0.005 else "a negligible fraction of"
+    return f"{worst} by {_pct(abs(errors[worst]))} ({times} its tolerance of {_pct(own[worst])})"
 
 
 def _weighted(r: Level2Result, value: float) -> str:

@@ -131,7 +131,7 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, surr
     for s_idx, (name, result) in enumerate(sets.items()):
         color = SCENARIO_COLORS[s_idx % len(SCENARIO_COLORS)]
         label = scenario_labels.get(name) or name
-        obs = "+".join(result.observables)
+        obs = " + ".join(tex_label(spec.response_labels.get(o, o)) for o in result.observables)
         frac = 100 * result.fraction
         handles.append(Patch(color=color, label=f"{label} ({obs}, ε={result.tolerance:g}): {frac:.3g} %"))
         if result.points is not None:  # Sobol evaluation (more than 3 factors): admissible points

@@ -29,6 +29,9 @@ def waves_figure(history: pd.DataFrame, spec):
         rows = per_wave[per_wave["scenario"] == scenario]
         axes[0].plot(rows["runs_simulated"], rows["feasible_fraction_of_omega_pct"], marker="o",
                      color=SCENARIO_COLORS[i % len(SCENARIO_COLORS)], label=tex_label(labels.get(scenario, scenario)))
+    from matplotlib.ticker import MaxNLocator
+
+    axes[0].xaxis.set_major_locator(MaxNLocator(integer=True))  # runs are counted: no tick at 12.5 runs
     axes[0].set_xlabel("runs simulated")
     axes[0].set_ylabel("feasible fraction of Ω [%]")
     axes[0].legend(frameon=False)

@@ -183,6 +183,9 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
                        "(recalibrate)."),
         "observable": ("–", "Response key the advice is about (check_target, recalibrate, add_observable)."),
         "text": ("–", "The advice as the report prints it (summary, level 2 or the next-wave section)."),
+        "decision": ("–", "True for the material's one next step (the first advice by priority: check_target, "
+                          "recalibrate, widen, next_runs, add_observable, stop); the summary lists the others "
+                          "below it as 'also'."),
     },
     "model_extensions": {
         "extends": ("–", "The material whose model this one extends (config key materials.<m>.extends)."),
@@ -242,7 +245,7 @@ TABLE_COLUMNS = {
                               "bottleneck", "max_error_without", "implied_bias", "bias_candidate"],
     "verdicts": ["material", "scenario", "factor", "strict_lower", "strict_upper", "plausible_lower",
                  "plausible_upper", "verdict", "reason"],
-    "advice": ["material", "kind", "factor", "bound", "observable", "text"],
+    "advice": ["material", "kind", "factor", "bound", "observable", "text", "decision"],
     "model_extensions": ["material", "extends", "added_factors", "best_error_before", "best_error_after",
                          "feasible_fraction_before_pct", "feasible_fraction_after_pct", "scenario"],
     "paper_comparison": ["quantity", "material", "published", "reproduced", "abs_diff", "rel_diff", "tolerance",

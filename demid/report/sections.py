@@ -33,7 +33,13 @@ REPORT_HEADERS = {
     "max_cooks_d": "max Cook's D", "max_abs_student_resid": "max |studentised residual|",
     "breusch_pagan_lm": "Breusch–Pagan LM", "breusch_pagan_p": "Breusch–Pagan p", "reset_f": "RESET F",
     "reset_p": "RESET p", "shapiro_w": "Shapiro–Wilk W", "shapiro_p": "Shapiro–Wilk p",
+    "loo_rmse_baseline": "leave-one-out RMSE, quadratic", "loo_rmse_extended": "leave-one-out RMSE, extended",
+    "delta_aicc": "ΔAICc (extended − quadratic)",
 }
+
+
+#: Columns of p-values: printed by :func:`~demid.precision.p_text` (2 digits, "< 0.0001" below it).
+P_COLUMNS = frozenset({"p_value", "lof_p", "breusch_pagan_p", "reset_p", "shapiro_p", "PR(>F)"})
 
 
 def markdown_table(frame: pd.DataFrame, digits: int = 4) -> str:
@@ -41,12 +47,23 @@ def markdown_table(frame: pd.DataFrame, digits: int = 4) -> str:
     headers in words (:data:`REPORT_HEADERS`)."""
     if frame.empty:
         return "_(empty)_"
+    from ..precision import p_text
+
+    frame = frame.copy()
+    for c in [c for c in frame.columns if c in P_COLUMNS]:
+        frame[c] = [p_text(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else v for v in frame[c]]
     cols = list(frame.columns)
-    heads = [REPORT_HEADERS.get(c, c) for c in cols]
+    heads = [_cell(REPORT_HEADERS.get(c, c)) for c in cols]
     lines = ["| " + " | ".join(heads) + " |", "|" + "|".join("---" for _ in cols) + "|"]
     for _, row in frame.iterrows():
-        lines.append("| " + " | ".join(_fmt(row[c], digits) for c in cols) + " |")
+        lines.append("| " + " | ".join(_cell(_fmt(row[c], digits)) for c in cols) + " |")
     return "\n".join(lines)
+
+
+def _cell(text: str) -> str:
+    """A table cell's text as Markdown: a bar inside it (``|studentised residual|``) would end the cell and
+    leave the whole table as raw text, so it is escaped; a line break would end the row."""
+    return str(text).replace("|", "\\|").replace("\n", " ")
 
 
 # Report headers of observable_ranking.csv: what the column says, with its unit.
@@ -72,6 +89,16 @@ def ranking_display(ranking: pd.DataFrame, uninformative: dict | None = None) ->
     if "best smaller set" in shown:
         shown["best smaller set"] = shown["best smaller set"].replace({"(none)": "–"})
     gain = RANKING_HEADERS["information_gain_bits"]
+    error = RANKING_HEADERS["information_gain_error_bits"]
+    if error in shown:
+        from ..precision import uncertainty_text, value_text
+
+        shown[error] = shown[error].astype(object)
+        shown[gain] = shown[gain].astype(object)
+        for i in ranking.index:
+            err = float(ranking.loc[i, "information_gain_error_bits"])
+            shown.loc[i, gain] = value_text(float(ranking.loc[i, "information_gain_bits"]), err, max_digits=3)
+            shown.loc[i, error] = uncertainty_text(err)
     if uninformative and gain in shown:
         shown[gain] = shown[gain].astype(object)
         for i in ranking.index[ranking["observables"].isin(list(uninformative))]:
@@ -98,6 +125,8 @@ def keys_labelled(frame: pd.DataFrame, spec) -> pd.DataFrame:
             out[column] = out[column].map(lambda v: factors.get(v, v))
         elif column in ("observables", "best_subset", RANKING_HEADERS["best_subset"]):
             out[column] = out[column].map(observables)
+        elif column == "response":
+            out[column] = out[column].map(lambda v: spec.response_labels.get(v, v))
     return out
 
 
@@ -111,11 +140,23 @@ def study_keys_labelled(frame: pd.DataFrame, specs: dict) -> pd.DataFrame:
             parts.append(rows)
             continue
         shown = keys_labelled(rows, spec)
-        if "response" in shown.columns:
-            shown["response"] = shown["response"].map(lambda v: spec.response_labels.get(v, v))
         shown["material"] = spec.label
         parts.append(shown)
     return pd.concat(parts).loc[frame.index] if parts else frame
+
+
+def coefficients_shown(coef: pd.DataFrame) -> pd.DataFrame:
+    """A coefficient table as printed: each estimate to the digits its standard error supports (≈ 0 where it
+    cannot be told from zero), the standard error to two digits, t to two and p by :func:`~demid.precision.p_text`."""
+    from ..precision import ZERO, uncertainty_text, value_text
+
+    out = coef.copy().astype({c: object for c in ("estimate", "std_error", "t") if c in coef})
+    for i in coef.index:
+        est, se = float(coef.loc[i, "estimate"]), float(coef.loc[i, "std_error"])
+        out.loc[i, "estimate"] = value_text(est, se)
+        out.loc[i, "std_error"] = uncertainty_text(se)
+        out.loc[i, "t"] = ZERO if out.loc[i, "estimate"] == ZERO else value_text(float(coef.loc[i, "t"]), max_digits=3)
+    return out
 
 
 def _symbol_of(term: str, letters: dict[str, str]) -> str:
@@ -139,12 +180,49 @@ def typeset_labels(text: str, labels: list[str]) -> str:
         pretty[label] = re.sub(r"\^\{?(-?[0-9.]+)\}?", r"<sup>\1</sup>", shown)
     if not pretty:
         return text
-    pattern = re.compile(r"(?<!\w)(?:" + "|".join(re.escape(k) for k in pretty) + r")(?!\w)")
+    # a label stands alone, or before a square or cube (a coefficient's term: e_Po²)
+    pattern = re.compile(r"(?<!\w)(?:" + "|".join(re.escape(k) for k in pretty) + r")(?![^\W²³])")
     # Odd-numbered pieces of a split on backticks are code spans: keep them verbatim.
     pieces = text.split("`")
     for k in range(0, len(pieces), 2):
         pieces[k] = pattern.sub(lambda m: pretty[m.group(0)], pieces[k])
     return "`".join(pieces)
+
+
+#: The report's terms, each with the anchor the text links to (:func:`term`): key, name, definition.
+GLOSSARY = (
+    ("omega", "Ω (search range)", "the box of factor values between the configured bounds (the design's ±α levels)."),
+    ("tolerance", "ε (tolerance)", "relative distance from the measured target within which a prediction counts as "
+     "a match; a fraction in the tables (0.02 = 2 %)."),
+    ("phi", "Φ (feasible fraction)", "share of Ω, in %, whose predictions match every target within ε."),
+    ("plausible-set", "plausible set", "the points whose every predicted observable lies within z combined standard "
+     "deviations (surrogate, measurement, discrepancy) of its target; the span of the set per factor is the "
+     "plausible interval, on which the verdicts are judged."),
+    ("implausibility", "implausibility", "at a point, the largest over the observables of |prediction − target| "
+     "divided by the plausible band's half-width: below 1 the point is plausible; the recommended point has the "
+     "smallest."),
+    ("z", "z", "the half-width of the plausible band in standard deviations (z = 2 covers about 95 %)."),
+    ("sigma", "σ, σ_rel", "measurement uncertainty of a target, absolute or relative; when a response declares "
+     "none, the tolerance is the measurement band (σ = ε·|y*|/z), never added to it."),
+    ("delta", "δ", "optional model-discrepancy standard deviation of a response (`discrepancy`)."),
+    ("q2", "Q²", "1 − PRESS/SST: how well the quadratic predicts each run left out of its fit; 1 is perfect, below "
+     "0 it predicts worse than the runs' mean (the surrogate does not predict)."),
+    ("aicc", "AICc", "Akaike's information criterion corrected for small samples: a lower value means a better "
+     "trade of fit against the number of terms; a drop of 2 or more favours the extended model."),
+    ("ridge", "ridge", "a direction along which a fitted surface hardly changes (a near-zero eigenvalue of its "
+     "quadratic part): along it different factor values give the same response, so the observable cannot tell "
+     "them apart."),
+    ("combination", "combination", "a weighted sum of factors the data pin down while each factor alone is free "
+     "(the narrow axis of the set: a ridge of the observables); tables/combinations.csv."),
+    ("bits", "bits / information gain", "Kullback–Leibler divergence from the uniform prior on Ω to the posterior, "
+     "in bits; one bit halves the plausible volume."),
+    ("se", "se", "standard error of the surrogate's mean prediction."),
+)
+
+
+def term(words: str, key: str) -> str:
+    """``words`` linked to their entry of the report's glossary (:data:`GLOSSARY`)."""
+    return f"[{words}](#term-{key})"
 
 
 class ReportSections:
@@ -163,7 +241,24 @@ class ReportSections:
 
         from .safe_html import markdown_html
 
-        return HTML(markdown_html(typeset_labels(text, self._plain_labels)))
+        return HTML(self._unique_anchors(markdown_html(typeset_labels(text, self._plain_labels))))
+
+    def _unique_anchors(self, html: str) -> str:
+        """Heading anchors made unique over the whole report: the second "What the model gets wrong" becomes
+        ``…-2`` (its link with it), so an in-page link never lands on the first material's heading."""
+        import re
+
+        used = self.__dict__.setdefault("_anchors", {})
+
+        def renamed(match: re.Match) -> str:
+            anchor = match.group(2)
+            used[anchor] = used.get(anchor, 0) + 1
+            if used[anchor] == 1:
+                return match.group(0)
+            new = f"{anchor}-{used[anchor]}"
+            return match.group(0).replace(f'id="{anchor}"', f'id="{new}"').replace(f'href="#{anchor}"', f'href="#{new}"')
+
+        return re.sub(r'<(h[1-6]) id="([^"]+)">.*?</\1>', renamed, html, flags=re.S)
 
     @cached_property
     def _plain_labels(self) -> list[str]:
@@ -195,6 +290,21 @@ class ReportSections:
         return HTML(sanitize(f'<figure style="margin:0"><img src="data:image/png;base64,{data}" alt="{alt}" '
                     f'style="width:{css_px}px;max-width:100%;height:auto"><figcaption style="font-size:small">'
                     f'{alt} — vector version: <code>figures/{path.stem}.svg</code></figcaption></figure>', figure=True))
+
+    def _speak(self, text: str, m: str) -> str:
+        """``text`` with the material's factor, response and scenario keys written as their labels (a key
+        inside a config path or a file name stays)."""
+        import re
+
+        from .summary import labelled
+
+        spec = self._specs()[m]
+        text = labelled(text, spec)
+        names = {sc.name: sc.label for sc in spec.scenarios if sc.label and sc.label != sc.name}
+        if not names or not text:
+            return text
+        keys = "|".join(re.escape(k) for k in sorted(names, key=len, reverse=True))
+        return re.sub(r"(?<![\w./`'])'?(" + keys + r")'?(?![\w`]|\.\w)", lambda k: names[k.group(1)], text)
 
     def _paper(self, what: str) -> str:
         """`` (paper Table 2)`` where published numbers are declared, else nothing: headings stay generic."""
@@ -253,13 +363,19 @@ class ReportSections:
         from ..story import StudyAdvice, verdict_display
         from .summary import VERDICT_TEXT, combination_lines, criticism_lines, in_order
 
-        parts = [self._md("## Summary\n\nPer factor and observable scenario the **plausible interval** is judged; "
-                          "the strict interval (the set if surrogate and measurements were exact: section "
-                          f"*Admissible sets*{self._paper('Table 3')}) stands beside it. **Plausible set**: " + PLAUSIBLE_DEFINITION + " Verdicts: " + VERDICT_TEXT
-                          + " **uninformative observable**: every observable of the scenario leaves at least 99 % "
-                          "of the search range admissible on its own (its band covers its whole simulated range).")]
         verdicts_all = self._csv("verdicts.csv")
         advice = StudyAdvice.from_frame(self._csv("advice.csv"))
+        answers = [self._answer_line(m, verdicts_all, advice) for m in self.materials]
+        parts = [self._md("## Summary\n\n" + "\n".join(f"- {a}" for a in answers if a) + "\n\n"
+                          "**How to read it.** Per factor and observable scenario the "
+                          f"{term('plausible interval', 'plausible-set')} is judged; the strict interval (the set if "
+                          "surrogate and measurements were exact: section "
+                          f"*Admissible sets*{self._paper('Table 3')}) stands beside it. "
+                          f"{term('Plausible set', 'plausible-set')}: "
+                          + PLAUSIBLE_DEFINITION + " Verdicts: " + VERDICT_TEXT
+                          + " **uninformative observable**: every observable of the scenario leaves at least 99 % "
+                          "of the search range admissible on its own (its band covers its whole simulated range). "
+                          "Other terms: [Terms](#Terms).")]
         for m in self.materials:
             spec = self._specs()[m]
             lines = [f"### {spec.label}", ""]
@@ -268,7 +384,8 @@ class ReportSections:
             level2 = info.get("level2") or {}
             verdicts = (verdicts_all[verdicts_all["material"] == m] if verdicts_all is not None
                         else pd.DataFrame(columns=["scenario", "factor", "verdict"]))
-            lines += self._recommended_lines(spec, unc.get("recommended"), verdicts, level2)
+            widened = {(i.factor, i.bound) for i in advice.items if i.material == m and i.kind == "widen"}
+            lines += self._recommended_lines(spec, unc.get("recommended"), verdicts, level2, widened)
             for o, why in in_order(unc.get("uninformative") or {}, spec.response_names):
                 lines.append(f"{spec.response_labels.get(o, o)} is an **uninformative observable**: {why}.")
             if len(verdicts):
@@ -276,16 +393,39 @@ class ReportSections:
             combos = self._json(self.root / "combinations" / f"{m}.json")
             combo_lines = combination_lines(combos, spec)
             if combo_lines:
-                lines += ["", "**What is identified in combination** (principal axes of each set in coded units; "
+                lines += ["", f"**What is identified in {term('combination', 'combination')}** (principal axes of each "
+                          "set in coded units; "
                           "tables/combinations.csv):", ""] + [f"- {c}" for c in combo_lines]
             crit = criticism_lines(info, spec)
             if crit:
                 lines += ["", "**What the models get wrong:**", ""] + [f"- {c}" for c in crit]
-            steps = advice.texts(m)
-            if steps:
-                lines += ["", "**Next step:**", ""] + [f"- {s}" for s in steps]
+            decision, also = advice.next_step(m)
+            if decision:
+                lines += ["", "**Next step:**", "", f"- {decision}"]
+            if also:
+                lines += ["", "**Also:**", ""] + [f"- {s}" for s in also]
             parts.append(self._md("\n".join(lines)))
         return parts
+
+    def _answer_line(self, m: str, verdicts_all: pd.DataFrame | None, advice) -> str:
+        """One material's answer in a line: with its fullest scenario, the factors identified, those not
+        (with their verdict), and the next step."""
+        spec = self._specs()[m]
+        if verdicts_all is None or not len(verdicts_all[verdicts_all["material"] == m]):
+            return ""
+        rows = verdicts_all[verdicts_all["material"] == m]
+        scenario = max(spec.scenarios, key=lambda sc: len(sc.observables))
+        rows = rows[rows["scenario"] == scenario.name]
+        found = [spec.factor(f).label for f, v in zip(rows["factor"], rows["verdict"]) if str(v) == "identified"]
+        combined = [spec.factor(f).label for f, v in zip(rows["factor"], rows["verdict"])
+                    if "identified in combination" in str(v)]
+        missing = [f"{spec.factor(f).label} {v}" for f, v in zip(rows["factor"], rows["verdict"])
+                   if str(v) != "identified" and "identified in combination" not in str(v)]
+        text = (f"**{spec.label}**, with *{scenario.label}*: identified: {', '.join(found) or 'none'}"
+                + (f"; in {term('combination', 'combination')} only: {', '.join(combined)}" if combined else "")
+                + f"; not identified: {', '.join(missing) or 'none'}.")
+        decision, _ = advice.next_step(m)
+        return text + (f" **Next step:** {decision}" if decision else "")
 
     @staticmethod
     def _json(path: Path) -> dict:
@@ -293,13 +433,15 @@ class ReportSections:
 
         return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
 
-    def _recommended_lines(self, spec, recommended: dict | None, verdicts: pd.DataFrame, level2: dict) -> list[str]:
+    def _recommended_lines(self, spec, recommended: dict | None, verdicts: pd.DataFrame, level2: dict,
+                           widened: set = frozenset()) -> list[str]:
         """The most robust plausible point with each factor's plausible interval beside it, to the digits that
-        interval supports; plainly said when the set is wide, or when no point meets every target."""
+        interval supports; plainly said when the set is wide, or when no point meets every target, or when the
+        point sits on a search bound or outside the runs (``widened``: the (factor, side) pairs advised wider)."""
         import numpy as np
 
         from ..uncertainty.recommended import digits_for
-        from .summary import unit_text
+        from .summary import point_on_edge_text, unit_text
 
         if not recommended:
             return []
@@ -341,7 +483,8 @@ class ReportSections:
                 "**No parameter set meets every target** within the tolerance; counting the surrogate's and the "
                 "measurements' uncertainty, the most plausible point")
         text = (f"{head} (the point of the plausible set of *{label}* with the largest margin to every band, "
-                f"implausibility {recommended['implausibility']:.2f}): " + "; ".join(shown) + ".")
+                f"{term('implausibility', 'implausibility')} {recommended['implausibility']:.2f}): "
+                + "; ".join(shown) + ".")
         if unresolved:
             names = ", ".join(unresolved[:-1]) + " and " + unresolved[-1] if len(unresolved) > 1 else unresolved[0]
             them = "it" if len(unresolved) == 1 else "each"
@@ -350,22 +493,18 @@ class ReportSections:
         if wide:
             text += (f" The plausible set is wide in {', '.join(wide)}: any point of those intervals matches the "
                      "measurements as well, so this point is one choice among many.")
-        return [text] + lines
+        edge = point_on_edge_text(spec, recommended["point"], self._runs(spec),
+                                  {} if rows is None else rows["verdict"].astype(str).to_dict(), widened)
+        return [text] + (["", edge, ""] if edge else []) + lines
+
+    def _runs(self, spec):
+        """The material's design runs (factor columns, actual units), or None before validation."""
+        path = self.root / "validated" / f"{spec.name}.parquet"
+        return read_parquet(path)[spec.factor_names].to_numpy(dtype=float) if path.is_file() else None
 
     def glossary(self) -> list:
-        return [self._md(
-            "## Terms\n\n"
-            "- **Ω (search range)**: the box of factor values between the configured bounds (the design's ±α levels).\n"
-            "- **ε (tolerance)**: relative distance from the measured target within which a prediction counts as a "
-            "match; a fraction in the tables (0.02 = 2 %).\n"
-            "- **Φ (feasible fraction)**: share of Ω, in %, whose predictions match every target within ε.\n"
-            "- **z**: the half-width of the plausible band in standard deviations (z = 2 covers about 95 %).\n"
-            "- **σ, σ_rel**: measurement uncertainty of a target, absolute or relative; when a response declares "
-            "none, the tolerance is the measurement band (σ = ε·|y*|/z), never added to it.\n"
-            "- **δ**: optional model-discrepancy standard deviation of a response (`discrepancy`).\n"
-            "- **bits / information gain**: Kullback–Leibler divergence from the uniform prior on Ω to the "
-            "posterior, in bits; one bit halves the plausible volume.\n"
-            "- **se**: standard error of the surrogate's mean prediction.")]
+        return [self._md("## Terms\n\n" + "\n".join(f"- <strong id=\"term-{key}\">{name}</strong>: {text}"
+                                                    for key, name, text in GLOSSARY))]
 
     def header(self) -> list:
         text = ["# demid — identifiability report", "",
@@ -373,7 +512,7 @@ class ReportSections:
                 "For every material, quadratic response surfaces are fitted to the designed simulation runs, "
                 "and the *admissible set* — parameter points whose predicted observables all lie within a "
                 "relative tolerance of the measured targets — is compared across observable scenarios "
-                "(feasible fraction Φ of the domain and per-parameter span W).", "",
+                f"(feasible fraction {term('Φ', 'phi')} of the domain and per-parameter span W).", "",
                 f"Materials: {', '.join(self._label(m) for m in self.materials)}."]
         published = self.config.get("published")
         if published and Path(published).is_file():
@@ -399,10 +538,19 @@ class ReportSections:
             text += (f" `printed_agrees` is False on {len(off)} of them: the reproduction lies within the stated "
                      "tolerance but does not round to every digit the paper printed (a table rebuilt from published "
                      "summaries, or transcribed from rounded values, meets a tolerance without matching the last "
-                     "printed digit): " + "; ".join(f"{row.quantity} ({row.material}): printed {row.published:g}, "
+                     "printed digit): " + "; ".join(f"{self._speak(row.quantity, row.material)} "
+                                                    f"({self._label(row.material)}): printed {row.published:g}, "
                                                     f"reproduced {row.reproduced:.6g}" for row in off.itertuples())
                      + ".")
-        return [self._md(text + "\n\n" + markdown_table(table))]
+        shown = table.copy()
+        # a difference at floating-point round-off of the value is no difference (1.4e-14 of 100)
+        noise = shown["abs_diff"].abs() <= 1e-9 * shown["published"].abs().clip(lower=1e-300)
+        shown.loc[noise, ["abs_diff", "rel_diff"]] = 0.0
+        known = shown["material"].isin(self.materials)
+        shown.loc[known, "quantity"] = [self._speak(q, m) for q, m in zip(shown.loc[known, "quantity"],
+                                                                          shown.loc[known, "material"])]
+        shown.loc[known, "material"] = shown.loc[known, "material"].map(self._label)
+        return [self._md(text + "\n\n" + markdown_table(shown))]
 
     def surrogate_fit(self) -> list:
         table = self._csv("surrogate_fit.csv")
@@ -423,6 +571,7 @@ class ReportSections:
             if not path.is_file():
                 continue
             scen = read_parquet(path).drop_duplicates("scenario")
+            from ..precision import percent_text
             from ..tolerance import has_own_tolerance
 
             own = has_own_tolerance(self._specs()[m])
@@ -432,7 +581,7 @@ class ReportSections:
             for _, row in scen[scen["feasible_fraction_pct"] == 0].iterrows():
                 lines.append(f"- **{self._label(m)}**, {scenario_label.get(row['scenario'], row['scenario'])}: no point of the domain meets every target "
                              f"within {100 * row['tolerance']:g} %{' (or its own tolerance)' if own else ''}; the "
-                             f"closest point misses by {100 * row['best_max_rel_error']:.2f} % ({error}).")
+                             f"closest point misses by {percent_text(row['best_max_rel_error'])} ({error}).")
         for m in self.materials:
             sub = table[table["material"] == m]
             scen = list(dict.fromkeys(sub["scenario"]))
@@ -458,10 +607,12 @@ class ReportSections:
                              f"({change}); " + ", ".join(widths))
         return [self._md("\n".join(lines))]
 
-    def transcription(self, checks: dict) -> list:
-        """Per response: does the refit reproduce the statistics the source published?"""
+    def transcription(self, checks: dict, labels: dict | None = None) -> list:
+        """Per response: does the refit reproduce the statistics the source published?  ``labels``: response
+        key -> label."""
         if not checks:
             return []
+        labels = labels or {}
         from .summary import in_order
 
         lines = ["**Transcription check** against the statistics the source published:"]
@@ -470,7 +621,7 @@ class ReportSections:
                               f"{_fmt(res['reproduced'][k])}{'' if res['agrees'][k] else ' ✗'}"
                               for k in res["published"])
             verdict = "agrees" if res["consistent"] else "**disagrees**"
-            lines.append(f"- `{response}` {verdict} ({stats}).")
+            lines.append(f"- {labels.get(response, response)} {verdict} ({stats}).")
             if not res["consistent"]:
                 lines.append(f"  {res['message']}")
                 for s in res["suspects"][:5]:
@@ -491,7 +642,9 @@ class ReportSections:
                  "**Level 1 — surrogate against the simulation runs.** Each quadratic is tested against a fixed "
                  "catalogue of causes (a missing cubic or mixed term, a response transform, an outlying run, "
                  "run-order drift, non-constant variance) with family-wise error control; a finding is kept only "
-                 "with its extension and the measured gain (leave-one-out RMSE, AICc)."]
+                 f"with its extension and the measured gain (leave-one-out RMSE, {term('AICc', 'aicc')}); a "
+                 f"surrogate whose {term('Q²', 'q2')} is below 0 does not predict."]
+        from ..precision import percent_text
         from .summary import VERDICT_WORDS, in_order, labelled, unreliable_surrogate_lines, verdict_sentence
 
         spec = self._specs()[m]
@@ -514,7 +667,11 @@ class ReportSections:
         if findings is not None and "response" in findings.columns and len(findings[findings["material"] == m]):
             cols = [c for c in ["response", "cause", "detail", "p_value", "loo_rmse_baseline", "loo_rmse_extended",
                                 "delta_aicc"] if c in findings.columns]
-            lines += ["", markdown_table(findings[findings["material"] == m][cols])]
+            shown = keys_labelled(findings[findings["material"] == m][cols], spec)
+            shown["cause"] = shown["cause"].astype(str).str.replace(";", ", ").str.replace("_", " ")
+            if "detail" in shown:
+                shown["detail"] = shown["detail"].fillna("").astype(str).map(lambda t: self._speak(t, m))
+            lines += ["", markdown_table(shown)]
         level2 = info.get("level2")
         if level2:
             from ..story import LEVEL2_KINDS, StudyAdvice
@@ -523,16 +680,19 @@ class ReportSections:
             lines += ["", "**Level 2 — calibrated simulation against the experiment.** "
                       + " ".join([labelled(level2.get("finding") or level2["message"], spec), *advice])]
         for pos in info.get("reference_point") or []:
-            errs = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in in_order(pos["errors"]))
+            errs = ", ".join(f"{spec.response_labels.get(o, o)} {'+' if e > 0 else ''}{percent_text(e)}"
+                             for o, e in in_order(pos["errors"]))
             if pos["inside"]:
                 where = "lies inside the admissible set"
             elif pos["nearest_admissible"] is None:
                 where = "cannot lie in it: the admissible set is empty"
             else:
-                near = ", ".join(f"{f}={v:.4g}" for f, v in in_order(pos["nearest_admissible"]))
+                near = ", ".join(f"{spec.factor(f).label} = {v:.4g}" for f, v in in_order(pos["nearest_admissible"],
+                                                                                         spec.factor_names))
                 where = (f"lies outside it, {pos['distance_pct_of_range']:.1f} % of the search range from the "
                          f"nearest admissible point ({near})")
-            lines.append(f"- Reference point vs scenario *{pos['scenario']}*: it {where} (errors {errs}).")
+            scenario = self._speak(pos["scenario"], m)
+            lines.append(f"- Reference point vs scenario *{scenario}*: it {where} (errors {errs}).")
         parts = [self._md("\n".join(lines))]
         parts.append(self._image(self.root / "figures" / f"residuals_{m}.png",
                                  f"Residuals of each response surface of {self._label(m)} against fitted value, run order and normal quantiles"))
@@ -591,7 +751,7 @@ class ReportSections:
         parts.append(self._image(self.root / "figures" / f"posterior_{m}.png",
                                  f"Marginal posterior densities of the factors of {self._label(m)}, one curve per observable set"))
         if info.get("notes"):
-            parts.append(self._md("\n".join(f"- {n}" for n in info["notes"])))
+            parts.append(self._md("\n".join(f"- {self._speak(n, m)}" for n in info["notes"])))
         return parts
 
     def next_wave(self, m: str) -> list:
@@ -607,7 +767,15 @@ class ReportSections:
         reason = json.loads(reasons.read_text(encoding="utf-8")).get(m, "")
         advice = " ".join(StudyAdvice.from_frame(self._csv("advice.csv")).texts(m, NEXT_WAVE_KINDS))
         sub = runs[runs["material"] == m].dropna(axis=1, how="all")
-        return [self._md("### What to simulate next\n\n" + reason + (" " + advice if advice else "")
+        spec = self._specs()[m]
+        sub = keys_labelled(sub, spec)
+        from ..precision import coordinate_text
+
+        for f in spec.factors:
+            if f.name in sub:
+                sub[f.name] = [coordinate_text(float(v), f.lower, f.upper) for v in sub[f.name]]
+        sub = sub.rename(columns={f.name: f.label for f in spec.factors})
+        return [self._md("### What to simulate next\n\n" + self._speak(reason, m) + (" " + advice if advice else "")
                          + " Once simulated, they are studied in the next domain (tables/next_domain.csv) with the "
                          "earlier runs inside it (`design: {type: custom}`).\n\n"
                          + markdown_table(sub.drop(columns="material")))]
@@ -627,13 +795,15 @@ class ReportSections:
         coding = None
         fit_json = self.root / "fits" / f"{m}.json"
         canonical = json.loads(fit_json.read_text(encoding="utf-8")) if fit_json.is_file() else {}
-        lines = ["### Response-surface models", ""]
+        lines = ["### Response-surface models", "", f"A {term('ridge', 'ridge')} in a canonical analysis is a "
+                 "direction along which the response hardly changes.", ""]
         # the stored fits, as the fit step wrote them: the report does not fit again
         for fit in stored_fits(read_parquet(fits), read_parquet(anova), read_parquet(table), spec):
             coding = fit.coding
             label = spec.response_labels.get(fit.response, fit.response)
             coef = coefficient_table(fit)
             coef.insert(1, "symbol", [_symbol_of(t, letters) for t in coef["term"]])
+            coef["term"] = [t if t == "Intercept" else _symbol_of(t, spec.factor_labels) for t in coef["term"]]
             actual = fit.coefficients()["coefficient_actual"].to_numpy()
             where = canonical_text(canonical.get(fit.response, {}).get("canonical"), fit, spec, letters, label)
             anova = block_anova(fit)
@@ -646,7 +816,7 @@ class ReportSections:
                       "", where, "", "ANOVA (block sums of squares are partial: the increase of the residual sum of "
                       "squares when the block is dropped from the full quadratic):", "",
                       markdown_table(anova), "", "Coefficients in coded units:", "",
-                      markdown_table(coef), ""]
+                      markdown_table(coefficients_shown(coef)), ""]
             if getattr(fit, "blocked", False):
                 lines += ["The runs were made in blocks (the table's `block` column): the fit carries a block term, "
                           "and the equations, sets and scenarios use the block-averaged surface (the response at the "
@@ -671,7 +841,7 @@ class ReportSections:
             if info["warnings"]:
                 text += "\n\n" + "\n".join(f"- ⚠ {w}" for w in info["warnings"])
             parts.append(self._md(text))
-            parts += self.transcription(info.get("transcription") or {})
+            parts += self.transcription(info.get("transcription") or {}, self._specs()[m].response_labels)
         star = "; ★ = reference point" if cfg.get("reference_point") else ""
         projected = ("; with more than two factors each panel is the set's projection onto a pair of factors "
                      "(a point is coloured when some value of the other factors is admissible)"
@@ -686,7 +856,9 @@ class ReportSections:
                                  f"Fitted response surfaces of {self._label(m)} with design runs and target contours"))
         if cfg.get("pareto"):
             par = cfg["pareto"]
-            text = f"**Pareto trade-off**: relative error of {par['error_of']} vs predicted {par['minimise']}."
+            said = self._specs()[m].response_labels
+            text = (f"**Pareto trade-off**: relative error of {said.get(par['error_of'], par['error_of'])} vs "
+                    f"predicted {said.get(par['minimise'], par['minimise'])}.")
             crit_path = self.root / "criticism" / f"{m}.json"
             if crit_path.is_file():
                 import json
@@ -696,7 +868,8 @@ class ReportSections:
                 bad = [r for r in dict.fromkeys((par["error_of"], par["minimise"]))
                        if r in unpredictive_responses(json.loads(crit_path.read_text(encoding="utf-8")))]
                 if bad:
-                    text += (f" ⚠ It relies on the surrogate of {', '.join(bad)}, which does not predict left-out "
+                    text += (f" ⚠ It relies on the surrogate of {', '.join(said.get(r, r) for r in bad)}, which "
+                             "does not predict left-out "
                              f"runs (Q² < 0): treat the front as indicative only.")
             parts.append(self._md(text))
             parts.append(self._image(self.root / "figures" / f"pareto_{m}.png",
@@ -705,7 +878,7 @@ class ReportSections:
             if pareto is not None:
                 iv = pareto[pareto["kind"] == "interval"][["factor", "lower", "upper", "n_points"]]
                 parts.append(self._md(f"Intervals over Pareto points with error < {100 * par['max_error']:g} %:\n\n"
-                                      + markdown_table(iv)))
+                                      + markdown_table(keys_labelled(iv, self._specs()[m]))))
         parts += self.criticism(m)
         parts += self.uncertainty(m)
         parts += self.next_wave(m)
@@ -714,5 +887,5 @@ class ReportSections:
         if diag.is_file():
             parts.append(self._md("**Residual diagnostics** (Breusch–Pagan, RESET, Shapiro–Wilk p-values; "
                                   "largest VIF, Cook's distance, |studentised residual|)\n\n"
-                                  + markdown_table(read_parquet(diag), 3)))
+                                  + markdown_table(keys_labelled(read_parquet(diag), self._specs()[m]), 3)))
         return parts

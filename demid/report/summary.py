@@ -212,12 +212,13 @@ def criticism_lines(info: dict, spec) -> list[str]:
     level2 = info.get("level2")
     if level2:
         from ..criticism.messages import level2_miss_text
+        from ..precision import percent_text
 
         tol = 100 * level2["tolerance"]
         own = level2_own_tolerances(level2)
         uniform = own is None
         within = level2_within(level2, spec)
-        best = f"{100 * level2['best_max_error']:.2f} %"
+        best = percent_text(level2["best_max_error"])
         own_miss = labelled(level2_miss_text(level2["best_errors"], level2["tolerance"], own), spec) if not uniform else ""
         if level2["feasible"]:
             lines.append(f"Simulation vs experiment: every target can be met within {within} "
@@ -230,7 +231,7 @@ def criticism_lines(info: dict, spec) -> list[str]:
         if level2.get("reference_max_error") is not None:
             inside = level2.get("reference_within")
             inside = level2["reference_max_error"] <= level2["tolerance"] if inside is None else inside
-            lines.append(f"Reference point: largest error {100 * level2['reference_max_error']:.2f} % "
+            lines.append(f"Reference point: largest error {percent_text(level2['reference_max_error'])} "
                          f"({'within' if inside else 'outside'} "
                          + (f"the {tol:g} % tolerance)." if uniform else
                             level2_within(level2, spec, brackets=False) + ")."))
@@ -254,3 +255,57 @@ def combination_lines(combinations: dict, spec) -> list[str]:
             line += f" Curve ({along.label} → {across.label} mid [lowest, highest]): {pairs}."
         lines.append(line)
     return lines
+
+
+def point_on_edge_text(spec, point: dict, runs, verdicts: dict, widened: set) -> str:
+    """What a reader must know of a recommended point that sits on a search bound or outside the region the
+    design runs cover (their convex hull): per factor on a bound, whether the advice widens that bound, and
+    that outside the runs the surrogate extrapolates.  Empty for a point inside the runs, off every bound.
+
+    ``runs``: the design runs (rows, factor columns in the spec's order, actual units) or None; ``verdicts``:
+    factor -> its verdict in the point's scenario; ``widened``: the (factor, side) pairs the advice widens."""
+    from ..criticism.edges import in_hull
+
+    domain = spec.domain
+    sides = domain.at_bound([point[f] for f in spec.factor_names], [point[f] for f in spec.factor_names])
+    groups: dict[tuple, list[str]] = {}  # factors that get the same words, named together
+    for f, side in zip(spec.factors, sides):
+        for s in SIDES_OF[side]:
+            if s in sides_at_limit((f.lower, f.upper), f.limits):
+                groups.setdefault(("limit", s, ""), []).append(f.label)
+            else:
+                kind = "widened" if (f.name, s) in widened else "kept"
+                why = verdicts.get(f.name, "") if kind == "kept" else ""
+                groups.setdefault((kind, s, why if why in ("unresolved", "bounded", "identified") else ""),
+                                  []).append(f.label)
+    clauses = []
+    for (kind, s, why), labels in groups.items():
+        many = len(labels) > 1
+        names = ", ".join(labels[:-1]) + " and " + labels[-1] if many else labels[0]
+        if kind == "limit":
+            clauses.append(f"{names} {'are' if many else 'is'} at {'their' if many else 'its'} physical {s} "
+                           f"limit{'s' if many else ''}, beyond which no value lies")
+        elif kind == "widened":
+            clauses.append(f"{names} {'lie' if many else 'lies'} on {'their' if many else 'its'} {s} search "
+                           f"bound{'s' if many else ''}, which the advice below widens: the plausible set may "
+                           "continue beyond it, and the recommended value with it")
+        else:
+            clauses.append(f"{names} {'lie' if many else 'lies'} on {'their' if many else 'its'} {s} search "
+                           f"bound{'s' if many else ''}; no widening is advised there"
+                           + (f" (the plausible interval{'s are' if many else ' is'} {why}: a wider range would "
+                              f"not narrow {'them' if many else 'it'})" if why else ""))
+    outside = False
+    if runs is not None and len(runs):
+        lo, hi = domain.search_bounds()
+        span = np.where(hi > lo, hi - lo, 1.0)
+        z = (domain.to_search(np.asarray(runs, dtype=float)) - lo) / span
+        u = (domain.to_search(np.array([[point[f] for f in spec.factor_names]], dtype=float))[0] - lo) / span
+        outside = not in_hull(z, u, 1e-3)
+    if not clauses and not outside:
+        return ""
+    text = "⚠ " + "; ".join(clauses) + ("." if clauses else "")
+    if outside:
+        text += (" " if clauses else "") + (
+            "The point lies outside the region the design runs cover (their convex hull): its predictions are the "
+            "quadratic's extrapolation, backed by no simulation, so simulate it before relying on it.")
+    return text

@@ -6,18 +6,24 @@ best point sits on a bound the surrogate says widening cannot help: :mod:`demid.
 ``add_observable`` (the measurement that narrows most, or that a new kind is needed), ``widen`` (a bound
 that cuts the plausible set, or the best point when no point meets every target, and only where moving it
 can narrow or reach something), ``next_runs`` and ``stop`` (what the next wave can still buy).
+
+One item per material is the **next step** (``decision``): the first by :data:`PRIORITY`; the others follow it
+as "also".  The generic add-observable line (no observable to name) stands only where nothing else is advised.
 """
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 
 import numpy as np
 import pandas as pd
 
 from ..criticism.reach import Reach, saturation_advice
 
-ADVICE_COLUMNS = ["material", "kind", "factor", "bound", "observable", "text"]
+ADVICE_COLUMNS = ["material", "kind", "factor", "bound", "observable", "text", "decision"]
+#: Which advice comes first: a target to check before anything is calibrated against it, a model to refit before
+#: its sets are trusted, a range to widen before runs are placed in it, then runs, then measurements, then stop.
+PRIORITY = ("check_target", "recalibrate", "widen", "next_runs", "add_observable", "stop")
 #: Where each kind is read in the report besides the summary.
 LEVEL2_KINDS = ("check_target", "recalibrate", "widen")
 NEXT_WAVE_KINDS = ("next_runs", "stop")
@@ -31,6 +37,7 @@ class AdviceItem:
     bound: str
     observable: str
     text: str
+    decision: bool = False
 
 
 @dataclass
@@ -47,10 +54,18 @@ class StudyAdvice:
         if frame is None or not len(frame):
             return cls([])
         clean = frame.fillna("").astype(str)
-        return cls([AdviceItem(*(row[c] for c in ADVICE_COLUMNS)) for _, row in clean.iterrows()])
+        text_columns = [c for c in ADVICE_COLUMNS if c != "decision"]
+        return cls([AdviceItem(*(row[c] for c in text_columns), decision=row.get("decision", "").lower() == "true")
+                    for _, row in clean.iterrows()])
 
     def texts(self, material: str, kinds=None) -> list[str]:
         return [i.text for i in self.items if i.material == material and (kinds is None or i.kind in kinds)]
+
+    def next_step(self, material: str) -> tuple[str | None, list[str]]:
+        """The material's next step and the other advice ("also"), in priority order."""
+        own = [i for i in self.items if i.material == material]
+        decision = next((i.text for i in own if i.decision), None)
+        return decision, [i.text for i in own if not i.decision]
 
 
 def _label(spec, name: str) -> str:
@@ -145,9 +160,20 @@ def _add_observable(spec, ranking, uninformative: dict, level2: dict) -> list[Ad
                 f"Measure {', '.join(_label(spec, o) for o in added)} as well: it adds "
                 f"{best['gain_vs_best_subset_bits']:.2f} bits of information and leaves "
                 f"{best['feasible_fraction_pct']:.3g} % of the domain admissible."))]
-    return [AdviceItem(spec.name, "add_observable", "", "", "", (
-        "Every informative observable with a target is already used; a narrower set needs a new kind of "
-        "measurement or a tighter measurement (a smaller σ or tolerance)."))]
+    return [AdviceItem(spec.name, "add_observable", "", "", "", GENERIC_ADD_OBSERVABLE)]
+
+
+#: The add-observable advice when no observable can be named: said only where nothing else is advised.
+GENERIC_ADD_OBSERVABLE = ("Every informative observable with a target is already used; a narrower set needs a new "
+                          "kind of measurement or a tighter measurement (a smaller σ or tolerance).")
+
+
+def decided(items: list[AdviceItem]) -> list[AdviceItem]:
+    """One material's advice in :data:`PRIORITY` order (stable within a kind), the first marked as the next
+    step; the generic add-observable line is dropped unless it is all there is (then it is the next step)."""
+    specific = [i for i in items if i.text != GENERIC_ADD_OBSERVABLE]
+    ordered = sorted(specific or items, key=lambda i: PRIORITY.index(i.kind))
+    return [replace(i, decision=k == 0) for k, i in enumerate(ordered)]
 
 
 def _widen(spec, verdicts: pd.DataFrame, level2: dict, implausible: dict) -> list[AdviceItem]:
@@ -214,7 +240,7 @@ def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | Non
                     criticism: dict | None = None, implausible: dict | None = None,
                     uninformative: dict | None = None, wave_value: dict | None = None,
                     ridge_advice: list[str] = ()) -> list[AdviceItem]:
-    """Every piece of advice of one material, in the summary's order.
+    """Every piece of advice of one material, the next step first (:func:`decided`).
 
     ``verdicts``: its rows of :func:`~demid.story.verdicts.verdict_frame`; ``criticism``: its
     ``criticism/{m}.json``; ``implausible``: :func:`~demid.data.implausible_targets` of its table;
@@ -227,7 +253,7 @@ def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | Non
     checks = _check_targets(spec, implausible, ranking)
     add = _add_observable(spec, ranking, uninformative, level2)
     best = next((i.observable for i in add if i.observable), "")
-    return (checks + _recalibrate(spec, criticism.get("level1") or {}, level2, {i.observable for i in checks})
-            + add + [AdviceItem(spec.name, "add_observable", "", "", "", text) for text in ridge_advice]
-            + _widen(spec, verdicts, level2, implausible)
-            + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o)))
+    return decided(checks + _recalibrate(spec, criticism.get("level1") or {}, level2, {i.observable for i in checks})
+                   + add + [AdviceItem(spec.name, "add_observable", "", "", "", text) for text in ridge_advice]
+                   + _widen(spec, verdicts, level2, implausible)
+                   + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o)))
