@@ -1,8 +1,6 @@
 """The command line: contracts of `fit` and `validate`, and one-line errors with exit status 2."""
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest

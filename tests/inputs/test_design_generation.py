@@ -1,7 +1,5 @@
 """Run sheets: textbook coded designs, randomised order, reproducibility, and validation by the pipeline."""
 
-import subprocess
-import sys
 from itertools import product
 
 import numpy as np
