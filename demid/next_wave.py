@@ -45,6 +45,7 @@ from .spec import MaterialSpec, join_observables
 
 if TYPE_CHECKING:
     from .sampling import Domain
+    from .scenario import JudgedScenario
 
 DOMAIN_COLUMNS = ["material", "factor", "lower", "upper"]
 PURPOSE_DESIGN = ("design: D-optimal quadratic run on the band near the plausible set in the refocused box (where "
@@ -311,26 +312,13 @@ def propose_runs(box_lower: np.ndarray, box_upper: np.ndarray, earlier: np.ndarr
     return center + points * half, list(kinds) + labels + ["support"] * len(fill)
 
 
-def plausible_points(surrogates: dict, spec: MaterialSpec, scenario: str, z: float,
-                     lo: np.ndarray, hi: np.ndarray, n: int = 41) -> np.ndarray:
-    """Points of an n^k grid of the box (search units) in the plausible set of the scenario."""
-    from .sampling import plausibility_fields
-    from .tolerance import scenario_bands, scenario_surrogates
-
-    sc = next(s for s in spec.scenarios if s.name == scenario)
-    targets, domain = spec.targets, spec.domain
-    observables = list(sc.observables)
-    fields = plausibility_fields(scenario_surrogates(surrogates, spec, sc.tolerance), observables, targets,
-                                 sc.tolerance, z, scenario_bands(spec, observables, sc.tolerance))
+def plausible_points(judged: JudgedScenario, lo: np.ndarray, hi: np.ndarray, n: int = 41) -> np.ndarray:
+    """Points of an n^k grid of the box (search units) in the judged scenario's plausible set."""
     k = len(lo)
     n = n if k <= 2 else max(5, int(round(4096 ** (1 / k))))
     axes = [np.linspace(a, b, n) for a, b in zip(lo, hi)]
     grid_u = np.column_stack([g.ravel() for g in np.meshgrid(*axes, indexing="ij")])
-    x = domain.to_actual(grid_u)
-    ok = np.ones(len(grid_u), dtype=bool)
-    for o in observables:
-        ok &= np.abs(fields[o].predict(x) - targets[o]) <= sc.tolerance * abs(targets[o]) * (1 + 1e-12)
-    return grid_u[ok]
+    return grid_u[judged.contains(judged.spec.domain.to_actual(grid_u))]
 
 
 def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: MaterialSpec,
@@ -356,7 +344,11 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     earlier_u = domain.to_search(table[factors].to_numpy(dtype=float))
     inside = np.all((earlier_u >= lo - 1e-12 * (hi - lo)) & (earlier_u <= hi + 1e-12 * (hi - lo)), axis=1)
     alias_sets = aliased_findings(findings, factors)
-    cands = plausible_points(surrogates, spec, scenario, BAND_Z_FACTOR * z, lo, hi)
+    from .scenario import JudgedScenario
+
+    refocus = next(sc for sc in spec.scenarios if sc.name == scenario)
+    judged = JudgedScenario(spec, refocus, surrogates, z)
+    cands = plausible_points(JudgedScenario(spec, refocus, surrogates, BAND_Z_FACTOR * z), lo, hi)
     points_u, labels = propose_runs(lo, hi, earlier_u[inside], request.count, alias_sets, cands)
     points = domain.to_actual(points_u)
     cand_u = np.asarray(cands, dtype=float).reshape(-1, len(factors))
@@ -409,20 +401,19 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
                + (f", {n_sep} to separate aliased terms the criticism found" if n_sep else "") + ".")
     from .wave_value import expected_contraction
 
-    refocus = next(sc for sc in spec.scenarios if sc.name == scenario)
     # What the wave can still buy is judged on the same number of runs all aimed at the plausible set (at
     # robust_z, no support runs): the support runs and the wider band make the box's own refit
     # trustworthy, which the current surrogate's standard error cannot credit, so counting them would
     # advise stopping only because part of the runs is not aimed at the set.
     if z > 0 and (n_support or BAND_Z_FACTOR != 1) and len(cand_u):
-        aimed = plausible_points(surrogates, spec, scenario, z, lo, hi)
+        aimed = plausible_points(judged, lo, hi)
         band_u = propose_runs(lo, hi, earlier_u[inside], request.count, alias_sets, aimed, share=0.0)[0]
-        judged = domain.to_actual(band_u)
+        wave_runs = domain.to_actual(band_u)
         if deciding:
-            judged = np.vstack([points[:len(deciding)], judged])
+            wave_runs = np.vstack([points[:len(deciding)], wave_runs])
     else:
-        judged = points
-    value = expected_contraction(surrogates, spec, refocus, z, judged) if z > 0 else None
+        wave_runs = points
+    value = expected_contraction(judged, wave_runs) if z > 0 else None
     return NextWave(dom_frame, runs, reason, value)
 
 

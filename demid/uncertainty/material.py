@@ -14,15 +14,15 @@ import pandas as pd
 from ..plots.labels import axis_label, tex_label
 from ..plots.uncertainty import posterior_figure, tolerance_sweep_figure
 from ..sampling import uses_grid
-from ..sampling.evaluate import evaluate_set, uses_exact
+from ..sampling.evaluate import uses_exact
 from ..spec import FALLBACK_TOLERANCE
 from .posterior import INFORMATION_GAIN_COLUMNS, information_gain_frame, subset_posteriors
 from .ranking import RANKING_COLUMNS, next_measurement_advice, rank_observable_sets
 from ..sampling.residuals import PLAUSIBLE_DEFINITION
 from .recommended import recommended_point, uninformative_observables
 from .robust import ROBUST_COLUMNS, robust_identifiability_frame
-from .sigma import measurement_sigmas
-from ..tolerance import band_scale, has_own_tolerance, plausible_basis, scenario_bands, scenario_surrogates
+from ..scenario import JudgedScenario, judged_scenarios, plausible_basis, reference_scenario
+from ..tolerance import has_own_tolerance
 from .sweep import DEFAULT_SWEEP_TOLERANCES, SWEEP_COLUMNS, tolerance_sweep
 
 if TYPE_CHECKING:
@@ -82,15 +82,18 @@ class MaterialUncertainty:
 
 def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z: float = 2.0,
                      tolerances=DEFAULT_SWEEP_TOLERANCES, sizes: dict[str, int] | None = None,
-                     strict_sets: dict[str, AdmissibleSet] | None = None, seed: int = 0) -> MaterialUncertainty:
+                     strict_sets: dict[str, AdmissibleSet] | None = None, seed: int = 0,
+                     judged: dict[str, JudgedScenario] | None = None) -> MaterialUncertainty:
     """Robust sets, tolerance sweep, posteriors, ranking and advice for one configured material.
 
     ``spec`` is the material's :class:`~demid.spec.MaterialSpec` (factors, responses with ``target`` and
     optional ``sigma``/``sigma_rel``, scenarios).  Robust sets use the
-    configured measurement sigma only (0 when absent); posteriors and the ranking use it
-    or, when absent, ``sigma_rel`` = reference tolerance / 2, where the reference
-    tolerance is that of the scenario with the most observables.  ``notes`` states the
-    grid sizes and sigma bases used, for the report.
+    configured measurement sigma or, when absent, the tolerance band read as a z-sigma measurement band;
+    posteriors and the ranking use the same σ at the reference tolerance (the tolerance of the scenario
+    with the most observables), an observable's own ``tolerance``/``tolerance_abs`` included
+    (:attr:`~demid.scenario.JudgedScenario.likelihood_sd`).  ``notes`` states the
+    grid sizes and sigma bases used, for the report.  ``judged``: the scenarios already judged at ``z``
+    (:func:`~demid.scenario.judged_scenarios`).
     """
     domain = spec.domain
     targets = {r: t for r, t in spec.targets.items() if r in surrogates}
@@ -98,29 +101,28 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
     sizes = {**recommended_sizes(domain.dim), **(sizes or {})}
     tolerance = spec.reference_tolerance
     observables = list(targets)
-    # the posterior's likelihood width is the plausible set's measurement band: configured, or tolerance / z
-    post_sigma, post_basis = measurement_sigmas(spec.sigma_config, observables, targets, tolerance, z)
+    # each scenario judged once (its own-tolerance surrogates, bands, sets); the posteriors and the ranking
+    # judge every observable at the reference tolerance, their likelihood width the plausible set's σ
+    judged = judged_scenarios(spec, surrogates, z) if judged is None else judged
+    reference = JudgedScenario(spec, reference_scenario(spec, observables), surrogates, z)
+    at_reference, post_sigma, post_basis = reference.surrogates, reference.likelihood_sd, reference.sigma_basis
     labels = {r: spec.response_labels[r] for r in observables}
     factor_labels = {f.name: axis_label(f) for f in spec.factors}  # mathtext with unit, for the figures
-    # an observable with its own tolerance is judged by it: rescaled residual surrogates (demid.tolerance)
-    at_reference = scenario_surrogates(surrogates, spec, tolerance)
-    post_sigma = {o: v * band_scale(spec.response(o), targets[o], tolerance) for o, v in post_sigma.items()}
 
     if strict_sets is None:
         # each scenario's strict set, evaluated once and shared by robust table, sweep and ranking
-        strict_sets = {sc.name: evaluate_set(scenario_surrogates(surrogates, spec, sc.tolerance), domain,
-                                             sc.observables, targets, sc.tolerance, sizes["robust"])
+        strict_sets = {sc.name: judged[sc.name].strict_set(sizes["robust"])
                        for sc in spec.scenarios if uses_exact(surrogates, sc.observables, domain)}
     by_observables = {frozenset(sc.observables): strict_sets[sc.name] for sc in spec.scenarios
                       if sc.tolerance == tolerance and sc.name in strict_sets}
     robust = sweep = None
     if scenarios:
         robust = pd.concat([robust_identifiability_frame(
-            scenario_surrogates(surrogates, spec, sc.tolerance), domain, {sc.name: scenarios[sc.name]}, targets,
-            sizes["robust"], z=z, sigma=scenario_bands(spec, sc.observables, sc.tolerance), strict_sets=strict_sets,
+            judged[sc.name].surrogates, domain, {sc.name: scenarios[sc.name]}, targets,
+            sizes["robust"], z=z, sigma=judged[sc.name].bands, strict_sets=strict_sets,
             sobol_points=sizes["robust"], seed=seed) for sc in spec.scenarios], ignore_index=True)
         groups = ([spec.scenarios] if not has_own_tolerance(spec) else [(sc,) for sc in spec.scenarios])
-        sweep = pd.concat([tolerance_sweep(scenario_surrogates(surrogates, spec, group[0].tolerance), domain,
+        sweep = pd.concat([tolerance_sweep(judged[group[0].name].surrogates, domain,
                                            {sc.name: scenarios[sc.name] for sc in group}, targets, tolerances,
                                            sizes["sweep"], sobol_points=sizes["sweep"], seed=seed,
                                            strict_sets=strict_sets) for group in groups], ignore_index=True)
@@ -160,7 +162,7 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
         notes.append(f"No scenarios configured: ranking and default sigma use tolerance {FALLBACK_TOLERANCE:g}.")
     empty_robust = pd.DataFrame(columns=ROBUST_COLUMNS)
     widest = max(spec.scenarios, key=lambda sc: len(sc.observables)) if spec.scenarios else None
-    recommended = (recommended_point(surrogates, spec, widest, z, n=sizes["robust"])
+    recommended = (recommended_point(judged[widest.name], n=sizes["robust"])
                    if widest is not None and all(o in surrogates for o in widest.observables) else None)
     uninformative = uninformative_observables(ranking)
     if uninformative:
