@@ -17,7 +17,6 @@ import pandas as pd
 from .sampling import (MAX_GRID_DIM, AdmissibleSet, CellCount, Domain, admissible_set,
                        cell_count, evaluate_set, plane_band_fraction, predict_grid, relative_residuals,
                        sobol_admissible_set)
-from .tolerance import scenario_grid
 
 if TYPE_CHECKING:
     from .scenario import JudgedScenario
@@ -44,8 +43,7 @@ def evaluate_scenarios(surrogates: dict[str, Surrogate], spec: MaterialSpec, n: 
     frames, sets = [], {}
     for scen in spec.scenarios:
         # an observable with its own tolerance is judged by it (demid.scenario)
-        result = judged[scen.name].strict_set(n, scenario_grid(grid_predictions, spec, scen.tolerance),
-                                              grid=True, reference=spec.reference_point or None)
+        result = judged[scen.name].strict_set(n, grid_predictions, grid=True, reference=spec.reference_point or None)
         frame = result.to_frame()
         frame.insert(0, "scenario", scen.name)
         frames.append(frame)

@@ -26,7 +26,7 @@ import numpy as np
 from .sampling.evaluate import evaluate_set
 from .sampling.residuals import MeasurementBand, plausibility_fields
 from .spec import Scenario
-from .tolerance import observable_band, scenario_scales, scenario_surrogates
+from .tolerance import observable_band, scenario_grid, scenario_scales, scenario_surrogates
 
 if TYPE_CHECKING:
     from .sampling.grid import AdmissibleSet
@@ -208,11 +208,11 @@ class JudgedScenario:
 
     def strict_set(self, n: int, predictions=None, **options) -> AdmissibleSet:
         """The strict set: |ŷ - y*| within each observable's band, by
-        :func:`~demid.sampling.evaluate.evaluate_set` (``predictions``: the evaluation grid's predictions in
-        the units of :attr:`surrogates`, as :func:`~demid.tolerance.scenario_grid` gives them; ``options``:
+        :func:`~demid.sampling.evaluate.evaluate_set` (``predictions``: the fitted surrogates' values at the
+        evaluation points when the caller has them, rescaled here as :attr:`surrogates` are; ``options``:
         ``grid``, ``reference``)."""
         return evaluate_set(self.surrogates, self.spec.domain, self.observables, self.targets, self.tolerance, n,
-                            predictions, **options)
+                            scenario_grid(predictions, self.spec, self.tolerance), **options)
 
     def plausible_set(self, n: int, **options) -> AdmissibleSet:
         """The plausible set, by the same evaluator on the plausibility fields."""
