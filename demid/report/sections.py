@@ -251,7 +251,9 @@ class ReportSections:
         ``story``): the same rows level 2 and the next-wave section show."""
         from ..sampling.residuals import PLAUSIBLE_DEFINITION
         from ..story import StudyAdvice, verdict_display
-        from .summary import VERDICT_TEXT, combination_lines, criticism_lines, in_order
+        from ..story.verdicts import VERDICT_TEXT
+        from ..story.words import in_order
+        from .summary import combination_lines, criticism_lines
 
         parts = [self._md("## Summary\n\nPer factor and observable scenario the **plausible interval** is judged; "
                           "the strict interval (the set if surrogate and measurements were exact: section "
@@ -299,7 +301,7 @@ class ReportSections:
         import numpy as np
 
         from ..uncertainty.recommended import digits_for
-        from .summary import unit_text
+        from ..story.words import unit_text
 
         if not recommended:
             return []
@@ -462,7 +464,7 @@ class ReportSections:
         """Per response: does the refit reproduce the statistics the source published?"""
         if not checks:
             return []
-        from .summary import in_order
+        from ..story.words import in_order
 
         lines = ["**Transcription check** against the statistics the source published:"]
         for response, res in in_order(checks):
@@ -492,7 +494,8 @@ class ReportSections:
                  "catalogue of causes (a missing cubic or mixed term, a response transform, an outlying run, "
                  "run-order drift, non-constant variance) with family-wise error control; a finding is kept only "
                  "with its extension and the measured gain (leave-one-out RMSE, AICc)."]
-        from .summary import VERDICT_WORDS, in_order, labelled, unreliable_surrogate_lines, verdict_sentence
+        from ..story.words import in_order, labelled
+        from .summary import VERDICT_WORDS, unreliable_surrogate_lines, verdict_sentence
 
         spec = self._specs()[m]
         for response, res in in_order(info["level1"], spec.response_names):

@@ -10,7 +10,7 @@ import statsmodels.formula.api as smf
 from demid.io import round_significant, write_csv
 from demid.plots.labels import tex_label, tex_unit
 from demid.report.rsm import block_anova, coefficient_table, stationary_point
-from demid.report.summary import factor_verdict
+from demid.story.verdicts import factor_verdict
 from demid.surrogate import fit_response
 
 from ..helpers import make_ccd_table
