@@ -9,16 +9,11 @@ again: one set per scenario, one number, whichever table shows it.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import numpy as np
 import pandas as pd
 
 from .evaluate import EXACT_METHOD, exact_set_on_domain, uses_exact
 from .grid import AdmissibleSet
-
-if TYPE_CHECKING:
-    from ..scenario import JudgedScenario
 
 STATE_COLUMNS = ["method", "exact_fraction", "exact_fraction_error", "unit_lower", "unit_upper",
                  "reference_distance", "nearest_unit"]
@@ -45,7 +40,7 @@ def set_state_frame(sets: dict[str, AdmissibleSet]) -> pd.DataFrame:
     return pd.concat(frames, ignore_index=True)[STATE_COLUMNS]
 
 
-def stored_strict_sets(frame: pd.DataFrame, judged: dict[str, JudgedScenario], *,
+def stored_strict_sets(frame: pd.DataFrame, judged: dict, *,
                        reference: bool = False) -> dict[str, AdmissibleSet]:
     """The exact strict sets of the judged scenarios (name -> :class:`~demid.scenario.JudgedScenario`, in
     the spec's order) from the scenarios table (others are left out: their consumers evaluate them on
