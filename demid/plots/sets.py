@@ -102,11 +102,9 @@ def _zoom_mask(judged, box, pixels: int = ZOOM_PIXELS) -> np.ndarray:
 @styled
 def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, judged: dict | None = None
                 ) -> plt.Figure:
-    """Overlay of every scenario's admissible set (pairwise projections for d > 2).
-
-    With ``judged`` (scenario name -> :class:`~demid.scenario.JudgedScenario`), the zoom panel of a thin
-    2-factor set is redrawn from its surrogates on a fine grid over the zoomed box instead of enlarging
-    the evaluation grid's cells."""
+    """Overlay of every scenario's admissible set (pairwise projections for d > 2).  With ``judged`` (name ->
+    :class:`~demid.scenario.JudgedScenario`), a thin 2-factor set's zoom panel is redrawn from its surrogates
+    on a fine grid over the zoomed box, not from the evaluation grid's enlarged cells."""
     domain, reference_point, title = spec.domain, spec.reference_point, spec.label
     scenario_labels = {sc.name: sc.label for sc in spec.scenarios}
     d = domain.dim

@@ -97,7 +97,6 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
     """
     domain = spec.domain
     targets = {r: t for r, t in spec.targets.items() if r in surrogates}
-    scenarios = {sc.name: (sc.observables, sc.tolerance) for sc in spec.scenarios}
     sizes = {**recommended_sizes(domain.dim), **(sizes or {})}
     tolerance = spec.reference_tolerance
     observables = list(targets)
@@ -115,17 +114,7 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
                        for sc in spec.scenarios if uses_exact(surrogates, sc.observables, domain)}
     by_observables = {frozenset(sc.observables): strict_sets[sc.name] for sc in spec.scenarios
                       if sc.tolerance == tolerance and sc.name in strict_sets}
-    robust = sweep = None
-    if scenarios:
-        robust = pd.concat([robust_identifiability_frame(
-            judged[sc.name].surrogates, domain, {sc.name: scenarios[sc.name]}, targets,
-            sizes["robust"], z=z, sigma=judged[sc.name].bands, strict_sets=strict_sets,
-            sobol_points=sizes["robust"], seed=seed) for sc in spec.scenarios], ignore_index=True)
-        groups = ([spec.scenarios] if not has_own_tolerance(spec) else [(sc,) for sc in spec.scenarios])
-        sweep = pd.concat([tolerance_sweep(judged[group[0].name].surrogates, domain,
-                                           {sc.name: scenarios[sc.name] for sc in group}, targets, tolerances,
-                                           sizes["sweep"], sobol_points=sizes["sweep"], seed=seed,
-                                           strict_sets=strict_sets) for group in groups], ignore_index=True)
+    robust, sweep = _plausible_tables(spec, judged, targets, sizes, z, tolerances, strict_sets, seed)
     points = sizes.get("posterior_points", 2 ** 16)
     posteriors = subset_posteriors(at_reference, domain, observables, targets, post_sigma, sizes["posterior"],
                                    sigma_basis=post_basis, sobol_points=points, seed=seed) if observables else {}
@@ -140,14 +129,54 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
     # one number: a set with a target out of reach has no information gain, in every table
     information_gain.loc[information_gain["observables"].isin(unreachable),
                          ["information_gain_bits", "information_gain_error_bits"]] = float("nan")
-    grid_word = "grid points per axis" if uses_grid(domain.dim) else "scrambled Sobol points"
+    widest = max(spec.scenarios, key=lambda sc: len(sc.observables)) if spec.scenarios else None
+    recommended = (recommended_point(judged[widest.name], n=sizes["robust"])
+                   if widest is not None and all(o in surrogates for o in widest.observables) else None)
+    uninformative = uninformative_observables(ranking)
+    notes = _notes(spec, reference, sizes, strict_sets, unreachable, uninformative)
+    return MaterialUncertainty(
+        recommended=recommended, uninformative=uninformative, robust=robust, sweep=sweep,
+        information_gain=information_gain,
+        ranking=ranking, advice=next_measurement_advice(ranking, labels) if len(ranking) else "",
+        posteriors=posteriors, notes=notes, factor_labels=factor_labels, unreachable=unreachable,
+        scenario_labels={sc.name: sc.label for sc in spec.scenarios if sc.label != sc.name},
+        observable_labels={r.name: tex_label(r.label) for r in spec.responses})
+
+
+def _plausible_tables(spec: MaterialSpec, judged: dict, targets: dict, sizes: dict, z: float, tolerances,
+                      strict_sets: dict, seed: int) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """The robust-identifiability table and the tolerance sweep of every judged scenario (empty tables
+    without scenarios)."""
+    if not spec.scenarios:
+        return pd.DataFrame(columns=ROBUST_COLUMNS), pd.DataFrame(columns=SWEEP_COLUMNS)
+    domain = spec.domain
+    scenarios = {sc.name: (sc.observables, sc.tolerance) for sc in spec.scenarios}
+    robust = pd.concat([robust_identifiability_frame(
+        judged[sc.name].surrogates, domain, {sc.name: scenarios[sc.name]}, targets,
+        sizes["robust"], z=z, sigma=judged[sc.name].bands, strict_sets=strict_sets,
+        sobol_points=sizes["robust"], seed=seed) for sc in spec.scenarios], ignore_index=True)
+    # one sweep for all scenarios, unless an own tolerance makes each scenario's surrogates its own
+    groups = ([spec.scenarios] if not has_own_tolerance(spec) else [(sc,) for sc in spec.scenarios])
+    sweep = pd.concat([tolerance_sweep(judged[group[0].name].surrogates, domain,
+                                       {sc.name: scenarios[sc.name] for sc in group}, targets, tolerances,
+                                       sizes["sweep"], sobol_points=sizes["sweep"], seed=seed,
+                                       strict_sets=strict_sets) for group in groups], ignore_index=True)
+    return robust, sweep
+
+
+def _notes(spec: MaterialSpec, reference: JudgedScenario, sizes: dict, strict_sets: dict, unreachable: tuple,
+           uninformative: dict) -> list[str]:
+    """The grid sizes and σ bases the analysis used, and what it left out, in words for the report."""
+    observables, dim, points = reference.observables, spec.domain.dim, sizes.get("posterior_points", 2 ** 16)
+    grid_word = "grid points per axis" if uses_grid(dim) else "scrambled Sobol points"
     notes = [
-        f"Plausible sets: z = {z:g}; " + "; ".join(f"{o}: {plausible_basis(spec, o)}" for o in observables) + ".",
-        f"Posteriors and ranking at tolerance {tolerance:g}: "
-        + "; ".join(f"{o}: {post_basis[o]}" for o in observables) + ".",
+        f"Plausible sets: z = {reference.z:g}; " + "; ".join(f"{o}: {plausible_basis(spec, o)}" for o in observables)
+        + ".",
+        f"Posteriors and ranking at tolerance {reference.tolerance:g}: "
+        + "; ".join(f"{o}: {reference.sigma_basis[o]}" for o in observables) + ".",
         f"Robust sets on {sizes['robust']} {grid_word}, sweeps on {sizes['sweep']}, "
         + (f"posteriors on {points} scrambled Sobol points ({sizes['posterior']} histogram bins)."
-           if not uses_grid(domain.dim) else f"posteriors on {sizes['posterior']} grid points per axis."),
+           if not uses_grid(dim) else f"posteriors on {sizes['posterior']} grid points per axis."),
     ]
     if strict_sets and all(a.exact is not None for a in strict_sets.values()):
         notes.append("Strict sets (identifiability table, the strict columns, the sweep and the ranking): "
@@ -158,22 +187,9 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
                      "meets their targets within the tolerance (one alone, or all together), so their posterior "
                      "measures the misfit (a discrepancy between simulation and experiment), not information; no "
                      "information gain is given and they rank last.")
-    if not scenarios:
+    if not spec.scenarios:
         notes.append(f"No scenarios configured: ranking and default sigma use tolerance {FALLBACK_TOLERANCE:g}.")
-    empty_robust = pd.DataFrame(columns=ROBUST_COLUMNS)
-    widest = max(spec.scenarios, key=lambda sc: len(sc.observables)) if spec.scenarios else None
-    recommended = (recommended_point(judged[widest.name], n=sizes["robust"])
-                   if widest is not None and all(o in surrogates for o in widest.observables) else None)
-    uninformative = uninformative_observables(ranking)
     if uninformative:
         notes.append("Uninformative observables: " + "; ".join(f"{o}: {why}" for o, why in uninformative.items())
                      + ".")
-    return MaterialUncertainty(
-        recommended=recommended, uninformative=uninformative,
-        robust=robust if robust is not None else empty_robust,
-        sweep=sweep if sweep is not None else pd.DataFrame(columns=SWEEP_COLUMNS),
-        information_gain=information_gain,
-        ranking=ranking, advice=next_measurement_advice(ranking, labels) if len(ranking) else "",
-        posteriors=posteriors, notes=notes, factor_labels=factor_labels, unreachable=unreachable,
-        scenario_labels={sc.name: sc.label for sc in spec.scenarios if sc.label != sc.name},
-        observable_labels={r.name: tex_label(r.label) for r in spec.responses})
+    return notes
