@@ -11,6 +11,9 @@ only lays the numbers out.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
+import numpy as np
 import pandas as pd
 
 from ..surrogate import TERM_BLOCKS
@@ -35,6 +38,32 @@ def coefficient_table(coefficients: pd.DataFrame) -> pd.DataFrame:
                          "estimate": coefficients["coefficient_coded"].to_numpy(),
                          "std_error": coefficients["std_err_coded"].to_numpy(),
                          "t": coefficients["t_value"].to_numpy(), "p_value": coefficients["p_value"].to_numpy()})
+
+
+@dataclass(frozen=True)
+class StoredSurface:
+    """One response's fitted quadratic as the fit step stored it, laid out for printing."""
+
+    response: str
+    coefficients: pd.DataFrame  # coefficient_table: coded units
+    actual: np.ndarray          # the coefficients in actual units, in the same order
+    anova: pd.DataFrame         # anova_table
+    blocked: bool               # the fit carries a block term (demid.blocks)
+
+
+def stored_surfaces(fits: pd.DataFrame, anova: pd.DataFrame, table: pd.DataFrame, spec) -> list[StoredSurface]:
+    """Every fitted response of ``spec``, in its order, from ``fits/{material}.parquet``, its ANOVA table and
+    the validated runs: nothing is fitted again."""
+    from ..blocks import block_labels
+
+    out = []
+    for response in [r for r in spec.response_names if (fits["response"] == r).any()]:
+        stored = fits[fits["response"] == response].reset_index(drop=True)
+        fitted_runs = table.loc[np.isfinite(table[response].to_numpy(dtype=float))]
+        out.append(StoredSurface(response, coefficient_table(stored), stored["coefficient_actual"].to_numpy(),
+                                 anova_table(anova[anova["response"] == response]),
+                                 block_labels(fitted_runs) is not None))
+    return out
 
 
 def _symbol(name: str, symbols: dict[str, str]) -> str:

@@ -619,11 +619,8 @@ class ReportSections:
         """Per response: equation (coded, actual), block ANOVA, coefficients, canonical analysis."""
         import json
 
-        import numpy as np
-
-        from ..blocks import block_labels
         from ..surrogate import coding_from_frame
-        from .rsm import anova_table, canonical_text, coefficient_table, equation
+        from .rsm import canonical_text, equation, stored_surfaces
 
         table = self.root / "validated" / f"{m}.parquet"
         fits, anova = self.root / "fits" / f"{m}.parquet", self.root / "fits" / f"{m}_anova.parquet"
@@ -634,31 +631,27 @@ class ReportSections:
         fit_json = self.root / "fits" / f"{m}.json"
         canonical = json.loads(fit_json.read_text(encoding="utf-8")) if fit_json.is_file() else {}
         lines = ["### Response-surface models", ""]
-        # the fits as the fit step stored them, its statistics included: the report does not fit again
-        fits, anova, table = read_parquet(fits), read_parquet(anova), read_parquet(table)
+        fits = read_parquet(fits)
         coding = coding_from_frame(fits, spec.factor_names) if len(fits) else None
-        for response in [r for r in spec.response_names if (fits["response"] == r).any()]:
-            stored = fits[fits["response"] == response].reset_index(drop=True)
-            label = spec.response_labels.get(response, response)
-            coef = coefficient_table(stored)
+        # the fits and their statistics as the fit step stored them: the report does not fit again
+        for surface in stored_surfaces(fits, read_parquet(anova), read_parquet(table), spec):
+            label = spec.response_labels.get(surface.response, surface.response)
+            coef = surface.coefficients.copy()  # the symbol column is for this table only
             coef.insert(1, "symbol", [_symbol_of(t, letters) for t in coef["term"]])
-            actual = stored["coefficient_actual"].to_numpy()
-            entry = canonical.get(response, {}).get("canonical")
+            entry = canonical.get(surface.response, {}).get("canonical")
             where = canonical_text(entry, spec.factor_names, spec, letters, label) if entry is not None else ""
-            fitted_runs = table.loc[np.isfinite(table[response].to_numpy(dtype=float))]
             term_names = coef["term"].tolist()
             lines += [f"#### {label}", "",
                       "Coded units (" + ", ".join(f"{letters[f]} = {spec.factor(f).label}"
                                                    for f in spec.factor_names) + ", coded as below):", "",
                       f"`{equation(term_names, coef['estimate'].to_numpy(), letters, label)}`", "",
                       "Actual units" + (" (log10 of log-scaled factors)" if spec.log_factors else "") + ":", "",
-                      f"`{equation(term_names, actual, {f: spec.factor(f).label for f in spec.factor_names}, label)}`",
+                      f"`{equation(term_names, surface.actual, {f: spec.factor(f).label for f in spec.factor_names}, label)}`",
                       "", where, "", "ANOVA (block sums of squares are partial: the increase of the residual sum of "
                       "squares when the block is dropped from the full quadratic):", "",
-                      markdown_table(anova_table(anova[anova["response"] == response])), "",
-                      "Coefficients in coded units:", "",
+                      markdown_table(surface.anova), "", "Coefficients in coded units:", "",
                       markdown_table(coef), ""]
-            if block_labels(fitted_runs) is not None:  # the fit's block term (demid.blocks)
+            if surface.blocked:
                 lines += ["The runs were made in blocks (the table's `block` column): the fit carries a block term, "
                           "and the equations, sets and scenarios use the block-averaged surface (the response at the "
                           "mean block effect).", ""]

@@ -263,7 +263,7 @@ def test_report_reads_a_blocked_fit_as_the_fit_made_it():
     """The report prints the ANOVA the fit step stored: a Blocks row first, then the partial sums of squares of
     the term groups with the blocks kept, the partial sum of squares of the linear terms equal to statsmodels'
     nested comparison with the blocks in both models."""
-    from demid.report.rsm import anova_table
+    from demid.report.rsm import stored_surfaces
     from demid.spec import MaterialSpec
     from demid.surrogate import fit_frames, fit_material
 
@@ -275,8 +275,10 @@ def test_report_reads_a_blocked_fit_as_the_fit_made_it():
                 "responses": {"y": {}}, "scenarios": {}}
     spec = MaterialSpec.from_material("m", material)
     refits = fit_material(table, spec)
-    mine = anova_table(fit_frames(refits)["anova"])
-    assert mine["source"].iloc[0] == "Blocks"
+    frames = fit_frames(refits)
+    surface = stored_surfaces(frames["fits"], frames["anova"], table, spec)[0]
+    mine = surface.anova
+    assert surface.blocked and mine["source"].iloc[0] == "Blocks"
     x = refits[0].results.model.exog
     linear = [1, 2]  # mu_r, gamma
     reduced = OLS(refits[0].y, np.delete(x, linear, axis=1)).fit()

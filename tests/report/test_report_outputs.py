@@ -234,6 +234,7 @@ def test_stored_fit_prints_what_a_refit_prints(log_factor):
     instead of fitting again: block ANOVA, coefficients and actual-unit coefficients are the same numbers,
     bit for bit, as from the statsmodels fit itself (a failed run of y2 included)."""
     from demid.io import as_stored
+    from demid.report.rsm import stored_surfaces
     from demid.spec import MaterialSpec
     from demid.surrogate import coding_from_frame, fit_frames, fit_material
 
@@ -251,15 +252,14 @@ def test_stored_fit_prints_what_a_refit_prints(log_factor):
     table = as_stored(table)
     refits = fit_material(table, spec)
     frames = {name: as_stored(frame) for name, frame in fit_frames(refits).items()}
-    fits, anova = frames["fits"], frames["anova"]
-    assert list(dict.fromkeys(fits["response"])) == ["y1", "y2"]
-    for refit in refits:
-        stored = fits[fits["response"] == refit.response].reset_index(drop=True)
-        pd.testing.assert_frame_equal(anova_table(anova[anova["response"] == refit.response]),
-                                      anova_table(refit.anova_frame()), check_exact=True)
-        pd.testing.assert_frame_equal(coefficient_table(stored), coefficient_table(refit.coefficients()),
+    surfaces = stored_surfaces(frames["fits"], frames["anova"], table, spec)
+    assert [s.response for s in surfaces] == ["y1", "y2"]
+    for refit, surface in zip(refits, surfaces):
+        pd.testing.assert_frame_equal(surface.anova, anova_table(refit.anova_frame()), check_exact=True)
+        pd.testing.assert_frame_equal(surface.coefficients, coefficient_table(refit.coefficients()),
                                       check_exact=True)
-        assert np.array_equal(stored["coefficient_actual"], refit.coefficients()["coefficient_actual"])
-        assert coding_from_frame(fits, spec.factor_names) == refit.coding
+        assert np.array_equal(surface.actual, refit.coefficients()["coefficient_actual"])
+        assert not surface.blocked
+        assert coding_from_frame(frames["fits"], spec.factor_names) == refit.coding
 
 
