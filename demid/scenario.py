@@ -26,7 +26,7 @@ import numpy as np
 from .sampling.evaluate import evaluate_set
 from .sampling.residuals import MeasurementBand, plausibility_fields
 from .spec import Scenario
-from .tolerance import observable_band, scenario_grid, scenario_scales, scenario_surrogates
+from .tolerance import has_own_band, observable_band, scenario_grid, scenario_scales, scenario_surrogates
 
 if TYPE_CHECKING:
     from .sampling.grid import AdmissibleSet
@@ -85,11 +85,6 @@ def own_band_basis(response, target: float, tolerance: float, z: float) -> str:
     if getattr(response, "tolerance", None) is not None:
         return f"default sigma_rel = {float(response.tolerance) / float(z):g} (own tolerance/{z:g})"
     return sigma_basis(None, float(tolerance) / float(z), z)
-
-
-def has_own_tolerance_key(response) -> bool:
-    """The response declares its own ``tolerance`` or ``tolerance_abs``."""
-    return getattr(response, "tolerance", None) is not None or getattr(response, "tolerance_abs", None) is not None
 
 
 # =========================================================================== bands and their words
@@ -191,7 +186,7 @@ class JudgedScenario:
         for o in self.observables:
             response, target = self.spec.response(o), self.targets[o]
             own_rel = (observable_band(response, target, self.tolerance) / abs(float(target))
-                       if has_own_tolerance_key(response) and target else self.tolerance)
+                       if has_own_band(response) and target else self.tolerance)
             out[o] = measurement_sigma(response.sigma_config, target, own_rel / self.z) * scales.get(o, 1.0)
         return out
 

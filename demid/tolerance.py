@@ -63,8 +63,13 @@ def same_tolerances(tolerance: float, tolerances) -> bool:
     return all(abs(float(v) - tolerance) <= 1e-12 * tolerance for v in (tolerances or {}).values())
 
 
+def has_own_band(response) -> bool:
+    """The response declares its own ``tolerance`` or ``tolerance_abs``."""
+    return getattr(response, "tolerance", None) is not None or getattr(response, "tolerance_abs", None) is not None
+
+
 def has_own_tolerance(spec) -> bool:
-    return any(r.tolerance is not None or r.tolerance_abs is not None for r in spec.responses)
+    return any(has_own_band(r) for r in spec.responses)
 
 
 def scenario_scales(spec, tolerance: float) -> dict[str, float]:
