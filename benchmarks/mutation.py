@@ -413,9 +413,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/wave_value.py::_evaluation_points::True => False#0":
         "the unscrambled Sobol sequence is an equally stratified low-discrepancy sample of the same size: "
         "the fraction is estimated as well",
-    "demid/wave_value.py::expected_contraction::miss <= field.half_width(points, se=_updated_se(field.surrogate, "
-    "points, new_runs)) => miss < field.half_width(points, se=_updated_se(field.surrogate, points, new_runs))#0":
-        "differs only for a node whose miss equals its half-width to the last bit",
     # --- verdicts
     "demid/story/verdicts.py::verdict_frame::float(strict['upper'].iloc[0]) => strict['upper'].iloc[0]#0":
         _NUMPY_FLOAT + " (the bounds of identifiability.csv are a float column: NaN marks an empty set)",
