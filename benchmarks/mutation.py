@@ -333,9 +333,13 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/uncertainty/test_uncertainty.py", "-ksweep"],
     },
-    "demid/uncertainty/sigma.py": {
+    "demid/scenario.py": {
         "functions": None,
-        "tests": ["tests/uncertainty/test_uncertainty.py", "-ksigma"],
+        "tests": ["tests/test_scenario.py", "tests/test_tolerance.py",
+                  "tests/uncertainty/test_own_tolerance_posteriors.py",
+                  "tests/uncertainty/test_uncertainty.py::test_measurement_sigma_sources",
+                  "tests/uncertainty/test_uncertainty.py::"
+                  "test_measurement_sigma_of_a_negative_target_and_a_response_without_config"],
     },
     "demid/io.py": {
         "functions": None,
@@ -409,9 +413,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/wave_value.py::_evaluation_points::True => False#0":
         "the unscrambled Sobol sequence is an equally stratified low-discrepancy sample of the same size: "
         "the fraction is estimated as well",
-    "demid/wave_value.py::expected_contraction::miss <= field.half_width(points, se=_updated_se(field.surrogate, "
-    "points, new_runs)) => miss < field.half_width(points, se=_updated_se(field.surrogate, points, new_runs))#0":
-        "differs only for a node whose miss equals its half-width to the last bit",
     # --- verdicts
     "demid/story/verdicts.py::verdict_frame::float(strict['upper'].iloc[0]) => strict['upper'].iloc[0]#0":
         _NUMPY_FLOAT + " (the bounds of identifiability.csv are a float column: NaN marks an empty set)",
@@ -446,7 +447,7 @@ EQUIVALENT: dict[str, str] = {
         "target is a number: its product with a float is the same float",
     "demid/tolerance.py::rescaled_surrogate::float(surrogate.resid_var) => surrogate.resid_var#0":
         "resid_var is a float already (a Surrogate field)",
-    "demid/tolerance.py::scenario_bands::float(response.discrepancy or 0.0) => response.discrepancy or 0.0#0":
+    "demid/scenario.py::scenario_bands::float(response.discrepancy or 0.0) => response.discrepancy or 0.0#0":
         "the schema reads discrepancy as a number: c * delta and delta == 0.0 are the same for an int",
     "demid/formulas.py::f_tail::0 => -1#1": "scipy's fdtrc returns NaN for a degree of freedom <= 0 as well",
     "demid/formulas.py::f_tail::0 => -1#2": "scipy's fdtrc returns NaN for a degree of freedom <= 0 as well",
@@ -591,9 +592,9 @@ EQUIVALENT: dict[str, str] = {
         "the same numbers",
     "demid/criticism/edges.py::extrapolation_warnings::z_hi[i] < 1 - tol => z_hi[i] <= 1 - tol#0":
         "differs only when the runs end exactly 1e-3 of the range short of the bound, to the last bit",
-    "demid/uncertainty/sigma.py::measurement_sigma::float(default_rel) => default_rel#0":
+    "demid/scenario.py::measurement_sigma::float(default_rel) => default_rel#0":
         "default_rel * abs(float(target)) is the same float for an int or a float default_rel",
-    "demid/uncertainty/sigma.py::measurement_sigmas::float(z) => z#0":
+    "demid/scenario.py::measurement_sigmas::float(z) => z#0":
         "float(tolerance) / z is the same float for an int or a float z, and :g prints 2 and 2.0 alike",
     "demid/uncertainty/sweep.py::tolerance_sweep::z == 0 and uses_grid(domain.dim) => "
     "z == 0 or uses_grid(domain.dim)#0":

@@ -17,9 +17,9 @@ import pandas as pd
 from .sampling import (MAX_GRID_DIM, AdmissibleSet, CellCount, Domain, admissible_set,
                        cell_count, evaluate_set, plane_band_fraction, predict_grid, relative_residuals,
                        sobol_admissible_set)
-from .tolerance import scenario_grid, scenario_surrogates
 
 if TYPE_CHECKING:
+    from .scenario import JudgedScenario
     from .spec import MaterialSpec
     from .surrogate import Surrogate
 
@@ -28,19 +28,22 @@ __all__ = ["MAX_GRID_DIM", "AdmissibleSet", "CellCount", "Domain", "admissible_s
 
 
 def evaluate_scenarios(surrogates: dict[str, Surrogate], spec: MaterialSpec, n: int | None = None,
-                       grid_predictions: pd.DataFrame | None = None) -> tuple[pd.DataFrame, dict[str, AdmissibleSet]]:
+                       grid_predictions: pd.DataFrame | None = None,
+                       judged: dict[str, JudgedScenario] | None = None) -> tuple[pd.DataFrame, dict[str, AdmissibleSet]]:
     """Every configured scenario of a material: long table (one row per scenario x factor) and the sets.
 
-    ``spec`` is the material's :class:`~demid.spec.MaterialSpec`; ``n`` defaults to its evaluation size.
+    ``spec`` is the material's :class:`~demid.spec.MaterialSpec`; ``n`` defaults to its evaluation size;
+    ``judged``: the scenarios judged once by the caller (name -> :class:`~demid.scenario.JudgedScenario`).
     """
+    from .scenario import judged_scenarios
+
     n = spec.grid_points if n is None else n
-    domain, targets = spec.domain, spec.targets
+    # strict sets only: the plausible set's z does not enter
+    judged = judged_scenarios(spec, surrogates, 0.0) if judged is None else judged
     frames, sets = [], {}
     for scen in spec.scenarios:
-        # an observable with its own tolerance is judged by it (demid.tolerance)
-        result = evaluate_set(scenario_surrogates(surrogates, spec, scen.tolerance), domain, scen.observables, targets,
-                              scen.tolerance, n, scenario_grid(grid_predictions, spec, scen.tolerance),
-                              grid=True, reference=spec.reference_point or None)
+        # an observable with its own tolerance is judged by it (demid.scenario)
+        result = judged[scen.name].strict_set(n, grid_predictions, grid=True, reference=spec.reference_point or None)
         frame = result.to_frame()
         frame.insert(0, "scenario", scen.name)
         frames.append(frame)

@@ -155,7 +155,7 @@ def canonical_analysis(b0: float, b: np.ndarray, big_b: np.ndarray, *, region_lo
 
 
 def fit_canonical(fit, threshold: float | None = None) -> Canonical:
-    """Canonical analysis of a :class:`~demid.surrogate.SurrogateFit` (or a report ``StoredFit``):
+    """Canonical analysis of a :class:`~demid.surrogate.SurrogateFit`:
     its coded coefficients, its runs' coded bounding box as the region, actual units through its
     coding (10** for log-scaled factors)."""
     k = len(fit.factors)

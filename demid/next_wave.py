@@ -45,6 +45,7 @@ from .spec import MaterialSpec, join_observables
 
 if TYPE_CHECKING:
     from .sampling import Domain
+    from .scenario import JudgedScenario
 
 DOMAIN_COLUMNS = ["material", "factor", "lower", "upper"]
 PURPOSE_DESIGN = ("design: D-optimal quadratic run on the band near the plausible set in the refocused box (where "
@@ -311,26 +312,50 @@ def propose_runs(box_lower: np.ndarray, box_upper: np.ndarray, earlier: np.ndarr
     return center + points * half, list(kinds) + labels + ["support"] * len(fill)
 
 
-def plausible_points(surrogates: dict, spec: MaterialSpec, scenario: str, z: float,
-                     lo: np.ndarray, hi: np.ndarray, n: int = 41) -> np.ndarray:
-    """Points of an n^k grid of the box (search units) in the plausible set of the scenario."""
-    from .sampling import plausibility_fields
-    from .tolerance import scenario_bands, scenario_surrogates
-
-    sc = next(s for s in spec.scenarios if s.name == scenario)
-    targets, domain = spec.targets, spec.domain
-    observables = list(sc.observables)
-    fields = plausibility_fields(scenario_surrogates(surrogates, spec, sc.tolerance), observables, targets,
-                                 sc.tolerance, z, scenario_bands(spec, observables, sc.tolerance))
+def plausible_points(judged: JudgedScenario, lo: np.ndarray, hi: np.ndarray, n: int = 41) -> np.ndarray:
+    """Points of an n^k grid of the box (search units) in the judged scenario's plausible set."""
     k = len(lo)
     n = n if k <= 2 else max(5, int(round(4096 ** (1 / k))))
     axes = [np.linspace(a, b, n) for a, b in zip(lo, hi)]
     grid_u = np.column_stack([g.ravel() for g in np.meshgrid(*axes, indexing="ij")])
-    x = domain.to_actual(grid_u)
-    ok = np.ones(len(grid_u), dtype=bool)
-    for o in observables:
-        ok &= np.abs(fields[o].predict(x) - targets[o]) <= sc.tolerance * abs(targets[o]) * (1 + 1e-12)
-    return grid_u[ok]
+    return grid_u[judged.contains(judged.spec.domain.to_actual(grid_u))]
+
+
+def _box_reason(spec: MaterialSpec, refocus, lo, hi, lower_actual, upper_actual, empty: bool) -> str:
+    """How the next box was found, in words: refocused (the factors it narrows), or the range kept."""
+    scenario, observables = refocus.name, join_observables(refocus.observables)
+    cur_lo, cur_hi = spec.domain.search_bounds()
+    narrowed = [f"{f} {a:.4g}–{b:.4g}" for f, a, b, u0, u1, v0, v1 in
+                zip(spec.factor_names, lower_actual, upper_actual, lo, hi, cur_lo, cur_hi)
+                if u0 > v0 + 1e-12 * (v1 - v0) or u1 < v1 - 1e-12 * (v1 - v0)]
+    if empty:
+        return f"Scenario '{scenario}' ({observables}) has no plausible point, so the current range is kept"
+    if narrowed:
+        return (f"Refocused on the plausible set of scenario '{scenario}' ({observables}) with a margin of "
+                f"{spec.next_runs.margin:g} of the range: " + ", ".join(narrowed))
+    return (f"The plausible set of scenario '{scenario}' ({observables}) reaches (within the margin) every "
+            f"edge of the current range, so the range is kept")
+
+
+def _wave_value(judged: JudgedScenario, lo: np.ndarray, hi: np.ndarray, points: np.ndarray, n_deciding: int,
+                earlier_inside: np.ndarray, alias_sets, aim: bool) -> dict:
+    """What the wave can still buy (:func:`~demid.wave_value.expected_contraction`).
+
+    With ``aim`` it is judged on the same number of runs all aimed at the plausible set (at robust_z, no
+    support runs): the support runs and the wider band make the box's own refit trustworthy, which the
+    current surrogate's standard error cannot credit, so counting them would advise stopping only because
+    part of the runs is not aimed at the set."""
+    from .wave_value import expected_contraction
+
+    if not aim:
+        return expected_contraction(judged, points)
+    domain = judged.spec.domain
+    aimed = plausible_points(judged, lo, hi)
+    band_u = propose_runs(lo, hi, earlier_inside, judged.spec.next_runs.count, alias_sets, aimed, share=0.0)[0]
+    wave_runs = domain.to_actual(band_u)
+    if n_deciding:
+        wave_runs = np.vstack([points[:n_deciding], wave_runs])
+    return expected_contraction(judged, wave_runs)
 
 
 def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: MaterialSpec,
@@ -356,7 +381,11 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     earlier_u = domain.to_search(table[factors].to_numpy(dtype=float))
     inside = np.all((earlier_u >= lo - 1e-12 * (hi - lo)) & (earlier_u <= hi + 1e-12 * (hi - lo)), axis=1)
     alias_sets = aliased_findings(findings, factors)
-    cands = plausible_points(surrogates, spec, scenario, BAND_Z_FACTOR * z, lo, hi)
+    from .scenario import JudgedScenario
+
+    refocus = next(sc for sc in spec.scenarios if sc.name == scenario)
+    judged = JudgedScenario(spec, refocus, surrogates, z)  # the plausible set; its band at twice z below
+    cands = plausible_points(JudgedScenario(spec, refocus, surrogates, BAND_Z_FACTOR * z), lo, hi)
     points_u, labels = propose_runs(lo, hi, earlier_u[inside], request.count, alias_sets, cands)
     points = domain.to_actual(points_u)
     cand_u = np.asarray(cands, dtype=float).reshape(-1, len(factors))
@@ -379,19 +408,7 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     for r, sur in surrogates.items():
         runs[f"predicted_{r}"] = sur.predict(points)
 
-    observables = join_observables(next(sc for sc in spec.scenarios if sc.name == scenario).observables)
-    cur_lo, cur_hi = domain.search_bounds()
-    narrowed = [f"{f} {a:.4g}–{b:.4g}" for f, a, b, u0, u1, v0, v1 in
-                zip(factors, lower_actual, upper_actual, lo, hi, cur_lo, cur_hi)
-                if u0 > v0 + 1e-12 * (v1 - v0) or u1 < v1 - 1e-12 * (v1 - v0)]
-    if empty:
-        reason = f"Scenario '{scenario}' ({observables}) has no plausible point, so the current range is kept"
-    elif narrowed:
-        reason = (f"Refocused on the plausible set of scenario '{scenario}' ({observables}) with a margin of "
-                  f"{request.margin:g} of the range: " + ", ".join(narrowed))
-    else:
-        reason = (f"The plausible set of scenario '{scenario}' ({observables}) reaches (within the margin) every "
-                  f"edge of the current range, so the range is kept")
+    reason = _box_reason(spec, refocus, lo, hi, lower_actual, upper_actual, empty)
     n_sep = sum(not isinstance(lab, str) for lab in labels)
     n_box = labels.count("box")
     n_support = labels.count("support")
@@ -407,22 +424,9 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
                + (f", {n_box} off the band where its {len(cand_u)} grid point(s) cannot determine "
                   f"the quadratic" if n_box else "")
                + (f", {n_sep} to separate aliased terms the criticism found" if n_sep else "") + ".")
-    from .wave_value import expected_contraction
-
-    refocus = next(sc for sc in spec.scenarios if sc.name == scenario)
-    # What the wave can still buy is judged on the same number of runs all aimed at the plausible set (at
-    # robust_z, no support runs): the support runs and the wider band make the box's own refit
-    # trustworthy, which the current surrogate's standard error cannot credit, so counting them would
-    # advise stopping only because part of the runs is not aimed at the set.
-    if z > 0 and (n_support or BAND_Z_FACTOR != 1) and len(cand_u):
-        aimed = plausible_points(surrogates, spec, scenario, z, lo, hi)
-        band_u = propose_runs(lo, hi, earlier_u[inside], request.count, alias_sets, aimed, share=0.0)[0]
-        judged = domain.to_actual(band_u)
-        if deciding:
-            judged = np.vstack([points[:len(deciding)], judged])
-    else:
-        judged = points
-    value = expected_contraction(surrogates, spec, refocus, z, judged) if z > 0 else None
+    aim = bool(z > 0 and (n_support or BAND_Z_FACTOR != 1) and len(cand_u))
+    value = (_wave_value(judged, lo, hi, points, len(deciding), earlier_u[inside], alias_sets, aim)
+             if z > 0 else None)
     return NextWave(dom_frame, runs, reason, value)
 
 

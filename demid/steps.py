@@ -78,12 +78,17 @@ class MaterialSets:
     sets: dict | None = None  # the strict sets with their node masks (the combinations read them)
 
 
-def admissibility_step(surrogates: dict, spec: MaterialSpec, table: pd.DataFrame) -> MaterialSets:
+def admissibility_step(surrogates: dict, spec: MaterialSpec, table: pd.DataFrame,
+                       judged: dict | None = None) -> MaterialSets:
     """Every scenario's strict set on the evaluation grid, its overlay figure and the response surfaces
-    (and, for a material that declares ``pareto``, its front from the same grid predictions)."""
+    (and, for a material that declares ``pareto``, its front from the same grid predictions).
+    ``judged``: the scenarios judged once (:func:`~demid.scenario.judged_scenarios`)."""
     from .admissibility import evaluate_scenarios, predict_grid
     from .plots import sets_figure, surface_figure_from_surrogates
     from .sampling.stored import set_state_frame
+    from .scenario import judged_scenarios
+
+    judged = judged_scenarios(spec, surrogates, 0.0) if judged is None else judged  # strict sets: z unused
 
     n = spec.grid_points
     used = {o for scen in spec.scenarios for o in scen.observables}
@@ -91,12 +96,12 @@ def admissibility_step(surrogates: dict, spec: MaterialSpec, table: pd.DataFrame
         used |= {spec.pareto.error_of, spec.pareto.minimise}
     # the responses in the order of the surrogates, whichever subset is predicted: one column each
     grid = predict_grid({r: s for r, s in surrogates.items() if r in used}, spec.domain, n)
-    frame, sets = evaluate_scenarios(surrogates, spec, n, grid)
+    frame, sets = evaluate_scenarios(surrogates, spec, n, grid, judged)
     pareto = pareto_step(surrogates, spec, grid) if spec.pareto else None
     del grid  # the figures need only the node masks; free the dense predictions first
     frame.insert(0, "material", spec.name)
     frame = pd.concat([frame, set_state_frame(sets)], axis=1)
-    figure = sets_figure(spec, sets, n, surrogates)
+    figure = sets_figure(spec, sets, n, judged)
     return MaterialSets(frame, figure, surface_figure_from_surrogates(surrogates, spec, table), pareto, sets)
 
 
@@ -140,15 +145,17 @@ class MaterialCombinationsStep:
 
 
 def combinations_step(surrogates: dict, spec: MaterialSpec, coding: Coding, fitted: list, strict_sets: dict, *,
-                      z: float, ranking: pd.DataFrame | None = None) -> MaterialCombinationsStep:
+                      z: float, ranking: pd.DataFrame | None = None,
+                      judged: dict | None = None) -> MaterialCombinationsStep:
     """Every scenario's identified combinations (strict set: the admissibility step's node masks;
-    plausible set: the robust set on the robust table's grid) and the canonical analysis of every fit."""
+    plausible set: the robust set on the robust table's grid) and the canonical analysis of every fit.
+    ``judged``: the scenarios judged once at ``z`` (:func:`~demid.scenario.judged_scenarios`)."""
     from .canonical import fit_canonical
     from .combinations import material_combinations, plausible_sets
     from .plots import combinations_figure
     from .uncertainty import recommended_sizes
 
-    plausible = plausible_sets(surrogates, spec, z=z, n=recommended_sizes(spec.dim)["robust"])
+    plausible = plausible_sets(surrogates, spec, z=z, n=recommended_sizes(spec.dim)["robust"], judged=judged)
     result = material_combinations(surrogates, spec, coding, strict_sets, plausible, ranking)
     fit_summary = {fit.response: {"canonical": fit_canonical(fit).to_json()} for fit in fitted}
     return MaterialCombinationsStep(result.to_frame(), result.to_json(), fit_summary,
@@ -187,6 +194,7 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
     from .criticism import criticize_material
     from .io import as_stored
     from .sampling.stored import stored_strict_sets
+    from .scenario import judged_scenarios
     from .surrogate import fit_frames, fit_material, surrogates_from_frame
     from .uncertainty import analyse_material
 
@@ -195,16 +203,17 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
     fitted = fit_material(table, spec, coding=validated.coding)
     fits = fit_frames(fitted)
     surrogates = surrogates_from_frame(as_stored(fits["fits"]), spec.factor_names)
-    sets = admissibility_step(surrogates, spec, table)
+    judged = judged_scenarios(spec, surrogates, z)  # each scenario judged once, asked by every step below
+    sets = admissibility_step(surrogates, spec, table, judged)
     scenarios = as_stored(sets.scenarios)
-    uncertainty = analyse_material(surrogates, spec, z=z, tolerances=tolerances,
-                                   strict_sets=stored_strict_sets(scenarios, surrogates, spec))
+    uncertainty = analyse_material(surrogates, spec, z=z, tolerances=tolerances, judged=judged,
+                                   strict_sets=stored_strict_sets(scenarios, judged))
     criticism = criticize_material(table, surrogates, spec, coding=validated.coding,
                                    fits={fit.response: fit for fit in fitted},
-                                   strict_sets=stored_strict_sets(scenarios, surrogates, spec, reference=True),
+                                   strict_sets=stored_strict_sets(scenarios, judged, reference=True),
                                    run_candidates=_next_box_points(spec, uncertainty.robust))
     combos = combinations_step(surrogates, spec, validated.coding, fitted, sets.sets or {}, z=z,
-                               ranking=uncertainty.ranking)
+                               ranking=uncertainty.ranking, judged=judged)
     figures = {"sets_figure": sets.figure, "surface_figure": sets.surface,
                "combinations_figure": combos.figure,
                "sweep_figure": uncertainty.sweep_figure(spec.label),

@@ -8,6 +8,9 @@ carried by the surrogate instead: the residual surrogate ``y* + c (ŷ - y*)`` wi
 scaled, the intercept shifted), so the exact set evaluator applies unchanged, and its standard errors,
 measurement sd and discrepancy sd scale by the same c, so the plausible set is the one of the
 original units.  In a tolerance sweep the override scales with the scenario tolerance.
+
+This module is arithmetic on bands and polynomials and imports nothing of the package; a scenario's
+measurement bands, its plausible fields and sets live in :mod:`demid.scenario`.
 """
 
 from __future__ import annotations
@@ -60,8 +63,13 @@ def same_tolerances(tolerance: float, tolerances) -> bool:
     return all(abs(float(v) - tolerance) <= 1e-12 * tolerance for v in (tolerances or {}).values())
 
 
+def has_own_band(response) -> bool:
+    """The response declares its own ``tolerance`` or ``tolerance_abs``."""
+    return getattr(response, "tolerance", None) is not None or getattr(response, "tolerance_abs", None) is not None
+
+
 def has_own_tolerance(spec) -> bool:
-    return any(r.tolerance is not None or r.tolerance_abs is not None for r in spec.responses)
+    return any(has_own_band(r) for r in spec.responses)
 
 
 def scenario_scales(spec, tolerance: float) -> dict[str, float]:
@@ -88,41 +96,3 @@ def scenario_grid(grid, spec, tolerance: float):
             target = spec.targets[r]
             grid[r] = target + c * (grid[r].to_numpy(dtype=float) - target)
     return grid
-
-
-def scenario_bands(spec, observables, tolerance: float) -> dict:
-    """Per observable with a configured sigma (or discrepancy), its :class:`MeasurementBand` in the units
-    of :func:`scenario_surrogates`; the others take the tolerance as their band."""
-    from .sampling.residuals import MeasurementBand
-    from .uncertainty.sigma import measurement_sigma
-
-    scales = scenario_scales(spec, tolerance)
-    out = {}
-    for o in observables:
-        response = spec.response(o)
-        configured = response.sigma is not None or response.sigma_rel is not None
-        delta = float(response.discrepancy or 0.0)
-        if not configured and delta == 0.0:
-            continue
-        c = scales.get(o, 1.0)
-        sigma = measurement_sigma(response.sigma_config, spec.targets[o]) if configured else None
-        out[o] = MeasurementBand(None if sigma is None else c * sigma, c * delta)
-    return out
-
-
-def plausible_basis(spec, observable: str) -> str:
-    """Where the plausible band of one observable comes from, in words for the notes."""
-    from .uncertainty.sigma import sigma_basis
-
-    response = spec.response(observable)
-    if response.sigma is not None or response.sigma_rel is not None:
-        text = sigma_basis(response.sigma_config)
-    else:
-        text = "no sigma configured: the tolerance band is the measurement band (σ = ε·|y*|/z)"
-    if response.tolerance_abs is not None:
-        text += f"; own tolerance ±{response.tolerance_abs:g} {response.unit if response.unit != '-' else ''}".rstrip()
-    elif response.tolerance is not None:
-        text += f"; own tolerance {response.tolerance:g}"
-    if response.discrepancy:
-        text += f"; discrepancy δ = {response.discrepancy:g}"
-    return text

@@ -11,12 +11,15 @@ contraction below :data:`STOP_CONTRACTION` says: stop simulating this kind of ru
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from .design import model_matrix
 from .sampling import uses_grid
-from .sampling.residuals import plausibility_fields
-from .tolerance import scenario_bands, scenario_surrogates
+
+if TYPE_CHECKING:
+    from .scenario import JudgedScenario
 
 #: Expected contraction of the plausible volume below which more runs of this kind are not worth simulating.
 STOP_CONTRACTION = 0.10
@@ -48,21 +51,15 @@ def _evaluation_points(domain, seed: int = 0) -> np.ndarray:
     return domain.to_actual(unit)
 
 
-def expected_contraction(surrogates: dict, spec, scenario, z: float, new_runs: np.ndarray) -> dict:
+def expected_contraction(judged: JudgedScenario, new_runs: np.ndarray) -> dict:
     """``{"scenario", "count", "plausible_fraction_pct", "expected_fraction_pct", "expected_contraction",
-    "stop"}`` for the wave ``new_runs`` (actual units) and the plausible set of ``scenario``."""
-    points = _evaluation_points(spec.domain)
-    fields = plausibility_fields(scenario_surrogates(surrogates, spec, scenario.tolerance), scenario.observables,
-                                 spec.targets, scenario.tolerance, z,
-                                 scenario_bands(spec, scenario.observables, scenario.tolerance))
-    now = np.ones(len(points), dtype=bool)
-    after = np.ones(len(points), dtype=bool)
-    for o, field in fields.items():
-        miss = np.abs(field.surrogate.predict(points) - spec.targets[o])
-        now &= miss <= field.half_width(points)
-        after &= miss <= field.half_width(points, se=_updated_se(field.surrogate, points, new_runs))
+    "stop"}`` for the wave ``new_runs`` (actual units) and the judged scenario's plausible set."""
+    points = _evaluation_points(judged.spec.domain)
+    now = judged.contains(points)
+    after = judged.contains(points, se={o: _updated_se(field.surrogate, points, new_runs)
+                                        for o, field in judged.fields.items()})
     phi_now, phi_after = float(now.mean()), float(after.mean())
     contraction = 1.0 - phi_after / phi_now if phi_now > 0 else float("nan")
-    return {"scenario": scenario.name, "count": int(len(new_runs)), "plausible_fraction_pct": 100 * phi_now,
+    return {"scenario": judged.name, "count": int(len(new_runs)), "plausible_fraction_pct": 100 * phi_now,
             "expected_fraction_pct": 100 * phi_after, "expected_contraction": contraction,
             "stop": bool(np.isfinite(contraction) and contraction < STOP_CONTRACTION)}

@@ -11,7 +11,7 @@ import pytest
 from demid.criticism import calibration_check
 from demid.criticism.edges import widen_advice
 from demid.design import quadratic_terms
-from demid.report.summary import factor_verdict
+from demid.story.verdicts import factor_verdict
 from demid.sampling.domain import Domain
 from demid.spec import MaterialSpec
 from demid.story import material_advice

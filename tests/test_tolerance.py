@@ -13,8 +13,8 @@ import pytest
 
 from demid.design import quadratic_terms
 from demid.surrogate import Surrogate
-from demid.tolerance import (band_scale, observable_band, rescaled_surrogate, scenario_bands, scenario_grid,
-                             scenario_surrogates)
+from demid.scenario import scenario_bands
+from demid.tolerance import band_scale, observable_band, rescaled_surrogate, scenario_grid, scenario_surrogates
 
 
 def _response(name, target, tolerance=None, tolerance_abs=None, sigma=None, sigma_rel=None, discrepancy=None):
@@ -105,7 +105,7 @@ def test_a_discrepancy_without_a_sigma_still_gets_its_band():
 
 
 def test_plausible_basis_names_each_source_of_the_band():
-    from demid.tolerance import plausible_basis
+    from demid.scenario import plausible_basis
 
     plain = _spec(_response("y", 4.0))
     assert plausible_basis(plain, "y").startswith("no sigma configured")

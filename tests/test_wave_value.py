@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from demid.scenario import JudgedScenario
 from demid.spec import MaterialSpec
 from demid.surrogate import fit_response
 from demid.wave_value import STOP_CONTRACTION, _updated_se, expected_contraction
@@ -67,8 +68,8 @@ def test_fractions_and_contraction_are_counted_on_the_grid(seed, sigma):
     surrogate, x, beta, s2 = _fit(seed)
     new_runs = np.random.default_rng(seed).uniform(0, 1, size=(12, 2))
     target, z = 12.5, 2.0
-    value = expected_contraction({"y": surrogate}, _spec(sigma, target), _spec(sigma, target).scenarios[0], z,
-                                 new_runs)
+    value = expected_contraction(JudgedScenario(_spec(sigma, target), _spec(sigma, target).scenarios[0],
+                                                {"y": surrogate}, z), new_runs)
     axis = np.linspace(0.0, 1.0, 201)
     grid = np.column_stack([g.ravel() for g in np.meshgrid(axis, axis, indexing="ij")])
     f = _basis(grid)
@@ -92,7 +93,7 @@ def test_fractions_and_contraction_are_counted_on_the_grid(seed, sigma):
 def test_an_empty_plausible_set_has_no_contraction_and_no_stop():
     surrogate, *_ = _fit(1)
     spec = _spec(0.01, 1e6)  # far beyond every prediction
-    value = expected_contraction({"y": surrogate}, spec, spec.scenarios[0], 2.0, np.full((3, 2), 0.5))
+    value = expected_contraction(JudgedScenario(spec, spec.scenarios[0], {"y": surrogate}, 2.0), np.full((3, 2), 0.5))
     assert value["plausible_fraction_pct"] == 0.0
     assert np.isnan(value["expected_contraction"]) and value["stop"] is False
 
@@ -125,7 +126,7 @@ def test_fractions_in_three_and_four_factors_match_a_dense_random_sample(k):
                 "scenarios": {"s": {"observables": ["y"], "tolerance": 0.01}}}
     spec = MaterialSpec.from_material("m", material, grid_points=21)
     new_runs = np.random.default_rng(k).uniform(0, 2, size=(20, k))
-    value = expected_contraction({"y": surrogate}, spec, spec.scenarios[0], z, new_runs)
+    value = expected_contraction(JudgedScenario(spec, spec.scenarios[0], {"y": surrogate}, z), new_runs)
     points = np.random.default_rng(100 + k).uniform(0, 2, size=(400_000, k))
     f = _quadratic_basis(points)
     miss = np.abs(f @ beta - target)

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-#: Same thresholds as the per-factor verdicts (:mod:`demid.report.summary`): identified up to 10 %,
+#: Same thresholds as the per-factor verdicts (:mod:`demid.story.verdicts`): identified up to 10 %,
 #: unresolved ("free") from 90 % of the range along the direction.  Combinations are judged on the
 #: same scale so that "identified in combination" and "identified" mean the same width.
 IDENTIFIED_MAX_WIDTH = 0.10

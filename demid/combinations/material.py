@@ -395,18 +395,12 @@ def material_combinations(surrogates: dict, spec: MaterialSpec, coding: Coding, 
     return MaterialCombinations(spec, coding, results, advice, lower, upper, clouds)
 
 
-def plausible_sets(surrogates: dict, spec: MaterialSpec, *, z: float, n: int) -> dict[str, AdmissibleSet]:
+def plausible_sets(surrogates: dict, spec: MaterialSpec, *, z: float, n: int,
+                   judged: dict | None = None) -> dict[str, AdmissibleSet]:
     """Every scenario's plausible set on an n-grid (n Sobol points above 3 factors), as the robust table
-    evaluates it: its z, each observable's own tolerance (:func:`~demid.tolerance.scenario_surrogates`) and
-    measurement band, σ and discrepancy δ (:func:`~demid.tolerance.scenario_bands`)."""
-    from ..sampling.evaluate import evaluate_set
-    from ..sampling.residuals import plausibility_fields
-    from ..tolerance import scenario_bands, scenario_surrogates
+    evaluates it: its z, each observable's own tolerance and measurement band, σ and discrepancy δ
+    (:class:`~demid.scenario.JudgedScenario`; ``judged``: the scenarios already judged at ``z``)."""
+    from ..scenario import judged_scenarios
 
-    targets = spec.targets
-    out = {}
-    for sc in spec.scenarios:
-        fields = plausibility_fields(scenario_surrogates(surrogates, spec, sc.tolerance), sc.observables, targets,
-                                     sc.tolerance, z, scenario_bands(spec, sc.observables, sc.tolerance))
-        out[sc.name] = evaluate_set(fields, spec.domain, sc.observables, targets, sc.tolerance, n)
-    return out
+    judged = judged_scenarios(spec, surrogates, z) if judged is None else judged
+    return {name: scenario.plausible_set(n) for name, scenario in judged.items()}

@@ -13,10 +13,11 @@ import pandas as pd
 from ..data import implausible_targets
 from ..formulas import relative_error
 from ..plots.criticism import residual_figure
-from ..sampling import evaluate_set, uses_grid
+from ..sampling import uses_grid
 from ..sampling.evaluate import uses_exact
 from ..surrogate import fit_response
-from ..tolerance import relative_tolerances, scenario_surrogates
+from ..scenario import JudgedScenario, reference_scenario
+from ..tolerance import relative_tolerances
 from .level1 import criticize
 from .level2 import calibration_check
 from .run_order import assess_run_order
@@ -57,25 +58,22 @@ class _ScenarioSets:
 
     def __call__(self, scen):
         if scen.name not in self.sets:
-            self.sets[scen.name] = evaluate_set(scenario_surrogates(self.surrogates, self.spec, scen.tolerance),
-                                                self.spec.domain, scen.observables,
-                                                self.spec.targets, scen.tolerance, self.n,
-                                                reference=self.spec.reference_point or None)
+            judged = JudgedScenario(self.spec, scen, self.surrogates, 0.0)  # strict sets: z unused
+            self.sets[scen.name] = judged.strict_set(self.n, reference=self.spec.reference_point or None)
         return self.sets[scen.name]
 
 
 def _identifiability_effect(surrogates: dict, extended, response: str, spec: MaterialSpec, n: int,
                             scenario_sets: _ScenarioSets | None = None) -> list[dict]:
     """Feasible fraction and spans of every scenario that uses ``response``, before and after the extension."""
-    domain, targets = spec.domain, spec.targets
+    domain = spec.domain
     scenario_sets = scenario_sets or _ScenarioSets(surrogates, spec, n)
     rows = []
     for scen in spec.scenarios:
         if response not in scen.observables:
             continue
         before = scenario_sets(scen)
-        after = evaluate_set(scenario_surrogates({**surrogates, response: extended}, spec, scen.tolerance), domain,
-                             scen.observables, targets, scen.tolerance, n)
+        after = JudgedScenario(spec, scen, {**surrogates, response: extended}, 0.0).strict_set(n)
         rows.append({"scenario": scen.name, "fraction_pct_before": 100 * before.fraction,
                      "fraction_pct_after": 100 * after.fraction,
                      "width_before": dict(zip(domain.factors, before.width)),
@@ -193,8 +191,7 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, spec: MaterialSpec
         if with_targets and same:  # the scenario's own set, exact or sampled: the one identifiability shows
             strict = scenario_sets(same[0])
         elif with_targets and uses_exact(surrogates, with_targets, domain):
-            strict = evaluate_set(scenario_surrogates(surrogates, spec, spec.reference_tolerance), domain,
-                                  with_targets, targets, spec.reference_tolerance, n_level2)
+            strict = JudgedScenario(spec, reference_scenario(spec, with_targets), surrogates, 0.0).strict_set(n_level2)
         simulated = table[[r for r in spec.response_names if r in table.columns]].notna().any(axis=1)
         level2 = calibration_check({r: surrogates[r] for r in targets}, domain, targets,
                                    spec.reference_tolerance, n_level2, spec.reference_point, strict_set=strict,

@@ -14,7 +14,6 @@ import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch, Rectangle
 
-from ..formulas import relative_error
 from .labels import axis_label, tex_label
 from .layout import panel_grid
 from .style import MAX_PIXELS, plt, SCENARIO_COLORS, _axis_scale, _extent, styled
@@ -89,29 +88,23 @@ def _zoom_box(domain, sets: dict, n: int, thin: float = 0.35, keep=None):
     return out
 
 
-def _zoom_mask(surrogates, spec, result, box, pixels: int = ZOOM_PIXELS) -> np.ndarray:
-    """The scenario's admissible nodes on a fine grid over the zoom box (rows = y), so the zoomed
-    panel is drawn at the figure's resolution rather than the evaluation grid's."""
+def _zoom_mask(judged, box, pixels: int = ZOOM_PIXELS) -> np.ndarray:
+    """The judged scenario's strict set (:meth:`~demid.scenario.JudgedScenario.contains`) on a fine grid over
+    the zoom box (rows = y), so the zoomed panel is drawn at the figure's resolution rather than the
+    evaluation grid's."""
     (x0, x1), (y0, y1) = box
     xs, ys = np.linspace(x0, x1, pixels), np.linspace(y0, y1, pixels)
     gx, gy = np.meshgrid(xs, ys)
-    points = spec.domain.to_actual(np.column_stack([gx.ravel(), gy.ravel()]))
-    from ..tolerance import scenario_surrogates
-
-    targets = spec.targets
-    surrogates = scenario_surrogates(surrogates, spec, result.tolerance)  # an observable's own tolerance
-    worst = np.max([np.abs(relative_error(surrogates[o].predict(points), targets[o]))
-                    for o in result.observables], axis=0)
-    return (worst <= result.tolerance).reshape(pixels, pixels)
+    points = judged.spec.domain.to_actual(np.column_stack([gx.ravel(), gy.ravel()]))
+    return judged.contains(points, plausible=False).reshape(pixels, pixels)
 
 
 @styled
-def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, surrogates: dict | None = None
+def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, judged: dict | None = None
                 ) -> plt.Figure:
-    """Overlay of every scenario's admissible set (pairwise projections for d > 2).
-
-    With ``surrogates``, the zoom panel of a thin 2-factor set is redrawn from the surrogates on a
-    fine grid over the zoomed box instead of enlarging the evaluation grid's cells."""
+    """Overlay of every scenario's admissible set (pairwise projections for d > 2).  With ``judged`` (name ->
+    :class:`~demid.scenario.JudgedScenario`), a thin 2-factor set's zoom panel is redrawn from its surrogates
+    on a fine grid over the zoomed box, not from the evaluation grid's enlarged cells."""
     domain, reference_point, title = spec.domain, spec.reference_point, spec.label
     scenario_labels = {sc.name: sc.label for sc in spec.scenarios}
     d = domain.dim
@@ -149,8 +142,8 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, surr
             cmap = ListedColormap([(0, 0, 0, 0), color])
             for k, ax_k in enumerate([ax] if zoom is None else [axes[0][0], axes[0][1]]):
                 extent = _extent(domain, i, j)
-                if k == 1 and surrogates is not None:
-                    img = _zoom_mask(surrogates, spec, result, zoom)
+                if k == 1 and judged is not None and name in judged:
+                    img = _zoom_mask(judged[name], zoom)
                     extent = (*zoom[0], *zoom[1])
                 ax_k.imshow(img.astype(float), origin="lower", extent=extent, aspect="auto",
                             cmap=cmap, vmin=0, vmax=1, interpolation="nearest")

@@ -361,7 +361,9 @@ class ReportSections:
         ``story``): the same rows level 2 and the next-wave section show."""
         from ..sampling.residuals import PLAUSIBLE_DEFINITION
         from ..story import StudyAdvice, verdict_display
-        from .summary import VERDICT_TEXT, combination_lines, criticism_lines, in_order
+        from ..story.verdicts import VERDICT_TEXT
+        from ..story.words import in_order
+        from .summary import combination_lines, criticism_lines
 
         verdicts_all = self._csv("verdicts.csv")
         advice = StudyAdvice.from_frame(self._csv("advice.csv"))
@@ -441,7 +443,8 @@ class ReportSections:
         import numpy as np
 
         from ..uncertainty.recommended import digits_for
-        from .summary import point_on_edge_text, unit_text
+        from ..story.words import unit_text
+        from .summary import point_on_edge_text
 
         if not recommended:
             return []
@@ -613,7 +616,7 @@ class ReportSections:
         if not checks:
             return []
         labels = labels or {}
-        from .summary import in_order
+        from ..story.words import in_order
 
         lines = ["**Transcription check** against the statistics the source published:"]
         for response, res in in_order(checks):
@@ -645,7 +648,8 @@ class ReportSections:
                  f"with its extension and the measured gain (leave-one-out RMSE, {term('AICc', 'aicc')}); a "
                  f"surrogate whose {term('Q²', 'q2')} is below 0 does not predict."]
         from ..precision import percent_text
-        from .summary import VERDICT_WORDS, in_order, labelled, unreliable_surrogate_lines, verdict_sentence
+        from ..story.words import in_order, labelled
+        from .summary import VERDICT_WORDS, unreliable_surrogate_lines, verdict_sentence
 
         spec = self._specs()[m]
         for response, res in in_order(info["level1"], spec.response_names):
@@ -781,10 +785,11 @@ class ReportSections:
                          + markdown_table(sub.drop(columns="material")))]
 
     def response_surfaces(self, m: str) -> list:
-        """Per response: equation (coded, actual), block ANOVA, coefficients, stationary point."""
+        """Per response: equation (coded, actual), block ANOVA, coefficients, canonical analysis."""
         import json
 
-        from .rsm import block_anova, canonical_text, coefficient_table, equation, stored_fits
+        from ..surrogate import coding_from_frame
+        from .rsm import canonical_text, equation, stored_surfaces
 
         table = self.root / "validated" / f"{m}.parquet"
         fits, anova = self.root / "fits" / f"{m}.parquet", self.root / "fits" / f"{m}_anova.parquet"
@@ -792,32 +797,32 @@ class ReportSections:
             return []
         spec = self._specs()[m]
         letters = {f: chr(ord("A") + i) for i, f in enumerate(spec.factor_names)}
-        coding = None
         fit_json = self.root / "fits" / f"{m}.json"
         canonical = json.loads(fit_json.read_text(encoding="utf-8")) if fit_json.is_file() else {}
         lines = ["### Response-surface models", "", f"A {term('ridge', 'ridge')} in a canonical analysis is a "
                  "direction along which the response hardly changes.", ""]
-        # the stored fits, as the fit step wrote them: the report does not fit again
-        for fit in stored_fits(read_parquet(fits), read_parquet(anova), read_parquet(table), spec):
-            coding = fit.coding
-            label = spec.response_labels.get(fit.response, fit.response)
-            coef = coefficient_table(fit)
+        fits = read_parquet(fits)
+        coding = coding_from_frame(fits, spec.factor_names) if len(fits) else None
+        # the fits and their statistics as the fit step stored them: the report does not fit again
+        for surface in stored_surfaces(fits, read_parquet(anova), read_parquet(table), spec):
+            label = spec.response_labels.get(surface.response, surface.response)
+            coef = surface.coefficients.copy()  # the symbol column is for this table only
             coef.insert(1, "symbol", [_symbol_of(t, letters) for t in coef["term"]])
+            entry = canonical.get(surface.response, {}).get("canonical")
+            where = canonical_text(entry, spec.factor_names, spec, letters, label) if entry is not None else ""
+            term_names = coef["term"].tolist()  # keys, for the equations; the table shows labels
             coef["term"] = [t if t == "Intercept" else _symbol_of(t, spec.factor_labels) for t in coef["term"]]
-            actual = fit.coefficients()["coefficient_actual"].to_numpy()
-            where = canonical_text(canonical.get(fit.response, {}).get("canonical"), fit, spec, letters, label)
-            anova = block_anova(fit)
             lines += [f"#### {label}", "",
                       "Coded units (" + ", ".join(f"{letters[f]} = {spec.factor(f).label}"
                                                    for f in spec.factor_names) + ", coded as below):", "",
-                      f"`{equation(fit.term_names, coef['estimate'].to_numpy(), letters, label)}`", "",
+                      f"`{equation(term_names, coef['estimate'].to_numpy(), letters, label)}`", "",
                       "Actual units" + (" (log10 of log-scaled factors)" if spec.log_factors else "") + ":", "",
-                      f"`{equation(fit.term_names, actual, {f: spec.factor(f).label for f in spec.factor_names}, label)}`",
+                      f"`{equation(term_names, surface.actual, {f: spec.factor(f).label for f in spec.factor_names}, label)}`",
                       "", where, "", "ANOVA (block sums of squares are partial: the increase of the residual sum of "
                       "squares when the block is dropped from the full quadratic):", "",
-                      markdown_table(anova), "", "Coefficients in coded units:", "",
+                      markdown_table(surface.anova), "", "Coefficients in coded units:", "",
                       markdown_table(coefficients_shown(coef)), ""]
-            if getattr(fit, "blocked", False):
+            if surface.blocked:
                 lines += ["The runs were made in blocks (the table's `block` column): the fit carries a block term, "
                           "and the equations, sets and scenarios use the block-averaged surface (the response at the "
                           "mean block effect).", ""]

@@ -9,17 +9,11 @@ again: one set per scenario, one number, whichever table shows it.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import numpy as np
 import pandas as pd
 
 from .evaluate import EXACT_METHOD, exact_set_on_domain, uses_exact
 from .grid import AdmissibleSet
-from ..tolerance import scenario_surrogates
-
-if TYPE_CHECKING:
-    from ..spec import MaterialSpec
 
 STATE_COLUMNS = ["method", "exact_fraction", "exact_fraction_error", "unit_lower", "unit_upper",
                  "reference_distance", "nearest_unit"]
@@ -46,22 +40,23 @@ def set_state_frame(sets: dict[str, AdmissibleSet]) -> pd.DataFrame:
     return pd.concat(frames, ignore_index=True)[STATE_COLUMNS]
 
 
-def stored_strict_sets(frame: pd.DataFrame, surrogates: dict, spec: MaterialSpec, *,
+def stored_strict_sets(frame: pd.DataFrame, judged: dict, *,
                        reference: bool = False) -> dict[str, AdmissibleSet]:
-    """The exact strict sets of ``spec``'s scenarios from the scenarios table (others are left out:
-    their consumers evaluate them on their own grids).  With ``reference`` each set also knows
-    its distance to the spec's reference point, as stored."""
-    domain, targets = spec.domain, spec.targets
-    point = (spec.reference_point or None) if reference else None
+    """The exact strict sets of the judged scenarios (name -> :class:`~demid.scenario.JudgedScenario`, in
+    the spec's order) from the scenarios table (others are left out: their consumers evaluate them on
+    their own grids).  With ``reference`` each set also knows its distance to the spec's reference point,
+    as stored."""
     sets = {}
-    for scen in spec.scenarios:
+    for scen in judged.values():
+        spec, surrogates = scen.spec, scen.surrogates
+        domain, targets = spec.domain, spec.targets
+        point = (spec.reference_point or None) if reference else None
         rows = frame[frame["scenario"] == scen.name] if "method" in frame.columns else frame.iloc[0:0]
         if (rows.empty or rows["method"].iloc[0] != EXACT_METHOD or list(rows["factor"]) != list(domain.factors)
                 or float(rows["tolerance"].iloc[0]) != float(scen.tolerance)
                 or not uses_exact(surrogates, scen.observables, domain)):
             continue
-        exact = exact_set_on_domain(scenario_surrogates(surrogates, spec, scen.tolerance), domain, scen.observables,
-                                    targets, scen.tolerance, point)
+        exact = exact_set_on_domain(surrogates, domain, scen.observables, targets, scen.tolerance, point)
         # Seed the lazily computed state with the stored values: nothing is evaluated twice.
         exact.__dict__["_fraction"] = (float(rows["exact_fraction"].iloc[0]),
                                        float(rows["exact_fraction_error"].iloc[0]))

@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 
 from ..criticism.reach import Reach, saturation_advice
+from .words import level2_within, unit_text
 
 ADVICE_COLUMNS = ["material", "kind", "factor", "bound", "observable", "text", "decision"]
 #: Which advice comes first: a target to check before anything is calibrated against it, a model to refit before
@@ -73,15 +74,11 @@ def _label(spec, name: str) -> str:
 
 
 def _unit(spec, name: str) -> str:
-    from ..report.summary import unit_text
-
     unit = next((r.unit for r in spec.responses if r.name == name), "-")
     return unit_text(unit) if unit != "-" else ""
 
 
 def _bound_text(f, side: str) -> str:
-    from ..report.summary import unit_text
-
     unit = f" {unit_text(f.unit)}" if f.unit != "-" else ""
     limit = f.limits[0 if side == "lower" else 1]
     up_to = (f", {'down' if side == 'lower' else 'up'} to its physical limit {limit:.4g}{unit},"
@@ -120,8 +117,6 @@ def _check_targets(spec, implausible: dict, ranking) -> list[AdviceItem]:
 
 
 def _recalibrate(spec, level1: dict, level2: dict, checked: set) -> list[AdviceItem]:
-    from ..report.summary import level2_within
-
     items = []
     for r, res in (level1 or {}).items():
         if res.get("verdict") == "does_not_predict":

@@ -2,7 +2,9 @@
 
 The plausible interval is the span of the plausible set (:data:`~demid.sampling.residuals.PLAUSIBLE_DEFINITION`,
 ``robust_identifiability.csv``); the strict interval (Table 3) is what the data would identify if the
-surrogate and the measurements were exact.  ``tables/verdicts.csv`` is this table.
+surrogate and the measurements were exact.  ``tables/verdicts.csv`` is this table.  The verdict rule
+itself (:func:`factor_verdict`, its thresholds and :data:`VERDICT_TEXT`, the rule in words) lives here; the
+report only renders it.
 """
 
 from __future__ import annotations
@@ -10,13 +12,57 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..report.summary import IDENTIFIED_MAX_WIDTH, factor_verdict, interval_at_bound
-from ..sampling.domain import SIDES_OF, sides_at_limit
+from ..sampling.domain import BOUND_TOUCH, SIDES_OF, Domain, sides_at_limit
+from .words import unit_text
+
+#: Width of the admissible interval, as a fraction of the search range, up to which a factor is *identified*.
+IDENTIFIED_MAX_WIDTH = 0.10
+#: Width from which a factor is *unresolved*: the data leave (almost) the whole search range open.
+UNRESOLVED_MIN_WIDTH = 0.90
+
+VERDICT_TEXT = (
+    f"**identified**: admissible interval at most {100 * IDENTIFIED_MAX_WIDTH:g} % of the search range wide and "
+    f"clear of both bounds (or ending at a physical limit); **bounded**: narrower than "
+    f"{100 * UNRESOLVED_MIN_WIDTH:g} % of the range and clear of both bounds (or at a limit); **unresolved**: "
+    f"{100 * UNRESOLVED_MIN_WIDTH:g} % of the range or more is admissible, the observables say (almost) nothing "
+    f"about the factor; **cut by the search range**: narrower than that but touching a search bound (within "
+    f"{100 * BOUND_TOUCH:g} % of the range), so the true interval may extend beyond it (a bound at the factor's "
+    f"physical limit, `limits` in the config, cuts nothing: no value lies beyond it); **no admissible point**: no "
+    f"point of the domain meets every target. Widths are measured in search units (log10 for log-scaled factors)."
+)
 
 VERDICT_COLUMNS = ["material", "scenario", "factor", "strict_lower", "strict_upper", "plausible_lower",
                    "plausible_upper", "verdict", "reason"]
 
 UNINFORMATIVE = "uninformative observable"
+
+
+def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False,
+                   at_bound: str | None = None, limits: tuple = (None, None)) -> tuple[str, float]:
+    """Verdict and width (fraction of the search range) of one admissible interval.
+
+    ``at_bound`` is the interval's ``at_bound`` value from the identifiability table (which
+    ends of the search range the set reaches); without it, it is derived the same way
+    (:meth:`~demid.sampling.domain.Domain.at_bound`).  An end of the range at the factor's physical
+    ``limits`` does not cut the set: no value lies beyond it.
+    """
+    if not (np.isfinite(lower) and np.isfinite(upper)):
+        return "no admissible point", float("nan")
+    f = np.log10 if log else (lambda v: v)
+    width = (f(upper) - f(lower)) / (f(bound_upper) - f(bound_lower))
+    if width >= UNRESOLVED_MIN_WIDTH:
+        return "unresolved", width
+    if not isinstance(at_bound, str):  # not given (or an older table without the column)
+        at_bound = interval_at_bound(lower, upper, bound_lower, bound_upper, log)
+    cut = [side for side in SIDES_OF[at_bound] if side not in sides_at_limit((bound_lower, bound_upper), limits)]
+    if cut:
+        return f"cut by the search range ({' and '.join(cut)} bound)", width
+    return ("identified" if width <= IDENTIFIED_MAX_WIDTH else "bounded"), width
+
+
+def interval_at_bound(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False) -> str:
+    """The ``at_bound`` value of one interval in its factor's range (:meth:`Domain.at_bound`)."""
+    return Domain(("x",), (bound_lower,), (bound_upper,), (log,)).at_bound([lower], [upper])[0]
 
 
 def _pct(width: float) -> str:
@@ -147,8 +193,6 @@ def in_combination(verdicts: pd.DataFrame, spec, combinations: dict) -> pd.DataF
 
 def verdict_display(verdicts: pd.DataFrame, spec) -> pd.DataFrame:
     """The summary's table: labels, both intervals, the plausible width and the verdict with its reason."""
-    from ..report.summary import unit_text
-
     rows = []
     for _, row in verdicts.iterrows():
         f = spec.factor(row["factor"])

@@ -24,9 +24,10 @@ known.  This module adds what a calibration decision needs on top of it:
 :func:`analyse_material` runs all of it for one configured material with the
 grid sizes of :func:`recommended_sizes`.
 
-Modules: ``sigma`` (measurement sigma), ``robust``, ``sweep``, ``posterior``,
+Modules: ``robust``, ``sweep``, ``posterior``,
 ``ranking`` (with the advice text) and ``material`` (the per-material step);
-figures in :mod:`demid.plots.uncertainty`, estimators in :mod:`demid.sampling`.
+figures in :mod:`demid.plots.uncertainty`, estimators in :mod:`demid.sampling`, each scenario judged
+(its rescaled surrogates, bands and measurement sigma) in :mod:`demid.scenario`.
 
 Measurement sigma: ``sigma`` (absolute) or ``sigma_rel`` (times |y*|) from the
 response's config.  Plausible sets take the tolerance as the measurement band
@@ -40,13 +41,13 @@ from ..plots.uncertainty import posterior_figure, tolerance_sweep_figure
 from ..sampling import (AdmissibleSet, Domain, FractionEstimate, PlausibilityField, SobolFraction, admissible_set,
                         cell_count, fraction_with_error, plane_band_fraction, plausibility_fields, polish_spans,
                         predict_grid, sobol_fraction)
+from ..scenario import measurement_sigma, measurement_sigmas, sigma_basis
 from ..spec import FALLBACK_TOLERANCE
 from .material import MaterialUncertainty, analyse_material, recommended_sizes
 from .posterior import (INFORMATION_GAIN_COLUMNS, NO_OBSERVABLE, Posterior, gaussian_loglik, grid_posterior,
                         information_gain_frame, posterior_from_loglik, subset_posteriors)
 from .ranking import RANKING_COLUMNS, next_measurement_advice, rank_observable_sets
 from .robust import ROBUST_COLUMNS, SetSummary, robust_admissible_set, robust_identifiability_frame, summarise_set
-from .sigma import measurement_sigma, measurement_sigmas, sigma_basis
 from .sweep import DEFAULT_SWEEP_TOLERANCES, SWEEP_COLUMNS, tolerance_sweep
 
 __all__ = ["DEFAULT_SWEEP_TOLERANCES", "FALLBACK_TOLERANCE", "INFORMATION_GAIN_COLUMNS", "NO_OBSERVABLE",

@@ -14,15 +14,15 @@ import pandas as pd
 from ..plots.labels import axis_label, tex_label
 from ..plots.uncertainty import posterior_figure, tolerance_sweep_figure
 from ..sampling import uses_grid
-from ..sampling.evaluate import evaluate_set, uses_exact
+from ..sampling.evaluate import uses_exact
 from ..spec import FALLBACK_TOLERANCE
 from .posterior import INFORMATION_GAIN_COLUMNS, information_gain_frame, subset_posteriors
 from .ranking import RANKING_COLUMNS, next_measurement_advice, rank_observable_sets
 from ..sampling.residuals import PLAUSIBLE_DEFINITION
 from .recommended import recommended_point, uninformative_observables
 from .robust import ROBUST_COLUMNS, robust_identifiability_frame
-from .sigma import measurement_sigmas
-from ..tolerance import band_scale, has_own_tolerance, plausible_basis, scenario_bands, scenario_surrogates
+from ..scenario import JudgedScenario, judged_scenarios, plausible_basis, reference_scenario
+from ..tolerance import has_own_tolerance
 from .sweep import DEFAULT_SWEEP_TOLERANCES, SWEEP_COLUMNS, tolerance_sweep
 
 if TYPE_CHECKING:
@@ -82,48 +82,39 @@ class MaterialUncertainty:
 
 def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z: float = 2.0,
                      tolerances=DEFAULT_SWEEP_TOLERANCES, sizes: dict[str, int] | None = None,
-                     strict_sets: dict[str, AdmissibleSet] | None = None, seed: int = 0) -> MaterialUncertainty:
+                     strict_sets: dict[str, AdmissibleSet] | None = None, seed: int = 0,
+                     judged: dict[str, JudgedScenario] | None = None) -> MaterialUncertainty:
     """Robust sets, tolerance sweep, posteriors, ranking and advice for one configured material.
 
     ``spec`` is the material's :class:`~demid.spec.MaterialSpec` (factors, responses with ``target`` and
     optional ``sigma``/``sigma_rel``, scenarios).  Robust sets use the
-    configured measurement sigma only (0 when absent); posteriors and the ranking use it
-    or, when absent, ``sigma_rel`` = reference tolerance / 2, where the reference
-    tolerance is that of the scenario with the most observables.  ``notes`` states the
-    grid sizes and sigma bases used, for the report.
+    configured measurement sigma or, when absent, the tolerance band read as a z-sigma measurement band;
+    posteriors and the ranking use the same σ at the reference tolerance (the tolerance of the scenario
+    with the most observables), an observable's own ``tolerance``/``tolerance_abs`` included
+    (:attr:`~demid.scenario.JudgedScenario.likelihood_sd`).  ``notes`` states the
+    grid sizes and sigma bases used, for the report.  ``judged``: the scenarios already judged at ``z``
+    (:func:`~demid.scenario.judged_scenarios`).
     """
     domain = spec.domain
     targets = {r: t for r, t in spec.targets.items() if r in surrogates}
-    scenarios = {sc.name: (sc.observables, sc.tolerance) for sc in spec.scenarios}
     sizes = {**recommended_sizes(domain.dim), **(sizes or {})}
     tolerance = spec.reference_tolerance
     observables = list(targets)
-    # the posterior's likelihood width is the plausible set's measurement band: configured, or tolerance / z
-    post_sigma, post_basis = measurement_sigmas(spec.sigma_config, observables, targets, tolerance, z)
+    # each scenario judged once (its own-tolerance surrogates, bands, sets); the posteriors and the ranking
+    # judge every observable at the reference tolerance, their likelihood width the plausible set's σ
+    judged = judged_scenarios(spec, surrogates, z) if judged is None else judged
+    reference = JudgedScenario(spec, reference_scenario(spec, observables), surrogates, z)
+    at_reference, post_sigma, post_basis = reference.surrogates, reference.likelihood_sd, reference.sigma_basis
     labels = {r: spec.response_labels[r] for r in observables}
     factor_labels = {f.name: axis_label(f) for f in spec.factors}  # mathtext with unit, for the figures
-    # an observable with its own tolerance is judged by it: rescaled residual surrogates (demid.tolerance)
-    at_reference = scenario_surrogates(surrogates, spec, tolerance)
-    post_sigma = {o: v * band_scale(spec.response(o), targets[o], tolerance) for o, v in post_sigma.items()}
 
     if strict_sets is None:
         # each scenario's strict set, evaluated once and shared by robust table, sweep and ranking
-        strict_sets = {sc.name: evaluate_set(scenario_surrogates(surrogates, spec, sc.tolerance), domain,
-                                             sc.observables, targets, sc.tolerance, sizes["robust"])
+        strict_sets = {sc.name: judged[sc.name].strict_set(sizes["robust"])
                        for sc in spec.scenarios if uses_exact(surrogates, sc.observables, domain)}
     by_observables = {frozenset(sc.observables): strict_sets[sc.name] for sc in spec.scenarios
                       if sc.tolerance == tolerance and sc.name in strict_sets}
-    robust = sweep = None
-    if scenarios:
-        robust = pd.concat([robust_identifiability_frame(
-            scenario_surrogates(surrogates, spec, sc.tolerance), domain, {sc.name: scenarios[sc.name]}, targets,
-            sizes["robust"], z=z, sigma=scenario_bands(spec, sc.observables, sc.tolerance), strict_sets=strict_sets,
-            sobol_points=sizes["robust"], seed=seed) for sc in spec.scenarios], ignore_index=True)
-        groups = ([spec.scenarios] if not has_own_tolerance(spec) else [(sc,) for sc in spec.scenarios])
-        sweep = pd.concat([tolerance_sweep(scenario_surrogates(surrogates, spec, group[0].tolerance), domain,
-                                           {sc.name: scenarios[sc.name] for sc in group}, targets, tolerances,
-                                           sizes["sweep"], sobol_points=sizes["sweep"], seed=seed,
-                                           strict_sets=strict_sets) for group in groups], ignore_index=True)
+    robust, sweep = _plausible_tables(spec, judged, targets, sizes, z, tolerances, strict_sets, seed)
     points = sizes.get("posterior_points", 2 ** 16)
     posteriors = subset_posteriors(at_reference, domain, observables, targets, post_sigma, sizes["posterior"],
                                    sigma_basis=post_basis, sobol_points=points, seed=seed) if observables else {}
@@ -138,14 +129,54 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
     # one number: a set with a target out of reach has no information gain, in every table
     information_gain.loc[information_gain["observables"].isin(unreachable),
                          ["information_gain_bits", "information_gain_error_bits"]] = float("nan")
-    grid_word = "grid points per axis" if uses_grid(domain.dim) else "scrambled Sobol points"
+    widest = max(spec.scenarios, key=lambda sc: len(sc.observables)) if spec.scenarios else None
+    recommended = (recommended_point(judged[widest.name], n=sizes["robust"])
+                   if widest is not None and all(o in surrogates for o in widest.observables) else None)
+    uninformative = uninformative_observables(ranking)
+    notes = _notes(spec, reference, sizes, strict_sets, unreachable, uninformative)
+    return MaterialUncertainty(
+        recommended=recommended, uninformative=uninformative, robust=robust, sweep=sweep,
+        information_gain=information_gain,
+        ranking=ranking, advice=next_measurement_advice(ranking, labels) if len(ranking) else "",
+        posteriors=posteriors, notes=notes, factor_labels=factor_labels, unreachable=unreachable,
+        scenario_labels={sc.name: sc.label for sc in spec.scenarios if sc.label != sc.name},
+        observable_labels={r.name: tex_label(r.label) for r in spec.responses})
+
+
+def _plausible_tables(spec: MaterialSpec, judged: dict, targets: dict, sizes: dict, z: float, tolerances,
+                      strict_sets: dict, seed: int) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """The robust-identifiability table and the tolerance sweep of every judged scenario (empty tables
+    without scenarios)."""
+    if not spec.scenarios:
+        return pd.DataFrame(columns=ROBUST_COLUMNS), pd.DataFrame(columns=SWEEP_COLUMNS)
+    domain = spec.domain
+    scenarios = {sc.name: (sc.observables, sc.tolerance) for sc in spec.scenarios}
+    robust = pd.concat([robust_identifiability_frame(
+        judged[sc.name].surrogates, domain, {sc.name: scenarios[sc.name]}, targets,
+        sizes["robust"], z=z, sigma=judged[sc.name].bands, strict_sets=strict_sets,
+        sobol_points=sizes["robust"], seed=seed) for sc in spec.scenarios], ignore_index=True)
+    # one sweep for all scenarios, unless an own tolerance makes each scenario's surrogates its own
+    groups = ([spec.scenarios] if not has_own_tolerance(spec) else [(sc,) for sc in spec.scenarios])
+    sweep = pd.concat([tolerance_sweep(judged[group[0].name].surrogates, domain,
+                                       {sc.name: scenarios[sc.name] for sc in group}, targets, tolerances,
+                                       sizes["sweep"], sobol_points=sizes["sweep"], seed=seed,
+                                       strict_sets=strict_sets) for group in groups], ignore_index=True)
+    return robust, sweep
+
+
+def _notes(spec: MaterialSpec, reference: JudgedScenario, sizes: dict, strict_sets: dict, unreachable: tuple,
+           uninformative: dict) -> list[str]:
+    """The grid sizes and σ bases the analysis used, and what it left out, in words for the report."""
+    observables, dim, points = reference.observables, spec.domain.dim, sizes.get("posterior_points", 2 ** 16)
+    grid_word = "grid points per axis" if uses_grid(dim) else "scrambled Sobol points"
     notes = [
-        f"Plausible sets: z = {z:g}; " + "; ".join(f"{o}: {plausible_basis(spec, o)}" for o in observables) + ".",
-        f"Posteriors and ranking at tolerance {tolerance:g}: "
-        + "; ".join(f"{o}: {post_basis[o]}" for o in observables) + ".",
+        f"Plausible sets: z = {reference.z:g}; " + "; ".join(f"{o}: {plausible_basis(spec, o)}" for o in observables)
+        + ".",
+        f"Posteriors and ranking at tolerance {reference.tolerance:g}: "
+        + "; ".join(f"{o}: {reference.sigma_basis[o]}" for o in observables) + ".",
         f"Robust sets on {sizes['robust']} {grid_word}, sweeps on {sizes['sweep']}, "
         + (f"posteriors on {points} scrambled Sobol points ({sizes['posterior']} histogram bins)."
-           if not uses_grid(domain.dim) else f"posteriors on {sizes['posterior']} grid points per axis."),
+           if not uses_grid(dim) else f"posteriors on {sizes['posterior']} grid points per axis."),
     ]
     if strict_sets and all(a.exact is not None for a in strict_sets.values()):
         notes.append("Strict sets (identifiability table, the strict columns, the sweep and the ranking): "
@@ -156,22 +187,9 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
                      "meets their targets within the tolerance (one alone, or all together), so their posterior "
                      "measures the misfit (a discrepancy between simulation and experiment), not information; no "
                      "information gain is given and they rank last.")
-    if not scenarios:
+    if not spec.scenarios:
         notes.append(f"No scenarios configured: ranking and default sigma use tolerance {FALLBACK_TOLERANCE:g}.")
-    empty_robust = pd.DataFrame(columns=ROBUST_COLUMNS)
-    widest = max(spec.scenarios, key=lambda sc: len(sc.observables)) if spec.scenarios else None
-    recommended = (recommended_point(surrogates, spec, widest, z, n=sizes["robust"])
-                   if widest is not None and all(o in surrogates for o in widest.observables) else None)
-    uninformative = uninformative_observables(ranking)
     if uninformative:
         notes.append("Uninformative observables: " + "; ".join(f"{o}: {why}" for o, why in uninformative.items())
                      + ".")
-    return MaterialUncertainty(
-        recommended=recommended, uninformative=uninformative,
-        robust=robust if robust is not None else empty_robust,
-        sweep=sweep if sweep is not None else pd.DataFrame(columns=SWEEP_COLUMNS),
-        information_gain=information_gain,
-        ranking=ranking, advice=next_measurement_advice(ranking, labels) if len(ranking) else "",
-        posteriors=posteriors, notes=notes, factor_labels=factor_labels, unreachable=unreachable,
-        scenario_labels={sc.name: sc.label for sc in spec.scenarios if sc.label != sc.name},
-        observable_labels={r.name: tex_label(r.label) for r in spec.responses})
+    return notes

@@ -10,28 +10,17 @@ shown with (:func:`digits_for`).
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..sampling import uses_grid
-from ..sampling.residuals import plausibility_fields
-from ..tolerance import scenario_bands, scenario_surrogates
+
+if TYPE_CHECKING:
+    from ..scenario import JudgedScenario
 
 #: An observable is uninformative when its band alone leaves at least this share of Ω admissible.
 UNINFORMATIVE_FRACTION = 0.99
-
-
-def implausibility(surrogates: dict, spec, scenario, z: float, points: np.ndarray) -> np.ndarray:
-    """I(x) of a scenario at ``points`` (actual units): the largest |ŷ - y*| / H over its observables."""
-    targets = spec.targets
-    fields = plausibility_fields(scenario_surrogates(surrogates, spec, scenario.tolerance), scenario.observables,
-                                 targets, scenario.tolerance, z, scenario_bands(spec, scenario.observables,
-                                                                                scenario.tolerance))
-    out = np.zeros(len(points))
-    for o, field in fields.items():
-        ratio = np.abs(field.surrogate.predict(points) - targets[o]) / np.maximum(field.half_width(points), 1e-300)
-        out = np.maximum(out, ratio)
-    return out
 
 
 def _points(domain, n: int, seed: int = 0) -> np.ndarray:
@@ -47,13 +36,15 @@ def _points(domain, n: int, seed: int = 0) -> np.ndarray:
     return domain.to_actual(unit)
 
 
-def recommended_point(surrogates: dict, spec, scenario, z: float, n: int = 401) -> dict:
-    """``{"scenario", "point", "implausibility", "plausible"}`` for one scenario (its observables' targets)."""
+def recommended_point(judged: JudgedScenario, n: int = 401) -> dict:
+    """``{"scenario", "point", "implausibility", "plausible"}`` for one judged scenario (its observables'
+    targets), by the scenario's own implausibility and membership test."""
+    spec = judged.spec
     points = _points(spec.domain, n)
-    values = implausibility(surrogates, spec, scenario, z, points)
+    values = judged.implausibility(points)
     best = int(np.argmin(values))
-    return {"scenario": scenario.name, "point": dict(zip(spec.factor_names, points[best].tolist())),
-            "implausibility": float(values[best]), "plausible": bool(values[best] <= 1.0)}
+    return {"scenario": judged.name, "point": dict(zip(spec.factor_names, points[best].tolist())),
+            "implausibility": float(values[best]), "plausible": bool(judged.contains(points[best:best + 1])[0])}
 
 
 def digits_for(width: float) -> int:

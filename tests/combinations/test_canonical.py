@@ -132,7 +132,7 @@ def test_canonical_text_of_a_singular_surface():
     stored = json.loads(to_json_text(c.to_json()))
     assert stored["stationary_coded"] == [None, None]
     spec = SimpleNamespace(factor=lambda f: SimpleNamespace(label=f))
-    text = canonical_text(stored, SimpleNamespace(factors=["a", "b"]), spec, {"a": "A", "b": "B"}, "y")
+    text = canonical_text(stored, ["a", "b"], spec, {"a": "A", "b": "B"}, "y")
     assert "no stationary point (the quadratic part is singular)" in text
     assert "A **rising ridge** along (A +1.000, B +0.000)" in text
 

@@ -260,10 +260,10 @@ def test_a_printed_two_block_ccd(tmp_path):
 
 
 def test_report_reads_a_blocked_fit_as_the_fit_made_it():
-    """The report's stored fits rebuild the block columns: their ANOVA (a Blocks row first, partial sums of
-    squares of the term groups with the blocks kept) equals the one of the fit itself, and the partial sum of
-    squares of the linear terms equals statsmodels' nested comparison with the blocks in both models."""
-    from demid.report.rsm import block_anova, stored_fits
+    """The report prints the ANOVA the fit step stored: a Blocks row first, then the partial sums of squares of
+    the term groups with the blocks kept, the partial sum of squares of the linear terms equal to statsmodels'
+    nested comparison with the blocks in both models."""
+    from demid.report.rsm import stored_surfaces
     from demid.spec import MaterialSpec
     from demid.surrogate import fit_frames, fit_material
 
@@ -276,10 +276,9 @@ def test_report_reads_a_blocked_fit_as_the_fit_made_it():
     spec = MaterialSpec.from_material("m", material)
     refits = fit_material(table, spec)
     frames = fit_frames(refits)
-    stored = stored_fits(frames["fits"], frames["anova"], table, spec)
-    mine, theirs = block_anova(stored[0]), block_anova(refits[0])
-    pd.testing.assert_frame_equal(mine, theirs, check_exact=False, rtol=1e-9)
-    assert mine["source"].iloc[0] == "Blocks"
+    surface = stored_surfaces(frames["fits"], frames["anova"], table, spec)[0]
+    mine = surface.anova
+    assert surface.blocked and mine["source"].iloc[0] == "Blocks"
     x = refits[0].results.model.exog
     linear = [1, 2]  # mu_r, gamma
     reduced = OLS(refits[0].y, np.delete(x, linear, axis=1)).fit()

@@ -9,12 +9,12 @@ import pytest
 from demid.admissibility import evaluate_scenarios
 from demid.criticism import calibration_check
 from demid.design import quadratic_terms
-from demid.report.summary import verdict_table
 from demid.report.tables import IDENTIFIABILITY_COLUMNS
 from demid.sampling import evaluate_set
 from demid.sampling.domain import BOUND_TOUCH, Domain
 from demid.spec import MaterialSpec
 from demid.story import material_advice
+from demid.story.verdicts import factor_verdict
 from demid.surrogate import Surrogate
 
 
@@ -25,6 +25,16 @@ def _linear(name: str, factors: list[str], j: int, log: tuple[str, ...] = ()) ->
     coef[0] = 10.0
     coef[1 + j] = 10.0
     return Surrogate(name, factors, terms, coef, np.zeros((len(terms), len(terms))), 0.0, 7, log_factors=log)
+
+
+def _verdicts(identifiability: pd.DataFrame, spec) -> list[str]:
+    """The story's verdict of each row of an identifiability table, read with its ``at_bound`` column."""
+    out = []
+    for _, row in identifiability.iterrows():
+        f = spec.factor(row["factor"])
+        out.append(factor_verdict(float(row["lower"]), float(row["upper"]), f.lower, f.upper, f.log,
+                                  row.get("at_bound"), f.limits)[0])
+    return out
 
 
 def _interval(target: float, eps: float) -> tuple[float, float]:
@@ -96,13 +106,13 @@ def test_identifiability_rows_carry_at_bound_and_the_verdict_follows_it():
     assert IDENTIFIABILITY_COLUMNS[-1] == "at_bound"
     assert list(table["at_bound"]) == ["upper", "none"]
     spec = MaterialSpec.from_material("m", material)
-    verdicts = verdict_table(table, spec)
-    assert list(verdicts["verdict"]) == ["cut by the search range (upper bound)", "identified"]
+    verdicts = _verdicts(table, spec)
+    assert verdicts == ["cut by the search range (upper bound)", "identified"]
     # the verdict is derived from the column: the same interval marked as touching reads as cut
     marked = table.assign(at_bound=["none", "lower"])
-    assert list(verdict_table(marked, spec)["verdict"]) == ["identified", "cut by the search range (lower bound)"]
+    assert _verdicts(marked, spec) == ["identified", "cut by the search range (lower bound)"]
     # the advice reads the verdict rows (here the strict ones, as tables/verdicts.csv holds them)
-    rows = pd.DataFrame({"scenario": "both", "factor": ["x", "w"], "verdict": list(verdicts["verdict"])})
+    rows = pd.DataFrame({"scenario": "both", "factor": ["x", "w"], "verdict": verdicts})
     steps = [i.text for i in material_advice(spec, rows) if i.kind == "widen"]
     assert steps == ["Widen the range of x beyond its upper bound (1) and simulate runs there: the plausible set "
                      "of *both* ends there only because the search range does."]

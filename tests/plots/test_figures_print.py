@@ -86,7 +86,7 @@ def test_posterior_legend_uses_configured_labels():
 
 
 def test_report_text_speaks_in_configured_labels():
-    from demid.report.summary import labelled
+    from demid.story.words import labelled
     from demid.spec import MaterialSpec
 
     spec = MaterialSpec.from_material("m", {
@@ -101,7 +101,7 @@ def test_report_text_speaks_in_configured_labels():
 
 
 def test_names_read_in_config_then_natural_order():
-    from demid.report.summary import in_order, natural_key
+    from demid.story.words import in_order, natural_key
 
     assert sorted(["d10", "d15", "d5"], key=natural_key) == ["d5", "d10", "d15"]
     as_read = {"d10": 2, "d15": 3, "d5": 1, "x": 0}  # a JSON file's sorted keys

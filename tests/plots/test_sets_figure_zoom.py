@@ -8,6 +8,7 @@ import numpy as np
 from demid.admissibility import evaluate_scenarios
 from demid.design import quadratic_terms
 from demid.plots.sets import ZOOM_PIXELS, sets_figure
+from demid.scenario import judged_scenarios
 from demid.spec import MaterialSpec
 from demid.surrogate import Surrogate
 
@@ -34,7 +35,7 @@ def test_zoom_panel_resolves_a_thin_band_at_figure_resolution():
     spec, surrogates = _thin_band_material()
     n = 41  # coarse evaluation grid: a cell is 0.05 high, the band 0.041
     _, sets = evaluate_scenarios(surrogates, spec, n)
-    fig = sets_figure(spec, sets, n, surrogates)
+    fig = sets_figure(spec, sets, n, judged_scenarios(spec, surrogates, 2.0))
     zoom_images = fig.axes[1].get_images()
     assert zoom_images, "the thin set must get a zoom panel with its own image"
     image = np.asarray(zoom_images[0].get_array(), dtype=float)

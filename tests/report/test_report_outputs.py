@@ -9,8 +9,8 @@ import statsmodels.formula.api as smf
 
 from demid.io import round_significant, write_csv
 from demid.plots.labels import tex_label, tex_unit
-from demid.report.rsm import block_anova, coefficient_table, stationary_point
-from demid.report.summary import factor_verdict
+from demid.report.rsm import anova_table, coefficient_table
+from demid.story.verdicts import factor_verdict
 from demid.surrogate import fit_response
 
 from ..helpers import make_ccd_table
@@ -33,7 +33,7 @@ def test_block_anova_matches_statsmodels_nested_f_tests(seed):
     reduced = {"↳ Linear": "y ~ x1:x2 + I(x1**2) + I(x2**2)",
                "↳ Two-factor interaction": "y ~ x1 + x2 + I(x1**2) + I(x2**2)",
                "↳ Pure quadratic": "y ~ x1 + x2 + x1:x2"}
-    anova = block_anova(fit).set_index("source")
+    anova = anova_table(fit.anova_frame()).set_index("source")
     for source, formula in reduced.items():
         f, p, df = full.compare_f_test(smf.ols(formula, table).fit())
         assert anova.loc[source, "F"] == pytest.approx(f, rel=1e-8)
@@ -48,7 +48,7 @@ def test_block_anova_matches_statsmodels_nested_f_tests(seed):
 def test_coefficient_table_matches_statsmodels():
     table, fit = _fit(4)
     full = smf.ols("y ~ x1 + x2 + x1:x2 + I(x1**2) + I(x2**2)", table).fit()
-    coef = coefficient_table(fit).set_index("term")
+    coef = coefficient_table(fit.coefficients()).set_index("term")
     for mine, theirs in [("x1", "x1"), ("x2", "x2"), ("x1:x2", "x1:x2"), ("x1^2", "I(x1 ** 2)"),
                          ("Intercept", "Intercept")]:
         assert coef.loc[mine, "estimate"] == pytest.approx(full.params[theirs], rel=1e-9, abs=1e-9)
@@ -58,16 +58,16 @@ def test_coefficient_table_matches_statsmodels():
 
 def test_stationary_point_of_a_known_quadratic():
     # Noise-free y = 50 + 8a - 3b + 4ab - 6a^2 - 2b^2: gradient zero at the solution of the 2x2 system.
+    from demid.canonical import fit_canonical
+
     _, fit = _fit(0, noise=0.0)
     b, big_b = np.array([8.0, -3.0]), np.array([[-6.0, 2.0], [2.0, -2.0]])
     expected = -0.5 * np.linalg.solve(big_b, b)
-    point = stationary_point(fit, [-1.41421] * 2, [1.41421] * 2)
-    assert np.allclose(point.actual, expected, atol=1e-8)
+    point = fit_canonical(fit, threshold=0.0)
+    assert np.allclose(point.stationary_actual, expected, atol=1e-8)
     assert point.kind == "maximum"
     assert point.inside == bool(np.all(np.abs(expected) <= 1.41421))
     assert point.value == pytest.approx(50 + b @ expected + expected @ big_b @ expected, rel=1e-9)
-    outside = stationary_point(fit, [-0.1] * 2, [0.1] * 2)
-    assert not outside.inside
 
 
 @pytest.mark.parametrize("lower, upper, verdict", [
@@ -230,13 +230,13 @@ def test_figures_drawn_in_two_processes_are_the_bytes_of_one(tmp_path):
 
 @pytest.mark.parametrize("log_factor", [False, True])
 def test_stored_fit_prints_what_a_refit_prints(log_factor):
-    """The report reads the fits the fit step stored (parquet round trip) instead of fitting again:
-    block ANOVA, coefficients, actual-unit coefficients and stationary point are the same numbers, bit
-    for bit, as from the statsmodels fit itself (a failed run of y2 included)."""
+    """The report reads the fits and their statistics as the fit step stored them (parquet round trip)
+    instead of fitting again: block ANOVA, coefficients and actual-unit coefficients are the same numbers,
+    bit for bit, as from the statsmodels fit itself (a failed run of y2 included)."""
     from demid.io import as_stored
-    from demid.report.rsm import stored_fits
+    from demid.report.rsm import stored_surfaces
     from demid.spec import MaterialSpec
-    from demid.surrogate import fit_frames, fit_material
+    from demid.surrogate import coding_from_frame, fit_frames, fit_material
 
     def responses(x):
         a, b = x[:, 0], x[:, 1]
@@ -252,13 +252,14 @@ def test_stored_fit_prints_what_a_refit_prints(log_factor):
     table = as_stored(table)
     refits = fit_material(table, spec)
     frames = {name: as_stored(frame) for name, frame in fit_frames(refits).items()}
-    stored = stored_fits(frames["fits"], frames["anova"], table, spec)
-    assert [f.response for f in stored] == ["y1", "y2"]
-    bounds = ([1.0, 2.0], [3.0, 6.0])
-    for refit, fit in zip(refits, stored):
-        pd.testing.assert_frame_equal(block_anova(fit), block_anova(refit), check_exact=True)
-        pd.testing.assert_frame_equal(coefficient_table(fit), coefficient_table(refit), check_exact=True)
-        assert np.array_equal(fit.coefficients()["coefficient_actual"], refit.coefficients()["coefficient_actual"])
-        mine, theirs = stationary_point(fit, *bounds), stationary_point(refit, *bounds)
-        assert (mine.kind, mine.inside, mine.value) == (theirs.kind, theirs.inside, theirs.value)
-        assert np.array_equal(mine.actual, theirs.actual) and fit.coding == refit.coding
+    surfaces = stored_surfaces(frames["fits"], frames["anova"], table, spec)
+    assert [s.response for s in surfaces] == ["y1", "y2"]
+    for refit, surface in zip(refits, surfaces):
+        pd.testing.assert_frame_equal(surface.anova, anova_table(refit.anova_frame()), check_exact=True)
+        pd.testing.assert_frame_equal(surface.coefficients, coefficient_table(refit.coefficients()),
+                                      check_exact=True)
+        assert np.array_equal(surface.actual, refit.coefficients()["coefficient_actual"])
+        assert not surface.blocked
+        assert coding_from_frame(frames["fits"], spec.factor_names) == refit.coding
+
+

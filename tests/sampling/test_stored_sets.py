@@ -13,6 +13,7 @@ import pytest
 from demid.admissibility import evaluate_scenarios
 from demid.sampling import evaluate_set
 from demid.sampling.stored import STATE_COLUMNS, set_state_frame, stored_strict_sets
+from demid.scenario import judged_scenarios
 from demid.spec import MaterialSpec
 from demid.surrogate import fit_response
 
@@ -44,7 +45,7 @@ def material(request):
 
 def test_rebuilt_sets_equal_a_fresh_evaluation(material):
     spec, surrogates, frame, _ = material
-    stored = stored_strict_sets(frame, surrogates, spec, reference=True)
+    stored = stored_strict_sets(frame, judged_scenarios(spec, surrogates, 2.0), reference=True)
     assert set(stored) == {"y1_only", "both"}
     for scen in spec.scenarios:
         fresh = evaluate_set(surrogates, spec.domain, scen.observables, spec.targets, scen.tolerance, 31,
@@ -65,7 +66,7 @@ def test_rebuilt_sets_carry_the_stored_numbers_not_new_ones(material):
     planted.loc[rows, "exact_fraction"] = 0.123
     planted.loc[rows, "unit_upper"] = 0.5
     planted.loc[rows, "reference_distance"] = 0.25
-    got = stored_strict_sets(planted, surrogates, spec, reference=True)["both"]
+    got = stored_strict_sets(planted, judged_scenarios(spec, surrogates, 2.0), reference=True)["both"]
     assert got.fraction == 0.123 and got.exact.fraction == 0.123
     assert got.exact.reference_distance == 0.25
     lo, hi = spec.domain.search_bounds()
@@ -75,7 +76,7 @@ def test_rebuilt_sets_carry_the_stored_numbers_not_new_ones(material):
 
 def test_a_table_without_state_or_for_another_tolerance_gives_no_stored_set(material):
     spec, surrogates, frame, _ = material
-    assert stored_strict_sets(frame.drop(columns=STATE_COLUMNS), surrogates, spec) == {}
+    assert stored_strict_sets(frame.drop(columns=STATE_COLUMNS), judged_scenarios(spec, surrogates, 2.0)) == {}
     other = frame.copy()
     other.loc[other["scenario"] == "both", "tolerance"] = 0.05
-    assert set(stored_strict_sets(other, surrogates, spec)) == {"y1_only"}
+    assert set(stored_strict_sets(other, judged_scenarios(spec, surrogates, 2.0))) == {"y1_only"}

@@ -61,7 +61,7 @@ def test_check_target_says_why_the_target_is_implausible(target, says):
 
 
 def test_a_factor_called_like_an_english_word_is_labelled_only_where_it_stands_for_the_factor():
-    from demid.report.summary import labelled
+    from demid.story.words import labelled
 
     spec = MaterialSpec.from_material("m", {
         "data": "x.csv", "design": {"type": "custom"},

@@ -9,6 +9,7 @@ import pytest
 
 from demid.admissibility import evaluate_scenarios
 from demid.sampling.domain import Domain
+from demid.scenario import JudgedScenario
 from demid.spec import MaterialSpec
 from demid.story import StudyAdvice, material_advice, verdict_frame
 from demid.surrogate import fit_response
@@ -167,15 +168,15 @@ def test_a_wave_that_cannot_narrow_the_set_says_stop_and_one_that_can_does_not(s
     target = 12.5
     # the measurement band (σ = 1) dwarfs the surrogate's se: new runs cannot narrow it
     loose = _spec({"y": {"target": target, "sigma": 1.0}}, {"s": {"observables": ["y"], "tolerance": 0.01}})
-    value = expected_contraction(sur, loose, loose.scenarios[0], 2.0, new_runs)
+    value = expected_contraction(JudgedScenario(loose, loose.scenarios[0], sur, 2.0), new_runs)
     assert value["stop"] and value["expected_contraction"] < 0.10
     # a tight measurement (σ = 0.01): the surrogate's se decides the band, and 12 runs shrink it
     tight = _spec({"y": {"target": target, "sigma": 0.01}}, {"s": {"observables": ["y"], "tolerance": 0.01}})
-    value = expected_contraction(sur, tight, tight.scenarios[0], 2.0, new_runs)
+    value = expected_contraction(JudgedScenario(tight, tight.scenarios[0], sur, 2.0), new_runs)
     assert not value["stop"] and value["expected_contraction"] > 0.2
     # the advice follows the value
     advice = material_advice(loose, pd.DataFrame(columns=["scenario", "factor", "verdict"]),
-                             wave_value=expected_contraction(sur, loose, loose.scenarios[0], 2.0, new_runs))
+                             wave_value=expected_contraction(JudgedScenario(loose, loose.scenarios[0], sur, 2.0), new_runs))
     assert [i.kind for i in advice if i.kind in ("stop", "next_runs")] == ["stop"]
 
 
@@ -185,11 +186,11 @@ def test_recommended_point_is_the_most_robust_plausible_point():
     spec = _spec({"y1": {"target": 0.5}, "y2": {"target": 0.3}},
                  {"s": {"observables": ["y1", "y2"], "tolerance": 0.02}})
     sur = {"y1": _named(linear(0.0, [1.0, 0.0]), "y1"), "y2": _named(linear(0.0, [0.0, 1.0]), "y2")}
-    rec = recommended_point(sur, spec, spec.scenarios[0], 2.0, n=401)
+    rec = recommended_point(JudgedScenario(spec, spec.scenarios[0], sur, 2.0), n=401)
     assert rec["plausible"] and rec["implausibility"] < 0.3
     assert rec["point"]["a"] == pytest.approx(0.5, abs=0.0026) and rec["point"]["b"] == pytest.approx(0.3, abs=0.0026)
     far = _spec({"y1": {"target": 5.0}, "y2": {"target": 0.3}}, {"s": {"observables": ["y1", "y2"], "tolerance": 0.02}})
-    assert not recommended_point(sur, far, far.scenarios[0], 2.0, n=101)["plausible"]
+    assert not recommended_point(JudgedScenario(far, far.scenarios[0], sur, 2.0), n=101)["plausible"]
     assert digits_for(8.76) == 1 and digits_for(0.0091) == 4 and digits_for(0.5) == 2
 
 

@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from demid.report.summary import IDENTIFIED_MAX_WIDTH, UNRESOLVED_MIN_WIDTH
+from demid.story.verdicts import IDENTIFIED_MAX_WIDTH, UNRESOLVED_MIN_WIDTH
 from demid.spec import MaterialSpec
 from demid.story.verdicts import UNINFORMATIVE, VERDICT_COLUMNS, in_combination, verdict_display, verdict_frame
 
