@@ -252,6 +252,17 @@ def _full_rank(points: np.ndarray, k: int) -> int:
     return m.shape[1] - int(np.linalg.matrix_rank(m, tol=1e-8 * max(np.abs(m).max(), 1.0) * len(m)))
 
 
+def design_count(count: int, n_deciding: int, earlier: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> int:
+    """How many of a wave's ``count`` runs are design runs, the criticism's ``n_deciding`` runs taking the others:
+    ``count`` is the wave's whole budget.  The design keeps at least the runs the box's quadratic is short of
+    given the ``earlier`` runs inside the box (search units), so that the next wave's fit is determined whatever
+    the criticism's runs are (they may all be replicates of one point)."""
+    k = len(lo)
+    coded = (np.asarray(earlier, dtype=float).reshape(-1, k) - (lo + hi) / 2) / ((hi - lo) / 2)
+    short = _full_rank(coded, k) if len(coded) else len(quadratic_terms(k))
+    return max(count - n_deciding, min(short, count))
+
+
 def box_support_count(count: int, share: float | None = None) -> int:
     """How many of ``count`` design runs support the whole refocused box (the rest go on the band)."""
     return int(round((BOX_SHARE if share is None else share) * count))
@@ -356,16 +367,19 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     earlier_u = domain.to_search(table[factors].to_numpy(dtype=float))
     inside = np.all((earlier_u >= lo - 1e-12 * (hi - lo)) & (earlier_u <= hi + 1e-12 * (hi - lo)), axis=1)
     alias_sets = aliased_findings(findings, factors)
+    # first: they decide what the surrogate can be trusted with; inside the wave's count, not on top of it
+    deciding, left_out = criticism_runs_in_box(deciding_runs(findings, factors), factors, domain, lo, hi)
+    n_design = design_count(request.count, len(deciding), earlier_u[inside], lo, hi)
+    over_budget = len(deciding) - (request.count - n_design)
+    deciding = deciding[:request.count - n_design]
     cands = plausible_points(surrogates, spec, scenario, BAND_Z_FACTOR * z, lo, hi)
-    points_u, labels = propose_runs(lo, hi, earlier_u[inside], request.count, alias_sets, cands)
+    points_u, labels = propose_runs(lo, hi, earlier_u[inside], n_design, alias_sets, cands)
     points = domain.to_actual(points_u)
     cand_u = np.asarray(cands, dtype=float).reshape(-1, len(factors))
     kind_purpose = {"band": PURPOSE_DESIGN, "box": PURPOSE_DESIGN_BOX, "support": PURPOSE_SUPPORT}
     purposes = [kind_purpose[lab] if isinstance(lab, str) else
                 PURPOSE_SEPARATE.format(terms=" = ".join(term_name(t, factors) for t in lab[0]),
                                         responses=", ".join(lab[1])) for lab in labels]
-    # first: they decide what the surrogate can be trusted with
-    deciding, left_out = criticism_runs_in_box(deciding_runs(findings, factors), factors, domain, lo, hi)
     if deciding:
         points = np.vstack([np.array([[d[f] for f in factors] for d in deciding]), points])
         purposes = [d["purpose"] for d in deciding] + purposes
@@ -399,7 +413,9 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     if left_out:
         reason += (f"; {left_out} run(s) the criticism proposed lie outside the refocused box and are left out (the "
                    f"next wave's table keeps only runs inside it)")
-    n_design = len(points) - len(deciding)
+    if over_budget > 0:
+        reason += (f"; {over_budget} more run(s) the criticism proposed do not fit in the wave's {request.count} "
+                   f"runs and are left out")
     n_band = n_design - n_sep - n_box - n_support
     reason += (f"; {n_design} new runs from a D-optimal quadratic design given the {int(inside.sum())} earlier "
                f"run(s) inside the box: {n_support} over the whole box (its edges and corners)"
@@ -416,7 +432,7 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     # advise stopping only because part of the runs is not aimed at the set.
     if z > 0 and (n_support or BAND_Z_FACTOR != 1) and len(cand_u):
         aimed = plausible_points(surrogates, spec, scenario, z, lo, hi)
-        band_u = propose_runs(lo, hi, earlier_u[inside], request.count, alias_sets, aimed, share=0.0)[0]
+        band_u = propose_runs(lo, hi, earlier_u[inside], n_design, alias_sets, aimed, share=0.0)[0]
         judged = domain.to_actual(band_u)
         if deciding:
             judged = np.vstack([points[:len(deciding)], judged])
