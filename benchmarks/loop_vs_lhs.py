@@ -11,9 +11,9 @@ seeds through 0.2, 0.4, 0.6, 0.8, 1.0 (``--level`` fixes it).  Three ways to spe
 31 runs (a 13-run CCD and up to 3 waves of ``next_runs: {count: 9}``):
 
 * **loop**: demid's waves as the workflow runs them (``workflow/rules/simulation.smk``), replayed in
-  Python: wave 1 = :func:`demid.waves.first_wave`; each wave's table is every run so far, the runs
-  inside the wave's box (:func:`demid.waves.inside_domain`) are analysed by
-  :func:`demid.steps.material_step` on :func:`demid.waves.wave_spec` (as ``scripts/analyse_wave.py``),
+  Python: wave 1 = :func:`demid.waves.first_wave`; each wave's table is every run so far, analysed (as
+  ``scripts/assemble_wave.py`` gives it) by :func:`demid.steps.material_step` on
+  :func:`demid.waves.wave_spec` (as ``scripts/analyse_wave.py``),
   the next wave is :func:`demid.next_wave.plan_waves` on that wave's stored frames and its decision
   :func:`demid.waves.stop_reason` (as ``scripts/propose_wave.py``), and the runs of wave k+1 are
   :func:`demid.waves.next_wave_runs` of the proposals read back from their CSV.  The figures are not
@@ -207,7 +207,7 @@ def run_loop(study: Study, folder: Path) -> dict:
     from demid.io import as_stored, write_csv
     from demid.next_wave import plan_waves, tabulate_waves
     from demid.spec import MaterialSpec
-    from demid.waves import first_wave, inside_domain, next_wave_runs, stop_reason, stops_early, wave_spec
+    from demid.waves import first_wave, next_wave_runs, stop_reason, stops_early, wave_spec
 
     material, grid_points = _checked(_material(study.targets, study.seed))
     spec = MaterialSpec.from_material("m", material, grid_points=grid_points)
@@ -217,7 +217,7 @@ def run_loop(study: Study, folder: Path) -> dict:
     table = _table(points, study.simulate(points, rng))
     domain, scores, stop, largest_wave = None, [], "", 0
     for wave in range(1, WAVES + 1):
-        analysed = inside_domain(table, domain)
+        analysed = table  # scripts/assemble_wave.py: a wave analyses every run so far, over Omega
         wspec, result = _analyse(lambda path: wave_spec(spec, path, domain), analysed, folder, f"wave{wave}")
         scores.append(study.score(_estimate(study, wspec, result)))
         if wave == WAVES:
