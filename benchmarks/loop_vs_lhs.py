@@ -52,6 +52,8 @@ k-1's box with the runs inside it):
     ridge        1.089  1.227  1.000  1.131      1.23      1/10      3/10           0.03  0.08     31
     all          0.999  0.561  0.809  0.747      0.69     28/60     33/60           0.73  0.51     31
     worse than its own first wave in 18/60; over budget in 18/60 (up to 39 runs, a further wave of 17)
+    by noise level 0.2 / 0.4 / 0.6 / 0.8 / 1 band: loop 0.34 / 0.54 / 0.51 / 0.77 / 0.80,
+    LHS 0.62 / 0.62 / 0.67 / 0.81 / 1.00, random 0.86 / 0.67 / 0.63 / 0.70 / 0.89
 
 ``count`` a hard budget per wave (the criticism's runs inside it), still analysed over the box:
 
@@ -63,6 +65,7 @@ k-1's box with the runs inside it):
     ridge        1.089  1.197  1.000  1.131      1.20      1/10      3/10           0.03  0.08     31
     all          0.999  0.708  0.809  0.747      0.88     24/60     31/60           0.69  0.51     31
     worse than its own first wave in 21/60; over budget in 0/60
+    by noise level: loop 0.57 / 0.54 / 0.51 / 0.82 / 0.91
 
 And every wave analysed with every run over Omega (the current code):
 
@@ -74,6 +77,7 @@ And every wave analysed with every run over Omega (the current code):
     ridge        1.089  1.227  1.000  1.131      1.23      1/10      3/10           0.03  0.08     31
     all          0.999  0.670  0.809  0.747      0.83     22/60     27/60           0.69  0.51     22
     worse than its own first wave in 21/60; stopped early in 35/60 (20/60 over the box); over budget in 0/60
+    by noise level: loop 0.59 / 0.61 / 0.62 / 0.70 / 0.86
 
 What it says: the part of the earlier lead that came from runs beyond the budget is gone (0.561 -> 0.708
 at equal budget).  Judged on Omega with every run, the one global quadratic gains where the box cut the set
@@ -348,6 +352,10 @@ def summarise(frame: pd.DataFrame) -> str:
                      f"{int((sub.loop_err < sub.lhs_err).sum()):>5d}/{len(sub):<5d} "
                      f"{int((sub.loop_err < sub.random_err).sum()):>3d}/{len(sub):<5d}  "
                      f"{sub.loop_cover.median():10.2f} {sub.lhs_cover.median():5.2f}  {sub.runs.median():5.0f}")
+    by_level = frame.groupby("level")[["first_err", "loop_err", "lhs_err", "random_err"]].median()
+    lines.append("by noise level (response bands): " + "; ".join(
+        f"{level:g}: CCD {row.first_err:.3f} loop {row.loop_err:.3f} LHS {row.lhs_err:.3f} random {row.random_err:.3f}"
+        for level, row in by_level.iterrows()))
     over = frame[(frame.runs > BUDGET) | (frame.largest_wave > COUNT)]
     worse = frame[frame.loop_err > frame.first_err]
     lines.append(f"loop worse than its own first wave in {len(worse)}/{len(frame)} studies; "
