@@ -290,11 +290,13 @@ def run_loop(study: Study, folder: Path) -> dict:
                           ignore_index=True)
     return {"first_err": scores[0][0], "first_cover": scores[0][1], "loop_err": scores[-1][0],
             "loop_cover": scores[-1][1], "waves": len(scores), "runs": len(table), "largest_wave": largest_wave,
-            "stopped": bool(stop)}
+            "stopped": bool(stop), "table": table}
 
 
-def run_design(study: Study, points: np.ndarray, folder: Path, name: str, stream: int) -> tuple[float, float]:
-    """A one-shot design of the same budget over Omega, through demid's analysis (``design: custom``)."""
+def run_design(study: Study, points: np.ndarray, folder: Path, name: str,
+               stream: int) -> tuple[float, float, pd.DataFrame]:
+    """A one-shot design of the same budget over Omega, through demid's analysis (``design: custom``): set error,
+    coverage and the table of runs."""
     from demid.spec import MaterialSpec
 
     material = copy.deepcopy(_material(study.targets, study.seed))
@@ -306,11 +308,67 @@ def run_design(study: Study, points: np.ndarray, folder: Path, name: str, stream
     def make_spec(path):
         return MaterialSpec.from_material("m", *_checked({**material, "data": str(path)}))
 
-    spec, result = _analyse(make_spec, _table(points, study.simulate(points, rng)), folder, name)
-    return study.score(_estimate(study, spec, result))
+    table = _table(points, study.simulate(points, rng))
+    spec, result = _analyse(make_spec, table, folder, name)
+    return (*study.score(_estimate(study, spec, result)), table)
 
 
-def run_case(name: str, sim, seed: int, level: float, grid: int) -> dict:
+# ------------------------------------------------------------- a diagnostic: kriging on the same runs
+def _quadratic_trend(u: np.ndarray) -> np.ndarray:
+    return np.column_stack([np.ones(len(u)), u, u ** 2, u[:, :1] * u[:, 1:2]])
+
+
+def kriging_mean(u: np.ndarray, y: np.ndarray, at: np.ndarray) -> np.ndarray:
+    """Universal kriging (a quadratic trend with a Gaussian-process residual, squared-exponential kernel with a
+    length per factor and a nugget for the scatter, fitted by restricted maximum likelihood) of ``y`` at ``u``
+    (Omega scaled to [0, 1]), predicted at ``at``: what a surrogate that can follow more than a quadratic makes
+    of the same runs (``--kriging``)."""
+    from scipy.optimize import minimize
+
+    mean, scale = float(np.mean(y)), float(np.std(y)) or 1.0
+    z = (y - mean) / scale
+    f = _quadratic_trend(u)
+    n, p = f.shape
+    d2 = (u[:, None, :] - u[None, :, :]) ** 2
+
+    def parts(theta):
+        lengths, nugget = np.exp(theta[:2]), np.exp(theta[2])
+        k = np.exp(-0.5 * np.sum(d2 / lengths ** 2, axis=2)) + (nugget + 1e-8) * np.eye(n)
+        c = np.linalg.cholesky(k)
+        ki_f = np.linalg.solve(c.T, np.linalg.solve(c, f))
+        ki_z = np.linalg.solve(c.T, np.linalg.solve(c, z))
+        a = f.T @ ki_f
+        beta = np.linalg.solve(a, f.T @ ki_z)
+        resid = z - f @ beta
+        ki_r = np.linalg.solve(c.T, np.linalg.solve(c, resid))
+        return c, a, beta, ki_r, resid, lengths
+
+    def restricted_nll(theta):
+        try:
+            c, a, _, ki_r, resid, _ = parts(theta)
+        except np.linalg.LinAlgError:
+            return 1e10
+        sigma2 = float(resid @ ki_r) / (n - p)
+        return 0.5 * ((n - p) * np.log(max(sigma2, 1e-300)) + 2 * np.sum(np.log(np.diag(c)))
+                      + np.linalg.slogdet(a)[1])
+
+    starts = [np.log([0.3, 0.3, 0.05]), np.log([0.15, 0.15, 0.01]), np.log([0.6, 0.6, 0.2])]
+    best = min((minimize(restricted_nll, s0, method="L-BFGS-B", bounds=[(np.log(0.03), np.log(3.0))] * 2
+                         + [(np.log(1e-6), np.log(10.0))]) for s0 in starts), key=lambda r: r.fun)
+    _, _, beta, ki_r, _, lengths = parts(best.x)
+    k_at = np.exp(-0.5 * np.sum((at[:, None, :] - u[None, :, :]) ** 2 / lengths ** 2, axis=2))
+    return mean + scale * (_quadratic_trend(at) @ beta + k_at @ ki_r)
+
+
+def kriging_score(study: Study, table: pd.DataFrame) -> tuple[float, float]:
+    """Set error and coverage of the strict set of kriging surrogates fitted to ``table``'s runs over Omega."""
+    ok = table[table["status"] == "ok"]
+    u, at = _u(ok[list(FACTORS)].to_numpy(dtype=float)), _u(study.grid)
+    predicted = {r: kriging_mean(u, ok[r].to_numpy(dtype=float), at) for r in study.targets}
+    return study.score(study.inside(predicted))
+
+
+def run_case(name: str, sim, seed: int, level: float, grid: int, kriging: bool = False) -> dict:
     from scipy.stats import qmc
 
     study = Study(sim, seed, level, grid)
@@ -321,9 +379,13 @@ def run_case(name: str, sim, seed: int, level: float, grid: int) -> dict:
         lhs = run_design(study, lhs_points, folder, "lhs", 2)
         rand_points = LO + np.random.default_rng([seed, 3]).random((BUDGET, len(FACTORS))) * (HI - LO)
         rand = run_design(study, rand_points, folder, "random", 4)
-    return {"simulator": name, "seed": seed, "level": level,
-            "true_share_pct": 100 * float(study.truth.mean()), **loop,
-            "lhs_err": lhs[0], "lhs_cover": lhs[1], "random_err": rand[0], "random_cover": rand[1]}
+    row = {"simulator": name, "seed": seed, "level": level, "true_share_pct": 100 * float(study.truth.mean()),
+           **{k: v for k, v in loop.items() if k != "table"},
+           "lhs_err": lhs[0], "lhs_cover": lhs[1], "random_err": rand[0], "random_cover": rand[1]}
+    if kriging:
+        for method, table in (("loop", loop["table"]), ("lhs", lhs[2]), ("random", rand[2])):
+            row[f"{method}_kriging_err"], row[f"{method}_kriging_cover"] = kriging_score(study, table)
+    return row
 
 
 def _quiet_figures() -> None:
@@ -356,6 +418,11 @@ def summarise(frame: pd.DataFrame) -> str:
     lines.append("by noise level (response bands): " + "; ".join(
         f"{level:g}: CCD {row.first_err:.3f} loop {row.loop_err:.3f} LHS {row.lhs_err:.3f} random {row.random_err:.3f}"
         for level, row in by_level.iterrows()))
+    if "loop_kriging_err" in frame:
+        lines.append("kriging on the same runs (medians; loop/LHS, wins vs LHS): " + "; ".join(
+            f"{name} loop {sub.loop_kriging_err.median():.3f} LHS {sub.lhs_kriging_err.median():.3f} random "
+            f"{sub.random_kriging_err.median():.3f} ({sub.loop_kriging_err.median() / sub.lhs_kriging_err.median():.2f}, "
+            f"{int((sub.loop_kriging_err < sub.lhs_kriging_err).sum())}/{len(sub)})" for name, sub in groups))
     over = frame[(frame.runs > BUDGET) | (frame.largest_wave > COUNT)]
     worse = frame[frame.loop_err > frame.first_err]
     lines.append(f"loop worse than its own first wave in {len(worse)}/{len(frame)} studies; "
@@ -376,6 +443,8 @@ def main(argv=None):
     parser.add_argument("--simulators", default=",".join(SIMULATORS))
     parser.add_argument("--grid", type=int, default=201, help="common scoring grid, points per factor")
     parser.add_argument("--csv", default="", help="write the per-study rows here")
+    parser.add_argument("--kriging", action="store_true",
+                        help="also score universal kriging fitted to each method's runs (a diagnostic for the surrogate)")
     args = parser.parse_args(argv)
     _quiet_figures()
     seeds = 4 if args.quick else args.seeds
@@ -384,7 +453,7 @@ def main(argv=None):
     for name in args.simulators.split(","):
         for seed in range(args.seed_start, args.seed_start + seeds):
             level = args.level if args.level is not None else LEVELS[seed % len(LEVELS)]
-            rows.append(run_case(name, SIMULATORS[name], seed, level, args.grid))
+            rows.append(run_case(name, SIMULATORS[name], seed, level, args.grid, args.kriging))
             r = rows[-1]
             print(f"{name:11s} seed {seed:3d} level {level:.1f}  true {r['true_share_pct']:5.2f} % of Omega  "
                   f"CCD {r['first_err']:.3f}  loop {r['loop_err']:.3f} ({r['runs']} runs, {r['waves']} waves)  "
