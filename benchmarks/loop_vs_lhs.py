@@ -90,6 +90,20 @@ method's runs over Omega, strict set as above; median set error, loop/LHS, loop'
     ridge      loop 1.067  LHS 0.912  random 0.829   1.17   3/10
     all        loop 0.501  LHS 0.624  random 0.596   0.80  36/60
 
+With every wave run (``--full-budget``, ``waves.stop_early: false``; the quadratic as above, then kriging on
+the same runs):
+
+    saturating   0.582  0.338  0.648  0.659      0.52      8/10      9/10           0.79  0.65     31
+    periodic     1.794  1.811  1.958  1.609      0.92      4/10      4/10           0.34  0.02     31
+    step         0.777  0.764  0.809  0.745      0.94      4/10      5/10           0.61  0.47     31
+    crossing     0.467  0.211  0.246  0.232      0.86      6/10      5/10           0.88  0.88     31
+    corner       0.685  0.300  0.299  0.290      1.00      4/10      4/10           1.00  0.91     31
+    ridge        1.089  1.227  1.000  1.131      1.23      1/10      4/10           0.03  0.08     31
+    all          0.999  0.522  0.809  0.747      0.65     27/60     31/60           0.73  0.51     31
+    worse than its own first wave in 18/60; over budget in 0/60
+    kriging: saturating 0.354 (LHS 0.596), periodic 0.494 (0.819), step 0.678 (0.617), crossing 0.253
+    (0.500, 10/10 wins), corner 0.238 (0.337), ridge 1.067 (0.912); all 0.459 against 0.624 (0.74, 40/60 wins)
+
 What it says: the part of the earlier lead that came from runs beyond the budget is gone (0.561 -> 0.708
 at equal budget).  Judged on Omega with every run, the one global quadratic gains where the box cut the set
 (crossing 0.50 -> 0.24, saturating 0.45 -> 0.36) and loses where a box-local quadratic followed what the
@@ -98,7 +112,9 @@ Nowhere is the goal met (loop <= 0.5 x LHS overall, <= 0.8 x on each simulator):
 defeat every quadratic (the ridge's set is missed by all three designs), and the runs need a surrogate that
 follows a response the quadratic cannot, judged over Omega.  Kriging on the same runs shows how much: the
 loop's runs give 0.50 (periodic 1.81 -> 0.49), LHS's 0.62; the corner target stays behind, where the loop
-stopped after 13 or 22 runs (the median study simulates 22 of its 31 runs).
+stopped after 13 or 22 runs (the median study simulates 22 of its 31 runs).  The stop rule costs as much
+as the surrogate: with every wave run the loop's median is 0.52 (0.65 x LHS), 0.46 with kriging (0.74 x
+kriging on LHS's runs, the corner now ahead); the step and the ridge remain where no surrogate here helps.
 """
 
 from __future__ import annotations
@@ -443,7 +459,7 @@ def summarise(frame: pd.DataFrame) -> str:
     over = frame[(frame.runs > BUDGET) | (frame.largest_wave > COUNT)]
     worse = frame[frame.loop_err > frame.first_err]
     lines.append(f"loop worse than its own first wave in {len(worse)}/{len(frame)} studies; "
-                 f"stopped early in {int(frame.stopped.sum())}/{len(frame)}; runs per study "
+                 f"stop advised in {int(frame.stopped.sum())}/{len(frame)}; runs per study "
                  f"{frame.runs.min()}–{frame.runs.max()} (budget {BUDGET}), largest further wave "
                  f"{frame.largest_wave.max()} runs (count {COUNT}); over budget in {len(over)}/{len(frame)}"
                  + ("" if over.empty else ": " + ", ".join(f"{r.simulator} seed {r.seed} ({r.runs} runs, a wave of "
