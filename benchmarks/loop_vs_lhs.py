@@ -308,7 +308,7 @@ def run_loop(study: Study, folder: Path) -> dict:
         frames = {name: {"m": as_stored(result.parquet[name])} for name in ("tables", "fits", "robust", "findings")
                   if name in result.parquet}
         frames["tables"] = {"m": as_stored(result.parquet["table"])}
-        planned = plan_waves({"m": wspec}, frames, z=Z)
+        planned = plan_waves({"m": wspec}, frames, z=Z, analysed_over_omega=True)  # as scripts/propose_wave.py
         next_domain, proposals, _ = tabulate_waves({"m": wspec}, planned)
         stop = stop_reason(planned["m"].value)
         if stop and stops_early(spec):

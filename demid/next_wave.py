@@ -345,7 +345,8 @@ def plausible_points(surrogates: dict, spec: MaterialSpec, scenario: str, z: flo
 
 
 def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: MaterialSpec,
-                   robust: pd.DataFrame, findings: pd.DataFrame | None = None, *, z: float) -> NextWave:
+                   robust: pd.DataFrame, findings: pd.DataFrame | None = None, *, z: float,
+                   analysed_over_omega: bool = False) -> NextWave:
     """The next domain and runs of one material with ``next_runs``.
 
     ``spec``: the material's :class:`~demid.spec.MaterialSpec`.
@@ -353,7 +354,9 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     its plausible spans of the refocus scenario are used as they are.  ``findings``: the material's
     criticism findings (missing terms with aliases get separating runs).  ``z``: the config's
     ``robust_z``, the same as for the robust set, so that the plausible grid points used for the
-    design are those of that set.
+    design are those of that set.  ``analysed_over_omega``: the next wave analyses every run over the search
+    range (a simulated material's waves), so the criticism's runs outside the box are made too; by hand the
+    next wave is studied in the box and they are left out.
     """
     request = spec.next_runs
     factors = spec.factor_names
@@ -368,7 +371,9 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     inside = np.all((earlier_u >= lo - 1e-12 * (hi - lo)) & (earlier_u <= hi + 1e-12 * (hi - lo)), axis=1)
     alias_sets = aliased_findings(findings, factors)
     # first: they decide what the surrogate can be trusted with; inside the wave's count, not on top of it
-    deciding, left_out = criticism_runs_in_box(deciding_runs(findings, factors), factors, domain, lo, hi)
+    proposed = deciding_runs(findings, factors)
+    deciding, left_out = (proposed, 0) if analysed_over_omega else criticism_runs_in_box(proposed, factors, domain,
+                                                                                         lo, hi)
     n_design = design_count(request.count, len(deciding), earlier_u[inside], lo, hi)
     over_budget = len(deciding) - (request.count - n_design)
     deciding = deciding[:request.count - n_design]
@@ -442,8 +447,8 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     return NextWave(dom_frame, runs, reason, value)
 
 
-def plan_waves(specs: dict, frames: dict, *, z: float) -> dict[str, NextWave]:
-    """:func:`plan_next_wave` for every material given.
+def plan_waves(specs: dict, frames: dict, *, z: float, analysed_over_omega: bool = False) -> dict[str, NextWave]:
+    """:func:`plan_next_wave` for every material given (``analysed_over_omega``: see there).
 
     ``specs``: material -> :class:`~demid.spec.MaterialSpec`.
     ``frames``: ``tables``, ``fits``, ``robust``, ``findings`` -> material -> frame (the pipeline's
@@ -457,7 +462,8 @@ def plan_waves(specs: dict, frames: dict, *, z: float) -> dict[str, NextWave]:
         if "status" in table:
             table = table[table["status"] != "failed"]
         surrogates = surrogates_from_frame(frames["fits"][m], spec.factor_names)
-        waves[m] = plan_next_wave(m, table, surrogates, spec, frames["robust"][m], frames["findings"][m], z=z)
+        waves[m] = plan_next_wave(m, table, surrogates, spec, frames["robust"][m], frames["findings"][m], z=z,
+                                  analysed_over_omega=analysed_over_omega)
     return waves
 
 

@@ -368,3 +368,24 @@ def test_the_count_is_the_whole_wave_the_criticism_runs_included():
     new = np.vstack([inside, twelve.runs[["a", "b"]].to_numpy(dtype=float)])
     coded = (new - (lo + hi) / 2) / ((hi - lo) / 2)
     assert np.linalg.matrix_rank(model_matrix(coded, quadratic_terms(2))) == 6  # the next fit is determined
+
+
+def test_a_simulated_wave_makes_the_criticism_runs_outside_the_box_too():
+    """A simulated material's next wave analyses every run over the search range, so a criticism run far outside
+    the refocused box (a replicate of a misfitting run, say) is made, first and within the count; by hand the
+    next wave is studied in the box, and the run is left out and counted."""
+    import json
+
+    from demid.next_wave import PURPOSE_DECIDE
+
+    table, surrogates, spec, robust = _annulus_material(count=9)
+    far = {"a": 0.95, "b": 0.05, "purpose": PURPOSE_DECIDE}
+    findings = pd.DataFrame([{"response": "y", "cause": "ambiguous", "detail": "outlier (3);step (9)", "aliases": "",
+                              "discriminating_runs": json.dumps([far, far])}])
+    by_hand = plan_next_wave("m", table, surrogates, spec, robust, findings, z=2.0)
+    assert PURPOSE_DECIDE not in by_hand.runs["purpose"].tolist()
+    assert "2 run(s) the criticism proposed lie outside the refocused box and are left out" in by_hand.reason
+    simulated = plan_next_wave("m", table, surrogates, spec, robust, findings, z=2.0, analysed_over_omega=True)
+    assert len(simulated.runs) == 9 and simulated.runs["purpose"].tolist()[:2] == [PURPOSE_DECIDE] * 2
+    assert simulated.runs[["a", "b"]].to_numpy()[:2].tolist() == [[0.95, 0.05]] * 2
+    assert "left out" not in simulated.reason
