@@ -253,6 +253,17 @@ def _full_rank(points: np.ndarray, k: int) -> int:
     return m.shape[1] - int(np.linalg.matrix_rank(m, tol=1e-8 * max(np.abs(m).max(), 1.0) * len(m)))
 
 
+def design_count(count: int, n_deciding: int, earlier: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> int:
+    """How many of a wave's ``count`` runs are design runs, the criticism's ``n_deciding`` runs taking the others:
+    ``count`` is the wave's whole budget.  The design keeps at least the runs the box's quadratic is short of
+    given the ``earlier`` runs inside the box (search units), so that the next wave's fit is determined whatever
+    the criticism's runs are (they may all be replicates of one point)."""
+    k = len(lo)
+    coded = (np.asarray(earlier, dtype=float).reshape(-1, k) - (lo + hi) / 2) / ((hi - lo) / 2)
+    short = _full_rank(coded, k) if len(coded) else len(quadratic_terms(k))
+    return max(count - n_deciding, min(short, count))
+
+
 def box_support_count(count: int, share: float | None = None) -> int:
     """How many of ``count`` design runs support the whole refocused box (the rest go on the band)."""
     return int(round((BOX_SHARE if share is None else share) * count))
@@ -338,7 +349,7 @@ def _box_reason(spec: MaterialSpec, refocus, lo, hi, lower_actual, upper_actual,
 
 
 def _wave_value(judged: JudgedScenario, lo: np.ndarray, hi: np.ndarray, points: np.ndarray, n_deciding: int,
-                earlier_inside: np.ndarray, alias_sets, aim: bool) -> dict:
+                earlier_inside: np.ndarray, n_design: int, alias_sets, aim: bool) -> dict:
     """What the wave can still buy (:func:`~demid.wave_value.expected_contraction`).
 
     With ``aim`` it is judged on the same number of runs all aimed at the plausible set (at robust_z, no
@@ -351,7 +362,7 @@ def _wave_value(judged: JudgedScenario, lo: np.ndarray, hi: np.ndarray, points: 
         return expected_contraction(judged, points)
     domain = judged.spec.domain
     aimed = plausible_points(judged, lo, hi)
-    band_u = propose_runs(lo, hi, earlier_inside, judged.spec.next_runs.count, alias_sets, aimed, share=0.0)[0]
+    band_u = propose_runs(lo, hi, earlier_inside, n_design, alias_sets, aimed, share=0.0)[0]
     wave_runs = domain.to_actual(band_u)
     if n_deciding:
         wave_runs = np.vstack([points[:n_deciding], wave_runs])
@@ -359,7 +370,8 @@ def _wave_value(judged: JudgedScenario, lo: np.ndarray, hi: np.ndarray, points: 
 
 
 def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: MaterialSpec,
-                   robust: pd.DataFrame, findings: pd.DataFrame | None = None, *, z: float) -> NextWave:
+                   robust: pd.DataFrame, findings: pd.DataFrame | None = None, *, z: float,
+                   analysed_over_omega: bool = False) -> NextWave:
     """The next domain and runs of one material with ``next_runs``.
 
     ``spec``: the material's :class:`~demid.spec.MaterialSpec`.
@@ -367,7 +379,9 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     its plausible spans of the refocus scenario are used as they are.  ``findings``: the material's
     criticism findings (missing terms with aliases get separating runs).  ``z``: the config's
     ``robust_z``, the same as for the robust set, so that the plausible grid points used for the
-    design are those of that set.
+    design are those of that set.  ``analysed_over_omega``: the next wave analyses every run over the search
+    range (a simulated material's waves), so the criticism's runs outside the box are made too; by hand the
+    next wave is studied in the box and they are left out.
     """
     request = spec.next_runs
     factors = spec.factor_names
@@ -383,18 +397,23 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     alias_sets = aliased_findings(findings, factors)
     from .scenario import JudgedScenario
 
+    # first: they decide what the surrogate can be trusted with; inside the wave's count, not on top of it
+    proposed = deciding_runs(findings, factors)
+    deciding, left_out = (proposed, 0) if analysed_over_omega else criticism_runs_in_box(proposed, factors, domain,
+                                                                                         lo, hi)
+    n_design = design_count(request.count, len(deciding), earlier_u[inside], lo, hi)
+    over_budget = len(deciding) - (request.count - n_design)
+    deciding = deciding[:request.count - n_design]
     refocus = next(sc for sc in spec.scenarios if sc.name == scenario)
     judged = JudgedScenario(spec, refocus, surrogates, z)  # the plausible set; its band at twice z below
     cands = plausible_points(JudgedScenario(spec, refocus, surrogates, BAND_Z_FACTOR * z), lo, hi)
-    points_u, labels = propose_runs(lo, hi, earlier_u[inside], request.count, alias_sets, cands)
+    points_u, labels = propose_runs(lo, hi, earlier_u[inside], n_design, alias_sets, cands)
     points = domain.to_actual(points_u)
     cand_u = np.asarray(cands, dtype=float).reshape(-1, len(factors))
     kind_purpose = {"band": PURPOSE_DESIGN, "box": PURPOSE_DESIGN_BOX, "support": PURPOSE_SUPPORT}
     purposes = [kind_purpose[lab] if isinstance(lab, str) else
                 PURPOSE_SEPARATE.format(terms=" = ".join(term_name(t, factors) for t in lab[0]),
                                         responses=", ".join(lab[1])) for lab in labels]
-    # first: they decide what the surrogate can be trusted with
-    deciding, left_out = criticism_runs_in_box(deciding_runs(findings, factors), factors, domain, lo, hi)
     if deciding:
         points = np.vstack([np.array([[d[f] for f in factors] for d in deciding]), points])
         purposes = [d["purpose"] for d in deciding] + purposes
@@ -416,7 +435,9 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     if left_out:
         reason += (f"; {left_out} run(s) the criticism proposed lie outside the refocused box and are left out (the "
                    f"next wave's table keeps only runs inside it)")
-    n_design = len(points) - len(deciding)
+    if over_budget > 0:
+        reason += (f"; {over_budget} more run(s) the criticism proposed do not fit in the wave's {request.count} "
+                   f"runs and are left out")
     n_band = n_design - n_sep - n_box - n_support
     reason += (f"; {n_design} new runs from a D-optimal quadratic design given the {int(inside.sum())} earlier "
                f"run(s) inside the box: {n_support} over the whole box (its edges and corners)"
@@ -425,13 +446,13 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
                   f"the quadratic" if n_box else "")
                + (f", {n_sep} to separate aliased terms the criticism found" if n_sep else "") + ".")
     aim = bool(z > 0 and (n_support or BAND_Z_FACTOR != 1) and len(cand_u))
-    value = (_wave_value(judged, lo, hi, points, len(deciding), earlier_u[inside], alias_sets, aim)
+    value = (_wave_value(judged, lo, hi, points, len(deciding), earlier_u[inside], n_design, alias_sets, aim)
              if z > 0 else None)
     return NextWave(dom_frame, runs, reason, value)
 
 
-def plan_waves(specs: dict, frames: dict, *, z: float) -> dict[str, NextWave]:
-    """:func:`plan_next_wave` for every material given.
+def plan_waves(specs: dict, frames: dict, *, z: float, analysed_over_omega: bool = False) -> dict[str, NextWave]:
+    """:func:`plan_next_wave` for every material given (``analysed_over_omega``: see there).
 
     ``specs``: material -> :class:`~demid.spec.MaterialSpec`.
     ``frames``: ``tables``, ``fits``, ``robust``, ``findings`` -> material -> frame (the pipeline's
@@ -445,7 +466,8 @@ def plan_waves(specs: dict, frames: dict, *, z: float) -> dict[str, NextWave]:
         if "status" in table:
             table = table[table["status"] != "failed"]
         surrogates = surrogates_from_frame(frames["fits"][m], spec.factor_names)
-        waves[m] = plan_next_wave(m, table, surrogates, spec, frames["robust"][m], frames["findings"][m], z=z)
+        waves[m] = plan_next_wave(m, table, surrogates, spec, frames["robust"][m], frames["findings"][m], z=z,
+                                  analysed_over_omega=analysed_over_omega)
     return waves
 
 

@@ -178,7 +178,8 @@ class MaterialAnalysis:
 
 def _next_box_points(spec: MaterialSpec, robust: pd.DataFrame) -> np.ndarray | None:
     """Where the criticism chooses the runs it proposes when a next wave will make them: the next box's grid
-    (the wave's table keeps only runs inside the box); None without ``next_runs``."""
+    (a next wave made by hand keeps only runs inside the box; a simulated one places its design there); None
+    without ``next_runs``."""
     if spec.next_runs is None:
         return None
     from .next_wave import box_points, planned_box

@@ -1,9 +1,11 @@
 """Waves of a simulated material: which runs each wave simulates and what each wave analyses.
 
 Wave 1 is the declared design over the configured bounds (:func:`first_wave`).
-Wave k+1 simulates wave k's proposed runs (``waves.next_runs``, in wave k's refocused box) and is
-analysed as a user would analyse it by hand: over that box (``next_domain``), with every run of
-waves 1..k+1 that lies inside it, as a ``custom`` design.  Run numbers continue across waves.
+Wave k+1 simulates wave k's proposed runs (``waves.next_runs``, placed in wave k's refocused box) and is
+analysed with every run of waves 1..k+1 over the search range Omega the user declared, as a ``custom``
+design: a box is only where runs were placed, so every fraction, width and verdict of every wave is
+relative to Omega, and no part of the set is reported empty because it lies outside the last box.
+Run numbers continue across waves.
 """
 
 from __future__ import annotations
@@ -45,10 +47,10 @@ def first_wave(spec: MaterialSpec, seed: int) -> pd.DataFrame:
 
 
 def wave_material(material: dict, data: str, domain: pd.DataFrame | None = None) -> dict:
-    """The ``materials`` entry wave k analyses: the table ``data`` and, after wave 1, the refocused box
-    ``domain`` (``factor, lower, upper``) as bounds with a ``custom`` design.  A reference point outside
-    the box and published statistics (of another table) are dropped; ``waves.next_runs`` is the wave's
-    ``next_runs``."""
+    """The ``materials`` entry wave k analyses: the table ``data`` over the declared bounds (Omega) and, after
+    wave 1 (a refocused box ``domain`` placed its runs), a ``custom`` design: the table holds every run of
+    waves 1..k, not the declared design.  Published statistics (of another table) are dropped;
+    ``waves.next_runs`` is the wave's ``next_runs``."""
     mat = copy.deepcopy(material)
     mat.pop("simulation", None)
     waves = mat.pop("waves", None) or {}
@@ -57,13 +59,7 @@ def wave_material(material: dict, data: str, domain: pd.DataFrame | None = None)
         mat["next_runs"] = copy.deepcopy(waves["next_runs"])
     if domain is None:
         return mat
-    bounds = domain.set_index("factor")
-    for name, factor in mat["factors"].items():
-        factor["lower"], factor["upper"] = float(bounds.at[name, "lower"]), float(bounds.at[name, "upper"])
     mat["design"] = {"type": "custom"}
-    ref = mat.get("reference_point")
-    if ref and not all(mat["factors"][f]["lower"] <= v <= mat["factors"][f]["upper"] for f, v in ref.items()):
-        mat.pop("reference_point")
     for response in mat["responses"].values():
         response.pop("published", None)
     mat.pop("confirmed_values", None)
@@ -77,7 +73,8 @@ def wave_spec(spec: MaterialSpec, data: str, domain: pd.DataFrame | None = None)
 
 
 def inside_domain(table: pd.DataFrame, domain: pd.DataFrame | None, rel_tol: float = 1e-9) -> pd.DataFrame:
-    """The runs of ``table`` inside the box ``domain`` (all runs when there is none)."""
+    """The runs of ``table`` inside the box ``domain`` (all runs when there is none).  A wave analyses every
+    run (see the module docstring); this says which of them lie where a box placed runs."""
     if domain is None:
         return table
     keep = np.ones(len(table), dtype=bool)
@@ -173,17 +170,18 @@ def box_share(spec: MaterialSpec, domain: pd.DataFrame | None) -> float:
     return float(np.prod((hi - lo) / (omega_hi - omega_lo)))
 
 
-HISTORY_COLUMNS = ["material", "wave", "runs_simulated", "runs_analysed", "scenario", "feasible_fraction_pct",
-                   "feasible_fraction_of_omega_pct", "factor", "lower", "upper", "width", "box_lower", "box_upper"]
+HISTORY_COLUMNS = ["material", "wave", "runs_simulated", "runs_analysed", "scenario", "feasible_fraction_of_omega_pct",
+                   "factor", "lower", "upper", "width", "box_lower", "box_upper", "box_share_of_omega_pct"]
 
 
 def wave_history(spec: MaterialSpec, waves: list[dict]) -> pd.DataFrame:
-    """The admissible sets wave by wave: per wave, scenario and factor the span, the wave's box
-    (``box_lower``, ``box_upper``) and the feasible fraction, of the wave's own box (as the wave's tables
-    give it) and of Omega (that times the box's share of Omega, so that waves over shrinking boxes compare).
+    """The admissible sets wave by wave: per wave, scenario and factor the set's span (``lower``, ``upper``,
+    ``width``: over Omega, in actual units) and its feasible fraction of Omega (each wave is analysed over
+    Omega), and the box the wave's new runs were placed in (``box_lower``, ``box_upper`` and its share of
+    Omega; Omega itself for wave 1).
 
     ``waves``: per wave in order, ``scenarios`` (its scenarios frame), ``domain`` (its box, None for
-    wave 1), ``simulated`` (runs simulated up to it, failed ones included) and ``analysed`` (runs in its box).
+    wave 1), ``simulated`` (runs simulated up to it, failed ones included) and ``analysed`` (runs it analysed).
     """
     rows = []
     for number, wave in enumerate(waves, start=1):
@@ -194,9 +192,8 @@ def wave_history(spec: MaterialSpec, waves: list[dict]) -> pd.DataFrame:
         for row in frame.itertuples():
             rows.append({"material": spec.name, "wave": number, "runs_simulated": int(wave["simulated"]),
                          "runs_analysed": int(wave["analysed"]), "scenario": row.scenario,
-                         "feasible_fraction_pct": float(row.feasible_fraction_pct),
-                         "feasible_fraction_of_omega_pct": float(row.feasible_fraction_pct) * share,
+                         "feasible_fraction_of_omega_pct": float(row.feasible_fraction_pct),
                          "factor": row.factor, "lower": float(row.lower), "upper": float(row.upper),
                          "width": float(row.width), "box_lower": box[row.factor][0],
-                         "box_upper": box[row.factor][1]})
+                         "box_upper": box[row.factor][1], "box_share_of_omega_pct": 100 * share})
     return pd.DataFrame(rows, columns=HISTORY_COLUMNS)

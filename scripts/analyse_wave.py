@@ -1,5 +1,5 @@
-"""Snakemake script: one wave of a simulated material, analysed like a finished table (over the wave's
-search box, with the runs inside it)."""
+"""Snakemake script: one wave of a simulated material, analysed like a finished table (every run so far,
+over the declared search range Omega; after wave 1 as a custom design)."""
 
 import sys
 

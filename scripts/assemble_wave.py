@@ -1,5 +1,5 @@
 """Snakemake script: a simulated material's table after one wave (every run so far, and the runs the
-wave analyses: those inside its search box)."""
+wave analyses: every run so far too, over the search range Omega; failed runs stay failed rows)."""
 
 import json
 import sys
@@ -7,11 +7,8 @@ from pathlib import Path
 
 sys.stderr = open(snakemake.log[0], "w", encoding="utf-8")  # noqa: F821
 
-import pandas as pd  # noqa: E402
-
 from demid.io import write_full_csv  # noqa: E402
 from demid.simulation import assemble_table  # noqa: E402
-from demid.waves import inside_domain  # noqa: E402
 
 inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
 
@@ -22,6 +19,5 @@ def read(path):
 
 records = [(read(p), read(r)) for p, r in zip(inp.params, inp.records)]
 table = assemble_table(records, params.factors, params.responses)
-domain = pd.read_csv(inp.domain) if "domain" in inp.keys() else None
 write_full_csv(table, out.table)
-write_full_csv(inside_domain(table, domain), out.analysed)
+write_full_csv(table, out.analysed)

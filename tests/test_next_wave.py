@@ -328,3 +328,64 @@ def test_the_reason_lists_the_factors_whose_range_narrows_and_counts_the_earlier
     assert kept.reason.startswith("The plausible set of scenario 'y' (y) reaches (within the margin) every edge of "
                                   f"the current range, so the range is kept; 9 new runs from a D-optimal quadratic "
                                   f"design given the {len(table)} earlier run(s) inside the box: ")
+
+
+def test_the_count_is_the_whole_wave_the_criticism_runs_included():
+    """next_runs.count is a wave's budget: the runs the criticism proposes take places among the count, ahead of
+    the design, not on top of it; those beyond it are left out and the reason says so.  The design keeps the runs
+    the box's quadratic is short of given the earlier runs inside the box, so 12 replicates of one point cannot
+    leave the next fit undetermined."""
+    import json
+
+    from demid.next_wave import PURPOSE_DECIDE
+
+    table, surrogates, spec, robust = _annulus_material(count=9)
+    plain = plan_next_wave("m", table, surrogates, spec, robust, None, z=2.0)
+    box = plain.domain.set_index("factor")
+    middle = {f: float((box.at[f, "lower"] + box.at[f, "upper"]) / 2) for f in ("a", "b")}
+
+    def findings(n):
+        runs = [{**middle, "purpose": PURPOSE_DECIDE}] * n
+        return pd.DataFrame([{"response": "y", "cause": "ambiguous", "detail": "outlier (3);step (9)", "aliases": "",
+                              "discriminating_runs": json.dumps(runs)}])
+
+    four = plan_next_wave("m", table, surrogates, spec, robust, findings(4), z=2.0)
+    assert len(plain.runs) == 9 and len(four.runs) == 9
+    assert four.runs["purpose"].tolist()[:4] == [PURPOSE_DECIDE] * 4
+    assert PURPOSE_DECIDE not in four.runs["purpose"].tolist()[4:]
+    assert "left out" not in four.reason
+
+    from demid.next_wave import design_count
+
+    lo, hi = (box[["lower", "upper"]].to_numpy().T)
+    earlier = table[["a", "b"]].to_numpy(dtype=float)
+    inside = earlier[np.all((earlier >= lo - 1e-12) & (earlier <= hi + 1e-12), axis=1)]
+    short = 6 - np.linalg.matrix_rank(model_matrix((inside - (lo + hi) / 2) / ((hi - lo) / 2), quadratic_terms(2)))
+    assert design_count(9, 12, inside, lo, hi) == short > 0  # the refocused box holds too few earlier runs
+    twelve = plan_next_wave("m", table, surrogates, spec, robust, findings(12), z=2.0)
+    assert len(twelve.runs) == 9 and twelve.runs["purpose"].tolist().count(PURPOSE_DECIDE) == 9 - short
+    assert f"; {12 - (9 - short)} more run(s) the criticism proposed do not fit in the wave's 9 runs" in twelve.reason
+    new = np.vstack([inside, twelve.runs[["a", "b"]].to_numpy(dtype=float)])
+    coded = (new - (lo + hi) / 2) / ((hi - lo) / 2)
+    assert np.linalg.matrix_rank(model_matrix(coded, quadratic_terms(2))) == 6  # the next fit is determined
+
+
+def test_a_simulated_wave_makes_the_criticism_runs_outside_the_box_too():
+    """A simulated material's next wave analyses every run over the search range, so a criticism run far outside
+    the refocused box (a replicate of a misfitting run, say) is made, first and within the count; by hand the
+    next wave is studied in the box, and the run is left out and counted."""
+    import json
+
+    from demid.next_wave import PURPOSE_DECIDE
+
+    table, surrogates, spec, robust = _annulus_material(count=9)
+    far = {"a": 0.95, "b": 0.05, "purpose": PURPOSE_DECIDE}
+    findings = pd.DataFrame([{"response": "y", "cause": "ambiguous", "detail": "outlier (3);step (9)", "aliases": "",
+                              "discriminating_runs": json.dumps([far, far])}])
+    by_hand = plan_next_wave("m", table, surrogates, spec, robust, findings, z=2.0)
+    assert PURPOSE_DECIDE not in by_hand.runs["purpose"].tolist()
+    assert "2 run(s) the criticism proposed lie outside the refocused box and are left out" in by_hand.reason
+    simulated = plan_next_wave("m", table, surrogates, spec, robust, findings, z=2.0, analysed_over_omega=True)
+    assert len(simulated.runs) == 9 and simulated.runs["purpose"].tolist()[:2] == [PURPOSE_DECIDE] * 2
+    assert simulated.runs[["a", "b"]].to_numpy()[:2].tolist() == [[0.95, 0.05]] * 2
+    assert "left out" not in simulated.reason

@@ -11,6 +11,7 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -180,7 +181,9 @@ def test_schema_documents_and_defaults_the_simulation_block():
         validate_schema({"materials": {"m": _material("sim {a}", simulation={"command": "x", "shell": True})}})
 
 
-def test_wave_history_scales_each_wave_fraction_by_its_box_share_of_omega():
+def test_wave_history_gives_each_wave_fraction_of_omega_and_the_box_its_runs_were_placed_in():
+    """Every wave is analysed over Omega, so its fraction is the history's as it is; the box is only where the
+    wave's runs were placed, with its share of Omega."""
     from demid.waves import box_share, wave_history
 
     mat = _material(_command())
@@ -194,8 +197,10 @@ def test_wave_history_scales_each_wave_fraction_by_its_box_share_of_omega():
     history = wave_history(spec, [{"scenarios": sets, "domain": None, "simulated": 11, "analysed": 11},
                                   {"scenarios": sets, "domain": box, "simulated": 17, "analysed": 9}])
     assert list(history["wave"]) == [1, 1, 2, 2] and list(history["runs_simulated"]) == [11, 11, 17, 17]
-    assert list(history["feasible_fraction_of_omega_pct"]) == pytest.approx([8.0, 8.0, 2.0, 2.0])
+    assert list(history["feasible_fraction_of_omega_pct"]) == pytest.approx([8.0, 8.0, 8.0, 8.0])
+    assert "feasible_fraction_pct" not in history  # a fraction of which base: the column names say it
     assert list(history["box_lower"]) == [0.1, 1.0, 0.5, 10.0] and list(history["box_upper"]) == [0.9, 100.0] * 2
+    assert list(history["box_share_of_omega_pct"]) == pytest.approx([100.0, 100.0, 25.0, 25.0])
 
 
 # ------------------------------------------------------------------------------------ the workflow
@@ -230,8 +235,8 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     assert first.returncode == 0, first.stderr[-3000:]
     results = study / "results"
 
-    # Two waves (stop_early: false): wave 2 simulated wave 1's proposals, numbered on, and was analysed over
-    # wave 1's box; wave 1's decision carries the estimate the stop advice reads, whatever it says.
+    # Two waves (stop_early: false): wave 2 simulated wave 1's proposals (in wave 1's box), numbered on, and
+    # was analysed with every run over Omega; wave 1's decision carries the estimate the stop advice reads.
     decision = json.loads((results / "waves/1/next_wave/m/decision.json").read_text(encoding="utf-8"))
     assert set(decision) == {"stop", "reason", "value"} and decision["value"]["count"] == 7
     proposals = pd.read_csv(results / "waves/1/next_wave/m/next_runs.csv")
@@ -242,9 +247,7 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     assert table[table["wave"] == 2][["a", "b"]].to_numpy() == pytest.approx(proposals[["a", "b"]].to_numpy())
     analysed = pd.read_csv(results / "waves/2/data/m_analysed.csv")
     bounds = domain.set_index("factor")
-    inside = table[table["a"].between(*bounds.loc["a", ["lower", "upper"]])
-                   & table["b"].between(*bounds.loc["b", ["lower", "upper"]])]
-    assert list(analysed["run"]) == list(inside["run"])
+    assert list(analysed["run"]) == list(table["run"])
     # The material's results are its last wave's; every run's folder has its parameters, record and log.
     assert (results / "validated/m.parquet").read_bytes() == (results / "waves/2/validated/m.parquet").read_bytes()
     assert (results / "validated/n.parquet").read_bytes() == (results / "waves/1/validated/n.parquet").read_bytes()
@@ -252,14 +255,17 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     params = json.loads((results / "runs/m/wave2/run15/params.json").read_text(encoding="utf-8"))
     assert params["seed"] == run_seed("m", 2, 15) and params["factors"]["a"] == proposals["a"].iloc[3]
 
-    # The sets wave by wave: Phi of wave 2's box scaled to Omega by the box's share of it.
+    # The sets wave by wave: Phi of Omega as each wave's scenarios give it, and the box wave 2's runs were placed in.
     history = pd.read_csv(results / "waves/history_m.csv")
     assert list(history.drop_duplicates("wave")["runs_simulated"]) == [11, 18]
-    assert list(history.drop_duplicates("wave")["runs_analysed"]) == [11, len(analysed)]
+    assert list(history.drop_duplicates("wave")["runs_analysed"]) == [11, 18]
     share = ((bounds.loc["a", "upper"] - bounds.loc["a", "lower"]) / 0.8
              * (bounds.loc["b", "upper"] - bounds.loc["b", "lower"]) / 10.0)
     wave2 = history[history["wave"] == 2].iloc[0]
-    assert wave2["feasible_fraction_of_omega_pct"] == pytest.approx(wave2["feasible_fraction_pct"] * share, rel=1e-4)
+    scenarios2 = read_parquet(results / "waves/2/scenarios/m.parquet")
+    assert wave2["feasible_fraction_of_omega_pct"] == pytest.approx(scenarios2["feasible_fraction_pct"].iloc[0],
+                                                                    rel=1e-5)  # the CSV's 6 digits
+    assert wave2["box_share_of_omega_pct"] == pytest.approx(100 * share, rel=1e-4)
     assert (results / "figures/waves_m.png").is_file() and (results / "figures/waves_n.svg").is_file()
 
     # The run that exited non-zero is a failed row with its log kept; the analysis went on.
@@ -319,3 +325,48 @@ def test_waves_stop_where_the_next_wave_buys_little():
     assert stop_reason({**base, "expected_contraction": 0.4, "stop": False}) == ""
     assert stop_reason({**base, "expected_contraction": float("nan"), "stop": False}) == ""
     assert stop_reason(None) == ""
+
+
+def test_a_wave_after_a_box_is_judged_on_omega_with_every_run_so_the_box_cuts_nothing(tmp_path):
+    """Wave 2 of a planted study: wave 1's CCD over Omega = [0, 1]^2 of an exact quadratic y = |x - c|^2 with
+    target R0^2 (its admissible set is an annulus round c of area 2 pi R0^2 eps, closed form), then 9 runs in a box
+    that holds only the annulus' upper right part.  The wave's analysis is over Omega with every run: Phi is the
+    annulus' share of Omega (not of the box, 14 x larger), the spans run past the box's lower bounds to the
+    annulus' ends, and no verdict says "cut by the search range" where only the box ended."""
+    from demid.report.summary import factor_verdict
+    from demid.steps import material_step
+    from demid.waves import wave_spec
+
+    centre, r0, eps = np.array([0.3, 0.6]), 0.15, 0.05
+    mat = {"design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+           "simulation": {"command": _command(), "seed": 1},
+           "waves": {"max": 2, "next_runs": {"count": 9}},
+           "factors": {"a": {"lower": 0.0, "upper": 1.0}, "b": {"lower": 0.0, "upper": 1.0}},
+           "responses": {"y": {"target": r0 ** 2}},
+           "scenarios": {"y": {"observables": ["y"], "tolerance": eps}}}
+    config = _checked({"m": mat})
+    spec = MaterialSpec.from_material("m", config["materials"]["m"], grid_points=config["grid_points"])
+    box = pd.DataFrame({"factor": ["a", "b"], "lower": [0.3, 0.6], "upper": [0.6, 0.9]})
+    wave1 = first_wave(spec, seed=1)
+    levels = np.linspace(0.0, 1.0, 3)
+    wave2 = pd.DataFrame({"a": 0.3 + 0.3 * np.repeat(levels, 3), "b": 0.6 + 0.3 * np.tile(levels, 3)})
+    table = pd.concat([wave1.assign(wave=1), wave2.assign(run=np.arange(14, 23), wave=2)], ignore_index=True)
+    table["y"] = ((table[["a", "b"]].to_numpy() - centre) ** 2).sum(axis=1)
+    table["status"] = "ok"
+    path = tmp_path / "m.csv"
+    table[["run", "wave", "a", "b", "y", "status"]].to_csv(path, index=False)
+
+    wave = wave_spec(spec, str(path), box)
+    result = material_step(wave, path, z=2.0, tolerances=[0.02, 0.05], typo_stop=False)
+    sets = result.parquet["scenarios"].set_index("factor")
+    annulus_pct = 100 * 2 * np.pi * r0 ** 2 * eps  # 0.71 % of Omega; 7.9 % of the box's 0.09
+    assert sets["feasible_fraction_pct"].iloc[0] == pytest.approx(annulus_pct, rel=0.05)
+    outer = r0 * np.sqrt(1 + eps)
+    for factor, c, box_lower in (("a", 0.3, 0.3), ("b", 0.6, 0.6)):
+        assert sets.at[factor, "lower"] == pytest.approx(c - outer, abs=0.01) and sets.at[factor, "lower"] < box_lower
+        assert sets.at[factor, "upper"] == pytest.approx(c + outer, abs=0.01)
+        verdict, width = factor_verdict(sets.at[factor, "lower"], sets.at[factor, "upper"], 0.0, 1.0,
+                                        at_bound=sets.at[factor, "at_bound"])
+        assert verdict == "bounded" and width == pytest.approx(2 * outer, abs=0.02)  # of Omega's range
+    robust = result.parquet["robust"].set_index("factor")
+    assert robust["robust_fraction_pct"].iloc[0] == pytest.approx(annulus_pct, rel=0.1)
