@@ -5,10 +5,13 @@ surrogate cannot meet), ``recalibrate`` (no point meets every target, or a surro
 best point sits on a bound the surrogate says widening cannot help: :mod:`demid.criticism.reach`),
 ``add_observable`` (the measurement that narrows most, or that a new kind is needed), ``widen`` (a bound
 that cuts the plausible set, or the best point when no point meets every target, and only where moving it
-can narrow or reach something), ``next_runs`` and ``stop`` (what the next wave can still buy).
+can narrow or reach something), ``next_runs`` and ``stop`` (what the next wave can still buy), and
+``measurement_order`` (the observable ranking in words, one sentence per starting set:
+:mod:`demid.story.measurements`).
 
 One item per material is the **next step** (``decision``): the first by :data:`PRIORITY`; the others follow it
 as "also".  The generic add-observable line (no observable to name) stands only where nothing else is advised.
+``measurement_order`` is detail, read where the ranking is shown, never a step.
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ import numpy as np
 import pandas as pd
 
 from ..criticism.reach import Reach, saturation_advice
+from .measurements import measurement_order
 from .words import level2_within, unit_text
 
 ADVICE_COLUMNS = ["material", "kind", "factor", "bound", "observable", "text", "decision"]
@@ -28,6 +32,8 @@ PRIORITY = ("check_target", "recalibrate", "widen", "next_runs", "add_observable
 #: Where each kind is read in the report besides the summary.
 LEVEL2_KINDS = ("check_target", "recalibrate", "widen")
 NEXT_WAVE_KINDS = ("next_runs", "stop")
+#: Advice read beside the observable ranking only: the walk through it, set by set.
+RANKING_KINDS = ("measurement_order",)
 
 
 @dataclass(frozen=True)
@@ -54,7 +60,7 @@ class StudyAdvice:
     def from_frame(cls, frame: pd.DataFrame | None) -> StudyAdvice:
         if frame is None or not len(frame):
             return cls([])
-        clean = frame.fillna("").astype(str)
+        clean = frame.astype(object).fillna("").astype(str)  # an all-empty column reads as float
         text_columns = [c for c in ADVICE_COLUMNS if c != "decision"]
         return cls([AdviceItem(*(row[c] for c in text_columns), decision=row.get("decision", "").lower() == "true")
                     for _, row in clean.iterrows()])
@@ -64,7 +70,7 @@ class StudyAdvice:
 
     def next_step(self, material: str) -> tuple[str | None, list[str]]:
         """The material's next step and the other advice ("also"), in priority order."""
-        own = [i for i in self.items if i.material == material]
+        own = [i for i in self.items if i.material == material and i.kind in PRIORITY]
         decision = next((i.text for i in own if i.decision), None)
         return decision, [i.text for i in own if not i.decision]
 
@@ -165,10 +171,12 @@ GENERIC_ADD_OBSERVABLE = ("Every informative observable with a target is already
 
 def decided(items: list[AdviceItem]) -> list[AdviceItem]:
     """One material's advice in :data:`PRIORITY` order (stable within a kind), the first marked as the next
-    step; the generic add-observable line is dropped unless it is all there is (then it is the next step)."""
-    specific = [i for i in items if i.text != GENERIC_ADD_OBSERVABLE]
-    ordered = sorted(specific or items, key=lambda i: PRIORITY.index(i.kind))
-    return [replace(i, decision=k == 0) for k, i in enumerate(ordered)]
+    step; the generic add-observable line is dropped unless it is all there is (then it is the next step).
+    Kinds outside :data:`PRIORITY` (:data:`RANKING_KINDS`) follow, in their order, never a step."""
+    steps = [i for i in items if i.kind in PRIORITY]
+    specific = [i for i in steps if i.text != GENERIC_ADD_OBSERVABLE]
+    ordered = sorted(specific or steps, key=lambda i: PRIORITY.index(i.kind))
+    return [replace(i, decision=k == 0) for k, i in enumerate(ordered)] + [i for i in items if i.kind not in PRIORITY]
 
 
 def _widen(spec, verdicts: pd.DataFrame, level2: dict, implausible: dict) -> list[AdviceItem]:
@@ -231,6 +239,13 @@ def _next_wave(spec, value: dict | None, best_observable: str) -> list[AdviceIte
         f"Simulate the {value['count']} proposed runs (tables/next_runs.csv): {expect}."))]
 
 
+def _measurement_order(spec, ranking) -> list[AdviceItem]:
+    if ranking is None or not len(ranking):
+        return []
+    labels = {o: _label(spec, o) for o in spec.response_names}
+    return [AdviceItem(spec.name, "measurement_order", "", "", "", text) for text in measurement_order(ranking, labels)]
+
+
 def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | None = None,
                     criticism: dict | None = None, implausible: dict | None = None,
                     uninformative: dict | None = None, wave_value: dict | None = None,
@@ -241,7 +256,8 @@ def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | Non
     ``criticism/{m}.json``; ``implausible``: :func:`~demid.data.implausible_targets` of its table;
     ``uninformative``: from the uncertainty summary; ``wave_value``: ``next_wave/value.json``'s entry;
     ``ridge_advice``: which other observable would break an identified combination's ridge
-    (``combinations/{m}.json``), given as ``add_observable`` advice.
+    (``combinations/{m}.json``), given as ``add_observable`` advice; ``ranking``: its rows of
+    ``tables/observable_ranking.csv``, also walked through in words (``measurement_order``).
     """
     criticism, implausible, uninformative = criticism or {}, implausible or {}, uninformative or {}
     level2 = criticism.get("level2") or {}
@@ -251,4 +267,5 @@ def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | Non
     return decided(checks + _recalibrate(spec, criticism.get("level1") or {}, level2, {i.observable for i in checks})
                    + add + [AdviceItem(spec.name, "add_observable", "", "", "", text) for text in ridge_advice]
                    + _widen(spec, verdicts, level2, implausible)
-                   + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o)))
+                   + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o))
+                   + _measurement_order(spec, ranking))

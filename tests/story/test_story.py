@@ -110,7 +110,8 @@ def test_an_uninformative_observable_is_named_with_its_reason():
     assert unc.uninformative == {}
     # the advice does not propose measuring it
     ranking = pd.DataFrame({"observables": ["y", "rho", "y+rho"], "n_observables": [1, 1, 2],
-                            "feasible_fraction_pct": [4.0, 100.0, 4.0], "best_subset": ["(none)", "(none)", "y"],
+                            "information_gain_bits": [4.6, 0.0, 4.61], "feasible_fraction_pct": [4.0, 100.0, 4.0],
+                            "best_subset": ["(none)", "(none)", "y"],
                             "gain_vs_best_subset_bits": [4.6, 0.0, 0.01], "targets_reachable": [True, True, True]})
     assert uninformative_observables(ranking) == {"rho": uninformative_observables(ranking)["rho"]}
     one = _spec({"y": {"target": 0.5}, "rho": {"target": 1505.0}}, {"y_only": {"observables": ["y"], "tolerance": 0.02}})
