@@ -22,6 +22,7 @@ import numpy as np
 import pandas as pd
 
 from ..criticism.reach import Reach, saturation_advice
+from ..precision import rough_text
 from .measurements import measurement_order
 from .words import level2_within, unit_text
 
@@ -145,7 +146,19 @@ def _recalibrate(spec, level1: dict, level2: dict, checked: set) -> list[AdviceI
     return items
 
 
-def _add_observable(spec, ranking, uninformative: dict, level2: dict) -> list[AdviceItem]:
+def _unpredictive(level1: dict) -> set[str]:
+    """The responses whose surrogate does not predict left-out runs (Q² < 0): advice built on them says so
+    and quotes their numbers to :data:`~demid.precision.UNPREDICTIVE_DIGITS` (:func:`~demid.precision.rough_text`)."""
+    return {r for r, res in (level1 or {}).items() if res.get("verdict") == "does_not_predict"}
+
+
+def _not_predicting(spec, names) -> str:
+    many = len(names) > 1
+    return (f"the surrogate{'s' if many else ''} of {', '.join(_label(spec, o) for o in names)} "
+            f"{'do' if many else 'does'} not predict left-out runs (Q² < 0)")
+
+
+def _add_observable(spec, ranking, uninformative: dict, level2: dict, unpredictive=frozenset()) -> list[AdviceItem]:
     used = max((sc.observables for sc in spec.scenarios), key=len, default=())
     if not used or (level2 and not level2.get("feasible", True)):
         return []
@@ -157,10 +170,15 @@ def _add_observable(spec, ranking, uninformative: dict, level2: dict) -> list[Ad
         if len(grow):
             best = grow.sort_values("gain_vs_best_subset_bits", ascending=False).iloc[0]
             added = [o for o in best["observables"].split("+") if o not in used]
-            return [AdviceItem(spec.name, "add_observable", "", "", "+".join(added), (
-                f"Measure {', '.join(_label(spec, o) for o in added)} as well: it adds "
-                f"{best['gain_vs_best_subset_bits']:.2f} bits of information and leaves "
-                f"{best['feasible_fraction_pct']:.3g} % of the domain admissible."))]
+            measure = f"Measure {', '.join(_label(spec, o) for o in added)} as well"
+            weak = [o for o in best["observables"].split("+") if o in unpredictive]
+            bits = rough_text(best["gain_vs_best_subset_bits"])
+            text = (f"{measure}: it adds {best['gain_vs_best_subset_bits']:.2f} bits of information and leaves "
+                    f"{best['feasible_fraction_pct']:.3g} % of the domain admissible." if not weak else
+                    f"{measure}: by the surrogates it adds about {bits} bit{'' if bits == '1' else 's'} of "
+                    f"information and leaves about {rough_text(best['feasible_fraction_pct'])} % of the "
+                    f"domain admissible, but {_not_predicting(spec, weak)}, so these numbers are rough.")
+            return [AdviceItem(spec.name, "add_observable", "", "", "+".join(added), text)]
     return [AdviceItem(spec.name, "add_observable", "", "", "", GENERIC_ADD_OBSERVABLE)]
 
 
@@ -179,7 +197,20 @@ def decided(items: list[AdviceItem]) -> list[AdviceItem]:
     return [replace(i, decision=k == 0) for k, i in enumerate(ordered)] + [i for i in items if i.kind not in PRIORITY]
 
 
-def _widen(spec, verdicts: pd.DataFrame, level2: dict, implausible: dict) -> list[AdviceItem]:
+def _unjudged_reach(spec, r: Reach, factor: str) -> str:
+    """The recalibrate advice on a bound whose reach was estimated by a surrogate that does not predict: no
+    verdict on widening, its numbers to one digit."""
+    unit = _unit(spec, r.observable)
+    u = f" {unit}" if unit and not unit.startswith("°") else unit
+    per = "decade of" if r.log else "unit"
+    return (f"Whether widening {factor} beyond its {r.side} bound can bring {_label(spec, r.observable)} to its "
+            f"target cannot be judged: {_not_predicting(spec, [r.observable])}, so what it says there (about "
+            f"{rough_text(abs(r.slope))}{u} per {per} {factor}, about {rough_text(abs(r.missing))}{u} short of the "
+            f"target) is no evidence either way. Refit or resimulate {_label(spec, r.observable)} first, then "
+            "judge the bound again.")
+
+
+def _widen(spec, verdicts: pd.DataFrame, level2: dict, implausible: dict, unpredictive=frozenset()) -> list[AdviceItem]:
     sides: dict[str, set] = {}
     why: dict[str, list[str]] = {}
     for _, row in verdicts.iterrows():
@@ -204,8 +235,10 @@ def _widen(spec, verdicts: pd.DataFrame, level2: dict, implausible: dict) -> lis
                 if (name, side) in futile:
                     r = futile[(name, side)]
                     f = next((x for x in spec.factors if x.name == name), None)
-                    items.append(AdviceItem(spec.name, "recalibrate", name, side, r.observable, saturation_advice(
-                        r, f.label if f else name, _label(spec, r.observable), _unit(spec, r.observable))))
+                    label = f.label if f else name
+                    items.append(AdviceItem(spec.name, "recalibrate", name, side, r.observable, (
+                        _unjudged_reach(spec, r, label) if r.observable in unpredictive else saturation_advice(
+                            r, label, _label(spec, r.observable), _unit(spec, r.observable)))))
                     continue
                 if "widen" in level2 and side not in level2["widen"].get(name, ()):
                     continue  # level 2 found the worst-missed observable flat along it: widening buys nothing
@@ -261,11 +294,12 @@ def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | Non
     """
     criticism, implausible, uninformative = criticism or {}, implausible or {}, uninformative or {}
     level2 = criticism.get("level2") or {}
+    unpredictive = _unpredictive(criticism.get("level1") or {})
     checks = _check_targets(spec, implausible, ranking)
-    add = _add_observable(spec, ranking, uninformative, level2)
+    add = _add_observable(spec, ranking, uninformative, level2, unpredictive)
     best = next((i.observable for i in add if i.observable), "")
     return decided(checks + _recalibrate(spec, criticism.get("level1") or {}, level2, {i.observable for i in checks})
                    + add + [AdviceItem(spec.name, "add_observable", "", "", "", text) for text in ridge_advice]
-                   + _widen(spec, verdicts, level2, implausible)
+                   + _widen(spec, verdicts, level2, implausible, unpredictive)
                    + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o))
                    + _measurement_order(spec, ranking))
