@@ -272,11 +272,16 @@ def _next_wave(spec, value: dict | None, best_observable: str) -> list[AdviceIte
         f"Simulate the {value['count']} proposed runs (tables/next_runs.csv): {expect}."))]
 
 
-def _measurement_order(spec, ranking) -> list[AdviceItem]:
+def _measurement_order(spec, ranking, unpredictive=frozenset()) -> list[AdviceItem]:
     if ranking is None or not len(ranking):
         return []
     labels = {o: _label(spec, o) for o in spec.response_names}
-    return [AdviceItem(spec.name, "measurement_order", "", "", "", text) for text in measurement_order(ranking, labels)]
+    ranked = {o for s in ranking["observables"] for o in str(s).split("+")}
+    weak = [o for o in spec.response_names if o in ranked and o in unpredictive]
+    caveat = ([f"The ranking rests on surrogates of which {_not_predicting(spec, weak)}: its gains and fractions "
+               "are rough, given to one significant digit."] if weak else [])
+    return [AdviceItem(spec.name, "measurement_order", "", "", "", text)
+            for text in caveat + measurement_order(ranking, labels, rough=bool(weak))]
 
 
 def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | None = None,
@@ -302,4 +307,4 @@ def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | Non
                    + add + [AdviceItem(spec.name, "add_observable", "", "", "", text) for text in ridge_advice]
                    + _widen(spec, verdicts, level2, implausible, unpredictive)
                    + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o))
-                   + _measurement_order(spec, ranking))
+                   + _measurement_order(spec, ranking, unpredictive))

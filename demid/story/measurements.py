@@ -13,29 +13,15 @@ from itertools import combinations
 import numpy as np
 import pandas as pd
 
+from ..precision import rough_text
+
 
 def _pct(value: float) -> str:
     return f"{value:.3g} %"
 
 
-def measurement_order(ranking: pd.DataFrame, labels: dict[str, str] | None = None) -> list[str]:
-    """In words: from each smaller observable set, which single added measurement gains most.
-
-    Uses the ``observables``, ``information_gain_bits`` and ``feasible_fraction_pct``
-    columns of :func:`~demid.uncertainty.ranking.rank_observable_sets`.  One sentence per starting set (the first
-    for starting from nothing), naming the runner-up and any disagreement with the
-    fraction criterion.
-    """
-    labels = labels or {}
-
-    def name(obs) -> str:
-        return " + ".join(labels.get(o, o) for o in obs)
-
-    sets = {tuple(str(s).split("+")): (float(g), float(f)) for s, g, f in
-            zip(ranking["observables"], ranking["information_gain_bits"], ranking["feasible_fraction_pct"])}
-    order = [o for o in max(sets, key=len)]
-    sets[()] = (0.0, 100.0)
-    by_members = {frozenset(k): k for k in sets}
+def _discrepancies(sets: dict, order: list, by_members: dict, name) -> list[str]:
+    """The targets no set can meet, alone or together: named first, and left out of the walk."""
     lines = []
     unreachable = [o for o in order if (o,) in sets and not np.isfinite(sets[(o,)][0])]
     if unreachable:
@@ -52,6 +38,32 @@ def measurement_order(ranking: pd.DataFrame, labels: dict[str, str] | None = Non
         lines.append(f"The targets of {name(k)} can each be met but not together within the tolerance: a "
                      "discrepancy between simulation and experiment (see level 2), not information; sets with "
                      "all of them get no information gain and rank last.")
+    return lines
+
+
+def measurement_order(ranking: pd.DataFrame, labels: dict[str, str] | None = None, rough: bool = False) -> list[str]:
+    """In words: from each smaller observable set, which single added measurement gains most.
+
+    Uses the ``observables``, ``information_gain_bits`` and ``feasible_fraction_pct``
+    columns of :func:`~demid.uncertainty.ranking.rank_observable_sets`.  One sentence per starting set (the first
+    for starting from nothing), naming the runner-up and any disagreement with the
+    fraction criterion.  ``rough``: the ranking rests on a surrogate that does not predict left-out runs, so
+    every number is given to one significant digit (:func:`~demid.precision.rough_text`).
+    """
+    labels = labels or {}
+    bits = rough_text if rough else (lambda v: f"{v:.2f}")
+    pct = (lambda v: f"{rough_text(v)} %") if rough else _pct
+    share = (lambda v: f"{rough_text(v)} %") if rough else (lambda v: f"{v:.1f} %")
+
+    def name(obs) -> str:
+        return " + ".join(labels.get(o, o) for o in obs)
+
+    sets = {tuple(str(s).split("+")): (float(g), float(f)) for s, g, f in
+            zip(ranking["observables"], ranking["information_gain_bits"], ranking["feasible_fraction_pct"])}
+    order = [o for o in max(sets, key=len)]
+    sets[()] = (0.0, 100.0)
+    by_members = {frozenset(k): k for k in sets}
+    lines = _discrepancies(sets, order, by_members, name)
     for size in range(len(order)):
         for start in combinations(order, size):
             if frozenset(start) not in by_members:
@@ -73,22 +85,22 @@ def measurement_order(ranking: pd.DataFrame, labels: dict[str, str] | None = Non
             delta, f_new, best, g_new = options[0]
             if not start:
                 text = (f"As a first measurement, {name([best])} is the most informative: "
-                        f"{g_new:.2f} bits, admissible fraction {_pct(f_new)} of the domain")
+                        f"{bits(g_new)} bits, admissible fraction {pct(f_new)} of the domain")
             else:
-                text = (f"From {name(start)}, adding {name([best])} gains {delta:.2f} bits "
-                        f"({base_gain:.2f} -> {g_new:.2f})")
+                text = (f"From {name(start)}, adding {name([best])} gains {bits(delta)} bits "
+                        f"({bits(base_gain)} -> {bits(g_new)})")
                 if base_frac > 0 and 1 - f_new / base_frac < 5e-4:
-                    text += f" but leaves the admissible fraction at {_pct(f_new)}"
+                    text += f" but leaves the admissible fraction at {pct(f_new)}"
                 elif base_frac > 0:
-                    text += (f" and shrinks the admissible fraction by {100 * (1 - f_new / base_frac):.1f} % "
-                             f"({_pct(base_frac)} -> {_pct(f_new)})")
+                    text += (f" and shrinks the admissible fraction by {share(100 * (1 - f_new / base_frac))} "
+                             f"({pct(base_frac)} -> {pct(f_new)})")
                 else:
                     text += " (the admissible set is already empty at this tolerance)"
             if len(options) > 1:
-                text += f"; {name([options[1][2]])} would gain {options[1][0]:.2f} bits"
+                text += f"; {name([options[1][2]])} would gain {bits(options[1][0])} bits"
                 by_frac = min(options, key=lambda t: t[1])
                 if by_frac[2] != best and by_frac[1] < f_new:
                     text += (f"; by fraction alone {name([by_frac[2]])} contracts more "
-                             f"({_pct(by_frac[1])} vs {_pct(f_new)})")
+                             f"({pct(by_frac[1])} vs {pct(f_new)})")
             lines.append(text + ".")
     return lines

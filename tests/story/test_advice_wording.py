@@ -130,3 +130,24 @@ def test_a_measurement_ranked_on_a_surrogate_that_does_not_predict_is_quoted_rou
     assert add[0].text == ("Measure S as well: by the surrogates it adds about 1 bit of information and leaves about "
                            "3 % of the domain admissible, but the surrogate of S does not predict left-out runs "
                            "(Q² < 0), so these numbers are rough.")
+
+
+def test_the_ranking_in_words_on_a_surrogate_that_does_not_predict_says_so_to_one_digit():
+    spec = _spec(responses={"D": {"target": 100.0}, "S": {"target": 5.0}})
+    ranking = pd.DataFrame({"observables": ["D+S", "D", "S"], "n_observables": [2, 1, 1],
+                            "best_subset": ["D", "(none)", "(none)"], "information_gain_bits": [3.2345, 2.0123, 0.5],
+                            "gain_vs_best_subset_bits": [1.2222, 2.0123, 0.5],
+                            "feasible_fraction_pct": [3.456, 20.0, 60.0]})
+
+    def walk(level1):
+        return [i.text for i in material_advice(spec, NO_VERDICTS, ranking=ranking, criticism={"level1": level1})
+                if i.kind == "measurement_order"]
+
+    assert walk({})[1] == ("From D, adding S gains 1.22 bits (2.01 -> 3.23) and shrinks the admissible fraction by "
+                           "82.7 % (20 % -> 3.46 %).")
+    rough = walk({"S": {"verdict": "does_not_predict"}})
+    assert rough[0] == ("The ranking rests on surrogates of which the surrogate of S does not predict left-out runs "
+                        "(Q² < 0): its gains and fractions are rough, given to one significant digit.")
+    # 1.2222 -> 1, 2.0123 -> 2, 3.2345 -> 3, 100 (1 - 3.456 / 20) = 82.72 -> 80, 3.456 -> 3
+    assert rough[2] == ("From D, adding S gains 1 bits (2 -> 3) and shrinks the admissible fraction by 80 % "
+                        "(20 % -> 3 %).")
