@@ -255,11 +255,14 @@ def test_demo_advice_rows_are_the_summary_and_level2_text_and_table3_is_unchange
     assert list(verdicts.columns) == ["material", "scenario", "factor", "strict_lower", "strict_upper",
                                       "plausible_lower", "plausible_upper", "verdict", "reason"]
     assert len(advice) and set(advice["kind"]) <= {"widen", "add_observable", "check_target", "next_runs", "stop",
-                                                   "recalibrate"}
+                                                   "recalibrate", "measurement_order"}
     summary = _markdown(sections.summary())
     for m in cfg["materials"]:
         level2 = _markdown(sections.criticism(m))
-        rows = advice[advice["material"] == m]
+        walk = advice[(advice["material"] == m) & (advice["kind"] == "measurement_order")]["text"]
+        ranking_section = _markdown(sections.uncertainty(m))  # the ranking in words, below the ranking
+        assert len(walk) and all(_shown(t, sections._plain_labels) in ranking_section for t in walk), m
+        rows = advice[(advice["material"] == m) & (advice["kind"] != "measurement_order")]
         labels = sections._plain_labels
         bullets = [line[2:] for line in summary.split(f"### ")[[s.split("\n")[0] for s in summary.split("### ")].index(
             sections._label(m))].splitlines() if line.startswith("- ")]
