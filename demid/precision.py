@@ -142,7 +142,9 @@ def round_off_only(residuals, y, factor_sd=None) -> bool:
 # The report's one rule for printing a number: to the digits its uncertainty supports — the place of the second
 # significant digit of its standard error (or of the tolerance, for a quantity a person set) — never more than
 # MAX_DIGITS significant digits; an effect that rounds to zero at that place is written as indistinguishable
-# from zero; a relative difference past FAR_RATIO is written as such, not as a percentage of five digits.
+# from zero; a relative difference past FAR_RATIO is written as such, not as a percentage of five digits; a
+# number read off a surrogate that does not predict left-out runs (Q² < 0) gets UNPREDICTIVE_DIGITS, and the
+# sentence that quotes it says why.
 
 #: Significant digits of an uncertainty (standard error, half-width, tolerance) as printed.
 UNCERTAINTY_DIGITS = 2
@@ -157,6 +159,9 @@ COORDINATE_RESOLUTION = 1e-3
 SMALLEST_P = 1e-4
 #: How an effect indistinguishable from zero is written.
 ZERO = "≈ 0"
+#: Significant digits of a number read off a surrogate that does not predict left-out runs (Q² < 0): its
+#: leave-one-out error exceeds the spread of the runs themselves, so no more than the order of magnitude holds.
+UNPREDICTIVE_DIGITS = 1
 
 
 def place_of(uncertainty: float, digits: int = UNCERTAINTY_DIGITS) -> float:
@@ -204,6 +209,18 @@ def value_text(value: float, uncertainty: float | None = None, max_digits: int =
         digits = max(1, int(np.floor(np.log10(abs(value))) - np.log10(place) + 1))
         return _minus(f"{value:.{digits}g}")
     return at_place(value, place)
+
+
+def rough_text(value: float) -> str:
+    """A number read off a surrogate that does not predict, to :data:`UNPREDICTIVE_DIGITS` significant digit
+    (12.34 → 10, 0.0345 → 0.03, 1234 → 1000)."""
+    if value is None or not np.isfinite(value):
+        return "–"
+    if value == 0:
+        return "0"
+    if abs(value) >= 10 ** (MAX_DIGITS + 2) or abs(value) < 1e-4:
+        return _minus(f"{value:.{UNPREDICTIVE_DIGITS}g}")
+    return at_place(value, place_of(value, UNPREDICTIVE_DIGITS))
 
 
 def pm_text(value: float, uncertainty: float) -> str:

@@ -55,3 +55,11 @@ def test_round_off_sd_is_the_gradient_times_a_uniform_rounding_error():
     # in log10 units a rounding q at x is q / (x ln 10)
     log_sd = factor_round_off_sd(gradient[:, :1], x[:, :1], [0.5], [True])
     assert log_sd[0] == pytest.approx(2.0 * (1e-6 / (0.075736 * np.log(10))) / 0.5 / np.sqrt(12), rel=1e-9)
+
+
+@pytest.mark.parametrize("value, text", [(12.34, "10"), (0.0345, "0.03"), (1234.0, "1000"), (-9.8766, "−10"),
+                                         (0.96, "1"), (0.0, "0"), (float("nan"), "–"), (2.5e7, "2e+07")])
+def test_a_number_off_a_surrogate_that_does_not_predict_keeps_one_significant_digit(value, text):
+    from demid.precision import rough_text
+
+    assert rough_text(value) == text

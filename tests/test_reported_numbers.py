@@ -564,17 +564,17 @@ def test_the_verdict_message_joins_the_ambiguity_or_the_confirming_runs(monkeypa
         assert detail["message"] == "y: base."
 
 
-def test_next_measurement_advice_quotes_the_gains_and_fractions_of_the_ranking():
+def test_measurement_order_quotes_the_gains_and_fractions_of_the_ranking():
     """The advice reads the ranking's numbers: the best first measurement with its gain and fraction, the
     gain of each added measurement (from → to), the fraction's contraction, the runner-up's gain and the
     fraction criterion where it disagrees; an unreachable target is named and left out."""
-    from demid.uncertainty.ranking import next_measurement_advice
+    from demid.story.measurements import measurement_order
 
     ranking = pd.DataFrame({
         "observables": ["y1+y2", "y1", "y2", "y3", "y1+y3", "y2+y3", "y1+y2+y3"],
         "information_gain_bits": [4.5, 2.25, 1.5, np.nan, np.nan, np.nan, np.nan],
         "feasible_fraction_pct": [1.0, 10.0, 4.0, 0.0, 0.0, 0.0, 0.0]})
-    lines = next_measurement_advice(ranking).splitlines()
+    lines = measurement_order(ranking)
     assert lines[0].startswith("The target of y3 cannot be met anywhere")
     assert ("As a first measurement, y1 is the most informative: 2.25 bits, admissible fraction 10 % of the "
             "domain; y2 would gain 1.50 bits; by fraction alone y2 contracts more (4 % vs 10 %).") in lines

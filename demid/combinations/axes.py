@@ -31,11 +31,12 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-#: Same thresholds as the per-factor verdicts (:mod:`demid.story.verdicts`): identified up to 10 %,
-#: unresolved ("free") from 90 % of the range along the direction.  Combinations are judged on the
-#: same scale so that "identified in combination" and "identified" mean the same width.
-IDENTIFIED_MAX_WIDTH = 0.10
-FREE_MIN_WIDTH = 0.90
+from ..sampling.domain import IDENTIFIED_MAX_WIDTH, UNRESOLVED_MIN_WIDTH
+
+#: The per-factor verdicts' thresholds (:mod:`demid.sampling.domain`): identified up to 10 %, unresolved
+#: ("free") from 90 % of the range along the direction, so that "identified in combination" and "identified"
+#: mean the same width.
+FREE_MIN_WIDTH = UNRESOLVED_MIN_WIDTH
 #: A band is stated as a straight combination when its centre line strays from the line by at
 #: most this fraction of the band's width.
 STRAIGHT_MAX_BEND = 0.25

@@ -176,13 +176,15 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "reason": ("–", "Why, in words, with the strict interval where its verdict differs."),
     },
     "advice": {
-        "kind": ("–", "check_target, recalibrate, add_observable, widen, next_runs or stop."),
+        "kind": ("–", "check_target, recalibrate, add_observable, widen, next_runs or stop; measurement_order: "
+                      "one sentence of the observable ranking in words (which measurement next, set by set)."),
         "factor": ("–", "Factor key of a widen advice, or of a recalibrate advice on a bound that widening "
                         "cannot help (empty otherwise)."),
         "bound": ("–", "lower or upper: the bound to move outwards (widen), or the one not worth moving "
                        "(recalibrate)."),
         "observable": ("–", "Response key the advice is about (check_target, recalibrate, add_observable)."),
-        "text": ("–", "The advice as the report prints it (summary, level 2 or the next-wave section)."),
+        "text": ("–", "The advice as the report prints it (summary, level 2, the observable ranking or the "
+                      "next-wave section)."),
         "decision": ("–", "True for the material's one next step (the first advice by priority: check_target, "
                           "recalibrate, widen, next_runs, add_observable, stop); the summary lists the others "
                           "below it as 'also'."),

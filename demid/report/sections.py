@@ -682,7 +682,7 @@ class ReportSections:
 
             advice = StudyAdvice.from_frame(self._csv("advice.csv")).texts(m, LEVEL2_KINDS)
             lines += ["", "**Level 2 — calibrated simulation against the experiment.** "
-                      + " ".join([labelled(level2.get("finding") or level2["message"], spec), *advice])]
+                      + " ".join([labelled(level2.get("finding", ""), spec), *advice])]
         for pos in info.get("reference_point") or []:
             errs = ", ".join(f"{spec.response_labels.get(o, o)} {'+' if e > 0 else ''}{percent_text(e)}"
                              for o, e in in_order(pos["errors"]))
@@ -738,7 +738,10 @@ class ReportSections:
                                  f"Feasible fraction and admissible widths of {self._label(m)} against the tolerance"))
         ranking = self._csv("observable_ranking.csv")
         if ranking is not None and len(ranking[ranking["material"] == m]):
+            from ..story import RANKING_KINDS, StudyAdvice
+
             sub = ranking[ranking["material"] == m]
+            walk = StudyAdvice.from_frame(self._csv("advice.csv")).texts(m, RANKING_KINDS)
             out_of_reach = ("targets_reachable" in sub.columns
                             and not sub["targets_reachable"].astype(str).str.lower().eq("true").all())
             parts.append(self._md("**Which experiment next.** Every observable set ranked by the information it "
@@ -751,7 +754,7 @@ class ReportSections:
                                      "posterior measures a discrepancy between simulation and experiment, not "
                                      "information" if out_of_reach else "") + ".\n\n"
                                   + markdown_table(keys_labelled(ranking_display(sub, info.get("uninformative")), spec))
-                                  + ("\n\n" + info["advice"] if info.get("advice") else "")))
+                                  + ("\n\n" + "\n".join(walk) if walk else "")))
         parts.append(self._image(self.root / "figures" / f"posterior_{m}.png",
                                  f"Marginal posterior densities of the factors of {self._label(m)}, one curve per observable set"))
         if info.get("notes"):

@@ -15,6 +15,12 @@ MAX_GRID_DIM = 3
 
 #: Distance to a search bound, as a fraction of the search range, within which a set or point *touches* it.
 BOUND_TOUCH = 0.005
+#: Width, as a fraction of the search range, up to which a factor (or a direction of a set) is *identified*;
+#: the per-factor verdicts (:mod:`demid.story.verdicts`) and the combinations (:mod:`demid.combinations.axes`)
+#: both judge by it, so "identified" and "identified in combination" mean the same width.
+IDENTIFIED_MAX_WIDTH = 0.10
+#: Width from which a factor is *unresolved* (a direction *free*): the data leave (almost) the whole range open.
+UNRESOLVED_MIN_WIDTH = 0.90
 
 #: Values of the ``at_bound`` column: which ends of the search range a set reaches, per factor.
 AT_BOUND = ("none", "lower", "upper", "both")

@@ -5,10 +5,13 @@ surrogate cannot meet), ``recalibrate`` (no point meets every target, or a surro
 best point sits on a bound the surrogate says widening cannot help: :mod:`demid.criticism.reach`),
 ``add_observable`` (the measurement that narrows most, or that a new kind is needed), ``widen`` (a bound
 that cuts the plausible set, or the best point when no point meets every target, and only where moving it
-can narrow or reach something), ``next_runs`` and ``stop`` (what the next wave can still buy).
+can narrow or reach something), ``next_runs`` and ``stop`` (what the next wave can still buy), and
+``measurement_order`` (the observable ranking in words, one sentence per starting set:
+:mod:`demid.story.measurements`).
 
 One item per material is the **next step** (``decision``): the first by :data:`PRIORITY`; the others follow it
 as "also".  The generic add-observable line (no observable to name) stands only where nothing else is advised.
+``measurement_order`` is detail, read where the ranking is shown, never a step.
 """
 
 from __future__ import annotations
@@ -19,6 +22,8 @@ import numpy as np
 import pandas as pd
 
 from ..criticism.reach import Reach, saturation_advice
+from ..precision import rough_text
+from .measurements import measurement_order
 from .words import level2_within, unit_text
 
 ADVICE_COLUMNS = ["material", "kind", "factor", "bound", "observable", "text", "decision"]
@@ -28,6 +33,8 @@ PRIORITY = ("check_target", "recalibrate", "widen", "next_runs", "add_observable
 #: Where each kind is read in the report besides the summary.
 LEVEL2_KINDS = ("check_target", "recalibrate", "widen")
 NEXT_WAVE_KINDS = ("next_runs", "stop")
+#: Advice read beside the observable ranking only: the walk through it, set by set.
+RANKING_KINDS = ("measurement_order",)
 
 
 @dataclass(frozen=True)
@@ -54,7 +61,7 @@ class StudyAdvice:
     def from_frame(cls, frame: pd.DataFrame | None) -> StudyAdvice:
         if frame is None or not len(frame):
             return cls([])
-        clean = frame.fillna("").astype(str)
+        clean = frame.astype(object).fillna("").astype(str)  # an all-empty column reads as float
         text_columns = [c for c in ADVICE_COLUMNS if c != "decision"]
         return cls([AdviceItem(*(row[c] for c in text_columns), decision=row.get("decision", "").lower() == "true")
                     for _, row in clean.iterrows()])
@@ -64,7 +71,7 @@ class StudyAdvice:
 
     def next_step(self, material: str) -> tuple[str | None, list[str]]:
         """The material's next step and the other advice ("also"), in priority order."""
-        own = [i for i in self.items if i.material == material]
+        own = [i for i in self.items if i.material == material and i.kind in PRIORITY]
         decision = next((i.text for i in own if i.decision), None)
         return decision, [i.text for i in own if not i.decision]
 
@@ -139,7 +146,19 @@ def _recalibrate(spec, level1: dict, level2: dict, checked: set) -> list[AdviceI
     return items
 
 
-def _add_observable(spec, ranking, uninformative: dict, level2: dict) -> list[AdviceItem]:
+def _unpredictive(level1: dict) -> set[str]:
+    """The responses whose surrogate does not predict left-out runs (Q² < 0): advice built on them says so
+    and quotes their numbers to :data:`~demid.precision.UNPREDICTIVE_DIGITS` (:func:`~demid.precision.rough_text`)."""
+    return {r for r, res in (level1 or {}).items() if res.get("verdict") == "does_not_predict"}
+
+
+def _not_predicting(spec, names) -> str:
+    many = len(names) > 1
+    return (f"the surrogate{'s' if many else ''} of {', '.join(_label(spec, o) for o in names)} "
+            f"{'do' if many else 'does'} not predict left-out runs (Q² < 0)")
+
+
+def _add_observable(spec, ranking, uninformative: dict, level2: dict, unpredictive=frozenset()) -> list[AdviceItem]:
     used = max((sc.observables for sc in spec.scenarios), key=len, default=())
     if not used or (level2 and not level2.get("feasible", True)):
         return []
@@ -151,10 +170,15 @@ def _add_observable(spec, ranking, uninformative: dict, level2: dict) -> list[Ad
         if len(grow):
             best = grow.sort_values("gain_vs_best_subset_bits", ascending=False).iloc[0]
             added = [o for o in best["observables"].split("+") if o not in used]
-            return [AdviceItem(spec.name, "add_observable", "", "", "+".join(added), (
-                f"Measure {', '.join(_label(spec, o) for o in added)} as well: it adds "
-                f"{best['gain_vs_best_subset_bits']:.2f} bits of information and leaves "
-                f"{best['feasible_fraction_pct']:.3g} % of the domain admissible."))]
+            measure = f"Measure {', '.join(_label(spec, o) for o in added)} as well"
+            weak = [o for o in best["observables"].split("+") if o in unpredictive]
+            bits = rough_text(best["gain_vs_best_subset_bits"])
+            text = (f"{measure}: it adds {best['gain_vs_best_subset_bits']:.2f} bits of information and leaves "
+                    f"{best['feasible_fraction_pct']:.3g} % of the domain admissible." if not weak else
+                    f"{measure}: by the surrogates it adds about {bits} bit{'' if bits == '1' else 's'} of "
+                    f"information and leaves about {rough_text(best['feasible_fraction_pct'])} % of the "
+                    f"domain admissible, but {_not_predicting(spec, weak)}, so these numbers are rough.")
+            return [AdviceItem(spec.name, "add_observable", "", "", "+".join(added), text)]
     return [AdviceItem(spec.name, "add_observable", "", "", "", GENERIC_ADD_OBSERVABLE)]
 
 
@@ -165,13 +189,28 @@ GENERIC_ADD_OBSERVABLE = ("Every informative observable with a target is already
 
 def decided(items: list[AdviceItem]) -> list[AdviceItem]:
     """One material's advice in :data:`PRIORITY` order (stable within a kind), the first marked as the next
-    step; the generic add-observable line is dropped unless it is all there is (then it is the next step)."""
-    specific = [i for i in items if i.text != GENERIC_ADD_OBSERVABLE]
-    ordered = sorted(specific or items, key=lambda i: PRIORITY.index(i.kind))
-    return [replace(i, decision=k == 0) for k, i in enumerate(ordered)]
+    step; the generic add-observable line is dropped unless it is all there is (then it is the next step).
+    Kinds outside :data:`PRIORITY` (:data:`RANKING_KINDS`) follow, in their order, never a step."""
+    steps = [i for i in items if i.kind in PRIORITY]
+    specific = [i for i in steps if i.text != GENERIC_ADD_OBSERVABLE]
+    ordered = sorted(specific or steps, key=lambda i: PRIORITY.index(i.kind))
+    return [replace(i, decision=k == 0) for k, i in enumerate(ordered)] + [i for i in items if i.kind not in PRIORITY]
 
 
-def _widen(spec, verdicts: pd.DataFrame, level2: dict, implausible: dict) -> list[AdviceItem]:
+def _unjudged_reach(spec, r: Reach, factor: str) -> str:
+    """The recalibrate advice on a bound whose reach was estimated by a surrogate that does not predict: no
+    verdict on widening, its numbers to one digit."""
+    unit = _unit(spec, r.observable)
+    u = f" {unit}" if unit and not unit.startswith("°") else unit
+    per = "decade of" if r.log else "unit"
+    return (f"Whether widening {factor} beyond its {r.side} bound can bring {_label(spec, r.observable)} to its "
+            f"target cannot be judged: {_not_predicting(spec, [r.observable])}, so what it says there (about "
+            f"{rough_text(abs(r.slope))}{u} per {per} {factor}, about {rough_text(abs(r.missing))}{u} short of the "
+            f"target) is no evidence either way. Refit or resimulate {_label(spec, r.observable)} first, then "
+            "judge the bound again.")
+
+
+def _widen(spec, verdicts: pd.DataFrame, level2: dict, implausible: dict, unpredictive=frozenset()) -> list[AdviceItem]:
     sides: dict[str, set] = {}
     why: dict[str, list[str]] = {}
     for _, row in verdicts.iterrows():
@@ -196,8 +235,10 @@ def _widen(spec, verdicts: pd.DataFrame, level2: dict, implausible: dict) -> lis
                 if (name, side) in futile:
                     r = futile[(name, side)]
                     f = next((x for x in spec.factors if x.name == name), None)
-                    items.append(AdviceItem(spec.name, "recalibrate", name, side, r.observable, saturation_advice(
-                        r, f.label if f else name, _label(spec, r.observable), _unit(spec, r.observable))))
+                    label = f.label if f else name
+                    items.append(AdviceItem(spec.name, "recalibrate", name, side, r.observable, (
+                        _unjudged_reach(spec, r, label) if r.observable in unpredictive else saturation_advice(
+                            r, label, _label(spec, r.observable), _unit(spec, r.observable)))))
                     continue
                 if "widen" in level2 and side not in level2["widen"].get(name, ()):
                     continue  # level 2 found the worst-missed observable flat along it: widening buys nothing
@@ -231,6 +272,18 @@ def _next_wave(spec, value: dict | None, best_observable: str) -> list[AdviceIte
         f"Simulate the {value['count']} proposed runs (tables/next_runs.csv): {expect}."))]
 
 
+def _measurement_order(spec, ranking, unpredictive=frozenset()) -> list[AdviceItem]:
+    if ranking is None or not len(ranking):
+        return []
+    labels = {o: _label(spec, o) for o in spec.response_names}
+    ranked = {o for s in ranking["observables"] for o in str(s).split("+")}
+    weak = [o for o in spec.response_names if o in ranked and o in unpredictive]
+    caveat = ([f"The ranking rests on surrogates of which {_not_predicting(spec, weak)}: its gains and fractions "
+               "are rough, given to one significant digit."] if weak else [])
+    return [AdviceItem(spec.name, "measurement_order", "", "", "", text)
+            for text in caveat + measurement_order(ranking, labels, rough=bool(weak))]
+
+
 def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | None = None,
                     criticism: dict | None = None, implausible: dict | None = None,
                     uninformative: dict | None = None, wave_value: dict | None = None,
@@ -241,14 +294,17 @@ def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | Non
     ``criticism/{m}.json``; ``implausible``: :func:`~demid.data.implausible_targets` of its table;
     ``uninformative``: from the uncertainty summary; ``wave_value``: ``next_wave/value.json``'s entry;
     ``ridge_advice``: which other observable would break an identified combination's ridge
-    (``combinations/{m}.json``), given as ``add_observable`` advice.
+    (``combinations/{m}.json``), given as ``add_observable`` advice; ``ranking``: its rows of
+    ``tables/observable_ranking.csv``, also walked through in words (``measurement_order``).
     """
     criticism, implausible, uninformative = criticism or {}, implausible or {}, uninformative or {}
     level2 = criticism.get("level2") or {}
+    unpredictive = _unpredictive(criticism.get("level1") or {})
     checks = _check_targets(spec, implausible, ranking)
-    add = _add_observable(spec, ranking, uninformative, level2)
+    add = _add_observable(spec, ranking, uninformative, level2, unpredictive)
     best = next((i.observable for i in add if i.observable), "")
     return decided(checks + _recalibrate(spec, criticism.get("level1") or {}, level2, {i.observable for i in checks})
                    + add + [AdviceItem(spec.name, "add_observable", "", "", "", text) for text in ridge_advice]
-                   + _widen(spec, verdicts, level2, implausible)
-                   + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o)))
+                   + _widen(spec, verdicts, level2, implausible, unpredictive)
+                   + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o))
+                   + _measurement_order(spec, ranking, unpredictive))

@@ -3,8 +3,9 @@
 The plausible interval is the span of the plausible set (:data:`~demid.sampling.residuals.PLAUSIBLE_DEFINITION`,
 ``robust_identifiability.csv``); the strict interval (Table 3) is what the data would identify if the
 surrogate and the measurements were exact.  ``tables/verdicts.csv`` is this table.  The verdict rule
-itself (:func:`factor_verdict`, its thresholds and :data:`VERDICT_TEXT`, the rule in words) lives here; the
-report only renders it.
+itself (:func:`factor_verdict` and :data:`VERDICT_TEXT`, the rule in words) lives here, its width thresholds
+(``IDENTIFIED_MAX_WIDTH``, ``UNRESOLVED_MIN_WIDTH``) beside ``BOUND_TOUCH`` in :mod:`demid.sampling.domain`, where
+the combinations read them too; the report only renders it.
 """
 
 from __future__ import annotations
@@ -12,13 +13,9 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..sampling.domain import BOUND_TOUCH, SIDES_OF, Domain, sides_at_limit
+# the thresholds are the search range's scale, shared with the combinations: defined beside BOUND_TOUCH
+from ..sampling.domain import BOUND_TOUCH, IDENTIFIED_MAX_WIDTH, SIDES_OF, UNRESOLVED_MIN_WIDTH, Domain, sides_at_limit
 from .words import unit_text
-
-#: Width of the admissible interval, as a fraction of the search range, up to which a factor is *identified*.
-IDENTIFIED_MAX_WIDTH = 0.10
-#: Width from which a factor is *unresolved*: the data leave (almost) the whole search range open.
-UNRESOLVED_MIN_WIDTH = 0.90
 
 VERDICT_TEXT = (
     f"**identified**: admissible interval at most {100 * IDENTIFIED_MAX_WIDTH:g} % of the search range wide and "

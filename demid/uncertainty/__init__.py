@@ -16,7 +16,7 @@ known.  This module adds what a calibration decision needs on top of it:
   intervals, posterior means and the information gain KL(posterior || prior)
   in bits, all by trapezoidal quadrature on the grid.
 * **Which experiment next**: every non-empty subset of the observables ranked
-  by information gain and feasible-fraction contraction, with advice in words.
+  by information gain and feasible-fraction contraction (in words: :mod:`demid.story.measurements`).
 * **Numerical accuracy**: fractions with an error estimate, spans polished to
   the exact set boundary by SLSQP, and randomised-QMC (scrambled Sobol)
   fractions with a confidence interval for materials with more than 3 factors.
@@ -25,7 +25,7 @@ known.  This module adds what a calibration decision needs on top of it:
 grid sizes of :func:`recommended_sizes`.
 
 Modules: ``robust``, ``sweep``, ``posterior``,
-``ranking`` (with the advice text) and ``material`` (the per-material step);
+``ranking`` and ``material`` (the per-material step);
 figures in :mod:`demid.plots.uncertainty`, estimators in :mod:`demid.sampling`, each scenario judged
 (its rescaled surrogates, bands and measurement sigma) in :mod:`demid.scenario`.
 
@@ -46,7 +46,7 @@ from ..spec import FALLBACK_TOLERANCE
 from .material import MaterialUncertainty, analyse_material, recommended_sizes
 from .posterior import (INFORMATION_GAIN_COLUMNS, NO_OBSERVABLE, Posterior, gaussian_loglik, grid_posterior,
                         information_gain_frame, posterior_from_loglik, subset_posteriors)
-from .ranking import RANKING_COLUMNS, next_measurement_advice, rank_observable_sets
+from .ranking import RANKING_COLUMNS, rank_observable_sets
 from .robust import ROBUST_COLUMNS, SetSummary, robust_admissible_set, robust_identifiability_frame, summarise_set
 from .sweep import DEFAULT_SWEEP_TOLERANCES, SWEEP_COLUMNS, tolerance_sweep
 
@@ -55,7 +55,7 @@ __all__ = ["DEFAULT_SWEEP_TOLERANCES", "FALLBACK_TOLERANCE", "INFORMATION_GAIN_C
            "MaterialUncertainty", "PlausibilityField", "Posterior", "SetSummary", "SobolFraction",
            "admissible_set", "analyse_material", "cell_count", "fraction_with_error", "gaussian_loglik",
            "grid_posterior", "information_gain_frame", "measurement_sigma", "measurement_sigmas",
-           "next_measurement_advice", "plane_band_fraction", "plausibility_fields", "polish_spans",
+           "plane_band_fraction", "plausibility_fields", "polish_spans",
            "posterior_figure", "posterior_from_loglik", "predict_grid", "rank_observable_sets",
            "recommended_sizes", "robust_admissible_set", "robust_identifiability_frame", "sigma_basis",
            "sobol_fraction", "subset_posteriors", "summarise_set", "tolerance_sweep", "tolerance_sweep_figure"]

@@ -17,7 +17,7 @@ from ..sampling import uses_grid
 from ..sampling.evaluate import uses_exact
 from ..spec import FALLBACK_TOLERANCE
 from .posterior import INFORMATION_GAIN_COLUMNS, information_gain_frame, subset_posteriors
-from .ranking import RANKING_COLUMNS, next_measurement_advice, rank_observable_sets
+from .ranking import RANKING_COLUMNS, rank_observable_sets
 from ..sampling.residuals import PLAUSIBLE_DEFINITION
 from .recommended import recommended_point, uninformative_observables
 from .robust import ROBUST_COLUMNS, robust_identifiability_frame
@@ -54,7 +54,6 @@ class MaterialUncertainty:
     sweep: pd.DataFrame
     information_gain: pd.DataFrame
     ranking: pd.DataFrame
-    advice: str
     posteriors: dict
     notes: list[str]
     factor_labels: dict[str, str] = field(default_factory=dict)
@@ -66,9 +65,10 @@ class MaterialUncertainty:
 
     @property
     def summary(self) -> dict:
-        """``uncertainty/{material}.json``: the next-measurement advice, the notes on sizes and sigmas, the
-        plausible-set definition, the recommended point and the uninformative observables."""
-        return {"advice": self.advice, "notes": self.notes, "plausible_definition": PLAUSIBLE_DEFINITION,
+        """``uncertainty/{material}.json``: the notes on sizes and sigmas, the plausible-set definition, the
+        recommended point and the uninformative observables (the ranking in words is advice:
+        :mod:`demid.story.measurements`)."""
+        return {"notes": self.notes, "plausible_definition": PLAUSIBLE_DEFINITION,
                 "recommended": self.recommended, "uninformative": dict(self.uninformative)}
 
     def sweep_figure(self, title: str):
@@ -84,7 +84,7 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
                      tolerances=DEFAULT_SWEEP_TOLERANCES, sizes: dict[str, int] | None = None,
                      strict_sets: dict[str, AdmissibleSet] | None = None, seed: int = 0,
                      judged: dict[str, JudgedScenario] | None = None) -> MaterialUncertainty:
-    """Robust sets, tolerance sweep, posteriors, ranking and advice for one configured material.
+    """Robust sets, tolerance sweep, posteriors and the observable ranking for one configured material.
 
     ``spec`` is the material's :class:`~demid.spec.MaterialSpec` (factors, responses with ``target`` and
     optional ``sigma``/``sigma_rel``, scenarios).  Robust sets use the
@@ -105,7 +105,6 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
     judged = judged_scenarios(spec, surrogates, z) if judged is None else judged
     reference = JudgedScenario(spec, reference_scenario(spec, observables), surrogates, z)
     at_reference, post_sigma, post_basis = reference.surrogates, reference.likelihood_sd, reference.sigma_basis
-    labels = {r: spec.response_labels[r] for r in observables}
     factor_labels = {f.name: axis_label(f) for f in spec.factors}  # mathtext with unit, for the figures
 
     if strict_sets is None:
@@ -137,7 +136,7 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
     return MaterialUncertainty(
         recommended=recommended, uninformative=uninformative, robust=robust, sweep=sweep,
         information_gain=information_gain,
-        ranking=ranking, advice=next_measurement_advice(ranking, labels) if len(ranking) else "",
+        ranking=ranking,
         posteriors=posteriors, notes=notes, factor_labels=factor_labels, unreachable=unreachable,
         scenario_labels={sc.name: sc.label for sc in spec.scenarios if sc.label != sc.name},
         observable_labels={r.name: tex_label(r.label) for r in spec.responses})

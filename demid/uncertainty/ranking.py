@@ -1,5 +1,6 @@
 """Which experiment next: every non-empty subset of the observables ranked by
-information gain and feasible-fraction contraction, with advice in words.
+information gain and feasible-fraction contraction.  The ranking in words is advice, the story's
+(:mod:`demid.story.measurements`).
 """
 
 from __future__ import annotations
@@ -146,81 +147,3 @@ def reachable_targets(surrogates: dict[str, Surrogate], domain: Domain, observab
         closest, _ = closest_approach(surrogates, domain, (o,), targets, None)
         out[o] = bool(closest <= tolerance * (1 + 1e-9))
     return out
-
-
-def _pct(value: float) -> str:
-    return f"{value:.3g} %"
-
-
-def next_measurement_advice(ranking: pd.DataFrame, labels: dict[str, str] | None = None) -> str:
-    """In words: from each smaller observable set, which single added measurement gains most.
-
-    Uses the ``observables``, ``information_gain_bits`` and ``feasible_fraction_pct``
-    columns of :func:`rank_observable_sets`.  One sentence per starting set (the first
-    for starting from nothing), naming the runner-up and any disagreement with the
-    fraction criterion.
-    """
-    labels = labels or {}
-
-    def name(obs) -> str:
-        return " + ".join(labels.get(o, o) for o in obs)
-
-    sets = {tuple(str(s).split("+")): (float(g), float(f)) for s, g, f in
-            zip(ranking["observables"], ranking["information_gain_bits"], ranking["feasible_fraction_pct"])}
-    order = [o for o in max(sets, key=len)]
-    sets[()] = (0.0, 100.0)
-    by_members = {frozenset(k): k for k in sets}
-    lines = []
-    unreachable = [o for o in order if (o,) in sets and not np.isfinite(sets[(o,)][0])]
-    if unreachable:
-        many = len(unreachable) > 1
-        lines.append(f"The target{'s' if many else ''} of {name(unreachable)} cannot be met anywhere in the search "
-                     f"range within the tolerance: a discrepancy between simulation and experiment (see level 2), "
-                     f"not information. Sets with {'them' if many else 'it'} get no information gain and rank last; "
-                     f"the advice below leaves {'them' if many else 'it'} out.")
-    # Sets whose targets are each within reach but not together, named where the conflict first appears
-    conflicts = [k for k in sets if len(k) > 1 and not np.isfinite(sets[k][0])
-                 and all(np.isfinite(sets[by_members[frozenset(t)]][0])
-                         for t in combinations(k, len(k) - 1) if frozenset(t) in by_members)]
-    for k in sorted(conflicts, key=lambda k: (len(k), k)):
-        lines.append(f"The targets of {name(k)} can each be met but not together within the tolerance: a "
-                     "discrepancy between simulation and experiment (see level 2), not information; sets with "
-                     "all of them get no information gain and rank last.")
-    for size in range(len(order)):
-        for start in combinations(order, size):
-            base_gain, base_frac = sets[by_members[frozenset(start)]]
-            if not np.isfinite(base_gain):
-                continue
-            options = []
-            for o in order:
-                if o in start or frozenset(start) | {o} not in by_members:
-                    continue
-                g, f = sets[by_members[frozenset(start) | {o}]]
-                if not np.isfinite(g):
-                    continue
-                options.append((g - base_gain, f, o, g))
-            if not options:
-                continue
-            options.sort(key=lambda t: (-t[0], t[1]))
-            delta, f_new, best, g_new = options[0]
-            if not start:
-                text = (f"As a first measurement, {name([best])} is the most informative: "
-                        f"{g_new:.2f} bits, admissible fraction {_pct(f_new)} of the domain")
-            else:
-                text = (f"From {name(start)}, adding {name([best])} gains {delta:.2f} bits "
-                        f"({base_gain:.2f} -> {g_new:.2f})")
-                if base_frac > 0 and 1 - f_new / base_frac < 5e-4:
-                    text += f" but leaves the admissible fraction at {_pct(f_new)}"
-                elif base_frac > 0:
-                    text += (f" and shrinks the admissible fraction by {100 * (1 - f_new / base_frac):.1f} % "
-                             f"({_pct(base_frac)} -> {_pct(f_new)})")
-                else:
-                    text += " (the admissible set is already empty at this tolerance)"
-            if len(options) > 1:
-                text += f"; {name([options[1][2]])} would gain {options[1][0]:.2f} bits"
-                by_frac = min(options, key=lambda t: t[1])
-                if by_frac[2] != best and by_frac[1] < f_new:
-                    text += (f"; by fraction alone {name([by_frac[2]])} contracts more "
-                             f"({_pct(by_frac[1])} vs {_pct(f_new)})")
-            lines.append(text + ".")
-    return "\n".join(lines)

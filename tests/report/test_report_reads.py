@@ -86,15 +86,16 @@ def test_one_next_step_by_priority_and_the_generic_line_only_when_it_is_all():
     verdicts = pd.DataFrame({"material": "m", "scenario": "s", "factor": ["a", "b"],
                              "verdict": ["bounded", "cut by the search range (upper bound)"]})
     ranking = pd.DataFrame({"observables": ["y"], "n_observables": [1], "best_subset": ["(none)"],
-                            "gain_vs_best_subset_bits": [1.0], "feasible_fraction_pct": [5.0],
+                            "information_gain_bits": [1.0], "gain_vs_best_subset_bits": [1.0], "feasible_fraction_pct": [5.0],
                             "targets_reachable": [True]})
     wave = {"scenario": "s", "count": 6, "expected_contraction": 0.4, "plausible_fraction_pct": 10.0,
             "expected_fraction_pct": 6.0, "stop": False}
     advice = material_advice(spec, verdicts, ranking=ranking, wave_value=wave)
-    assert [i.kind for i in advice] == ["widen", "next_runs"]  # the generic add-observable line left out
-    assert [i.decision for i in advice] == [True, False]
+    # the generic add-observable line left out; the ranking in words follows, never a step
+    assert [i.kind for i in advice] == ["widen", "next_runs", "measurement_order"]
+    assert [i.decision for i in advice] == [True, False, False]
     alone = material_advice(spec, verdicts.assign(verdict="bounded"), ranking=ranking)
-    assert [(i.kind, i.decision) for i in alone] == [("add_observable", True)]
+    assert [(i.kind, i.decision) for i in alone] == [("add_observable", True), ("measurement_order", False)]
     assert "new kind of measurement" in alone[0].text
     # the table keeps the decision, and the summary's next step is the decision with the rest as "also"
     again = StudyAdvice.from_frame(StudyAdvice(advice).to_frame().astype(str))

@@ -33,7 +33,7 @@ def _ranking_of_the_full_set(spec):
 
     used = max((sc.observables for sc in spec.scenarios), key=len)
     return pd.DataFrame({"observables": ["+".join(used)], "n_observables": [len(used)], "best_subset": [""],
-                         "gain_vs_best_subset_bits": [1.0], "feasible_fraction_pct": [0.0],
+                         "information_gain_bits": [1.0], "gain_vs_best_subset_bits": [1.0], "feasible_fraction_pct": [0.0],
                          "targets_reachable": [True]})
 
 

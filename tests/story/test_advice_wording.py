@@ -72,3 +72,82 @@ def test_a_factor_called_like_an_english_word_is_labelled_only_where_it_stands_f
             "a wider range of a. It levels off (a ≈ 2), evidence of a bias.")
     assert labelled(text, spec) == ("The closest point (a_1=0.1, μ_r=0.3) misses Y by 3 %, so a discrepancy (bias) in "
                                     "Y explains it; a wider range of a_1. It levels off (a_1 ≈ 2), evidence of a bias.")
+
+
+# --------------------------------------------------------------------------- advice on a surrogate that does not predict
+def _reach_at_upper_bound(observable: str = "D") -> dict:
+    """D at the best point 90.1234 against a target of 100, gaining 12.3456 per unit a at the upper bound: a
+    quadratic that levels off before the band, so widening is not advised."""
+    from demid.criticism.reach import Reach
+
+    return Reach(factor="a", side="upper", observable=observable, value=90.1234, target=100.0, band_edge=95.0,
+                 slope=12.3456, curvature=-30.0, straight_extension=0.4, quadratic_extension=float("inf"),
+                 levels_off_extension=0.4115, levels_off_value=92.66, straight_factor_value=1.4,
+                 quadratic_factor_value=float("nan"), levels_off_factor_value=1.4115, widen=False).to_json()
+
+
+def _bound_advice(verdict: str) -> str:
+    spec = _spec()
+    level2 = {"feasible": False, "tolerance": 0.05, "observables": ["D"], "unmoved": [],
+              "best_point_at_bound": {"a": "upper", "b": "none"}, "reach": [_reach_at_upper_bound()]}
+    criticism = {"level1": {"D": {"verdict": verdict}}, "level2": level2}
+    (item,) = [i for i in material_advice(spec, NO_VERDICTS, criticism=criticism) if i.factor == "a"]
+    assert item.kind == "recalibrate" and item.bound == "upper"
+    return item.text
+
+
+def _numbers(text: str) -> list[str]:
+    import re
+
+    return re.findall(r"\d+(?:\.\d+)?", text.replace("Q² < 0", ""))
+
+
+def test_advice_on_a_bound_read_off_a_surrogate_that_does_not_predict_says_so_to_one_digit():
+    # a predicting surrogate: its slope (12.35) and what D misses (9.877) to four digits, a verdict on widening
+    trusted = _bound_advice("adequate")
+    assert trusted.startswith("Do not widen a for D = 100") and "12.35" in trusted and "9.877" in trusted
+    # Q² < 0: its leave-one-out error exceeds the runs' spread; the numbers to one significant digit (12.3456 ->
+    # 10, 9.8766 -> 10), said to be no evidence, and no verdict on widening
+    text = _bound_advice("does_not_predict")
+    assert "cannot be judged" in text and "the surrogate of D does not predict left-out runs (Q² < 0)" in text
+    assert "about 10 per unit a, about 10 short of the target" in text, text
+    assert not text.startswith("Do not widen") and "Refit or resimulate D first" in text
+    assert all(len(n.replace(".", "").strip("0")) <= 1 for n in _numbers(text)), _numbers(text)
+
+
+def test_a_measurement_ranked_on_a_surrogate_that_does_not_predict_is_quoted_roughly():
+    spec = _spec(responses={"D": {"target": 100.0}, "S": {"target": 5.0}})
+    ranking = pd.DataFrame({"observables": ["D", "S", "D+S"], "n_observables": [1, 1, 2],
+                            "best_subset": ["(none)", "(none)", "D"], "information_gain_bits": [2.0, 0.5, 3.2345],
+                            "gain_vs_best_subset_bits": [2.0, 0.5, 1.2345], "feasible_fraction_pct": [20.0, 60.0, 3.456],
+                            "targets_reachable": [True, True, True]})
+    add = [i for i in material_advice(spec, NO_VERDICTS, ranking=ranking) if i.kind == "add_observable"]
+    assert add[0].text == ("Measure S as well: it adds 1.23 bits of information and leaves 3.46 % of the domain "
+                           "admissible.")
+    criticism = {"level1": {"S": {"verdict": "does_not_predict"}}}
+    add = [i for i in material_advice(spec, NO_VERDICTS, ranking=ranking, criticism=criticism)
+           if i.kind == "add_observable"]
+    assert add[0].text == ("Measure S as well: by the surrogates it adds about 1 bit of information and leaves about "
+                           "3 % of the domain admissible, but the surrogate of S does not predict left-out runs "
+                           "(Q² < 0), so these numbers are rough.")
+
+
+def test_the_ranking_in_words_on_a_surrogate_that_does_not_predict_says_so_to_one_digit():
+    spec = _spec(responses={"D": {"target": 100.0}, "S": {"target": 5.0}})
+    ranking = pd.DataFrame({"observables": ["D+S", "D", "S"], "n_observables": [2, 1, 1],
+                            "best_subset": ["D", "(none)", "(none)"], "information_gain_bits": [3.2345, 2.0123, 0.5],
+                            "gain_vs_best_subset_bits": [1.2222, 2.0123, 0.5],
+                            "feasible_fraction_pct": [3.456, 20.0, 60.0]})
+
+    def walk(level1):
+        return [i.text for i in material_advice(spec, NO_VERDICTS, ranking=ranking, criticism={"level1": level1})
+                if i.kind == "measurement_order"]
+
+    assert walk({})[1] == ("From D, adding S gains 1.22 bits (2.01 -> 3.23) and shrinks the admissible fraction by "
+                           "82.7 % (20 % -> 3.46 %).")
+    rough = walk({"S": {"verdict": "does_not_predict"}})
+    assert rough[0] == ("The ranking rests on surrogates of which the surrogate of S does not predict left-out runs "
+                        "(Q² < 0): its gains and fractions are rough, given to one significant digit.")
+    # 1.2222 -> 1, 2.0123 -> 2, 3.2345 -> 3, 100 (1 - 3.456 / 20) = 82.72 -> 80, 3.456 -> 3
+    assert rough[2] == ("From D, adding S gains 1 bits (2 -> 3) and shrinks the admissible fraction by 80 % "
+                        "(20 % -> 3 %).")

@@ -110,7 +110,8 @@ def test_an_uninformative_observable_is_named_with_its_reason():
     assert unc.uninformative == {}
     # the advice does not propose measuring it
     ranking = pd.DataFrame({"observables": ["y", "rho", "y+rho"], "n_observables": [1, 1, 2],
-                            "feasible_fraction_pct": [4.0, 100.0, 4.0], "best_subset": ["(none)", "(none)", "y"],
+                            "information_gain_bits": [4.6, 0.0, 4.61], "feasible_fraction_pct": [4.0, 100.0, 4.0],
+                            "best_subset": ["(none)", "(none)", "y"],
                             "gain_vs_best_subset_bits": [4.6, 0.0, 0.01], "targets_reachable": [True, True, True]})
     assert uninformative_observables(ranking) == {"rho": uninformative_observables(ranking)["rho"]}
     one = _spec({"y": {"target": 0.5}, "rho": {"target": 1505.0}}, {"y_only": {"observables": ["y"], "tolerance": 0.02}})
@@ -254,11 +255,14 @@ def test_demo_advice_rows_are_the_summary_and_level2_text_and_table3_is_unchange
     assert list(verdicts.columns) == ["material", "scenario", "factor", "strict_lower", "strict_upper",
                                       "plausible_lower", "plausible_upper", "verdict", "reason"]
     assert len(advice) and set(advice["kind"]) <= {"widen", "add_observable", "check_target", "next_runs", "stop",
-                                                   "recalibrate"}
+                                                   "recalibrate", "measurement_order"}
     summary = _markdown(sections.summary())
     for m in cfg["materials"]:
         level2 = _markdown(sections.criticism(m))
-        rows = advice[advice["material"] == m]
+        walk = advice[(advice["material"] == m) & (advice["kind"] == "measurement_order")]["text"]
+        ranking_section = _markdown(sections.uncertainty(m))  # the ranking in words, below the ranking
+        assert len(walk) and all(_shown(t, sections._plain_labels) in ranking_section for t in walk), m
+        rows = advice[(advice["material"] == m) & (advice["kind"] != "measurement_order")]
         labels = sections._plain_labels
         bullets = [line[2:] for line in summary.split(f"### ")[[s.split("\n")[0] for s in summary.split("### ")].index(
             sections._label(m))].splitlines() if line.startswith("- ")]

@@ -138,3 +138,23 @@ def test_display_widths_of_ranges_that_do_not_start_at_zero_and_rows_missing_fro
     # a factor with a plausible row but no strict row (or the other way round) is left out
     assert list(verdict_frame(spec, strict.iloc[:1], plaus)["factor"]) == ["a"]
     assert list(verdict_frame(spec, strict, plaus.iloc[1:])["factor"]) == ["b"]
+
+
+def test_the_verdict_width_thresholds_are_written_once():
+    """"identified" and "identified in combination" mean the same width: each threshold is a number written in one
+    module, which the verdicts and the combinations both import."""
+    import ast
+    from pathlib import Path
+
+    import demid
+    from demid.combinations import axes
+
+    written = {}
+    for path in sorted(Path(demid.__file__).parent.rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Assign) and isinstance(node.value, ast.Constant):
+                for target in node.targets:
+                    if isinstance(target, ast.Name) and target.id.endswith(("_MAX_WIDTH", "_MIN_WIDTH")):
+                        written.setdefault(node.value.value, []).append(f"{path.name}:{target.id}")
+    assert written == {0.10: ["domain.py:IDENTIFIED_MAX_WIDTH"], 0.90: ["domain.py:UNRESOLVED_MIN_WIDTH"]}, written
+    assert (axes.IDENTIFIED_MAX_WIDTH, axes.FREE_MIN_WIDTH) == (IDENTIFIED_MAX_WIDTH, UNRESOLVED_MIN_WIDTH)

@@ -9,7 +9,8 @@ import pytest
 
 from demid.sampling.domain import Domain
 from demid.surrogate import Surrogate
-from demid.uncertainty.ranking import next_measurement_advice, reachable_targets
+from demid.story.measurements import measurement_order
+from demid.uncertainty.ranking import reachable_targets
 
 LINE = Domain(("a",), (0.0,), (1.0,))
 
@@ -41,7 +42,7 @@ def _ranking(rows) -> pd.DataFrame:
 def test_an_added_measurement_that_leaves_the_fraction_is_said_to_leave_it():
     # from a (40 %), adding b keeps 39.99 %: a contraction of 1 - 39.99 / 40 = 2.5e-4, below 5e-4
     ranking = _ranking([("a+b", 3.0, 39.99), ("a", 2.0, 40.0), ("b", 1.0, 60.0)])
-    lines = next_measurement_advice(ranking).splitlines()
+    lines = measurement_order(ranking)
     assert lines[0] == ("As a first measurement, a is the most informative: 2.00 bits, admissible fraction 40 % of "
                         "the domain; b would gain 1.00 bits.")
     assert lines[1] == "From a, adding b gains 1.00 bits (2.00 -> 3.00) but leaves the admissible fraction at 40 %."
@@ -52,7 +53,7 @@ def test_an_added_measurement_that_leaves_the_fraction_is_said_to_leave_it():
 
 def test_an_empty_starting_set_is_said_to_be_empty_already():
     ranking = _ranking([("a+b", 3.0, 0.0), ("a", 2.0, 0.0), ("b", 1.0, 10.0)])
-    lines = next_measurement_advice(ranking, {"a": "A", "b": "B"}).splitlines()
+    lines = measurement_order(ranking, {"a": "A", "b": "B"})
     assert lines[1] == ("From A, adding B gains 1.00 bits (2.00 -> 3.00) (the admissible set is already empty at "
                         "this tolerance).")
     # the most informative first measurement is also the narrowest: no 'by fraction alone'
