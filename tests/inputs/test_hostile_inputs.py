@@ -567,3 +567,20 @@ def test_a_line_separator_inside_a_cell_does_not_split_its_row(tmp_path):
     result = _demid(tmp_path, "validate", "--config", str(config))
     assert result.returncode == 0, result.stderr
     assert "1 table(s) valid" in result.stdout
+
+
+@pytest.mark.parametrize("change, key, named", [
+    (lambda mats: mats.update(m_transcription=dict(mats["m"])), "config key materials.m:",
+     "'m_transcription' and 'm' both give results/validated/m_transcription.parquet"),
+    (lambda mats: mats["m"].update(paper_figure="surface"), "config key materials.m.paper_figure:",
+     "gives results/figures/surface_m.png"),
+    (lambda mats: mats.update(sets_m=dict(mats["m"], paper_figure="sets")), "config key materials.sets_m.paper_figure:",
+     "gives results/figures/sets_sets_m.png"),
+])
+def test_names_that_make_two_rules_write_one_file_name_the_config_key(tmp_path, change, key, named):
+    config = _plain_study(tmp_path)
+    text = yaml.safe_load(config.read_text(encoding="utf-8"))
+    change(text["materials"])
+    config.write_text(yaml.safe_dump(text), encoding="utf-8")
+    line = _one_error_line(_snakemake(tmp_path, "--configfile", str(config)))
+    assert key in line and named in line, line

@@ -248,6 +248,8 @@ def test_assembled_table_keeps_failed_runs_as_failed_rows():
     (lambda m: m.update(waves={"max": 2, "next_runs": {"count": 7}}, next_runs={"count": 7}), "move next_runs"),
     (lambda m: m.update(waves={"max": 2, "next_runs": {"count": 6}}), "count: 6 runs cannot determine a quadratic"),
     (lambda m: m["responses"].update(wave={}), "'wave' names the simulated table's wave column"),
+    (lambda m: m.update(waves={"max": 1000, "next_runs": {"count": 7}}), "waves.max: 1000 is greater than the "
+                                                                         "maximum of 20"),
     (lambda m: m["simulation"].update(responses_file="params.json"), "simulation.responses_file: 'params.json' is "
                                                                       "demid's own file"),
     (lambda m: m["simulation"].update(responses_file="run.json"), "'run.json' is demid's own file"),

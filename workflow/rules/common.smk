@@ -7,6 +7,7 @@ from demid.io import content_digest
 from demid.data import check_table_columns, content_hidden_outside
 from demid.errors import InputError
 from demid.next_wave import check_next_runs
+from demid.rule_outputs import ambiguous_output
 from demid.sampling import uses_grid
 from demid.spec import MaterialSpec
 from demid.waves import check_simulated
@@ -373,3 +374,14 @@ def refuse_a_second_run(wildcards=None):
         sys.stderr.flush()
         os._exit(1)  # from inside the DAG's construction: nothing written, nothing to clean up
     return []
+
+
+def refuse_ambiguous_outputs(rules):
+    """Stop with one line naming the config key when material names or a paper_figure would give two
+    rules (or one rule for two materials) the same output file (demid.rule_outputs)."""
+    from snakemake.io import strip_wildcard_constraints
+
+    patterns = [(strip_wildcard_constraints(str(f)), f.wildcard_constraints()) for r in rules for f in r.output]
+    problem = ambiguous_output(patterns, config["materials"])
+    if problem:
+        sys.exit(f"demid: error: {problem}")
