@@ -47,6 +47,10 @@ rule smoke:
         smoke_outputs(),
 
 
+onstart:
+    claim_results()
+
+
 onsuccess:
     cancel_scheduler_timers()
 

@@ -412,8 +412,8 @@ def test_an_unusable_number_stops_the_workflow_in_the_material_job(tmp_path):
                             env=dict(os.environ, PYTHONWARNINGS="ignore"))
     line = _one_error_line(result)
     assert "column 'y2'" in line and "1e308" in line and "run 2" in line
-    results = tmp_path / "results"
-    assert not results.exists() or not [p for p in results.rglob("*") if p.is_file()]
+    results = tmp_path / "results"  # nothing but the mark naming the study whose results it holds
+    assert [p.name for p in results.rglob("*") if p.is_file()] == [".demid_study"]
 
 
 @pytest.mark.parametrize("key, value", [
@@ -584,3 +584,30 @@ def test_names_that_make_two_rules_write_one_file_name_the_config_key(tmp_path, 
     config.write_text(yaml.safe_dump(text), encoding="utf-8")
     line = _one_error_line(_snakemake(tmp_path, "--configfile", str(config)))
     assert key in line and named in line, line
+
+
+def test_two_studies_sharing_one_results_dir_the_second_is_refused(tmp_path):
+    from demid.out_path import STUDY_MARKER, claim_results_dir, results_owner_problem
+
+    shared = tmp_path / "shared results"
+    first, second = tmp_path / "first", tmp_path / "second"
+    for study in (first, second):
+        study.mkdir()
+        config = _plain_study(study)
+        text = yaml.safe_load(config.read_text(encoding="utf-8"))
+        config.write_text(yaml.safe_dump({**text, "results_dir": str(shared)}), encoding="utf-8")
+    assert claim_results_dir(shared, first) == "" and claim_results_dir(shared, first) == ""  # its own, again
+    assert (shared / STUDY_MARKER).read_text(encoding="utf-8") == f"{first.resolve()}\n"
+    assert f"holds the results of the study in {first.resolve()}" in claim_results_dir(shared, second)
+    for args in (("-n",), ()):  # a dry run, and a run (the default helper runs dry)
+        cmd = [sys.executable, "-m", "snakemake", *args, "-c1", "-s", str(REPO / "Snakefile"), "--directory",
+               str(second), "--configfile", str(second / "study.yaml")]
+        result = subprocess.run(cmd, cwd=second, capture_output=True, text=True, timeout=300,
+                                env=dict(os.environ, PYTHONWARNINGS="ignore"))
+        line = _one_error_line(result)
+        assert "config key results_dir" in line and str(first.resolve()) in line, line
+    assert not [p for p in shared.rglob("*") if p.name != STUDY_MARKER]
+    assert _snakemake(first, "--configfile", str(first / "study.yaml")).returncode == 0
+    shutil.rmtree(first)  # a study gone leaves its claim: the other may take the folder over
+    assert results_owner_problem(shared, second) == "" and claim_results_dir(shared, second) == ""
+    assert (shared / STUDY_MARKER).read_text(encoding="utf-8") == f"{second.resolve()}\n"

@@ -7,6 +7,7 @@ from demid.io import content_digest
 from demid.data import check_table_columns, content_hidden_outside
 from demid.errors import InputError
 from demid.next_wave import check_next_runs
+from demid.out_path import claim_results_dir, results_owner_problem
 from demid.rule_outputs import ambiguous_output
 from demid.sampling import uses_grid
 from demid.spec import MaterialSpec
@@ -54,6 +55,8 @@ os.environ.setdefault("NUMPY_MADVISE_HUGEPAGE", "0")
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 RESULTS = config["results_dir"]
+if results_owner_problem(RESULTS, Path.cwd()):  # another study's results: refused before anything runs
+    sys.exit(f"demid: error: {results_owner_problem(RESULTS, Path.cwd())}")
 MATERIALS = list(config["materials"])
 # The cross-material tables: summary_tables' output name -> file under tables/.
 SUMMARY_TABLE_FILES = {
@@ -385,3 +388,13 @@ def refuse_ambiguous_outputs(rules):
     problem = ambiguous_output(patterns, config["materials"])
     if problem:
         sys.exit(f"demid: error: {problem}")
+
+
+def claim_results():
+    """At the start of a run (not a dry run): results_dir names this study folder, and a second study
+    pointing at it is refused (demid.out_path.claim_results_dir)."""
+    problem = claim_results_dir(RESULTS, Path.cwd())
+    if problem:
+        sys.stderr.write(f"demid: error: {problem}\n")
+        sys.stderr.flush()
+        os._exit(1)  # before any job: nothing written, nothing to clean up
