@@ -5,7 +5,10 @@ wave.  The command is split like a shell line (:func:`shlex.split`) and executed
 placeholders are filled word by word with numbers and the run's folder, so neither the config's
 values nor anything the pipeline writes can become shell syntax.  A run that exits non-zero, times
 out, or leaves no valid responses is recorded as ``failed`` (with the reason); the analysis keeps
-the row, as for a transcribed table with a failed run.
+the row, as for a transcribed table with a failed run.  A run stopped by a signal (Ctrl-C) or by the
+end of the workflow that started it ends its command's processes and leaves no record, so that the
+next invocation runs it again.  ``params.json``, ``run.json`` and ``log`` in the run's folder are
+demid's: ``run.json`` carries the digest of the ``params.json`` written beside it.
 """
 
 from __future__ import annotations
@@ -20,6 +23,8 @@ import shlex
 import signal
 import subprocess
 import tempfile
+import threading
+import time
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -262,11 +267,9 @@ def execute(parameters: dict, run_dir: Path | str, responses, log, timeout_s: fl
 def _wait(process: subprocess.Popen, timeout_s: float, marker: str) -> tuple[str, str]:
     """Wait for the command: ("ended", ""), ("timed out", "") or ("stopped", why); after a time-out or
     a stop, everything the command started that can be found has been ended."""
-    import time
-
     received = []
     handlers = {}
-    if threading_main():
+    if threading.current_thread() is threading.main_thread():  # only there can Python take a signal
         for signum in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
             handlers[signum] = signal.signal(signum, lambda number, frame: received.append(number))
     parent = os.getppid()
@@ -293,18 +296,10 @@ def _wait(process: subprocess.Popen, timeout_s: float, marker: str) -> tuple[str
             signal.signal(signum, handler)
 
 
-def threading_main() -> bool:
-    import threading
-
-    return threading.current_thread() is threading.main_thread()
-
-
 def end_processes(process: subprocess.Popen, marker: str, grace_s: float = STOP_GRACE_S) -> None:
     """End the command and everything it started that can be found: its session, and any process
     carrying the run's environment marker (a daemon in a session of its own); SIGTERM first, SIGKILL
     to whatever is left after ``grace_s`` seconds.  The command is reaped."""
-    import time
-
     for signum, wait_s in ((signal.SIGTERM, grace_s), (signal.SIGKILL, 5.0)):
         pids = _run_processes(process.pid, marker) | ({process.pid} if process.poll() is None else set())
         for pid in pids:
