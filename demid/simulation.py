@@ -368,9 +368,9 @@ def read_run(params_path: Path | str, record_path: Path | str) -> tuple[dict, di
     if not (isinstance(record, dict) and record.get("params_sha256") == hashlib.sha256(params_bytes).hexdigest()
             and record.get("status") in (OK, FAILED) and isinstance(record.get("responses"), dict)):
         record_path.unlink(missing_ok=True)
-        raise InputError(f"{record_path.parent}: run.json or params.json was changed after the run's job wrote "
-                         "them (a command writing into a folder not its own?); run.json removed, the next "
-                         "invocation runs this run again")
+        raise InputError(f"{record_path.parent}: run.json does not match the params.json beside it (changed after "
+                         "the run's job wrote them, by a command writing into a folder not its own?, or written "
+                         "by an earlier demid); run.json removed, the next invocation runs this run again")
     return json.loads(params_bytes.decode("utf-8")), record
 
 

@@ -179,7 +179,7 @@ def test_a_record_not_written_by_its_runs_job_is_refused_and_removed(tmp_path):
     _execute(_parameters(1, _command()), own, ["y1", "y2"])
     record, _ = _execute(_parameters(2, _command("--fail intrude:2")), other, ["y1", "y2"])
     assert record["status"] == OK  # the intruder's own run is fine; the run it wrote into is not
-    with pytest.raises(InputError, match=re.escape(f"{own}: run.json or params.json was changed")):
+    with pytest.raises(InputError, match=re.escape(f"{own}: run.json does not match the params.json beside it")):
         read_run(own / "params.json", own / "run.json")
     assert not (own / "run.json").exists()
     (other / "run.json").write_text(json.dumps(record), encoding="utf-8")
