@@ -31,6 +31,10 @@ include: "workflow/rules/simulation.smk"
 include: "workflow/rules/report.smk"
 
 
+# Material names or a paper_figure that would give two rules one output: one line naming the config key.
+refuse_ambiguous_outputs(workflow.rules)
+
+
 rule all:
     input:
         all_outputs(),
@@ -41,6 +45,10 @@ rule all:
 rule smoke:
     input:
         smoke_outputs(),
+
+
+onstart:
+    claim_results()
 
 
 onsuccess:

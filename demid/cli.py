@@ -221,7 +221,7 @@ def _block_check(table, factors, coding, source):
 
 def cmd_validate(args) -> int:
     from .config import load_config
-    from .data import read_printed, validate_material
+    from .data import content_hidden_outside, read_printed, validate_material
     from .next_wave import check_next_runs
     from .spec import MaterialSpec
     from .transcription.typos import refuse_likely_typos
@@ -239,8 +239,9 @@ def cmd_validate(args) -> int:
             print(f"{name}: simulated by demid (simulation.command)")
             continue
         spec = MaterialSpec.from_config(name, config)
-        vt = validate_material(spec, base_dir=base_dir)
-        confirmed = refuse_likely_typos(vt, spec, read_printed(Path(base_dir) / spec.data, vt.table))
+        with content_hidden_outside(spec.data, base_dir):
+            vt = validate_material(spec, base_dir=base_dir)
+            confirmed = refuse_likely_typos(vt, spec, read_printed(Path(base_dir) / spec.data, vt.table))
         for w in vt.warnings + _outside_the_runs(vt, spec):
             print(f"demid: warning: {w}", file=sys.stderr)
         for flag in confirmed:

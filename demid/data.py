@@ -14,6 +14,7 @@ import io
 import difflib
 import math
 import re
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -37,6 +38,7 @@ _THOUSANDS_OR_DECIMAL = re.compile(r"^[+-]?[1-9]\d{0,2},\d{3}$")
 _FAILED = {"failed", "fail", "error", "crashed", "timeout", "diverged", "aborted", "killed", "unstable"}
 _OK = {"", "ok", "done", "success", "succeeded", "completed", "complete", "finished", "converged", "valid"}
 _NONFINITE = {"nan", "inf", "+inf", "-inf", "infinity", "-infinity"}
+_LINE_BREAK = re.compile(r"\r\n|\r|\n")
 
 
 def _run_failed(status: str, status_column: str, src: str, run: int) -> bool:
@@ -95,10 +97,7 @@ def read_raw_numbered(path: Path | str) -> tuple[list[str], list[list[str]], lis
     path = Path(path)
     if not path.is_file():
         raise InputError("data file does not exist", source=str(path))
-    try:
-        text = path.read_bytes().decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        raise InputError(f"not UTF-8 text (byte {exc.start}); save the table as UTF-8 CSV", source=str(path)) from None
+    text = _table_text(path)
     numbered = _records(text)
     if not numbered:
         raise InputError("the file is empty", source=str(path))
@@ -113,11 +112,31 @@ def read_raw_numbered(path: Path | str) -> tuple[list[str], list[list[str]], lis
     return header, rows, [no for no, _ in numbered[1:]]
 
 
+def _table_text(path: Path) -> str:
+    """A table file's text: UTF-8 (a BOM dropped); other encodings raise InputError naming the file."""
+    data = path.read_bytes()
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"not UTF-8 text (byte {exc.start}); save the table as UTF-8 CSV", source=str(path)) from None
+    if "\0" in text:  # valid UTF-8, yet no text table holds NUL: UTF-16 without a byte-order mark writes one per letter
+        raise InputError(f"not UTF-8 text (a NUL byte at byte {data.index(0)}: UTF-16 without a byte-order mark?); "
+                         "save the table as UTF-8 CSV", source=str(path))
+    return text
+
+
+def _lines(text: str) -> list[str]:
+    """The text's lines, broken where CSV breaks them (\\n, \\r\\n, \\r) only: str.splitlines also breaks
+    at U+2028, U+0085 and form feeds, which are text inside a cell."""
+    lines = _LINE_BREAK.split(text)
+    return lines[:-1] if lines and lines[-1] == "" else lines
+
+
 def _records(text: str) -> list[tuple[int, str]]:
     """(first line number, text) of each CSV record, comment and blank lines skipped.  A quoted cell may
     hold a line break (valid CSV): its record continues on the next lines until the quote closes; a quote
     never closed leaves every line its own record (the cell count then names the line)."""
-    lines = text.splitlines()
+    lines = _lines(text)
     out: list[tuple[int, str]] = []
     no = 0
     while no < len(lines):
@@ -151,7 +170,7 @@ def _drop_trailing_empty_columns(header: list[str], rows: list[list[str]]) -> tu
 def read_raw(path: Path | str) -> tuple[list[str], list[list[str]], str]:
     """Header and string cells; a UTF-8 BOM is dropped, delimiter sniffed from the header."""
     header, rows, _ = read_raw_numbered(path)
-    lines = Path(path).read_bytes().decode("utf-8-sig").splitlines()
+    lines = _lines(_table_text(Path(path)))
     first = next(ln for ln in lines if ln.strip() and not ln.lstrip().startswith("#"))
     return header, rows, _sniff_delimiter(first)
 
@@ -450,6 +469,22 @@ def _block_notes(table: pd.DataFrame, factors: list[str], coding: Coding, log_fa
         raise InputError(check.problems[0], source=src, column=BLOCK_COLUMN)
     notes = [n for n in check.notes if not (check.orthogonal and n.startswith("blocking is orthogonal"))]
     return [f"{src}, column '{BLOCK_COLUMN}': {note}" for note in notes]
+
+
+@contextmanager
+def content_hidden_outside(data: str | Path, base_dir: Path | str = "."):
+    """Errors about a table lying outside the study folder ``base_dir`` (its real path: symlinks followed)
+    show none of its content: a config naming another file of the machine (``/etc/passwd``) must not get
+    its lines printed back.  The table is still read when it is valid."""
+    try:
+        yield
+    except InputError:
+        real, study = (Path(base_dir) / data).resolve(), Path(base_dir).resolve()
+        if real.is_relative_to(study):
+            raise
+        raise InputError(f"not a valid table of this material, and its content is not shown: it lies outside the "
+                         f"study folder {study} (at {real}); copy the table into the study folder to see what is "
+                         "wrong", source=str(data)) from None
 
 
 def check_table_columns(spec: MaterialSpec, base_dir: Path | str = ".") -> None:

@@ -110,3 +110,49 @@ def _same_file(a: Path, b: Path) -> bool:
         return a.exists() and b.exists() and os.path.samefile(a, b)
     except OSError:
         return False
+
+
+#: The file in a results_dir naming the study folder whose results it holds.
+STUDY_MARKER = ".demid_study"
+
+
+def results_owner_problem(results_dir: Path | str, study_dir: Path | str) -> str:
+    """The error line when ``results_dir`` holds the results of another study folder (that still exists),
+    or ""."""
+    marker = Path(results_dir) / STUDY_MARKER
+    try:
+        owner = marker.read_text(encoding="utf-8").strip()
+    except (OSError, UnicodeDecodeError):
+        return ""
+    study = str(Path(study_dir).resolve())
+    if not owner or owner == study or not Path(owner).is_dir():  # a study moved or deleted leaves its claim
+        return ""
+    return (f"config key results_dir: '{results_dir}' holds the results of the study in {owner}; two studies "
+            f"writing one results_dir overwrite each other, so give this one its own (or delete {marker} if "
+            "that study is gone)")
+
+
+def claim_results_dir(results_dir: Path | str, study_dir: Path | str) -> str:
+    """Mark ``results_dir`` as the results of ``study_dir`` before a run writes into it; the error line of
+    :func:`results_owner_problem` when another study holds it (also when two start at once: the marker is
+    created exclusively), or ""."""
+    problem = results_owner_problem(results_dir, study_dir)
+    if problem:
+        return problem
+    marker = Path(results_dir) / STUDY_MARKER
+    study = str(Path(study_dir).resolve())
+    marker.parent.mkdir(parents=True, exist_ok=True)
+    if marker.is_file() and marker.read_text(encoding="utf-8", errors="replace").strip() == study:
+        return ""
+    tmp = marker.with_name(f"{STUDY_MARKER}.{os.getpid()}")
+    tmp.write_text(study + "\n", encoding="utf-8")
+    try:
+        os.link(tmp, marker)  # fails when another study created it meanwhile
+    except FileExistsError:
+        if results_owner_problem(results_dir, study_dir):
+            return results_owner_problem(results_dir, study_dir)
+        os.replace(tmp, marker)  # a stale claim (its study gone): taken over
+        return ""
+    finally:
+        tmp.unlink(missing_ok=True)
+    return ""

@@ -210,12 +210,57 @@ def _construct_unique_mapping(loader, node, deep=False):
 _UniqueKeyLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_unique_mapping)
 
 
+#: Values aliases (``*name``) may add to a YAML document beyond those written in it: anchors and merge
+#: keys for repeated factors add a few hundred; nine levels of nine aliases (a 1 KB file) add 387 million.
+MAX_ALIAS_EXPANSION = 100_000
+
+
+def _refuse_alias_expansion(root) -> None:
+    """InputError when the document's aliases, expanded, add more than MAX_ALIAS_EXPANSION values:
+    counted on the composed nodes (each counted once, however often it is referred to), before anything
+    is built from them."""
+    expanded: dict[int, int] = {}
+
+    def size(node) -> int:
+        known = expanded.get(id(node))
+        if known is not None:
+            return known
+        total = 1
+        if isinstance(node, yaml.SequenceNode):
+            total += sum(size(child) for child in node.value)
+        elif isinstance(node, yaml.MappingNode):
+            total += sum(size(key) + size(value) for key, value in node.value)
+        expanded[id(node)] = total
+        return total
+
+    total = size(root)
+    if total - len(expanded) <= MAX_ALIAS_EXPANSION:
+        return
+    node = root  # the line named: the innermost value that alone expands beyond the limit
+    while isinstance(node, (yaml.SequenceNode, yaml.MappingNode)):
+        children = node.value if isinstance(node, yaml.SequenceNode) else [v for _, v in node.value]
+        biggest = max(children, key=size, default=None)
+        if biggest is None or size(biggest) <= MAX_ALIAS_EXPANSION:
+            break
+        node = biggest
+    raise InputError(f"line {node.start_mark.line + 1}: aliases (*name) expand the document to {total:,} values, "
+                     f"more than {MAX_ALIAS_EXPANSION:,} beyond those written; write the values out")
+
+
 def load_yaml(path: Path | str):
     """A YAML file as Python objects; unreadable text, invalid YAML and repeated keys raise InputError."""
     path = Path(path)
     try:
         with open(path, encoding="utf-8-sig") as fh:
-            return yaml.load(fh, Loader=_UniqueKeyLoader)  # noqa: S506 (a SafeLoader subclass)
+            loader = _UniqueKeyLoader(fh)
+            try:
+                node = loader.get_single_node()
+                if node is None:
+                    return None
+                _refuse_alias_expansion(node)
+                return loader.construct_document(node)
+            finally:
+                loader.dispose()
     except UnicodeDecodeError as exc:
         raise InputError(f"not UTF-8 text (byte {exc.start}); save it as UTF-8", source=str(path)) from None
     except InputError as err:

@@ -5,7 +5,10 @@ wave.  The command is split like a shell line (:func:`shlex.split`) and executed
 placeholders are filled word by word with numbers and the run's folder, so neither the config's
 values nor anything the pipeline writes can become shell syntax.  A run that exits non-zero, times
 out, or leaves no valid responses is recorded as ``failed`` (with the reason); the analysis keeps
-the row, as for a transcribed table with a failed run.
+the row, as for a transcribed table with a failed run.  A run stopped by a signal (Ctrl-C) or by the
+end of the workflow that started it ends its command's processes and leaves no record, so that the
+next invocation runs it again.  ``params.json``, ``run.json`` and ``log`` in the run's folder are
+demid's: ``run.json`` carries the digest of the ``params.json`` written beside it.
 """
 
 from __future__ import annotations
@@ -20,6 +23,8 @@ import shlex
 import signal
 import subprocess
 import tempfile
+import threading
+import time
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -139,36 +144,88 @@ def run_parameters(material: str, wave: int, run: int, factor_values: dict, simu
             "command": simulation.command, "responses_file": simulation.responses_file}
 
 
+#: Largest responses file read: a JSON object of a few numbers is far smaller.
+MAX_RESPONSES_BYTES = 1_000_000
+#: Seconds a stopped or timed-out command has to end after SIGTERM before it is killed.
+STOP_GRACE_S = 5.0
+#: Seconds between looks at the command, the time limit, a stop signal and the workflow.
+_POLL_S = 0.2
+#: Environment variable marking every process a run's command starts (found even in a new session).
+RUN_MARKER = "DEMID_RUN_MARKER"
+#: The files demid writes into a run's folder (the command's responses file cannot be one of them).
+OWN_FILES = ("params.json", "run.json", "log")
+
+
+def reserved_file(name: str) -> bool:
+    """Whether ``name`` is one of demid's own files in a run's folder (its log's attempts and the
+    temporary files of its atomic writes included)."""
+    return name in OWN_FILES or name.startswith(("log.", ".params.json.", ".run.json."))
+
+
+class RunStopped(Exception):
+    """The run was stopped before its command ended (a signal, or the workflow gone): no record."""
+
+
 def _read_responses(path: Path, responses) -> tuple[dict, str]:
-    """(responses, reason): the values of every response, or an empty dict and why not."""
+    """(responses, reason): the values of every response, or an empty dict and why not.  Whatever the
+    file holds, the answer is one of these two: never an exception."""
+    from .numbers import LARGEST, SMALLEST
+
     if not path.is_file():
         return {}, f"the command wrote no {path.name}"
     try:
-        document = json.loads(path.read_text(encoding="utf-8"))
-    except (UnicodeDecodeError, ValueError) as exc:
-        return {}, f"{path.name} is not valid JSON ({exc})"
+        with open(path, "rb") as source:
+            data = source.read(MAX_RESPONSES_BYTES + 1)
+    except OSError as exc:
+        return {}, f"{path.name} cannot be read ({exc.strerror or exc})"
+    if len(data) > MAX_RESPONSES_BYTES:
+        return {}, f"{path.name} is larger than {MAX_RESPONSES_BYTES} bytes (a JSON object of the responses)"
+    try:
+        document = json.loads(data.decode("utf-8"))
+    except (UnicodeDecodeError, ValueError, RecursionError) as exc:
+        return {}, f"{path.name} is not valid JSON ({str(exc)[:200]})"
     if not isinstance(document, dict):
         return {}, f"{path.name} holds no JSON object {{response: value}}"
     values = {}
     for name in responses:
         value = document.get(name)
         if isinstance(value, bool) or not isinstance(value, (int, float)):
-            return {}, f"{path.name}: response '{name}' is {'missing' if name not in document else repr(value)}"
-        if not math.isfinite(value):
-            return {}, f"{path.name}: response '{name}' is {value} (not a finite number)"
-        values[name] = float(value)
+            shown = "missing" if name not in document else repr(value)[:80]
+            return {}, f"{path.name}: response '{name}' is {shown}"
+        try:
+            number = float(value)
+        except OverflowError:
+            return {}, (f"{path.name}: response '{name}' is an integer of {len(str(abs(value)))} digits, "
+                        "too large for a float")
+        if not math.isfinite(number):
+            return {}, f"{path.name}: response '{name}' is {number} (not a finite number)"
+        if number != 0 and not SMALLEST <= abs(number) <= LARGEST:
+            return {}, (f"{path.name}: response '{name}' is {number:g}, outside the magnitudes demid computes "
+                        f"with (0, or {SMALLEST:g} to {LARGEST:g})")
+        values[name] = number
     return values, ""
 
 
-def execute(parameters: dict, run_dir: Path | str, responses, log, timeout_s: float) -> dict:
-    """Run one simulation and return its record ``{status, reason, responses}``.
+def params_digest(document: dict) -> str:
+    """The SHA-256 of params.json as demid writes it: run.json carries it, tying the record to the
+    parameters of its run."""
+    return hashlib.sha256(_json_text(document).encode("utf-8")).hexdigest()
 
-    ``log``: an open text file receiving the command line, its output and the outcome; ``timeout_s``:
-    the run's time limit in seconds.  The responses file of an earlier attempt is removed first, so a
-    failed retry cannot pass off stale values.
+
+def execute(parameters: dict, run_dir: Path | str, responses, log, timeout_s: float) -> dict:
+    """Run one simulation and return its record ``{status, reason, responses, params_sha256}``.
+
+    Writes the run's ``params.json`` first.  ``log``: an open text file receiving the command line, its
+    output and the outcome; ``timeout_s``: the run's time limit in seconds.  The responses file of an
+    earlier attempt is removed first, so a failed retry cannot pass off stale values.  SIGINT, SIGTERM
+    or SIGHUP, or the workflow that started this job going away, stop the command with everything it
+    started and raise :class:`RunStopped` (no record: the run is left for the next invocation).
     """
     run_dir = Path(run_dir).resolve()
     run_dir.mkdir(parents=True, exist_ok=True)
+    params_path = run_dir / "params.json"
+    write_run_json(parameters, params_path)
+    digest = params_digest(parameters)
     values = dict(parameters["factors"], run=parameters["run"], wave=parameters["wave"], seed=parameters["seed"],
                   run_dir=str(run_dir))
     argv = fill_command(parameters["command"], values)
@@ -176,27 +233,145 @@ def execute(parameters: dict, run_dir: Path | str, responses, log, timeout_s: fl
     out.unlink(missing_ok=True)
     log.write("command: " + shlex.join(argv) + "\n")
     log.flush()
+
+    def record(status, reason, found):
+        return _record(status, reason, found, digest, log)
+
+    marker = os.urandom(16).hex()
     try:
-        # its own process group, so that a timeout stops whatever the command started too
+        # its own session, so that a time-out or a stop ends whatever the command started too
         process = subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                                   start_new_session=True)
+                                   start_new_session=True, env=dict(os.environ, **{RUN_MARKER: marker}))
     except OSError as exc:
-        return _record(FAILED, f"could not start the command ({exc.strerror or exc})", {}, log)
+        return record(FAILED, f"could not start the command ({exc.strerror or exc})", {})
+    outcome, stopped = _wait(process, timeout_s, marker)
+    if outcome == "stopped":
+        log.write(f"stopped: {stopped}; the run is left for the next invocation\n")
+        log.flush()
+        # none of the run's outputs left behind: Snakemake, stopped too, would call them incomplete
+        for leftover in (out, params_path):
+            leftover.unlink(missing_ok=True)
+        raise RunStopped(stopped)
+    if _file_digest(params_path) != digest:
+        write_run_json(parameters, params_path)
+        return record(FAILED, "the command wrote params.json, demid's own file in {run_dir} (write only the "
+                              "responses file there)", {})
+    if outcome == "timed out":
+        return record(FAILED, f"timed out after {timeout_s:g} s", {})
+    if process.returncode != 0:
+        return record(FAILED, f"the command exited with status {process.returncode}", {})
+    found, reason = _read_responses(out, responses)
+    return record(FAILED, reason, {}) if reason else record(OK, "", found)
+
+
+def _wait(process: subprocess.Popen, timeout_s: float, marker: str) -> tuple[str, str]:
+    """Wait for the command: ("ended", ""), ("timed out", "") or ("stopped", why); after a time-out or
+    a stop, everything the command started that can be found has been ended."""
+    received = []
+    handlers = {}
+    if threading.current_thread() is threading.main_thread():  # only there can Python take a signal
+        for signum in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+            handlers[signum] = signal.signal(signum, lambda number, frame: received.append(number))
+    parent = os.getppid()
+    deadline = time.monotonic() + timeout_s
     try:
-        returncode = process.wait(timeout=timeout_s)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        process.wait()
-        return _record(FAILED, f"timed out after {timeout_s:g} s", {}, log)
-    if returncode != 0:
-        return _record(FAILED, f"the command exited with status {returncode}", {}, log)
-    values, reason = _read_responses(out, responses)
-    return _record(FAILED, reason, {}, log) if reason else _record(OK, "", values, log)
+        while True:
+            try:
+                process.wait(timeout=_POLL_S)
+                return "ended", ""
+            except subprocess.TimeoutExpired:
+                pass
+            if received:
+                why = f"{signal.Signals(received[0]).name} received"
+            elif os.getppid() != parent:
+                why = "the workflow that started the run has ended"
+            elif time.monotonic() >= deadline:
+                why = ""
+            else:
+                continue
+            end_processes(process, marker)
+            return ("stopped", why) if why else ("timed out", "")
+    finally:
+        for signum, handler in handlers.items():
+            signal.signal(signum, handler)
 
 
-def _record(status: str, reason: str, responses: dict, log) -> dict:
+def end_processes(process: subprocess.Popen, marker: str, grace_s: float = STOP_GRACE_S) -> None:
+    """End the command and everything it started that can be found: its session, and any process
+    carrying the run's environment marker (a daemon in a session of its own); SIGTERM first, SIGKILL
+    to whatever is left after ``grace_s`` seconds.  The command is reaped."""
+    for signum, wait_s in ((signal.SIGTERM, grace_s), (signal.SIGKILL, 5.0)):
+        pids = _run_processes(process.pid, marker) | ({process.pid} if process.poll() is None else set())
+        for pid in pids:
+            try:
+                os.kill(pid, signum)
+            except (ProcessLookupError, PermissionError):
+                pass
+        deadline = time.monotonic() + wait_s
+        while time.monotonic() < deadline:
+            process.poll()
+            if not _run_processes(process.pid, marker) and process.returncode is not None:
+                return
+            time.sleep(0.05)
+    process.wait()
+
+
+def _run_processes(session: int, marker: str) -> set[int]:
+    """Live processes in session ``session`` or whose environment carries ``marker`` (Linux /proc;
+    elsewhere the command's process group only)."""
+    proc = Path("/proc")
+    if not proc.is_dir():
+        try:
+            os.killpg(session, 0)
+            return {session}
+        except OSError:
+            return set()
+    tag = f"{RUN_MARKER}={marker}".encode("ascii") + b"\0"
+    found = set()
+    for entry in proc.iterdir():
+        if not entry.name.isdigit() or int(entry.name) == os.getpid():
+            continue
+        try:
+            stat = (entry / "stat").read_text(encoding="ascii", errors="replace")
+            fields = stat[stat.rindex(")") + 2:].split()
+            if fields[0] == "Z":  # ended; only its exit status is left for its parent
+                continue
+            if int(fields[3]) == session or tag in (entry / "environ").read_bytes():
+                found.add(int(entry.name))
+        except (OSError, ValueError, IndexError):
+            continue
+    return found
+
+
+def _file_digest(path: Path) -> str:
+    try:
+        return hashlib.sha256(path.read_bytes()).hexdigest()
+    except OSError:
+        return ""
+
+
+def _record(status: str, reason: str, responses: dict, digest: str, log) -> dict:
     log.write(f"status: {status}" + (f" ({reason})" if reason else "") + "\n")
-    return {"status": status, "reason": reason, "responses": responses}
+    return {"status": status, "reason": reason, "responses": responses, "params_sha256": digest}
+
+
+def read_run(params_path: Path | str, record_path: Path | str) -> tuple[dict, dict]:
+    """A run's parameters and record, as its job wrote them: the record must carry the digest of the
+    parameters beside it.  A pair changed since (a command writing into another run's folder) raises
+    InputError naming the folder, and its run.json is removed so that the next invocation runs it again."""
+    params_path, record_path = Path(params_path), Path(record_path)
+    try:
+        params_bytes = params_path.read_bytes()
+        record = json.loads(record_path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, ValueError, RecursionError):
+        record = None
+    if not (isinstance(record, dict) and record.get("params_sha256") == hashlib.sha256(params_bytes).hexdigest()
+            and record.get("status") in (OK, FAILED) and isinstance(record.get("responses"), dict)):
+        record_path.unlink(missing_ok=True)
+        raise InputError(f"{record_path.parent}: run.json does not match the params.json beside it (changed after "
+                         "the run's job wrote them, by a command writing into a folder not its own?, or written "
+                         "by an earlier demid); run.json removed, the next invocation runs this run again")
+    return json.loads(params_bytes.decode("utf-8")), record
 
 
 def assemble_table(records, factors, responses) -> pd.DataFrame:
@@ -217,6 +392,10 @@ def assemble_table(records, factors, responses) -> pd.DataFrame:
     return frame.sort_values("run", kind="stable").reset_index(drop=True)
 
 
+def _json_text(document: dict) -> str:
+    return json.dumps(document, sort_keys=True, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+
+
 def write_run_json(document: dict, path: Path | str) -> None:
     """A run's JSON file (params.json, run.json) as :func:`demid.io.write_json` lays it out (sorted keys,
     two-space indent), written atomically with the standard library alone."""
@@ -225,7 +404,7 @@ def write_run_json(document: dict, path: Path | str) -> None:
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".json", dir=path.parent)
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as out:
-            out.write(json.dumps(document, sort_keys=True, indent=2, ensure_ascii=False, allow_nan=False) + "\n")
+            out.write(_json_text(document))
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)

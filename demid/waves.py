@@ -16,6 +16,7 @@ import math
 import numpy as np
 import pandas as pd
 
+from .simulation import reserved_file
 from .spec import MaterialSpec
 
 
@@ -130,6 +131,11 @@ def check_simulated(config: dict, source: str = "config") -> None:
         if clash:
             raise InputError(f"config key {key}: '{clash[0]}' names the simulated table's wave column or a run "
                              "placeholder; rename that factor or response", source=source)
+        responses_file = mat["simulation"]["responses_file"]
+        if reserved_file(responses_file):
+            raise InputError(f"config key {key}.simulation.responses_file: '{responses_file}' is demid's own file in "
+                             "each run's folder; name the command's responses file otherwise (e.g. responses.json)",
+                             source=source)
         if mat["design"]["type"] == "custom":
             raise InputError(f"config key {key}.design.type: the first wave of a simulated material is its design; "
                              "declare ccd, box_behnken or factorial", source=source)

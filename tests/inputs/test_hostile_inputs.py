@@ -412,8 +412,8 @@ def test_an_unusable_number_stops_the_workflow_in_the_material_job(tmp_path):
                             env=dict(os.environ, PYTHONWARNINGS="ignore"))
     line = _one_error_line(result)
     assert "column 'y2'" in line and "1e308" in line and "run 2" in line
-    results = tmp_path / "results"
-    assert not results.exists() or not [p for p in results.rglob("*") if p.is_file()]
+    results = tmp_path / "results"  # nothing but the mark naming the study whose results it holds
+    assert [p.name for p in results.rglob("*") if p.is_file()] == [".demid_study"]
 
 
 @pytest.mark.parametrize("key, value", [
@@ -430,17 +430,30 @@ def test_an_unusable_number_in_a_config_names_the_key(tmp_path, key, value):
     assert f"materials.m.{key}" in line, line
 
 
-def test_a_billion_laughs_label_gives_a_short_line(tmp_path):
+@pytest.mark.parametrize("levels", [6, 9])
+def test_a_billion_laughs_label_gives_a_short_line_at_once(tmp_path, levels):
+    """Nine aliases a level: six levels expand to half a million values, nine (a 1 KB file) to 387
+    million; either is refused from the composed document, before any value is built."""
+    import time
+
     config = _plain_study(tmp_path)
     text = config.read_text(encoding="utf-8")
     laughs = ("lol0: &a [lol, lol, lol, lol, lol, lol, lol, lol, lol]\n"
-              + "".join(f"lol{i}: &{chr(97 + i)} [*{chr(96 + i)}, *{chr(96 + i)}, *{chr(96 + i)}, *{chr(96 + i)}, "
-                        f"*{chr(96 + i)}, *{chr(96 + i)}, *{chr(96 + i)}, *{chr(96 + i)}, *{chr(96 + i)}]\n"
-                        for i in range(1, 6)))
-    config.write_text(laughs + text.replace("materials:\n  m:\n", "materials:\n  m:\n    label: *f\n", 1),
-                      encoding="utf-8")
-    line = _one_error_line(_demid(tmp_path, "validate", "--config", str(config)))
-    assert "left out" in line or "lol0" in line
+              + "".join(f"lol{i}: &{chr(97 + i)} [" + ", ".join([f"*{chr(96 + i)}"] * 9) + "]\n"
+                        for i in range(1, levels)))
+    config.write_text(laughs + text.replace("materials:\n  m:\n", f"materials:\n  m:\n    label: *{chr(96 + levels)}\n",
+                                            1), encoding="utf-8")
+    assert len(config.read_bytes()) < 1500
+    started = time.monotonic()
+    try:
+        result = subprocess.run([sys.executable, "-m", "demid", "validate", "--config", str(config)],
+                                capture_output=True, text=True, cwd=tmp_path, timeout=30,
+                                env=dict(os.environ, PYTHONWARNINGS="ignore"))
+    except subprocess.TimeoutExpired:
+        pytest.fail("no answer within 30 s")
+    line = _one_error_line(result)
+    assert "aliases (*name) expand the document to" in line and "write the values out" in line, line
+    assert time.monotonic() - started < 30
 
 
 def test_a_million_character_cell_is_one_line(tmp_path):
@@ -514,3 +527,87 @@ def test_a_second_run_in_the_same_folder_names_the_lock(tmp_path):
     assert "--unlock" in _one_error_line(run_snakemake(tmp_path, config))
     assert run_snakemake(tmp_path, config, "--unlock").returncode == 0
     assert run_snakemake(tmp_path, config).returncode == 0
+
+
+@pytest.mark.parametrize("how", ["absolute", "relative", "symlink"])
+def test_a_table_outside_the_study_is_never_echoed(tmp_path, how):
+    study = tmp_path / "study"
+    study.mkdir()
+    config = _plain_study(study)
+    secret = tmp_path / "secret.txt"
+    secret.write_text("SECRET-FIRST-LINE:hunter2\nsecond:SECRET-SECOND\n", encoding="utf-8")
+    data = {"absolute": str(secret), "relative": "../secret.txt", "symlink": "data/link.csv"}[how]
+    if how == "symlink":
+        (study / "data" / "link.csv").symlink_to(secret)
+    text = yaml.safe_load(config.read_text(encoding="utf-8"))
+    text["materials"]["m"]["data"] = data
+    config.write_text(yaml.safe_dump(text), encoding="utf-8")
+    for result in (_demid(study, "validate", "--config", str(config)), _snakemake(study, "--configfile", str(config))):
+        line = _one_error_line(result)
+        assert "outside the study folder" in line and "its content is not shown" in line, line
+        assert "SECRET" not in result.stderr + result.stdout and "hunter2" not in result.stderr + result.stdout
+
+
+def test_a_table_in_utf16_without_a_byte_order_mark_is_named_as_such(tmp_path):
+    config = _plain_study(tmp_path)
+    data = tmp_path / "data" / "m.csv"
+    data.write_bytes(data.read_text(encoding="utf-8").encode("utf-16-le"))
+    line = _one_error_line(_demid(tmp_path, "validate", "--config", str(config)))
+    assert "UTF-16 without a byte-order mark" in line and "save the table as UTF-8" in line, line
+    assert "misspel" not in line
+
+
+def test_a_line_separator_inside_a_cell_does_not_split_its_row(tmp_path):
+    config = _plain_study(tmp_path)
+    data = tmp_path / "data" / "m.csv"
+    lines = data.read_text(encoding="utf-8").splitlines()
+    lines[0] += ",note"
+    lines[1:] = [ln + (",first\u2028second\u0085third\x0cfourth" if i == 2 else ",plain") for i, ln in enumerate(lines[1:])]
+    data.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    result = _demid(tmp_path, "validate", "--config", str(config))
+    assert result.returncode == 0, result.stderr
+    assert "1 table(s) valid" in result.stdout
+
+
+@pytest.mark.parametrize("change, key, named", [
+    (lambda mats: mats.update(m_transcription=dict(mats["m"])), "config key materials.m:",
+     "'m_transcription' and 'm' both give results/validated/m_transcription.parquet"),
+    (lambda mats: mats["m"].update(paper_figure="surface"), "config key materials.m.paper_figure:",
+     "gives results/figures/surface_m.png"),
+    (lambda mats: mats.update(sets_m=dict(mats["m"], paper_figure="sets")), "config key materials.sets_m.paper_figure:",
+     "gives results/figures/sets_sets_m.png"),
+])
+def test_names_that_make_two_rules_write_one_file_name_the_config_key(tmp_path, change, key, named):
+    config = _plain_study(tmp_path)
+    text = yaml.safe_load(config.read_text(encoding="utf-8"))
+    change(text["materials"])
+    config.write_text(yaml.safe_dump(text), encoding="utf-8")
+    line = _one_error_line(_snakemake(tmp_path, "--configfile", str(config)))
+    assert key in line and named in line, line
+
+
+def test_two_studies_sharing_one_results_dir_the_second_is_refused(tmp_path):
+    from demid.out_path import STUDY_MARKER, claim_results_dir, results_owner_problem
+
+    shared = tmp_path / "shared results"
+    first, second = tmp_path / "first", tmp_path / "second"
+    for study in (first, second):
+        study.mkdir()
+        config = _plain_study(study)
+        text = yaml.safe_load(config.read_text(encoding="utf-8"))
+        config.write_text(yaml.safe_dump({**text, "results_dir": str(shared)}), encoding="utf-8")
+    assert claim_results_dir(shared, first) == "" and claim_results_dir(shared, first) == ""  # its own, again
+    assert (shared / STUDY_MARKER).read_text(encoding="utf-8") == f"{first.resolve()}\n"
+    assert f"holds the results of the study in {first.resolve()}" in claim_results_dir(shared, second)
+    for args in (("-n",), ()):  # a dry run, and a run (the default helper runs dry)
+        cmd = [sys.executable, "-m", "snakemake", *args, "-c1", "-s", str(REPO / "Snakefile"), "--directory",
+               str(second), "--configfile", str(second / "study.yaml")]
+        result = subprocess.run(cmd, cwd=second, capture_output=True, text=True, timeout=300,
+                                env=dict(os.environ, PYTHONWARNINGS="ignore"))
+        line = _one_error_line(result)
+        assert "config key results_dir" in line and str(first.resolve()) in line, line
+    assert not [p for p in shared.rglob("*") if p.name != STUDY_MARKER]
+    assert _snakemake(first, "--configfile", str(first / "study.yaml")).returncode == 0
+    shutil.rmtree(first)  # a study gone leaves its claim: the other may take the folder over
+    assert results_owner_problem(shared, second) == "" and claim_results_dir(shared, second) == ""
+    assert (shared / STUDY_MARKER).read_text(encoding="utf-8") == f"{second.resolve()}\n"

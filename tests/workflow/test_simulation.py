@@ -5,9 +5,13 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 import re
 import shutil
+import signal
+import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -18,7 +22,8 @@ import pytest
 from demid.config import check_semantics, validate_schema
 from demid.errors import InputError
 from demid.io import read_parquet
-from demid.simulation import FAILED, OK, assemble_table, execute, fill_command, run_seed
+from demid.simulation import (FAILED, OK, RunStopped, _read_responses, assemble_table, execute, fill_command,
+                              params_digest, read_run, run_seed)
 from demid.spec import MaterialSpec
 from demid.waves import check_simulated, first_wave
 
@@ -103,6 +108,86 @@ def test_a_timeout_stops_what_the_command_started_too(tmp_path):
     assert not _alive(pid)
 
 
+def _wait_dead(pid: int, within_s: float = 10) -> bool:
+    deadline = time.monotonic() + within_s
+    while _alive(pid) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    return not _alive(pid)
+
+
+def test_a_timeout_ends_a_daemon_the_command_started_in_a_session_of_its_own(tmp_path):
+    record, _ = _execute(_parameters(1, _command("--fail daemon:1")), tmp_path / "run", ["y1", "y2"])
+    assert record["status"] == FAILED and "timed out" in record["reason"]
+    daemon = int((tmp_path / "run/daemon.pid").read_text(encoding="utf-8"))
+    assert _wait_dead(daemon)
+
+
+def test_a_signal_stops_the_run_with_all_it_started_and_leaves_no_record(tmp_path):
+    """SIGTERM to the run's job (as a Ctrl-C or a cluster's cancel sends): the command and its daemon end,
+    and execute raises instead of returning a record, so the run stays to be done."""
+    run_dir = tmp_path / "run"
+    run_dir.mkdir()
+    received = []
+    previous = signal.signal(signal.SIGTERM, lambda number, frame: received.append(number))  # pytest lives on
+    timer = threading.Timer(1.5, os.kill, (os.getpid(), signal.SIGTERM))
+    timer.start()
+    try:
+        with open(run_dir / "log", "w", encoding="utf-8") as log, pytest.raises(RunStopped, match="SIGTERM received"):
+            execute(_parameters(1, _command("--fail daemon:1")), run_dir, ["y1", "y2"], log, timeout_s=8)
+    finally:
+        timer.join()
+        signal.signal(signal.SIGTERM, previous)
+    assert _wait_dead(int((run_dir / "daemon.pid").read_text(encoding="utf-8")), within_s=1)
+    assert "stopped: SIGTERM received" in (run_dir / "log").read_text(encoding="utf-8")
+    assert not (run_dir / "responses.json").exists()
+
+
+@pytest.mark.parametrize("mode, reason", [
+    ("bigint", "'y1' is an integer of 401 digits, too large for a float"),
+    ("huge", "'y1' is 1e+300, outside the magnitudes demid computes with (0, or 1e-30 to 1e+30)"),
+])
+def test_any_number_a_simulator_writes_fails_that_run_with_one_reason(tmp_path, mode, reason):
+    record, log = _execute(_parameters(1, _command(f"--fail {mode}:1")), tmp_path, ["y1", "y2"])
+    assert record["status"] == FAILED and reason in record["reason"], record
+    assert f"status: failed ({record['reason']})" in log
+
+
+@pytest.mark.parametrize("content, reason", [
+    (b"[" * 100_000, "not valid JSON"),
+    (b'{"y1": ' + b"7" * 5000 + b"}", "not valid JSON"),
+    (b'{"y1": 1e-320}', "outside the magnitudes"),
+    (b'{"y1": "\xff"}', "not valid JSON"),
+    (b'{"y1": 1.0' + b" " * 2_000_000 + b"}", "larger than 1000000 bytes"),
+    (b'{"y1": {"deep": [1]}}', "'y1' is {'deep': [1]}"),
+])
+def test_any_bytes_in_the_responses_file_give_a_reason_never_an_exception(tmp_path, content, reason):
+    path = tmp_path / "responses.json"
+    path.write_bytes(content)
+    values, found = _read_responses(path, ["y1"])
+    assert values == {} and reason in found, found
+
+
+def test_a_command_writing_params_json_fails_its_run_and_demids_file_is_restored(tmp_path):
+    parameters = _parameters(1, _command("--fail params:1"))
+    record, _ = _execute(parameters, tmp_path, ["y1", "y2"])
+    assert record["status"] == FAILED and "the command wrote params.json" in record["reason"]
+    assert json.loads((tmp_path / "params.json").read_text(encoding="utf-8")) == parameters
+    assert record["params_sha256"] == params_digest(parameters)
+
+
+def test_a_record_not_written_by_its_runs_job_is_refused_and_removed(tmp_path):
+    own, other = tmp_path / "run1", tmp_path / "run2"
+    _execute(_parameters(1, _command()), own, ["y1", "y2"])
+    record, _ = _execute(_parameters(2, _command("--fail intrude:2")), other, ["y1", "y2"])
+    assert record["status"] == OK  # the intruder's own run is fine; the run it wrote into is not
+    with pytest.raises(InputError, match=re.escape(f"{own}: run.json does not match the params.json beside it")):
+        read_run(own / "params.json", own / "run.json")
+    assert not (own / "run.json").exists()
+    (other / "run.json").write_text(json.dumps(record), encoding="utf-8")
+    params, kept = read_run(other / "params.json", other / "run.json")
+    assert params["run"] == 2 and kept == record
+
+
 def test_a_stale_responses_file_of_an_earlier_attempt_is_not_read(tmp_path):
     (tmp_path / "responses.json").write_text('{"y1": 1, "y2": 2}', encoding="utf-8")
     record, _ = _execute(_parameters(2, _command("--fail missing:2")), tmp_path, ["y1", "y2"])
@@ -164,6 +249,12 @@ def test_assembled_table_keeps_failed_runs_as_failed_rows():
     (lambda m: m.update(waves={"max": 2, "next_runs": {"count": 7}}, next_runs={"count": 7}), "move next_runs"),
     (lambda m: m.update(waves={"max": 2, "next_runs": {"count": 6}}), "count: 6 runs cannot determine a quadratic"),
     (lambda m: m["responses"].update(wave={}), "'wave' names the simulated table's wave column"),
+    (lambda m: m.update(waves={"max": 1000, "next_runs": {"count": 7}}), "waves.max: 1000 is greater than the "
+                                                                         "maximum of 20"),
+    (lambda m: m["simulation"].update(responses_file="params.json"), "simulation.responses_file: 'params.json' is "
+                                                                      "demid's own file"),
+    (lambda m: m["simulation"].update(responses_file="run.json"), "'run.json' is demid's own file"),
+    (lambda m: m["simulation"].update(responses_file="log.attempt1"), "'log.attempt1' is demid's own file"),
 ])
 def test_simulation_config_errors_name_the_key(change, message):
     mat = _material(_command())
@@ -270,7 +361,9 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
 
     # The run that exited non-zero is a failed row with its log kept; the analysis went on.
     record = json.loads((results / f"runs/m/wave1/run{centre}/run.json").read_text(encoding="utf-8"))
-    assert record == {"reason": "the command exited with status 3", "responses": {}, "status": "failed"}
+    params = json.loads((results / f"runs/m/wave1/run{centre}/params.json").read_text(encoding="utf-8"))
+    assert record == {"reason": "the command exited with status 3", "responses": {}, "status": "failed",
+                      "params_sha256": params_digest(params)}
     assert "simulated divergence" in (results / f"runs/m/wave1/run{centre}/log").read_text(encoding="utf-8")
     row = table[table["run"] == centre].iloc[0]
     assert row["status"] == "failed" and pd.isna(row["y1"]) and pd.isna(row["y2"])
@@ -311,6 +404,71 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     jobs = planned_jobs(edit.stdout)
     assert jobs.get("simulate_run") == changed and jobs.get("analyse_wave") == 1, edit.stdout
     assert re.search(r"material=n\b", edit.stdout) and not re.search(r"material=m\b", edit.stdout), edit.stdout
+
+
+def _processes_under(folder: Path) -> list[int]:
+    """Live processes whose command line names ``folder`` (the run scripts, the simulators)."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit() and int(entry.name) != os.getpid():
+            try:
+                if str(folder).encode() in (entry / "cmdline").read_bytes() and _alive(int(entry.name)):
+                    found.append(int(entry.name))
+            except OSError:
+                continue
+    return found
+
+
+def _simulators_under(folder: Path) -> list[int]:
+    return [pid for pid in _processes_under(folder)
+            if b"simulator.py" in Path(f"/proc/{pid}/cmdline").read_bytes()]
+
+
+@pytest.mark.workflow
+def test_ctrl_c_stops_the_running_simulations_and_leaves_their_runs_to_do(tmp_path):
+    """Ctrl-C in a terminal sends SIGINT to Snakemake's process group: with two simulations running,
+    nothing of the study is left running afterwards and the next invocation plans every run again."""
+    import yaml
+
+    study = tmp_path / "study"
+    study.mkdir()
+    hang_all = " ".join(f"--fail hang:{run}" for run in range(1, 12))
+    mat = _material(_command(hang_all))
+    mat["simulation"]["runtime_min"] = 5
+    config = study / "study.yaml"
+    config.write_text(yaml.safe_dump({"materials": {"m": mat}}, sort_keys=False), encoding="utf-8")
+    target = "results/waves/1/data/m.csv"
+    cmd = [sys.executable, "-m", "snakemake", "-c2", "--configfile", str(config), "--directory", str(study), target]
+
+    def as_in_a_terminal():  # its own process group, taking SIGINT as a foreground job does
+        os.setsid()
+        signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+    with open(tmp_path / "snakemake.out", "w", encoding="utf-8") as out:
+        workflow = subprocess.Popen(cmd, cwd=Path(__file__).resolve().parents[2], stdout=out,
+                                    stderr=subprocess.STDOUT, preexec_fn=as_in_a_terminal,
+                                    env=dict(os.environ, PYTHONWARNINGS="ignore"))
+    try:
+        deadline = time.monotonic() + 120
+        while len(_simulators_under(study)) < 2 and time.monotonic() < deadline and workflow.poll() is None:
+            time.sleep(0.2)
+        assert len(_simulators_under(study)) == 2, (tmp_path / "snakemake.out").read_text(encoding="utf-8")
+        os.killpg(workflow.pid, signal.SIGINT)
+        workflow.wait(timeout=60)
+        deadline = time.monotonic() + 15
+        while _processes_under(study) and time.monotonic() < deadline:
+            time.sleep(0.2)
+        left = _processes_under(study)
+    finally:
+        if workflow.poll() is None:
+            workflow.kill()
+            workflow.wait()
+        for pid in _processes_under(study):  # what this test started and the change failed to stop
+            os.kill(pid, signal.SIGKILL)
+    assert left == [], [Path(f"/proc/{pid}/cmdline").read_bytes() for pid in left if _alive(pid)]
+    assert not list((study / "results").rglob("run.json"))
+    again = run_snakemake(study, config, target, "-n")
+    assert again.returncode == 0 and planned_jobs(again.stdout).get("simulate_run") == 11, again.stdout + again.stderr
 
 
 def test_waves_stop_where_the_next_wave_buys_little():

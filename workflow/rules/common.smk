@@ -4,9 +4,11 @@ from pathlib import Path
 
 from demid.config import check_semantics, load_yaml, validate_schema
 from demid.io import content_digest
-from demid.data import check_table_columns
+from demid.data import check_table_columns, content_hidden_outside
 from demid.errors import InputError
 from demid.next_wave import check_next_runs
+from demid.out_path import claim_results_dir, results_owner_problem
+from demid.rule_outputs import ambiguous_output
 from demid.sampling import uses_grid
 from demid.spec import MaterialSpec
 from demid.waves import check_simulated
@@ -35,7 +37,8 @@ try:
     for _name, _material in config["materials"].items():
         if _material.get("simulation"):  # its tables do not exist yet: each wave validates its own
             continue
-        check_table_columns(SPECS[_name])
+        with content_hidden_outside(SPECS[_name].data):
+            check_table_columns(SPECS[_name])
 except InputError as err:
     sys.exit(f"demid: error: {err}")
 
@@ -52,6 +55,8 @@ os.environ.setdefault("NUMPY_MADVISE_HUGEPAGE", "0")
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 RESULTS = config["results_dir"]
+if results_owner_problem(RESULTS, Path.cwd()):  # another study's results: refused before anything runs
+    sys.exit(f"demid: error: {results_owner_problem(RESULTS, Path.cwd())}")
 MATERIALS = list(config["materials"])
 # The cross-material tables: summary_tables' output name -> file under tables/.
 SUMMARY_TABLE_FILES = {
@@ -372,3 +377,24 @@ def refuse_a_second_run(wildcards=None):
         sys.stderr.flush()
         os._exit(1)  # from inside the DAG's construction: nothing written, nothing to clean up
     return []
+
+
+def refuse_ambiguous_outputs(rules):
+    """Stop with one line naming the config key when material names or a paper_figure would give two
+    rules (or one rule for two materials) the same output file (demid.rule_outputs)."""
+    from snakemake.io import strip_wildcard_constraints
+
+    patterns = [(strip_wildcard_constraints(str(f)), f.wildcard_constraints()) for r in rules for f in r.output]
+    problem = ambiguous_output(patterns, config["materials"])
+    if problem:
+        sys.exit(f"demid: error: {problem}")
+
+
+def claim_results():
+    """At the start of a run (not a dry run): results_dir names this study folder, and a second study
+    pointing at it is refused (demid.out_path.claim_results_dir)."""
+    problem = claim_results_dir(RESULTS, Path.cwd())
+    if problem:
+        sys.stderr.write(f"demid: error: {problem}\n")
+        sys.stderr.flush()
+        os._exit(1)  # before any job: nothing written, nothing to clean up
