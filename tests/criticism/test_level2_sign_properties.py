@@ -57,7 +57,7 @@ def test_negating_a_response_and_its_target_leaves_level_2_as_it_was(own):
 
 @given(target=st.floats(1e-3, 1e6) | st.floats(-1e6, -1e-3), scenario=st.floats(0.001, 0.3),
        own=st.sampled_from(["none", "relative", "absolute"]), own_value=st.floats(0.001, 0.5))
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=40, deadline=None, derandomize=True)
 def test_an_observables_band_does_not_depend_on_its_targets_sign(target, scenario, own, own_value):
     class Response:
         tolerance = own_value if own == "relative" else None
