@@ -1,11 +1,12 @@
-"""Deciding runs over generated tables with 1-3 candidate causes: the runs stop at the first run after which
+"""Deciding runs over generated drifting tables with 1-3 candidate causes (a drift, steps, the plain surface, a
+cubic term): the runs stop at the first run after which
 every pair of candidates is separated to its target (the reported separation is the least-separated pair's), and
 not before; one candidate needs no runs."""
 
 from __future__ import annotations
 
 import numpy as np
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from demid.criticism import discrimination
@@ -15,18 +16,24 @@ from demid.criticism.models import _Model, _Spec
 from demid.design import parse_term
 from tests.generators import FACTORS, ccd_table
 
-CANDIDATE_TERMS = [(), ("mu_r^3",), ("gamma^3",), ("mu_r^2:gamma",)]
+
+def _candidate(name: str, runs: int) -> _Spec:
+    """A drift, steps at three change-points (two of them next to each other), the plain surface, a cubic term."""
+    return {"drift": _Spec(drift=True), "step": _Spec(step=runs // 2), "step+1": _Spec(step=runs // 2 + 1),
+            "step-3": _Spec(step=runs // 2 - 3), "plain": _Spec(),
+            "cubic": _Spec(extra_terms=(parse_term("mu_r^3", FACTORS[2]),))}[name]
 
 
-@given(seed=st.integers(0, 10_000), size=st.floats(0.0, 8.0), count=st.integers(1, 3),
-       first=st.integers(0, 3))
+@given(seed=st.integers(0, 10_000), size=st.floats(10.0, 60.0),
+       labels=st.lists(st.sampled_from(["drift", "step", "step+1", "step-3", "plain", "cubic"]), min_size=1,
+                       max_size=3, unique=True))
+@example(seed=0, size=60.0, labels=["drift", "step", "step+1"])  # drift-step decided by one run, the steps not
 @settings(max_examples=10, deadline=None, derandomize=True)
-def test_deciding_runs_separate_every_pair_of_candidates(seed, size, count, first):
-    table, _ = ccd_table(seed, 2, "term", size, term="mu_r^3")
+def test_deciding_runs_separate_every_pair_of_candidates(seed, size, labels):
+    table, _ = ccd_table(seed, 2, "drift", size)
     data, _ = _prepare(table, FACTORS[2], "y", None, ())
-    specs = [CANDIDATE_TERMS[(first + i) % len(CANDIDATE_TERMS)] for i in range(count)]
-    models = [_Model(data, _Spec(extra_terms=tuple(parse_term(t, FACTORS[2]) for t in terms))) for terms in specs]
-    labels = ["+".join(terms) or "quadratic" for terms in specs]
+    models = [_Model(data, _candidate(name, len(table))) for name in labels]
+    count = len(models)
     runs = discrimination.discriminating_runs(data, models, labels)
     if count == 1:
         assert runs == []
