@@ -1,7 +1,6 @@
 """Deciding runs over generated drifting tables with 1-3 candidate causes (a drift, steps, the plain surface, a
-cubic term): the runs stop at the first run after which
-every pair of candidates is separated to its target (the reported separation is the least-separated pair's), and
-not before; one candidate needs no runs."""
+cubic term): the runs stop at the first run after which every pair of candidates is separated to its target (the
+reported separation is the least-separated pair's), and not before; one candidate needs no runs."""
 
 from __future__ import annotations
 
