@@ -53,6 +53,34 @@ def test_negating_a_response_and_its_target_leaves_level_2_as_it_was(own):
     assert flipped["best_point"]["a"] == pytest.approx(plain["best_point"]["a"], abs=1e-4)
     assert flipped["best_point"]["b"] == pytest.approx(plain["best_point"]["b"], abs=1e-4)
     assert _percents(flipped["message"]) == pytest.approx(_percents(plain["message"]), rel=1e-9)
+    for level2 in (plain, flipped):
+        _check_quoted_numbers(level2)
+
+
+def _check_quoted_numbers(level2: dict) -> None:
+    """The numbers of the message, parsed back: the worst miss and its multiple of its own tolerance, the best point,
+    the bias the bottleneck needs and the errors at the reference point, against the summary's values."""
+    message = level2["message"]
+    miss = re.search(r"the closest point \(a=([\d.]+), b=([\d.]+)\) still misses (\w+) by ([\d.]+) % \(([\d.]+) times "
+                     r"its tolerance of ([\d.]+) %", message)
+    assert miss, message
+    a, b, name, by, times, own = miss.groups()
+    assert float(a) == pytest.approx(level2["best_point"]["a"], abs=5e-5)
+    assert float(b) == pytest.approx(level2["best_point"]["b"], abs=5e-5)
+    error, tolerance = abs(level2["best_errors"][name]), level2["tolerances"][name]
+    assert float(by) == pytest.approx(100 * error, rel=5e-3)
+    assert float(own) == pytest.approx(100 * tolerance, rel=5e-3)
+    assert float(times) == pytest.approx(error / tolerance, abs=0.05 + 1e-9)
+    assert error / tolerance == pytest.approx(level2["best_max_error"] / level2["tolerance"], rel=1e-6)
+    bottleneck = level2["bottleneck"]
+    bias = re.search(rf"the simulation would then read {bottleneck} ([\d.]+) % (low|high)", message)
+    assert bias, message
+    assert float(bias.group(1)) == pytest.approx(100 * abs(level2["implied_bias"][bottleneck]), abs=0.005 + 1e-9)
+    at_reference = re.search(r"At the reference point the errors are (.*?): ", message).group(1)
+    for item in at_reference.split(", "):
+        observable, value, _ = item.split(" ")  # "y1 +1.35 %"
+        assert float(value.replace("−", "-")) == pytest.approx(
+            100 * level2["reference_errors"][observable], abs=0.005 + 1e-9)
 
 
 @given(target=st.floats(1e-3, 1e6) | st.floats(-1e6, -1e-3), scenario=st.floats(0.001, 0.3),
