@@ -29,8 +29,8 @@ how well the tests cover the mutants they were aimed at, not how many unseen bug
 draws as many other mutants with :data:`HELD_OUT_SEED` (none of the in-sample draw's) and scores them next to it;
 ``--held-out-only`` runs the held-out draw alone.
 
-First held-out draw (``--held-out --held-out-only --per-module 3``, six modules, after the property tests of
-tests/*/test_*_properties.py were added; design_inference.py's row was stopped before it ran): 10 of 18 killed,
+First held-out draw (``--held-out --held-out-only --per-module 3``, six modules, after the property tests
+(tests/**/test_*_properties.py) were added; design_inference.py's row was stopped before it ran): 10 of 18 killed,
 55.6 %, far below the in-sample rows below (100 % after).  By module: story/advice.py 1/3,
 combinations/material.py 1/3, combinations/axes.py 1/3, blocks.py 1/3, tolerance.py 3/3, transcription/typos.py
 3/3.  Survivors: the add-observable advice's filter of unreachable targets removed; the widen advice's scenario
