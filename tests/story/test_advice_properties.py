@@ -44,7 +44,8 @@ def test_the_observable_advised_is_the_one_with_the_largest_gain_and_its_bits_ar
     spec = _spec(n, used, targets)
     base = "+".join(NAMES[:used])
     rows = [{"observables": base + "+" + NAMES[used + k], "n_observables": used + 1, "best_subset": base,
-             "gain_vs_best_subset_bits": g, "feasible_fraction_pct": f, "targets_reachable": True}
+             "gain_vs_best_subset_bits": g, "information_gain_bits": g, "feasible_fraction_pct": f,
+             "targets_reachable": True}
             for k, (g, f) in enumerate(zip(gains, fractions))]
     ranking = pd.DataFrame(rows).sample(frac=1.0, random_state=len(rows))  # the table's order says nothing
     (item,) = [i for i in material_advice(spec, NO_VERDICTS, ranking=ranking) if i.kind == "add_observable"]
