@@ -233,7 +233,8 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     # Two waves (stop_early: false): wave 2 simulated wave 1's proposals, numbered on, and was analysed over
     # wave 1's box; wave 1's decision carries the estimate the stop advice reads, whatever it says.
     decision = json.loads((results / "waves/1/next_wave/m/decision.json").read_text(encoding="utf-8"))
-    assert set(decision) == {"stop", "reason", "value"} and decision["value"]["count"] == 7
+    assert set(decision) == {"stop", "action", "reason", "value", "plausible_fraction_of_omega_pct"}
+    assert decision["value"]["count"] == 7 and decision["action"] in ("stop", "next_runs", "recalibrate")
     proposals = pd.read_csv(results / "waves/1/next_wave/m/next_runs.csv")
     domain = pd.read_csv(results / "waves/1/next_wave/m/next_domain.csv")
     table = pd.read_csv(results / "waves/2/data/m.csv")
@@ -307,15 +308,51 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     assert re.search(r"material=n\b", edit.stdout) and not re.search(r"material=m\b", edit.stdout), edit.stdout
 
 
-def test_waves_stop_where_the_next_wave_buys_little():
-    """The loop ends on the estimate the stop advice reads: contraction below the threshold stops it,
-    a larger one or an empty plausible set (no estimate) goes on."""
-    from demid.wave_value import STOP_CONTRACTION
-    from demid.waves import stop_reason
+def _evidence(**changes):
+    from demid.waves import WaveEvidence
 
-    base = {"scenario": "both", "count": 9, "plausible_fraction_pct": 9.3, "expected_fraction_pct": 9.1}
-    small = {**base, "expected_contraction": STOP_CONTRACTION / 5, "stop": True}
-    assert "shrink the plausible set of 'both' by only 2.0 %" in stop_reason(small)
-    assert stop_reason({**base, "expected_contraction": 0.4, "stop": False}) == ""
-    assert stop_reason({**base, "expected_contraction": float("nan"), "stop": False}) == ""
-    assert stop_reason(None) == ""
+    base = dict(wave=2, max_waves=4, plausible_pct=1.55, previous_pct=1.40,
+                surrogates={"y1": {"q2": 0.97, "lof_p": 0.40}, "y2": {"q2": 0.93, "lof_p": 0.60}},
+                model_limit=False, proposed=9, criticism_runs=0)
+    return WaveEvidence(**{**base, **changes})
+
+
+def test_waves_stop_on_the_measured_change_the_budget_or_the_model_never_on_a_misfitting_surrogate():
+    """The loop stops when the plausible share of Omega measured wave to wave stops moving (whatever the
+    prediction), when waves.max is spent or when the model itself is the limit; it never stops while a
+    surrogate misfits or does not predict, and says what the next wave does about it."""
+    from demid.wave_value import STOP_CONTRACTION
+    from demid.waves import STOP_Q2, stop_decision
+
+    big = {"scenario": "both", "count": 9, "plausible_fraction_pct": 9.3, "expected_fraction_pct": 6.0,
+           "expected_contraction": 0.35, "stop": False}
+    small = {**big, "expected_fraction_pct": 9.1, "expected_contraction": STOP_CONTRACTION / 5, "stop": True}
+    # 1.40 -> 1.55 %: +10.7 % measured, the set still moves although the prediction says it buys little
+    moving = stop_decision(small, _evidence())
+    assert moving["stop"] is False and moving["action"] == "next_runs"
+    assert "1.4 % → 1.55 % from wave 1 to wave 2 (+10.7 %)" in moving["reason"]
+    # 1.55 -> 1.44 %: -7.1 %, within noise: stop though each wave predicted a 35 % shrink
+    flat = stop_decision(big, _evidence(wave=3, plausible_pct=1.44, previous_pct=1.55))
+    assert flat["stop"] is True and flat["action"] == "stop" and "(-7.1 %), within the 10 %" in flat["reason"]
+    # wave 1 has no measured change: the prediction decides
+    assert stop_decision(small, _evidence(wave=1, previous_pct=None))["stop"] is True
+    first = stop_decision(big, _evidence(wave=1, previous_pct=None))
+    assert first["stop"] is False and "nothing to compare with" in first["reason"]
+    # a misfitting surrogate (lack of fit p = 0.019) or one below the stated Q² never stops the loop
+    for bad in ({"q2": 0.97, "lof_p": 0.019}, {"q2": STOP_Q2 - 0.1, "lof_p": 0.5}):
+        going = stop_decision(small, _evidence(wave=1, previous_pct=None, surrogates={"y1": bad},
+                                               criticism_runs=4))
+        assert going["stop"] is False and going["action"] == "next_runs", bad
+        assert "the surrogate of y1" in going["reason"] and "4 of them replicates or runs the criticism asks for" \
+            in going["reason"]
+    assert "lack of fit p = 0.019" in stop_decision(small, _evidence(surrogates={"y1": {"q2": 0.9, "lof_p": 0.019}}))[
+        "reason"]
+    # ... unless the budget is spent: then the advice is to recalibrate, not to take the set as the answer
+    spent = stop_decision(small, _evidence(wave=4, surrogates={"y1": {"q2": 0.2, "lof_p": 0.5}}))
+    assert spent["stop"] is True and spent["action"] == "recalibrate" and "budget of 4 wave(s)" in spent["reason"]
+    # the model, not the surrogate, is the limit: stop
+    model = stop_decision(big, _evidence(model_limit=True))
+    assert model["stop"] is True and "the model, not the surrogate, is the limit" in model["reason"]
+    # the budget spent on a set still moving: the loop ends, the advice is another wave
+    last = stop_decision(big, _evidence(wave=4))
+    assert last["stop"] is True and last["action"] == "next_runs" and "budget of 4 wave(s) is spent" in last["reason"]
