@@ -127,7 +127,10 @@ def surrogate_limits(surrogates: dict) -> list[str]:
     out = []
     for response, st in surrogates.items():
         q2, lof_p = st.get("q2"), st.get("lof_p")
-        if q2 is not None and np.isfinite(q2) and q2 < STOP_Q2:
+        if q2 is None or not np.isfinite(q2):
+            out.append(f"the surrogate of {response} is not checked on left-out runs (Q² undefined: a run alone "
+                       "fixes it)")
+        elif q2 < STOP_Q2:
             out.append(f"the surrogate of {response} does not predict well enough (Q² = {q2:.2f} < {STOP_Q2:g})")
         if lof_p is not None and np.isfinite(lof_p) and lof_p <= LACK_OF_FIT_ALPHA:
             out.append(f"the surrogate of {response} misfits the replicated runs (lack of fit p = {lof_p:.2g})")
@@ -197,7 +200,7 @@ def stop_decision(value: dict | None, evidence: WaveEvidence) -> dict:
                 f"{budget} while {'; '.join(limits)}: the plausible set rests on that surrogate and is not the "
                 f"answer yet; raise waves.max so that {what}")}
         return {"stop": False, "action": "next_runs", "reason": (
-            f"the waves go on: {'; '.join(limits)}, so its plausible set cannot be the answer yet; {what}")}
+            f"the waves go on: {'; '.join(limits)}, so the plausible set cannot be the answer yet; {what}")}
     if evidence.model_limit:
         return {"stop": True, "action": "stop", "reason": (
             "the criticism finds no parameter set meets every target: the model, not the surrogate, is the limit, "

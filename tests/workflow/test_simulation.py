@@ -339,7 +339,7 @@ def test_waves_stop_on_the_measured_change_the_budget_or_the_model_never_on_a_mi
     first = stop_decision(big, _evidence(wave=1, previous_pct=None))
     assert first["stop"] is False and "nothing to compare with" in first["reason"]
     # a misfitting surrogate (lack of fit p = 0.019) or one below the stated Q² never stops the loop
-    for bad in ({"q2": 0.97, "lof_p": 0.019}, {"q2": STOP_Q2 - 0.1, "lof_p": 0.5}):
+    for bad in ({"q2": 0.97, "lof_p": 0.019}, {"q2": STOP_Q2 - 0.1, "lof_p": 0.5}, {"q2": float("nan"), "lof_p": 0.5}):
         going = stop_decision(small, _evidence(wave=1, previous_pct=None, surrogates={"y1": bad},
                                                criticism_runs=4))
         assert going["stop"] is False and going["action"] == "next_runs", bad
