@@ -55,7 +55,7 @@ class StudyAdvice:
     def from_frame(cls, frame: pd.DataFrame | None) -> StudyAdvice:
         if frame is None or not len(frame):
             return cls([])
-        clean = frame.fillna("").astype(str)
+        clean = frame.astype(object).fillna("").astype(str)  # an all-empty column reads as float
         text_columns = [c for c in ADVICE_COLUMNS if c != "decision"]
         return cls([AdviceItem(*(row[c] for c in text_columns), decision=row.get("decision", "").lower() == "true")
                     for _, row in clean.iterrows()])
