@@ -332,7 +332,8 @@ UNEXPLAINED_REPLICATED_RUNS = 2
 def replicate_runs(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None) -> list[dict]:
     """Replicates at runs already made, for a next wave ([] where none is called for).
 
-    A simulated table's run named an outlier: :data:`OUTLIER_REPLICATES` replicates of it (it cannot be a typing
+    A simulated table's run named an outlier (the first cause named, the one proposed runs serve):
+    :data:`OUTLIER_REPLICATES` replicates of it (it cannot be a typing
     slip, so replicates are what tell seed-to-seed scatter from a failure of that run).  An unexplained misfit:
     one replicate of each of the :data:`UNEXPLAINED_REPLICATED_RUNS` runs of largest |studentised residual|, so
     that the next wave measures the scatter where the surrogate misses most and can name the cause."""
@@ -343,9 +344,8 @@ def replicate_runs(data: _Data, fit: SurrogateFit, findings: list, unexplained: 
         return {**{f: float(f"{v:.10g}") + 0.0 for f, v in zip(data.factors, x)}, "purpose": purpose,
                 "replicate_of": _run_value(run)}
 
-    if data.simulated and findings:
-        outliers = [f.detail for f in findings if f.cause == "outlier"]  # a finding names the run by its label
-        return [at(run, run_purposes.CONFIRM) for run in outliers for _ in range(OUTLIER_REPLICATES)]
+    if data.simulated and findings and findings[0].cause == "outlier":  # the cause the proposed runs serve
+        return [at(findings[0].detail, run_purposes.CONFIRM) for _ in range(OUTLIER_REPLICATES)]
     if unexplained:
         frame = fit.influence()
         frame = frame[frame["run"].map(lambda r: _run_value(r) in position)]
@@ -361,7 +361,7 @@ def replicate_message(runs: list[dict], simulated: bool) -> str:
         return (f" {len(runs)} replicate(s) of {which} are proposed for the next wave: if they scatter as far from "
                 "the surface, it is seed-to-seed scatter; if they agree with each other off it, the simulator "
                 "behaves differently there; if they fall on the surface, that run failed.")
-    made = "demid simulates them in the next wave" if simulated else "a next wave (next_runs) makes them"
+    made = "the next wave (waves.next_runs) simulates them" if simulated else "a next wave (next_runs) makes them"
     return (f" Replicates of the runs that misfit most ({which}) are proposed so that the scatter there is measured "
             f"and the next analysis can name the cause; {made}.")
 
@@ -380,7 +380,8 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
         detail["message"] += replicate_message(list(runs), data.simulated)
     elif runs and verdict in NAMING_VERDICTS:
         detail["message"] += confirming_message(list(runs))
-    if runs_for_next_wave(runs, candidates, verdict) and data.run_candidates is not None:
+    if (runs_for_next_wave(runs, candidates, verdict) and data.run_candidates is not None
+            and "replicate_of" not in runs[0]):  # replicates sit at the runs they repeat
         detail["message"] += (" The runs are chosen on the next wave's box grid, the only place where its table "
                               "keeps them.")
     lone = unpredictable_runs_message(fit)

@@ -216,7 +216,8 @@ def _study(folder: Path, centre_run: int) -> Path:
     return path
 
 
-TARGETS = ("results/tables/identifiability.csv", "results/waves/history_m.csv", "results/figures/waves_n.png")
+TARGETS = ("results/tables/identifiability.csv", "results/waves/history_m.csv", "results/figures/waves_n.png",
+           "results/tables/advice.csv")
 
 
 @pytest.mark.workflow
@@ -262,6 +263,20 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     wave2 = history[history["wave"] == 2].iloc[0]
     assert wave2["feasible_fraction_of_omega_pct"] == pytest.approx(wave2["feasible_fraction_pct"] * share, rel=1e-4)
     assert (results / "figures/waves_m.png").is_file() and (results / "figures/waves_n.svg").is_file()
+
+    # Told: per wave the runs simulated, failed and analysed; the last wave's decision is the material's
+    # stop/next_runs/recalibrate advice, word for word; n (one wave, no next runs) has its wave and no decision.
+    summary = json.loads((results / "waves/summary_m.json").read_text(encoding="utf-8"))
+    assert [(w["simulated"], w["failed"], w["analysed"]) for w in summary["waves"]] == [(11, 1, 11),
+                                                                                      (18, 1, len(analysed))]
+    last = json.loads((results / "waves/2/next_wave/m/decision.json").read_text(encoding="utf-8"))
+    assert summary["decision"] == last and last["stop"] is True  # waves.max: 2 is spent
+    advice = pd.read_csv(results / "tables/advice.csv")
+    told = advice[(advice["material"] == "m") & advice["kind"].isin(["stop", "next_runs", "recalibrate"])]
+    assert list(told["kind"]) == [last["action"]] and last["reason"] in told["text"].iloc[0]
+    assert not len(advice[(advice["material"] == "n") & advice["kind"].isin(["stop", "next_runs", "recalibrate"])])
+    n_summary = json.loads((results / "waves/summary_n.json").read_text(encoding="utf-8"))
+    assert n_summary["decision"] is None and [w["simulated"] for w in n_summary["waves"]] == [11]
 
     # The run that exited non-zero is a failed row with its log kept; the analysis went on.
     record = json.loads((results / f"runs/m/wave1/run{centre}/run.json").read_text(encoding="utf-8"))
