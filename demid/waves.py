@@ -207,8 +207,8 @@ def stop_decision(value: dict | None, evidence: WaveEvidence) -> dict:
             "and more runs of it cannot change that")}
     if change is not None and abs(change) <= STOP_CONTRACTION:
         return {"stop": True, "action": "stop", "reason": (
-            f"{_change_text(evidence, change)}, within the {100 * STOP_CONTRACTION:g} % the loop counts as "
-            "progress: a further wave of this kind buys nothing measurable")}
+            f"{_change_text(evidence, change)}: within the {100 * STOP_CONTRACTION:g} % change the loop needs to "
+            "count a wave as progress, so a further wave of this kind is not expected to buy anything measurable")}
     if change is None and value and value.get("stop"):  # a prediction only where no change is measured yet
         return {"stop": True, "action": "stop", "reason": (
             f"the {value['count']} proposed runs are expected to shrink the plausible set of '{value['scenario']}' "
