@@ -212,7 +212,8 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
     criticism = criticize_material(table, surrogates, spec, coding=validated.coding,
                                    fits={fit.response: fit for fit in fitted},
                                    strict_sets=stored_strict_sets(scenarios, judged, reference=True),
-                                   run_candidates=_next_box_points(spec, uncertainty.robust))
+                                   run_candidates=_next_box_points(spec, uncertainty.robust),
+                                   simulated=not typo_stop)  # a simulated wave: demid made every run itself
     combos = combinations_step(surrogates, spec, validated.coding, fitted, sets.sets or {}, z=z,
                                ranking=uncertainty.ranking, judged=judged)
     figures = {"sets_figure": sets.figure, "surface_figure": sets.surface,

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import copy
 import math
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
@@ -94,16 +95,131 @@ def next_wave_runs(proposals: pd.DataFrame, factors, first_run: int) -> pd.DataF
     return frame
 
 
-def stop_reason(value: dict | None) -> str:
-    """Why the waves should stop after this one ("" to go on): the next-wave estimate
-    (:func:`demid.wave_value.expected_contraction`, the same number the ``stop`` advice reads) says the
-    proposed runs would shrink the plausible set by less than :data:`~demid.wave_value.STOP_CONTRACTION`."""
-    if not value or not value.get("stop"):
-        return ""
-    return (f"the {value['count']} proposed runs are expected to shrink the plausible set of "
-            f"'{value['scenario']}' by only {100 * value['expected_contraction']:.1f} % "
-            f"({value['plausible_fraction_pct']:.3g} % → {value['expected_fraction_pct']:.3g} % of the search range): "
-            "its width is set by the measurement band, not by the surrogate")
+#: The leave-one-out Q² a surrogate must reach before the waves may stop on its plausible set: below it the
+#: surrogate does not predict the runs it was not fitted to well enough for its set to be the answer.
+STOP_Q2 = 0.5
+#: A lack-of-fit p-value at or below this says the surrogate misfits the replicated runs.
+LACK_OF_FIT_ALPHA = 0.05
+
+
+@dataclass(frozen=True)
+class WaveEvidence:
+    """What one wave's analysis says about stopping: its number and the budget (``waves.max``), the plausible
+    share of Omega of the refocus scenario now and after the previous wave (None for wave 1), each response of
+    that scenario's Q² and lack-of-fit p-value, whether the criticism finds no parameter set meets every target
+    (the model, not the surrogate, is the limit), and how many of the proposed runs are the criticism's
+    replicates and deciding runs."""
+
+    wave: int
+    max_waves: int
+    plausible_pct: float
+    previous_pct: float | None
+    surrogates: dict  # response -> {"q2": float, "lof_p": float}
+    model_limit: bool
+    proposed: int
+    criticism_runs: int
+
+
+def surrogate_limits(surrogates: dict) -> list[str]:
+    """Why the surrogates cannot be stopped on, one clause per response ([] when every one predicts and fits)."""
+    out = []
+    for response, st in surrogates.items():
+        q2, lof_p = st.get("q2"), st.get("lof_p")
+        if q2 is None or not np.isfinite(q2):
+            out.append(f"the surrogate of {response} is not checked on left-out runs (Q² undefined: a run alone "
+                       "fixes it)")
+        elif q2 < STOP_Q2:
+            out.append(f"the surrogate of {response} does not predict well enough (Q² = {q2:.2f} < {STOP_Q2:g})")
+        if lof_p is not None and np.isfinite(lof_p) and lof_p <= LACK_OF_FIT_ALPHA:
+            out.append(f"the surrogate of {response} misfits the replicated runs (lack of fit p = {lof_p:.2g})")
+    return out
+
+
+def measured_change(evidence: WaveEvidence) -> float | None:
+    """The relative change of the plausible share of Omega from the previous wave to this one (None for wave 1
+    or after an empty set)."""
+    if evidence.previous_pct is None or not evidence.previous_pct > 0:
+        return None
+    return (evidence.plausible_pct - evidence.previous_pct) / evidence.previous_pct
+
+
+def _change_text(evidence: WaveEvidence, change: float) -> str:
+    return (f"the plausible share of the search range went {evidence.previous_pct:.3g} % → "
+            f"{evidence.plausible_pct:.3g} % from wave {evidence.wave - 1} to wave {evidence.wave} "
+            f"({100 * change:+.1f} %)")
+
+
+def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, robust: pd.DataFrame,
+                  statistics: pd.DataFrame, criticism: dict, previous: dict | None, runs: pd.DataFrame) -> WaveEvidence:
+    """The :class:`WaveEvidence` of wave ``wave`` of the material ``spec`` (its full search range): from the
+    wave's box ``domain``, robust-identifiability frame, fit statistics, criticism summary and proposed
+    ``runs``, and the previous wave's decision (``previous``, None for wave 1)."""
+    from .next_wave import refocus_scenario
+    from .run_purposes import CONFIRM, DECIDE
+
+    analysed = wave_spec(spec, "", domain) if domain is not None else spec
+    scenario = refocus_scenario(analysed)
+    rows = robust[robust["scenario"] == scenario]
+    plausible = float(rows["robust_fraction_pct"].iloc[0]) if len(rows) else 0.0  # a share of Omega already
+    observables = next(sc.observables for sc in analysed.scenarios if sc.name == scenario)
+    stats = statistics.set_index("response")
+    surrogates = {r: {"q2": float(stats.at[r, "q2"]), "lof_p": float(stats.at[r, "lof_p"])}
+                  for r in observables if r in stats.index}
+    level2 = criticism.get("level2") or {}
+    return WaveEvidence(wave=wave, max_waves=waves_max(spec), plausible_pct=plausible,
+                        previous_pct=None if previous is None else previous.get("plausible_fraction_of_omega_pct"),
+                        surrogates=surrogates, model_limit=level2.get("feasible") is False, proposed=len(runs),
+                        criticism_runs=int(runs["purpose"].isin([CONFIRM, DECIDE]).sum()) if len(runs) else 0)
+
+
+def stop_decision(value: dict | None, evidence: WaveEvidence) -> dict:
+    """Whether the waves stop after this one, what the study's advice is (``action``: ``stop``, ``next_runs`` or
+    ``recalibrate``) and why, in one sentence.
+
+    They never stop on a surrogate that misfits or does not predict (:func:`surrogate_limits`), unless the
+    budget is spent (then: ``recalibrate``).  They stop when the criticism finds the model itself is the limit,
+    when the budget is spent, when the measured change of the plausible share of Omega between the last two
+    waves is within :data:`~demid.wave_value.STOP_CONTRACTION` (the smallest change the loop counts as
+    progress), or when the proposed runs are expected to shrink the set by less than that
+    (``value``: :func:`demid.wave_value.expected_contraction`)."""
+    from .wave_value import STOP_CONTRACTION
+
+    spent = evidence.wave >= evidence.max_waves
+    budget = f"the budget of {evidence.max_waves} wave(s) is spent"
+    limits = surrogate_limits(evidence.surrogates)
+    change = measured_change(evidence)
+    if limits:
+        what = (f"the next wave's {evidence.proposed} proposed runs"
+                + (f", {evidence.criticism_runs} of them replicates or runs the criticism asks for," if
+                   evidence.criticism_runs else "")
+                + " add runs where the set's boundary is decided and refit the surrogate")
+        if spent:
+            return {"stop": True, "action": "recalibrate", "reason": (
+                f"{budget} while {'; '.join(limits)}: the plausible set rests on that surrogate and is not the "
+                f"answer yet; raise waves.max so that {what}")}
+        return {"stop": False, "action": "next_runs", "reason": (
+            f"the waves go on: {'; '.join(limits)}, so the plausible set cannot be the answer yet; {what}")}
+    if evidence.model_limit:
+        return {"stop": True, "action": "stop", "reason": (
+            "the criticism finds no parameter set meets every target: the model, not the surrogate, is the limit, "
+            "and more runs of it cannot change that")}
+    if change is not None and abs(change) <= STOP_CONTRACTION:
+        return {"stop": True, "action": "stop", "reason": (
+            f"{_change_text(evidence, change)}: within the {100 * STOP_CONTRACTION:g} % change the loop needs to "
+            "count a wave as progress, so a further wave of this kind is not expected to buy anything measurable")}
+    if change is None and value and value.get("stop"):  # a prediction only where no change is measured yet
+        return {"stop": True, "action": "stop", "reason": (
+            f"the {value['count']} proposed runs are expected to shrink the plausible set of '{value['scenario']}' "
+            f"by only {100 * value['expected_contraction']:.1f} % ({value['plausible_fraction_pct']:.3g} % → "
+            f"{value['expected_fraction_pct']:.3g} % of the wave's range): its width is set by the measurement "
+            "band, not by the surrogate")}
+    moving = (f"{_change_text(evidence, change)}: the set still moves" if change is not None else
+              "the first wave's set has nothing to compare with yet")
+    if spent:
+        return {"stop": True, "action": "next_runs", "reason": (
+            f"{budget} while {moving}; raise waves.max to simulate the {evidence.proposed} proposed runs")}
+    return {"stop": False, "action": "next_runs", "reason": (
+        f"the waves go on: {moving}; the next wave simulates the {evidence.proposed} proposed runs")}
 
 
 #: Names a simulated material's factors and responses cannot take: its table's ``wave`` column and
@@ -203,3 +319,32 @@ def wave_history(spec: MaterialSpec, waves: list[dict]) -> pd.DataFrame:
                          "width": float(row.width), "box_lower": box[row.factor][0],
                          "box_upper": box[row.factor][1], "box_share_of_omega_pct": 100 * share})
     return pd.DataFrame(rows, columns=HISTORY_COLUMNS)
+
+
+def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -> dict:
+    """What each wave simulated and found, and why the loop stopped, for the report's "Waves" section.
+
+    ``waves``: per wave in order, ``table`` (every run simulated up to it, with ``status``), ``analysed`` (its
+    runs analysed), ``domain`` (its box, None for wave 1), ``robust`` (its robust-identifiability frame) and
+    ``statistics`` (its fit statistics).  ``decision``: the last wave's decision (:func:`stop_decision`), None
+    for a material without waves.  Plausible shares are of Omega (every wave is analysed over Omega); intervals
+    are in actual units."""
+    from .next_wave import refocus_scenario
+
+    rows = []
+    for number, wave in enumerate(waves, start=1):
+        analysed = wave_spec(spec, "", wave["domain"])
+        scenario = refocus_scenario(analysed)
+        robust = wave["robust"][wave["robust"]["scenario"] == scenario].set_index("factor")
+        stats = wave["statistics"]
+        table = wave["table"]
+        failed = int((table["status"] == "failed").sum()) if "status" in table else 0
+        rows.append({
+            "wave": number, "simulated": len(table), "failed": failed, "analysed": len(wave["analysed"]),
+            "surrogate": str(stats["surrogate"].iloc[0]) if "surrogate" in stats and len(stats) else "quadratic",
+            "q2": {str(r): float(q) for r, q in zip(stats["response"], stats["q2"])},
+            "scenario": scenario,
+            "plausible_fraction_of_omega_pct": float(robust["robust_fraction_pct"].iloc[0]) if len(robust) else 0.0,
+            "plausible": {f: [float(robust.at[f, "robust_lower"]), float(robust.at[f, "robust_upper"])]
+                          for f in spec.factor_names if f in robust.index}})
+    return {"material": spec.name, "waves": rows, "decision": decision}

@@ -1,7 +1,9 @@
 """Snakemake script: a simulated material's next wave after wave k (its refocused box, the runs to
 simulate, and whether the waves go on)."""
 
+import json
 import sys
+from pathlib import Path
 
 sys.stderr = open(snakemake.log[0], "w", encoding="utf-8")  # noqa: F821
 
@@ -9,7 +11,7 @@ import pandas as pd  # noqa: E402
 
 from demid.io import read_parquet, write_csv, write_json  # noqa: E402
 from demid.next_wave import plan_waves, tabulate_waves  # noqa: E402
-from demid.waves import stop_reason, wave_spec  # noqa: E402
+from demid.waves import stop_decision, wave_evidence, wave_spec  # noqa: E402
 
 inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: F821
 domain = pd.read_csv(inp.domain) if "domain" in inp.keys() else None
@@ -20,5 +22,10 @@ next_domain, runs, reasons = tabulate_waves({spec.name: spec}, waves)
 write_csv(next_domain, out.domain)
 write_csv(runs, out.runs)
 write_json(reasons, out.reasons)
-reason = stop_reason(waves[spec.name].value)
-write_json({"stop": bool(reason), "reason": reason, "value": waves[spec.name].value}, out.decision)
+previous = json.loads(Path(inp.previous).read_text(encoding="utf-8")) if "previous" in inp.keys() else None
+evidence = wave_evidence(params.spec, int(snakemake.wildcards.wave), domain, frames["robust"][spec.name],  # noqa: F821
+                         read_parquet(inp.statistics), json.loads(Path(inp.criticism).read_text(encoding="utf-8")),
+                         previous, runs)
+decision = stop_decision(waves[spec.name].value, evidence)
+write_json({**decision, "plausible_fraction_of_omega_pct": evidence.plausible_pct, "value": waves[spec.name].value},
+           out.decision)

@@ -1,19 +1,30 @@
-"""Snakemake script: a simulated material's admissible sets wave by wave (table and figure)."""
+"""Snakemake script: a simulated material's admissible sets wave by wave (table and figure), and the summary the
+report's "Waves" section and the study's advice read (per wave runs, surrogate and plausible set; the decision)."""
 
+import json
 import sys
+from pathlib import Path
 
 sys.stderr = open(snakemake.log[0], "w", encoding="utf-8")  # noqa: F821
 
 import pandas as pd  # noqa: E402
 
-from demid.io import read_parquet, save_figure, write_csv  # noqa: E402
+from demid.io import read_parquet, save_figure, write_csv, write_json  # noqa: E402
 from demid.plots.waves import waves_figure  # noqa: E402
-from demid.waves import wave_history  # noqa: E402
+from demid.waves import wave_history, wave_summary  # noqa: E402
 
 inp, out, spec = snakemake.input, snakemake.output, snakemake.params.spec  # noqa: F821
 domains = [None] + [pd.read_csv(path) for path in inp.domains]
-waves = [{"scenarios": read_parquet(s), "domain": d, "simulated": len(pd.read_csv(t)), "analysed": len(pd.read_csv(a))}
-         for s, d, t, a in zip(inp.scenarios, domains, inp.tables, inp.analysed)]
+tables = [pd.read_csv(t) for t in inp.tables]
+analysed = [pd.read_csv(a) for a in inp.analysed]
+waves = [{"scenarios": read_parquet(s), "domain": d, "simulated": len(t), "analysed": len(a)}
+         for s, d, t, a in zip(inp.scenarios, domains, tables, analysed)]
 history = wave_history(spec, waves)
 write_csv(history, out.table)
 save_figure(waves_figure(history, spec), out.figure)
+decision = json.loads(Path(inp.decision).read_text(encoding="utf-8")) if "decision" in inp.keys() else None
+summary = wave_summary(spec, [{"table": t, "analysed": a, "domain": d, "robust": read_parquet(r),
+                               "statistics": read_parquet(s)}
+                              for t, a, d, r, s in zip(tables, analysed, domains, inp.robust, inp.statistics)],
+                       decision)
+write_json(summary, out.summary)

@@ -24,7 +24,8 @@ from .discrimination import (AMBIGUOUS_AICC, CONFIRM_AICC, CONFIRM_PURPOSE, PURP
 from .catalogue import (CAUSES, MISFIT_TESTS, slip_candidates, step_directions, _GAMMA_BOUND, _LAMBDA_FINE_GRID,
                         _NICE_LAMBDAS, _Round, _boxcox_profile)
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, other_reading_of_the_run,
-                      rests_on_one_run, runs_for_next_wave, strongest_rival, unexplained_evidence, verdict_of)
+                      replicate_runs, rests_on_one_run, runs_for_next_wave, strongest_rival, unexplained_evidence,
+                      verdict_of)
 from .messages import _CAUSE_WORDS, _message, corner_only_runs
 from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
                      infer_axial_distance)
@@ -144,17 +145,17 @@ class CriticismResult:
                          "p_value": None, "loo_rmse_baseline": self.baseline.get("loo_rmse"),
                          "loo_rmse_extended": self.baseline.get("loo_rmse"), "delta_aicc": 0.0,
                          "message": self.verdict_message, "verdict": self.verdict})
-        if self.runs_for_next_wave and rows:
-            # on the row they serve (the ambiguous one, or the finding they confirm); read by the next wave
-            # (next_wave.deciding_runs)
-            rows[0 if self.findings else -1]["discriminating_runs"] = json.dumps(self.discriminating_runs)
-            cols = cols + ["discriminating_runs"]
         if self.unexplained:
             u = self.unexplained
             rows.append({"response": self.response, "cause": "unexplained", "detail": u["detail"], "aliases": "",
                          "p_value": u["p_value"], "loo_rmse_baseline": self.baseline.get("loo_rmse"),
                          "loo_rmse_extended": self.baseline.get("loo_rmse"), "delta_aicc": 0.0,
                          "message": u["message"], "verdict": self.verdict})
+        if self.runs_for_next_wave and rows:
+            # on the row they serve (the ambiguous or unexplained one, or the finding they confirm); read by the next wave
+            # (next_wave.deciding_runs)
+            rows[0 if self.findings else -1]["discriminating_runs"] = json.dumps(self.discriminating_runs)
+            cols = cols + ["discriminating_runs"]
         return pd.DataFrame(rows, columns=cols)
 
     @property
@@ -268,7 +269,8 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
 def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: float | None = None,
               family_alpha: float = 0.05, log_factors: tuple[str, ...] = (), max_findings: int = 3,
               n_null: int = 1999, seed: int = 0, run_order: str | RunOrder = "performed",
-              fit: SurrogateFit | None = None, run_candidates: np.ndarray | None = None) -> CriticismResult:
+              fit: SurrogateFit | None = None, run_candidates: np.ndarray | None = None,
+              simulated: bool = False) -> CriticismResult:
     """Level-1 model criticism of the quadratic surrogate of one response.
 
     ``alpha`` is the CCD axial distance used for coding (None: inferred from the
@@ -279,9 +281,11 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     already assessed: drift is tested only where it can be believed.  ``fit`` is the response's
     quadratic fit already made (its coding is then the one used; None: fitted here).  ``run_candidates``
     (actual units) are the points the runs it proposes are chosen from (None: the design's levels within its
-    reach).  See the package docstring (demid.criticism) for the catalogue.
+    reach).  ``simulated``: the table is demid's own simulations (a wave of a simulated material), so no run of it
+    can carry a typing or export slip.  See the package docstring (demid.criticism) for the catalogue.
     """
     data, fit = _prepare(table, list(factors), response, alpha, tuple(log_factors), fit)
+    data = replace(data, simulated=simulated)
     if run_candidates is not None:
         actual = np.atleast_2d(np.asarray(run_candidates, dtype=float))
         data = replace(data, run_candidates=data.coding.to_coded(model_units(actual, list(factors),
@@ -331,6 +335,8 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     candidates, runs = _ambiguity(data, base_model, first_round, findings, not_singled_out)
     if candidates:  # the runs cannot tell these causes apart: none of them is named
         findings, model, unexplained = [], base_model, None
+    else:  # a simulated run off the surface, or a misfit no cause explains: replicates let the next wave say why
+        runs = replicate_runs(data, fit, findings, unexplained) or runs
     baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
     summary = _summary(data, findings, catalogue, family_alpha, gain, exact_fit_message(response, fit))
     if unexplained:

@@ -136,7 +136,7 @@ def material_run_order(table: pd.DataFrame, spec: MaterialSpec, coding):
 def criticize_material(table: pd.DataFrame, surrogates: dict, spec: MaterialSpec, n: int | None = None,
                        title: str | None = None, strict_sets: dict | None = None,
                        coding: Coding | None = None, fits: dict | None = None,
-                       run_candidates: np.ndarray | None = None) -> MaterialCriticism:
+                       run_candidates: np.ndarray | None = None, simulated: bool = False) -> MaterialCriticism:
     """Level 1 for every response (with the identifiability effect of any extension) and level 2.
 
     ``spec`` is the material's :class:`~demid.spec.MaterialSpec`; ``n`` and ``title`` default to its evaluation size and label.  ``strict_sets`` (scenario name -> the
@@ -144,6 +144,7 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, spec: MaterialSpec
     are ``coding``, the one validation inferred (None: inferred here the same way), and ``fits``
     (response -> its SurrogateFit in that coding; None: fitted here).  ``run_candidates`` (actual units):
     the points the proposed runs are chosen from (a next wave's box grid; None: the design's levels).
+    ``simulated``: the table is demid's own simulations (see :func:`~demid.criticism.level1.criticize`).
     """
     from ..design_check import infer_coding
 
@@ -166,7 +167,7 @@ def criticize_material(table: pd.DataFrame, surrogates: dict, spec: MaterialSpec
     response_json, frames, results = {}, [], []
     for response in spec.response_names:
         result = criticize(table, factors, response, alpha=alpha, log_factors=log_factors, run_order=run_order,
-                           fit=fits[response], run_candidates=run_candidates)
+                           fit=fits[response], run_candidates=run_candidates, simulated=simulated)
         payload = result.to_json()
         if result.findings:
             payload["identifiability"] = _identifiability_effect(surrogates, result.extended_surrogate(), response,

@@ -93,11 +93,17 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
                 f"fitting there and transforming back {gain}.")
     if h.cause == "outlier":
         run = _run_value(data.runs[int(h.detail)])
+        if data.simulated:  # demid ran it and read its responses itself: nothing was typed or exported
+            why = ("demid simulated that run itself, so it is no transcription or export error: either its "
+                   "seed-to-seed scatter is larger than the other runs show, or the simulator failed quietly there "
+                   "(a run that did not settle, a setting it did not take): check that run's log, and replicates of "
+                   "it tell the two apart")
+        else:
+            why = ("a transcription or export error is the usual cause, or something that differed for that run "
+                   "alone (an input, a setting, a version): check that run")
         return (f"{r}: run {run} does not fit the other runs (observed {_g(info['observed'])}, "
                 f"the other runs predict {_g(info['predicted_without'])}, externally studentised "
-                f"residual {h.statistic:.1f}); a transcription or export error is the usual cause, or "
-                f"something that differed for that run alone (an input, a setting, a version): check that "
-                f"run. Refitting without it {gain} on the other {n_compared} runs.")
+                f"residual {h.statistic:.1f}); {why}. Refitting without it {gain} on the other {n_compared} runs.")
     if h.cause == "factor_level":
         run = _run_value(data.runs[h.detail.row])
         f = info["factor"]

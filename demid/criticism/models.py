@@ -122,6 +122,8 @@ class _Data:
     # coded points the runs it proposes are chosen from (None: the design's levels within its reach); a next
     # wave's box grid, so that the runs lie where the next wave keeps them
     run_candidates: np.ndarray | None = None
+    # the table is demid's own simulations (a wave of a simulated material): no run of it was typed or exported
+    simulated: bool = False
 
     @property
     def n(self) -> int:

@@ -18,8 +18,9 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import optimize, stats
 
+from .. import run_purposes
 from .catalogue import family_weights
-from .models import _g, _num
+from .models import _g, _num, _run_value
 from .one_run import Deletion, worst_deletion
 
 if TYPE_CHECKING:
@@ -223,7 +224,7 @@ def _points_text(runs: list[dict]) -> str:
     counts: dict[str, int] = {}
     for r in runs:
         point = "(" + ", ".join(f"{k}={v:g}" for k, v in r.items()
-                                if k not in ("purpose", "expected", "separation")) + ")"
+                                if k not in ("purpose", "expected", "separation", "replicate_of")) + ")"
         counts[point] = counts.get(point, 0) + 1
     return "; ".join(point + (f" ×{n}" if n > 1 else "") for point, n in counts.items())
 
@@ -315,10 +316,54 @@ def unpredictable_runs_message(fit: SurrogateFit) -> str:
 
 
 def runs_for_next_wave(runs, candidates, verdict: str) -> bool:
-    """Whether a next wave makes the discriminating runs: those that decide between candidates, and those that
+    """Whether a next wave makes the discriminating runs: those that decide between candidates, those that
     confirm a named cause, which the verdict's message offers (verdicts 'defect' and 'does_not_predict' with a
-    cause named); no others."""
-    return bool(runs) and (bool(candidates) or verdict in NAMING_VERDICTS)
+    cause named), and the replicates an unexplained misfit proposes (:func:`replicate_runs`); no others."""
+    return bool(runs) and (bool(candidates) or verdict in NAMING_VERDICTS or verdict == "unexplained")
+
+
+#: Replicates proposed per run a simulated table's outlier names: two, so that with the run itself three values
+#: at one point say whether it is scatter (they spread as far) or a failure of that run (they agree, off it).
+OUTLIER_REPLICATES = 2
+#: How many of the runs that misfit most an unexplained misfit proposes to replicate (once each).
+UNEXPLAINED_REPLICATED_RUNS = 2
+
+
+def replicate_runs(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None) -> list[dict]:
+    """Replicates at runs already made, for a next wave ([] where none is called for).
+
+    A simulated table's run named an outlier (the first cause named, the one proposed runs serve):
+    :data:`OUTLIER_REPLICATES` replicates of it (it cannot be a typing
+    slip, so replicates are what tell seed-to-seed scatter from a failure of that run).  An unexplained misfit:
+    one replicate of each of the :data:`UNEXPLAINED_REPLICATED_RUNS` runs of largest |studentised residual|, so
+    that the next wave measures the scatter where the surrogate misses most and can name the cause."""
+    position = {_run_value(r): i for i, r in enumerate(data.runs)}
+
+    def at(run, purpose: str) -> dict:
+        x = data.to_actual(data.coded[position[_run_value(run)]][None, :])[0]
+        return {**{f: float(f"{v:.10g}") + 0.0 for f, v in zip(data.factors, x)}, "purpose": purpose,
+                "replicate_of": _run_value(run)}
+
+    if data.simulated and findings and findings[0].cause == "outlier":  # the cause the proposed runs serve
+        return [at(findings[0].detail, run_purposes.CONFIRM) for _ in range(OUTLIER_REPLICATES)]
+    if unexplained:
+        frame = fit.influence()
+        frame = frame[frame["run"].map(lambda r: _run_value(r) in position)]
+        worst = frame.reindex(frame["student_resid"].abs().sort_values(ascending=False, kind="stable").index)
+        return [at(run, run_purposes.DECIDE) for run in worst["run"].head(UNEXPLAINED_REPLICATED_RUNS)]
+    return []
+
+
+def replicate_message(runs: list[dict], simulated: bool) -> str:
+    """What the replicates of :func:`replicate_runs` are for."""
+    which = ", ".join(f"run {r}" for r in dict.fromkeys(run["replicate_of"] for run in runs))
+    if runs[0]["purpose"] == run_purposes.CONFIRM:
+        return (f" {len(runs)} replicate(s) of {which} are proposed for the next wave: if they scatter as far from "
+                "the surface, it is seed-to-seed scatter; if they agree with each other off it, the simulator "
+                "behaves differently there; if they fall on the surface, that run failed.")
+    made = "the next wave (waves.next_runs) simulates them" if simulated else "a next wave (next_runs) makes them"
+    return (f" Replicates of the runs that misfit most ({which}) are proposed so that the scatter there is measured "
+            f"and the next analysis can name the cause; {made}.")
 
 
 def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
@@ -331,9 +376,12 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
             detail["message"] += " " + text
         else:
             verdict, detail["message"] = "ambiguous", text
+    elif runs and "replicate_of" in runs[0]:
+        detail["message"] += replicate_message(list(runs), data.simulated)
     elif runs and verdict in NAMING_VERDICTS:
         detail["message"] += confirming_message(list(runs))
-    if runs_for_next_wave(runs, candidates, verdict) and data.run_candidates is not None:
+    if (runs_for_next_wave(runs, candidates, verdict) and data.run_candidates is not None
+            and "replicate_of" not in runs[0]):  # replicates sit at the runs they repeat
         detail["message"] += (" The runs are chosen on the next wave's box grid, the only place where its table "
                               "keeps them.")
     lone = unpredictable_runs_message(fit)

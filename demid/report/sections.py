@@ -787,6 +787,49 @@ class ReportSections:
                          "earlier runs inside it (`design: {type: custom}`).\n\n"
                          + markdown_table(sub.drop(columns="material")))]
 
+    def waves(self, m: str) -> list:
+        """A simulated material's waves (``waves/summary_{m}.json``): per wave the runs simulated, failed and
+        analysed, the surrogate and its Q², the plausible share of Omega and each factor's plausible interval; the
+        runs-per-wave figure; and why the loop stopped, in the words of the study's advice."""
+        from ..story import StudyAdvice
+
+        summary = self._json(self.root / "waves" / f"summary_{m}.json")
+        if not summary.get("waves"):
+            return []
+        spec = self._specs()[m]
+        rows = []
+        for w in summary["waves"]:
+            row = {"wave": w["wave"], "runs simulated": w["simulated"], "failed": w["failed"],
+                   "analysed": w["analysed"], "surrogate": w["surrogate"],
+                   "Q²": ", ".join(f"{spec.response_labels.get(r, r)} " + (f"{q:.2f}" if q is not None else
+                                                                            "undefined")
+                                   for r, q in w["q2"].items()),
+                   "plausible % of Ω": w["plausible_fraction_of_omega_pct"]}
+            for f in spec.factors:
+                lo, hi = w["plausible"].get(f.name, [None, None])
+                row[f"plausible {f.label}"] = "empty" if lo is None else f"{lo:.4g}–{hi:.4g}"
+            rows.append(row)
+        scenarios = {sc.name: sc.label for sc in spec.scenarios}
+        used = ", ".join(dict.fromkeys(f"*{scenarios.get(w['scenario'], w['scenario'])}*" for w in summary["waves"]))
+        last = summary["waves"][-1]
+        lines = ["### Waves", "",
+                 f"demid simulated {last['simulated']} runs in {len(summary['waves'])} wave(s) ({last['failed']} "
+                 f"failed); wave 1 is the declared design, each later wave the runs the one before proposed. Per "
+                 f"wave: the runs simulated up to it, the failed ones among them, the runs its analysis used, its "
+                 f"surrogate and the surrogate's leave-one-out Q², and the plausible set of {used} as a share of the "
+                 "search range Ω with each factor's plausible interval.", "",
+                 markdown_table(pd.DataFrame(rows), 3)]
+        told = StudyAdvice.from_frame(self._csv("advice.csv")).texts(m, ("stop", "next_runs", "recalibrate"))
+        decision = summary.get("decision")
+        if decision:
+            stop_line = next((t for t in told if decision["reason"] in t), decision["reason"])
+            lines += ["", f"**Why the loop stopped after wave {last['wave']}:** {stop_line}"]
+        parts = [self._md("\n".join(lines))]
+        parts.append(self._image(self.root / "figures" / f"waves_{m}.png",
+                                 f"Feasible fraction of Ω against the runs simulated, and each factor's admissible "
+                                 f"interval per wave over the wave's box, of {self._label(m)}"))
+        return parts
+
     def response_surfaces(self, m: str) -> list:
         """Per response: equation (coded, actual), block ANOVA, coefficients, canonical analysis."""
         import json
@@ -846,6 +889,13 @@ class ReportSections:
             info = json.loads(summary.read_text(encoding="utf-8"))
             types = ", ".join(f"{v} {k}" for k, v in info["point_types"].items())
             text = f"**Table check.** {info['n_runs']} runs ({types}); every factor value sits on a level of the declared design and inside the search bounds."
+            waves = self._json(self.root / "waves" / f"summary_{m}.json").get("waves")
+            if waves:  # a simulated material: every run demid simulated counts, not only the last wave's
+                last = waves[-1]
+                text = (f"**Table check.** {last['simulated']} runs simulated in {len(waves)} wave(s), "
+                        f"{last['failed']} of them failed; the last wave's analysis takes its table's "
+                        f"{info['n_runs']} runs ({types}) over the whole search range, every factor value "
+                        "inside the search bounds (section *Waves*).")
             if info["warnings"]:
                 text += "\n\n" + "\n".join(f"- ⚠ {w}" for w in info["warnings"])
             parts.append(self._md(text))
@@ -887,6 +937,7 @@ class ReportSections:
                 iv = pareto[pareto["kind"] == "interval"][["factor", "lower", "upper", "n_points"]]
                 parts.append(self._md(f"Intervals over Pareto points with error < {100 * par['max_error']:g} %:\n\n"
                                       + markdown_table(keys_labelled(iv, self._specs()[m]))))
+        parts += self.waves(m)
         parts += self.criticism(m)
         parts += self.uncertainty(m)
         parts += self.next_wave(m)

@@ -5,9 +5,9 @@ surrogate cannot meet), ``recalibrate`` (no point meets every target, or a surro
 best point sits on a bound the surrogate says widening cannot help: :mod:`demid.criticism.reach`),
 ``add_observable`` (the measurement that narrows most, or that a new kind is needed), ``widen`` (a bound
 that cuts the plausible set, or the best point when no point meets every target, and only where moving it
-can narrow or reach something), ``next_runs`` and ``stop`` (what the next wave can still buy), and
-``measurement_order`` (the observable ranking in words, one sentence per starting set:
-:mod:`demid.story.measurements`).
+can narrow or reach something), ``next_runs`` and ``stop`` (what the next wave can still buy; for a simulated
+study with waves, why its loop stopped: :func:`demid.waves.stop_decision`), and ``measurement_order`` (the
+observable ranking in words, one sentence per starting set: :mod:`demid.story.measurements`).
 
 One item per material is the **next step** (``decision``): the first by :data:`PRIORITY`; the others follow it
 as "also".  The generic add-observable line (no observable to name) stands only where nothing else is advised.
@@ -284,10 +284,23 @@ def _measurement_order(spec, ranking, unpredictive=frozenset()) -> list[AdviceIt
             for text in caveat + measurement_order(ranking, labels, rough=bool(weak))]
 
 
+#: The advice's opening words per kind of a simulated study's wave decision (demid.waves.stop_decision).
+WAVE_DECISION_WORDS = {"stop": "Stop the waves", "next_runs": "Simulate another wave",
+                       "recalibrate": "Do not take the plausible set as the answer yet"}
+
+
+def _wave_decision(spec, decision: dict | None) -> list[AdviceItem]:
+    """A simulated study's last wave decision as one ``stop``, ``next_runs`` or ``recalibrate`` item."""
+    if not decision or not decision.get("reason"):
+        return []
+    action = decision["action"]
+    return [AdviceItem(spec.name, action, "", "", "", f"{WAVE_DECISION_WORDS[action]}: {decision['reason']}.")]
+
+
 def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | None = None,
                     criticism: dict | None = None, implausible: dict | None = None,
                     uninformative: dict | None = None, wave_value: dict | None = None,
-                    ridge_advice: list[str] = ()) -> list[AdviceItem]:
+                    ridge_advice: list[str] = (), wave_decision: dict | None = None) -> list[AdviceItem]:
     """Every piece of advice of one material, the next step first (:func:`decided`).
 
     ``verdicts``: its rows of :func:`~demid.story.verdicts.verdict_frame`; ``criticism``: its
@@ -295,7 +308,9 @@ def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | Non
     ``uninformative``: from the uncertainty summary; ``wave_value``: ``next_wave/value.json``'s entry;
     ``ridge_advice``: which other observable would break an identified combination's ridge
     (``combinations/{m}.json``), given as ``add_observable`` advice; ``ranking``: its rows of
-    ``tables/observable_ranking.csv``, also walked through in words (``measurement_order``).
+    ``tables/observable_ranking.csv``, also walked through in words (``measurement_order``); ``wave_decision``: a
+    simulated study's last wave decision (``waves/summary_{m}.json``), given as a ``stop``, ``next_runs`` or
+    ``recalibrate`` item.
     """
     criticism, implausible, uninformative = criticism or {}, implausible or {}, uninformative or {}
     level2 = criticism.get("level2") or {}
@@ -307,4 +322,5 @@ def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | Non
                    + add + [AdviceItem(spec.name, "add_observable", "", "", "", text) for text in ridge_advice]
                    + _widen(spec, verdicts, level2, implausible, unpredictive)
                    + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o))
+                   + _wave_decision(spec, wave_decision)
                    + _measurement_order(spec, ranking, unpredictive))

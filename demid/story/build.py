@@ -22,7 +22,8 @@ def study_story(specs: dict, files: dict) -> tuple[pd.DataFrame, pd.DataFrame]:
     ``ranking`` (the cross-material CSV tables), and per material (dicts material -> path) ``tables``
     (validated parquet), ``criticism`` and ``uncertainty`` (JSON summaries); optional ``next_wave_value``
     (JSON, materials with ``next_runs``); optional per material ``combinations`` (JSON: what each set
-    identifies in combination, and which observable would break a ridge).
+    identifies in combination, and which observable would break a ridge); optional per simulated material
+    ``wave_summaries`` (JSON: its waves and the last wave's decision, :func:`demid.waves.wave_summary`).
     """
     from ..data import implausible_targets
     from ..io import read_parquet
@@ -45,7 +46,8 @@ def study_story(specs: dict, files: dict) -> tuple[pd.DataFrame, pd.DataFrame]:
         advice += material_advice(spec, frame, ranking=ranking[ranking["material"] == m],
                                   criticism=_json(files["criticism"][m]),
                                   implausible=implausible, uninformative=uninformative,
-                                  wave_value=value.get(m), ridge_advice=combinations.get("advice") or [])
+                                  wave_value=value.get(m), ridge_advice=combinations.get("advice") or [],
+                                  wave_decision=_json((files.get("wave_summaries") or {}).get(m)).get("decision"))
     verdict_table = pd.concat(verdicts, ignore_index=True) if verdicts else pd.DataFrame(columns=VERDICT_COLUMNS)
     advice_table = StudyAdvice(advice).to_frame() if advice else pd.DataFrame(columns=ADVICE_COLUMNS)
     return verdict_table, advice_table

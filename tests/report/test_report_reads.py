@@ -290,3 +290,56 @@ def test_the_waves_figure_counts_runs_in_integers():
     fig.canvas.draw()
     ticks = fig.axes[0].get_xticks()
     assert len(ticks) and np.allclose(ticks, np.round(ticks))
+
+
+# --------------------------------------------------------------------------- a simulated study's waves
+def _wave_frames(number: int, simulated: int, failed: int, analysed: int, pct: float, interval, q2: float):
+    table = pd.DataFrame({"run": range(1, simulated + 1), "status": ["failed"] * failed + ["ok"] * (simulated - failed)})
+    robust = pd.DataFrame({"scenario": "s", "factor": ["a", "b"], "robust_fraction_pct": pct,
+                           "robust_lower": [interval[0], 0.1], "robust_upper": [interval[1], 0.9]})
+    return {"table": table, "analysed": table.head(analysed), "domain": None, "robust": robust,
+            "statistics": pd.DataFrame({"response": ["y"], "q2": [q2]})}
+
+
+def test_a_simulated_study_tells_its_waves_and_why_the_loop_stopped(tmp_path):
+    """The Waves section: per wave runs simulated, failed and analysed, surrogate and Q², plausible share of Ω and
+    intervals, the waves figure, and the stop line word for word as tables/advice.csv has it; the table check
+    counts every simulated run, not only the last wave's."""
+    import json
+
+    from demid.report.sections import ReportSections
+    from demid.waves import WaveEvidence, stop_decision, wave_summary
+
+    spec = _spec()
+    waves = [_wave_frames(1, 11, 1, 10, 1.40, (0.2, 0.7), 0.91), _wave_frames(2, 18, 1, 15, 1.55, (0.25, 0.6), 0.95),
+             _wave_frames(3, 25, 2, 20, 1.44, (0.3, 0.55), 0.97)]
+    decision = stop_decision(None, WaveEvidence(wave=3, max_waves=5, plausible_pct=1.44, previous_pct=1.55,
+                                                surrogates={"y": {"q2": 0.97, "lof_p": 0.4}}, model_limit=False,
+                                                proposed=7, criticism_runs=0))
+    summary = wave_summary(spec, waves, decision)
+    assert [w["simulated"] for w in summary["waves"]] == [11, 18, 25] and summary["waves"][2]["failed"] == 2
+    (tmp_path / "waves").mkdir()
+    (tmp_path / "waves" / "summary_m.json").write_text(json.dumps(summary), encoding="utf-8")
+    (tmp_path / "tables").mkdir()
+    verdicts = pd.DataFrame(columns=["scenario", "factor", "verdict"])
+    advice = StudyAdvice(material_advice(spec, verdicts, wave_decision=decision)).to_frame()
+    stop_row = advice[advice["kind"] == "stop"]
+    assert len(stop_row) == 1 and "from wave 2 to wave 3 (-7.1 %)" in stop_row["text"].iloc[0]
+    advice.to_csv(tmp_path / "tables" / "advice.csv", index=False)
+    (tmp_path / "validated").mkdir()
+    (tmp_path / "validated" / "m.json").write_text(json.dumps({"n_runs": 20, "point_types": {"other": 20},
+                                                               "warnings": []}), encoding="utf-8")
+    material = {"data": "x.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 3},
+                "factors": {"a": {"lower": 0.0, "upper": 1.0, "label": "α_A"},
+                            "b": {"lower": 0.0, "upper": 1.0, "label": "β_B"}},
+                "responses": {"y": {"target": 0.5, "label": "Y_obs"}},
+                "scenarios": {"s": {"observables": ["y"], "tolerance": 0.02, "label": "Y alone"}}}
+    sections = ReportSections(str(tmp_path), {"materials": {"m": material}})
+    text = visible_text("".join(part.data for part in sections.waves("m")))
+    assert "Waves" in text and "demid simulated 25 runs in 3 wave(s) (2 failed)" in text
+    assert "Why the loop stopped after wave 3: " + stop_row["text"].iloc[0] in text
+    cells = re.sub(r"\s+", " ", text)
+    assert "3 25 2 20 quadratic" in cells and "0.97 1.44 0.3–0.55 0.1–0.9" in cells
+    assert "waves_m" in text  # the waves figure (absent here: named as missing)
+    told = visible_text("".join(part.data for part in sections.material("m")[:2]))
+    assert "25 runs simulated in 3 wave(s), 2 of them failed" in told and "the 20 runs inside" in told

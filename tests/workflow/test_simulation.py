@@ -312,7 +312,8 @@ def _study(folder: Path, centre_run: int) -> Path:
     return path
 
 
-TARGETS = ("results/tables/identifiability.csv", "results/waves/history_m.csv", "results/figures/waves_n.png")
+TARGETS = ("results/tables/identifiability.csv", "results/waves/history_m.csv", "results/figures/waves_n.png",
+           "results/tables/advice.csv")
 
 
 @pytest.mark.workflow
@@ -329,7 +330,8 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     # Two waves (stop_early: false): wave 2 simulated wave 1's proposals (in wave 1's box), numbered on, and
     # was analysed with every run over Omega; wave 1's decision carries the estimate the stop advice reads.
     decision = json.loads((results / "waves/1/next_wave/m/decision.json").read_text(encoding="utf-8"))
-    assert set(decision) == {"stop", "reason", "value"} and decision["value"]["count"] == 7
+    assert set(decision) == {"stop", "action", "reason", "value", "plausible_fraction_of_omega_pct"}
+    assert decision["value"]["count"] == 7 and decision["action"] in ("stop", "next_runs", "recalibrate")
     proposals = pd.read_csv(results / "waves/1/next_wave/m/next_runs.csv")
     domain = pd.read_csv(results / "waves/1/next_wave/m/next_domain.csv")
     table = pd.read_csv(results / "waves/2/data/m.csv")
@@ -358,6 +360,20 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
                                                                     rel=1e-5)  # the CSV's 6 digits
     assert wave2["box_share_of_omega_pct"] == pytest.approx(100 * share, rel=1e-4)
     assert (results / "figures/waves_m.png").is_file() and (results / "figures/waves_n.svg").is_file()
+
+    # Told: per wave the runs simulated, failed and analysed; the last wave's decision is the material's
+    # stop/next_runs/recalibrate advice, word for word; n (one wave, no next runs) has its wave and no decision.
+    summary = json.loads((results / "waves/summary_m.json").read_text(encoding="utf-8"))
+    assert [(w["simulated"], w["failed"], w["analysed"]) for w in summary["waves"]] == [(11, 1, 11),
+                                                                                      (18, 1, len(analysed))]
+    last = json.loads((results / "waves/2/next_wave/m/decision.json").read_text(encoding="utf-8"))
+    assert summary["decision"] == last and last["stop"] is True  # waves.max: 2 is spent
+    advice = pd.read_csv(results / "tables/advice.csv")
+    told = advice[(advice["material"] == "m") & advice["kind"].isin(["stop", "next_runs", "recalibrate"])]
+    assert list(told["kind"]) == [last["action"]] and last["reason"] in told["text"].iloc[0]
+    assert not len(advice[(advice["material"] == "n") & advice["kind"].isin(["stop", "next_runs", "recalibrate"])])
+    n_summary = json.loads((results / "waves/summary_n.json").read_text(encoding="utf-8"))
+    assert n_summary["decision"] is None and [w["simulated"] for w in n_summary["waves"]] == [11]
 
     # The run that exited non-zero is a failed row with its log kept; the analysis went on.
     record = json.loads((results / f"runs/m/wave1/run{centre}/run.json").read_text(encoding="utf-8"))
@@ -528,3 +544,53 @@ def test_a_wave_after_a_box_is_judged_on_omega_with_every_run_so_the_box_cuts_no
         assert verdict == "bounded" and width == pytest.approx(2 * outer, abs=0.02)  # of Omega's range
     robust = result.parquet["robust"].set_index("factor")
     assert robust["robust_fraction_pct"].iloc[0] == pytest.approx(annulus_pct, rel=0.1)
+
+
+def _evidence(**changes):
+    from demid.waves import WaveEvidence
+
+    base = dict(wave=2, max_waves=4, plausible_pct=1.55, previous_pct=1.40,
+                surrogates={"y1": {"q2": 0.97, "lof_p": 0.40}, "y2": {"q2": 0.93, "lof_p": 0.60}},
+                model_limit=False, proposed=9, criticism_runs=0)
+    return WaveEvidence(**{**base, **changes})
+
+
+def test_waves_stop_on_the_measured_change_the_budget_or_the_model_never_on_a_misfitting_surrogate():
+    """The loop stops when the plausible share of Omega measured wave to wave stops moving (whatever the
+    prediction), when waves.max is spent or when the model itself is the limit; it never stops while a
+    surrogate misfits or does not predict, and says what the next wave does about it."""
+    from demid.wave_value import STOP_CONTRACTION
+    from demid.waves import STOP_Q2, stop_decision
+
+    big = {"scenario": "both", "count": 9, "plausible_fraction_pct": 9.3, "expected_fraction_pct": 6.0,
+           "expected_contraction": 0.35, "stop": False}
+    small = {**big, "expected_fraction_pct": 9.1, "expected_contraction": STOP_CONTRACTION / 5, "stop": True}
+    # 1.40 -> 1.55 %: +10.7 % measured, the set still moves although the prediction says it buys little
+    moving = stop_decision(small, _evidence())
+    assert moving["stop"] is False and moving["action"] == "next_runs"
+    assert "1.4 % → 1.55 % from wave 1 to wave 2 (+10.7 %)" in moving["reason"]
+    # 1.55 -> 1.44 %: -7.1 %, within noise: stop though each wave predicted a 35 % shrink
+    flat = stop_decision(big, _evidence(wave=3, plausible_pct=1.44, previous_pct=1.55))
+    assert flat["stop"] is True and flat["action"] == "stop" and "(-7.1 %): within the 10 % change" in flat["reason"]
+    # wave 1 has no measured change: the prediction decides
+    assert stop_decision(small, _evidence(wave=1, previous_pct=None))["stop"] is True
+    first = stop_decision(big, _evidence(wave=1, previous_pct=None))
+    assert first["stop"] is False and "nothing to compare with" in first["reason"]
+    # a misfitting surrogate (lack of fit p = 0.019) or one below the stated Q² never stops the loop
+    for bad in ({"q2": 0.97, "lof_p": 0.019}, {"q2": STOP_Q2 - 0.1, "lof_p": 0.5}, {"q2": float("nan"), "lof_p": 0.5}):
+        going = stop_decision(small, _evidence(wave=1, previous_pct=None, surrogates={"y1": bad},
+                                               criticism_runs=4))
+        assert going["stop"] is False and going["action"] == "next_runs", bad
+        assert "the surrogate of y1" in going["reason"] and "4 of them replicates or runs the criticism asks for" \
+            in going["reason"]
+    assert "lack of fit p = 0.019" in stop_decision(small, _evidence(surrogates={"y1": {"q2": 0.9, "lof_p": 0.019}}))[
+        "reason"]
+    # ... unless the budget is spent: then the advice is to recalibrate, not to take the set as the answer
+    spent = stop_decision(small, _evidence(wave=4, surrogates={"y1": {"q2": 0.2, "lof_p": 0.5}}))
+    assert spent["stop"] is True and spent["action"] == "recalibrate" and "budget of 4 wave(s)" in spent["reason"]
+    # the model, not the surrogate, is the limit: stop
+    model = stop_decision(big, _evidence(model_limit=True))
+    assert model["stop"] is True and "the model, not the surrogate, is the limit" in model["reason"]
+    # the budget spent on a set still moving: the loop ends, the advice is another wave
+    last = stop_decision(big, _evidence(wave=4))
+    assert last["stop"] is True and last["action"] == "next_runs" and "budget of 4 wave(s) is spent" in last["reason"]

@@ -11,7 +11,7 @@ from demid.out_path import claim_results_dir, results_owner_problem
 from demid.rule_outputs import ambiguous_output
 from demid.sampling import uses_grid
 from demid.spec import MaterialSpec
-from demid.waves import check_simulated
+from demid.waves import check_simulated, simulated_materials
 
 
 # Validate the config (schema with defaults, then cross-references) and that every table can be read
@@ -226,6 +226,7 @@ def report_tables():
     out += [f"{RESULTS}/fits/{m}.json" for m in MATERIALS]
     out += [f"{RESULTS}/tables/verdicts.csv", f"{RESULTS}/tables/advice.csv"]  # rule story
     out.append(MODEL_EXTENSIONS_TABLE)  # rule model_extensions
+    out += [f"{RESULTS}/waves/summary_{m}.json" for m in simulated_materials(config)]  # the Waves section
     return out
 
 
@@ -241,6 +242,8 @@ def report_figures():
             f"{RESULTS}/figures/residuals_{m}.png",
             f"{RESULTS}/figures/combinations_{m}.png",
         ]
+        if config["materials"][m].get("simulation"):
+            out.append(f"{RESULTS}/figures/waves_{m}.png")
     return out
 
 
@@ -351,6 +354,8 @@ def story_inputs():
     )
     if next_wave_materials():
         out["next_wave_value"] = f"{RESULTS}/next_wave/value.json"
+    if simulated_materials(config):  # why each simulated material's loop stopped (rule wave_history)
+        out["wave_summaries"] = [f"{RESULTS}/waves/summary_{m}.json" for m in simulated_materials(config)]
     return out
 
 

@@ -8,7 +8,8 @@
 #   analyse_wave    the per-material analysis of wave k, under results/waves/<k>/
 #   propose_wave    (a checkpoint) wave k's next runs and refocused box: wave k+1 simulates them
 #   final_wave      the material's main results are its last wave's (copies), for the tables and report
-#   wave_history    the admissible sets wave by wave: waves/history_<material>.csv, figures/waves_<material>
+#   wave_history    the admissible sets wave by wave: waves/history_<material>.csv, figures/waves_<material>,
+#                   and waves/summary_<material>.json (per wave runs, surrogate, plausible set; the stop decision)
 #
 # Wave 1's runs are the declared design (known when the workflow is read); wave k+1's are wave k's
 # proposals, known once that checkpoint has run.  Each run's factor values, seed and command are the
@@ -111,11 +112,14 @@ use rule analyse_wave as analyse_wave_with_pareto with:
 checkpoint propose_wave:
     input:
         unpack(wave_domain),
+        unpack(previous_decision),  # the measured change of the plausible set since the previous wave
         data=f"{RESULTS}/waves/{{wave}}/data/{{material}}_analysed.csv",
         tables=f"{RESULTS}/waves/{{wave}}/validated/{{material}}.parquet",
         fits=f"{RESULTS}/waves/{{wave}}/fits/{{material}}.parquet",
         robust=f"{RESULTS}/waves/{{wave}}/uncertainty/{{material}}_robust.parquet",
         findings=f"{RESULTS}/waves/{{wave}}/criticism/{{material}}_findings.parquet",
+        statistics=f"{RESULTS}/waves/{{wave}}/fits/{{material}}_statistics.parquet",
+        criticism=f"{RESULTS}/waves/{{wave}}/criticism/{{material}}.json",
     output:
         **proposal_files("{material}", "{wave}"),
     wildcard_constraints:
@@ -170,6 +174,7 @@ rule wave_history:
         unpack(wave_history_inputs),
     output:
         table=f"{RESULTS}/waves/history_{{material}}.csv",
+        summary=f"{RESULTS}/waves/summary_{{material}}.json",
         figure=f"{RESULTS}/figures/waves_{{material}}.png",
         svg=f"{RESULTS}/figures/waves_{{material}}.svg",
     wildcard_constraints:

@@ -63,6 +63,12 @@ def wave_domain(wildcards):
     return {"domain": proposal_files(wildcards.material, wave - 1)["domain"]} if wave > 1 else {}
 
 
+def previous_decision(wildcards):
+    """Wave k-1's decision (none for wave 1): the plausible share of Omega it measured."""
+    wave = int(wildcards.wave)
+    return {"previous": proposal_files(wildcards.material, wave - 1)["decision"]} if wave > 1 else {}
+
+
 def assemble_inputs(wildcards):
     runs = [(w, r) for w in range(1, int(wildcards.wave) + 1)
             for r in planned_wave_runs(wildcards.material, w)["run"]]
@@ -112,10 +118,14 @@ def wave_history_inputs(wildcards):
     return {"scenarios": [f"{RESULTS}/waves/{k}/scenarios/{m}.parquet" for k in waves],
             "domains": [proposal_files(m, k - 1)["domain"] for k in waves if k > 1],
             "tables": [f"{RESULTS}/waves/{k}/data/{m}.csv" for k in waves],
-            "analysed": [f"{RESULTS}/waves/{k}/data/{m}_analysed.csv" for k in waves]}
+            "analysed": [f"{RESULTS}/waves/{k}/data/{m}_analysed.csv" for k in waves],
+            "robust": [f"{RESULTS}/waves/{k}/uncertainty/{m}_robust.parquet" for k in waves],
+            "statistics": [f"{RESULTS}/waves/{k}/fits/{m}_statistics.parquet" for k in waves],
+            **({"decision": proposal_files(m, last)["decision"]}
+               if (config["materials"][m].get("waves") or {}).get("next_runs") else {})}
 
 
 def wave_history_outputs():
     """The wave-by-wave table and figure of every simulated material."""
-    return [f for m in SIMULATED for f in (f"{RESULTS}/waves/history_{m}.csv",
+    return [f for m in SIMULATED for f in (f"{RESULTS}/waves/history_{m}.csv", f"{RESULTS}/waves/summary_{m}.json",
                                            *with_svg([f"{RESULTS}/figures/waves_{m}.png"]))]
