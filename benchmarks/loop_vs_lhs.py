@@ -15,7 +15,7 @@ seeds through 0.2, 0.4, 0.6, 0.8, 1.0 (``--level`` fixes it).  Three ways to spe
   ``scripts/assemble_wave.py`` gives it) by :func:`demid.steps.material_step` on
   :func:`demid.waves.wave_spec` (as ``scripts/analyse_wave.py``),
   the next wave is :func:`demid.next_wave.plan_waves` on that wave's stored frames and its decision
-  :func:`demid.waves.stop_reason` (as ``scripts/propose_wave.py``), and the runs of wave k+1 are
+  :func:`demid.waves.stop_decision` (as ``scripts/propose_wave.py``), and the runs of wave k+1 are
   :func:`demid.waves.next_wave_runs` of the proposals read back from their CSV.  The figures are not
   drawn (no number depends on them); that and skipping the run folders is the only difference from
   Snakemake, whose per-job Python start-ups would make the benchmark an hour long.
@@ -291,7 +291,7 @@ def run_loop(study: Study, folder: Path) -> dict:
     from demid.io import as_stored, write_csv
     from demid.next_wave import plan_waves, tabulate_waves
     from demid.spec import MaterialSpec
-    from demid.waves import first_wave, next_wave_runs, stop_reason, stops_early, wave_spec
+    from demid.waves import first_wave, next_wave_runs, stop_decision, stops_early, wave_evidence, wave_spec
 
     material, grid_points = _checked(_material(study.targets, study.seed))
     spec = MaterialSpec.from_material("m", material, grid_points=grid_points)
@@ -299,7 +299,7 @@ def run_loop(study: Study, folder: Path) -> dict:
     runs = first_wave(spec, int(material["simulation"]["seed"]))
     points = runs[list(FACTORS)].to_numpy(dtype=float)
     table = _table(points, study.simulate(points, rng))
-    domain, scores, stop, largest_wave = None, [], "", 0
+    domain, scores, stop, largest_wave, previous = None, [], False, 0, None
     for wave in range(1, WAVES + 1):
         analysed = table  # scripts/assemble_wave.py: a wave analyses every run so far, over Omega
         wspec, result = _analyse(lambda path: wave_spec(spec, path, domain), analysed, folder, f"wave{wave}")
@@ -311,7 +311,13 @@ def run_loop(study: Study, folder: Path) -> dict:
         frames["tables"] = {"m": as_stored(result.parquet["table"])}
         planned = plan_waves({"m": wspec}, frames, z=Z, analysed_over_omega=True)  # as scripts/propose_wave.py
         next_domain, proposals, _ = tabulate_waves({"m": wspec}, planned)
-        stop = stop_reason(planned["m"].value)
+        # as scripts/propose_wave.py: the decision on the measured change, the surrogates and the budget
+        evidence = wave_evidence(spec, wave, domain, as_stored(result.parquet["robust"]),
+                                 as_stored(result.parquet["statistics"]), result.json["criticism_summary"], previous,
+                                 proposals)
+        previous = {**stop_decision(planned["m"].value, evidence),
+                    "plausible_fraction_of_omega_pct": evidence.plausible_pct}
+        stop = bool(previous["stop"])
         if stop and stops_early(spec):
             break
         write_csv(next_domain, folder / "next_domain.csv")

@@ -487,28 +487,14 @@ def test_ctrl_c_stops_the_running_simulations_and_leaves_their_runs_to_do(tmp_pa
     assert again.returncode == 0 and planned_jobs(again.stdout).get("simulate_run") == 11, again.stdout + again.stderr
 
 
-def test_waves_stop_where_the_next_wave_buys_little():
-    """The loop ends on the estimate the stop advice reads: contraction below the threshold stops it,
-    a larger one or an empty plausible set (no estimate) goes on."""
-    from demid.wave_value import STOP_CONTRACTION
-    from demid.waves import stop_reason
-
-    base = {"scenario": "both", "count": 9, "plausible_fraction_pct": 9.3, "expected_fraction_pct": 9.1}
-    small = {**base, "expected_contraction": STOP_CONTRACTION / 5, "stop": True}
-    assert "shrink the plausible set of 'both' by only 2.0 %" in stop_reason(small)
-    assert stop_reason({**base, "expected_contraction": 0.4, "stop": False}) == ""
-    assert stop_reason({**base, "expected_contraction": float("nan"), "stop": False}) == ""
-    assert stop_reason(None) == ""
-
-
 def test_a_wave_after_a_box_is_judged_on_omega_with_every_run_so_the_box_cuts_nothing(tmp_path):
     """Wave 2 of a planted study: wave 1's CCD over Omega = [0, 1]^2 of an exact quadratic y = |x - c|^2 with
     target R0^2 (its admissible set is an annulus round c of area 2 pi R0^2 eps, closed form), then 9 runs in a box
     that holds only the annulus' upper right part.  The wave's analysis is over Omega with every run: Phi is the
     annulus' share of Omega (not of the box, 14 x larger), the spans run past the box's lower bounds to the
     annulus' ends, and no verdict says "cut by the search range" where only the box ended."""
-    from demid.report.summary import factor_verdict
     from demid.steps import material_step
+    from demid.story.verdicts import factor_verdict
     from demid.waves import wave_spec
 
     centre, r0, eps = np.array([0.3, 0.6]), 0.15, 0.05
