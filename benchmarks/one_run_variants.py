@@ -41,7 +41,7 @@ _CALLS: list = []
 _ROUND_MIN_P: list = []
 
 
-class _RecordingRound(level1._Round):
+class _RecordingRound(level1.Round):
     def __init__(self, *args):
         super().__init__(*args)
         _ROUND_MIN_P.append(min((h.p_family for h in self.hypotheses), default=1.0))
@@ -118,7 +118,7 @@ def main(argv=None) -> None:
     parser.add_argument("--seed0", type=int, default=0)
     args = parser.parse_args(argv)
     start = time.time()
-    level1._Round = _RecordingRound
+    level1.Round = _RecordingRound
     level1.rests_on_one_run = _record
     recs = collect(args.reps, args.seed0)
     base = rates(recs)

@@ -21,18 +21,18 @@ from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .discrimination import (AMBIGUOUS_AICC, CONFIRM_AICC, CONFIRM_PURPOSE, PURPOSE, candidate_kind,
                              candidate_label, close_candidates, discriminating_runs)
-from .catalogue import (CAUSES, MISFIT_TESTS, slip_candidates, step_directions, _GAMMA_BOUND, _LAMBDA_FINE_GRID,
-                        _NICE_LAMBDAS, _Round, _boxcox_profile)
+from .catalogue import (CAUSES, MISFIT_TESTS, slip_candidates, step_directions, GAMMA_BOUND, LAMBDA_FINE_GRID,
+                        NICE_LAMBDAS, Round, boxcox_profile)
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, other_reading_of_the_run,
                       rests_on_one_run, runs_for_next_wave, strongest_rival, unexplained_evidence, verdict_of)
-from .messages import _CAUSE_WORDS, _message, corner_only_runs
-from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
+from .messages import CAUSE_WORDS, finding_message, corner_only_runs
+from .models import (TRANSFORM_NAMES, Data, Model, ModelForm, json_number, orthonormal_basis, run_label, transform_name,
                      infer_axial_distance)
 from .run_order import RunOrder, assess_run_order
 
 if TYPE_CHECKING:
     from ..surrogate import SurrogateFit
-    from .catalogue import _Hypothesis
+    from .catalogue import Hypothesis
     from .models import ExtendedSurrogate
 
 
@@ -62,10 +62,10 @@ class Finding:
 
     def to_json(self) -> dict:
         out = {"cause": self.cause, "detail": self.detail, "aliases": list(self.aliases),
-               "p_value": _num(self.p_value), "message": self.message,
-               "p_nominal": _num(self.p_nominal), "statistic": _num(self.statistic),
-               "loo_rmse_before": _num(self.loo_rmse_baseline), "loo_rmse_after": _num(self.loo_rmse_extended),
-               "delta_aicc": _num(self.delta_aicc), "compared_runs": self.compared_runs}
+               "p_value": json_number(self.p_value), "message": self.message,
+               "p_nominal": json_number(self.p_nominal), "statistic": json_number(self.statistic),
+               "loo_rmse_before": json_number(self.loo_rmse_baseline), "loo_rmse_after": json_number(self.loo_rmse_extended),
+               "delta_aicc": json_number(self.delta_aicc), "compared_runs": self.compared_runs}
         if self.extra_runs:
             out["extra_runs"] = self.extra_runs
         out.update({k: v for k, v in self.info.items()})
@@ -91,8 +91,8 @@ class CriticismResult:
     verdict_detail: dict = field(default_factory=dict)
     naming: dict = field(default_factory=dict)
     residuals: pd.DataFrame = field(repr=False, default=None)
-    _extended_model: _Model = field(repr=False, default=None)
-    _baseline_model: _Model = field(repr=False, default=None)
+    _extended_model: Model = field(repr=False, default=None)
+    _baseline_model: Model = field(repr=False, default=None)
     run_order: RunOrder | None = None
     candidates: list[dict] = field(default_factory=list)  # causes the runs cannot tell apart (discrimination)
     discriminating_runs: list[dict] = field(default_factory=list)
@@ -124,7 +124,7 @@ class CriticismResult:
         if self.residuals is None:
             return []
         cols = ["run", "observed", "fitted", "residual", "loo_residual", "student_resid", "leverage"]
-        return [{c: (_run_value(row[c]) if c == "run" else _num(row[c])) for c in cols}
+        return [{c: (run_label(row[c]) if c == "run" else json_number(row[c])) for c in cols}
                 for _, row in self.residuals[cols].iterrows()]
 
     def dumps(self) -> str:
@@ -175,8 +175,8 @@ class CriticismResult:
         return self._baseline_model.surrogate()
 
 
-def _prepare(table: pd.DataFrame, factors: list[str], response: str, alpha: float | None,
-             log_factors: tuple[str, ...], fit: SurrogateFit | None = None) -> tuple[_Data, SurrogateFit]:
+def prepare_data(table: pd.DataFrame, factors: list[str], response: str, alpha: float | None,
+                 log_factors: tuple[str, ...], fit: SurrogateFit | None = None) -> tuple[Data, SurrogateFit]:
     """The data in coded units and the baseline fit: ``fit`` (the material's, in validation's coding)
     when given, else a fit in a coding from the table's extremes."""
     z = model_units(table[factors].to_numpy(), factors, log_factors)
@@ -190,13 +190,13 @@ def _prepare(table: pd.DataFrame, factors: list[str], response: str, alpha: floa
     sub = table.loc[ok]
     runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, int(ok.sum()) + 1)
     blocks = None if fit.blocks is None else block_columns(fit.blocks, fit.block_levels)
-    data = _Data(response, list(factors), fit.coded, fit.y, runs, coding, float(alpha),
-                 tuple(log_factors), quadratic_terms(len(factors)), factor_round_off=fit.factor_round_off,
-                 blocks=blocks, block_labels=fit.blocks)
+    data = Data(response, list(factors), fit.coded, fit.y, runs, coding, float(alpha),
+                tuple(log_factors), quadratic_terms(len(factors)), factor_round_off=fit.factor_round_off,
+                blocks=blocks, block_labels=fit.blocks)
     return data, fit
 
 
-def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
+def extend_for(data: Data, model: Model, h: Hypothesis) -> tuple[ModelForm, dict]:
     """Extension of ``model.spec`` that answers hypothesis h, and facts for the message."""
     spec = model.spec
     info: dict = {}
@@ -223,21 +223,21 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
         info["predicted_without"] = float(data.y[i] - model.loo_errors[pos])
         return replace(spec, dropped=spec.dropped + (i,)), info
     if h.cause == "response_transform":
-        q = _orth(model.xw)
-        prof = _boxcox_profile(model.y[:, None], q, _LAMBDA_FINE_GRID)[:, 0]
+        q = orthonormal_basis(model.xw)
+        prof = boxcox_profile(model.y[:, None], q, LAMBDA_FINE_GRID)[:, 0]
         best = int(np.argmax(prof))
-        lam_hat = float(_LAMBDA_FINE_GRID[best])
+        lam_hat = float(LAMBDA_FINE_GRID[best])
         # Small-sample 95 % interval: the likelihood ratio in F form, F = df (exp(LR/n) - 1) ~ F(1, df)
         # (the chi-square(1) interval is far too narrow at a dozen runs).
         n, df = len(model.y), model.df_resid - 1
         f_ratio = df * np.expm1(2 * (prof[best] - prof) / n)
-        inside = _LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.95, 1, df)]
+        inside = LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.95, 1, df)]
         lo, hi = float(inside.min()), float(inside.max())
         # The transform used is the first convenient lambda (log, sqrt, inverse, then others)
         # that the data do not reject at the 1 % level; otherwise lambda-hat to one decimal.
-        plausible = _LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.99, 1, df)]
+        plausible = LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.99, 1, df)]
         lo99, hi99 = float(plausible.min()), float(plausible.max())
-        lam = next((v for v in (*TRANSFORM_NAMES, *_NICE_LAMBDAS) if lo99 <= v <= hi99), round(lam_hat, 1))
+        lam = next((v for v in (*TRANSFORM_NAMES, *NICE_LAMBDAS) if lo99 <= v <= hi99), round(lam_hat, 1))
         if abs(lam - 1.0) < 1e-9:
             lam = round(lam_hat, 2)
         info.update(lambda_hat=lam_hat, lambda_ci=[lo, hi])
@@ -255,9 +255,9 @@ def _apply(data: _Data, model: _Model, h: _Hypothesis) -> tuple[_Spec, dict]:
         base = replace(spec, weight_on=h.detail, weight_values=tuple(float(v) for v in values))
 
         def negll(g):
-            return -_Model(data, replace(base, weight_gamma=float(g))).loglik
+            return -Model(data, replace(base, weight_gamma=float(g))).loglik
 
-        res = optimize.minimize_scalar(negll, bounds=(-_GAMMA_BOUND, _GAMMA_BOUND), method="bounded",
+        res = optimize.minimize_scalar(negll, bounds=(-GAMMA_BOUND, GAMMA_BOUND), method="bounded",
                                        options={"xatol": 1e-6})
         gamma = float(res.x)
         info["sd_ratio"] = float(np.exp(gamma))  # sd at covariate +1 over sd at -1
@@ -281,7 +281,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     (actual units) are the points the runs it proposes are chosen from (None: the design's levels within its
     reach).  See the package docstring (demid.criticism) for the catalogue.
     """
-    data, fit = _prepare(table, list(factors), response, alpha, tuple(log_factors), fit)
+    data, fit = prepare_data(table, list(factors), response, alpha, tuple(log_factors), fit)
     if run_candidates is not None:
         actual = np.atleast_2d(np.asarray(run_candidates, dtype=float))
         data = replace(data, run_candidates=data.coding.to_coded(model_units(actual, list(factors),
@@ -290,7 +290,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
         run_order = assess_run_order(data.runs, data.coded, {response: data.y}, run_order)
     data = replace(data, drift_tested=run_order.drift_tested)
     rng = np.random.default_rng(seed)
-    base_model = _Model(data, _Spec())
+    base_model = Model(data, ModelForm())
     model = base_model
     findings: list[Finding] = []
     catalogue: list[dict] = []
@@ -298,7 +298,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     first_round = last_round = None
     not_singled_out = None
     for rnd_index in range(max_findings + 1):
-        rnd = _Round(data, model, n_null, rng)
+        rnd = Round(data, model, n_null, rng)
         last_round = rnd
         if rnd_index == 0:
             first_round = rnd
@@ -349,7 +349,7 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
                            candidates=candidates, discriminating_runs=runs)
 
 
-def _honest_causes(data: _Data, response: str, findings: list, model: _Model, base_model: _Model, first_round,
+def _honest_causes(data: Data, response: str, findings: list, model: Model, base_model: Model, first_round,
                    last_round, not_singled_out: dict | None, family_alpha: float):
     """(findings, model, unexplained, naming): the named causes must leave no misfit behind.
 
@@ -384,7 +384,7 @@ def _honest_causes(data: _Data, response: str, findings: list, model: _Model, ba
     return findings, model, unexplained, naming
 
 
-def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list,
+def _ambiguity(data: Data, base_model: Model, first_round, findings: list,
                not_singled_out: dict | None) -> tuple[list[dict], list[dict]]:
     """(candidates, discriminating runs) when the first cause named, or the candidate not singled out for
     a rival of another kind, does not lead every cause of another kind by discrimination.AMBIGUOUS_AICC in
@@ -399,7 +399,7 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list,
     entries = _candidate_entries(data, base_model, first_round)
     close = close_candidates(entries, named=first)
     if len(close) < 2 and findings:  # named: runs that would confirm it against its nearest rivals
-        return [], _deciding_runs(data, _confirming_rivals(entries, first), CONFIRM_PURPOSE, named=first)
+        return [], _deciding_runs(data, confirming_rivals(entries, first), CONFIRM_PURPOSE, named=first)
     if len(close) < 2:
         return [], []
     if not findings:
@@ -407,13 +407,13 @@ def _ambiguity(data: _Data, base_model: _Model, first_round, findings: list,
         if not any((c["cause"], c["detail"]) == (rival["cause"], rival["detail"]) for c in close):
             return [], []
     base_aicc = base_model.aicc
-    candidates = [{"cause": c["cause"], "detail": c["detail"], "gain": _num(base_aicc - c["aicc"]),
-                   "delta_aicc": _num(c["aicc"] - close[0]["aicc"]), "aliases": c.get("aliases", [])}
+    candidates = [{"cause": c["cause"], "detail": c["detail"], "gain": json_number(base_aicc - c["aicc"]),
+                   "delta_aicc": json_number(c["aicc"] - close[0]["aicc"]), "aliases": c.get("aliases", [])}
                   for c in close]
     return candidates, _deciding_runs(data, close, PURPOSE)
 
 
-def _confirming_rivals(entries: list[dict], named: tuple) -> list[dict]:
+def confirming_rivals(entries: list[dict], named: tuple) -> list[dict]:
     """The named cause and the rivals its confirming runs are to separate it from: every kind within
     CONFIRM_AICC of it, or else the nearest kind however far behind (a cause misnamed by a wide margin can
     only be corrected by runs that separate it from something; the nearest rival is the likeliest)."""
@@ -426,7 +426,7 @@ def _confirming_rivals(entries: list[dict], named: tuple) -> list[dict]:
     return anchor + others[:1]
 
 
-def _deciding_runs(data: _Data, close: list[dict], purpose: str, named: tuple | None = None) -> list[dict]:
+def _deciding_runs(data: Data, close: list[dict], purpose: str, named: tuple | None = None) -> list[dict]:
     """The runs that separate the causes ``close`` (each missing term together with the terms the runs alias
     with it; the ``named`` cause's scatter with the covariates it follows about as well)."""
     models, labels, aiccs, kinds = [], [], [], []
@@ -445,7 +445,7 @@ def _deciding_runs(data: _Data, close: list[dict], purpose: str, named: tuple | 
     return discriminating_runs(data, models, labels, aiccs, kinds, purpose)
 
 
-def _candidate_entries(data: _Data, base_model: _Model, first_round) -> list[dict]:
+def _candidate_entries(data: Data, base_model: Model, first_round) -> list[dict]:
     """Each cause of the first round with its extension and its AICc, the extension paying for the place
     it was chosen from (a run, a change-point, a term, a covariate); a step also at every other change-point,
     so that a step whose first run is uncertain is not named at one of them."""
@@ -455,25 +455,25 @@ def _candidate_entries(data: _Data, base_model: _Model, first_round) -> list[dic
     # log response fitted far better than the cubic term named may not be rejected (benchmarks/decide_causes.py:
     # comparing the rejected causes only left strict wrong causes at 0.079, every cause 0.062, margin 2)
     for h in (h for h in first_round.hypotheses if h.cause not in MISFIT_TESTS):
-        spec, info = _apply(data, base_model, h)
-        mo = _Model(data, spec)
-        detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
+        spec, info = extend_for(data, base_model, h)
+        mo = Model(data, spec)
+        detail = transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
         price = 2.0 * math.log(choices.get(h.cause, 1))
         # a run's other reading (an outlier for a slip and back) is its alias here as in a named finding
         other = other_reading_of_the_run(h, first_round.hypotheses)
         entry = {"cause": h.cause, "detail": detail, "aicc": mo.aicc + price, "model": mo,
                  "aliases": list(h.aliases) + ([other] if other else [])}
         if h.cause == "missing_term":  # terms the runs alias with it: the deciding runs must not confuse them
-            entry["aliased_models"] = [_Model(data, replace(base_model.spec, extra_terms=(t,)))
+            entry["aliased_models"] = [Model(data, replace(base_model.spec, extra_terms=(t,)))
                                        for t in h.detail.terms[1:]]
             entry["aliased"] = [term_name(t, data.factors) for t in h.detail.terms[1:]]
         entries.append(entry)
         if h.cause == "step":
-            starts, _ = step_directions(base_model, _orth(base_model.xw))
+            starts, _ = step_directions(base_model, orthonormal_basis(base_model.xw))
             for start in starts:
                 if start != int(h.detail):
-                    other = _Model(data, replace(base_model.spec, step=start))
-                    entries.append({"cause": "step", "detail": _run_value(data.runs[start]),
+                    other = Model(data, replace(base_model.spec, step=start))
+                    entries.append({"cause": "step", "detail": run_label(data.runs[start]),
                                     "aicc": other.aicc + price, "model": other})
     _alias_scatter_covariates(entries)
     return entries
@@ -490,7 +490,7 @@ def _alias_scatter_covariates(entries: list[dict]) -> None:
                      aliased_models=[o["model"] for o in close])
 
 
-def _not_singled_out(data: _Data, model: _Model, h: _Hypothesis, hypotheses: list[_Hypothesis]) -> dict | None:
+def _not_singled_out(data: Data, model: Model, h: Hypothesis, hypotheses: list[Hypothesis]) -> dict | None:
     """Why cause h is not named, or None: a term only the corner runs carry (which any difference between
     the corners mimics, messages.corner_only_runs), another kind of misfit at least as strong, or evidence
     that hinges on one run (verdict.strongest_rival, verdict.rests_on_one_run)."""
@@ -504,11 +504,11 @@ def _not_singled_out(data: _Data, model: _Model, h: _Hypothesis, hypotheses: lis
         return {**why, "rival": _catalogue_entry(data, rival)}
     one_run = rests_on_one_run(data, model, h)
     if one_run is not None:
-        return {**why, "one_run": {"run": _run_value(data.runs[one_run.row]), "p_without": one_run.p_without}}
+        return {**why, "one_run": {"run": run_label(data.runs[one_run.row]), "p_without": one_run.p_without}}
     return None
 
 
-def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tuple:
+def _name_cause(data: Data, model: Model, rejected: list[Hypothesis]) -> tuple:
     """The cause to name among the rejected ones, its extension, and the others as alternatives."""
     # The rejected cause with the strongest evidence (smallest nominal p-value) is named, except
     # that one wild run can be read as an outlier or as scatter growing towards its corner of the
@@ -517,8 +517,8 @@ def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tupl
     # causes are fitted too and listed as alternatives.
     fitted_alternatives = []
     for cand in rejected:
-        cand_spec, cand_info = _apply(data, model, cand)
-        fitted_alternatives.append((cand, cand_spec, cand_info, _Model(data, cand_spec)))
+        cand_spec, cand_info = extend_for(data, model, cand)
+        fitted_alternatives.append((cand, cand_spec, cand_info, Model(data, cand_spec)))
     # A run that fits a slipped value of one factor explains its misfit without an added parameter, but
     # one run is weak evidence: the slip is named only when its Bayes factor against a mean shift of the
     # run reaches SLIP_BAYES_FACTOR and no other extension beats it by more than its added parameters.
@@ -549,23 +549,23 @@ def _name_cause(data: _Data, model: _Model, rejected: list[_Hypothesis]) -> tupl
     return _with_alternatives(data, fitted_alternatives, best)
 
 
-def _with_alternatives(data: _Data, fitted_alternatives: list, best: int) -> tuple:
+def _with_alternatives(data: Data, fitted_alternatives: list, best: int) -> tuple:
     h, spec, info, new = fitted_alternatives[best]
     alternatives = [{"cause": c.cause, "detail": _detail_json(data, c) if c.cause != "response_transform"
-                     else _transform_name(sp.lam), "p_value": _num(c.p_family),
-                     "loglik_vs_named": _num(mo.loglik - new.loglik), "aicc_vs_named": _num(mo.aicc - new.aicc)}
+                     else transform_name(sp.lam), "p_value": json_number(c.p_family),
+                     "loglik_vs_named": json_number(mo.loglik - new.loglik), "aicc_vs_named": json_number(mo.aicc - new.aicc)}
                     for c, sp, _, mo in fitted_alternatives if c is not h]
     return h, spec, info, new, alternatives
 
 
-def _scatter_aliases(data: _Data, model: _Model, h: _Hypothesis, new: _Model, hypotheses: list) -> list[str]:
+def _scatter_aliases(data: Data, model: Model, h: Hypothesis, new: Model, hypotheses: list) -> list[str]:
     """For unequal scatter: the covariates it follows as well as the named one or nearly so (their extension's
     AICc at most AMBIGUOUS_AICC above the named one's; a covariate not among the rejected tests may fit better),
     the named one first -- the runs do not tell which; [] when none is that close (or for another cause).  The
     fitted value is often nearly one factor on a small design."""
     if h.cause != "heteroscedasticity":
         return []
-    close = _nearly_as_good(new.aicc, [(_Model(data, _apply(data, model, other)[0]).aicc, other.detail)
+    close = _nearly_as_good(new.aicc, [(Model(data, extend_for(data, model, other)[0]).aicc, other.detail)
                                        for other in hypotheses if other.cause == h.cause and other.detail != h.detail])
     return [h.detail] + close if close else []
 
@@ -576,7 +576,7 @@ def _nearly_as_good(anchor_aicc: float, others: list[tuple[float, object]]) -> l
     return [item for aicc, item in sorted(others, key=lambda pair: pair[0]) if aicc - anchor_aicc <= AMBIGUOUS_AICC]
 
 
-def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _Spec, info: dict, new: _Model,
+def _finding(data: Data, response: str, model: Model, h: Hypothesis, spec: ModelForm, info: dict, new: Model,
              alternatives: list[dict], other_reading: str | None = None,
              scatter_aliases: list[str] = (), first: bool = True) -> Finding:
     """The finding of one round: the named cause, its gain on the same runs, and its message; ``other_reading``
@@ -596,7 +596,7 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
     if h.cause == "missing_term" and len(h.detail.terms) > 1:
         pts = separating_runs(data.coded[model.keep], model.mean_terms, h.detail.terms, data.alpha)
         extra_runs = [data.point_dict(p) for p in pts]
-    message = _message(data, h, info, before, after, int(same.sum()), extra_runs, model)
+    message = finding_message(data, h, info, before, after, int(same.sum()), extra_runs, model)
     if other_reading == "factor_level":
         message += (" A slipped factor value of the same run fits it too (a Bayes factor short of 20:1 either way): no "
                     "further run tells the two apart, the run's input does.")
@@ -611,9 +611,9 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
     close = [a for a in alternatives if a["loglik_vs_named"] is not None and a["loglik_vs_named"] > -2.0
              and not (a["cause"] == h.cause and a["detail"] in scatter_aliases)]
     if close:
-        message += (" Almost as likely: " + "; ".join(f"{_CAUSE_WORDS[a['cause']]} {a['detail']}" for a in close)
+        message += (" Almost as likely: " + "; ".join(f"{CAUSE_WORDS[a['cause']]} {a['detail']}" for a in close)
                     + ".")
-    detail = _transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
+    detail = transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
     public_info = {k: v for k, v in info.items() if k in ("lambda_hat", "lambda_ci", "sd_ratio",
                                                           "drift_per_run", "step_size", "runs_before",
                                                           "observed", "predicted_without",
@@ -630,12 +630,12 @@ def _finding(data: _Data, response: str, model: _Model, h: _Hypothesis, spec: _S
         compared_runs=int(same.sum()), extra_runs=extra_runs, info=public_info)
 
 
-def _gain(table: pd.DataFrame, factors: list[str], response: str, data: _Data, fit, base_model: _Model,
-          model: _Model, found: bool) -> tuple[dict, dict, dict]:
+def _gain(table: pd.DataFrame, factors: list[str], response: str, data: Data, fit, base_model: Model,
+          model: Model, found: bool) -> tuple[dict, dict, dict]:
     """Baseline and extended model summaries and the gain of the extension (on the same runs)."""
     baseline = base_model.summary()
     stats_ = fit.statistics()
-    baseline.update(lof_f=_num(stats_.lof_f), lof_p=_num(stats_.lof_p))
+    baseline.update(lof_f=json_number(stats_.lof_f), lof_p=json_number(stats_.lof_p))
     if found:
         extended = model.summary()
         extended.update(lof_f=None, lof_p=None)
@@ -646,16 +646,16 @@ def _gain(table: pd.DataFrame, factors: list[str], response: str, data: _Data, f
             ext_fit = fit_response(table, factors, response, alpha=data.alpha, coding=data.coding,
                                    terms=model.mean_terms, log_factors=data.log_factors)
             st = ext_fit.statistics()
-            extended.update(lof_f=_num(st.lof_f), lof_p=_num(st.lof_p))
+            extended.update(lof_f=json_number(st.lof_f), lof_p=json_number(st.lof_p))
     else:
         extended = dict(baseline)
     same = model.predictable & base_model.predictable
     loo_base_same = base_model.loo_rmse_on(same)
     loo_ext = model.loo_rmse_on(same)
     gain = {
-        "loo_rmse_ratio": _num(loo_ext / loo_base_same) if loo_base_same > 0 else None,
-        "delta_aicc": _num(model.aicc - base_model.aicc) if found else 0.0,
-        "loo_rmse_baseline_same_runs": _num(loo_base_same),
+        "loo_rmse_ratio": json_number(loo_ext / loo_base_same) if loo_base_same > 0 else None,
+        "delta_aicc": json_number(model.aicc - base_model.aicc) if found else 0.0,
+        "loo_rmse_baseline_same_runs": json_number(loo_base_same),
         "compared_runs": int(same.sum()),
     }
     if not found:
@@ -681,7 +681,7 @@ def _choices(rnd) -> dict[str, int]:
     return out
 
 
-def step_price(h: _Hypothesis) -> float:
+def step_price(h: Hypothesis) -> float:
     """Log-likelihood a step pays for its change-point, chosen as the best of C positions: log C, the
     Bonferroni price its test pays too (a linear drift is then not read as a step at a dozen runs; in
     tests/criticism/test_criticism.py a 14-SD drift over 13 runs fits a step at run 9 better by 1.9).  0 for other
@@ -689,31 +689,31 @@ def step_price(h: _Hypothesis) -> float:
     return math.log(h.info.get("change_points", 1)) if h.cause == "step" else 0.0
 
 
-def _step_size(model: _Model) -> float:
+def _step_size(model: Model) -> float:
     """The shift of the runs after the step against those before (response units, or the transform's)."""
     return float(model.beta[model.names.index("step")])
 
 
-def _drift_per_run(model: _Model) -> float:
+def _drift_per_run(model: Model) -> float:
     j = model.names.index("run")
     return float(model.beta[j] / model.run_scale)
 
 
-def _detail_json(data: _Data, h: _Hypothesis):
+def _detail_json(data: Data, h: Hypothesis):
     if h.cause == "missing_term":
         return h.aliases[0]
     if h.cause == "factor_level":
-        return _run_value(data.runs[h.detail.row])
+        return run_label(data.runs[h.detail.row])
     if h.cause == "lack_of_fit":
         return ""
     if h.cause in ("outlier", "step"):
-        return _run_value(data.runs[int(h.detail)])
+        return run_label(data.runs[int(h.detail)])
     if h.cause == "response_transform":
         return "boxcox"
     return h.detail
 
 
-def _alias_sets(data: _Data, rnd: _Round) -> list[AliasSet]:
+def _alias_sets(data: Data, rnd: Round) -> list[AliasSet]:
     out = []
     for c in rnd.classes:
         names = tuple(term_name(t, data.factors) for t in c.terms)
@@ -725,13 +725,13 @@ def _alias_sets(data: _Data, rnd: _Round) -> list[AliasSet]:
     return out
 
 
-def _catalogue_entry(data: _Data, h: _Hypothesis) -> dict:
+def _catalogue_entry(data: Data, h: Hypothesis) -> dict:
     detail = _detail_json(data, h)
     return {"cause": h.cause, "detail": detail, "aliases": list(h.aliases),
-            "statistic": _num(h.statistic), "p_nominal": _num(np.exp(h.logp)), "p_family": _num(h.p_family)}
+            "statistic": json_number(h.statistic), "p_nominal": json_number(np.exp(h.logp)), "p_family": json_number(h.p_family)}
 
 
-def _summary(data: _Data, findings: list[Finding], catalogue: list[dict], family_alpha: float,
+def _summary(data: Data, findings: list[Finding], catalogue: list[dict], family_alpha: float,
              gain: dict, exact: str = "") -> str:
     n_tests = len(catalogue)
     if not n_tests and exact:

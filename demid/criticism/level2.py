@@ -24,8 +24,8 @@ from scipy import optimize
 from ..formulas import relative_error
 from ..tolerance import same_tolerances
 from .edges import extrapolation_warnings, movable_sides, touching, widen_advice
-from .messages import _level2_message
-from .models import _num
+from .messages import and_list, level2_miss_text, level2_tolerance_text, percent_text
+from .models import json_number, short_number
 from .reach import reach_beyond_bound, saturation_advice, saturation_finding
 
 
@@ -114,12 +114,12 @@ class Level2Result:
 
     def to_json(self) -> dict:
         def clean(d):
-            return None if d is None else {k: _num(v) for k, v in d.items()}
+            return None if d is None else {k: json_number(v) for k, v in d.items()}
         return {
             "observables": list(self.observables), "targets": clean(self.targets), "tolerance": self.tolerance,
             "tolerances": {o: self.own_tolerance(o) for o in self.observables},
             "best_point": clean(self.best_point), "best_values": clean(self.best_values),
-            "best_errors": clean(self.best_errors), "best_max_error": _num(self.best_max_error),
+            "best_errors": clean(self.best_errors), "best_max_error": json_number(self.best_max_error),
             "feasible": bool(self.feasible),
             "reference_point": clean(self.reference_point), "reference_values": clean(self.reference_values),
             "reference_errors": clean(self.reference_errors), "reference_max_error": self.reference_max_error,
@@ -380,8 +380,8 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     without, implied, bottleneck, candidates, biased = _bottleneck(problem, grid_s, grid_err, tolerance, feasible)
 
     shared_val, shared_s, shared_delta = _minimax(problem, grid_s, grid_err, every, shared=True)
-    shared = {"delta": _num(shared_delta), "max_error": _num(shared_val),
-              "point": {f: _num(v) for f, v in zip(factors, problem.actual(shared_s)[0])},
+    shared = {"delta": json_number(shared_delta), "max_error": json_number(shared_val),
+              "point": {f: json_number(v) for f, v in zip(factors, problem.actual(shared_s)[0])},
               "n_params": d + 1}
     extensions = _level2_extensions(d, k, best_val, shared_val, without, bottleneck)
     result = Level2Result(
@@ -448,7 +448,7 @@ def _level2_extensions(d: int, k: int, best: float, shared: float, without: dict
                 "not identifiable: more unknowns than measurements; any point fits and the biases are just "
                 "the residuals there")
         return {"model": model, "n_params": n_params, "n_measurements": k, "spare_measurements": spare,
-                "max_error": _num(max_error), "note": note}
+                "max_error": json_number(max_error), "note": note}
 
     rows = [row("simulation as calibrated (no discrepancy)", d, best)]
     if bottleneck is not None and without:
@@ -456,3 +456,69 @@ def _level2_extensions(d: int, k: int, best: float, shared: float, without: dict
     rows.append(row("shared relative bias on all observables", d + 1, shared))
     rows.append(row("bias on every observable", d + k, 0.0))
     return rows
+
+
+# =========================================================================== level 2 in words
+def _weighted(r: Level2Result, value: float) -> str:
+    """A weighted error (level 2's minimax values): a percentage, or a multiple of the own tolerances."""
+    if r.uniform:
+        return percent_text(value)
+    ratio = value / r.tolerance
+    return (f"{ratio:.2g} times their own tolerances" if ratio >= 0.005 else
+            "a negligible fraction of their own tolerances")
+
+
+def _level2_message(r: Level2Result) -> str:
+    pt = ", ".join(f"{f}={short_number(v)}" for f, v in r.best_point.items())
+    k, d = len(r.observables), len(r.factors)
+    obs = and_list(r.observables)
+    parts = []
+    within = level2_tolerance_text(r.tolerance, r.tolerances)
+    miss = level2_miss_text(r.best_errors, r.tolerance, r.tolerances, at_most=r.feasible)
+    if r.feasible:
+        parts.append(f"Every target ({obs}) can be met within {within}: the best point ({pt}) "
+                     f"misses {miss}.")
+    else:
+        worst = max(r.best_errors, key=lambda o: abs(r.best_errors[o]) / r.own_tolerance(o))
+        how = f"{'over' if r.best_errors[worst] > 0 else 'under'}-predicted"
+        parts.append(f"No point of the domain meets every target ({obs}) within {within}; the "
+                     f"closest point ({pt}) still misses "
+                     + (f"{miss} ({worst} {how})." if r.uniform else f"{miss[:-1]}; {how})."))
+        if r.bottleneck is not None and r.without:
+            b = r.bottleneck
+            parts.append(f"{b} is the bottleneck: without it the others can be met within "
+                         f"{_weighted(r, r.without[b])}, and the simulation would then read {b} "
+                         f"{percent_text(abs(r.implied_bias[b]))} {'high' if r.implied_bias[b] > 0 else 'low'}.")
+            if r.biased_observable is not None:
+                parts.append(f"{b} is the only observable whose removal makes the rest consistent, so a "
+                             f"discrepancy (bias) in {b} explains the mismatch.")
+            elif len(r.bias_candidates) > 1:
+                parts.append(f"But removing any of {and_list(r.bias_candidates)} makes the rest consistent: with "
+                             f"{k} measurements and {d} parameters the data cannot say which one is off "
+                             f"({b} is named because it needs the smallest bias); a further independent "
+                             f"measurement would.")
+            else:
+                parts.append("No single observable explains the mismatch on its own.")
+    if r.reference_errors is not None:
+        ref = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in r.reference_errors.items())
+        ok = r.reference_within
+        parts.append(f"At the reference point the errors are {ref}: it {'meets' if ok else 'misses'} "
+                     + (f"the {percent_text(r.tolerance)} tolerance." if r.uniform else f"{within}."))
+    sb = r.shared_bias
+    spare = k - d - 1
+    meas = f"{k} measurement{'s' if k != 1 else ''} and {d} parameter{'s' if d != 1 else ''}"
+    if r.feasible:
+        return " ".join(parts)
+    if spare < 0:
+        parts.append(f"With {meas}, a shared relative bias on the targets is not identifiable (any point "
+                     f"fits once it is free).")
+    else:
+        parts.append(f"A shared relative bias of {100 * sb['delta']:+.2f} % on all targets would leave "
+                     f"{_weighted(r, sb['max_error'])} at one extra parameter; "
+                     + (f"{spare} spare measurement{'s' if spare != 1 else ''} remain{'' if spare != 1 else 's'} "
+                        f"to test it." if spare > 0 else
+                        f"with {meas} it uses the last spare measurement, so its fit cannot be taken as "
+                        f"evidence of a bias."))
+    parts.append(f"A bias on every observable ({d + k} unknowns for {k} measurement{'s' if k != 1 else ''}) "
+                 f"fits trivially and is not identifiable.")
+    return " ".join(parts)
