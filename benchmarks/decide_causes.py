@@ -138,7 +138,7 @@ runs), two steps (one still level with drift after four runs, one ambiguous firs
 
 Why the unequal-scatter reading trails (diagnosis only, nothing changed).  Its AICc is already a joint fit: for
 each variance trend the mean is refitted by weighted least squares and the trend is the profile-likelihood
-maximum (level1.extend_for), and the scatter may follow each factor or the fitted value (catalogue.covariates), the
+maximum (extensions.extend_for), and the scatter may follow each factor or the fitted value (catalogue.covariates), the
 generator's own form (log-linear in one factor, sd ratio 30, gamma = ln 30 = 3.4).  Measured on the first-round
 candidates of seeds 0-19, 2 and 3 factors, 40 tables of each kind (the planted factor's reading on unequal-scatter
 tables, the best covariate's elsewhere; "leads" = its AICc, with its price, below every other cause's):

@@ -168,7 +168,8 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/test_surrogate.py", "tests/inputs/test_factor_round_off.py", "tests/criticism/test_noise_free.py"],
     },
     "demid/criticism/models.py": {
-        "functions": ["infer_axial_distance", "orthonormal_basis", "residualize", "leverages", "boxcox", "inv_boxcox", "aicc_of"],
+        "functions": ["infer_axial_distance", "orthonormal_basis", "residualize", "leverages", "boxcox", "inv_boxcox",
+                      "aicc_of"],
         "tests": ["tests/test_statistics_known_answers.py", "tests/criticism/test_criticism.py", "tests/test_core_contracts.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },

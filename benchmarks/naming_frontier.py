@@ -7,7 +7,7 @@ lof-share   lack of fit holds ``catalogue.LOF_SHARE`` of the family's level (det
             as the classical lack-of-fit test); ``equal`` gives every family member the same weight;
 slip        the ``factor_level`` test (a run that fits a slipped factor value); ``no-slip`` drops it, so
             a planted outlier can no longer be read as a slip;
-rules       a cause is named only when it is singled out (``level1._not_singled_out``: corner-only terms,
+rules       a cause is named only when it is singled out (``naming.why_not_singled_out``: corner-only terms,
             a stronger rival of another kind, unequal scatter resting on one run); ``no-rules`` names
             the strongest rejected cause whatever else fired.
 
@@ -63,7 +63,7 @@ def _patch(changes: tuple[str, ...]) -> None:
     if "no-slip" in changes:
         catalogue.Round._factor_level = lambda self, data, m, eps: None
     if "no-rules" in changes:
-        level1._not_singled_out = lambda data, model, h, hypotheses: None
+        level1.why_not_singled_out = lambda data, model, h, hypotheses: None
 
 
 def _run_variant(job: tuple[str, str, int, int]) -> list[dict]:

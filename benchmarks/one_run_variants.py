@@ -30,7 +30,7 @@ import honest_causes as hc  # noqa: E402
 from criticism_power import DESIGNS, named  # noqa: E402
 from generators import FACTORS, ccd_table, off_catalogue_table  # noqa: E402
 
-from demid.criticism import level1, verdict  # noqa: E402
+from demid.criticism import level1, naming, verdict  # noqa: E402
 from demid.criticism.one_run import WHOLE_DESIGN, worst_deletion  # noqa: E402
 
 VARIANTS = [(causes, p) for causes in (("heteroscedasticity",), ("missing_term",), ("response_transform",),
@@ -119,7 +119,7 @@ def main(argv=None) -> None:
     args = parser.parse_args(argv)
     start = time.time()
     level1.Round = _RecordingRound
-    level1.rests_on_one_run = _record
+    naming.rests_on_one_run = _record
     recs = collect(args.reps, args.seed0)
     base = rates(recs)
     print(f"no rule: wrong {base['wrong']:.3f}, wrong (lenient) {base['lenient']:.3f}, catalogue naming {base['named']:.3f}")

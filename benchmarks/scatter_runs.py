@@ -48,20 +48,20 @@ import pandas as pd  # noqa: E402
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from decide_causes import CELLS, Truth, verdict_of  # noqa: E402
 
-from demid.criticism import criticize, discrimination, level1  # noqa: E402
+from demid.criticism import criticize, discrimination, level1, naming  # noqa: E402
 
 
 def _first_round_entries(truth: Truth, n_null: int):
     """The first verdict and the first round's candidate entries (each cause's extension and AICc)."""
     seen = {}
-    original = level1._candidate_entries
+    original = naming.candidate_entries
 
     def keep(data, base_model, first_round):
         seen["entries"] = original(data, base_model, first_round)
         seen["data"] = data
         return seen["entries"]
 
-    level1._candidate_entries = keep
+    naming.candidate_entries = keep
     try:
         first = criticize(truth.table, truth.factors, "y", alpha=truth.alpha, n_null=n_null)
         if "entries" not in seen:  # no cause named or not singled out: the entries are computed here alone
@@ -70,7 +70,7 @@ def _first_round_entries(truth: Truth, n_null: int):
             first_round = level1.Round(data, base, n_null, np.random.default_rng(0))
             keep(data, base, first_round)
     finally:
-        level1._candidate_entries = original
+        naming.candidate_entries = original
     return first, seen["entries"], seen["data"]
 
 

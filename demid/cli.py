@@ -150,7 +150,7 @@ def _require_estimable(table, factors, response, coding, source):
     """Refuse a saturated or rank-deficient quadratic: its R² is 1 or arbitrary, its residuals meaningless."""
     import numpy as np
 
-    from .design_check import require_estimable
+    from .estimability import require_estimable
 
     coded = coding.to_coded(table[factors].to_numpy(dtype=float))
     require_estimable(coded, np.isfinite(table[response].to_numpy(dtype=float)), None, source, response, factors)

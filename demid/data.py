@@ -23,8 +23,9 @@ import pandas as pd
 
 from .blocks import BLOCK_COLUMN, label_text
 from .design import Coding, factor_levels, model_matrix, model_units, quadratic_terms, snap_to_factor_levels
-from .design_check import check_design, odd_level_values, require_estimable
+from .design_check import check_design, odd_level_values
 from .errors import InputError
+from .estimability import require_estimable
 from .numbers import unusable_number
 from .precision import PRINTED_PLACE, printed_place
 
@@ -260,26 +261,8 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
                                  source=src, run=run, column=col)
             rec[col] = value
         for col in responses:
-            cell = row[idx[col]].strip()
-            if failed and (cell == "" or cell.lower() in _NONFINITE):
-                rec[col] = np.nan
-                continue
-            if failed:
-                raise InputError(f"the run is marked '{status}' in column '{status_column}' but this cell holds "
-                                 f"'{cell}'; empty the cell if the simulation failed (if only some responses "
-                                 "failed, clear the status and write NaN in their cells)",
-                                 source=src, run=run, column=col)
-            if cell.lower() in _NONFINITE:
-                rec[col] = np.nan
-                warnings.append(f"{src}, run {run}, column '{col}': value '{cell}' treated as a failed simulation")
-                continue
-            try:
-                rec[col] = parse_number(cell)
-            except ValueError as exc:
-                hint = ("" if cell != "" else f"; if this simulation failed, write failed in its '{status_column}' "
-                        f"cell" if has_status else f"; if this simulation failed, add a '{status_column}' column with "
-                        f"'failed'")
-                raise InputError(f"{exc}{hint}", source=src, run=run, column=col) from None
+            rec[col] = _response_value(row[idx[col]].strip(), status if failed else None, status_column,
+                                       has_status, warnings, source=src, run=run, column=col)
         if failed:
             warnings.append(f"{src}, run {run}: marked '{status}' in column '{status_column}'; its missing "
                             f"responses are excluded from the fits")
@@ -298,6 +281,29 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
     # the design check judges a level within the print's own rounding, which only the text shows
     table.attrs[PRINTED_PLACE] = {col: printed_place(row[idx[col]] for row in rows) for col in factors}
     return table, warnings
+
+
+def _response_value(cell: str, failed_status: str | None, status_column: str, has_status: bool,
+                    warnings: list[str], *, source: str, run: int, column: str) -> float:
+    """A response cell as a number: NaN where the run is marked failed (``failed_status``, as written) and the
+    cell is empty or non-finite, or where the cell holds NaN/inf (with a warning); one clear line otherwise."""
+    if failed_status is not None and (cell == "" or cell.lower() in _NONFINITE):
+        return np.nan
+    if failed_status is not None:
+        raise InputError(f"the run is marked '{failed_status}' in column '{status_column}' but this cell holds "
+                         f"'{cell}'; empty the cell if the simulation failed (if only some responses "
+                         "failed, clear the status and write NaN in their cells)",
+                         source=source, run=run, column=column)
+    if cell.lower() in _NONFINITE:
+        warnings.append(f"{source}, run {run}, column '{column}': value '{cell}' treated as a failed simulation")
+        return np.nan
+    try:
+        return parse_number(cell)
+    except ValueError as exc:
+        hint = ("" if cell != "" else f"; if this simulation failed, write failed in its '{status_column}' "
+                f"cell" if has_status else f"; if this simulation failed, add a '{status_column}' column with "
+                f"'failed'")
+        raise InputError(f"{exc}{hint}", source=source, run=run, column=column) from None
 
 
 def read_printed(path: Path | str, table: pd.DataFrame) -> pd.DataFrame:

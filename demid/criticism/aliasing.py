@@ -88,7 +88,8 @@ _TIE = 1e-4
 
 
 def candidate_points(n_factors: int, alpha: float) -> np.ndarray:
-    """Coded points a proposed extra run is chosen from: every combination of the levels -alpha, -1, -0.5, 0, 0.5, 1, alpha."""
+    """Coded points a proposed extra run is chosen from: every combination of the levels -alpha, -1, -0.5, 0,
+    0.5, 1, alpha."""
     levels = sorted({-alpha, -1.0, -0.5, 0.0, 0.5, 1.0, alpha})
     return np.array(list(product(levels, repeat=n_factors)), dtype=float)
 

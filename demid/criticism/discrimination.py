@@ -49,7 +49,7 @@ AMBIGUOUS_AICC = 6.0
 #: with runs that would confirm it against the rival: a lead below 10 (evidence ratio 150:1) is "strong"
 #: but not "very strong" on Kass & Raftery's scale, and a misnamed cause can only be corrected by runs
 #: that separate it from the truth.  A cause with no rival that close is confirmed against the nearest kind
-#: (level1.confirming_rivals): in benchmarks/decide_causes.py eight of the 32 tables misnamed or ambiguous first
+#: (naming.confirming_rivals): in benchmarks/decide_causes.py eight of the 32 tables misnamed or ambiguous first
 #: (seeds 0-19) were misnamed by a margin of 10-35 and got no runs at all.
 CONFIRM_AICC = 10.0
 
@@ -80,11 +80,12 @@ _ONE_RUN = ("outlier", "factor_level")
 #: A drift and a step both say the response changed with run order, but they differ in what later runs give
 #: (a drift goes on, a step stays): they are candidates of different kinds, and so are steps at different
 #: change-points (a replicate of a run between them, made later, tells which side of the step it was on).
-#: Each pays for its choice (a step among its change-points, level1.step_price) before they are compared.
+#: Each pays for its choice (a step among its change-points, extensions.step_price) before they are compared.
 
 
 def candidate_kind(cause: str, detail) -> tuple:
-    """The kind a cause counts as when candidates are compared: one per run for a shifted run or slipped value, one per change-point for a step."""
+    """The kind a cause counts as when candidates are compared: one per run for a shifted run or slipped value,
+    one per change-point for a step."""
     if cause in _ONE_RUN:
         return ("one run", str(detail))
     return ("step", str(detail)) if cause == "step" else (cause,)

@@ -7,37 +7,29 @@ again on the extended model, reporting leave-one-out and AICc gains.
 from __future__ import annotations
 
 import json
-import math
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
-from scipy import optimize, stats
 
 from ..blocks import block_columns
-from ..design import LEVERAGE_UNPREDICTABLE, Coding, model_matrix, model_units, quadratic_terms, term_name
+from ..design import Coding, model_units, quadratic_terms, term_name
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
-from .discrimination import (AMBIGUOUS_AICC, CONFIRM_AICC, CONFIRM_PURPOSE, PURPOSE, candidate_kind,
-                             candidate_label, close_candidates, discriminating_runs)
-from .catalogue import (CAUSES, MISFIT_TESTS, slip_candidates, step_directions, GAMMA_BOUND, LAMBDA_FINE_GRID,
-                        NICE_LAMBDAS, Round, boxcox_profile)
-from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, other_reading_of_the_run,
-                      rests_on_one_run, runs_for_next_wave, strongest_rival, unexplained_evidence, verdict_of)
-from .messages import CAUSE_WORDS, finding_message, corner_only_runs
-from .models import (TRANSFORM_NAMES, Data, Model, ModelForm, json_number, orthonormal_basis, run_label, transform_name,
-                     infer_axial_distance)
+from .catalogue import Round
+from .discrimination import AMBIGUOUS_AICC
+from .extensions import catalogue_entry, detail_json, drift_per_run, step_size
+from .messages import CAUSE_WORDS, finding_message
+from .models import Data, Model, ModelForm, infer_axial_distance, json_number, run_label, transform_name
+from .naming import ambiguity, honest_causes, name_cause, scatter_aliases, why_not_singled_out
 from .run_order import RunOrder, assess_run_order
+from .verdict import exact_fit_message, other_reading_of_the_run, runs_for_next_wave, verdict_of
 
 if TYPE_CHECKING:
     from ..surrogate import SurrogateFit
     from .catalogue import Hypothesis
     from .models import ExtendedSurrogate
-
-
-#: Causes that describe the run order: a linear drift or a step between two groups of runs.
-RUN_ORDER_CAUSES = ("drift", "step")
 
 
 # =========================================================================== findings
@@ -64,7 +56,8 @@ class Finding:
         out = {"cause": self.cause, "detail": self.detail, "aliases": list(self.aliases),
                "p_value": json_number(self.p_value), "message": self.message,
                "p_nominal": json_number(self.p_nominal), "statistic": json_number(self.statistic),
-               "loo_rmse_before": json_number(self.loo_rmse_baseline), "loo_rmse_after": json_number(self.loo_rmse_extended),
+               "loo_rmse_before": json_number(self.loo_rmse_baseline),
+               "loo_rmse_after": json_number(self.loo_rmse_extended),
                "delta_aicc": json_number(self.delta_aicc), "compared_runs": self.compared_runs}
         if self.extra_runs:
             out["extra_runs"] = self.extra_runs
@@ -196,75 +189,6 @@ def prepare_data(table: pd.DataFrame, factors: list[str], response: str, alpha: 
     return data, fit
 
 
-def extend_for(data: Data, model: Model, h: Hypothesis) -> tuple[ModelForm, dict]:
-    """Extension of ``model.spec`` that answers hypothesis h, and facts for the message."""
-    spec = model.spec
-    info: dict = {}
-    if h.cause == "missing_term":
-        return replace(spec, extra_terms=spec.extra_terms + (h.detail.terms[0],)), info
-    if h.cause == "drift":
-        return replace(spec, drift=True), info
-    if h.cause == "step":
-        return replace(spec, step=int(h.detail)), info
-    if h.cause == "factor_level":
-        c = h.detail
-        row = model.coded[int(np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0])].copy()
-        recorded = float(data.to_actual(row)[0, c.factor])
-        row[c.factor] = c.coded
-        info.update(factor=data.factors[c.factor], recorded_value=recorded,
-                    fitting_value=float(data.to_actual(row)[0, c.factor]), slip=f"x1e{c.power:+d}",
-                    t_moved=h.info["t_moved"], bayes_factor=h.info["bayes_factor"],
-                    t_recorded=h.info["t_recorded"], observed=float(data.y[c.row]))
-        return replace(spec, moved=spec.moved + ((c.row, c.factor, c.coded),)), info
-    if h.cause == "outlier":
-        i = int(h.detail)
-        pos = int(np.flatnonzero(np.flatnonzero(model.keep) == i)[0])
-        info["observed"] = float(data.y[i])
-        info["predicted_without"] = float(data.y[i] - model.loo_errors[pos])
-        return replace(spec, dropped=spec.dropped + (i,)), info
-    if h.cause == "response_transform":
-        q = orthonormal_basis(model.xw)
-        prof = boxcox_profile(model.y[:, None], q, LAMBDA_FINE_GRID)[:, 0]
-        best = int(np.argmax(prof))
-        lam_hat = float(LAMBDA_FINE_GRID[best])
-        # Small-sample 95 % interval: the likelihood ratio in F form, F = df (exp(LR/n) - 1) ~ F(1, df)
-        # (the chi-square(1) interval is far too narrow at a dozen runs).
-        n, df = len(model.y), model.df_resid - 1
-        f_ratio = df * np.expm1(2 * (prof[best] - prof) / n)
-        inside = LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.95, 1, df)]
-        lo, hi = float(inside.min()), float(inside.max())
-        # The transform used is the first convenient lambda (log, sqrt, inverse, then others)
-        # that the data do not reject at the 1 % level; otherwise lambda-hat to one decimal.
-        plausible = LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.99, 1, df)]
-        lo99, hi99 = float(plausible.min()), float(plausible.max())
-        lam = next((v for v in (*TRANSFORM_NAMES, *NICE_LAMBDAS) if lo99 <= v <= hi99), round(lam_hat, 1))
-        if abs(lam - 1.0) < 1e-9:
-            lam = round(lam_hat, 2)
-        info.update(lambda_hat=lam_hat, lambda_ci=[lo, hi])
-        return replace(spec, lam=float(lam)), info
-    if h.cause == "heteroscedasticity":
-        if h.detail == "fitted":  # excluded runs: their predicted value, same scaling
-            k = len(model.mean_terms)
-            fz_all = model_matrix(data.coded, model.mean_terms) @ model.beta[:k]
-            if data.blocks is not None:
-                fz_all = fz_all + data.blocks @ model.beta[k:k + data.blocks.shape[1]]
-            fz = model.fitted_z
-            values = (fz_all - (fz.max() + fz.min()) / 2) / (np.ptp(fz) / 2)
-        else:
-            values = data.coded[:, data.factors.index(h.detail)] / data.alpha
-        base = replace(spec, weight_on=h.detail, weight_values=tuple(float(v) for v in values))
-
-        def negll(g):
-            return -Model(data, replace(base, weight_gamma=float(g))).loglik
-
-        res = optimize.minimize_scalar(negll, bounds=(-GAMMA_BOUND, GAMMA_BOUND), method="bounded",
-                                       options={"xatol": 1e-6})
-        gamma = float(res.x)
-        info["sd_ratio"] = float(np.exp(gamma))  # sd at covariate +1 over sd at -1
-        return replace(base, weight_gamma=gamma), info
-    raise ValueError(h.cause)
-
-
 def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: float | None = None,
               family_alpha: float = 0.05, log_factors: tuple[str, ...] = (), max_findings: int = 3,
               n_null: int = 1999, seed: int = 0, run_order: str | RunOrder = "performed",
@@ -289,46 +213,12 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
     if not isinstance(run_order, RunOrder):
         run_order = assess_run_order(data.runs, data.coded, {response: data.y}, run_order)
     data = replace(data, drift_tested=run_order.drift_tested)
-    rng = np.random.default_rng(seed)
     base_model = Model(data, ModelForm())
-    model = base_model
-    findings: list[Finding] = []
-    catalogue: list[dict] = []
-    alias_sets: list[AliasSet] = []
-    first_round = last_round = None
-    not_singled_out = None
-    for rnd_index in range(max_findings + 1):
-        rnd = Round(data, model, n_null, rng)
-        last_round = rnd
-        if rnd_index == 0:
-            first_round = rnd
-            alias_sets = _alias_sets(data, rnd)
-            catalogue = [_catalogue_entry(data, h) for h in rnd.hypotheses]
-        rejected = rnd.rejected(family_alpha)
-        if not rejected or rnd_index == max_findings:
-            break
-        named = _name_cause(data, model, rejected)
-        if named is None:  # only a slip fits, and too weakly to be named: misfit without a cause
-            break
-        not_singled_out = _not_singled_out(data, model, named[0], rnd.hypotheses)
-        if not_singled_out is not None:
-            break
-        h, spec, info, new, alternatives = named
-        both = new.predictable & model.predictable
-        if findings and not new.loo_rmse_on(both) < model.loo_rmse_on(both):
-            break  # a further extension must also predict left-out runs better
-        findings.append(_finding(data, response, model, h, spec, info, new, alternatives,
-                                 other_reading_of_the_run(h, rnd.hypotheses),
-                                 _scatter_aliases(data, model, h, new, rnd.hypotheses), first=not findings))
-        model = new
-        last_round = None
-        if model.df_resid - 1 < 3 or model.spec.weight_on is not None:
-            break  # too few spare runs, or estimated weights (further tests would not be exact)
-
-    findings, model, unexplained, naming = _honest_causes(data, response, findings, model, base_model, first_round,
-                                                          last_round, not_singled_out, family_alpha)
-
-    candidates, runs = _ambiguity(data, base_model, first_round, findings, not_singled_out)
+    findings, model, catalogue, alias_sets, first_round, last_round, not_singled_out = _rounds(
+        data, response, base_model, n_null, np.random.default_rng(seed), family_alpha, max_findings)
+    findings, model, unexplained, naming = honest_causes(data, response, findings, model, base_model, first_round,
+                                                         last_round, not_singled_out, family_alpha)
+    candidates, runs = ambiguity(data, base_model, first_round, findings, not_singled_out)
     if candidates:  # the runs cannot tell these causes apart: none of them is named
         findings, model, unexplained = [], base_model, None
     baseline, extended, gain = _gain(table, factors, response, data, fit, base_model, model, bool(findings))
@@ -349,231 +239,44 @@ def criticize(table: pd.DataFrame, factors: list[str], response: str, *, alpha: 
                            candidates=candidates, discriminating_runs=runs)
 
 
-def _honest_causes(data: Data, response: str, findings: list, model: Model, base_model: Model, first_round,
-                   last_round, not_singled_out: dict | None, family_alpha: float):
-    """(findings, model, unexplained, naming): the named causes must leave no misfit behind.
-
-    Misfit that no catalogue cause answers (lack of fit alone), or that remains after the named
-    extensions (any family member still rejected at the stricter residual level), is reported as
-    unexplained instead of a confident cause; the findings are then dropped and the model is the base one.
-    """
-    unexplained = None
-    naming: dict = {}
-    if not_singled_out:
-        naming["not_singled_out"] = not_singled_out
-    if findings and last_round is not None and last_round.hypotheses:
-        naming["residual_min_p"] = min(h.p_family for h in last_round.hypotheses)
-        naming["residual_tests"] = [_catalogue_entry(data, h) for h in last_round.hypotheses
-                                    if h.p_family <= family_alpha]
-    if findings:
-        alts = findings[0].info.get("alternatives", [])
-        naming["first_alternatives"] = alts
-        naming["first_cause"] = findings[0].cause
-        naming["first_detail"] = findings[0].detail
-    if first_round is not None:
-        residual = []
-        if findings and last_round is not None:
-            residual = [h for h in last_round.hypotheses if h.p_family <= RESIDUAL_MISFIT_LEVEL * family_alpha]
-        if (not findings and first_round.misfit(family_alpha)) or residual:
-            unexplained = unexplained_evidence(
-                response, [_catalogue_entry(data, h) for h in first_round.misfit(family_alpha)],
-                [{"cause": f.cause, "detail": f.detail} for f in findings],
-                [_catalogue_entry(data, h) for h in residual], family_alpha,
-                candidate=not_singled_out if not findings else None)
-            findings, model = [], base_model
-    return findings, model, unexplained, naming
-
-
-def _ambiguity(data: Data, base_model: Model, first_round, findings: list,
-               not_singled_out: dict | None) -> tuple[list[dict], list[dict]]:
-    """(candidates, discriminating runs) when the first cause named, or the candidate not singled out for
-    a rival of another kind, does not lead every cause of another kind by discrimination.AMBIGUOUS_AICC in
-    AICc (discrimination.close_candidates); a cause named: ([], the runs that would confirm it); ([], [])
-    otherwise."""
-    if first_round is None or not (findings or (not_singled_out and "rival" in not_singled_out)):
-        return [], []
-    if not_singled_out and not findings and not_singled_out["rival"]["cause"] not in CAUSES:
-        return [], []
-    first = (findings[0].cause, findings[0].detail) if findings else \
-        (not_singled_out["cause"], not_singled_out["detail"])
-    entries = _candidate_entries(data, base_model, first_round)
-    close = close_candidates(entries, named=first)
-    if len(close) < 2 and findings:  # named: runs that would confirm it against its nearest rivals
-        return [], _deciding_runs(data, confirming_rivals(entries, first), CONFIRM_PURPOSE, named=first)
-    if len(close) < 2:
-        return [], []
-    if not findings:
-        rival = not_singled_out["rival"]
-        if not any((c["cause"], c["detail"]) == (rival["cause"], rival["detail"]) for c in close):
-            return [], []
-    base_aicc = base_model.aicc
-    candidates = [{"cause": c["cause"], "detail": c["detail"], "gain": json_number(base_aicc - c["aicc"]),
-                   "delta_aicc": json_number(c["aicc"] - close[0]["aicc"]), "aliases": c.get("aliases", [])}
-                  for c in close]
-    return candidates, _deciding_runs(data, close, PURPOSE)
-
-
-def confirming_rivals(entries: list[dict], named: tuple) -> list[dict]:
-    """The named cause and the rivals its confirming runs are to separate it from: every kind within
-    CONFIRM_AICC of it, or else the nearest kind however far behind (a cause misnamed by a wide margin can
-    only be corrected by runs that separate it from something; the nearest rival is the likeliest)."""
-    rivals = close_candidates(entries, named=named, margin=CONFIRM_AICC)
-    if len(rivals) > 1:
-        return rivals
-    every = close_candidates(entries, named=named, margin=math.inf)
-    anchor = [e for e in every if (e["cause"], e["detail"]) == tuple(named)]
-    others = [e for e in every if (e["cause"], e["detail"]) != tuple(named)]
-    return anchor + others[:1]
-
-
-def _deciding_runs(data: Data, close: list[dict], purpose: str, named: tuple | None = None) -> list[dict]:
-    """The runs that separate the causes ``close`` (each missing term together with the terms the runs alias
-    with it; the ``named`` cause's scatter with the covariates it follows about as well)."""
-    models, labels, aiccs, kinds = [], [], [], []
-    for c in close:
-        # a rival's covariates are not: runs spent telling them apart would not decide the named cause
-        aliased = c["cause"] == "missing_term" or (c["cause"], c["detail"]) == named
-        for j, (mo, detail) in enumerate(zip([c["model"]] + (c.get("aliased_models", []) if aliased else []),
-                                             [c["detail"]] + c.get("aliased", []))):
-            models.append(mo)
-            labels.append(candidate_label(c["cause"], detail))
-            aiccs.append(c["aicc"])
-            # confirming a named term (or scatter's covariate): the runs also tell it from the terms (covariates)
-            # they alias with it, or a term named right on these runs could be renamed as its alias on the new ones
-            kinds.append(candidate_kind(c["cause"], c["detail"]) if j == 0 or purpose != CONFIRM_PURPOSE
-                         else ("alias", labels[-1]))
-    return discriminating_runs(data, models, labels, aiccs, kinds, purpose)
-
-
-def _candidate_entries(data: Data, base_model: Model, first_round) -> list[dict]:
-    """Each cause of the first round with its extension and its AICc, the extension paying for the place
-    it was chosen from (a run, a change-point, a term, a covariate); a step also at every other change-point,
-    so that a step whose first run is uncertain is not named at one of them."""
-    entries = []
-    choices = _choices(first_round)
-    # every cause, not only the rejected ones: a Box-Cox test's bootstrap p-value is floored at 1/(B+1), so a
-    # log response fitted far better than the cubic term named may not be rejected (benchmarks/decide_causes.py:
-    # comparing the rejected causes only left strict wrong causes at 0.079, every cause 0.062, margin 2)
-    for h in (h for h in first_round.hypotheses if h.cause not in MISFIT_TESTS):
-        spec, info = extend_for(data, base_model, h)
-        mo = Model(data, spec)
-        detail = transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
-        price = 2.0 * math.log(choices.get(h.cause, 1))
-        # a run's other reading (an outlier for a slip and back) is its alias here as in a named finding
-        other = other_reading_of_the_run(h, first_round.hypotheses)
-        entry = {"cause": h.cause, "detail": detail, "aicc": mo.aicc + price, "model": mo,
-                 "aliases": list(h.aliases) + ([other] if other else [])}
-        if h.cause == "missing_term":  # terms the runs alias with it: the deciding runs must not confuse them
-            entry["aliased_models"] = [Model(data, replace(base_model.spec, extra_terms=(t,)))
-                                       for t in h.detail.terms[1:]]
-            entry["aliased"] = [term_name(t, data.factors) for t in h.detail.terms[1:]]
-        entries.append(entry)
-        if h.cause == "step":
-            starts, _ = step_directions(base_model, orthonormal_basis(base_model.xw))
-            for start in starts:
-                if start != int(h.detail):
-                    other = Model(data, replace(base_model.spec, step=start))
-                    entries.append({"cause": "step", "detail": run_label(data.runs[start]),
-                                    "aicc": other.aicc + price, "model": other})
-    _alias_scatter_covariates(entries)
-    return entries
-
-
-def _alias_scatter_covariates(entries: list[dict]) -> None:
-    """Each unequal-scatter entry carries the covariates fitted about as well (better, or within
-    AMBIGUOUS_AICC) as its aliases, as a missing term carries the terms the runs alias with it."""
-    scatter = [e for e in entries if e["cause"] == "heteroscedasticity"]
-    for e in scatter:
-        close = _nearly_as_good(e["aicc"], [(o["aicc"], o) for o in scatter if o is not e])
-        if close:
-            e.update(aliases=[e["detail"]] + [o["detail"] for o in close], aliased=[o["detail"] for o in close],
-                     aliased_models=[o["model"] for o in close])
-
-
-def _not_singled_out(data: Data, model: Model, h: Hypothesis, hypotheses: list[Hypothesis]) -> dict | None:
-    """Why cause h is not named, or None: a term only the corner runs carry (which any difference between
-    the corners mimics, messages.corner_only_runs), another kind of misfit at least as strong, or evidence
-    that hinges on one run (verdict.strongest_rival, verdict.rests_on_one_run)."""
-    why = {"cause": h.cause, "detail": _detail_json(data, h)}
-    if h.cause == "missing_term":
-        carried = corner_only_runs(data, h.detail.terms[0])
-        if carried:
-            return {**why, "corner_only": carried}
-    rival = strongest_rival(h, hypotheses)
-    if rival is not None:
-        return {**why, "rival": _catalogue_entry(data, rival)}
-    one_run = rests_on_one_run(data, model, h)
-    if one_run is not None:
-        return {**why, "one_run": {"run": run_label(data.runs[one_run.row]), "p_without": one_run.p_without}}
-    return None
-
-
-def _name_cause(data: Data, model: Model, rejected: list[Hypothesis]) -> tuple:
-    """The cause to name among the rejected ones, its extension, and the others as alternatives."""
-    # The rejected cause with the strongest evidence (smallest nominal p-value) is named, except
-    # that one wild run can be read as an outlier or as scatter growing towards its corner of the
-    # design: between those two (and between variance covariates, often nearly collinear) the
-    # better-fitting one-parameter extension (higher likelihood) decides.  The other rejected
-    # causes are fitted too and listed as alternatives.
-    fitted_alternatives = []
-    for cand in rejected:
-        cand_spec, cand_info = extend_for(data, model, cand)
-        fitted_alternatives.append((cand, cand_spec, cand_info, Model(data, cand_spec)))
-    # A run that fits a slipped value of one factor explains its misfit without an added parameter, but
-    # one run is weak evidence: the slip is named only when its Bayes factor against a mean shift of the
-    # run reaches SLIP_BAYES_FACTOR and no other extension beats it by more than its added parameters.
-    slips = [i for i, alt in enumerate(fitted_alternatives) if alt[0].cause == "factor_level"]
-    if slips:
-        i = slips[0]
-        slip_model = fitted_alternatives[i][3]
-        others = [alt[3].loglik - alt[3].n_params + slip_model.n_params
-                  for j, alt in enumerate(fitted_alternatives)
-                  if j != i and alt[0].cause != "outlier"]
-        if fitted_alternatives[i][0].info["bayes_factor"] >= SLIP_BAYES_FACTOR and \
-                (not others or slip_model.loglik >= max(others) - 1.0):
-            return _with_alternatives(data, fitted_alternatives, i)
-    named = [i for i, alt in enumerate(fitted_alternatives) if alt[0].cause != "factor_level"]
-    if not named:
-        return None
-    best = named[0]
-    if fitted_alternatives[best][0].cause in ("heteroscedasticity", "outlier"):
-        rivals = [i for i, alt in enumerate(fitted_alternatives)
-                  if alt[0].cause in ("heteroscedasticity", "outlier")]
-        best = max(rivals, key=lambda i: (round(fitted_alternatives[i][3].loglik, 9), -i))
-    if fitted_alternatives[best][0].cause in RUN_ORDER_CAUSES:
-        # a trend or a step in run order: the better-fitting extension decides, the step paying for its
-        # change-point (step_price)
-        rivals = [i for i, alt in enumerate(fitted_alternatives) if alt[0].cause in RUN_ORDER_CAUSES]
-        best = max(rivals, key=lambda i: (round(fitted_alternatives[i][3].loglik
-                                                - step_price(fitted_alternatives[i][0]), 9), -i))
-    return _with_alternatives(data, fitted_alternatives, best)
-
-
-def _with_alternatives(data: Data, fitted_alternatives: list, best: int) -> tuple:
-    h, spec, info, new = fitted_alternatives[best]
-    alternatives = [{"cause": c.cause, "detail": _detail_json(data, c) if c.cause != "response_transform"
-                     else transform_name(sp.lam), "p_value": json_number(c.p_family),
-                     "loglik_vs_named": json_number(mo.loglik - new.loglik), "aicc_vs_named": json_number(mo.aicc - new.aicc)}
-                    for c, sp, _, mo in fitted_alternatives if c is not h]
-    return h, spec, info, new, alternatives
-
-
-def _scatter_aliases(data: Data, model: Model, h: Hypothesis, new: Model, hypotheses: list) -> list[str]:
-    """For unequal scatter: the covariates it follows as well as the named one or nearly so (their extension's
-    AICc at most AMBIGUOUS_AICC above the named one's; a covariate not among the rejected tests may fit better),
-    the named one first -- the runs do not tell which; [] when none is that close (or for another cause).  The
-    fitted value is often nearly one factor on a small design."""
-    if h.cause != "heteroscedasticity":
-        return []
-    close = _nearly_as_good(new.aicc, [(Model(data, extend_for(data, model, other)[0]).aicc, other.detail)
-                                       for other in hypotheses if other.cause == h.cause and other.detail != h.detail])
-    return [h.detail] + close if close else []
-
-
-def _nearly_as_good(anchor_aicc: float, others: list[tuple[float, object]]) -> list:
-    """Of ``others`` ((AICc, item) pairs), the items fitted as well as the anchor or nearly so (AICc at most
-    AMBIGUOUS_AICC above it), best first: the covariates of unequal scatter the runs do not tell apart."""
-    return [item for aicc, item in sorted(others, key=lambda pair: pair[0]) if aicc - anchor_aicc <= AMBIGUOUS_AICC]
+def _rounds(data: Data, response: str, base_model: Model, n_null: int, rng: np.random.Generator,
+            family_alpha: float, max_findings: int) -> tuple:
+    """The catalogue's rounds: test, name the cause, add its extension, test again on the extended model.
+    (findings, model, catalogue, alias sets, first round, last round, why the cause was not singled out)."""
+    model = base_model
+    findings: list[Finding] = []
+    catalogue: list[dict] = []
+    alias_sets: list[AliasSet] = []
+    first_round = last_round = None
+    not_singled_out = None
+    for rnd_index in range(max_findings + 1):
+        rnd = Round(data, model, n_null, rng)
+        last_round = rnd
+        if rnd_index == 0:
+            first_round = rnd
+            alias_sets = _alias_sets(data, rnd)
+            catalogue = [catalogue_entry(data, h) for h in rnd.hypotheses]
+        rejected = rnd.rejected(family_alpha)
+        if not rejected or rnd_index == max_findings:
+            break
+        named = name_cause(data, model, rejected)
+        if named is None:  # only a slip fits, and too weakly to be named: misfit without a cause
+            break
+        not_singled_out = why_not_singled_out(data, model, named[0], rnd.hypotheses)
+        if not_singled_out is not None:
+            break
+        h, spec, info, new, alternatives = named
+        both = new.predictable & model.predictable
+        if findings and not new.loo_rmse_on(both) < model.loo_rmse_on(both):
+            break  # a further extension must also predict left-out runs better
+        findings.append(_finding(data, response, model, h, spec, info, new, alternatives,
+                                 other_reading_of_the_run(h, rnd.hypotheses),
+                                 scatter_aliases(data, model, h, new, rnd.hypotheses), first=not findings))
+        model = new
+        last_round = None
+        if model.df_resid - 1 < 3 or model.spec.weight_on is not None:
+            break  # too few spare runs, or estimated weights (further tests would not be exact)
+    return findings, model, catalogue, alias_sets, first_round, last_round, not_singled_out
 
 
 def _finding(data: Data, response: str, model: Model, h: Hypothesis, spec: ModelForm, info: dict, new: Model,
@@ -585,9 +288,9 @@ def _finding(data: Data, response: str, model: Model, h: Hypothesis, spec: Model
     if h.cause == "response_transform":
         info["lam"] = spec.lam
     if h.cause == "drift":
-        info["drift_per_run"] = _drift_per_run(new)
+        info["drift_per_run"] = drift_per_run(new)
     if h.cause == "step":
-        info["step_size"] = _step_size(new)
+        info["step_size"] = step_size(new)
         info["runs_before"] = int(np.sum(data.runs.astype(float) < float(data.runs[int(h.detail)])))
     same = new.predictable & model.predictable
     before = model.loo_rmse_on(same)
@@ -601,7 +304,7 @@ def _finding(data: Data, response: str, model: Model, h: Hypothesis, spec: Model
         message += (" A slipped factor value of the same run fits it too (a Bayes factor short of 20:1 either way): no "
                     "further run tells the two apart, the run's input does.")
     elif other_reading == "outlier":
-        message += (f" The same evidence reads as an outlier of run {_detail_json(data, h)} (the Bayes factor of the "
+        message += (f" The same evidence reads as an outlier of run {detail_json(data, h)} (the Bayes factor of the "
                     f"slip, {info['bayes_factor']:.1f}, is no decisive preference).")
     if scatter_aliases:
         others = ", ".join("the predicted value" if a == "fitted" else a for a in scatter_aliases[1:])
@@ -613,7 +316,7 @@ def _finding(data: Data, response: str, model: Model, h: Hypothesis, spec: Model
     if close:
         message += (" Almost as likely: " + "; ".join(f"{CAUSE_WORDS[a['cause']]} {a['detail']}" for a in close)
                     + ".")
-    detail = transform_name(spec.lam) if h.cause == "response_transform" else _detail_json(data, h)
+    detail = transform_name(spec.lam) if h.cause == "response_transform" else detail_json(data, h)
     public_info = {k: v for k, v in info.items() if k in ("lambda_hat", "lambda_ci", "sd_ratio",
                                                           "drift_per_run", "step_size", "runs_before",
                                                           "observed", "predicted_without",
@@ -663,56 +366,6 @@ def _gain(table: pd.DataFrame, factors: list[str], response: str, data: Data, fi
     return baseline, extended, gain
 
 
-def _choices(rnd) -> dict[str, int]:
-    """How many places each cause of a round chose its best from: runs for an outlier, change-points for a
-    step, alias classes for a missing term, covariates for unequal scatter, candidate slips for a factor
-    level (1 for drift and a transform, which choose nothing).  Comparing causes, each pays log of it in
-    log-likelihood (a Bonferroni price, as the step's test and step_price): an outlier picked as the worst
-    of 13 runs is not preferred to a step picked among 9 change-points for the picking alone."""
-    out: dict[str, int] = {}
-    for h in rnd.hypotheses:
-        if h.cause in ("missing_term", "heteroscedasticity"):
-            out[h.cause] = out.get(h.cause, 0) + 1
-    out["outlier"] = int(np.sum(rnd.model.hat < LEVERAGE_UNPREDICTABLE))
-    step = [h for h in rnd.hypotheses if h.cause == "step"]
-    if step:
-        out["step"] = int(step[0].info.get("change_points", 1))
-    out["factor_level"] = max(len(slip_candidates(rnd.data, rnd.model)), 1)
-    return out
-
-
-def step_price(h: Hypothesis) -> float:
-    """Log-likelihood a step pays for its change-point, chosen as the best of C positions: log C, the
-    Bonferroni price its test pays too (a linear drift is then not read as a step at a dozen runs; in
-    tests/criticism/test_criticism.py a 14-SD drift over 13 runs fits a step at run 9 better by 1.9).  0 for other
-    causes."""
-    return math.log(h.info.get("change_points", 1)) if h.cause == "step" else 0.0
-
-
-def _step_size(model: Model) -> float:
-    """The shift of the runs after the step against those before (response units, or the transform's)."""
-    return float(model.beta[model.names.index("step")])
-
-
-def _drift_per_run(model: Model) -> float:
-    j = model.names.index("run")
-    return float(model.beta[j] / model.run_scale)
-
-
-def _detail_json(data: Data, h: Hypothesis):
-    if h.cause == "missing_term":
-        return h.aliases[0]
-    if h.cause == "factor_level":
-        return run_label(data.runs[h.detail.row])
-    if h.cause == "lack_of_fit":
-        return ""
-    if h.cause in ("outlier", "step"):
-        return run_label(data.runs[int(h.detail)])
-    if h.cause == "response_transform":
-        return "boxcox"
-    return h.detail
-
-
 def _alias_sets(data: Data, rnd: Round) -> list[AliasSet]:
     out = []
     for c in rnd.classes:
@@ -723,12 +376,6 @@ def _alias_sets(data: Data, rnd: Round) -> list[AliasSet]:
             runs = tuple(data.point_dict(p) for p in pts)
         out.append(AliasSet(names[0], names, c.direction is not None, runs))
     return out
-
-
-def _catalogue_entry(data: Data, h: Hypothesis) -> dict:
-    detail = _detail_json(data, h)
-    return {"cause": h.cause, "detail": detail, "aliases": list(h.aliases),
-            "statistic": json_number(h.statistic), "p_nominal": json_number(np.exp(h.logp)), "p_family": json_number(h.p_family)}
 
 
 def _summary(data: Data, findings: list[Finding], catalogue: list[dict], family_alpha: float,

@@ -53,7 +53,7 @@ def corner_only_runs(data: Data, term) -> int:
     two-factor interactions and that product span all 8 patterns: any difference between the corners the
     quadratic cannot follow, e.g. a change of regime where several factors are high, looks exactly like the
     product on these runs.  (With more factors other products share the corners, and the claim would not
-    hold.)  Such a term is therefore never named (level1._not_singled_out): in benchmarks/honest_causes.py a
+    hold.)  Such a term is therefore never named (naming.why_not_singled_out): in benchmarks/honest_causes.py a
     corner step on a 3-factor CCD was called "missing term x1:x2:x3" in 15 of 20 tables; the rule lowers
     confidently wrong causes on off-catalogue defects from 0.171 to 0.131 (lenient: 0.129 to 0.090) and
     catalogue naming from 0.587 to 0.579 (planted x1:x2:x3 terms are reported unexplained instead)."""
@@ -103,12 +103,14 @@ def finding_message(data: Data, h: Hypothesis, info: dict, before: float, after:
         run = run_label(data.runs[h.detail.row])
         f = info["factor"]
         return (f"{r}: run {run} fits {f} = {short_number(info['fitting_value'])} instead of the recorded "
-                f"{short_number(info['recorded_value'])} ({info['slip'].replace('x1e', 'x 10^')}: a unit or decimal slip in the "
+                f"{short_number(info['recorded_value'])} ({info['slip'].replace('x1e', 'x 10^')}: a unit or decimal "
+                f"slip in the "
                 f"simulation input?): observed {short_number(info['observed'])}, the other runs predict it within "
                 f"{abs(info['t_moved']):.1f} standard errors at {f} = {short_number(info['fitting_value'])} and "
                 f"{abs(info['t_recorded']):.1f} at the recorded value (Bayes factor {info['bayes_factor']:.1f} "
                 f"against a shift of that run alone). Check the input of that run: no further run tells a slip from "
-                f"another error of that run alone (a new run at the recorded value or at {short_number(info['fitting_value'])} "
+                f"another error of that run alone (a new run at the recorded value or at "
+                f"{short_number(info['fitting_value'])} "
                 f"follows the surface either way), its input does; using "
                 f"{f} = {short_number(info['fitting_value'])} for it {gain}.")
     if h.cause == "drift":
@@ -167,5 +169,6 @@ def level2_miss_text(errors: dict[str, float], tolerance: float, tolerances: dic
     if same_tolerances(tolerance, own):
         return f"by {'at most ' if at_most else ''}{percent_text(max(abs(e) for e in errors.values()))}"
     worst = max(errors, key=lambda o: abs(errors[o]) / own[o])
-    return (f"{worst} by {percent_text(abs(errors[worst]))} ({_times(abs(errors[worst]) / own[worst])} times its tolerance "
+    return (f"{worst} by {percent_text(abs(errors[worst]))} ({_times(abs(errors[worst]) / own[worst])} times its "
+            f"tolerance "
             f"of {percent_text(own[worst])})")

@@ -39,7 +39,7 @@ NAMING_VERDICTS = ("defect", "does_not_predict")
 RESIDUAL_MISFIT_LEVEL = 0.2
 
 #: A slipped factor value is named only when the run's response is at least this many times more probable
-#: under the slips than under a mean shift of unknown size (Bayes factor, see catalogue._slip_fit): with
+#: under the slips than under a mean shift of unknown size (Bayes factor, see slips.slip_fit): with
 #: equal prior odds, the more probable explanation of the run is named and the other listed with it.
 SLIP_BAYES_FACTOR = 1.0
 
@@ -294,7 +294,8 @@ def exact_fit_message(response: str, fit: SurrogateFit) -> str:
 
     y = np.asarray(fit.y, dtype=float)
     if np.ptp(y) <= round_off_floor(y):
-        return (f"{response}: the same value ({short_number(float(y[0]))}) in every run — within the design's range no factor "
+        return (f"{response}: the same value ({short_number(float(y[0]))}) in every run — within the design's range "
+                f"no factor "
                 "moves it, so it cannot identify any of them, and there is no scatter to criticise.")
     if round_off_only(fit.results.resid, y, fit.factor_round_off):
         return (f"{response}: the quadratic goes through every run to round-off or to the precision the values "
@@ -312,7 +313,8 @@ def unpredictable_runs_message(fit: SurrogateFit) -> str:
     which = f"Run {runs[0]} alone fixes" if len(runs) == 1 else f"Runs {', '.join(map(str, runs))} alone fix"
     return (f" {which} the quadratic at {'its point' if len(runs) == 1 else 'their points'} (leverage "
             f"{float(np.max(fit.hat_diag[fit.fitted_exactly])):.6g}; a lone centre run does): the fit is not checked "
-            f"there and Q² is undefined; a replicate of {'that run' if len(runs) == 1 else 'those runs'} would check it.")
+            f"there and Q² is undefined; a replicate of {'that run' if len(runs) == 1 else 'those runs'} would check "
+            f"it.")
 
 
 def runs_for_next_wave(runs, candidates, verdict: str) -> bool:
@@ -356,7 +358,8 @@ def _verdict(data: Data, fit: SurrogateFit, findings: list, unexplained: dict | 
                f" Criticism: {'; '.join(f'{f.cause} ({f.detail})' for f in findings) or 'misfit unexplained'}.")
         detail["message"] = (f"{r}: does not predict — the quadratic predicts left-out runs worse than their mean "
                              f"(Q² = {st.q2:.2f}; leave-one-out error {plain_number(loo)} against a residual RMSE of "
-                             f"{plain_number(st.rmse)}). Do not use this surrogate to decide admissibility; scenarios that "
+                             f"{plain_number(st.rmse)}). Do not use this surrogate to decide admissibility; scenarios "
+                             f"that "
                              f"use {r} inherit its error.{why}")
         return "does_not_predict", detail
     if findings:

@@ -144,8 +144,7 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     model units), as in :func:`~demid.surrogate.fit_response`.  Returns a
     :class:`TranscriptionResult`; raises :class:`InputError` for unusable input.
     """
-    # Over 80 lines only by its docstring: the body (about 60 lines) is the verdict's outline;
-    # reading cells, building hypotheses and ranking repairs are the helpers below.
+    # The verdict's outline: reading cells, building hypotheses and ranking repairs are the helpers.
     source = source or f"published statistics for '{response}'"
     factors = list(factors)
     missing = [c for c in [*factors, response] if c not in table.columns]
@@ -166,8 +165,7 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     agrees = {name: bool(base_agrees[name][0]) for name in targets}
     published_values = {name: t.value for name, t in targets.items()}
     printed_text = {name: t.text for name, t in targets.items()}
-    n_pub = len(targets)
-    n_agree = sum(agrees.values())
+    n_pub, n_agree = len(targets), sum(agrees.values())
 
     def result(consistent, suspects, explained, message, n_candidates=0):
         return TranscriptionResult(response, consistent, published_values, reproduced, agrees, suspects,
@@ -192,16 +190,27 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
 
     # A slip in one printed statistic is considered only when no slip in the table explains everything.
     slip = _printed_slip(targets, reproduced, agrees)
+    slip_result = None
     if slip is not None:
         slip_result = replace(result(False, [], False, _printed_slip_message(response, slip, n_pub, n_agree),
                                      len(records)), printed_slip=slip)
     if not records:
-        return slip_result if slip is not None else result(
+        return slip_result if slip_result is not None else result(
             False, [], False, _unexplained_message(response, targets, reproduced, agrees, 0, 0), 0)
+    return _located(response, table, targets, reproduced, agrees, records, blocks, max_suspects, slip_result,
+                    result)
+
+
+def _located(response: str, table: pd.DataFrame, targets: dict, reproduced: dict, agrees: dict, records: list,
+             blocks: list, max_suspects: int, slip_result, result) -> TranscriptionResult:
+    """The cells whose repair restores the published statistics, best first (every one when some restore them
+    all; else up to five partial leads), or ``slip_result`` (a slip in one printed statistic) when no repair
+    restores them all; ``result`` builds the :class:`TranscriptionResult`."""
+    n_pub, n_agree = len(targets), sum(agrees.values())
     restores, restores_exact, misfit, order = _rank_repairs(records, blocks, targets, table.columns)
     full = order[restores[order] == n_pub]
     explained = bool(full.size)
-    if not explained and slip is not None:
+    if not explained and slip_result is not None:
         return slip_result
     # A partial lead must restore a printed value, not only a bound ("p < 0.0001" holds for any repair
     # that wrecks the fit).

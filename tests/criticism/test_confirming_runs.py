@@ -1,5 +1,5 @@
 """Every named cause comes with runs that would confirm it, and one run's two readings (an outlier, a slipped
-factor value) are reported together: criticism.level1.confirming_rivals, verdict.other_reading_of_the_run."""
+factor value) are reported together: criticism.naming.confirming_rivals, verdict.other_reading_of_the_run."""
 
 from __future__ import annotations
 
@@ -8,8 +8,9 @@ import pandas as pd
 import pytest
 
 from demid.criticism import criticize, discrimination
-from demid.criticism.catalogue import SlipCandidate, Hypothesis
-from demid.criticism.level1 import confirming_rivals
+from demid.criticism.catalogue import Hypothesis
+from demid.criticism.slips import SlipCandidate
+from demid.criticism.naming import confirming_rivals
 from demid.criticism.verdict import NAMING_VERDICTS, ONE_RUN_READINGS_BAYES_FACTOR, other_reading_of_the_run
 from demid.design import model_matrix, parse_term
 from tests.generators import FACTORS, ccd_table, design, later_runs

@@ -164,7 +164,7 @@ def test_separating_runs_match_a_scan_of_every_candidate(case):
 def test_slip_ratios_match_a_refit_without_each_run(seed, k, drift):
     """The factor-level statistic from the leave-one-out identities equals refitting without each run
     (pseudo-inverse of the other runs' cross-products), for the observed and bootstrap columns."""
-    from demid.criticism.catalogue import moved_rows, slip_ratios, slip_candidates
+    from demid.criticism.slips import moved_rows, slip_candidates, slip_ratios
     from demid.criticism.level1 import prepare_data
     from demid.criticism.models import Model, ModelForm
     from demid.design import LEVERAGE_UNPREDICTABLE

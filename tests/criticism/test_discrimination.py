@@ -72,7 +72,8 @@ def test_a_drift_goes_on_in_the_predictions_of_later_runs_a_step_does_not():
     centre = np.zeros((1, 2))
     drift, step = Model(data, ModelForm(drift=True)), Model(data, ModelForm(step=6))
     per_run = drift.beta[drift.names.index("run")] / drift.run_scale
-    assert new_run_prediction(drift, centre, 4)[0][0] - new_run_prediction(drift, centre, 1)[0][0] == pytest.approx(3 * per_run)
+    later = new_run_prediction(drift, centre, 4)[0][0] - new_run_prediction(drift, centre, 1)[0][0]
+    assert later == pytest.approx(3 * per_run)
     assert new_run_prediction(step, centre, 4)[0][0] == pytest.approx(new_run_prediction(step, centre, 1)[0][0])
 
 

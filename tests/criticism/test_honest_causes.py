@@ -83,7 +83,7 @@ def test_misfit_flagged_at_least_as_often_as_by_lack_of_fit(k, kind, size):
 def test_slip_candidates_are_decimal_slips_of_the_recorded_value():
     """Every candidate moves one factor of one run to 10^k times its recorded value (log-scaled factors:
     log10 shifted by k), k = +-1, +-2, +-3; a zero value has no slip."""
-    from demid.criticism.catalogue import slip_candidates
+    from demid.criticism.slips import slip_candidates
     from demid.criticism.level1 import prepare_data
     from demid.criticism.models import Model, ModelForm
 

@@ -10,7 +10,8 @@ import statsmodels.api as sm
 
 from demid.criticism import criticize, discrimination
 from demid.criticism.catalogue import Hypothesis
-from demid.criticism.level1 import extend_for, prepare_data
+from demid.criticism.extensions import extend_for
+from demid.criticism.level1 import prepare_data
 from demid.criticism.models import Model, ModelForm
 from demid.design import model_matrix, quadratic_terms
 from tests.generators import FACTORS, ccd_table, design
