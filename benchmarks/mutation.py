@@ -156,7 +156,7 @@ TABLE: dict[str, dict] = {
                   "tests/test_core_contracts.py"],
     },
     "demid/sampling/polish.py": {
-        "functions": ["_start_points", "_polish", "polish_spans"],
+        "functions": ["start_points", "_polish", "polish_spans"],
         "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/test_core_contracts.py"],
     },
     "demid/surrogate.py": {
@@ -184,7 +184,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/transcription/printed.py": {
         "functions": ["PrintedValue.half_width", "PrintedValue.agrees", "PrintedValue.misfit", "_decimals_of",
-                      "parse_printed", "_positional", "_printed_column", "_precision", "_irregularity"],
+                      "parse_printed", "positional", "_printed_column", "_precision", "_irregularity"],
         "tests": ["tests/transcription/test_transcription.py", "tests/test_statistics_known_answers.py",
                   "tests/transcription/test_transcription_printed_inputs.py", "tests/test_core_contracts.py"],
     },
@@ -267,7 +267,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/report/test_paper.py"],
     },
     "demid/transcription/engine.py": {
-        "functions": ["_statistics", "_lack_of_fit_p"],
+        "functions": ["_statistics", "lack_of_fit_p"],
         "tests": ["tests/transcription/test_transcription.py", "tests/test_core_contracts.py"],
     },
     "demid/data.py": {
@@ -503,8 +503,8 @@ EQUIVALENT: dict[str, str] = {
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
         "groups); each group mean is then the run's own value (a product with a 0/1 matrix, exact), so "
         "ss_pe == 0 exactly and 'ss_pe > 0' already gives NaN",
-    "demid/transcription/printed.py::_positional::'e' in text or 'E' in text => 'e' in text#0":
-        "text is repr(float), which writes an exponent with a lower-case 'e' only (and _positional is only "
+    "demid/transcription/printed.py::positional::'e' in text or 'E' in text => 'e' in text#0":
+        "text is repr(float), which writes an exponent with a lower-case 'e' only (and positional is only "
         "called with finite values)",
     "demid/transcription/engine.py::_statistics::n = np.broadcast_to(n, sse.shape) => pass#0":
         "numpy broadcasts the scalar n in every later expression: the same arrays result",
@@ -633,9 +633,9 @@ SETTINGS: dict[str, str] = {
         "resolution of the grid the reachability search starts from (four factors and more)",
     "demid/uncertainty/ranking.py::_met_together::np.argsort(worst, kind='stable') => np.argsort(worst)#0":
         "which of equally good grid nodes start the searches (numpy's default sort is deterministic too)",
-    "demid/sampling/polish.py::_start_points::1.0 / d => 1.0#1":
+    "demid/sampling/polish.py::start_points::1.0 / d => 1.0#1":
         "the cap on the grid the polishing starts from when no node is admissible (its resolution)",
-    "demid/sampling/polish.py::_start_points::min(n, int(1000000.0 ** (1.0 / d))) => "
+    "demid/sampling/polish.py::start_points::min(n, int(1000000.0 ** (1.0 / d))) => "
     "max(n, int(1000000.0 ** (1.0 / d)))#0":
         "the resolution of the grid the polishing starts from when no node is admissible",
     "demid/uncertainty/sweep.py::tolerance_sweep::2 ** 14 => 2 * 14#0":

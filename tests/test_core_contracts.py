@@ -238,13 +238,13 @@ def test_polished_spans_in_a_box_that_is_not_the_unit_square():
 
 
 def test_polishing_starts_from_the_admissible_nodes():
-    from demid.sampling.polish import _start_points
-    from demid.sampling.residuals import _residual_evaluator
+    from demid.sampling.polish import start_points
+    from demid.sampling.residuals import residual_evaluator
 
     dom = Domain(("a", "b"), (0.0, -1.0), (2.0, 3.0))
     sur = {"y": _ring([0.9, 1.2])}
     aset = admissible_set(sur, dom, ["y"], {"y": 0.25}, 0.05, 21)
-    starts = _start_points(_residual_evaluator(sur, ("y",), {"y": 0.25}), dom, aset)
+    starts = start_points(residual_evaluator(sur, ("y",), {"y": 0.25}), dom, aset)
     nodes = dom.grid(21)[aset.mask]
     assert len(starts) == aset.n_admissible_nodes > 0
     # one array, not a list of tuples: pytest.approx compares no nested sequences (an error from pytest 9.2)
@@ -558,11 +558,11 @@ def test_aicc_is_undefined_without_spare_degrees_of_freedom():
 
 def test_small_and_large_values_are_written_positionally():
     """Slip generation works on the printed digits, so exponents must never reach it."""
-    from demid.transcription.printed import _positional
+    from demid.transcription.printed import positional
 
-    assert _positional(1e-05) == "0.00001"
-    assert _positional(2.5e16) == "25000000000000000"
-    assert _positional(33.49) == "33.49"
+    assert positional(1e-05) == "0.00001"
+    assert positional(2.5e16) == "25000000000000000"
+    assert positional(33.49) == "33.49"
 
 
 def test_sobol_fraction_of_two_slabs_in_a_scaled_box():

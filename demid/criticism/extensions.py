@@ -109,11 +109,13 @@ def step_size(model: Model) -> float:
 
 
 def drift_per_run(model: Model) -> float:
+    """The fitted drift of a model with a run-order term, per run (response units, or the transform's)."""
     j = model.names.index("run")
     return float(model.beta[j] / model.run_scale)
 
 
 def detail_json(data: Data, h: Hypothesis):
+    """What a cause concerns as the findings write it: the term, the run, the covariate, "boxcox" or ""."""
     if h.cause == "missing_term":
         return h.aliases[0]
     if h.cause == "factor_level":
@@ -128,6 +130,7 @@ def detail_json(data: Data, h: Hypothesis):
 
 
 def catalogue_entry(data: Data, h: Hypothesis) -> dict:
+    """A tested cause as a row of the catalogue table: its detail, aliases, statistic and p-values."""
     detail = detail_json(data, h)
     return {"cause": h.cause, "detail": detail, "aliases": list(h.aliases),
             "statistic": json_number(h.statistic), "p_nominal": json_number(np.exp(h.logp)),

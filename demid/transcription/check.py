@@ -13,8 +13,8 @@ import pandas as pd
 from ..design import Coding, quadratic_terms
 from ..errors import InputError
 from ..io import CSV_SIGNIFICANT_DIGITS
-from .engine import (_ALPHA_SLACK, _DesignFit, _coded_to_actual_matrix, _design_levels, _evaluate_designs,
-                     _lack_of_fit_p, _levels_for_cell, _numeric, _runs)
+from .engine import (_ALPHA_SLACK, DesignFit, _coded_to_actual_matrix, _design_levels, evaluate_designs,
+                     lack_of_fit_p, _levels_for_cell, _numeric, _runs)
 from .printed import (_agreement, _cell_texts, _format, _irregularity, _jsonable, _parse_published,
                       _precision_elsewhere, parse_printed)
 from .typos import _KIND_RANK, KINDS, SLIP_WORDS, single_cell_slips
@@ -158,8 +158,8 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     y = y_all[fit_rows]
 
     table_coding = coding if coding is not None else Coding.from_levels(factors, z, alpha)
-    table_design = _DesignFit(table_coding.to_coded(z[fit_rows]), terms, table_coding, need_actual)
-    base = _lack_of_fit_p(table_design.evaluate(y[:, None], coef_index))
+    table_design = DesignFit(table_coding.to_coded(z[fit_rows]), terms, table_coding, need_actual)
+    base = lack_of_fit_p(table_design.evaluate(y[:, None], coef_index))
     reproduced = {name: float(base[name][0]) for name in targets}
     base_agrees, via_inputs = _agreement(targets, base)
     agrees = {name: bool(base_agrees[name][0]) for name in targets}
@@ -186,7 +186,7 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
                                                     coding, log_factors, records)
     if repaired:
         to_actual = [_coded_to_actual_matrix(c, terms) for c in repaired_codings] if need_actual else None
-        blocks.append(_evaluate_designs(np.stack(repaired), y, terms, to_actual, coef_index))
+        blocks.append(evaluate_designs(np.stack(repaired), y, terms, to_actual, coef_index))
 
     # A slip in one printed statistic is considered only when no slip in the table explains everything.
     slip = _printed_slip(targets, reproduced, agrees)
@@ -247,7 +247,7 @@ def _read_cells(table: pd.DataFrame, factors: list[str], response: str, log_fact
 
 
 def _response_hypotheses(texts: list, response: str, y_all: np.ndarray, fit_rows: np.ndarray,
-                         table_design: _DesignFit, coef_index: dict, records: list, blocks: list) -> None:
+                         table_design: DesignFit, coef_index: dict, records: list, blocks: list) -> None:
     """Response cells: one column of Y per hypothesis, all evaluated at once (appends to records, blocks)."""
     y = y_all[fit_rows]
     precision = _precision_elsewhere(texts)
@@ -335,7 +335,7 @@ def _cell_repairs(text: str, z: np.ndarray, row: int, j: int, nominal: np.ndarra
 def _rank_repairs(records: list[tuple], blocks: list[dict], targets: dict, columns) -> tuple:
     """Statistics restored and summed misfit per repair, and the ranking order (see the package docstring)."""
     column_order = {name: i for i, name in enumerate(columns)}
-    values = _lack_of_fit_p({key: np.concatenate([np.atleast_1d(b[key]) for b in blocks]) for key in blocks[0]})
+    values = lack_of_fit_p({key: np.concatenate([np.atleast_1d(b[key]) for b in blocks]) for key in blocks[0]})
     restores = np.zeros(len(records), dtype=int)
     restores_exact = np.zeros(len(records), dtype=int)
     misfit = np.zeros(len(records))
