@@ -16,8 +16,8 @@ from scipy import stats
 
 from ..blocks import pure_error_groups
 from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, term_name
+from ..fit_statistics import pure_error_ss
 from ..precision import round_off_floor, round_off_only
-from ..surrogate import pure_error_ss
 from .aliasing import term_classes
 from .models import orthonormal_basis, residualize
 from .slips import slip_candidates, slip_fit, slip_ratios
