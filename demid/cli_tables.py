@@ -36,7 +36,7 @@ def _unlisted_factor_warnings(path: str, table, factors: list[str], responses: l
     listed factors: those runs are fitted as replicates, and lack of fit is judged against its effect."""
     import numpy as np
 
-    from .data import parse_number, read_raw
+    from .csv_cells import parse_number, read_raw
 
     header, rows, _ = read_raw(path)
     known = {"run", "status", "block", *factors, *responses}
