@@ -3,8 +3,13 @@
 
 import sys
 
+from snakemake.utils import min_version
+
 from demid.config_text import refuse_unsafe_config_files
 from demid.errors import InputError
+
+# The Snakemake features the rules use (requirements.in pins the same).
+min_version("8.20")
 
 # Each config file read as plain data first: a templated one (YTE) would run code while `configfile:` loads it.
 try:

@@ -54,10 +54,16 @@ def _timed(cmd: list[str], cwd: Path, env: dict, cpu: list | None = None) -> flo
     return time.perf_counter() - start
 
 
+def _benchmark_files(clone: Path) -> list[Path]:
+    """The rules' benchmark files: under results/benchmarks, or under benchmarks/ in a revision from
+    before they moved beside the results."""
+    return sorted([*(clone / "results" / "benchmarks").glob("*/*.tsv"), *(clone / "benchmarks").glob("*/*.tsv")])
+
+
 def _rule_times(clone: Path) -> dict[str, tuple[float, float]]:
     """(wall s, cpu s) per benchmark file of the last run, named by rule folder and file."""
     out = {}
-    for tsv in sorted((clone / "benchmarks").glob("*/*.tsv")):
+    for tsv in _benchmark_files(clone):
         header, *rows = tsv.read_text().splitlines()
         last = dict(zip(header.split("\t"), rows[-1].split("\t")))
         out[f"{tsv.parent.name}/{tsv.stem}"] = (float(last["s"]), float(last["cpu_time"]))
@@ -73,7 +79,7 @@ def measure(rev: str, runs: int) -> dict:
         walls, cpus, per_rule = [], [], []
         for _ in range(runs):
             subprocess.run(["rm", "-rf", "results", ".snakemake"], cwd=clone, check=True)
-            for tsv in (clone / "benchmarks").glob("*/*.tsv"):
+            for tsv in _benchmark_files(clone):
                 tsv.unlink()
             walls.append(_timed(["snakemake", "-c2", "-q"], clone, env, cpus))
             per_rule.append(_rule_times(clone))

@@ -127,7 +127,7 @@ maximin: a table with steps at runs 10, 11 and 12 stays ambiguous).  A drift aga
 later (a drift goes on): the proposed runs are predicted at run numbers after the table's.  Tried and not kept:
 the nearest unequal-scatter reading added to a named cause's confirming rivals (beside the nearest kind): on the
 unequal-scatter tables of seeds 0-19 (n_null 199) 4 of 7 named after the runs either way -- there the scatter
-reading lies 12-34 behind the named cause in AICc (its variance trend bounded, catalogue._GAMMA_BOUND), and the
+reading lies 12-34 behind the named cause in AICc (its variance trend bounded, catalogue.GAMMA_BOUND), and the
 runs that separate it from the named cause do not overturn that.
 
 What is left (seeds 0-19, 5 of 30): three unequal-scatter tables whose scatter reading is 12-34 behind a cubic term
@@ -138,7 +138,7 @@ runs), two steps (one still level with drift after four runs, one ambiguous firs
 
 Why the unequal-scatter reading trails (diagnosis only, nothing changed).  Its AICc is already a joint fit: for
 each variance trend the mean is refitted by weighted least squares and the trend is the profile-likelihood
-maximum (level1._apply), and the scatter may follow each factor or the fitted value (catalogue.covariates), the
+maximum (extensions.extend_for), and the scatter may follow each factor or the fitted value (catalogue.covariates), the
 generator's own form (log-linear in one factor, sd ratio 30, gamma = ln 30 = 3.4).  Measured on the first-round
 candidates of seeds 0-19, 2 and 3 factors, 40 tables of each kind (the planted factor's reading on unequal-scatter
 tables, the best covariate's elsewhere; "leads" = its AICc, with its price, below every other cause's):

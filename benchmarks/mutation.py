@@ -172,7 +172,7 @@ TABLE: dict[str, dict] = {
                   "tests/test_core_contracts.py"],
     },
     "demid/sampling/polish.py": {
-        "functions": ["_start_points", "_polish", "polish_spans"],
+        "functions": ["start_points", "_polish", "polish_spans"],
         "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/test_core_contracts.py"],
     },
     "demid/surrogate.py": {
@@ -184,7 +184,8 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/test_surrogate.py", "tests/inputs/test_factor_round_off.py", "tests/criticism/test_noise_free.py"],
     },
     "demid/criticism/models.py": {
-        "functions": ["infer_axial_distance", "_orth", "_residualize", "_hat", "_boxcox", "_inv_boxcox", "_aicc"],
+        "functions": ["infer_axial_distance", "orthonormal_basis", "residualize", "leverages", "boxcox", "inv_boxcox",
+                      "aicc_of"],
         "tests": ["tests/test_statistics_known_answers.py", "tests/criticism/test_criticism.py", "tests/test_core_contracts.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },
@@ -199,7 +200,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/transcription/printed.py": {
         "functions": ["PrintedValue.half_width", "PrintedValue.agrees", "PrintedValue.misfit", "_decimals_of",
-                      "parse_printed", "_positional", "_printed_column", "_precision", "_irregularity"],
+                      "parse_printed", "positional", "_printed_column", "_precision", "_irregularity"],
         "tests": ["tests/transcription/test_transcription.py", "tests/test_statistics_known_answers.py",
                   "tests/transcription/test_transcription_printed_inputs.py", "tests/test_core_contracts.py"],
     },
@@ -284,7 +285,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/report/test_paper.py"],
     },
     "demid/transcription/engine.py": {
-        "functions": ["_statistics", "_lack_of_fit_p"],
+        "functions": ["_statistics", "lack_of_fit_p"],
         "tests": ["tests/transcription/test_transcription.py", "tests/test_core_contracts.py"],
     },
     "demid/data.py": {
@@ -469,9 +470,9 @@ EQUIVALENT: dict[str, str] = {
     "a[np.argmax(np.abs(normal))]#0": _NUMPY_FLOAT + " (lead only divides and is formatted)",
     "demid/combinations/material.py::_cut_side::proj.min() <= box_min + tol => proj.min() < box_min + tol#0":
         "differs only for a projection equal to the box's end plus the touch tolerance to the last bit",
-    "demid/criticism/level1.py::_apply::0 => -1#4":
+    "demid/criticism/level1.py::extend_for::0 => -1#4":
         "data.to_actual of a single coded row returns one row: its first and last rows are the same",
-    "demid/criticism/level1.py::_apply::int(np.argmax(prof)) => np.argmax(prof)#0":
+    "demid/criticism/level1.py::extend_for::int(np.argmax(prof)) => np.argmax(prof)#0":
         "best only indexes the lambda grid: a numpy integer indexes the same element",
     # --- tolerance
     "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
@@ -511,24 +512,24 @@ EQUIVALENT: dict[str, str] = {
     "demid/surrogate.py::surrogates_to_frame::True => False#0":
         "the frame's index is never used: it is written by write_parquet, which drops it, and read by groupby",
     # --- criticism
-    "demid/criticism/models.py::_inv_boxcox::700 => 699#0": "overflow clip of exp(): differs only beyond e^699",
-    "demid/criticism/models.py::_inv_boxcox::700 => 699#1": "overflow clip of exp(): differs only beyond e^699",
-    "demid/criticism/models.py::_inv_boxcox::700 => 701#0": "overflow clip of exp(): differs only beyond e^700",
-    "demid/criticism/models.py::_inv_boxcox::700 => 701#1": "overflow clip of exp(): differs only beyond e^700",
+    "demid/criticism/models.py::inv_boxcox::700 => 699#0": "overflow clip of exp(): differs only beyond e^699",
+    "demid/criticism/models.py::inv_boxcox::700 => 699#1": "overflow clip of exp(): differs only beyond e^699",
+    "demid/criticism/models.py::inv_boxcox::700 => 701#0": "overflow clip of exp(): differs only beyond e^700",
+    "demid/criticism/models.py::inv_boxcox::700 => 701#1": "overflow clip of exp(): differs only beyond e^700",
     "demid/criticism/models.py::infer_axial_distance::float(np.max(col)) => np.max(col)#0":
         _NUMPY_FLOAT + " (col is a float array; hi is only compared and used in arithmetic)",
     "demid/criticism/level1.py::_choices::1 => 2#0":
-        "the default is never read: every step hypothesis carries its change_points (catalogue._Round._step)",
+        "the default is never read: every step hypothesis carries its change_points (catalogue.Round._step)",
     "demid/criticism/models.py::infer_axial_distance::1 - 1e-06 => 1#0":
         "differs only for inner levels within 1e-6 of the ends (a face-centred design): alpha = 1 / |inner| is 1 "
         "to six digits either way",
-    "demid/criticism/models.py::_aicc::float('nan') => 'nan'#0":
-        "the value is only read through _num(), which turns 'nan' and nan alike into None",
-    "demid/criticism/catalogue.py::_het_lr::np.sum(r * r, axis=0) / n => np.sum(r * r, axis=0)#0":
+    "demid/criticism/models.py::aicc_of::float('nan') => 'nan'#0":
+        "the value is only read through json_number(), which turns 'nan' and nan alike into None",
+    "demid/criticism/catalogue.py::heteroscedasticity_lr::np.sum(r * r, axis=0) / n => np.sum(r * r, axis=0)#0":
         "shifts every profile log-likelihood by the same 0.5 n log n; the statistic is a difference of two",
     "demid/criticism/verdict.py::power_caveat::np.isfinite(size) and abs(size) >= 10000.0 => "
     "abs(size) >= 10000.0#0":
-        "differs only for an infinite size, where _plain falls back to _g as well: both print 'inf'",
+        "differs only for an infinite size, where plain_number falls back to short_number as well: both print 'inf'",
     "demid/criticism/run_order.py::_follows_response::0 => -1#0":
         "a constant response has no rank correlation: scipy's Spearman rho is NaN, which fails the threshold, "
         "so the response is skipped either way",
@@ -537,8 +538,8 @@ EQUIVALENT: dict[str, str] = {
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
         "groups); each group mean is then the run's own value (a product with a 0/1 matrix, exact), so "
         "ss_pe == 0 exactly and 'ss_pe > 0' already gives NaN",
-    "demid/transcription/printed.py::_positional::'e' in text or 'E' in text => 'e' in text#0":
-        "text is repr(float), which writes an exponent with a lower-case 'e' only (and _positional is only "
+    "demid/transcription/printed.py::positional::'e' in text or 'E' in text => 'e' in text#0":
+        "text is repr(float), which writes an exponent with a lower-case 'e' only (and positional is only "
         "called with finite values)",
     "demid/transcription/engine.py::_statistics::n = np.broadcast_to(n, sse.shape) => pass#0":
         "numpy broadcasts the scalar n in every later expression: the same arrays result",
@@ -576,7 +577,7 @@ EQUIVALENT: dict[str, str] = {
     # --- level 2, evaluated sets, next wave, catalogue
     "demid/criticism/level2.py::calibration_check::float(np.max(problem.weights * np.abs(problem.errors(best_s)"
     "[:, 0]))) => np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0]))#1":
-        _NUMPY_FLOAT + " (best_val is only compared, passed through float() and _num)",
+        _NUMPY_FLOAT + " (best_val is only compared, passed through float() and json_number)",
     "demid/next_wave.py::_full_rank::1e-08 * max(np.abs(m).max(), 1.0) * len(m) => 1e-08 * max(np.abs(m).max(), "
     "1.0)#0":
         "the rank tolerance of a quadratic model matrix of grid points: its singular values are either of the order "
@@ -584,9 +585,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/next_wave.py::plan_next_wave::hi - lo => hi + lo#1":
         "a round-off guard: differs only for an earlier run beyond the box's upper end by between 1e-12 (hi - lo) "
         "and 1e-12 (hi + lo)",
-    "demid/criticism/catalogue.py::_Round._missing_terms::0 => -1#0":
+    "demid/criticism/catalogue.py::Round._missing_terms::0 => -1#0":
         "e_obs is the one column resid_w[:, None]: its statistics have one column, [0] and [-1] are the same",
-    "demid/criticism/catalogue.py::_Round._drift::float(_f_logp(f_obs, df - 1)) => _f_logp(f_obs, df - 1)#0":
+    "demid/criticism/catalogue.py::Round._drift::float(f_logp(f_obs, df - 1)) => f_logp(f_obs, df - 1)#0":
         _NUMPY_FLOAT + " (logp enters comparisons, sums and np.exp only)",
     # --- posteriors, Pareto fronts, robust sets, surrogate
     "demid/uncertainty/posterior.py::_quantiles::int(np.clip(np.searchsorted(cdf / cdf[-1], q), 1, len(axis) - 1)) "
@@ -616,7 +617,7 @@ EQUIVALENT: dict[str, str] = {
     "anchor not in out#0":
         "without a named cause the anchor is the first ranked entry, always kept: the first of its kind, "
         "and it is the anchor",
-    "demid/criticism/discrimination.py::_joint_separation::0 => 1#0":
+    "demid/criticism/discrimination.py::joint_separation::0 => 1#0":
         "parts_a[1] is the Jacobian at the points: it has as many rows as parts_a[0] has points",
     "demid/tolerance.py::relative_tolerances::float(tolerance) => tolerance#0":
         "a scenario's tolerance lies strictly between 0 and 1 (the schema), so it is already a float, and so is "
@@ -667,9 +668,9 @@ SETTINGS: dict[str, str] = {
         "resolution of the grid the reachability search starts from (four factors and more)",
     "demid/uncertainty/ranking.py::_met_together::np.argsort(worst, kind='stable') => np.argsort(worst)#0":
         "which of equally good grid nodes start the searches (numpy's default sort is deterministic too)",
-    "demid/sampling/polish.py::_start_points::1.0 / d => 1.0#1":
+    "demid/sampling/polish.py::start_points::1.0 / d => 1.0#1":
         "the cap on the grid the polishing starts from when no node is admissible (its resolution)",
-    "demid/sampling/polish.py::_start_points::min(n, int(1000000.0 ** (1.0 / d))) => "
+    "demid/sampling/polish.py::start_points::min(n, int(1000000.0 ** (1.0 / d))) => "
     "max(n, int(1000000.0 ** (1.0 / d)))#0":
         "the resolution of the grid the polishing starts from when no node is admissible",
     "demid/uncertainty/sweep.py::tolerance_sweep::2 ** 14 => 2 * 14#0":

@@ -7,7 +7,7 @@ lof-share   lack of fit holds ``catalogue.LOF_SHARE`` of the family's level (det
             as the classical lack-of-fit test); ``equal`` gives every family member the same weight;
 slip        the ``factor_level`` test (a run that fits a slipped factor value); ``no-slip`` drops it, so
             a planted outlier can no longer be read as a slip;
-rules       a cause is named only when it is singled out (``level1._not_singled_out``: corner-only terms,
+rules       a cause is named only when it is singled out (``naming.why_not_singled_out``: corner-only terms,
             a stronger rival of another kind, unequal scatter resting on one run); ``no-rules`` names
             the strongest rejected cause whatever else fired.
 
@@ -61,9 +61,9 @@ def _patch(changes: tuple[str, ...]) -> None:
         catalogue.family_weights = equal
         verdict.family_weights = equal
     if "no-slip" in changes:
-        catalogue._Round._factor_level = lambda self, data, m, eps: None
+        catalogue.Round._factor_level = lambda self, data, m, eps: None
     if "no-rules" in changes:
-        level1._not_singled_out = lambda data, model, h, hypotheses: None
+        level1.why_not_singled_out = lambda data, model, h, hypotheses: None
 
 
 def _run_variant(job: tuple[str, str, int, int]) -> list[dict]:
@@ -95,15 +95,15 @@ def _summary(rows: list[dict]) -> pd.DataFrame:
 
 # --------------------------------------------------------------------------- other combinations
 def _first_round(table, factors) -> tuple[list[str], np.ndarray, np.ndarray]:
-    from demid.criticism.catalogue import _Round
-    from demid.criticism.level1 import _prepare
-    from demid.criticism.models import _Model, _Spec
+    from demid.criticism.catalogue import Round
+    from demid.criticism.level1 import prepare_data
+    from demid.criticism.models import Model, ModelForm
     from demid.criticism.run_order import assess_run_order
 
-    data, _ = _prepare(table, factors, "y", None, ())
+    data, _ = prepare_data(table, factors, "y", None, ())
     order = assess_run_order(data.runs, data.coded, {"y": data.y}, "performed")
     data = replace(data, drift_tested=order.drift_tested)
-    rnd = _Round(data, _Model(data, _Spec()), 1999, np.random.default_rng(0))
+    rnd = Round(data, Model(data, ModelForm()), 1999, np.random.default_rng(0))
     causes = [h.cause for h in rnd.hypotheses]
     if not causes:
         return causes, np.zeros(0), np.zeros((1999, 0))

@@ -30,7 +30,7 @@ import honest_causes as hc  # noqa: E402
 from criticism_power import DESIGNS, named  # noqa: E402
 from generators import FACTORS, ccd_table, off_catalogue_table  # noqa: E402
 
-from demid.criticism import level1, verdict  # noqa: E402
+from demid.criticism import level1, naming, verdict  # noqa: E402
 from demid.criticism.one_run import WHOLE_DESIGN, worst_deletion  # noqa: E402
 
 VARIANTS = [(causes, p) for causes in (("heteroscedasticity",), ("missing_term",), ("response_transform",),
@@ -41,7 +41,7 @@ _CALLS: list = []
 _ROUND_MIN_P: list = []
 
 
-class _RecordingRound(level1._Round):
+class _RecordingRound(level1.Round):
     def __init__(self, *args):
         super().__init__(*args)
         _ROUND_MIN_P.append(min((h.p_family for h in self.hypotheses), default=1.0))
@@ -118,8 +118,8 @@ def main(argv=None) -> None:
     parser.add_argument("--seed0", type=int, default=0)
     args = parser.parse_args(argv)
     start = time.time()
-    level1._Round = _RecordingRound
-    level1.rests_on_one_run = _record
+    level1.Round = _RecordingRound
+    naming.rests_on_one_run = _record
     recs = collect(args.reps, args.seed0)
     base = rates(recs)
     print(f"no rule: wrong {base['wrong']:.3f}, wrong (lenient) {base['lenient']:.3f}, catalogue naming {base['named']:.3f}")

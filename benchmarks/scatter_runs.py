@@ -48,29 +48,29 @@ import pandas as pd  # noqa: E402
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from decide_causes import CELLS, Truth, verdict_of  # noqa: E402
 
-from demid.criticism import criticize, discrimination, level1  # noqa: E402
+from demid.criticism import criticize, discrimination, level1, naming  # noqa: E402
 
 
 def _first_round_entries(truth: Truth, n_null: int):
     """The first verdict and the first round's candidate entries (each cause's extension and AICc)."""
     seen = {}
-    original = level1._candidate_entries
+    original = naming.candidate_entries
 
     def keep(data, base_model, first_round):
         seen["entries"] = original(data, base_model, first_round)
         seen["data"] = data
         return seen["entries"]
 
-    level1._candidate_entries = keep
+    naming.candidate_entries = keep
     try:
         first = criticize(truth.table, truth.factors, "y", alpha=truth.alpha, n_null=n_null)
         if "entries" not in seen:  # no cause named or not singled out: the entries are computed here alone
-            data, _ = level1._prepare(truth.table, truth.factors, "y", truth.alpha, (), None)
-            base = level1._Model(data, level1._Spec())
-            first_round = level1._Round(data, base, n_null, np.random.default_rng(0))
+            data, _ = level1.prepare_data(truth.table, truth.factors, "y", truth.alpha, (), None)
+            base = level1.Model(data, level1.ModelForm())
+            first_round = level1.Round(data, base, n_null, np.random.default_rng(0))
             keep(data, base, first_round)
     finally:
-        level1._candidate_entries = original
+        naming.candidate_entries = original
     return first, seen["entries"], seen["data"]
 
 
@@ -89,11 +89,11 @@ def one_table(seed: int, k: int, size: float, n_null: int) -> dict:
     row["proposed"] = row["first_named"] if not runs else _named_after(
         truth, truth.coding.to_coded(np.array([[r[f] for f in truth.factors] for r in runs])), n_null)
     scatter = sorted((e for e in entries if e["cause"] == "heteroscedasticity"), key=lambda e: e["aicc"])
-    grid = discrimination._grid(data)
+    grid = discrimination.candidate_grid(data)
     j = truth.factors.index(truth.planted.factor)
     if scatter:
         model = scatter[0]["model"]
-        noise = discrimination._prediction_parts(model, grid)[2]
+        noise = discrimination.prediction_parts(model, grid)[2]
         noisiest = grid[int(np.argmax(noise))]
         row["reading"] = _named_after(truth, np.repeat(noisiest[None, :], 4, axis=0), n_null)
         row["follows"] = scatter[0]["detail"] == truth.planted.factor and model.spec.weight_gamma > 0

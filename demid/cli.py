@@ -11,6 +11,7 @@ import re
 import sys
 from pathlib import Path
 
+from .cli_tables import design_coding, load_table, require_quadratic, table_design
 from .errors import InputError
 from .out_path import check_out_path
 
@@ -26,134 +27,9 @@ def _one_response(text: str, command: str) -> None:
         raise InputError(f"--response: {command} takes one response, found '{text}'; run it once per response")
 
 
-def _load_table(path: str, factors: list[str], responses: list[str]):
-    from .config import reserved_column_problem
-    from .data import read_table
-
-    if not factors or not responses:
-        raise InputError(f"--{'factors' if not factors else 'responses'}: no column named; give the table's "
-                         "column names separated by commas")
-    both = sorted(set(factors) & set(responses))
-    if both:
-        raise InputError(f"'{both[0]}' is given both as a factor and as a response")
-    reserved = reserved_column_problem([*factors, *responses])
-    if reserved:
-        raise InputError(reserved)
-    table, warnings = read_table(path, factors, responses)
-    for w in warnings + _unlisted_factor_warnings(path, table, factors, responses):
-        print(f"demid: warning: {w}", file=sys.stderr)
-    return table
-
-
-def _unlisted_factor_warnings(path: str, table, factors: list[str], responses: list[str]) -> list[str]:
-    """A column left out of --factors that takes a few levels and differs between runs at one point of the
-    listed factors: those runs are fitted as replicates, and lack of fit is judged against its effect."""
-    import numpy as np
-
-    from .data import parse_number, read_raw
-
-    header, rows, _ = read_raw(path)
-    known = {"run", "status", "block", *factors, *responses}
-    points = [tuple(p) for p in np.round(table[factors].to_numpy(dtype=float), 9)]
-    try:  # the table is in run order, the file perhaps not: pair each run with its own row
-        row_of = {int(parse_number(r[header.index("run")])): r for r in rows}
-        rows = [row_of[int(run)] for run in table["run"]]
-    except (ValueError, KeyError, IndexError):
-        return []
-    out = []
-    for j, name in enumerate(header):
-        if name in known:
-            continue
-        try:
-            values = np.array([parse_number(r[j]) for r in rows])
-        except (ValueError, IndexError):
-            continue
-        levels = np.unique(values[np.isfinite(values)])
-        if not 2 <= len(levels) <= 5 or len(levels) >= len(values) / 2:
-            continue  # a response varies from run to run; a factor takes a few levels
-        by_point: dict = {}
-        for point, v in zip(points, values):
-            by_point.setdefault(point, set()).add(v)
-        if any(len(vs) > 1 for vs in by_point.values()):
-            out.append(f"{path}, column '{name}': {len(levels)} levels that differ between runs at the same point "
-                       f"of {', '.join(factors)}, which are fitted as replicates; if '{name}' is a factor, add it "
-                       "to --factors")
-    return out
-
-
-def _alpha(table, factors, alpha, design="ccd"):
-    """Axial distance: given; 1 for designs without axial points; for a CCD inferred as
-    (max level distance) / (factorial level distance)."""
-    import numpy as np
-
-    if alpha is not None:
-        if design != "ccd":
-            raise InputError(f"--alpha: only a ccd design has an axial distance, not --design {design}; leave "
-                             "--alpha out")
-        if not np.isfinite(alpha):
-            raise InputError(f"--alpha: a CCD's axial distance is a finite number, found {alpha:g}")
-        from .numbers import unusable_number
-
-        if unusable_number(alpha):
-            raise InputError(f"--alpha: {unusable_number(alpha)}")
-        if not alpha >= 1:
-            raise InputError(f"--alpha: a CCD's axial distance is at least 1 (1 is face-centred), found {alpha:g}")
-        return alpha
-    if design != "ccd":
-        return 1.0
-    from .design_check import infer_coding
-
-    coding = infer_coding(table, factors, {"type": "ccd"}, "table")
-    return float(abs(coding.to_coded(table[factors].to_numpy(dtype=float))).max())
-
-
-def _table_design(table, factors, args):
-    """The design family and axial distance of ``args``: as given (``--design``; ``--alpha`` alone is a CCD's),
-    or inferred from the table's geometry.  Returns (design dict, scalar alpha, note): the note says which design
-    was inferred ("" when one was given); the command prints it once it has succeeded, so that an error stays one
-    line (that line says "inferred" where the design is at fault)."""
-    if args.design is not None or args.alpha is not None:
-        design = args.design or "ccd"
-        alpha = _alpha(table, factors, args.alpha, design)
-        return {"type": design, "alpha": alpha}, alpha, ""
-    from .design_inference import infer_design
-
-    inferred = infer_design(table, factors, args.data)
-    note = f"demid: note: {args.data}: design inferred from the table (no --design given): {inferred.describe()}"
-    return inferred.design, max(inferred.alpha), note
-
-
 def _say(note: str) -> None:
     if note:
         print(note, file=sys.stderr)
-
-
-def _design_coding(table, factors, design, alpha, source):
-    """The coding of the table's runs, checked once: the declared design's levels (every cell on one of
-    them, every run one of its points; run counts are not checked, a table may leave out failed runs), from
-    the design's geometry, so a left-out run does not move the centre; a custom design is coded from its
-    extremes.  The fit, the rank check and the criticism all use it."""
-    from .design_check import check_design, factor_slip_warning
-    from .design import Coding
-
-    if design["type"] == "custom":
-        x = table[factors].to_numpy(dtype=float)
-        return Coding.from_levels(factors, x, alpha if not design.get("inferred") else 1.0)
-    coding = check_design(table, factors, design, source, None, counts=False)[0]
-    slip = factor_slip_warning(table, factors, design, coding, source)
-    if slip:
-        print(f"demid: warning: {slip}", file=sys.stderr)
-    return coding
-
-
-def _require_estimable(table, factors, response, coding, source):
-    """Refuse a saturated or rank-deficient quadratic: its R² is 1 or arbitrary, its residuals meaningless."""
-    import numpy as np
-
-    from .design_check import require_estimable
-
-    coded = coding.to_coded(table[factors].to_numpy(dtype=float))
-    require_estimable(coded, np.isfinite(table[response].to_numpy(dtype=float)), None, source, response, factors)
 
 
 def _check_out(args, is_own) -> None:
@@ -171,13 +47,13 @@ def cmd_fit(args) -> int:
 
     _check_out(args, is_demid_json)
     factors, responses = _split(args.factors), _split(args.responses)
-    table = _load_table(args.data, factors, responses)
-    design, alpha, note = _table_design(table, factors, args)
-    coding = _design_coding(table, factors, design, alpha, args.data)
+    table = load_table(args.data, factors, responses)
+    design, alpha, note = table_design(table, factors, args)
+    coding = design_coding(table, factors, design, alpha, args.data)
     out = {}
     blocks = _block_check(table, factors, coding, args.data)
     for r in responses:
-        _require_estimable(table, factors, r, coding, args.data)
+        require_quadratic(table, factors, r, coding, args.data)
         fit = fit_response(table, factors, r, alpha=alpha, coding=coding)
         st = fit.statistics()
         coef = fit.coefficients()
@@ -307,10 +183,10 @@ def cmd_criticize(args) -> int:
     _check_out(args, is_demid_json)
     factors = _split(args.factors)
     _one_response(args.response, "criticize")
-    table = _load_table(args.data, factors, [args.response])
-    design, alpha, note = _table_design(table, factors, args)
-    coding = _design_coding(table, factors, design, alpha, args.data)
-    _require_estimable(table, factors, args.response, coding, args.data)
+    table = load_table(args.data, factors, [args.response])
+    design, alpha, note = table_design(table, factors, args)
+    coding = design_coding(table, factors, design, alpha, args.data)
+    require_quadratic(table, factors, args.response, coding, args.data)
     _block_check(table, factors, coding, args.data)
     fit = fit_response(table, factors, args.response, alpha=alpha, coding=coding)
     result = criticize(table, factors, args.response, alpha=alpha, run_order=args.run_order, fit=fit)
@@ -363,11 +239,11 @@ def cmd_check_transcription(args) -> int:
     _check_out(args, is_demid_json)
     factors = _split(args.factors)
     _one_response(args.response, "check-transcription")
-    table = _load_table(args.data, factors, [args.response])
+    table = load_table(args.data, factors, [args.response])
     published = _parse_published(args.published)
-    design, alpha, note = _table_design(table, factors, args)
+    design, alpha, note = table_design(table, factors, args)
     # An inferred design codes the table by its geometry (per-factor axial distances); a declared one as before.
-    options = ({"alpha": design["alpha"], "coding": _design_coding(table, factors, design, alpha, args.data)}
+    options = ({"alpha": design["alpha"], "coding": design_coding(table, factors, design, alpha, args.data)}
                if design.get("inferred") else {"alpha": alpha})
     result = check_transcription(table, factors, args.response, published, design_type=design["type"],
                                  printed=read_printed(args.data, table), source=args.data, **options)

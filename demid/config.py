@@ -133,94 +133,120 @@ def check_semantics(config: dict, source: str = "config", base_dir: Path | str =
                          source=source)
     for mname, mat in materials.items():
         key = f"materials.{mname}"
-        factors = mat["factors"]
-        responses = mat["responses"]
-        if len(factors) < 2:
-            raise InputError(f"config key {key}.factors: only one factor ('{next(iter(factors))}'); demid needs at "
-                             "least two (admissible sets, posteriors and surfaces are drawn over factor pairs)",
-                             source=source)
-        if not any("target" in resp for resp in responses.values()):
-            raise InputError(f"config key {key}.responses: no response has a target; give at least one measured "
-                             f"value (e.g. {key}.responses.{next(iter(responses))}.target), or there is nothing "
-                             "to calibrate against", source=source)
-        both = next((r for r, resp in responses.items() if "sigma" in resp and "sigma_rel" in resp), None)
-        if both:
-            raise InputError(f"config key {key}.responses.{both}: both sigma ({responses[both]['sigma']:g}) and "
-                             f"sigma_rel ({responses[both]['sigma_rel']:g}) are given; keep the one the measurement "
-                             "reports", source=source)
-        both = next((r for r, resp in responses.items() if "tolerance" in resp and "tolerance_abs" in resp), None)
-        if both:
-            raise InputError(f"config key {key}.responses.{both}: both tolerance and tolerance_abs are given; keep "
-                             "one", source=source)
-        if not mat.get("scenarios"):
-            targeted = [r for r, resp in responses.items() if "target" in resp]
-            raise InputError(f"config key {key}.scenarios: no scenario; admissible sets need at least one, e.g. "
-                             f"scenarios: {{all: {{observables: [{', '.join(targeted)}], tolerance: 0.05}}}}",
-                             source=source)
-        path = None if _table_or_simulation(key, mat, source) else base_dir / mat["data"]
-        if path is not None and not path.is_file():
-            raise InputError(f"config key {key}.data: data file '{mat['data']}' does not exist (looked for "
-                             f"{path.resolve()}; {_RELATIVE_TO})", source=source)
-        for fname, fac in factors.items():
-            if not fac["lower"] < fac["upper"]:
-                raise InputError(f"config key {key}.factors.{fname}: lower ({fac['lower']}) must be below "
-                                 f"upper ({fac['upper']})", source=source)
-            if fac.get("scale") == "log" and fac["lower"] <= 0:
-                raise InputError(f"config key {key}.factors.{fname}: a log-scale factor needs lower > 0", source=source)
-            if path is None:  # a table's material: checked with its table, after the bounds' slips (data.py)
-                _check_limits(f"{key}.factors.{fname}", fac, source)
-        clash = set(factors) & set(responses)
-        if clash:
-            raise InputError(f"config key {key}: names used both as factor and response: "
-                             f"{', '.join(sorted(clash))}", source=source)
-        reserved = reserved_column_problem(sorted(set(factors) | set(responses)))
-        if reserved:
-            raise InputError(f"config key {key}: {reserved}; rename that column in the table and the config",
-                             source=source)
-        for rname, resp in responses.items():
-            if "target" in resp and resp["target"] == 0:
-                raise InputError(f"config key {key}.responses.{rname}.target: a relative tolerance needs a "
-                                 f"non-zero target", source=source)
-        for sname, scen in (mat.get("scenarios") or {}).items():
-            for obs in scen["observables"]:
-                skey = f"{key}.scenarios.{sname}.observables"
-                if obs not in responses:
-                    raise InputError(f"config key {skey}: unknown observable '{obs}' (responses: "
-                                     f"{', '.join(responses)})", source=source)
-                if "target" not in responses[obs]:
-                    raise InputError(f"config key {skey}: observable '{obs}' has no target "
-                                     f"(set {key}.responses.{obs}.target)", source=source)
-        ref = mat.get("reference_point")
-        if ref:
-            for fname, value in ref.items():
-                if fname not in factors:
-                    raise InputError(f"config key {key}.reference_point: unknown factor '{fname}'", source=source)
-            missing = [f for f in factors if f not in ref]
-            if missing:
-                raise InputError(f"config key {key}.reference_point: missing factor(s) {', '.join(missing)}",
-                                 source=source)
-        par = mat.get("pareto")
-        if par:
-            for role in ("error_of", "minimise"):
-                if par[role] not in responses:
-                    raise InputError(f"config key {key}.pareto.{role}: unknown response '{par[role]}'", source=source)
-            if par["error_of"] == par["minimise"]:
-                raise InputError(f"config key {key}.pareto: error_of and minimise are both '{par['minimise']}'; "
-                                 "a trade-off needs two different responses", source=source)
-            if "target" not in responses[par["error_of"]]:
-                raise InputError(f"config key {key}.pareto.error_of: response '{par['error_of']}' has no target",
-                                 source=source)
-        design = mat["design"]
-        if design["type"] == "ccd" and design["alpha"] < 1.0:
-            raise InputError(f"config key {key}.design.alpha: a CCD needs alpha >= 1", source=source)
-        unreadable = unreadable_alpha(design["alpha"]) if design["type"] == "ccd" else None
-        if unreadable:
-            raise InputError(f"config key {key}.design.alpha: {design['alpha']:g} {unreadable}", source=source)
-        _check_published_ranges(key, responses, source)
+        _check_declared(key, mat, source)
+        _check_table_and_bounds(key, mat, base_dir, source)
+        _check_names(key, mat["factors"], mat["responses"], source)
+        _check_cross_references(key, mat, source)
+        _check_design(key, mat["design"], source)
+        _check_published_ranges(key, mat["responses"], source)
         _check_scenario_labels(key, mat.get("scenarios") or {}, source)
         _check_extends(key, mname, mat.get("extends") or "", config["materials"], source)
     # After the materials: the published numbers are checked against their names.
     _check_published_file(config.get("published") or "", base_dir, source, config["materials"])
+
+
+def _check_declared(key: str, mat: dict, source: str) -> None:
+    """At least two factors, a target, a scenario, and not both sigma and sigma_rel nor both tolerance and
+    tolerance_abs on one response."""
+    factors, responses = mat["factors"], mat["responses"]
+    if len(factors) < 2:
+        raise InputError(f"config key {key}.factors: only one factor ('{next(iter(factors))}'); demid needs at "
+                         "least two (admissible sets, posteriors and surfaces are drawn over factor pairs)",
+                         source=source)
+    if not any("target" in resp for resp in responses.values()):
+        raise InputError(f"config key {key}.responses: no response has a target; give at least one measured "
+                         f"value (e.g. {key}.responses.{next(iter(responses))}.target), or there is nothing "
+                         "to calibrate against", source=source)
+    both = next((r for r, resp in responses.items() if "sigma" in resp and "sigma_rel" in resp), None)
+    if both:
+        raise InputError(f"config key {key}.responses.{both}: both sigma ({responses[both]['sigma']:g}) and "
+                         f"sigma_rel ({responses[both]['sigma_rel']:g}) are given; keep the one the measurement "
+                         "reports", source=source)
+    both = next((r for r, resp in responses.items() if "tolerance" in resp and "tolerance_abs" in resp), None)
+    if both:
+        raise InputError(f"config key {key}.responses.{both}: both tolerance and tolerance_abs are given; keep "
+                         "one", source=source)
+    if not mat.get("scenarios"):
+        targeted = [r for r, resp in responses.items() if "target" in resp]
+        raise InputError(f"config key {key}.scenarios: no scenario; admissible sets need at least one, e.g. "
+                         f"scenarios: {{all: {{observables: [{', '.join(targeted)}], tolerance: 0.05}}}}",
+                         source=source)
+
+
+def _check_table_and_bounds(key: str, mat: dict, base_dir: Path, source: str) -> None:
+    """The table exists (or the simulation's command is checked), and every factor's bounds are ordered."""
+    factors = mat["factors"]
+    path = None if _table_or_simulation(key, mat, source) else base_dir / mat["data"]
+    if path is not None and not path.is_file():
+        raise InputError(f"config key {key}.data: data file '{mat['data']}' does not exist (looked for "
+                         f"{path.resolve()}; {_RELATIVE_TO})", source=source)
+    for fname, fac in factors.items():
+        if not fac["lower"] < fac["upper"]:
+            raise InputError(f"config key {key}.factors.{fname}: lower ({fac['lower']}) must be below "
+                             f"upper ({fac['upper']})", source=source)
+        if fac.get("scale") == "log" and fac["lower"] <= 0:
+            raise InputError(f"config key {key}.factors.{fname}: a log-scale factor needs lower > 0", source=source)
+        if path is None:  # a table's material: checked with its table, after the bounds' slips (data.py)
+            _check_limits(f"{key}.factors.{fname}", fac, source)
+
+
+def _check_names(key: str, factors: dict, responses: dict, source: str) -> None:
+    """No name is both factor and response nor a reserved column; no target is 0 (relative tolerances)."""
+    clash = set(factors) & set(responses)
+    if clash:
+        raise InputError(f"config key {key}: names used both as factor and response: "
+                         f"{', '.join(sorted(clash))}", source=source)
+    reserved = reserved_column_problem(sorted(set(factors) | set(responses)))
+    if reserved:
+        raise InputError(f"config key {key}: {reserved}; rename that column in the table and the config",
+                         source=source)
+    for rname, resp in responses.items():
+        if "target" in resp and resp["target"] == 0:
+            raise InputError(f"config key {key}.responses.{rname}.target: a relative tolerance needs a "
+                             f"non-zero target", source=source)
+
+
+def _check_cross_references(key: str, mat: dict, source: str) -> None:
+    """Scenarios, the reference point and the Pareto front name the material's own responses and factors."""
+    factors, responses = mat["factors"], mat["responses"]
+    for sname, scen in (mat.get("scenarios") or {}).items():
+        for obs in scen["observables"]:
+            skey = f"{key}.scenarios.{sname}.observables"
+            if obs not in responses:
+                raise InputError(f"config key {skey}: unknown observable '{obs}' (responses: "
+                                 f"{', '.join(responses)})", source=source)
+            if "target" not in responses[obs]:
+                raise InputError(f"config key {skey}: observable '{obs}' has no target "
+                                 f"(set {key}.responses.{obs}.target)", source=source)
+    ref = mat.get("reference_point")
+    if ref:
+        for fname, value in ref.items():
+            if fname not in factors:
+                raise InputError(f"config key {key}.reference_point: unknown factor '{fname}'", source=source)
+        missing = [f for f in factors if f not in ref]
+        if missing:
+            raise InputError(f"config key {key}.reference_point: missing factor(s) {', '.join(missing)}",
+                             source=source)
+    par = mat.get("pareto")
+    if par:
+        for role in ("error_of", "minimise"):
+            if par[role] not in responses:
+                raise InputError(f"config key {key}.pareto.{role}: unknown response '{par[role]}'", source=source)
+        if par["error_of"] == par["minimise"]:
+            raise InputError(f"config key {key}.pareto: error_of and minimise are both '{par['minimise']}'; "
+                             "a trade-off needs two different responses", source=source)
+        if "target" not in responses[par["error_of"]]:
+            raise InputError(f"config key {key}.pareto.error_of: response '{par['error_of']}' has no target",
+                             source=source)
+
+
+def _check_design(key: str, design: dict, source: str) -> None:
+    """A CCD's alpha is at least 1 and written so that its levels can be read back."""
+    if design["type"] == "ccd" and design["alpha"] < 1.0:
+        raise InputError(f"config key {key}.design.alpha: a CCD needs alpha >= 1", source=source)
+    unreadable = unreadable_alpha(design["alpha"]) if design["type"] == "ccd" else None
+    if unreadable:
+        raise InputError(f"config key {key}.design.alpha: {design['alpha']:g} {unreadable}", source=source)
 
 
 def _table_or_simulation(key: str, mat: dict, source: str) -> bool:

@@ -9,8 +9,6 @@ only ever read.  Part of the input layer: the material arrives as its
 
 from __future__ import annotations
 
-import csv
-import io
 import difflib
 import math
 import re
@@ -23,22 +21,19 @@ import numpy as np
 import pandas as pd
 
 from .blocks import BLOCK_COLUMN, label_text
+from .csv_cells import is_number, parse_number, read_raw, read_raw_numbered
 from .design import Coding, factor_levels, model_matrix, model_units, quadratic_terms, snap_to_factor_levels
-from .design_check import check_design, odd_level_values, require_estimable
+from .design_check import check_design, odd_level_values
 from .errors import InputError
-from .numbers import unusable_number
+from .estimability import require_estimable
 from .precision import PRINTED_PLACE, printed_place
 
 if TYPE_CHECKING:
     from .spec import Factor, MaterialSpec
 
-UNICODE_MINUS = "\u2212"
-_DECIMAL_COMMA = re.compile(r"^[+-]?\d*,\d+$")
-_THOUSANDS_OR_DECIMAL = re.compile(r"^[+-]?[1-9]\d{0,2},\d{3}$")
 _FAILED = {"failed", "fail", "error", "crashed", "timeout", "diverged", "aborted", "killed", "unstable"}
 _OK = {"", "ok", "done", "success", "succeeded", "completed", "complete", "finished", "converged", "valid"}
 _NONFINITE = {"nan", "inf", "+inf", "-inf", "infinity", "-infinity"}
-_LINE_BREAK = re.compile(r"\r\n|\r|\n")
 
 
 def _run_failed(status: str, status_column: str, src: str, run: int) -> bool:
@@ -85,125 +80,6 @@ class ValidatedTable:
             out[f"coded:{f}"] = coded[:, i]
         out["point_type"] = self.point_types
         return out
-
-
-def _sniff_delimiter(header: str) -> str:
-    counts = {d: header.count(d) for d in (",", ";", "\t")}
-    return max(counts, key=lambda d: (counts[d], d == ","))
-
-
-def read_raw_numbered(path: Path | str) -> tuple[list[str], list[list[str]], list[int]]:
-    """Header, string cells and each row's line number in the file (comment and blank lines skipped)."""
-    path = Path(path)
-    if not path.is_file():
-        raise InputError("data file does not exist", source=str(path))
-    text = _table_text(path)
-    numbered = _records(text)
-    if not numbered:
-        raise InputError("the file is empty", source=str(path))
-    delim = _sniff_delimiter(numbered[0][1])
-    rows = []
-    for no, record in numbered:
-        try:
-            rows.append(next(csv.reader(io.StringIO(record, newline=""), delimiter=delim)))
-        except csv.Error as exc:  # e.g. a cell beyond the csv module's field size limit
-            raise InputError(f"line {no}: not readable as CSV ({exc})", source=str(path)) from None
-    header, rows = _drop_trailing_empty_columns([h.strip() for h in rows[0]], rows[1:])
-    return header, rows, [no for no, _ in numbered[1:]]
-
-
-def _table_text(path: Path) -> str:
-    """A table file's text: UTF-8 (a BOM dropped); other encodings raise InputError naming the file."""
-    data = path.read_bytes()
-    try:
-        text = data.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        raise InputError(f"not UTF-8 text (byte {exc.start}); save the table as UTF-8 CSV", source=str(path)) from None
-    if "\0" in text:  # valid UTF-8, yet no text table holds NUL: UTF-16 without a byte-order mark writes one per letter
-        raise InputError(f"not UTF-8 text (a NUL byte at byte {data.index(0)}: UTF-16 without a byte-order mark?); "
-                         "save the table as UTF-8 CSV", source=str(path))
-    return text
-
-
-def _lines(text: str) -> list[str]:
-    """The text's lines, broken where CSV breaks them (\\n, \\r\\n, \\r) only: str.splitlines also breaks
-    at U+2028, U+0085 and form feeds, which are text inside a cell."""
-    lines = _LINE_BREAK.split(text)
-    return lines[:-1] if lines and lines[-1] == "" else lines
-
-
-def _records(text: str) -> list[tuple[int, str]]:
-    """(first line number, text) of each CSV record, comment and blank lines skipped.  A quoted cell may
-    hold a line break (valid CSV): its record continues on the next lines until the quote closes; a quote
-    never closed leaves every line its own record (the cell count then names the line)."""
-    lines = _lines(text)
-    out: list[tuple[int, str]] = []
-    no = 0
-    while no < len(lines):
-        line = lines[no]
-        if not line.strip() or line.lstrip().startswith("#"):
-            no += 1
-            continue
-        end, quotes = no, line.count('"')
-        while quotes % 2 and end + 1 < len(lines):
-            end += 1
-            quotes += lines[end].count('"')
-        if quotes % 2:  # unclosed to the end of the file
-            end = no
-        out.append((no + 1, "\n".join(lines[no:end + 1])))
-        no = end + 1
-    return out
-
-
-def _drop_trailing_empty_columns(header: list[str], rows: list[list[str]]) -> tuple[list[str], list[list[str]]]:
-    """Spreadsheets often export empty columns after the last one used (``run,a,b,,``): columns at the end
-    with no name and no value in any row are not part of the table."""
-    width = len(header)
-    while width and header[width - 1] == "" and all(len(r) < width or not r[width - 1].strip() for r in rows):
-        width -= 1
-    if width == len(header):
-        return header, rows
-    # a row with a value beyond the header keeps its length, so that its cell count is refused as before
-    return header[:width], [r[:width] if not any(c.strip() for c in r[width:]) else r for r in rows]
-
-
-def read_raw(path: Path | str) -> tuple[list[str], list[list[str]], str]:
-    """Header and string cells; a UTF-8 BOM is dropped, delimiter sniffed from the header."""
-    header, rows, _ = read_raw_numbered(path)
-    lines = _lines(_table_text(Path(path)))
-    first = next(ln for ln in lines if ln.strip() and not ln.lstrip().startswith("#"))
-    return header, rows, _sniff_delimiter(first)
-
-
-def parse_number(cell: str) -> float:
-    """Parse one cell; Unicode minus is accepted.  Raises ValueError with a readable reason."""
-    s = cell.strip().replace(UNICODE_MINUS, "-")
-    if s == "":
-        raise ValueError("empty cell")
-    if _THOUSANDS_OR_DECIMAL.match(s):
-        raise ValueError(f"found '{cell.strip()}': a thousands separator ({s.replace(',', '')}) or a decimal "
-                         f"comma ({s.replace(',', '.')})? write the number with a decimal point and no separator")
-    if _DECIMAL_COMMA.match(s):
-        raise ValueError(f"found '{cell.strip()}', a decimal comma; expected a decimal point, e.g. "
-                         f"'{s.replace(',', '.')}'")
-    if "_" in s:  # Python reads 1_29.3 as 129.3; a table cell with an underscore is a slip
-        raise ValueError(f"found '{cell.strip()}', a number with an underscore; expected digits only")
-    try:
-        value = float(s)
-    except ValueError:
-        raise ValueError(f"found '{cell.strip()}', expected a number") from None
-    problem = unusable_number(value, cell) if s.lower().lstrip("+-") not in ("nan", "inf", "infinity") else ""
-    if problem:  # spelled-out nan/inf keep their meaning (a failed run) to the caller
-        raise ValueError(problem)
-    return value
-
-
-def _is_number(text: str) -> bool:
-    try:
-        parse_number(text)
-    except ValueError:
-        return False
-    return True
 
 
 def check_header(header: list[str], factors, responses, src: str) -> None:
@@ -279,26 +155,8 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
                                  source=src, run=run, column=col)
             rec[col] = value
         for col in responses:
-            cell = row[idx[col]].strip()
-            if failed and (cell == "" or cell.lower() in _NONFINITE):
-                rec[col] = np.nan
-                continue
-            if failed:
-                raise InputError(f"the run is marked '{status}' in column '{status_column}' but this cell holds "
-                                 f"'{cell}'; empty the cell if the simulation failed (if only some responses "
-                                 "failed, clear the status and write NaN in their cells)",
-                                 source=src, run=run, column=col)
-            if cell.lower() in _NONFINITE:
-                rec[col] = np.nan
-                warnings.append(f"{src}, run {run}, column '{col}': value '{cell}' treated as a failed simulation")
-                continue
-            try:
-                rec[col] = parse_number(cell)
-            except ValueError as exc:
-                hint = ("" if cell != "" else f"; if this simulation failed, write failed in its '{status_column}' "
-                        f"cell" if has_status else f"; if this simulation failed, add a '{status_column}' column with "
-                        f"'failed'")
-                raise InputError(f"{exc}{hint}", source=src, run=run, column=col) from None
+            rec[col] = _response_value(row[idx[col]].strip(), status if failed else None, status_column,
+                                       has_status, warnings, source=src, run=run, column=col)
         if failed:
             warnings.append(f"{src}, run {run}: marked '{status}' in column '{status_column}'; its missing "
                             f"responses are excluded from the fits")
@@ -308,7 +166,7 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
             if not label:
                 raise InputError("empty block label; give every run its block (any label, e.g. 1 and 2)",
                                  source=src, run=run, column=BLOCK_COLUMN)
-            rec[BLOCK_COLUMN] = label_text(parse_number(label)) if _is_number(label) else label
+            rec[BLOCK_COLUMN] = label_text(parse_number(label)) if is_number(label) else label
         records.append(rec)
     if not records:
         raise InputError("the table has a header but no runs", source=src)
@@ -317,6 +175,29 @@ def read_table(path: Path | str, factors: list[str], responses: list[str],
     # the design check judges a level within the print's own rounding, which only the text shows
     table.attrs[PRINTED_PLACE] = {col: printed_place(row[idx[col]] for row in rows) for col in factors}
     return table, warnings
+
+
+def _response_value(cell: str, failed_status: str | None, status_column: str, has_status: bool,
+                    warnings: list[str], *, source: str, run: int, column: str) -> float:
+    """A response cell as a number: NaN where the run is marked failed (``failed_status``, as written) and the
+    cell is empty or non-finite, or where the cell holds NaN/inf (with a warning); one clear line otherwise."""
+    if failed_status is not None and (cell == "" or cell.lower() in _NONFINITE):
+        return np.nan
+    if failed_status is not None:
+        raise InputError(f"the run is marked '{failed_status}' in column '{status_column}' but this cell holds "
+                         f"'{cell}'; empty the cell if the simulation failed (if only some responses "
+                         "failed, clear the status and write NaN in their cells)",
+                         source=source, run=run, column=column)
+    if cell.lower() in _NONFINITE:
+        warnings.append(f"{source}, run {run}, column '{column}': value '{cell}' treated as a failed simulation")
+        return np.nan
+    try:
+        return parse_number(cell)
+    except ValueError as exc:
+        hint = ("" if cell != "" else f"; if this simulation failed, write failed in its '{status_column}' "
+                f"cell" if has_status else f"; if this simulation failed, add a '{status_column}' column with "
+                f"'failed'")
+        raise InputError(f"{exc}{hint}", source=source, run=run, column=column) from None
 
 
 def read_printed(path: Path | str, table: pd.DataFrame) -> pd.DataFrame:

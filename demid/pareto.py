@@ -21,7 +21,7 @@ def pareto_front(first: np.ndarray, second: np.ndarray) -> np.ndarray:
     second = np.asarray(second, dtype=float)
     ok = np.isfinite(first) & np.isfinite(second)
     idx = _within_front_box(first, second, np.flatnonzero(ok))
-    order = _by_first_then_second(first, second, idx)
+    order = by_first_then_second(first, second, idx)
     s = second[order]
     running = np.minimum.accumulate(s)
     keep = np.empty(len(s), dtype=bool)
@@ -48,7 +48,7 @@ def _within_front_box(first: np.ndarray, second: np.ndarray, idx: np.ndarray) ->
     return idx[inside | (idx == head)]
 
 
-def _by_first_then_second(first: np.ndarray, second: np.ndarray, idx: np.ndarray) -> np.ndarray:
+def by_first_then_second(first: np.ndarray, second: np.ndarray, idx: np.ndarray) -> np.ndarray:
     """``idx[np.lexsort((second[idx], first[idx]))]``: sorted by ``first``, ties by ``second``, then
     by index.  A two-key lexsort of a dense grid (8 million points) costs five times one
     quicksort, and ties in the first objective are rare, so only the tied runs get the full sort."""

@@ -21,11 +21,12 @@ SCHEMA_PATH = Path(__file__).resolve().parent / "schemas" / "config.schema.yaml"
 
 def load_schema(path: Path | str = SCHEMA_PATH) -> dict:
     """The schema at ``path`` (a copy: the caller may change it)."""
-    return copy.deepcopy(_parsed_schema(str(Path(path).resolve())))
+    return copy.deepcopy(parsed_schema(str(Path(path).resolve())))
 
 
 @functools.lru_cache(maxsize=None)
-def _parsed_schema(path: str) -> dict:
+def parsed_schema(path: str) -> dict:
+    """The schema file at ``path`` as parsed YAML (cached: read once per process)."""
     # Parsed once per process: every MaterialSpec built from a bare entry reads the schema's defaults (the
     # report builds 33), and the YAML parse costs several times the copy.
     # libyaml's safe loader when built (same YAML rules, ~10x faster): every parse of the workflow reads this

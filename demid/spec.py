@@ -276,6 +276,16 @@ class MaterialSpec:
         """The table column that marks failed runs (``status_column``)."""
         return self._material["status_column"]
 
+    @property
+    def simulated(self) -> bool:
+        """Whether demid simulates this material's runs (a ``simulation:`` block instead of ``data:``)."""
+        return bool(self._material.get("simulation"))
+
+    @property
+    def extends(self) -> str | None:
+        """The material whose model this one extends (``extends:``), None when it extends none."""
+        return self._material.get("extends") or None
+
     @cached_property
     def waves(self) -> dict:
         """The ``waves`` block of a simulated material, with the schema's defaults (``max``, ``stop_early``)."""

@@ -25,6 +25,68 @@ if TYPE_CHECKING:
     from .spec import MaterialSpec
 
 
+@dataclass(frozen=True)
+class Output:
+    """One output of a material's job: its path under the results folder (``{material}``: the material's
+    name), and where a figure goes in Snakemake's report (its category and caption file under
+    ``workflow/report/``).  ``directory``: a folder of files (the criticism's per-response JSON)."""
+
+    path: str
+    category: str | None = None
+    caption: str | None = None
+    directory: bool = False
+
+
+#: Every output of a material's job (rules ``analyse_material`` and ``analyse_wave``), by the name both the
+#: rule's ``output`` and :class:`MaterialAnalysis` use: the one place these names are written
+#: (``workflow/rules/common.smk`` builds the rule's outputs from it).  Each figure is also written as SVG
+#: beside its PNG (:func:`output_table`).
+MATERIAL_OUTPUTS = {
+    "table": Output("validated/{material}.parquet"),
+    "validation_summary": Output("validated/{material}.json"),
+    "transcription": Output("validated/{material}_transcription.parquet"),
+    "fits": Output("fits/{material}.parquet"),
+    "statistics": Output("fits/{material}_statistics.parquet"),
+    "anova": Output("fits/{material}_anova.parquet"),
+    "diagnostics": Output("fits/{material}_diagnostics.parquet"),
+    "scenarios": Output("scenarios/{material}.parquet"),
+    "sets_figure": Output("figures/sets_{material}.png", "Admissible sets", "sets.rst"),
+    "surface_figure": Output("figures/surface_{material}.png", "Response surfaces", "surface.rst"),
+    "robust": Output("uncertainty/{material}_robust.parquet"),
+    "sweep": Output("uncertainty/{material}_sweep.parquet"),
+    "information_gain": Output("uncertainty/{material}_information_gain.parquet"),
+    "ranking": Output("uncertainty/{material}_ranking.parquet"),
+    "uncertainty_summary": Output("uncertainty/{material}.json"),
+    "sweep_figure": Output("figures/sweep_{material}.png", "Uncertainty", "sweep.rst"),
+    "posterior_figure": Output("figures/posterior_{material}.png", "Uncertainty", "posterior.rst"),
+    "criticism": Output("criticism/{material}", directory=True),
+    "findings": Output("criticism/{material}_findings.parquet"),
+    "calibration": Output("criticism/{material}_calibration.parquet"),
+    "criticism_summary": Output("criticism/{material}.json"),
+    "residuals_figure": Output("figures/residuals_{material}.png", "Model criticism", "residuals.rst"),
+    "combinations": Output("combinations/{material}.parquet"),
+    "combinations_summary": Output("combinations/{material}.json"),
+    "fit_summary": Output("fits/{material}.json"),
+    "combinations_figure": Output("figures/combinations_{material}.png", "Identified combinations",
+                                  "combinations.rst"),
+}
+
+#: The outputs a material that declares ``pareto:`` adds: its front's table and figure.
+PARETO_OUTPUTS = {
+    "pareto": Output("tables/pareto_{material}.csv"),
+    "pareto_figure": Output("figures/pareto_{material}.png", "Pareto trade-off", "pareto.rst"),
+}
+
+
+def output_table(pareto: bool = False) -> dict[str, Output]:
+    """A material job's outputs by name (with ``pareto`` the front's too), each figure's SVG beside its PNG
+    as ``<name without _figure>_svg`` (:func:`demid.io.save_figures` writes both)."""
+    out = {**MATERIAL_OUTPUTS, **(PARETO_OUTPUTS if pareto else {})}
+    svgs = {name.removesuffix("_figure") + "_svg": Output(entry.path.removesuffix(".png") + ".svg")
+            for name, entry in out.items() if name.endswith("_figure")}
+    return {**out, **svgs}
+
+
 @dataclass
 class ValidatedMaterial:
     """The validation part of a material's job: the checked table, the transcription check, the summary JSON
@@ -174,6 +236,11 @@ class MaterialAnalysis:
     figures: dict[str, object]
     responses: dict[str, dict]
     warnings: list[str]
+
+    def names(self) -> set[str]:
+        """The output names this result fills: those of :func:`output_table` but the SVGs, which are
+        written beside their PNGs."""
+        return {*self.parquet, *self.csv, *self.json, *self.figures, "criticism"}
 
 
 def _next_box_points(spec: MaterialSpec, robust: pd.DataFrame) -> np.ndarray | None:

@@ -170,28 +170,28 @@ def test_stepdown_min_p_is_monotone_on_a_hand_worked_example():
     1 hit -> 0.4; step 2 (hypotheses 2, 3) no hit -> 0.2; step 3 (hypothesis 3) 2 hits -> 0.6.
     Adjusted p-values are the running maximum: 0.4, 0.4, 0.6.
     """
-    from demid.criticism.catalogue import _stepdown_minp
+    from demid.criticism.catalogue import stepdown_minp
 
     obs = np.log([0.01, 0.02, 0.03])
     null = np.array([[-5.0, 0.0, 0.0],
                      [0.0, 0.0, -3.6],
                      [0.0, 0.0, -3.55],
                      [0.0, 0.0, 0.0]])
-    assert _stepdown_minp(obs, null) == pytest.approx([0.4, 0.4, 0.6])
+    assert stepdown_minp(obs, null) == pytest.approx([0.4, 0.4, 0.6])
     perm = [2, 0, 1]  # the hypotheses' input order does not matter
-    assert _stepdown_minp(obs[perm], null[:, perm]) == pytest.approx([0.6, 0.4, 0.4])
+    assert stepdown_minp(obs[perm], null[:, perm]) == pytest.approx([0.6, 0.4, 0.4])
 
 
 def test_box_cox_bootstrap_draws_sigma_with_n_minus_p_degrees_of_freedom():
     """P(LR* >= LR | y* > 0) with y* = fitted + s N(0, 1), s^2 = SSE / (n - p), against an independent
     simulation.  Near zero the positivity conditioning makes the answer depend on s: with
     s^2 = SSE / n the p-value is ~0.17 instead of ~0.25 here."""
-    from demid.criticism.catalogue import _Round
-    from demid.criticism.models import _orth
+    from demid.criticism.catalogue import Round
+    from demid.criticism.models import orthonormal_basis
 
     x = model_matrix(ccd_points(2, 1.41421, 5), TERMS2)
     n, p = x.shape
-    q = _orth(x)
+    q = orthonormal_basis(x)
     fitted = 2.0 + 0.3 * x[:, 1]
     sd = 1.5
     model = types.SimpleNamespace(ssr=sd ** 2 * (n - p), df_resid=n - p, fitted_z=fitted, y=fitted)
@@ -199,9 +199,9 @@ def test_box_cox_bootstrap_draws_sigma_with_n_minus_p_degrees_of_freedom():
     rng = np.random.default_rng(5)
     y = fitted[:, None] + sd * rng.standard_normal((n, 12_000))
     y = y[:, np.all(y > 0, axis=0)]
-    expected = np.mean(_Round._boxcox_lr(y, q) >= lr_obs)
-    p_boot, used = _Round._boxcox_bootstrap(_Round.__new__(_Round), model, q, lr_obs, 3000,
-                                            np.random.default_rng(6))
+    expected = np.mean(Round._boxcox_lr(y, q) >= lr_obs)
+    p_boot, used = Round._boxcox_bootstrap(Round.__new__(Round), model, q, lr_obs, 3000,
+                                           np.random.default_rng(6))
     assert used == 3000
     assert p_boot == pytest.approx(expected, abs=0.035)
 
@@ -238,13 +238,13 @@ def test_polished_spans_in_a_box_that_is_not_the_unit_square():
 
 
 def test_polishing_starts_from_the_admissible_nodes():
-    from demid.sampling.polish import _start_points
-    from demid.sampling.residuals import _residual_evaluator
+    from demid.sampling.polish import start_points
+    from demid.sampling.residuals import residual_evaluator
 
     dom = Domain(("a", "b"), (0.0, -1.0), (2.0, 3.0))
     sur = {"y": _ring([0.9, 1.2])}
     aset = admissible_set(sur, dom, ["y"], {"y": 0.25}, 0.05, 21)
-    starts = _start_points(_residual_evaluator(sur, ("y",), {"y": 0.25}), dom, aset)
+    starts = start_points(residual_evaluator(sur, ("y",), {"y": 0.25}), dom, aset)
     nodes = dom.grid(21)[aset.mask]
     assert len(starts) == aset.n_admissible_nodes > 0
     # one array, not a list of tuples: pytest.approx compares no nested sequences (an error from pytest 9.2)
@@ -273,12 +273,12 @@ def test_grid_error_bounds_the_error_of_the_reference_fraction():
 def test_box_cox_back_transform_inverts_scipy(lam):
     from scipy import special
 
-    from demid.criticism.models import _boxcox, _inv_boxcox
+    from demid.criticism.models import boxcox, inv_boxcox
 
     y = np.array([0.3, 1.0, 2.5, 40.0])
     z = y if lam is None else special.boxcox(y, lam)
-    assert _boxcox(y, lam) == pytest.approx(z)
-    assert _inv_boxcox(z, lam) == pytest.approx(y, rel=1e-12)
+    assert boxcox(y, lam) == pytest.approx(z)
+    assert inv_boxcox(z, lam) == pytest.approx(y, rel=1e-12)
 
 
 # --------------------------------------------------------------------------- transcription
@@ -550,19 +550,19 @@ def test_sobol_evaluation_points_are_stratified_in_search_units():
 
 def test_aicc_is_undefined_without_spare_degrees_of_freedom():
     """AICc = -2 llf + 2k + 2k(k+1)/(n-k-1): a number for n > k + 1, NaN (not +-inf) otherwise."""
-    from demid.criticism.models import _aicc
+    from demid.criticism.models import aicc_of
 
-    assert _aicc(-10.0, 20, 6) == pytest.approx(20.0 + 12.0 + 2 * 6 * 7 / 13)
-    assert np.isnan(_aicc(-10.0, 7, 6)) and np.isnan(_aicc(-10.0, 5, 6))
+    assert aicc_of(-10.0, 20, 6) == pytest.approx(20.0 + 12.0 + 2 * 6 * 7 / 13)
+    assert np.isnan(aicc_of(-10.0, 7, 6)) and np.isnan(aicc_of(-10.0, 5, 6))
 
 
 def test_small_and_large_values_are_written_positionally():
     """Slip generation works on the printed digits, so exponents must never reach it."""
-    from demid.transcription.printed import _positional
+    from demid.transcription.printed import positional
 
-    assert _positional(1e-05) == "0.00001"
-    assert _positional(2.5e16) == "25000000000000000"
-    assert _positional(33.49) == "33.49"
+    assert positional(1e-05) == "0.00001"
+    assert positional(2.5e16) == "25000000000000000"
+    assert positional(33.49) == "33.49"
 
 
 def test_sobol_fraction_of_two_slabs_in_a_scaled_box():

@@ -56,13 +56,13 @@ def test_the_heavy_import_is_seen():
 
 
 def test_schema_parsed_once_and_each_caller_gets_its_own_copy():
-    from demid.schema import _parsed_schema, load_schema
+    from demid.schema import parsed_schema, load_schema
 
     first = load_schema()
     first["properties"].clear()  # a caller changing its copy
     second = load_schema()
     assert second["properties"], "a caller's change reached the next caller"
-    assert second == _parsed_schema.__wrapped__(str(Path(ROOT, "demid", "schemas", "config.schema.yaml")))
-    before = _parsed_schema.cache_info().hits
+    assert second == parsed_schema.__wrapped__(str(Path(ROOT, "demid", "schemas", "config.schema.yaml")))
+    before = parsed_schema.cache_info().hits
     load_schema()
-    assert _parsed_schema.cache_info().hits == before + 1
+    assert parsed_schema.cache_info().hits == before + 1

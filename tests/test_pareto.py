@@ -54,7 +54,7 @@ def test_sort_order_is_the_two_key_lexsort_with_ties():
     """The front's sort (one quicksort, full sort of tied runs only) equals lexsort((second, first))."""
     import numpy as np
 
-    from demid.pareto import _by_first_then_second
+    from demid.pareto import by_first_then_second
 
     rng = np.random.default_rng(7)
     for _ in range(100):
@@ -64,7 +64,7 @@ def test_sort_order_is_the_two_key_lexsort_with_ties():
         first[rng.random(n) < 0.05] = np.nan
         first[rng.random(n) < 0.05] = -0.0
         idx = np.flatnonzero(np.isfinite(first))
-        assert np.array_equal(_by_first_then_second(first, second, idx), idx[np.lexsort((second[idx], first[idx]))])
+        assert np.array_equal(by_first_then_second(first, second, idx), idx[np.lexsort((second[idx], first[idx]))])
 
 
 def _bowl(best_x1: float):

@@ -353,9 +353,9 @@ def test_ranking_reports_gain_fraction_and_contraction_in_closed_form():
 @pytest.mark.parametrize("x, text", [(10000.0, "10,000"), (-10000.0, "-10,000"), (19668.2, "19,668"),
                                      (9999.4, "9999"), (1.5, "1.5")])
 def test_numbers_in_running_text_carry_no_exponent_from_ten_thousand_on(x, text):
-    from demid.criticism.verdict import _plain
+    from demid.criticism.verdict import plain_number
 
-    assert _plain(x) == text
+    assert plain_number(x) == text
 
 
 # --------------------------------------------------------------------------- the next wave's proposed runs

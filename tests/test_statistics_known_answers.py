@@ -13,7 +13,7 @@ import statsmodels.formula.api as smf
 from statsmodels.stats.anova import anova_lm
 from statsmodels.stats.outliers_influence import OLSInfluence
 
-from demid.criticism.models import _hat, _orth
+from demid.criticism.models import leverages, orthonormal_basis
 from demid.surrogate import fit_response
 from demid.transcription import parse_printed
 
@@ -109,9 +109,9 @@ def test_runs_fitted_exactly_have_no_influence_statistics():
 def test_leverage_of_a_single_regressor():
     """One column x: h_i = x_i^2 / sum x^2 (textbook); a rank-1 matrix spans one direction."""
     x = np.array([[1.0], [2.0], [2.0], [4.0]])
-    np.testing.assert_allclose(_hat(x), np.array([1.0, 4.0, 4.0, 16.0]) / 25.0, rtol=1e-12)
+    np.testing.assert_allclose(leverages(x), np.array([1.0, 4.0, 4.0, 16.0]) / 25.0, rtol=1e-12)
     rank_one = np.column_stack([x[:, 0], 3.0 * x[:, 0]])
-    q = _orth(rank_one)
+    q = orthonormal_basis(rank_one)
     assert q.shape == (4, 1)
     np.testing.assert_allclose(np.abs(q[:, 0]), x[:, 0] / 5.0, rtol=1e-12)
 

@@ -20,6 +20,16 @@ def run_snakemake(workdir: Path, configfile: Path, *args: str, timeout: int = 30
     return subprocess.run(cmd, cwd=REPO, capture_output=True, text=True, timeout=timeout, env=env)
 
 
+def written_results(results: Path) -> list[Path]:
+    """The files a run wrote under its results folder, leaving out the jobs' logs and benchmarks (which a
+    stopped job writes too: its one line is in its log) and the mark naming the study the folder belongs to."""
+    results = Path(results)
+    if not results.exists():
+        return []
+    return sorted(p for p in results.rglob("*") if p.is_file()
+                  and p.relative_to(results).parts[0] not in ("logs", "benchmarks", ".demid_study"))
+
+
 def sha256(path: Path) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 

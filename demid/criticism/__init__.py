@@ -87,9 +87,13 @@ experiment: the best point in the domain, the errors there and at the reference
 point, the bottleneck observable, and bias (discrepancy) extensions with their
 cost in parameters and what the measurements can and cannot identify.
 
-Modules: ``models`` (data, models, extended surrogate), ``aliasing``, ``catalogue``
-(the causes and their family-wise test), ``level1``, ``level2``, ``messages`` (findings in
-words), ``verdict`` (what the evidence supports) and ``material`` (the per-material step); the figure is :mod:`demid.plots.criticism`.
+Modules: ``models`` (the public core: :class:`~.models.Data`, :class:`~.models.ModelForm`,
+:class:`~.models.Model`, the extended surrogate), ``aliasing``, ``catalogue`` (the causes and their
+family-wise test, one :class:`~.catalogue.Round` per model), ``slips`` (slipped factor values),
+``extensions`` (each cause's extension), ``naming`` (which cause is named, and the runs that would decide),
+``level1``, ``level2`` with ``searches`` (its best point, shared bias and bottleneck), ``messages``
+(findings in words), ``verdict`` (what the evidence supports) and ``material`` (the per-material step);
+the figure is :mod:`demid.plots.criticism`.
 
 Verified against statsmodels (``compare_f_test``, ``outlier_test``, OLS/WLS
 log-likelihoods, influence PRESS residuals, ``eval_measures.aicc``) and scipy
@@ -104,11 +108,12 @@ from ..lazy import lazy_exports
 _WHERE = {
     "residual_figure": "..plots.criticism",
     "AliasSet": ".aliasing", "separating_runs": ".aliasing",
-    "CAUSES": ".catalogue",
+    "CAUSES": ".catalogue", "Hypothesis": ".catalogue", "Round": ".catalogue",
     "CriticismResult": ".level1", "Finding": ".level1", "criticize": ".level1",
     "Level2Result": ".level2", "calibration_check": ".level2",
     "MaterialCriticism": ".material", "criticize_material": ".material", "reference_point_position": ".material",
-    "TRANSFORM_NAMES": ".models", "ExtendedSurrogate": ".models", "infer_axial_distance": ".models",
+    "TRANSFORM_NAMES": ".models", "Data": ".models", "ExtendedSurrogate": ".models", "Model": ".models",
+    "ModelForm": ".models", "infer_axial_distance": ".models",
 }
 
 __getattr__, __all__ = lazy_exports(__name__, _WHERE)

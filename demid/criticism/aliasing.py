@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..design import LEVERAGE_UNPREDICTABLE, model_matrix
-from .models import _orth, _residualize
+from .models import orthonormal_basis, residualize
 
 if TYPE_CHECKING:
     from ..design import Term
@@ -42,24 +42,25 @@ class AliasSet:
 
 
 @dataclass
-class _TermClass:
+class TermClass:
+    """Candidate terms the design cannot tell apart, and their common direction in the runs."""
     terms: list[Term]
     direction: np.ndarray | None  # unit residualised column (None: not estimable)
 
 
-def _term_classes(coded: np.ndarray, base_terms: list[Term], candidates: list[Term],
-                  extra_columns: np.ndarray | None = None, weights: np.ndarray | None = None
-                  ) -> list[_TermClass]:
+def term_classes(coded: np.ndarray, base_terms: list[Term], candidates: list[Term],
+                 extra_columns: np.ndarray | None = None, weights: np.ndarray | None = None
+                 ) -> list[TermClass]:
     """Group candidate terms whose columns, residualised on the model, are collinear."""
     sw = np.ones(len(coded)) if weights is None else np.sqrt(weights)
     base = model_matrix(coded, base_terms)
     if extra_columns is not None and extra_columns.size:
         base = np.column_stack([base, extra_columns])
-    q = _orth(base * sw[:, None])
+    q = orthonormal_basis(base * sw[:, None])
     hat = np.sum(q * q, axis=1)
     cols = model_matrix(coded, candidates) * sw[:, None]
-    resid = _residualize(q, cols)
-    classes: list[_TermClass] = []
+    resid = residualize(q, cols)
+    classes: list[TermClass] = []
     inestimable = []
     for j, t in enumerate(candidates):
         norm = float(np.linalg.norm(resid[:, j]))
@@ -77,8 +78,8 @@ def _term_classes(coded: np.ndarray, base_terms: list[Term], candidates: list[Te
                 c.terms.append(t)
                 break
         else:
-            classes.append(_TermClass([t], u))
-    return classes + [_TermClass([t], None) for t in inestimable]
+            classes.append(TermClass([t], u))
+    return classes + [TermClass([t], None) for t in inestimable]
 
 
 #: Log pseudo-determinants closer than this are a tie (candidate order decides); distinct candidates
@@ -86,16 +87,18 @@ def _term_classes(coded: np.ndarray, base_terms: list[Term], candidates: list[Te
 _TIE = 1e-4
 
 
-def _candidate_points(n_factors: int, alpha: float) -> np.ndarray:
+def candidate_points(n_factors: int, alpha: float) -> np.ndarray:
+    """Coded points a proposed extra run is chosen from: every combination of the levels -alpha, -1, -0.5, 0,
+    0.5, 1, alpha."""
     levels = sorted({-alpha, -1.0, -0.5, 0.0, 0.5, 1.0, alpha})
     return np.array(list(product(levels, repeat=n_factors)), dtype=float)
 
 
 def _separation_criterion(coded, base_terms, members):
     base = model_matrix(coded, base_terms)
-    q = _orth(base)
+    q = orthonormal_basis(base)
     cols = model_matrix(coded, members)
-    resid = _residualize(q, cols)
+    resid = residualize(q, cols)
     ev = np.linalg.eigvalsh(resid.T @ resid)
     keep = ev > max(float(np.sum(cols * cols)), 1e-300) * 1e-12
     return int(keep.sum()), float(np.sum(np.log(ev[keep]))) if keep.any() else -np.inf
@@ -119,9 +122,9 @@ def _separating_runs_cached(coded_bytes: bytes, shape: tuple, base_terms: tuple,
                             alpha: float) -> np.ndarray:
     coded = np.frombuffer(coded_bytes, dtype=float).reshape(shape)
     base_terms, members = list(base_terms), list(members)
-    cands = _candidate_points(coded.shape[1], alpha)
+    cands = candidate_points(coded.shape[1], alpha)
     cand_base, cand_members = model_matrix(cands, base_terms), model_matrix(cands, members)
-    state = _OneMoreRun.of(np.asarray(coded, dtype=float), base_terms, members, cand_base, cand_members)
+    state = OneMoreRun.of(np.asarray(coded, dtype=float), base_terms, members, cand_base, cand_members)
     chosen = []
     rank, _ = _separation_criterion(np.asarray(coded, dtype=float), base_terms, members)
     while rank < len(members) and len(chosen) < len(members):
@@ -152,7 +155,7 @@ def _first_best(ranks: np.ndarray, logdets: np.ndarray, rank: int) -> int | None
 
 
 @dataclass
-class _OneMoreRun:
+class OneMoreRun:
     """What adding each candidate run to the design does to the members' residual cross-product
     S = Z'(I - P_X)Z: when the candidate's base-model row x lies in the row space of the base matrix X,
     S + e e' / (1 + h), with e = z - B'x its prediction error of the members from the base model (B the
@@ -173,13 +176,13 @@ class _OneMoreRun:
     outside: np.ndarray | None  # candidates off the row space of X (None: X has full column rank)
 
     @classmethod
-    def of(cls, coded, base_terms, members, cand_base, cand_members) -> _OneMoreRun:
+    def of(cls, coded, base_terms, members, cand_base, cand_members) -> OneMoreRun:
         base = model_matrix(coded, base_terms)
         cols = model_matrix(coded, members)
         u, s, vt = np.linalg.svd(base, full_matrices=False)
         keep = s > s[0] * 1e-10 if len(s) and s[0] > 0 else np.zeros(len(s), dtype=bool)
         u, s, v = u[:, keep], s[keep], vt[keep].T
-        resid = _residualize(u, cols)
+        resid = residualize(u, cols)
         scaled = cand_base @ (v / s)                          # candidates in the base's row-space coordinates
         error = cand_members - scaled @ (u.T @ cols)          # z - B'x, with B = V S^-1 U' Z
         outside = None
@@ -190,20 +193,20 @@ class _OneMoreRun:
         return cls(coded, cand_base, cand_members, (v / s ** 2) @ v.T, np.sum(scaled * scaled, axis=1), error,
                    resid.T @ resid, float(np.sum(cols * cols)), outside)
 
-    def with_run(self, index: int, point: np.ndarray, base_terms, members) -> _OneMoreRun:
+    def with_run(self, index: int, point: np.ndarray, base_terms, members) -> OneMoreRun:
         """The state after candidate ``index`` (coded ``point``) joins the design: (X'X)^-1, h, e and S by
         rank-one updates (Sherman-Morrison); rebuilt from an SVD when the base model is not estimable."""
         coded = np.vstack([self.coded, point])
         if self.outside is not None:
-            return _OneMoreRun.of(coded, base_terms, members, self.cand_base, self.cand_members)
+            return OneMoreRun.of(coded, base_terms, members, self.cand_base, self.cand_members)
         x, e = self.cand_base[index], self.error[index]
         spread = 1.0 + self.leverage[index]
         g = self.inverse @ x
         c = self.cand_base @ g                                # x_c' (X'X)^-1 x for every candidate
         z = self.cand_members[index]
-        return _OneMoreRun(coded, self.cand_base, self.cand_members, self.inverse - np.outer(g, g) / spread,
-                           self.leverage - c * c / spread, self.error - np.outer(c, e / spread),
-                           self.current + np.outer(e, e) / spread, self.column_ss + float(z @ z), None)
+        return OneMoreRun(coded, self.cand_base, self.cand_members, self.inverse - np.outer(g, g) / spread,
+                          self.leverage - c * c / spread, self.error - np.outer(c, e / spread),
+                          self.current + np.outer(e, e) / spread, self.column_ss + float(z @ z), None)
 
     def criteria(self) -> tuple[np.ndarray, np.ndarray]:
         """:func:`_separation_criterion` of the design plus each candidate run, for all candidates at once:

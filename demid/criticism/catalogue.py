@@ -15,15 +15,16 @@ import numpy as np
 from scipy import stats
 
 from ..blocks import pure_error_groups
-from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, model_matrix, term_name
+from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, term_name
+from ..fit_statistics import pure_error_ss
 from ..precision import round_off_floor, round_off_only
-from ..surrogate import pure_error_ss
-from .aliasing import _term_classes
-from .models import _orth, _residualize
+from .aliasing import term_classes
+from .models import orthonormal_basis, residualize
+from .slips import slip_candidates, slip_fit, slip_ratios
 
 if TYPE_CHECKING:
-    from .aliasing import _TermClass
-    from .models import _Data, _Model
+    from .aliasing import TermClass
+    from .models import Data, Model
 
 
 CAUSES = ("missing_term", "response_transform", "outlier", "drift", "heteroscedasticity", "factor_level", "step")
@@ -35,23 +36,14 @@ STEP_MIN_RUNS = 2
 #: Family members that show misfit without naming a cause.
 MISFIT_TESTS = ("lack_of_fit",)
 
-# Slips of a recorded factor value tried by ``factor_level``: a decimal point or unit prefix off by one
-# to three places (x 10^k); on log-scaled factors the same slips shift log10 by k.
-_SLIP_POWERS = (-3, -2, -1, 1, 2, 3)
-_SLIP_PRIOR = {1: 0.5, 2: 0.25, 3: 0.25}
-# A slip is only judged where the runs can predict: moved values beyond this multiple of the design's
-# reach (its largest coded level) would be quadratic extrapolation, which fits a wild run by chance.
-_SLIP_REACH = 2.0
-
-
 # Further convenient lambdas, tried when the data reject none of the named ones.
-_NICE_LAMBDAS = (-0.5, 2.0, 1.5, -2.0, 0.25, -0.25)
+NICE_LAMBDAS = (-0.5, 2.0, 1.5, -2.0, 0.25, -0.25)
 
 
 _LAMBDA_TEST_GRID = np.round(np.arange(-2.0, 2.0001, 0.05), 10)
 
 
-_LAMBDA_FINE_GRID = np.round(np.arange(-3.0, 3.0001, 0.01), 10)
+LAMBDA_FINE_GRID = np.round(np.arange(-3.0, 3.0001, 0.01), 10)
 
 
 # Log-linear variance var = sigma^2 exp(gamma v), v in [-1, 1]: the sd ratio across the range is exp(gamma).
@@ -68,12 +60,13 @@ _LAMBDA_FINE_GRID = np.round(np.arange(-3.0, 3.0001, 0.01), 10)
 # few tables (test grid at ratio 7: off-catalogue wrong 0.31 -> 0.26, catalogue strict wrong 0.042 -> 0.046;
 # fit at ratio 30, the generator's own: strict wrong 0.042 -> 0.033, catalogue naming 0.579 -> 0.571), so 12
 # stays.  Scatter is told from a wild run by replicates where the scatters differ (discrimination).
-_GAMMA_BOUND = 2.5
+GAMMA_BOUND = 2.5
 
 
 # =========================================================================== the catalogue
 @dataclass
-class _Hypothesis:
+class Hypothesis:
+    """One cause of the catalogue under test: its kind, what it concerns, the statistic and its p-values."""
     cause: str
     detail: object  # Term class / None / covariate name
     aliases: list[str] = field(default_factory=list)
@@ -89,12 +82,13 @@ class _Hypothesis:
         return self.logp if self.strength is None else self.strength
 
 
-def _f_logp(f, df2):
+def f_logp(f, df2):
+    """log of the upper-tail probability of F(1, df2) at f (negative f read as 0)."""
     with np.errstate(divide="ignore", invalid="ignore"):
         return stats.f.logsf(np.maximum(f, 0.0), 1, df2)
 
 
-def _added_variable_stats(e: np.ndarray, u: np.ndarray, df2: int):
+def added_variable_stats(e: np.ndarray, u: np.ndarray, df2: int):
     """F for adding unit direction u (already orthogonal to the model) to residuals e (n, B)."""
     proj = np.einsum("i,ib->b", u, e)
     sse = np.sum(e * e, axis=0)
@@ -110,7 +104,7 @@ def _added_variable_stats_many(e: np.ndarray, u: np.ndarray, df2: int) -> np.nda
         return proj ** 2 * df2 / np.maximum(sse - proj ** 2, 1e-300 * np.maximum(sse, 1e-300))
 
 
-def step_directions(m: _Model, q: np.ndarray) -> tuple[list[int], np.ndarray]:
+def step_directions(m: Model, q: np.ndarray) -> tuple[list[int], np.ndarray]:
     """Change-points in run order (index into the data of the first run after each) and their step columns
     residualised on the model and normalised (n, C); change-points the model already explains (a block
     boundary) are left out."""
@@ -119,7 +113,7 @@ def step_directions(m: _Model, q: np.ndarray) -> tuple[list[int], np.ndarray]:
     starts, cols = [], []
     for c in range(STEP_MIN_RUNS, len(order) - STEP_MIN_RUNS + 1):
         col = m.step_column(m.keep, int(order[c])) * m.sw
-        r = _residualize(q, col[:, None])[:, 0]
+        r = residualize(q, col[:, None])[:, 0]
         if np.linalg.norm(r) > 1e-6 * max(np.linalg.norm(col), 1e-300):
             starts.append(int(order[c]))
             cols.append(r / np.linalg.norm(r))
@@ -142,10 +136,10 @@ def _outlier_logp(tmax, n, df):
     return np.minimum(0.0, np.log(2.0 * n) + stats.t.logsf(tmax, df - 1))
 
 
-_GAMMA_GRID = np.linspace(-_GAMMA_BOUND, _GAMMA_BOUND, 21)
+GAMMA_GRID = np.linspace(-GAMMA_BOUND, GAMMA_BOUND, 21)
 
 
-def _het_lr(e: np.ndarray, x: np.ndarray, covariate: np.ndarray) -> np.ndarray:
+def heteroscedasticity_lr(e: np.ndarray, x: np.ndarray, covariate: np.ndarray) -> np.ndarray:
     """Likelihood ratio of var_i = sigma^2 exp(gamma z_i) against gamma = 0, for residual columns e.
 
     Profile log-likelihood over a gamma grid (WLS for each gamma, mean refitted);
@@ -154,19 +148,19 @@ def _het_lr(e: np.ndarray, x: np.ndarray, covariate: np.ndarray) -> np.ndarray:
     simulated exactly for the design.
     """
     n = len(covariate)
-    prof = np.empty((len(_GAMMA_GRID), e.shape[1]))
-    for i, g in enumerate(_GAMMA_GRID):
+    prof = np.empty((len(GAMMA_GRID), e.shape[1]))
+    for i, g in enumerate(GAMMA_GRID):
         sw = np.exp(-0.5 * g * covariate)
-        q = _orth(x * sw[:, None])
+        q = orthonormal_basis(x * sw[:, None])
         ew = e * sw[:, None]
-        r = _residualize(q, ew)
+        r = residualize(q, ew)
         with np.errstate(divide="ignore"):
             prof[i] = -0.5 * n * np.log(np.sum(r * r, axis=0) / n) + float(np.sum(np.log(sw)))
-    zero = int(np.argmin(np.abs(_GAMMA_GRID)))
+    zero = int(np.argmin(np.abs(GAMMA_GRID)))
     return 2.0 * (prof.max(axis=0) - prof[zero])
 
 
-def _boxcox_profile(y: np.ndarray, q: np.ndarray, lams: np.ndarray) -> np.ndarray:
+def boxcox_profile(y: np.ndarray, q: np.ndarray, lams: np.ndarray) -> np.ndarray:
     """Profile log-likelihood (lams, B) of Box-Cox lambda for columns of y (n, B) > 0.
 
     l(lambda) = -n/2 log(SSE_lambda / n) + (lambda - 1) sum log y, SSE from the OLS fit
@@ -178,7 +172,7 @@ def _boxcox_profile(y: np.ndarray, q: np.ndarray, lams: np.ndarray) -> np.ndarra
     out = np.empty((len(lams), y.shape[1]))
     for i, lam in enumerate(lams):
         z = logy if lam == 0 else np.expm1(lam * logy) / lam
-        r = _residualize(q, z)
+        r = residualize(q, z)
         out[i] = -0.5 * n * np.log(np.sum(r * r, axis=0) / n) + (lam - 1.0) * slog
     return out
 
@@ -202,10 +196,10 @@ def family_weights(causes: list[str]) -> np.ndarray:
 def weighted_stepdown(causes: list[str], obs: np.ndarray, null: np.ndarray) -> np.ndarray:
     """Family-adjusted p-values: step-down min-P on p / weight (:func:`family_weights`)."""
     shift = np.log(family_weights(causes))
-    return _stepdown_minp(obs - shift, null - shift)
+    return stepdown_minp(obs - shift, null - shift)
 
 
-def _stepdown_minp(obs: np.ndarray, null: np.ndarray) -> np.ndarray:
+def stepdown_minp(obs: np.ndarray, null: np.ndarray) -> np.ndarray:
     """Westfall-Young step-down min-P adjusted p-values from log p-values (m,) and (B, m)."""
     b = null.shape[0]
     order = np.argsort(obs, kind="stable")
@@ -222,16 +216,16 @@ def _stepdown_minp(obs: np.ndarray, null: np.ndarray) -> np.ndarray:
 def _lr_f_logp(lr, df: int, n: int):
     """Log p of a one-parameter likelihood ratio on the F scale, (df-1)(exp(LR/n)-1) ~ F(1, df-1): close to
     calibrated at a dozen runs, where chi-square(1) is far too liberal."""
-    return _f_logp((df - 1) * np.expm1(lr / n), df - 1)
+    return f_logp((df - 1) * np.expm1(lr / n), df - 1)
 
 
-class _Round:
+class Round:
     """One round of the catalogue on the current model: observed statistics and joint null."""
 
-    def __init__(self, data: _Data, model: _Model, n_null: int, rng: np.random.Generator):
+    def __init__(self, data: Data, model: Model, n_null: int, rng: np.random.Generator):
         self.data, self.model = data, model
-        self.hypotheses: list[_Hypothesis] = []
-        self.classes: list[_TermClass] = []
+        self.hypotheses: list[Hypothesis] = []
+        self.classes: list[TermClass] = []
         m = model
         spec = m.spec
         n = len(m.y)
@@ -239,8 +233,8 @@ class _Round:
         if m.df_resid < 3 or round_off_only(m.resid_w, m.z, m.factor_round_off_w):
             return
         eps = rng.standard_normal((n, n_null))
-        q = _orth(m.xw)
-        e_null = _residualize(q, eps)
+        q = orthonormal_basis(m.xw)
+        e_null = residualize(q, eps)
         e_obs = m.resid_w[:, None]
 
         self._missing_terms(data, m, e_obs, e_null)
@@ -270,34 +264,34 @@ class _Round:
             for h, p in zip(self.hypotheses, adj):
                 h.p_family = float(p)
 
-    def _missing_terms(self, data: _Data, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+    def _missing_terms(self, data: Data, m: Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         """A missing cubic term: one hypothesis per alias class of candidates on the current model."""
         df = m.df_resid
         extra = m.x[:, len(m.mean_terms):]  # blocks, drift, step: the model beyond its polynomial
         candidates = [t for t in cubic_terms(len(data.factors)) if t not in m.spec.extra_terms]
-        self.classes = _term_classes(m.coded, m.mean_terms, candidates, extra, m.w)
+        self.classes = term_classes(m.coded, m.mean_terms, candidates, extra, m.w)
         for c in self.classes:
             names = [term_name(t, data.factors) for t in c.terms]
             if c.direction is None:
                 continue
-            f_obs = float(_added_variable_stats(e_obs, c.direction, df - 1)[0])
-            h = _Hypothesis("missing_term", c, names, f_obs, float(_f_logp(f_obs, df - 1)))
-            h.null_logp = _f_logp(_added_variable_stats(e_null, c.direction, df - 1), df - 1)
+            f_obs = float(added_variable_stats(e_obs, c.direction, df - 1)[0])
+            h = Hypothesis("missing_term", c, names, f_obs, float(f_logp(f_obs, df - 1)))
+            h.null_logp = f_logp(added_variable_stats(e_null, c.direction, df - 1), df - 1)
             self.hypotheses.append(h)
 
-    def _drift(self, m: _Model, q: np.ndarray, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+    def _drift(self, m: Model, q: np.ndarray, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         """Drift: the run number as an added variable."""
         df = m.df_resid
         col = m.run_column(m.keep) * m.sw
-        r = _residualize(q, col[:, None])[:, 0]
+        r = residualize(q, col[:, None])[:, 0]
         if np.linalg.norm(r) > 1e-7 * max(np.linalg.norm(col), 1e-300):
             u = r / np.linalg.norm(r)
-            f_obs = float(_added_variable_stats(e_obs, u, df - 1)[0])
-            h = _Hypothesis("drift", "run", [], f_obs, float(_f_logp(f_obs, df - 1)))
-            h.null_logp = _f_logp(_added_variable_stats(e_null, u, df - 1), df - 1)
+            f_obs = float(added_variable_stats(e_obs, u, df - 1)[0])
+            h = Hypothesis("drift", "run", [], f_obs, float(f_logp(f_obs, df - 1)))
+            h.null_logp = f_logp(added_variable_stats(e_null, u, df - 1), df - 1)
             self.hypotheses.append(h)
 
-    def _step(self, m: _Model, q: np.ndarray, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+    def _step(self, m: Model, q: np.ndarray, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         """A shift between two consecutive groups of runs in run order: the largest added-variable F over the
         change-points (at least STEP_MIN_RUNS runs each side); nominal p Bonferroni over the change-points
         (ranking only: the family test uses the simulated joint null of the maximum)."""
@@ -308,46 +302,46 @@ class _Round:
         f_obs = _added_variable_stats_many(e_obs, directions, df - 1)[:, 0]
         best = int(np.argmax(f_obs))
         n_points = len(starts)
-        h = _Hypothesis("step", starts[best], [], float(f_obs[best]),
-                        float(min(0.0, math.log(n_points) + _f_logp(f_obs[best], df - 1))),
-                        info={"change_points": n_points})
+        h = Hypothesis("step", starts[best], [], float(f_obs[best]),
+                       float(min(0.0, math.log(n_points) + f_logp(f_obs[best], df - 1))),
+                       info={"change_points": n_points})
         f_null = _added_variable_stats_many(e_null, directions, df - 1).max(axis=0)
-        h.null_logp = np.minimum(0.0, math.log(n_points) + _f_logp(f_null, df - 1))
+        h.null_logp = np.minimum(0.0, math.log(n_points) + f_logp(f_null, df - 1))
         self.hypotheses.append(h)
 
-    def _outlier(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+    def _outlier(self, m: Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         """The run with the largest externally studentised residual."""
         df, n = m.df_resid, len(m.y)
         t_obs = _outlier_stats(e_obs, m.hat, df)[:, 0]
         i = int(np.argmax(np.abs(t_obs)))
-        h = _Hypothesis("outlier", int(np.flatnonzero(m.keep)[i]), [], float(t_obs[i]),
-                        float(_outlier_logp(abs(t_obs[i]), n, df)))
+        h = Hypothesis("outlier", int(np.flatnonzero(m.keep)[i]), [], float(t_obs[i]),
+                       float(_outlier_logp(abs(t_obs[i]), n, df)))
         h.null_logp = _outlier_logp(np.max(np.abs(_outlier_stats(e_null, m.hat, df)), axis=0), n, df)
         self.hypotheses.append(h)
 
-    def _heteroscedasticity(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+    def _heteroscedasticity(self, m: Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         """Unequal scatter against each factor and the fitted values: likelihood ratio of a log-linear
         variance model; its F-scale p-values only set the ranking (the family test uses the simulated joint null)."""
         df, n = m.df_resid, len(m.y)
         for name, v in self.covariates().items():
-            lr = float(_het_lr(e_obs, m.x, v)[0])
-            h = _Hypothesis("heteroscedasticity", name, [], lr, float(_lr_f_logp(lr, df, n)))
-            h.null_logp = _lr_f_logp(_het_lr(e_null, m.x, v), df, n)
+            lr = float(heteroscedasticity_lr(e_obs, m.x, v)[0])
+            h = Hypothesis("heteroscedasticity", name, [], lr, float(_lr_f_logp(lr, df, n)))
+            h.null_logp = _lr_f_logp(heteroscedasticity_lr(e_null, m.x, v), df, n)
             self.hypotheses.append(h)
 
-    def _response_transform(self, m: _Model, q: np.ndarray, n_null: int, rng: np.random.Generator) -> None:
+    def _response_transform(self, m: Model, q: np.ndarray, n_null: int, rng: np.random.Generator) -> None:
         """Box-Cox: parametric bootstrap from the fitted model, conditional on positive responses;
         joined to the family as an independent uniform (conservative under positive dependence)."""
         df, n = m.df_resid, len(m.y)
         lr_obs = float(self._boxcox_lr(m.y[:, None], q)[0])
         p_boot, n_used = self._boxcox_bootstrap(m, q, lr_obs, n_null, rng)
-        h = _Hypothesis("response_transform", None, [], lr_obs, math.log(p_boot), info={"bootstrap_draws": n_used})
+        h = Hypothesis("response_transform", None, [], lr_obs, math.log(p_boot), info={"bootstrap_draws": n_used})
         # ranked against the other causes by the F form of the likelihood ratio
         h.strength = float(_lr_f_logp(lr_obs, df, n))
         h.null_logp = np.log(rng.uniform(size=n_null))
         self.hypotheses.append(h)
 
-    def _lack_of_fit(self, m: _Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
+    def _lack_of_fit(self, m: Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         labels = None if self.data.block_labels is None else self.data.block_labels[m.keep]
         # the ANOVA's replicates (within their block), so that both judge one pure error
         group = pure_error_groups(m.coded, labels)
@@ -369,12 +363,12 @@ class _Round:
                 return (ss_lof / df_lof) / np.maximum(ss_pe / df_pe, 1e-300 * np.sum(e * e, axis=0) + 1e-300)
 
         f_obs = float(f_stat(e_obs)[0])
-        h = _Hypothesis("lack_of_fit", None, [], f_obs, float(stats.f.logsf(f_obs, df_lof, df_pe)),
-                        info={"df": [df_lof, df_pe]})
+        h = Hypothesis("lack_of_fit", None, [], f_obs, float(stats.f.logsf(f_obs, df_lof, df_pe)),
+                       info={"df": [df_lof, df_pe]})
         h.null_logp = stats.f.logsf(f_stat(e_null), df_lof, df_pe)
         self.hypotheses.append(h)
 
-    def _factor_level(self, data: _Data, m: _Model, eps: np.ndarray) -> None:
+    def _factor_level(self, data: Data, m: Model, eps: np.ndarray) -> None:
         """Largest drop of the residual sum of squares when one run is moved to a slipped value of one
         factor (no parameter added); null by a parametric bootstrap from the fitted model that shares
         its normal draws with the rest of the family."""
@@ -383,7 +377,7 @@ class _Round:
             return
         sigma = math.sqrt(m.ssr / m.df_resid)
         y_all = np.column_stack([m.z, m.fitted_z[:, None] + sigma * eps])
-        ratio, best = _slip_ratios(m, cands, y_all)
+        ratio, best = slip_ratios(m, cands, y_all)
         t_obs = ratio[0]
         null = ratio[1:]
         b = len(null)
@@ -392,12 +386,12 @@ class _Round:
         p_obs = (1.0 + b - np.searchsorted(sorted_null, t_obs - 1e-12, side="left")) / (b + 1.0)
         p_null = (1.0 + b - np.searchsorted(sorted_null, null - 1e-12, side="left")) / (b + 1.0)
         c = cands[int(best[0])]
-        c, info = _slip_fit(m, [d for d in cands if d.row == c.row], len(data.factors))
-        h = _Hypothesis("factor_level", c, [], float(t_obs), math.log(p_obs), info=info)
+        c, info = slip_fit(m, [d for d in cands if d.row == c.row], len(data.factors))
+        h = Hypothesis("factor_level", c, [], float(t_obs), math.log(p_obs), info=info)
         h.null_logp = np.log(p_null)
         self.hypotheses.append(h)
 
-    def _boxcox_bootstrap(self, m: _Model, q: np.ndarray, lr_obs: float, n_null: int,
+    def _boxcox_bootstrap(self, m: Model, q: np.ndarray, lr_obs: float, n_null: int,
                           rng: np.random.Generator, max_batches: int = 20) -> tuple[float, int]:
         """P(LR* >= LR | all y* > 0) under y* = fitted + sigma * N(0, 1); (p, draws used).
 
@@ -422,7 +416,7 @@ class _Round:
 
     @staticmethod
     def _boxcox_lr(y: np.ndarray, q: np.ndarray) -> np.ndarray:
-        prof = _boxcox_profile(y, q, _LAMBDA_TEST_GRID)
+        prof = boxcox_profile(y, q, _LAMBDA_TEST_GRID)
         one = int(np.flatnonzero(_LAMBDA_TEST_GRID == 1.0)[0])
         return 2.0 * (prof.max(axis=0) - prof[one])
 
@@ -439,127 +433,11 @@ class _Round:
             out["fitted"] = (fz - (fz.max() + fz.min()) / 2) / (np.ptp(fz) / 2)
         return out
 
-    def rejected(self, family_alpha: float) -> list[_Hypothesis]:
+    def rejected(self, family_alpha: float) -> list[Hypothesis]:
         """Rejected causes, strongest evidence first (misfit tests that name no cause left out)."""
         rej = [h for h in self.hypotheses if h.p_family <= family_alpha and h.cause in CAUSES]
         return sorted(rej, key=lambda h: (h.rank_key, CAUSES.index(h.cause)))
 
-    def misfit(self, family_alpha: float) -> list[_Hypothesis]:
+    def misfit(self, family_alpha: float) -> list[Hypothesis]:
         """Every rejected family member, causes and misfit tests alike."""
         return [h for h in self.hypotheses if h.p_family <= family_alpha]
-
-
-# =========================================================================== factor-level slips
-@dataclass(frozen=True)
-class SlipCandidate:
-    """Run ``row`` (index into the data) with factor ``factor`` at ``coded`` instead of its recorded level."""
-
-    row: int
-    factor: int
-    power: int
-    coded: float
-
-
-def slip_candidates(data: _Data, m: _Model) -> list[SlipCandidate]:
-    """Every kept run x factor x decimal slip whose value differs from the recorded one."""
-    model_units = data.coding.to_actual(m.coded)
-    reach = _SLIP_REACH * float(np.max(np.abs(data.coded)))
-    out = []
-    for pos, row in enumerate(np.flatnonzero(m.keep)):
-        for j, name in enumerate(data.factors):
-            v = model_units[pos, j]
-            for k in _SLIP_POWERS:
-                moved = v + k if name in data.log_factors else v * 10.0 ** k
-                if moved == v or not np.isfinite(moved):
-                    continue
-                point = model_units[pos].copy()
-                point[j] = moved
-                coded = float(data.coding.to_coded(point[None, :])[0, j])
-                if abs(coded) <= reach:
-                    out.append(SlipCandidate(int(row), j, k, coded))
-    return out
-
-
-def _moved_rows(m: _Model, cands: list[SlipCandidate]) -> np.ndarray:
-    """Model-matrix rows (K, p) of the candidates (run-order column unchanged)."""
-    pos = {int(r): i for i, r in enumerate(np.flatnonzero(m.keep))}
-    coded = np.array([m.coded[pos[c.row]] for c in cands])
-    coded[np.arange(len(cands)), [c.factor for c in cands]] = [c.coded for c in cands]
-    rows = model_matrix(coded, m.mean_terms)
-    beyond = m.x[[pos[c.row] for c in cands], len(m.mean_terms):]  # blocks, drift, step: unchanged
-    return np.column_stack([rows, beyond]) if beyond.shape[1] else rows
-
-
-def _slip_ratios(m: _Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Per column of y (n, B): max over candidates of SSE / SSE(run moved), and the arg max.
-
-    Moving run i changes one row of the model matrix; with the fit without run i (beta_(i),
-    A_(i) = (X_(i)'X_(i))^-1), SSE(moved) = SSE_(i) + (y_i - x' beta_(i))^2 / (1 + x' A_(i) x').
-    The fit without run i comes from the full fit (A = (X'X)^-1, beta, residuals e, leverage h_i) by
-    the leave-one-out identities A_(i) = A + A x_i x_i' A / (1 - h_i), beta_(i) = beta - A x_i e_i / (1 - h_i),
-    SSE_(i) = SSE - e_i^2 / (1 - h_i): one fit in all, not one per run (n fits of n runs: quadratic in
-    the number of runs).
-    """
-    x = m.x
-    rows = _moved_rows(m, cands)
-    pos_of = {int(r): i for i, r in enumerate(np.flatnonzero(m.keep))}
-    q = _orth(x)
-    a = np.linalg.pinv(x.T @ x)
-    beta = a @ (x.T @ y)
-    resid = y - x @ beta
-    sse0 = np.sum(_residualize(q, y) ** 2, axis=0)
-    best = np.zeros(y.shape[1])
-    arg = np.zeros(y.shape[1], dtype=int)
-    by_run: dict[int, list[int]] = {}
-    for k, c in enumerate(cands):
-        by_run.setdefault(pos_of[c.row], []).append(k)
-    for i, ks in by_run.items():
-        if m.hat[i] >= LEVERAGE_UNPREDICTABLE:
-            continue
-        ax = a @ x[i]
-        h_i = float(x[i] @ ax)
-        sse_without = np.maximum(sse0 - resid[i] ** 2 / (1.0 - h_i), 0.0)
-        r = rows[ks]
-        rax = r @ ax
-        g = np.einsum("kp,pq,kq->k", r, a, r) + rax ** 2 / (1.0 - h_i)
-        e_moved = y[i][None, :] - r @ beta + np.outer(rax, resid[i] / (1.0 - h_i))
-        sse_moved = sse_without[None, :] + e_moved ** 2 / (1.0 + g)[:, None]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ratio = sse0[None, :] / np.maximum(sse_moved, 1e-300 * np.maximum(sse0[None, :], 1e-300))
-        top = np.argmax(ratio, axis=0)
-        val = ratio[top, np.arange(y.shape[1])]
-        better = val > best
-        best = np.where(better, val, best)
-        arg = np.where(better, np.asarray(ks)[top], arg)
-    return best, arg
-
-
-def _slip_fit(m: _Model, same_run: list[SlipCandidate], n_factors: int) -> tuple[SlipCandidate, dict]:
-    """The most probable slip of the run, how well it fits, and the Bayes factor of "a slip" against
-    "a mean shift" for the run.
-
-    t_moved / t_recorded: the run's prediction error from the other runs (in standard errors) at the
-    slipped and at the recorded value.  The Bayes factor compares the run's response given the other
-    runs under a slip (prior over the slips: half on one decimal place, a quarter each on two and three,
-    spread evenly over factors and directions) with a mean shift of unknown size, uniform over the
-    observed range of the response; one run can only favour a slip when it lands close to what a
-    slip predicts, compared with how many slips there are and how wide the responses range.
-    """
-    pos = int(np.flatnonzero(np.flatnonzero(m.keep) == same_run[0].row)[0])
-    x = m.x
-    others = np.ones(len(m.z), dtype=bool)
-    others[pos] = False
-    a = np.linalg.pinv(x[others].T @ x[others])
-    beta = a @ (x[others].T @ m.z[others])
-    resid = m.z[others] - x[others] @ beta
-    s = math.sqrt(float(resid @ resid) / max(int(others.sum()) - m.rank, 1))
-    rows = _moved_rows(m, same_run)
-    se = s * np.sqrt(1.0 + np.einsum("kp,pq,kq->k", rows, a, rows))
-    t = (m.z[pos] - rows @ beta) / se
-    weight = np.array([_SLIP_PRIOR[abs(d.power)] / (2 * n_factors) for d in same_run])
-    mass = weight * stats.norm.pdf(t) / se
-    spread = float(np.ptp(m.z))
-    k = int(np.argmax(mass))  # the slip that best explains the run, a priori simpler slips first
-    t_recorded = float((m.z[pos] - x[pos] @ beta) / (s * math.sqrt(1.0 + x[pos] @ a @ x[pos])))
-    return same_run[k], {"t_moved": float(t[k]), "t_recorded": t_recorded,
-                         "bayes_factor": float(np.sum(mass)) * spread if spread > 0 else 0.0}

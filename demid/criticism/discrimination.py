@@ -37,10 +37,10 @@ from scipy import stats
 
 from .. import run_purposes
 from ..design import model_matrix
-from .models import _inv_boxcox, _num, _run_value
+from .models import inv_boxcox, json_number, run_label
 
 if TYPE_CHECKING:
-    from .models import _Data, _Model
+    from .models import Data, Model
 
 #: A cause is named only when its extension's AICc leads every rival kind's by this (see the module text).
 AMBIGUOUS_AICC = 6.0
@@ -49,7 +49,7 @@ AMBIGUOUS_AICC = 6.0
 #: with runs that would confirm it against the rival: a lead below 10 (evidence ratio 150:1) is "strong"
 #: but not "very strong" on Kass & Raftery's scale, and a misnamed cause can only be corrected by runs
 #: that separate it from the truth.  A cause with no rival that close is confirmed against the nearest kind
-#: (level1._confirming_rivals): in benchmarks/decide_causes.py eight of the 32 tables misnamed or ambiguous first
+#: (naming.confirming_rivals): in benchmarks/decide_causes.py eight of the 32 tables misnamed or ambiguous first
 #: (seeds 0-19) were misnamed by a margin of 10-35 and got no runs at all.
 CONFIRM_AICC = 10.0
 
@@ -80,10 +80,12 @@ _ONE_RUN = ("outlier", "factor_level")
 #: A drift and a step both say the response changed with run order, but they differ in what later runs give
 #: (a drift goes on, a step stays): they are candidates of different kinds, and so are steps at different
 #: change-points (a replicate of a run between them, made later, tells which side of the step it was on).
-#: Each pays for its choice (a step among its change-points, level1.step_price) before they are compared.
+#: Each pays for its choice (a step among its change-points, extensions.step_price) before they are compared.
 
 
 def candidate_kind(cause: str, detail) -> tuple:
+    """The kind a cause counts as when candidates are compared: one per run for a shifted run or slipped value,
+    one per change-point for a step."""
     if cause in _ONE_RUN:
         return ("one run", str(detail))
     return ("step", str(detail)) if cause == "step" else (cause,)
@@ -122,7 +124,7 @@ def close_candidates(entries: list[dict], named: tuple | None = None, margin: fl
     return out
 
 
-def _grid(data: _Data) -> np.ndarray:
+def candidate_grid(data: Data) -> np.ndarray:
     """Candidate points in coded units: the data's own (a next wave's box grid) when it has them, else the
     design's levels (-alpha, -1, 0, 1, alpha) in every factor, within the design's reach (no farther from
     the centre than its farthest run)."""
@@ -134,7 +136,7 @@ def _grid(data: _Data) -> np.ndarray:
     return pts[np.linalg.norm(pts, axis=1) <= reach]
 
 
-def _prediction_parts(model: _Model, points: np.ndarray, later: int = 1) -> tuple:
+def prediction_parts(model: Model, points: np.ndarray, later: int = 1) -> tuple:
     """A new run's response at the points under the model, the run made ``later`` runs after the last one:
     (mean, jac, noise, param_cov) with the prediction's covariance over several runs
     jac param_cov jac' + diag(noise) -- the estimation error is shared by every run (a replicate does not
@@ -148,14 +150,14 @@ def _prediction_parts(model: _Model, points: np.ndarray, later: int = 1) -> tupl
     noise = np.full(len(points), sigma2)
     if spec.weight_on is not None:
         noise = sigma2 * np.exp(spec.weight_gamma * _scatter_covariate(model, points))
-    mean = _inv_boxcox(eta, spec.lam)
+    mean = inv_boxcox(eta, spec.lam)
     slope = np.ones(len(points))
     if spec.lam is not None:
-        slope = np.abs(_inv_boxcox(eta + 1e-6, spec.lam) - _inv_boxcox(eta - 1e-6, spec.lam)) / 2e-6
+        slope = np.abs(inv_boxcox(eta + 1e-6, spec.lam) - inv_boxcox(eta - 1e-6, spec.lam)) / 2e-6
     return mean, rows * slope[:, None], noise * slope ** 2, param_cov
 
 
-def _scatter_covariate(model: _Model, points: np.ndarray) -> np.ndarray:
+def _scatter_covariate(model: Model, points: np.ndarray) -> np.ndarray:
     """The covariate unequal scatter follows, at the points: a factor scaled by the axial distance, or the
     predicted value, rescaled.  The latter is the unweighted fit's prediction (blocks at their average),
     so its value at a new point is that fit's, its coefficients recovered exactly from the runs' values."""
@@ -169,13 +171,13 @@ def _scatter_covariate(model: _Model, points: np.ndarray) -> np.ndarray:
     return model_matrix(points, model.mean_terms) @ coef[:len(model.mean_terms)]
 
 
-def _prediction(model: _Model, points: np.ndarray, later: int = 1) -> tuple[np.ndarray, np.ndarray]:
-    """Mean and variance of one new run's response at each of the points (see _prediction_parts)."""
-    mean, jac, noise, cov = _prediction_parts(model, points, later)
+def new_run_prediction(model: Model, points: np.ndarray, later: int = 1) -> tuple[np.ndarray, np.ndarray]:
+    """Mean and variance of one new run's response at each of the points (see prediction_parts)."""
+    mean, jac, noise, cov = prediction_parts(model, points, later)
     return mean, np.einsum("ij,jk,ik->i", jac, cov, jac) + noise
 
 
-def _joint_separation(chosen_a: list, chosen_b: list, parts_a: tuple, parts_b: tuple) -> np.ndarray:
+def joint_separation(chosen_a: list, chosen_b: list, parts_a: tuple, parts_b: tuple) -> np.ndarray:
     """delta' (S_a + S_b)^-1 delta of the chosen runs together with each candidate point (one value per
     point): the squared Mahalanobis distance between two models' predictions of the runs, their estimation
     errors correlated across the runs; plus the part their spreads S_a, S_b make (spread_separation).  chosen_*: (mean, jac row, noise) of each run chosen so far; parts_*:
@@ -222,7 +224,7 @@ def pair_progress(progress: np.ndarray) -> np.ndarray:
     return np.sum(np.minimum(progress, 1.0), axis=1) + 1e-3 * np.min(progress, axis=1)
 
 
-def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
+def discriminating_runs(data: Data, models: list[Model], labels: list[str],
                         aiccs: list[float] | None = None, kinds: list | None = None,
                         purpose: str = PURPOSE) -> list[dict]:
     """Up to MAX_RUNS points where the candidate models' predictions differ most relative to their
@@ -235,7 +237,7 @@ def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
     then; a step has not)."""
     if len(models) < 2:
         return []
-    points = _grid(data)
+    points = candidate_grid(data)
     pairs = [(a, b) for a, b in combinations(range(len(models)), 2) if kinds is None or kinds[a] != kinds[b]]
     if not pairs:
         return []
@@ -243,9 +245,9 @@ def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
     target = np.array([target_separation(g) for g in gaps])
     chosen: list[tuple[int, list, np.ndarray]] = []
     for later in range(1, MAX_RUNS + 1):
-        parts = [_prediction_parts(m, points, later) for m in models]
-        sep = np.column_stack([_joint_separation([c[1][a] for c in chosen], [c[1][b] for c in chosen],
-                                                 parts[a], parts[b]) for a, b in pairs])  # (points, pairs)
+        parts = [prediction_parts(m, points, later) for m in models]
+        sep = np.column_stack([joint_separation([c[1][a] for c in chosen], [c[1][b] for c in chosen],
+                                                parts[a], parts[b]) for a, b in pairs])  # (points, pairs)
         gain = pair_progress(sep / target[None, :])
         # a point already chosen may be chosen again (a replicate), but a new point is preferred on ties
         taken = np.isin(np.arange(len(points)), [c[0] for c in chosen])
@@ -257,11 +259,12 @@ def discriminating_runs(data: _Data, models: list[_Model], labels: list[str],
     for i, run_of_model, sep_i in chosen:
         run = data.point_dict(points[i])
         run["purpose"] = purpose
-        run["expected"] = {label: _num(p[0]) for label, p in zip(labels, run_of_model)}
-        run["separation"] = _num(float(np.min(sep_i)))  # of every pair by the runs so far
+        run["expected"] = {label: json_number(p[0]) for label, p in zip(labels, run_of_model)}
+        run["separation"] = json_number(float(np.min(sep_i)))  # of every pair by the runs so far
         out.append(run)
     return out
 
 
 def candidate_label(cause: str, detail) -> str:
-    return f"{cause} ({_run_value(detail) if not isinstance(detail, str) else detail})"
+    """A candidate as listed in a finding: "outlier (7)"."""
+    return f"{cause} ({run_label(detail) if not isinstance(detail, str) else detail})"

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import optimize
 
-from .models import _g
+from .models import short_number
 
 if TYPE_CHECKING:
     from ..sampling.domain import Domain
@@ -62,8 +62,9 @@ def widen_advice(domain: Domain, best: dict[str, tuple[str, ...]], aset: dict[st
             what.append(f"the admissible set reaches its {' and '.join(set_sides)} bound and may extend beyond it")
         limits = dict(zip(("lower", "upper"), domain.limits[i]))
         beyond = " and ".join(f"{'below' if s == 'lower' else 'above'} "
-                              f"{_g(domain.lower[i] if s == 'lower' else domain.upper[i])}"
-                              + (f" ({'down' if s == 'lower' else 'up'} to its physical limit {_g(limits[s])})"
+                              f"{short_number(domain.lower[i] if s == 'lower' else domain.upper[i])}"
+                              + (f" ({'down' if s == 'lower' else 'up'} to its physical limit "
+                                 f"{short_number(limits[s])})"
                                  if limits[s] is not None else "")
                               for s in sides)
         out.append(f"Widen the range of {f}: {'; '.join(what)}. Simulate runs {beyond} and search there.")
@@ -89,17 +90,21 @@ def extrapolation_warnings(domain: Domain, runs: np.ndarray | None, reference_po
     for i, f in enumerate(domain.factors):
         sides = [s for s, beyond in (("lower", z_lo[i] > tol), ("upper", z_hi[i] < 1 - tol)) if beyond]
         if sides:
-            out.append(f"Extrapolation: the search range of {f}, {_g(domain.lower[i])} to {_g(domain.upper[i])}, "
-                       f"reaches beyond the runs, which cover {_g(run_lo[i])} to {_g(run_hi[i])}; predictions beyond "
+            out.append(f"Extrapolation: the search range of {f}, {short_number(domain.lower[i])} to "
+                       f"{short_number(domain.upper[i])}, "
+                       f"reaches beyond the runs, which cover {short_number(run_lo[i])} to {short_number(run_hi[i])}; "
+                       f"predictions beyond "
                        f"them are the quadratic's extrapolation, not backed by any simulation. Narrow the range to "
                        f"the runs, or simulate runs out to the {' and '.join(sides)} bound.")
     if reference_point:
         ref = np.array([[float(reference_point[f]) for f in domain.factors]])
         u = (domain.to_search(ref)[0] - lo) / span
-        outside = [f"{f} = {_g(float(reference_point[f]))} (runs: {_g(run_lo[i])} to {_g(run_hi[i])})"
+        outside = [f"{f} = {short_number(float(reference_point[f]))} (runs: {short_number(run_lo[i])} to "
+                   f"{short_number(run_hi[i])})"
                    for i, f in enumerate(domain.factors) if u[i] < z_lo[i] - tol or u[i] > z_hi[i] + tol]
-        beyond = [f"{f} = {_g(float(reference_point[f]))} (search range {_g(domain.lower[i])} to "
-                  f"{_g(domain.upper[i])})" for i, f in enumerate(domain.factors) if u[i] < -tol or u[i] > 1 + tol]
+        beyond = [f"{f} = {short_number(float(reference_point[f]))} (search range {short_number(domain.lower[i])} to "
+                  f"{short_number(domain.upper[i])})"
+                  for i, f in enumerate(domain.factors) if u[i] < -tol or u[i] > 1 + tol]
         if beyond:
             out.append(f"The reference point lies outside the search range ({'; '.join(beyond)}): no admissible set "
                        f"or Pareto front can contain it; check its value against the bounds.")

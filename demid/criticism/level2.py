@@ -14,19 +14,17 @@ weighted error is the relative error itself.
 
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
-from scipy import optimize
 
-from ..formulas import relative_error
 from ..tolerance import same_tolerances
 from .edges import extrapolation_warnings, movable_sides, touching, widen_advice
-from .messages import _level2_message
-from .models import _num
+from .messages import and_list, level2_miss_text, level2_tolerance_text, percent_text
+from .models import json_number, short_number
 from .reach import reach_beyond_bound, saturation_advice, saturation_finding
+from .searches import Level2Problem, bottleneck_analysis, minimax, reference_point_errors
 
 
 # =========================================================================== level 2
@@ -114,12 +112,12 @@ class Level2Result:
 
     def to_json(self) -> dict:
         def clean(d):
-            return None if d is None else {k: _num(v) for k, v in d.items()}
+            return None if d is None else {k: json_number(v) for k, v in d.items()}
         return {
             "observables": list(self.observables), "targets": clean(self.targets), "tolerance": self.tolerance,
             "tolerances": {o: self.own_tolerance(o) for o in self.observables},
             "best_point": clean(self.best_point), "best_values": clean(self.best_values),
-            "best_errors": clean(self.best_errors), "best_max_error": _num(self.best_max_error),
+            "best_errors": clean(self.best_errors), "best_max_error": json_number(self.best_max_error),
             "feasible": bool(self.feasible),
             "reference_point": clean(self.reference_point), "reference_values": clean(self.reference_values),
             "reference_errors": clean(self.reference_errors), "reference_max_error": self.reference_max_error,
@@ -135,186 +133,6 @@ class Level2Result:
         }
 
 
-class _Level2Problem:
-    """Relative errors of all observables as a function of a point in unit-scaled search space.
-
-    ``weights`` (ε/ε_k per observable) turn a relative error into the weighted one the searches minimise."""
-
-    def __init__(self, surrogates, domain, targets, observables, weights=None):
-        self.surrogates, self.domain = surrogates, domain
-        self.observables = list(observables)
-        self.targets = np.array([targets[o] for o in self.observables], dtype=float)
-        self.weights = np.ones(len(self.observables)) if weights is None else np.asarray(weights, dtype=float)
-        self.lo, self.hi = domain.search_bounds()
-
-    def actual(self, s: np.ndarray) -> np.ndarray:
-        return self.domain.to_actual(self.lo + np.atleast_2d(s) * (self.hi - self.lo))
-
-    def values(self, s: np.ndarray) -> np.ndarray:
-        x = self.actual(s)
-        return np.stack([np.asarray(self.surrogates[o].predict(x), dtype=float) for o in self.observables])
-
-    def errors(self, s: np.ndarray) -> np.ndarray:
-        return relative_error(self.values(s), self.targets[:, None])
-
-
-def _worst(err: np.ndarray, weights: np.ndarray, shared: bool) -> np.ndarray:
-    """Largest weighted |error| w_k |e_k| per column; with a shared bias, what is left after the best one
-    (:func:`_shared_bias_envelope`)."""
-    if not shared:
-        return (weights[:, None] * np.abs(err)).max(axis=0)
-    return _shared_bias_envelope(err, weights)[0]
-
-
-def _shared_bias_envelope(err: np.ndarray, weights: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Per column of ``err`` (observables x points), min over δ of max_k w_k |e_k - δ| and the δ attaining it,
-    for one relative bias δ shared by every observable: the V-shaped terms of two observables i, j meet at
-    height w_i w_j |e_i - e_j| / (w_i + w_j) where δ = (w_i e_i + w_j e_j) / (w_i + w_j), and the lowest point
-    of their upper envelope is the highest of these pairwise meetings (half the spread when the weights are
-    equal)."""
-    value = np.zeros(err.shape[1])
-    delta = err[0].astype(float) if len(err) else np.zeros(err.shape[1])
-    for i in range(len(err)):
-        for j in range(i + 1, len(err)):
-            wi, wj = weights[i], weights[j]
-            meet = wi * wj * np.abs(err[i] - err[j]) / (wi + wj)
-            higher = meet > value
-            value = np.where(higher, meet, value)
-            delta = np.where(higher, (wi * err[i] + wj * err[j]) / (wi + wj), delta)
-    return value, delta
-
-
-def _shared_bias(e: np.ndarray, w: np.ndarray) -> tuple[float, float]:
-    """(value, δ) of the shared bias at one point (:func:`_shared_bias_envelope`)."""
-    value, delta = _shared_bias_envelope(np.asarray(e, dtype=float)[:, None], w)
-    return float(value[0]), float(delta[0])
-
-
-def _minimax(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, rows: list[int],
-             shared: bool = False, starts: int = 4) -> tuple[float, np.ndarray, float]:
-    """min over the domain of the largest |relative error| of ``rows`` (+ optional shared bias).
-
-    Grid search, then SLSQP on the epigraph form (min t s.t. |e_k(x) - delta| <= t)
-    from the best few grid nodes.  Returns (value, unit point, delta).
-    """
-    weights = problem.weights[rows]
-    worst = _worst(grid_err[rows], weights, shared)
-    order = np.argsort(worst, kind="stable")
-    picks = [order[0]]
-    for i in order[1:]:
-        if len(picks) >= starts:
-            break
-        if np.min(np.max(np.abs(grid_s[picks] - grid_s[i]), axis=1)) > 0.1:
-            picks.append(i)
-    d = grid_s.shape[1]
-
-    def evaluate(s):
-        e = problem.errors(s)[rows, 0]
-        if shared:
-            return _shared_bias(e, weights)
-        return float(np.max(weights * np.abs(e))), 0.0
-
-    best_val, best_s = float(worst[order[0]]), grid_s[order[0]].copy()
-    best_delta = evaluate(best_s)[1]
-    for i in picks:
-        v0, delta0 = evaluate(grid_s[i])
-        x0 = np.concatenate([grid_s[i], [v0], [delta0] if shared else []])
-
-        def cons(v):
-            e = weights * (problem.errors(v[:d])[rows, 0] - (v[d + 1] if shared else 0.0))
-            return np.concatenate([v[d] - e, v[d] + e])
-
-        bounds = [(0.0, 1.0)] * d + [(0.0, None)] + ([(None, None)] if shared else [])
-        with warnings.catch_warnings(), np.errstate(all="ignore"):
-            warnings.simplefilter("ignore")
-            res = optimize.minimize(lambda v: v[d], x0, method="SLSQP", bounds=bounds,
-                                    constraints=[{"type": "ineq", "fun": cons}],
-                                    options={"maxiter": 200, "ftol": 1e-12})
-        s = np.clip(res.x[:d], 0.0, 1.0)
-        val, delta = evaluate(s)
-        if val < best_val:
-            best_val, best_s, best_delta = val, s, delta
-    return best_val, best_s, best_delta
-
-
-#: Weight of the bias sought against the others' largest error in :func:`_smallest_bias`: the others are met
-#: to within this fraction of the range the bias could take.
-_BIAS_WEIGHT = 1e-5
-
-
-def _smallest_bias(problem: _Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, row: int,
-                   others: list[int], starts: int = 4) -> float:
-    """The relative error of observable ``row`` closest to zero among the points that meet the ``others``
-    best.  With fewer other observables than parameters those points form a curve or a surface (or, where
-    the others do not change, the whole domain), and the error at one arbitrary point of it is no bias the
-    data imply; the smallest is.  Solved as min t + w u subject to |e_j| <= t (others), |e_row| <= u, with
-    w = ``_BIAS_WEIGHT``: always feasible, so SLSQP needs no feasible start.
-    """
-    d = grid_s.shape[1]
-    w = problem.weights[others]
-    score = np.max(w[:, None] * np.abs(grid_err[others]), axis=0) + _BIAS_WEIGHT * np.abs(grid_err[row])
-    order = np.argsort(score, kind="stable")
-    picks = [order[0]]
-    for i in order[1:]:
-        if len(picks) >= starts:
-            break
-        if np.min(np.max(np.abs(grid_s[picks] - grid_s[i]), axis=1)) > 0.1:
-            picks.append(i)
-
-    def cons(v):
-        e = problem.errors(v[:d])[:, 0]
-        return np.concatenate([v[d] - w * e[others], v[d] + w * e[others], [v[d + 1] - e[row], v[d + 1] + e[row]]])
-
-    best_score, best_s = np.inf, grid_s[order[0]]
-    for i in picks:
-        e0 = problem.errors(grid_s[i])[:, 0]
-        x0 = np.concatenate([grid_s[i], [np.max(w * np.abs(e0[others])), abs(e0[row])]])
-        with warnings.catch_warnings(), np.errstate(all="ignore"):
-            warnings.simplefilter("ignore")
-            res = optimize.minimize(lambda v: v[d] + _BIAS_WEIGHT * v[d + 1], x0, method="SLSQP",
-                                    bounds=[(0.0, 1.0)] * d + [(0.0, None), (0.0, None)],
-                                    constraints=[{"type": "ineq", "fun": cons}],
-                                    options={"maxiter": 300, "ftol": 1e-15})
-        s = np.clip(res.x[:d], 0.0, 1.0)
-        e = problem.errors(s)[:, 0]
-        value = np.max(w * np.abs(e[others])) + _BIAS_WEIGHT * abs(e[row])
-        if value < best_score:
-            best_score, best_s = value, s
-    return float(problem.errors(best_s)[row, 0])
-
-
-def _reference_errors(surrogates, targets, observables, factors, reference_point):
-    """(values, relative errors) of the observables at the reference point, or (None, None)."""
-    if reference_point is None:
-        return None, None
-    x_ref = np.array([[float(reference_point[f]) for f in factors]])
-    vals = np.stack([np.asarray(surrogates[o].predict(x_ref), dtype=float) for o in observables])[:, 0]
-    ref_values = dict(zip(observables, vals.tolist()))
-    return ref_values, {o: relative_error(v, targets[o]) for o, v in ref_values.items()}
-
-
-def _bottleneck(problem: _Level2Problem, grid_s, grid_err, tolerance: float, feasible: bool):
-    """(without, implied, bottleneck, candidates, biased): per observable the smallest error left when it
-    is dropped and the bias it would need; where no point meets every target, the observable whose
-    target is the bottleneck, those whose bias alone would restore feasibility, and that one if unique."""
-    observables = problem.observables
-    every = list(range(len(observables)))
-    without, implied = {}, {}
-    if len(observables) > 1:
-        for i, o in enumerate(observables):
-            others = [j for j in every if j != i]
-            val, _, _ = _minimax(problem, grid_s, grid_err, others)
-            without[o] = val
-            # where every target is met within the tolerance, no observable needs a bias
-            implied[o] = 0.0 if feasible else _smallest_bias(problem, grid_s, grid_err, i, others)
-    if feasible:
-        return without, implied, None, [], None
-    # Smallest error left when the observable is dropped; near-ties (common when the rest is
-    # exactly solvable) go to the observable needing the smallest bias.
-    bottleneck = (min(without, key=lambda o: (round(without[o] / (1e-3 * tolerance)), abs(implied[o])))
-                  if without else observables[0])
-    candidates = [o for o in observables if without.get(o, np.inf) <= tolerance + 1e-12]
-    return without, implied, bottleneck, candidates, candidates[0] if len(candidates) == 1 else None
 
 
 def calibration_check(surrogates: dict, domain, targets: dict[str, float], tolerance: float, n: int,
@@ -346,42 +164,24 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     factors = list(domain.factors)
     d, k = len(factors), len(observables)
     own = {o: float((tolerances or {}).get(o, tolerance)) for o in observables}
-    problem = _Level2Problem(surrogates, domain, targets, observables,
+    problem = Level2Problem(surrogates, domain, targets, observables,
                              [float(tolerance) / own[o] for o in observables])
     axes = [np.linspace(0.0, 1.0, n)] * d
     grid_s = np.column_stack([m.ravel() for m in np.meshgrid(*axes, indexing="ij")])
     grid_err = problem.errors(grid_s)
     every = list(range(k))
-
-    # An observable no factor moves (a response the same in every run) misses its target by the same amount
-    # everywhere: the largest error then ties over the whole domain and its minimiser is an arbitrary corner.
-    # The best point is sought over the others; the largest error still counts every observable.
-    spread = np.ptp(grid_err, axis=1)
-    unmoved = [i for i in every if spread[i] <= 1e-9 * max(1.0, float(np.max(np.abs(grid_err[i]))))]
-    movable = [i for i in every if i not in unmoved]
-    best_val, best_s, _ = _minimax(problem, grid_s, grid_err, movable if unmoved and movable else every)
-    if unmoved and movable:
-        best_val = float(np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0])))
-    feasible = best_val <= tolerance + 1e-12
-    exact = getattr(strict_set, "exact", None)
-    if exact is not None:
-        feasible = exact.fraction > 0
-        if feasible and best_val > tolerance:
-            # the local search missed a thin set: its admissible point nearest the search's best
-            near = replace(exact, reference=exact.to_model(best_s))
-            best_s = np.clip((domain.to_search(near.nearest_point[None, :])[0] - problem.lo)
-                             / (problem.hi - problem.lo), 0.0, 1.0)
-            best_val = float(np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0])))
+    best_val, best_s, feasible, unmoved, movable = _best_point(problem, grid_s, grid_err, tolerance, strict_set)
     best_x = problem.actual(best_s)[0]
     best_values = dict(zip(observables, problem.values(best_s)[:, 0].tolist()))
     best_errors = dict(zip(observables, problem.errors(best_s)[:, 0].tolist()))
 
-    ref_values, ref_errors = _reference_errors(surrogates, targets, observables, factors, reference_point)
-    without, implied, bottleneck, candidates, biased = _bottleneck(problem, grid_s, grid_err, tolerance, feasible)
+    ref_values, ref_errors = reference_point_errors(surrogates, targets, observables, factors, reference_point)
+    without, implied, bottleneck, candidates, biased = bottleneck_analysis(problem, grid_s, grid_err, tolerance,
+                                                                           feasible)
 
-    shared_val, shared_s, shared_delta = _minimax(problem, grid_s, grid_err, every, shared=True)
-    shared = {"delta": _num(shared_delta), "max_error": _num(shared_val),
-              "point": {f: _num(v) for f, v in zip(factors, problem.actual(shared_s)[0])},
+    shared_val, shared_s, shared_delta = minimax(problem, grid_s, grid_err, every, shared=True)
+    shared = {"delta": json_number(shared_delta), "max_error": json_number(shared_val),
+              "point": {f: json_number(v) for f, v in zip(factors, problem.actual(shared_s)[0])},
               "n_params": d + 1}
     extensions = _level2_extensions(d, k, best_val, shared_val, without, bottleneck)
     result = Level2Result(
@@ -393,24 +193,61 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
         implied_bias=implied, bias_candidates=candidates, biased_observable=biased, shared_bias=shared,
         extensions=extensions, message="", tolerances=own)
     result.unmoved = [observables[i] for i in unmoved]
+    _bounds_and_message(result, surrogates, domain, strict_set, runs, reference_point, implausible,
+                        [observables[i] for i in movable])
+    return result
+
+
+def _best_point(problem: Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, tolerance: float, strict_set):
+    """(largest weighted error, point in unit search space, feasible, unmoved rows, movable rows) of the minimax
+    search; an exact strict set decides feasibility, so that level 2 and Table 3 agree."""
+    every = list(range(len(problem.observables)))
+    # An observable no factor moves (a response the same in every run) misses its target by the same amount
+    # everywhere: the largest error then ties over the whole domain and its minimiser is an arbitrary corner.
+    # The best point is sought over the others; the largest error still counts every observable.
+    spread = np.ptp(grid_err, axis=1)
+    unmoved = [i for i in every if spread[i] <= 1e-9 * max(1.0, float(np.max(np.abs(grid_err[i]))))]
+    movable = [i for i in every if i not in unmoved]
+    best_val, best_s, _ = minimax(problem, grid_s, grid_err, movable if unmoved and movable else every)
+    if unmoved and movable:
+        best_val = float(np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0])))
+    feasible = best_val <= tolerance + 1e-12
+    exact = getattr(strict_set, "exact", None)
+    if exact is not None:
+        feasible = exact.fraction > 0
+        if feasible and best_val > tolerance:
+            # the local search missed a thin set: its admissible point nearest the search's best
+            near = replace(exact, reference=exact.to_model(best_s))
+            best_s = np.clip((problem.domain.to_search(near.nearest_point[None, :])[0] - problem.lo)
+                             / (problem.hi - problem.lo), 0.0, 1.0)
+            best_val = float(np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0])))
+    return best_val, best_s, feasible, unmoved, movable
+
+
+def _bounds_and_message(result: Level2Result, surrogates, domain, strict_set, runs, reference_point,
+                        implausible, movable: list[str]) -> None:
+    """The bounds the best point and the set sit on, those worth widening, the extrapolation warnings, and
+    the result's message and finding; ``movable``: the observables some factor moves."""
+    factors, observables = result.factors, result.observables
+    best_x = np.array([result.best_point[f] for f in factors])
+    unmoved = result.unmoved
     result.best_at_bound = dict(zip(factors, domain.at_bound(best_x, best_x)))
-    if feasible and getattr(strict_set, "at_bound", ()):
+    if result.feasible and getattr(strict_set, "at_bound", ()):
         result.set_at_bound = dict(zip(factors, strict_set.at_bound))
     best_touch, set_touch = touching(result.best_at_bound), touching(result.set_at_bound or {})
-    if unmoved and movable and result.within({observables[i]: best_errors[observables[i]] for i in movable}):
+    if unmoved and movable and result.within({o: result.best_errors[o] for o in movable}):
         best_touch = {}  # the others are met: only the unmoved observables miss, and no range moves them
     if implausible and any(o in implausible for o in observables):
         best_touch = {}  # a target in another unit is missed everywhere: where the best point sits says nothing
-    if not feasible and best_touch:
-        best_touch = _worth_widening(result, surrogates, domain, best_touch,
-                                     [observables[i] for i in (movable or every)])
+    if not result.feasible and best_touch:
+        best_touch = _worth_widening(result, surrogates, domain, best_touch, movable or observables)
     # the bounds to move outwards: not one at a physical limit (its reach above says so when it matters)
     moving_best, moving_set = movable_sides(domain, best_touch), movable_sides(domain, set_touch)
     result.widen = {f: sorted(set(moving_best.get(f, ())) | set(moving_set.get(f, ())), key=("lower", "upper").index)
                     for f in factors if f in moving_best or f in moving_set}
     result.extrapolation = extrapolation_warnings(domain, runs, reference_point)
     stuck = [f"{o} is predicted the same everywhere in the search range (no factor moves it), so no calibration "
-             f"brings it nearer its target: check its simulation output." for o in result.unmoved]
+             f"brings it nearer its target: check its simulation output." for o in unmoved]
     unreachable = [r for r in result.reach if not r.widen]
     result.message = " ".join([_level2_message(result), *stuck, *widen_advice(domain, best_touch, set_touch),
                                *(f"{saturation_finding(r, r.factor, r.observable)} "
@@ -419,7 +256,6 @@ def calibration_check(surrogates: dict, domain, targets: dict[str, float], toler
     result.finding = " ".join([_level2_message(result), *stuck,
                                *(saturation_finding(r, r.factor, r.observable) for r in unreachable),
                                *result.extrapolation])
-    return result
 
 
 def _worth_widening(result: Level2Result, surrogates, domain, touch: dict, observables: list[str]) -> dict:
@@ -448,7 +284,7 @@ def _level2_extensions(d: int, k: int, best: float, shared: float, without: dict
                 "not identifiable: more unknowns than measurements; any point fits and the biases are just "
                 "the residuals there")
         return {"model": model, "n_params": n_params, "n_measurements": k, "spare_measurements": spare,
-                "max_error": _num(max_error), "note": note}
+                "max_error": json_number(max_error), "note": note}
 
     rows = [row("simulation as calibrated (no discrepancy)", d, best)]
     if bottleneck is not None and without:
@@ -456,3 +292,69 @@ def _level2_extensions(d: int, k: int, best: float, shared: float, without: dict
     rows.append(row("shared relative bias on all observables", d + 1, shared))
     rows.append(row("bias on every observable", d + k, 0.0))
     return rows
+
+
+# =========================================================================== level 2 in words
+def _weighted(r: Level2Result, value: float) -> str:
+    """A weighted error (level 2's minimax values): a percentage, or a multiple of the own tolerances."""
+    if r.uniform:
+        return percent_text(value)
+    ratio = value / r.tolerance
+    return (f"{ratio:.2g} times their own tolerances" if ratio >= 0.005 else
+            "a negligible fraction of their own tolerances")
+
+
+def _level2_message(r: Level2Result) -> str:
+    pt = ", ".join(f"{f}={short_number(v)}" for f, v in r.best_point.items())
+    k, d = len(r.observables), len(r.factors)
+    obs = and_list(r.observables)
+    parts = []
+    within = level2_tolerance_text(r.tolerance, r.tolerances)
+    miss = level2_miss_text(r.best_errors, r.tolerance, r.tolerances, at_most=r.feasible)
+    if r.feasible:
+        parts.append(f"Every target ({obs}) can be met within {within}: the best point ({pt}) "
+                     f"misses {miss}.")
+    else:
+        worst = max(r.best_errors, key=lambda o: abs(r.best_errors[o]) / r.own_tolerance(o))
+        how = f"{'over' if r.best_errors[worst] > 0 else 'under'}-predicted"
+        parts.append(f"No point of the domain meets every target ({obs}) within {within}; the "
+                     f"closest point ({pt}) still misses "
+                     + (f"{miss} ({worst} {how})." if r.uniform else f"{miss[:-1]}; {how})."))
+        if r.bottleneck is not None and r.without:
+            b = r.bottleneck
+            parts.append(f"{b} is the bottleneck: without it the others can be met within "
+                         f"{_weighted(r, r.without[b])}, and the simulation would then read {b} "
+                         f"{percent_text(abs(r.implied_bias[b]))} {'high' if r.implied_bias[b] > 0 else 'low'}.")
+            if r.biased_observable is not None:
+                parts.append(f"{b} is the only observable whose removal makes the rest consistent, so a "
+                             f"discrepancy (bias) in {b} explains the mismatch.")
+            elif len(r.bias_candidates) > 1:
+                parts.append(f"But removing any of {and_list(r.bias_candidates)} makes the rest consistent: with "
+                             f"{k} measurements and {d} parameters the data cannot say which one is off "
+                             f"({b} is named because it needs the smallest bias); a further independent "
+                             f"measurement would.")
+            else:
+                parts.append("No single observable explains the mismatch on its own.")
+    if r.reference_errors is not None:
+        ref = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in r.reference_errors.items())
+        ok = r.reference_within
+        parts.append(f"At the reference point the errors are {ref}: it {'meets' if ok else 'misses'} "
+                     + (f"the {percent_text(r.tolerance)} tolerance." if r.uniform else f"{within}."))
+    sb = r.shared_bias
+    spare = k - d - 1
+    meas = f"{k} measurement{'s' if k != 1 else ''} and {d} parameter{'s' if d != 1 else ''}"
+    if r.feasible:
+        return " ".join(parts)
+    if spare < 0:
+        parts.append(f"With {meas}, a shared relative bias on the targets is not identifiable (any point "
+                     f"fits once it is free).")
+    else:
+        parts.append(f"A shared relative bias of {100 * sb['delta']:+.2f} % on all targets would leave "
+                     f"{_weighted(r, sb['max_error'])} at one extra parameter; "
+                     + (f"{spare} spare measurement{'s' if spare != 1 else ''} remain{'' if spare != 1 else 's'} "
+                        f"to test it." if spare > 0 else
+                        f"with {meas} it uses the last spare measurement, so its fit cannot be taken as "
+                        f"evidence of a bias."))
+    parts.append(f"A bias on every observable ({d + k} unknowns for {k} measurement{'s' if k != 1 else ''}) "
+                 f"fits trivially and is not identifiable.")
+    return " ".join(parts)

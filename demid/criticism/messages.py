@@ -6,18 +6,17 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .models import _g, _run_value, _transform_name
+from .models import run_label, short_number, transform_name
 
 if TYPE_CHECKING:
     from ..design import Term
-    from .catalogue import _Hypothesis
-    from .level2 import Level2Result
-    from .models import _Data, _Model
+    from .catalogue import Hypothesis
+    from .models import Data, Model
 
 
-_CAUSE_WORDS = {"missing_term": "missing term", "response_transform": "transform", "outlier": "outlier run",
-                "drift": "drift with", "heteroscedasticity": "unequal scatter with",
-                "factor_level": "another factor level at run", "step": "a step in run order at run"}
+CAUSE_WORDS = {"missing_term": "missing term", "response_transform": "transform", "outlier": "outlier run",
+               "drift": "drift with", "heteroscedasticity": "unequal scatter with",
+               "factor_level": "another factor level at run", "step": "a step in run order at run"}
 
 
 def _gain_phrase(before: float, after: float) -> str:
@@ -31,7 +30,8 @@ def _gain_phrase(before: float, after: float) -> str:
     return f"does not reduce the leave-one-out error (+{100 * (ratio - 1):.0f} %)"
 
 
-def _and(names: list[str]) -> str:
+def and_list(names: list[str]) -> str:
+    """"a", "a and b", "a, b and c"."""
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
@@ -40,20 +40,20 @@ def _describe_term(term: Term, factors: list[str]) -> str:
     if len(powers) == 1:
         return f"curvature along {next(iter(powers))}"
     if len(powers) == 3:
-        return f"a three-factor interaction of {_and(list(powers))}"
+        return f"a three-factor interaction of {and_list(list(powers))}"
     sq = next(f for f, p in powers.items() if p == 2)
     lin = next(f for f, p in powers.items() if p == 1)
     return f"a change of the {sq} curvature with {lin}"
 
 
-def corner_only_runs(data: _Data, term) -> int:
+def corner_only_runs(data: Data, term) -> int:
     """How many corner runs carry ``term`` when they alone do (0 otherwise).
 
     In a 3-factor design, x1*x2*x3 is carried by the factorial (corner) runs alone, where main effects,
     two-factor interactions and that product span all 8 patterns: any difference between the corners the
     quadratic cannot follow, e.g. a change of regime where several factors are high, looks exactly like the
     product on these runs.  (With more factors other products share the corners, and the claim would not
-    hold.)  Such a term is therefore never named (level1._not_singled_out): in benchmarks/honest_causes.py a
+    hold.)  Such a term is therefore never named (naming.why_not_singled_out): in benchmarks/honest_causes.py a
     corner step on a 3-factor CCD was called "missing term x1:x2:x3" in 15 of 20 tables; the rule lowers
     confidently wrong causes on off-catalogue defects from 0.171 to 0.131 (lenient: 0.129 to 0.090) and
     catalogue naming from 0.587 to 0.579 (planted x1:x2:x3 terms are reported unexplained instead)."""
@@ -68,14 +68,15 @@ def _points_text(points: list[dict]) -> str:
     return " and ".join("(" + ", ".join(f"{k}={v:g}" for k, v in p.items()) + ")" for p in points)
 
 
-def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: float,
-             n_compared: int, extra_runs: list[dict], model: _Model) -> str:
+def finding_message(data: Data, h: Hypothesis, info: dict, before: float, after: float,
+                    n_compared: int, extra_runs: list[dict], model: Model) -> str:
+    """A level-1 finding in words: what the model misses, the cause, and what its extension gains."""
     r = data.response
     gain = _gain_phrase(before, after)
     if h.cause == "missing_term":
         rep = h.aliases[0]
         others = h.aliases[1:]
-        alias = f", aliased with {_and(others)} in this design" if others else ""
+        alias = f", aliased with {and_list(others)} in this design" if others else ""
         text = (f"{r}: the quadratic misses {_describe_term(h.detail.terms[0], data.factors)} "
                 f"(term {rep}{alias}); adding it {gain}.")
         if others and extra_runs:
@@ -84,7 +85,7 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
         return text
     if h.cause == "response_transform":
         lam = info["lam"]
-        scale = {"log": "log", "sqrt": "square-root", "inverse": "reciprocal"}.get(_transform_name(lam))
+        scale = {"log": "log", "sqrt": "square-root", "inverse": "reciprocal"}.get(transform_name(lam))
         on = f"on a {scale} scale" if scale else f"after a Box-Cox transform with lambda = {lam:g}"
         lo, hi = info["lambda_ci"]
         kind = "multiplicatively" if lam <= 0.5 else "non-additively"
@@ -92,7 +93,7 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
                 f"(Box-Cox lambda = {info['lambda_hat']:.2f}, 95 % interval {lo:.2f} to {hi:.2f}); "
                 f"fitting there and transforming back {gain}.")
     if h.cause == "outlier":
-        run = _run_value(data.runs[int(h.detail)])
+        run = run_label(data.runs[int(h.detail)])
         if data.simulated:  # demid ran it and read its responses itself: nothing was typed or exported
             why = ("demid simulated that run itself, so it is no transcription or export error: either its "
                    "seed-to-seed scatter is larger than the other runs show, or the simulator failed quietly there "
@@ -101,21 +102,23 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
         else:
             why = ("a transcription or export error is the usual cause, or something that differed for that run "
                    "alone (an input, a setting, a version): check that run")
-        return (f"{r}: run {run} does not fit the other runs (observed {_g(info['observed'])}, "
-                f"the other runs predict {_g(info['predicted_without'])}, externally studentised "
+        return (f"{r}: run {run} does not fit the other runs (observed {short_number(info['observed'])}, "
+                f"the other runs predict {short_number(info['predicted_without'])}, externally studentised "
                 f"residual {h.statistic:.1f}); {why}. Refitting without it {gain} on the other {n_compared} runs.")
     if h.cause == "factor_level":
-        run = _run_value(data.runs[h.detail.row])
+        run = run_label(data.runs[h.detail.row])
         f = info["factor"]
-        return (f"{r}: run {run} fits {f} = {_g(info['fitting_value'])} instead of the recorded "
-                f"{_g(info['recorded_value'])} ({info['slip'].replace('x1e', 'x 10^')}: a unit or decimal slip in the "
-                f"simulation input?): observed {_g(info['observed'])}, the other runs predict it within "
-                f"{abs(info['t_moved']):.1f} standard errors at {f} = {_g(info['fitting_value'])} and "
+        return (f"{r}: run {run} fits {f} = {short_number(info['fitting_value'])} instead of the recorded "
+                f"{short_number(info['recorded_value'])} ({info['slip'].replace('x1e', 'x 10^')}: a unit or decimal "
+                f"slip in the "
+                f"simulation input?): observed {short_number(info['observed'])}, the other runs predict it within "
+                f"{abs(info['t_moved']):.1f} standard errors at {f} = {short_number(info['fitting_value'])} and "
                 f"{abs(info['t_recorded']):.1f} at the recorded value (Bayes factor {info['bayes_factor']:.1f} "
                 f"against a shift of that run alone). Check the input of that run: no further run tells a slip from "
-                f"another error of that run alone (a new run at the recorded value or at {_g(info['fitting_value'])} "
+                f"another error of that run alone (a new run at the recorded value or at "
+                f"{short_number(info['fitting_value'])} "
                 f"follows the surface either way), its input does; using "
-                f"{f} = {_g(info['fitting_value'])} for it {gain}.")
+                f"{f} = {short_number(info['fitting_value'])} for it {gain}.")
     if h.cause == "drift":
         slope = info.get("drift_per_run", float("nan"))
         span = slope * float(np.ptp(data.runs.astype(float)))
@@ -123,7 +126,7 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
                 f"last run): something changed while the runs were made (software version, settings, "
                 f"seeds, hardware). Adding a run-order term {gain}; predictions refer to the mean run order.")
     if h.cause == "step":
-        size, first = info.get("step_size", float("nan")), _run_value(data.runs[int(h.detail)])
+        size, first = info.get("step_size", float("nan")), run_label(data.runs[int(h.detail)])
         return (f"{r}: the runs from run {first} on are shifted by {size:+.4g} against the {info.get('runs_before')} "
                 f"runs before (a step in run order, not a gradual drift): something changed between runs — typically "
                 f"a new block or wave of runs, a software version or a machine. If the runs were made in blocks, add a "
@@ -141,11 +144,14 @@ def _message(data: _Data, h: _Hypothesis, info: dict, before: float, after: floa
     raise ValueError(h.cause)
 
 
-def _pct(x: float) -> str:
-    from ..precision import FAR_RATIO, percent_text
+def percent_text(x: float) -> str:
+    """A fraction as a percentage, two decimals below 10 %, one above; none, a trace or past 10× said so
+    (:mod:`demid.precision`)."""
+    from ..precision import FAR_RATIO
+    from ..precision import percent_text as policy_percent_text
 
-    if abs(x) < 5e-5 or abs(x) > FAR_RATIO:  # none, a trace, or past 10×: said so (demid.precision)
-        return percent_text(x)
+    if abs(x) < 5e-5 or abs(x) > FAR_RATIO:
+        return policy_percent_text(x)
     return f"{100 * x:.2f} %" if abs(x) < 0.1 else f"{100 * x:.1f} %"
 
 
@@ -156,8 +162,8 @@ def level2_tolerance_text(tolerance: float, tolerances: dict[str, float] | None,
 
     own = tolerances or {}
     if same_tolerances(tolerance, own):
-        return _pct(tolerance)
-    listed = ", ".join(f"{o} {_pct(v)}" for o, v in own.items())
+        return percent_text(tolerance)
+    listed = ", ".join(f"{o} {percent_text(v)}" for o, v in own.items())
     return f"their own tolerances ({listed})" if brackets else f"their own tolerances: {listed}"
 
 
@@ -173,73 +179,8 @@ def level2_miss_text(errors: dict[str, float], tolerance: float, tolerances: dic
 
     own = {o: float((tolerances or {}).get(o, tolerance)) for o in errors}
     if same_tolerances(tolerance, own):
-        return f"by {'at most ' if at_most else ''}{_pct(max(abs(e) for e in errors.values()))}"
+        return f"by {'at most ' if at_most else ''}{percent_text(max(abs(e) for e in errors.values()))}"
     worst = max(errors, key=lambda o: abs(errors[o]) / own[o])
     ratio = abs(errors[worst]) / own[worst]
     times = f"{_times(ratio)} times" if ratio >= 0.005 else "a negligible fraction of"
-    return f"{worst} by {_pct(abs(errors[worst]))} ({times} its tolerance of {_pct(own[worst])})"
-
-
-def _weighted(r: Level2Result, value: float) -> str:
-    """A weighted error (level 2's minimax values): a percentage, or a multiple of the own tolerances."""
-    if r.uniform:
-        return _pct(value)
-    ratio = value / r.tolerance
-    return (f"{ratio:.2g} times their own tolerances" if ratio >= 0.005 else
-            "a negligible fraction of their own tolerances")
-
-
-def _level2_message(r: Level2Result) -> str:
-    pt = ", ".join(f"{f}={_g(v)}" for f, v in r.best_point.items())
-    k, d = len(r.observables), len(r.factors)
-    obs = _and(r.observables)
-    parts = []
-    within = level2_tolerance_text(r.tolerance, r.tolerances)
-    miss = level2_miss_text(r.best_errors, r.tolerance, r.tolerances, at_most=r.feasible)
-    if r.feasible:
-        parts.append(f"Every target ({obs}) can be met within {within}: the best point ({pt}) "
-                     f"misses {miss}.")
-    else:
-        worst = max(r.best_errors, key=lambda o: abs(r.best_errors[o]) / r.own_tolerance(o))
-        how = f"{'over' if r.best_errors[worst] > 0 else 'under'}-predicted"
-        parts.append(f"No point of the domain meets every target ({obs}) within {within}; the "
-                     f"closest point ({pt}) still misses "
-                     + (f"{miss} ({worst} {how})." if r.uniform else f"{miss[:-1]}; {how})."))
-        if r.bottleneck is not None and r.without:
-            b = r.bottleneck
-            parts.append(f"{b} is the bottleneck: without it the others can be met within "
-                         f"{_weighted(r, r.without[b])}, and the simulation would then read {b} "
-                         f"{_pct(abs(r.implied_bias[b]))} {'high' if r.implied_bias[b] > 0 else 'low'}.")
-            if r.biased_observable is not None:
-                parts.append(f"{b} is the only observable whose removal makes the rest consistent, so a "
-                             f"discrepancy (bias) in {b} explains the mismatch.")
-            elif len(r.bias_candidates) > 1:
-                parts.append(f"But removing any of {_and(r.bias_candidates)} makes the rest consistent: with "
-                             f"{k} measurements and {d} parameters the data cannot say which one is off "
-                             f"({b} is named because it needs the smallest bias); a further independent "
-                             f"measurement would.")
-            else:
-                parts.append("No single observable explains the mismatch on its own.")
-    if r.reference_errors is not None:
-        ref = ", ".join(f"{o} {100 * e:+.2f} %" for o, e in r.reference_errors.items())
-        ok = r.reference_within
-        parts.append(f"At the reference point the errors are {ref}: it {'meets' if ok else 'misses'} "
-                     + (f"the {_pct(r.tolerance)} tolerance." if r.uniform else f"{within}."))
-    sb = r.shared_bias
-    spare = k - d - 1
-    meas = f"{k} measurement{'s' if k != 1 else ''} and {d} parameter{'s' if d != 1 else ''}"
-    if r.feasible:
-        return " ".join(parts)
-    if spare < 0:
-        parts.append(f"With {meas}, a shared relative bias on the targets is not identifiable (any point "
-                     f"fits once it is free).")
-    else:
-        parts.append(f"A shared relative bias of {100 * sb['delta']:+.2f} % on all targets would leave "
-                     f"{_weighted(r, sb['max_error'])} at one extra parameter; "
-                     + (f"{spare} spare measurement{'s' if spare != 1 else ''} remain{'' if spare != 1 else 's'} "
-                        f"to test it." if spare > 0 else
-                        f"with {meas} it uses the last spare measurement, so its fit cannot be taken as "
-                        f"evidence of a bias."))
-    parts.append(f"A bias on every observable ({d + k} unknowns for {k} measurement{'s' if k != 1 else ''}) "
-                 f"fits trivially and is not identifiable.")
-    return " ".join(parts)
+    return f"{worst} by {percent_text(abs(errors[worst]))} ({times} its tolerance of {percent_text(own[worst])})"

@@ -1,6 +1,11 @@
-"""The data and models level 1 works with: a response's runs in coded units, the
-quadratic and its one-parameter extensions (terms, transform, excluded runs, weights,
-drift), their likelihoods and leave-one-out errors, and the extended surrogate.
+"""The data and models level 1 works with, the public core of :mod:`demid.criticism`.
+
+:class:`Data` is a response's runs in coded units; :class:`ModelForm` is the form of a model (the
+quadratic and its one-parameter extensions: terms, transform, excluded runs, weights, drift, a step);
+:class:`Model` is its fit, with likelihood, AICc and leave-one-out errors; :class:`ExtendedSurrogate`
+predicts with it on the original scale.  The small linear-algebra and text helpers the criticism's
+modules share are here too.  A round of the catalogue's tests on one model is
+:class:`demid.criticism.catalogue.Round`.
 """
 
 from __future__ import annotations
@@ -16,6 +21,12 @@ from ..design import LEVERAGE_UNPREDICTABLE, model_matrix, model_units, term_nam
 if TYPE_CHECKING:
     from ..design import Coding, Term
 
+
+__all__ = [
+    "TRANSFORM_NAMES", "Data", "ExtendedSurrogate", "Model", "ModelForm", "aicc_of", "boxcox",
+    "infer_axial_distance", "inv_boxcox", "json_number", "leverages", "orthonormal_basis", "residualize",
+    "run_label", "short_number", "transform_name",
+]
 
 TRANSFORM_NAMES = {0.0: "log", 0.5: "sqrt", -1.0: "inverse"}
 
@@ -40,7 +51,7 @@ def infer_axial_distance(actual: np.ndarray) -> float:
     return float(np.median(found)) if found else 1.0
 
 
-def _orth(x: np.ndarray) -> np.ndarray:
+def orthonormal_basis(x: np.ndarray) -> np.ndarray:
     """Orthonormal basis of the column space of x (rank-revealing SVD)."""
     if x.shape[1] == 0:
         return np.zeros((x.shape[0], 0))
@@ -48,7 +59,7 @@ def _orth(x: np.ndarray) -> np.ndarray:
     return u[:, s > s[0] * 1e-10] if s[0] > 0 else u[:, :0]
 
 
-def _residualize(q: np.ndarray, x: np.ndarray) -> np.ndarray:
+def residualize(q: np.ndarray, x: np.ndarray) -> np.ndarray:
     """x minus its projection on the orthonormal columns q.
 
     einsum rather than BLAS: for these small, wide matrices it is as fast and it
@@ -57,12 +68,14 @@ def _residualize(q: np.ndarray, x: np.ndarray) -> np.ndarray:
     return x - np.einsum("ij,jb->ib", q, np.einsum("ij,ib->jb", q, x))
 
 
-def _hat(x: np.ndarray) -> np.ndarray:
-    q = _orth(x)
+def leverages(x: np.ndarray) -> np.ndarray:
+    """The hat matrix's diagonal of x: each run's leverage."""
+    q = orthonormal_basis(x)
     return np.sum(q * q, axis=1)
 
 
-def _boxcox(y: np.ndarray, lam: float | None) -> np.ndarray:
+def boxcox(y: np.ndarray, lam: float | None) -> np.ndarray:
+    """The Box-Cox transform of y (scipy's; y itself when lam is None)."""
     if lam is None:
         return y
     from scipy import special  # here, as statsmodels below: demid.story reads this module without either
@@ -70,7 +83,7 @@ def _boxcox(y: np.ndarray, lam: float | None) -> np.ndarray:
     return special.boxcox(y, lam)
 
 
-def _inv_boxcox(z: np.ndarray, lam: float | None) -> np.ndarray:
+def inv_boxcox(z: np.ndarray, lam: float | None) -> np.ndarray:
     """Back-transform; clipped so that extrapolated grid points stay finite."""
     z = np.asarray(z, dtype=float)
     if lam is None:
@@ -81,30 +94,37 @@ def _inv_boxcox(z: np.ndarray, lam: float | None) -> np.ndarray:
     return np.exp(np.clip(np.log(base) / lam, -700, 700))
 
 
-def _aicc(llf: float, nobs: int, k: int) -> float:
+def aicc_of(llf: float, nobs: int, k: int) -> float:
     """AICc = -2 llf + 2k n/(n-k-1) (statsmodels); NaN when n - k - 1 <= 0."""
     from statsmodels.tools.eval_measures import aicc as _sm_aicc
 
     return float(_sm_aicc(llf, nobs, k)) if nobs - k - 1 > 0 else float("nan")
 
 
-def _num(x) -> float | None:
+def json_number(x) -> float | None:
+    """x as a float for a JSON document, None where it is NaN or infinite."""
     x = float(x)
     return x if math.isfinite(x) else None
 
 
-def _run_value(v):
+def run_label(v):
+    """A run's label as written in findings: a whole number as int, anything else as it is."""
     v = v.item() if hasattr(v, "item") else v
     return int(v) if isinstance(v, (int, float)) and float(v).is_integer() else v
 
 
-def _g(x: float, digits: int = 4) -> str:
+def short_number(x: float, digits: int = 4) -> str:
+    """x to ``digits`` significant digits, for running text."""
     return f"{x:.{digits}g}"
 
 
 # =========================================================================== data and models
 @dataclass
-class _Data:
+class Data:
+    """One response's runs as level 1 models them: the factors in coded units (log factors as their
+    logarithm), the response, the run labels in performed order, the coding, and what the models add
+    (block columns, the factors' print round-off, candidate points for proposed runs)."""
+
     response: str
     factors: list[str]
     coded: np.ndarray
@@ -156,8 +176,9 @@ class _Data:
 
 
 @dataclass(frozen=True)
-class _Spec:
-    """A model: quadratic + extra terms [+ run order] on kept runs, optional transform and weights."""
+class ModelForm:
+    """The form of a model, before any fit: the quadratic plus extra terms [+ run order, a step] on the kept
+    runs, with an optional transform and weights (a :class:`Model` keeps it as ``spec``)."""
 
     extra_terms: tuple[Term, ...] = ()
     drift: bool = False
@@ -176,16 +197,17 @@ class _Spec:
                 + int(self.lam is not None) + int(self.weight_on is not None))
 
 
-class _Model:
-    """Fit of a :class:`_Spec` with statsmodels; whitened quantities for the tests."""
+class Model:
+    """Fit of a :class:`ModelForm` to :class:`Data` with statsmodels (OLS, or WLS with weights): the
+    whitened quantities the catalogue's tests use, the likelihood, AICc and exact leave-one-out errors."""
 
-    def __init__(self, data: _Data, spec: _Spec):
+    def __init__(self, data: Data, spec: ModelForm):
         self.data, self.spec = data, spec
         keep = np.ones(data.n, dtype=bool)
         keep[list(spec.dropped)] = False
         self.keep = keep
         self.y = data.y[keep]
-        self.z = _boxcox(self.y, spec.lam)
+        self.z = boxcox(self.y, spec.lam)
         all_coded = data.coded.copy()
         for i, j, value in spec.moved:
             all_coded[i, j] = value
@@ -223,8 +245,8 @@ class _Model:
         self.beta = np.asarray(self.results.params, dtype=float)
         self.fitted_z = x @ self.beta
         self.resid_w = (self.z - self.fitted_z) * self.sw
-        self.hat = _hat(self.xw)
-        self.rank = int(_orth(self.xw).shape[1])
+        self.hat = leverages(self.xw)
+        self.rank = int(orthonormal_basis(self.xw).shape[1])
         self.df_resid = len(self.y) - self.rank
         self.ssr = float(self.resid_w @ self.resid_w)
 
@@ -284,11 +306,11 @@ class _Model:
 
     @property
     def aicc(self) -> float:
-        return _aicc(self.loglik, self.data.n, self.n_params)
+        return aicc_of(self.loglik, self.data.n, self.n_params)
 
     @property
     def fitted(self) -> np.ndarray:
-        return _inv_boxcox(self.fitted_z, self.spec.lam)
+        return inv_boxcox(self.fitted_z, self.spec.lam)
 
     @property
     def loo_errors(self) -> np.ndarray:
@@ -296,7 +318,7 @@ class _Model:
         the others do not predict, see :data:`~demid.design.LEVERAGE_UNPREDICTABLE`)."""
         with np.errstate(divide="ignore", invalid="ignore"):
             press_z = self.resid_w / (1.0 - self.hat) / self.sw
-            err = self.y - _inv_boxcox(self.z - press_z, self.spec.lam)
+            err = self.y - inv_boxcox(self.z - press_z, self.spec.lam)
         return np.where(self.hat < LEVERAGE_UNPREDICTABLE, err, np.nan)
 
     @property
@@ -320,15 +342,15 @@ class _Model:
         s = self.spec
         return {
             "terms": list(self.names),
-            "r2": _num(1 - sse / sst) if sst > 0 else None,
-            "rmse": _num(np.sqrt(sse / len(y))),
-            "loo_rmse": _num(self.loo_rmse_on(self.keep)),
-            "aicc": _num(self.aicc),
+            "r2": json_number(1 - sse / sst) if sst > 0 else None,
+            "rmse": json_number(np.sqrt(sse / len(y))),
+            "loo_rmse": json_number(self.loo_rmse_on(self.keep)),
+            "aicc": json_number(self.aicc),
             "n_runs": int(len(y)),
             "n_params": int(self.n_params),
-            "transform": None if s.lam is None else _transform_name(s.lam),
+            "transform": None if s.lam is None else transform_name(s.lam),
             "weighting": s.weight_on,
-            "excluded_runs": [_run_value(self.data.runs[i]) for i in s.dropped],
+            "excluded_runs": [run_label(self.data.runs[i]) for i in s.dropped],
         }
 
     def surrogate(self) -> "ExtendedSurrogate":
@@ -339,10 +361,11 @@ class _Model:
             terms=list(self.mean_terms), coefficients=self.beta[:k].copy(), lam=self.spec.lam,
             log_factors=self.data.log_factors, drift_per_run=drift / self.run_scale,
             reference_run=self.run_center, weighting=self.spec.weight_on,
-            excluded_runs=tuple(_run_value(self.data.runs[i]) for i in self.spec.dropped))
+            excluded_runs=tuple(run_label(self.data.runs[i]) for i in self.spec.dropped))
 
 
-def _transform_name(lam: float) -> str:
+def transform_name(lam: float) -> str:
+    """The name of a Box-Cox lambda: "log", "sqrt", "inverse" or "boxcox:<lambda>"."""
     for value, name in TRANSFORM_NAMES.items():
         if abs(lam - value) < 1e-9:
             return name
@@ -380,5 +403,5 @@ class ExtendedSurrogate:
         out = np.empty(len(coded))
         for start in range(0, len(coded), chunk):
             eta = model_matrix(coded[start:start + chunk], self.terms) @ self.coefficients
-            out[start:start + chunk] = _inv_boxcox(eta, self.lam)
+            out[start:start + chunk] = inv_boxcox(eta, self.lam)
         return out

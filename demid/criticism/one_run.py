@@ -16,12 +16,12 @@ import numpy as np
 
 from ..design import model_matrix
 from ..surrogate import LOO_REFIT_MAX_RUNS
-from .catalogue import _Round, _added_variable_stats, _f_logp, _het_lr
-from .models import _orth, _residualize
+from .catalogue import Round, added_variable_stats, f_logp, heteroscedasticity_lr
+from .models import orthonormal_basis, residualize
 
 if TYPE_CHECKING:
-    from .catalogue import _Hypothesis
-    from .models import _Data, _Model
+    from .catalogue import Hypothesis
+    from .models import Data, Model
 
 #: Causes that describe the whole design (outliers and slipped runs are one run by nature).
 WHOLE_DESIGN = ("missing_term", "response_transform", "heteroscedasticity", "drift")
@@ -35,9 +35,9 @@ class Deletion:
     p_without: float
 
 
-def deleted_logp(data: _Data, model: _Model, h: _Hypothesis, y: np.ndarray, positions=None) -> np.ndarray:
+def deleted_logp(data: Data, model: Model, h: Hypothesis, y: np.ndarray, positions=None) -> np.ndarray:
     """Nominal log p (runs, B) of cause h's test on response columns y (the model's kept runs, B) with each
-    run left out in turn: the one-parameter tests in their F form, as ranked in catalogue._Round (the
+    run left out in turn: the one-parameter tests in their F form, as ranked in catalogue.Round (the
     likelihood ratios of unequal scatter and Box-Cox through (df - 1)(exp(LR / n) - 1) ~ F(1, df - 1))."""
     n = len(y)
     out = np.zeros((n, y.shape[1]))
@@ -48,35 +48,35 @@ def deleted_logp(data: _Data, model: _Model, h: _Hypothesis, y: np.ndarray, posi
         column = model.run_column(model.keep)
     for pos in range(n) if positions is None else positions:
         keep = np.arange(n) != pos
-        q = _orth(model.x[keep])
+        q = orthonormal_basis(model.x[keep])
         df = int(keep.sum()) - q.shape[1]
         if df < 3:
             continue
         if column is not None:
-            u = _residualize(q, column[keep, None])[:, 0]
+            u = residualize(q, column[keep, None])[:, 0]
             if np.linalg.norm(u) <= 1e-7 * max(np.linalg.norm(column), 1e-300):
                 continue  # the term is not estimable without this run
-            stat = _added_variable_stats(_residualize(q, y[keep]), u / np.linalg.norm(u), df - 1)
-            out[pos] = _f_logp(stat, df - 1)
+            stat = added_variable_stats(residualize(q, y[keep]), u / np.linalg.norm(u), df - 1)
+            out[pos] = f_logp(stat, df - 1)
             continue
         if h.cause == "response_transform":
-            lr = _Round._boxcox_lr(y[keep], q)
+            lr = Round._boxcox_lr(y[keep], q)
         else:
-            lr = _het_lr(y[keep], model.x[keep], _covariate(data, model, h, keep, q))
-        out[pos] = _f_logp((df - 1) * np.expm1(lr / (n - 1)), df - 1)
+            lr = heteroscedasticity_lr(y[keep], model.x[keep], _covariate(data, model, h, keep, q))
+        out[pos] = f_logp((df - 1) * np.expm1(lr / (n - 1)), df - 1)
     return out
 
 
-def _covariate(data: _Data, model: _Model, h: _Hypothesis, keep: np.ndarray, q: np.ndarray) -> np.ndarray:
-    """The variance covariate on the remaining runs, scaled as in catalogue._Round.covariates."""
+def _covariate(data: Data, model: Model, h: Hypothesis, keep: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """The variance covariate on the remaining runs, scaled as in catalogue.Round.covariates."""
     if h.detail != "fitted":
         return data.coded[model.keep, data.factors.index(h.detail)][keep] / data.alpha
     z = model.z[keep]
-    fitted = z - _residualize(q, z[:, None])[:, 0]
+    fitted = z - residualize(q, z[:, None])[:, 0]
     return (fitted - (fitted.max() + fitted.min()) / 2) / max(np.ptp(fitted) / 2, 1e-300)
 
 
-def worst_deletion(data: _Data, model: _Model, h: _Hypothesis) -> Deletion | None:
+def worst_deletion(data: Data, model: Model, h: Hypothesis) -> Deletion | None:
     """The run without which cause h's test on ``model``'s runs is weakest (None for causes of one run and
     for weighted models, whose tests are not run)."""
     if h.cause not in WHOLE_DESIGN or model.spec.weight_on is not None:
@@ -95,24 +95,24 @@ def worst_deletion(data: _Data, model: _Model, h: _Hypothesis) -> Deletion | Non
 SCREENED_RUNS = 32
 
 
-def _weakest_by_identity(data: _Data, model: _Model, h: _Hypothesis) -> np.ndarray:
+def _weakest_by_identity(data: Data, model: Model, h: Hypothesis) -> np.ndarray:
     """The :data:`SCREENED_RUNS` runs whose deletion most weakens the test of unequal scatter, ranked with the
     covariate of all runs held fixed: then each weighted fit without run i follows from the fit with it
     (SSE_(i) = SSE - e_i^2 / (1 - h_i)), one fit per variance slope for all runs instead of one per run and
     slope (n^2 work: hours at 10,000 runs).  :func:`deleted_logp` then redoes the exact test for these runs."""
-    from .catalogue import _GAMMA_GRID
+    from .catalogue import GAMMA_GRID
 
     n, y, x = len(model.z), model.z, model.x
-    covariate = _covariate(data, model, h, np.ones(n, dtype=bool), _orth(x))
-    prof = np.empty((len(_GAMMA_GRID), n))
-    for i, g in enumerate(_GAMMA_GRID):
+    covariate = _covariate(data, model, h, np.ones(n, dtype=bool), orthonormal_basis(x))
+    prof = np.empty((len(GAMMA_GRID), n))
+    for i, g in enumerate(GAMMA_GRID):
         sw = np.exp(-0.5 * g * covariate)
-        q = _orth(x * sw[:, None])
-        r = _residualize(q, (y * sw)[:, None])[:, 0]
+        q = orthonormal_basis(x * sw[:, None])
+        r = residualize(q, (y * sw)[:, None])[:, 0]
         leverage = np.sum(q * q, axis=1)
         with np.errstate(divide="ignore", invalid="ignore"):
             sse = np.maximum(float(r @ r) - r * r / (1.0 - leverage), 1e-300)
             prof[i] = -0.5 * (n - 1) * np.log(sse / (n - 1)) + float(np.sum(np.log(sw))) - np.log(sw)
-    zero = int(np.argmin(np.abs(_GAMMA_GRID)))
+    zero = int(np.argmin(np.abs(GAMMA_GRID)))
     lr = 2.0 * (np.nanmax(prof, axis=0) - prof[zero])
     return np.sort(np.argsort(lr, kind="stable")[:SCREENED_RUNS])

@@ -16,7 +16,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from .models import _g
+from .models import short_number
 
 #: Largest extension (fraction of the search range beyond the bound) worth advising as "widen": further out
 #: the quadratic's extrapolation rests on no run, and a target it reaches there is no evidence the model can.
@@ -26,6 +26,7 @@ _STEP = 0.01  # finite-difference step, fraction of the range
 
 @dataclass(frozen=True)
 class Reach:
+    """How far past a search-range bound the best point would move to meet the target it misses most."""
     factor: str
     side: str                      # lower / upper: the bound the best point sits on
     observable: str                # the observable missing its target most at the best point
@@ -79,7 +80,7 @@ class Reach:
         return cls(**fields)
 
 
-def _smallest_positive_root(a: float, b: float, c: float) -> float:
+def smallest_positive_root(a: float, b: float, c: float) -> float:
     """Smallest t > 0 with a t² + b t + c = 0 (inf when none)."""
     if abs(a) < 1e-12 * max(abs(b), abs(c), 1.0):
         return -c / b if b and -c / b > 0 else np.inf
@@ -122,7 +123,7 @@ def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, o
     gap = direction * (edge - f0)                  # > 0 while outside the band
     rate, bend = direction * g, direction * c      # progress towards the band per unit t, and its change
     straight = gap / rate if rate > 0 else np.inf
-    quadratic = _smallest_positive_root(bend / 2, rate, -gap)
+    quadratic = smallest_positive_root(bend / 2, rate, -gap)
     turn = -rate / bend if rate > 0 and bend < 0 else np.inf
     level = f0 + g * turn + c * turn ** 2 / 2 if np.isfinite(turn) else np.nan
     room = domain.room_beyond(factor, side)
@@ -145,21 +146,27 @@ def saturation_finding(r: Reach, factor: str, observable: str, unit: str = "") -
     u = _spaced(unit)
     if r.beyond_limit:
         if r.limit_extension <= 0.0:
-            return (f"The range of {factor} already ends at its physical limit {_g(r.limit_value)}, where "
-                    f"{observable} still misses its target {_g(r.target)}{u}: no simulation beyond it is possible.")
+            return (f"The range of {factor} already ends at its physical limit {short_number(r.limit_value)}, where "
+                    f"{observable} still misses its target {short_number(r.target)}{u}: no simulation beyond it is "
+                    f"possible.")
         return (f"The surrogate of {observable} reaches its target band only at {factor} ≈ "
-                f"{_g(r.quadratic_factor_value)}, beyond the physical limit of {factor} ({_g(r.limit_value)}): a "
+                f"{short_number(r.quadratic_factor_value)}, beyond the physical limit of {factor} "
+                f"({short_number(r.limit_value)}): a "
                 f"wider range of {factor} cannot reach the target.")
     if r.levels_off and r.levels_off_extension > r.limit_extension:
-        return (f"Along {factor} the surrogate of {observable} stays short of its target {_g(r.target)}{u} up to the "
-                f"physical limit of {factor} ({_g(r.limit_value)}): a wider range of {factor} cannot reach it.")
+        return (f"Along {factor} the surrogate of {observable} stays short of its target {short_number(r.target)}{u} "
+                f"up to the "
+                f"physical limit of {factor} ({short_number(r.limit_value)}): a wider range of {factor} cannot reach "
+                f"it.")
     if r.levels_off:
-        return (f"Along {factor} the surrogate of {observable} levels off at {_g(r.levels_off_value)}{u} "
-                f"({factor} ≈ {_g(r.levels_off_factor_value)}), short of its target {_g(r.target)}{u}: the response "
+        return (f"Along {factor} the surrogate of {observable} levels off at {short_number(r.levels_off_value)}{u} "
+                f"({factor} ≈ {short_number(r.levels_off_factor_value)}), short of its target "
+                f"{short_number(r.target)}{u}: the response "
                 f"saturates along {factor}, so a wider range of {factor} is unlikely to reach the target.")
     if np.isfinite(r.quadratic_extension):
         return (f"The surrogate of {observable} reaches its target band only at {factor} ≈ "
-                f"{_g(r.quadratic_factor_value)}, {100 * r.quadratic_extension:.0f} % of the range beyond the bound: "
+                f"{short_number(r.quadratic_factor_value)}, {100 * r.quadratic_extension:.0f} % of the range beyond "
+                f"the bound: "
                 f"far beyond what the runs support, so a wider range of {factor} is unlikely to reach the target.")
     return (f"Beyond the bound of {factor} the surrogate of {observable} does not approach its target, so a wider "
             f"range of {factor} is unlikely to reach it.")
@@ -170,16 +177,21 @@ def saturation_advice(r: Reach, factor: str, observable: str, unit: str = "") ->
     u = _spaced(unit)
     if r.beyond_limit:
         where = ("its range already ends at its physical limit" if r.limit_extension <= 0.0 else
-                 f"the surrogate reaches the target only at {factor} ≈ {_g(r.quadratic_factor_value)}, beyond its "
+                 f"the surrogate reaches the target only at {factor} ≈ {short_number(r.quadratic_factor_value)}, "
+                 f"beyond its "
                  "physical limit")
-        return (f"Do not widen {factor} for {observable} = {_g(r.target)}{u}: {where} {_g(r.limit_value)}. The "
-                f"missing {_g(abs(r.missing))}{u} of {observable} needs another mechanism in the model (a factor not "
+        return (f"Do not widen {factor} for {observable} = {short_number(r.target)}{u}: {where} "
+                f"{short_number(r.limit_value)}. The "
+                f"missing {short_number(abs(r.missing))}{u} of {observable} needs another mechanism in the model (a "
+                f"factor not "
                 f"varied) or a check of the target.")
     toward = r.slope * (1 if r.side == "upper" else -1) * (1 if r.missing > 0 else -1) > 0
-    straight = (f"; a straight line would reach the target band at {factor} ≈ {_g(r.straight_factor_value)}"
+    straight = (f"; a straight line would reach the target band at {factor} ≈ {short_number(r.straight_factor_value)}"
                 if np.isfinite(r.straight_factor_value) and r.straight_extension <= r.limit_extension else "")
     per = "decade of" if r.log else "unit"
-    return (f"Do not widen {factor} for {observable} = {_g(r.target)}{u}: at the bound {observable} "
-            f"{'gains only' if toward else 'moves away by'} {_g(abs(r.slope))}{u} per {per} {factor}{straight}. "
-            f"The missing {_g(abs(r.missing))}{u} of {observable} needs another mechanism in the model (a factor not "
+    return (f"Do not widen {factor} for {observable} = {short_number(r.target)}{u}: at the bound {observable} "
+            f"{'gains only' if toward else 'moves away by'} {short_number(abs(r.slope))}{u} per {per} "
+            f"{factor}{straight}. "
+            f"The missing {short_number(abs(r.missing))}{u} of {observable} needs another mechanism in the model (a "
+            f"factor not "
             f"varied) or a check of the target.")

@@ -20,13 +20,13 @@ from scipy import optimize, stats
 
 from .. import run_purposes
 from .catalogue import family_weights
-from .models import _g, _num, _run_value
+from .models import json_number, run_label, short_number
 from .one_run import Deletion, worst_deletion
 
 if TYPE_CHECKING:
     from ..surrogate import SurrogateFit
-    from .catalogue import _Hypothesis
-    from .models import _Data, _Model
+    from .catalogue import Hypothesis
+    from .models import Data, Model
 
 VERDICTS = ("adequate", "defect", "unexplained", "does_not_predict", "ambiguous")
 
@@ -40,7 +40,7 @@ NAMING_VERDICTS = ("defect", "does_not_predict")
 RESIDUAL_MISFIT_LEVEL = 0.2
 
 #: A slipped factor value is named only when the run's response is at least this many times more probable
-#: under the slips than under a mean shift of unknown size (Bayes factor, see catalogue._slip_fit): with
+#: under the slips than under a mean shift of unknown size (Bayes factor, see slips.slip_fit): with
 #: equal prior odds, the more probable explanation of the run is named and the other listed with it.
 SLIP_BAYES_FACTOR = 1.0
 
@@ -116,9 +116,9 @@ _TEST_WORDS = {"lack_of_fit": "lack of fit against the replicated runs", "missin
                "step": "step in run order"}
 
 
-def _plain(x: float) -> str:
+def plain_number(x: float) -> str:
     """A number for running text without an exponent: 19,668 rather than 1.967e+04."""
-    return f"{x:,.0f}" if np.isfinite(x) and abs(x) >= 1e4 else _g(x)
+    return f"{x:,.0f}" if np.isfinite(x) and abs(x) >= 1e4 else short_number(x)
 
 
 def _entry_text(e: dict) -> str:
@@ -146,7 +146,7 @@ def strongest_rival(named, hypotheses) -> object | None:
     return min(rivals, key=lambda g: g.logp) if rivals else None
 
 
-def rests_on_one_run(data: _Data, model: _Model, h: _Hypothesis) -> Deletion | None:
+def rests_on_one_run(data: Data, model: Model, h: Hypothesis) -> Deletion | None:
     """The run cause h rests on (its test is not significant at ONE_RUN_P without it), or None."""
     if h.cause not in ONE_RUN_CAUSES:
         return None
@@ -270,6 +270,7 @@ def _specific_share(causes: list[str]) -> float:
 
 def power_caveat(response: str, n_runs: int, df_resid: int, n_tests: int, family_alpha: float,
                  resid_std: float, specific_share: float = 1.0) -> dict:
+    """What an "adequate" verdict can vouch for: the smallest defect the tests find with 80 % power."""
     # One specific test (a shifted run, an omitted term) is run at family_alpha * share / n_tests.
     k = detectable_departure(df_resid, n_tests / specific_share, family_alpha)
     if k is None:
@@ -277,8 +278,8 @@ def power_caveat(response: str, n_runs: int, df_resid: int, n_tests: int, family
                 "message": f"{response}: adequate as far as can be told, but with {n_runs} runs too few spare "
                            f"runs remain to test the quadratic at all."}
     size = k * resid_std if np.isfinite(resid_std) else float("nan")
-    size_text = _plain(size) if np.isfinite(size) and abs(size) >= 1e4 else _g(size, 3)
-    return {"detectable_sd": k, "detectable": _num(size), "power": POWER,
+    size_text = plain_number(size) if np.isfinite(size) and abs(size) >= 1e4 else short_number(size, 3)
+    return {"detectable_sd": k, "detectable": json_number(size), "power": POWER,
             "message": f"{response}: adequate — none of the {n_tests} tests fired at the family-wise "
                        f"{100 * family_alpha:g} % level. With {n_runs} runs the tests find a departure of about "
                        f"{k:.1f} residual standard deviations ({size_text} in response units: one shifted run, "
@@ -294,7 +295,8 @@ def exact_fit_message(response: str, fit: SurrogateFit) -> str:
 
     y = np.asarray(fit.y, dtype=float)
     if np.ptp(y) <= round_off_floor(y):
-        return (f"{response}: the same value ({_g(float(y[0]))}) in every run — within the design's range no factor "
+        return (f"{response}: the same value ({short_number(float(y[0]))}) in every run — within the design's range "
+                f"no factor "
                 "moves it, so it cannot identify any of them, and there is no scatter to criticise.")
     if round_off_only(fit.results.resid, y, fit.factor_round_off):
         return (f"{response}: the quadratic goes through every run to round-off or to the precision the values "
@@ -312,7 +314,8 @@ def unpredictable_runs_message(fit: SurrogateFit) -> str:
     which = f"Run {runs[0]} alone fixes" if len(runs) == 1 else f"Runs {', '.join(map(str, runs))} alone fix"
     return (f" {which} the quadratic at {'its point' if len(runs) == 1 else 'their points'} (leverage "
             f"{float(np.max(fit.hat_diag[fit.fitted_exactly])):.6g}; a lone centre run does): the fit is not checked "
-            f"there and Q² is undefined; a replicate of {'that run' if len(runs) == 1 else 'those runs'} would check it.")
+            f"there and Q² is undefined; a replicate of {'that run' if len(runs) == 1 else 'those runs'} would check "
+            f"it.")
 
 
 def runs_for_next_wave(runs, candidates, verdict: str) -> bool:
@@ -329,7 +332,7 @@ OUTLIER_REPLICATES = 2
 UNEXPLAINED_REPLICATED_RUNS = 2
 
 
-def replicate_runs(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None) -> list[dict]:
+def replicate_runs(data: Data, fit: SurrogateFit, findings: list, unexplained: dict | None) -> list[dict]:
     """Replicates at runs already made, for a next wave ([] where none is called for).
 
     A simulated table's run named an outlier (the first cause named, the one proposed runs serve):
@@ -337,18 +340,18 @@ def replicate_runs(data: _Data, fit: SurrogateFit, findings: list, unexplained: 
     slip, so replicates are what tell seed-to-seed scatter from a failure of that run).  An unexplained misfit:
     one replicate of each of the :data:`UNEXPLAINED_REPLICATED_RUNS` runs of largest |studentised residual|, so
     that the next wave measures the scatter where the surrogate misses most and can name the cause."""
-    position = {_run_value(r): i for i, r in enumerate(data.runs)}
+    position = {run_label(r): i for i, r in enumerate(data.runs)}
 
     def at(run, purpose: str) -> dict:
-        x = data.to_actual(data.coded[position[_run_value(run)]][None, :])[0]
+        x = data.to_actual(data.coded[position[run_label(run)]][None, :])[0]
         return {**{f: float(f"{v:.10g}") + 0.0 for f, v in zip(data.factors, x)}, "purpose": purpose,
-                "replicate_of": _run_value(run)}
+                "replicate_of": run_label(run)}
 
     if data.simulated and findings and findings[0].cause == "outlier":  # the cause the proposed runs serve
         return [at(findings[0].detail, run_purposes.CONFIRM) for _ in range(OUTLIER_REPLICATES)]
     if unexplained:
         frame = fit.influence()
-        frame = frame[frame["run"].map(lambda r: _run_value(r) in position)]
+        frame = frame[frame["run"].map(lambda r: run_label(r) in position)]
         worst = frame.reindex(frame["student_resid"].abs().sort_values(ascending=False, kind="stable").index)
         return [at(run, run_purposes.DECIDE) for run in worst["run"].head(UNEXPLAINED_REPLICATED_RUNS)]
     return []
@@ -366,7 +369,7 @@ def replicate_message(runs: list[dict], simulated: bool) -> str:
             f"and the next analysis can name the cause; {made}.")
 
 
-def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
+def verdict_of(data: Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
                family_alpha: float, candidates: list[dict] = (), runs: list[dict] = ()) -> tuple[str, dict]:
     """The verdict and what supports it (numbers for the JSON, a message for the report)."""
     verdict, detail = _verdict(data, fit, findings, unexplained, catalogue, family_alpha)
@@ -391,19 +394,20 @@ def verdict_of(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict
     return verdict, detail
 
 
-def _verdict(data: _Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
+def _verdict(data: Data, fit: SurrogateFit, findings: list, unexplained: dict | None, catalogue: list[dict],
              family_alpha: float) -> tuple[str, dict]:
     st = fit.statistics()
     n = st.n_runs
     loo = math.sqrt(st.press / n) if np.isfinite(st.press) else float("nan")
-    detail = {"q2": _num(st.q2), "loo_rmse": _num(loo), "rmse": _num(st.rmse), "lof_p": _num(st.lof_p)}
+    detail = {"q2": json_number(st.q2), "loo_rmse": json_number(loo), "rmse": json_number(st.rmse), "lof_p": json_number(st.lof_p)}
     r = data.response
     if np.isfinite(st.q2) and st.q2 < 0:
         why = ("" if not (findings or unexplained) else
                f" Criticism: {'; '.join(f'{f.cause} ({f.detail})' for f in findings) or 'misfit unexplained'}.")
         detail["message"] = (f"{r}: does not predict — the quadratic predicts left-out runs worse than their mean "
-                             f"(Q² = {st.q2:.2f}; leave-one-out error {_plain(loo)} against a residual RMSE of "
-                             f"{_plain(st.rmse)}). Do not use this surrogate to decide admissibility; scenarios that "
+                             f"(Q² = {st.q2:.2f}; leave-one-out error {plain_number(loo)} against a residual RMSE of "
+                             f"{plain_number(st.rmse)}). Do not use this surrogate to decide admissibility; scenarios "
+                             f"that "
                              f"use {r} inherit its error.{why}")
         return "does_not_predict", detail
     if findings:

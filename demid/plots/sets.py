@@ -149,28 +149,7 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, judg
                             cmap=cmap, vmin=0, vmax=1, interpolation="nearest")
             if zoom is not None:
                 break  # the pair is drawn in both panels above
-    names = list(domain.factors)
-    for ax, (i, j) in zip(axes[0], pairs):
-        ax.set_xlabel(axis_label(spec.factor(names[i])))
-        ax.set_ylabel(axis_label(spec.factor(names[j])))
-        lo, hi = domain.search_bounds()
-        ax.set_xlim(lo[i], hi[i])
-        ax.set_ylim(lo[j], hi[j])
-        _axis_scale(ax, domain, i, j)
-        if reference_point:
-            ref = domain.to_search(np.array([[reference_point[f] for f in names]]))[0]
-            ax.plot(ref[i], ref[j], marker="*", ms=11, color="#D55E00", mec="k", mew=0.6, ls="none")
-    if d > 2:  # each panel shows the set's shadow on one pair of factors
-        for ax, (i, j) in zip(axes[0], pairs):
-            rest = ", ".join(tex_label(spec.factor(names[k]).label) for k in range(d) if k not in (i, j))
-            ax.set_title(f"projection: any {rest}", fontsize=9)
-    if zoom is not None:
-        (x0, x1), (y0, y1) = zoom
-        axes[0][1].set_xlim(x0, x1)
-        axes[0][1].set_ylim(y0, y1)
-        axes[0][1].set_title("zoom on the admissible sets", fontsize=9)
-        axes[0][0].set_title("whole search range", fontsize=9)
-        axes[0][0].add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, ec="0.3", lw=0.8, ls=":"))
+    _decorate_panels(axes[0], pairs, spec, zoom)
     if reference_point:
         handles.append(plt.Line2D([], [], marker="*", ms=10, color="#D55E00", mec="k", ls="none",
                                   label="reference point"))
@@ -180,3 +159,31 @@ def sets_figure(spec: MaterialSpec, sets: dict[str, AdmissibleSet], n: int, judg
     # laid out when drawn (demid.io.save_figure), once, at the resolution it is saved at
     fig.set_layout_engine("tight", rect=(0, legend_in / (height + legend_in), 1, 1))
     return fig
+
+
+def _decorate_panels(panels, pairs: list[tuple[int, int]], spec: MaterialSpec, zoom) -> None:
+    """Each panel's axis labels, limits and scales, the reference point, a projection's title, and the zoom
+    panel's box (``zoom``: its ranges, None without one)."""
+    d = spec.domain.dim
+    domain, names = spec.domain, list(spec.domain.factors)
+    for ax, (i, j) in zip(panels, pairs):
+        ax.set_xlabel(axis_label(spec.factor(names[i])))
+        ax.set_ylabel(axis_label(spec.factor(names[j])))
+        lo, hi = domain.search_bounds()
+        ax.set_xlim(lo[i], hi[i])
+        ax.set_ylim(lo[j], hi[j])
+        _axis_scale(ax, domain, i, j)
+        if spec.reference_point:
+            ref = domain.to_search(np.array([[spec.reference_point[f] for f in names]]))[0]
+            ax.plot(ref[i], ref[j], marker="*", ms=11, color="#D55E00", mec="k", mew=0.6, ls="none")
+    if d > 2:  # each panel shows the set's shadow on one pair of factors
+        for ax, (i, j) in zip(panels, pairs):
+            rest = ", ".join(tex_label(spec.factor(names[k]).label) for k in range(d) if k not in (i, j))
+            ax.set_title(f"projection: any {rest}", fontsize=9)
+    if zoom is not None:
+        (x0, x1), (y0, y1) = zoom
+        panels[1].set_xlim(x0, x1)
+        panels[1].set_ylim(y0, y1)
+        panels[1].set_title("zoom on the admissible sets", fontsize=9)
+        panels[0].set_title("whole search range", fontsize=9)
+        panels[0].add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, ec="0.3", lw=0.8, ls=":"))

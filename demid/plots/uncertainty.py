@@ -19,7 +19,7 @@ def _style(k: int) -> dict:
             "marker": _MARKERS[k % len(_MARKERS)]}
 
 
-def _spaced(values: list[float], min_decades: float = 0.15) -> set[float]:
+def spaced_ticks(values: list[float], min_decades: float = 0.15) -> set[float]:
     """The tick values to label on a log axis: none closer than ``min_decades`` to the last one
     labelled (7.5 beside 10 would print as "7.510" on a narrow panel)."""
     import math
@@ -101,7 +101,7 @@ def tolerance_sweep_figure(frame: pd.DataFrame, title: str, *, factor_labels: di
         ax.set_xscale("log")
         if len(swept) <= 10:  # ticks at the swept tolerances, written as plain percentages (2, not 2x10^0)
             ax.xaxis.set_major_locator(FixedLocator(swept))
-            labelled = _spaced(swept)
+            labelled = spaced_ticks(swept)
             ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}" if v in labelled else ""))
             ax.xaxis.set_minor_formatter(NullFormatter())
         ax.grid(True, which="both", alpha=0.3)

@@ -4,7 +4,8 @@
 decision), ``residuals`` (the one relative-residual evaluator and plausibility fields), ``grid``
 and ``sobol`` (the two estimators), ``polish`` (span ends on the exact boundary) and ``evaluate``
 (:func:`evaluate_set`: the one strict-set evaluator -- exact for polynomial surrogates in up to
-3 factors via ``exact``, else the estimator :func:`uses_grid` picks).
+3 factors via ``exact``, with its ``planes``, polynomial ``roots`` and adaptive ``quadrature``, else
+the estimator :func:`uses_grid` picks).
 
 The estimators (scipy) load on first use (PEP 562), so the workflow's parse step and the
 spec import only the domain.

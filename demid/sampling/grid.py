@@ -20,7 +20,7 @@ import numpy as np
 import pandas as pd
 
 from ..formulas import relative_error
-from .residuals import _fields, _residual_evaluator, relative_residuals
+from .residuals import _fields, residual_evaluator, relative_residuals
 
 if TYPE_CHECKING:
     from .domain import Domain
@@ -98,7 +98,7 @@ def _corner_views(arr: np.ndarray):
         yield arr[tuple(slice(o, o + s - 1) for o, s in zip(offs, arr.shape))]
 
 
-def _cell_range(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def cell_range(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Smallest and largest corner value of every grid cell of a node array.
 
     The minimum over a cell's 2**d corners is taken one axis at a time (d passes over the grid
@@ -191,7 +191,7 @@ def cell_count(resid: np.ndarray, eps: float, domain: Domain, step: np.ndarray, 
     which = np.zeros(cells, dtype=np.int16)
     suspicious = np.zeros(cells, dtype=bool)
     for j, r in enumerate(resid):
-        lo, hi = _cell_range(r)
+        lo, hi = cell_range(r)
         m = _curvature_margin(r)
         in_j = (lo - m >= -eps) & (hi + m <= eps)
         out_j = (hi + m < -eps) | (lo - m > eps)
@@ -388,7 +388,7 @@ def fraction_with_error(surrogates: dict[str, Surrogate], domain: Domain, observ
         grid_predictions = predict_grid(fields, domain, n)
     resid = np.stack([relative_error(grid_predictions[o].to_numpy(), targets[o])
                       for o in observables]).reshape((len(observables),) + (n,) * d)
-    evaluate = _residual_evaluator(fields, observables, targets)
+    evaluate = residual_evaluator(fields, observables, targets)
     s = subdivisions or (16 if d <= 2 else 4)
     lo_u, hi_u = domain.search_bounds()
     step = (hi_u - lo_u) / (n - 1)

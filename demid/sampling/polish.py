@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .residuals import _fields, _residual_evaluator
+from .residuals import _fields, residual_evaluator
 
 if TYPE_CHECKING:
     from .domain import Domain
@@ -20,7 +20,7 @@ if TYPE_CHECKING:
 
 
 # =========================================================================== span polishing
-def _start_points(evaluate, domain: Domain, aset: AdmissibleSet) -> np.ndarray:
+def start_points(evaluate, domain: Domain, aset: AdmissibleSet) -> np.ndarray:
     """Grid nodes to start polishing from: admissible nodes, else the least-violating ones."""
     d = domain.dim
     n = int(round(aset.n_nodes ** (1.0 / d)))
@@ -94,5 +94,5 @@ def polish_spans(surrogates: dict[str, Surrogate], domain: Domain, observables, 
     if admissible_set.empty or not np.isfinite(lower).all():
         return lower, upper
     fields = _fields(surrogates, observables, targets, eps, z, sigma)
-    evaluate = _residual_evaluator(fields, observables, targets)
-    return _polish(evaluate, domain, eps, lower, upper, _start_points(evaluate, domain, admissible_set), starts)
+    evaluate = residual_evaluator(fields, observables, targets)
+    return _polish(evaluate, domain, eps, lower, upper, start_points(evaluate, domain, admissible_set), starts)

@@ -113,7 +113,8 @@ def _fields(surrogates, observables, targets, tolerance, z, sigma) -> dict:
     return {o: surrogates[o] for o in observables}
 
 
-def _residual_evaluator(fields, observables, targets):
+def residual_evaluator(fields, observables, targets):
+    """The relative residuals (K, N) of the observables at N points: the one evaluator the estimators share."""
     def evaluate(x):
         return np.stack([relative_error(fields[o].predict(x), targets[o]) for o in observables])
     return evaluate

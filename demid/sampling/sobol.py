@@ -13,7 +13,7 @@ import numpy as np
 
 from .grid import AdmissibleSet, predict_grid
 from .polish import _polish
-from .residuals import _fields, _residual_evaluator, relative_residuals
+from .residuals import _fields, residual_evaluator, relative_residuals
 
 if TYPE_CHECKING:
     from .domain import Domain
@@ -94,7 +94,7 @@ def sobol_fraction(surrogates: dict[str, Surrogate], domain: Domain, observables
     observables = tuple(observables)
     eps = float(tolerance)
     fields = _fields(surrogates, observables, targets, eps, z, sigma)
-    evaluate = _residual_evaluator(fields, observables, targets)
+    evaluate = residual_evaluator(fields, observables, targets)
     m = max(1, int(round(np.log2(max(n_points / replicates, 2)))))
     rng = np.random.default_rng(seed)
     lo_u, hi_u = domain.search_bounds()

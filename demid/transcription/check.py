@@ -13,8 +13,8 @@ import pandas as pd
 from ..design import Coding, quadratic_terms
 from ..errors import InputError
 from ..io import CSV_SIGNIFICANT_DIGITS
-from .engine import (_ALPHA_SLACK, _DesignFit, _coded_to_actual_matrix, _design_levels, _evaluate_designs,
-                     _lack_of_fit_p, _levels_for_cell, _numeric, _runs)
+from .engine import (_ALPHA_SLACK, DesignFit, _coded_to_actual_matrix, _design_levels, evaluate_designs,
+                     lack_of_fit_p, _levels_for_cell, _numeric, _runs)
 from .printed import (_agreement, _cell_texts, _format, _irregularity, _jsonable, _parse_published,
                       _precision_elsewhere, parse_printed)
 from .typos import _KIND_RANK, KINDS, SLIP_WORDS, single_cell_slips
@@ -144,8 +144,7 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     model units), as in :func:`~demid.surrogate.fit_response`.  Returns a
     :class:`TranscriptionResult`; raises :class:`InputError` for unusable input.
     """
-    # Over 80 lines only by its docstring: the body (about 60 lines) is the verdict's outline;
-    # reading cells, building hypotheses and ranking repairs are the helpers below.
+    # The verdict's outline: reading cells, building hypotheses and ranking repairs are the helpers.
     source = source or f"published statistics for '{response}'"
     factors = list(factors)
     missing = [c for c in [*factors, response] if c not in table.columns]
@@ -159,15 +158,14 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     y = y_all[fit_rows]
 
     table_coding = coding if coding is not None else Coding.from_levels(factors, z, alpha)
-    table_design = _DesignFit(table_coding.to_coded(z[fit_rows]), terms, table_coding, need_actual)
-    base = _lack_of_fit_p(table_design.evaluate(y[:, None], coef_index))
+    table_design = DesignFit(table_coding.to_coded(z[fit_rows]), terms, table_coding, need_actual)
+    base = lack_of_fit_p(table_design.evaluate(y[:, None], coef_index))
     reproduced = {name: float(base[name][0]) for name in targets}
     base_agrees, via_inputs = _agreement(targets, base)
     agrees = {name: bool(base_agrees[name][0]) for name in targets}
     published_values = {name: t.value for name, t in targets.items()}
     printed_text = {name: t.text for name, t in targets.items()}
-    n_pub = len(targets)
-    n_agree = sum(agrees.values())
+    n_pub, n_agree = len(targets), sum(agrees.values())
 
     def result(consistent, suspects, explained, message, n_candidates=0):
         return TranscriptionResult(response, consistent, published_values, reproduced, agrees, suspects,
@@ -188,20 +186,31 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
                                                     coding, log_factors, records)
     if repaired:
         to_actual = [_coded_to_actual_matrix(c, terms) for c in repaired_codings] if need_actual else None
-        blocks.append(_evaluate_designs(np.stack(repaired), y, terms, to_actual, coef_index))
+        blocks.append(evaluate_designs(np.stack(repaired), y, terms, to_actual, coef_index))
 
     # A slip in one printed statistic is considered only when no slip in the table explains everything.
     slip = _printed_slip(targets, reproduced, agrees)
+    slip_result = None
     if slip is not None:
         slip_result = replace(result(False, [], False, _printed_slip_message(response, slip, n_pub, n_agree),
                                      len(records)), printed_slip=slip)
     if not records:
-        return slip_result if slip is not None else result(
+        return slip_result if slip_result is not None else result(
             False, [], False, _unexplained_message(response, targets, reproduced, agrees, 0, 0), 0)
+    return _located(response, table, targets, reproduced, agrees, records, blocks, max_suspects, slip_result,
+                    result)
+
+
+def _located(response: str, table: pd.DataFrame, targets: dict, reproduced: dict, agrees: dict, records: list,
+             blocks: list, max_suspects: int, slip_result, result) -> TranscriptionResult:
+    """The cells whose repair restores the published statistics, best first (every one when some restore them
+    all; else up to five partial leads), or ``slip_result`` (a slip in one printed statistic) when no repair
+    restores them all; ``result`` builds the :class:`TranscriptionResult`."""
+    n_pub, n_agree = len(targets), sum(agrees.values())
     restores, restores_exact, misfit, order = _rank_repairs(records, blocks, targets, table.columns)
     full = order[restores[order] == n_pub]
     explained = bool(full.size)
-    if not explained and slip is not None:
+    if not explained and slip_result is not None:
         return slip_result
     # A partial lead must restore a printed value, not only a bound ("p < 0.0001" holds for any repair
     # that wrecks the fit).
@@ -238,7 +247,7 @@ def _read_cells(table: pd.DataFrame, factors: list[str], response: str, log_fact
 
 
 def _response_hypotheses(texts: list, response: str, y_all: np.ndarray, fit_rows: np.ndarray,
-                         table_design: _DesignFit, coef_index: dict, records: list, blocks: list) -> None:
+                         table_design: DesignFit, coef_index: dict, records: list, blocks: list) -> None:
     """Response cells: one column of Y per hypothesis, all evaluated at once (appends to records, blocks)."""
     y = y_all[fit_rows]
     precision = _precision_elsewhere(texts)
@@ -326,7 +335,7 @@ def _cell_repairs(text: str, z: np.ndarray, row: int, j: int, nominal: np.ndarra
 def _rank_repairs(records: list[tuple], blocks: list[dict], targets: dict, columns) -> tuple:
     """Statistics restored and summed misfit per repair, and the ranking order (see the package docstring)."""
     column_order = {name: i for i, name in enumerate(columns)}
-    values = _lack_of_fit_p({key: np.concatenate([np.atleast_1d(b[key]) for b in blocks]) for key in blocks[0]})
+    values = lack_of_fit_p({key: np.concatenate([np.atleast_1d(b[key]) for b in blocks]) for key in blocks[0]})
     restores = np.zeros(len(records), dtype=int)
     restores_exact = np.zeros(len(records), dtype=int)
     misfit = np.zeros(len(records))

@@ -35,7 +35,9 @@ def _coded_to_actual_matrix(coding: Coding, terms: list[Term]) -> np.ndarray:
     return np.linalg.lstsq(model_matrix(coding.to_actual(pts), terms), model_matrix(pts, terms), rcond=None)[0]
 
 
-def _lack_of_fit_p(out: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+def lack_of_fit_p(out: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    """``out`` with the lack-of-fit p-value (``lof_p``, NaN where the F is not finite) from its F and degrees
+    of freedom."""
     lof_f = np.asarray(out["lof_f"], dtype=float)
     lof_p = np.full(lof_f.shape, np.nan)
     ok = np.isfinite(lof_f)
@@ -66,7 +68,7 @@ def _statistics(sse, sst, press, ss_pe, n, p, rank, df_pe) -> dict[str, np.ndarr
             "ss_pure_error": ss_pe, "ss_total": sst,
             "lof_f": np.where((df_lof > 0) & (df_pe > 0) & (ss_pe > 0),
                               ((sse - ss_pe) / df_lof) / (ss_pe / df_pe), np.nan),
-            # lof_p is filled in by _lack_of_fit_p, in one vectorised call over all hypotheses.
+            # lof_p is filled in by lack_of_fit_p, in one vectorised call over all hypotheses.
             "_df_lof": df_lof.astype(float), "_df_pe": df_pe.astype(float),
             "_n": n.astype(float), "_df_model_resid": (n - p).astype(float),
         }
@@ -88,7 +90,7 @@ def _add_coefficients(out: dict, beta: np.ndarray, to_actual: list | np.ndarray 
     return out
 
 
-class _DesignFit:
+class DesignFit:
     """One design (factor settings) and everything the statistics need about it.
 
     ``evaluate(Y)`` returns the statistics for every column of ``Y`` (responses
@@ -130,8 +132,8 @@ class _DesignFit:
         return _add_coefficients(out, beta, self.to_actual, coefficients)
 
 
-def _evaluate_designs(coded: np.ndarray, y: np.ndarray, terms: list[Term], to_actual: list | None,
-                      coefficients: dict[str, tuple[str, int]]) -> dict[str, np.ndarray]:
+def evaluate_designs(coded: np.ndarray, y: np.ndarray, terms: list[Term], to_actual: list | None,
+                     coefficients: dict[str, tuple[str, int]]) -> dict[str, np.ndarray]:
     """Statistics of one response ``y`` (n,) on many designs ``coded`` (m, n, k), in one batched SVD."""
     m, n, _ = coded.shape
     x = np.stack([model_matrix(c, terms) for c in coded])

@@ -186,14 +186,15 @@ def _parse_published(published: dict, decimals: dict | None, factors: list[str],
 
 
 # --------------------------------------------------------------------------- single-cell slips
-def _positional(value: float) -> str:
+def positional(value: float) -> str:
+    """A number as Python prints it, without an exponent (1e-05 reads 0.00001)."""
     text = repr(float(value))
     return np.format_float_positional(float(value), trim="-") if ("e" in text or "E" in text) else text
 
 
 def _printed_column(values: np.ndarray) -> list[str | None]:
     """Reconstruct a numeric column's printed form: every cell with the column's largest decimals."""
-    texts = [_positional(v) if np.isfinite(v) else None for v in values]
+    texts = [positional(v) if np.isfinite(v) else None for v in values]
     places = max((len(t.partition(".")[2]) for t in texts if t is not None), default=0)
     return [None if t is None else f"{float(v):.{places}f}" for t, v in zip(texts, values)]
 

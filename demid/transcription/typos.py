@@ -94,7 +94,7 @@ def single_cell_slips(text: str) -> list[tuple[str, str, float]]:
     return [(kind, candidate, value) for value, (kind, candidate) in best.items()]
 
 
-def _decimals(text: str) -> int:
+def cell_decimals(text: str) -> int:
     """Digits after the decimal point of a printed number (``1.5e-3`` counts as 0.0015)."""
     try:
         exponent = Decimal(str(text).strip().replace("\u2212", "-")).as_tuple().exponent
@@ -105,11 +105,11 @@ def _decimals(text: str) -> int:
 
 def _decimal_places(cells) -> int | None:
     """The most decimals any printed cell of a column shows (None without printed cells)."""
-    places = [_decimals(c) for c in cells if str(c).strip()]
+    places = [cell_decimals(c) for c in cells if str(c).strip()]
     return max(places) if places else None
 
 
-def _added_digit_repairs(text: str) -> list[tuple[str, str, float]]:
+def added_digit_repairs(text: str) -> list[tuple[str, str, float]]:
     """Repairs ``("digit_added", text, value)`` of a cell with one stray digit keyed in (359.17 for 39.17).
 
     Not one of :data:`KINDS`: with every digit removable, so many repairs exist that the transcription
@@ -230,7 +230,7 @@ def likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame | None = N
             places = _decimal_places(printed[response].to_numpy()[ok] if printed is not None else [])
 
             def possible(kind, candidate):
-                return kind != "digit_dropped" or places is None or _decimals(candidate) <= places
+                return kind != "digit_dropped" or places is None or cell_decimals(candidate) <= places
 
             # Of the repairs that fit, the commonest slip (KINDS order), then the closest: a centre run's
             # 500.3 is 50.03 with the point shifted even if a digit swap, 50.3, happens to land closer.
@@ -243,7 +243,7 @@ def likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame | None = N
                 # fit better by more than that error, and those of a slip as common (61.31 beside 62.31 for
                 # 6.31). The named repair is then a guess among them, and the message says so.  (Nearer rivals
                 # would be found for one true decimal shift in six: dropped digits cover the window densely.)
-                repairs = single_cell_slips(str(text)) + _added_digit_repairs(str(text))
+                repairs = single_cell_slips(str(text)) + added_digit_repairs(str(text))
                 rivals, seen = [], set()
                 for distance, value, kind in sorted(
                         (abs(value - loo_pred), value, kind) for kind, candidate, value in repairs
@@ -269,7 +269,7 @@ def _shortest(value: float) -> str:
     return np.format_float_positional(float(value), trim="-")
 
 
-def _repair_explains(flag: dict, share: float = 0.2) -> bool:
+def repair_explains(flag: dict, share: float = 0.2) -> bool:
     """The repair removes most of the run's miss: a large slip, not a digit shuffle of a noisy value."""
     predicted = flag["predicted_from_other_runs"]
     return abs(flag["suggested"] - predicted) <= share * abs(flag["found"] - predicted)
@@ -301,7 +301,7 @@ def refuse_likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame) ->
                          kinds=("transposition", "decimal_shift", "sign_lost", "digit_dropped"))
     for flag in flags:
         run, column = int(flag["run"]), flag["column"]
-        if (run, column) in confirmed or not _repair_explains(flag):
+        if (run, column) in confirmed or not repair_explains(flag):
             continue
         found = printed.loc[validated.table["run"].to_numpy() == run, column].iloc[0]
         raise InputError(f"{found} looks like {_shortest(flag['suggested'])} "

@@ -105,17 +105,17 @@ def test_a_step_on_a_weighted_model_is_the_weighted_least_squares_f_test():
     """Once unequal scatter is modelled (weights exp(-gamma v)), the step in run order is tested on the weighted
     fit: its statistic is the largest weighted-least-squares F (statsmodels' WLS, refitted with the step column)
     over the change-points."""
-    from demid.criticism.catalogue import _Round
-    from demid.criticism.level1 import _prepare
-    from demid.criticism.models import _Model, _Spec
+    from demid.criticism.catalogue import Round
+    from demid.criticism.level1 import prepare_data
+    from demid.criticism.models import Model, ModelForm
 
     table, _ = ccd_table(1, 2, "term", 6.0)
     table = table.assign(y=table["y"] + np.where(table["run"] >= 8, 4.0, 0.0))
-    data, _ = _prepare(table, FACTORS[2], "y", None, ())
+    data, _ = prepare_data(table, FACTORS[2], "y", None, ())
     v = data.coded[:, 0]
-    spec = _Spec(weight_on=FACTORS[2][0], weight_gamma=1.5, weight_values=tuple(v))
-    model = _Model(data, spec)
-    (step,) = [h for h in _Round(data, model, 99, np.random.default_rng(0)).hypotheses if h.cause == "step"]
+    spec = ModelForm(weight_on=FACTORS[2][0], weight_gamma=1.5, weight_values=tuple(v))
+    model = Model(data, spec)
+    (step,) = [h for h in Round(data, model, 99, np.random.default_rng(0)).hypotheses if h.cause == "step"]
     w = np.exp(-1.5 * v)
     y, base = table["y"].to_numpy(dtype=float), _quadratic(table)
     df = len(y) - base.shape[1]
@@ -150,13 +150,13 @@ def test_a_step_on_a_weighted_model_is_the_weighted_least_squares_f_test():
 def test_the_joint_null_of_missing_terms_and_drift_is_their_f_for_standard_normal_errors():
     """The family p-values rest on each test's statistic for simulated errors: for a missing term and for drift
     the same added-variable F as observed, computed for the round's 99 standard normal draws (numpy here)."""
-    from demid.criticism.catalogue import _Round
-    from demid.criticism.level1 import _prepare
-    from demid.criticism.models import _Model, _Spec
+    from demid.criticism.catalogue import Round
+    from demid.criticism.level1 import prepare_data
+    from demid.criticism.models import Model, ModelForm
 
     table, _ = ccd_table(0, 2, "term", 6.0)
-    data, _ = _prepare(table, FACTORS[2], "y", None, ())
-    hypotheses = _Round(data, _Model(data, _Spec()), 99, np.random.default_rng(0)).hypotheses
+    data, _ = prepare_data(table, FACTORS[2], "y", None, ())
+    hypotheses = Round(data, Model(data, ModelForm()), 99, np.random.default_rng(0)).hypotheses
     base = _quadratic(table)
     n, df = len(table), len(table) - base.shape[1]
     eps = np.random.default_rng(0).standard_normal((n, 99))

@@ -1,5 +1,5 @@
 """Every named cause comes with runs that would confirm it, and one run's two readings (an outlier, a slipped
-factor value) are reported together: criticism.level1._confirming_rivals, verdict.other_reading_of_the_run."""
+factor value) are reported together: criticism.naming.confirming_rivals, verdict.other_reading_of_the_run."""
 
 from __future__ import annotations
 
@@ -8,29 +8,30 @@ import pandas as pd
 import pytest
 
 from demid.criticism import criticize, discrimination
-from demid.criticism.catalogue import SlipCandidate, _Hypothesis
-from demid.criticism.level1 import _confirming_rivals
+from demid.criticism.catalogue import Hypothesis
+from demid.criticism.slips import SlipCandidate
+from demid.criticism.naming import confirming_rivals
 from demid.criticism.verdict import NAMING_VERDICTS, ONE_RUN_READINGS_BAYES_FACTOR, other_reading_of_the_run
 from demid.design import model_matrix, parse_term
 from tests.generators import FACTORS, ccd_table, design, later_runs
 
 
 # --------------------------------------------------------------------------- one run, two readings
-def _slip(row: int, bayes_factor: float) -> _Hypothesis:
-    return _Hypothesis("factor_level", SlipCandidate(row, 0, 1, 3.0), info={"bayes_factor": bayes_factor})
+def _slip(row: int, bayes_factor: float) -> Hypothesis:
+    return Hypothesis("factor_level", SlipCandidate(row, 0, 1, 3.0), info={"bayes_factor": bayes_factor})
 
 
 def test_the_other_reading_of_a_run_is_listed_unless_the_bayes_factor_decides_at_twenty_to_one():
     edge = ONE_RUN_READINGS_BAYES_FACTOR
     assert edge == pytest.approx(np.exp(discrimination.AMBIGUOUS_AICC / 2), rel=0.01)
-    outlier = _Hypothesis("outlier", 4)
+    outlier = Hypothesis("outlier", 4)
     for factor, slip_reading, outlier_reading in [(2.0, "outlier", "factor_level"), (0.2, "outlier", "factor_level"),
                                                   (edge * 1.01, None, None), (1 / edge / 1.01, None, None)]:
         slip = _slip(4, factor)
         assert other_reading_of_the_run(slip, [outlier, slip]) == slip_reading, factor
         assert other_reading_of_the_run(outlier, [outlier, slip]) == outlier_reading, factor
     assert other_reading_of_the_run(outlier, [outlier, _slip(5, 2.0)]) is None  # a slip of another run
-    assert other_reading_of_the_run(_Hypothesis("drift", "run"), [_slip(4, 2.0)]) is None
+    assert other_reading_of_the_run(Hypothesis("drift", "run"), [_slip(4, 2.0)]) is None
 
 
 def test_an_outlier_read_as_a_slip_of_the_same_run_is_reported_with_the_outlier_as_its_alias():
@@ -89,11 +90,11 @@ def _entry(cause, detail, aicc):
 def test_a_named_cause_without_a_close_rival_is_confirmed_against_the_nearest_kind():
     entries = [_entry("drift", "run", 0.0), _entry("outlier", 3, 25.0), _entry("step", 7, 14.0),
                _entry("step", 8, 12.0), _entry("missing_term", "a^3", 40.0)]
-    assert [(e["cause"], e["detail"]) for e in _confirming_rivals(entries, ("drift", "run"))] == \
+    assert [(e["cause"], e["detail"]) for e in confirming_rivals(entries, ("drift", "run"))] == \
         [("drift", "run"), ("step", 8)]
     # within CONFIRM_AICC every kind is kept, as before
     entries[1]["aicc"] = discrimination.CONFIRM_AICC - 0.5
-    assert [e["cause"] for e in _confirming_rivals(entries, ("drift", "run"))] == ["drift", "outlier"]
+    assert [e["cause"] for e in confirming_rivals(entries, ("drift", "run"))] == ["drift", "outlier"]
 
 
 def _simulate_term(seed: int, k: int, term: str, size: float, runs: list[dict]) -> pd.DataFrame:
@@ -282,15 +283,15 @@ def test_with_a_next_box_the_criticism_chooses_its_runs_inside_it():
 
 
 def test_a_run_on_the_box_grid_is_written_to_six_digits_and_a_bound_at_zero_as_zero():
-    """_Data.point_dict of a box-grid point: 6 significant digits, as next_runs.csv writes its runs; float noise
+    """Data.point_dict of a box-grid point: 6 significant digits, as next_runs.csv writes its runs; float noise
     of the coding's round trip at a bound of 0 is written 0, not 1e-17."""
     from dataclasses import replace
 
-    from demid.criticism.level1 import _prepare
+    from demid.criticism.level1 import prepare_data
 
     table, _ = ccd_table(0, 2, "clean", 0.0)
     table["mu_r"] = table["mu_r"] - table["mu_r"].min()  # the factor's range starts at 0
-    data, _ = _prepare(table, FACTORS[2], "y", None, (), None)
+    data, _ = prepare_data(table, FACTORS[2], "y", None, (), None)
     grid = replace(data, run_candidates=np.zeros((1, 2)))
     for actual, written in (([1e-17, 8.0], {"mu_r": 0.0, "gamma": 8.0}), ([-2e-16, 8.0], {"mu_r": 0.0, "gamma": 8.0}),
                             ([0.123456789, 3.14159265], {"mu_r": 0.123457, "gamma": 3.14159})):

@@ -164,18 +164,18 @@ def test_separating_runs_match_a_scan_of_every_candidate(case):
 def test_slip_ratios_match_a_refit_without_each_run(seed, k, drift):
     """The factor-level statistic from the leave-one-out identities equals refitting without each run
     (pseudo-inverse of the other runs' cross-products), for the observed and bootstrap columns."""
-    from demid.criticism.catalogue import _moved_rows, _slip_ratios, slip_candidates
-    from demid.criticism.level1 import _prepare
-    from demid.criticism.models import _Model, _Spec
+    from demid.criticism.slips import moved_rows, slip_candidates, slip_ratios
+    from demid.criticism.level1 import prepare_data
+    from demid.criticism.models import Model, ModelForm
     from demid.design import LEVERAGE_UNPREDICTABLE
 
     table, _ = ccd_table(seed, k)
-    data, _ = _prepare(table, FACTORS[k], "y", None, ())
-    model = _Model(data, _Spec(drift=drift))
+    data, _ = prepare_data(table, FACTORS[k], "y", None, ())
+    model = Model(data, ModelForm(drift=drift))
     cands = slip_candidates(data, model)
     rng = np.random.default_rng(seed)
     y = np.column_stack([model.z, model.fitted_z[:, None] + rng.standard_normal((len(model.z), 40))])
-    x, rows = model.x, _moved_rows(model, cands)
+    x, rows = model.x, moved_rows(model, cands)
     sse0 = np.sum((y - x @ np.linalg.lstsq(x, y, rcond=None)[0]) ** 2, axis=0)
     pos_of = {int(r): i for i, r in enumerate(np.flatnonzero(model.keep))}
     expected = np.zeros(y.shape[1])
@@ -190,7 +190,7 @@ def test_slip_ratios_match_a_refit_without_each_run(seed, k, drift):
             r = rows[kk]
             moved = sse_without + (y[i] - r @ beta) ** 2 / (1 + r @ a @ r)
             expected = np.maximum(expected, sse0 / moved)
-    ratio, best = _slip_ratios(model, cands, y)
+    ratio, best = slip_ratios(model, cands, y)
     np.testing.assert_allclose(ratio, expected, rtol=1e-8)
     assert len(cands) > 10 and ratio.max() > 1
 
@@ -198,18 +198,18 @@ def test_slip_ratios_match_a_refit_without_each_run(seed, k, drift):
 def test_separating_runs_rank_one_step_equals_a_fresh_design():
     """After a run joins the design, the per-candidate leverage, prediction errors and residual block from
     the rank-one updates equal those computed afresh from the enlarged design."""
-    from demid.criticism.aliasing import _candidate_points, _OneMoreRun
+    from demid.criticism.aliasing import candidate_points, OneMoreRun
     from demid.design import ccd_points, cubic_terms
 
     for coded, alpha in [(ccd_points(2, 1.0, 3), 1.0), (ccd_points(3, 8 ** 0.25, 6), 8 ** 0.25)]:
         k = coded.shape[1]
         base, members = quadratic_terms(k), cubic_terms(k)
-        cands = _candidate_points(k, alpha)
+        cands = candidate_points(k, alpha)
         cand_base, cand_members = model_matrix(cands, base), model_matrix(cands, members)
-        state = _OneMoreRun.of(coded, base, members, cand_base, cand_members)
+        state = OneMoreRun.of(coded, base, members, cand_base, cand_members)
         for index in (5, len(cands) - 1):
             state = state.with_run(index, cands[index], base, members)
-            fresh = _OneMoreRun.of(state.coded, base, members, cand_base, cand_members)
+            fresh = OneMoreRun.of(state.coded, base, members, cand_base, cand_members)
             np.testing.assert_allclose(state.leverage, fresh.leverage, atol=1e-10)
             np.testing.assert_allclose(state.error, fresh.error, atol=1e-10)
             np.testing.assert_allclose(state.current, fresh.current, atol=1e-10)
@@ -635,12 +635,12 @@ def test_level2_three_readings_detect_but_cannot_always_localise():
 def test_a_proposed_run_on_a_bound_reads_the_bound():
     """An alpha printed to 5 digits put a proposed axial run at p = -3.721e-07 below the lower bound 0; a
     point is given to 4 digits of each factor's range, so it reads 0 (and no -0)."""
-    from demid.criticism.models import _Data
+    from demid.criticism.models import Data
     from demid.design import Coding
 
     coding = Coding(("p", "q"), (0.5, 20.0), (0.5 / 1.4142, 10.0 / 1.4142))  # the table's alpha, 1.4142
-    data = _Data("y", ["p", "q"], np.zeros((1, 2)), np.zeros(1), np.ones(1), coding, 1.41421, (),
-                 quadratic_terms(2))
+    data = Data("y", ["p", "q"], np.zeros((1, 2)), np.zeros(1), np.ones(1), coding, 1.41421, (),
+                quadratic_terms(2))
     assert data.to_actual(np.array([[-1.41421, 0.0]]))[0, 0] < 0  # premise: the round-off below the bound
     point = data.point_dict(np.array([-1.41421, 1.41421]))
     assert point == {"p": 0.0, "q": 30.0} and str(point["p"]) == "0.0"

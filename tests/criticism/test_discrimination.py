@@ -11,10 +11,10 @@ import pytest
 from scipy import stats
 
 from demid.criticism import criticize, discrimination
-from demid.criticism.discrimination import (AMBIGUOUS_AICC, DECIDING_POWER, _prediction, close_candidates,
+from demid.criticism.discrimination import (AMBIGUOUS_AICC, DECIDING_POWER, new_run_prediction, close_candidates,
                                             pair_progress, target_separation)
-from demid.criticism.level1 import _prepare
-from demid.criticism.models import _Model, _Spec
+from demid.criticism.level1 import prepare_data
+from demid.criticism.models import Model, ModelForm
 from demid.design import model_matrix, quadratic_terms
 from tests.generators import FACTORS, ccd_table, later_runs
 
@@ -68,12 +68,13 @@ def test_target_separation_decides_with_its_power(gap):
 
 def test_a_drift_goes_on_in_the_predictions_of_later_runs_a_step_does_not():
     table, _ = ccd_table(7, 2, "drift", 8.0)
-    data, _ = _prepare(table, FACTORS[2], "y", None, ())
+    data, _ = prepare_data(table, FACTORS[2], "y", None, ())
     centre = np.zeros((1, 2))
-    drift, step = _Model(data, _Spec(drift=True)), _Model(data, _Spec(step=6))
+    drift, step = Model(data, ModelForm(drift=True)), Model(data, ModelForm(step=6))
     per_run = drift.beta[drift.names.index("run")] / drift.run_scale
-    assert _prediction(drift, centre, 4)[0][0] - _prediction(drift, centre, 1)[0][0] == pytest.approx(3 * per_run)
-    assert _prediction(step, centre, 4)[0][0] == pytest.approx(_prediction(step, centre, 1)[0][0])
+    later = new_run_prediction(drift, centre, 4)[0][0] - new_run_prediction(drift, centre, 1)[0][0]
+    assert later == pytest.approx(3 * per_run)
+    assert new_run_prediction(step, centre, 4)[0][0] == pytest.approx(new_run_prediction(step, centre, 1)[0][0])
 
 
 def _simulate_drift(seed: int, k: int, size: float, runs: list[dict]) -> pd.DataFrame:
@@ -107,13 +108,13 @@ def test_the_separation_of_several_runs_against_statsmodels_predictions():
     the runs and its residual variance added per run; a replicate adds less than a run of its own."""
     import statsmodels.api as sm
 
-    from demid.criticism.discrimination import _joint_separation, _prediction_parts
+    from demid.criticism.discrimination import joint_separation, prediction_parts
     from demid.design import parse_term
 
     table, _ = ccd_table(3, 2, "term", 6.0, term="mu_r^3")
-    data, _ = _prepare(table, FACTORS[2], "y", None, ())
+    data, _ = prepare_data(table, FACTORS[2], "y", None, ())
     cubic = parse_term("mu_r^3", FACTORS[2])
-    plain, extended = _Model(data, _Spec()), _Model(data, _Spec(extra_terms=(cubic,)))
+    plain, extended = Model(data, ModelForm()), Model(data, ModelForm(extra_terms=(cubic,)))
     points = np.array([[1.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])
 
     def statsmodels_prediction(terms):
@@ -128,12 +129,12 @@ def test_the_separation_of_several_runs_against_statsmodels_predictions():
     spread = (np.trace(np.linalg.inv(cov_a) @ cov_b) + np.trace(np.linalg.inv(cov_b) @ cov_a) - 2 * len(points)) / 4
     expected = float(delta @ np.linalg.solve(cov_a + cov_b, delta)) + spread
 
-    parts_a, parts_b = _prediction_parts(plain, points), _prediction_parts(extended, points)
+    parts_a, parts_b = prediction_parts(plain, points), prediction_parts(extended, points)
     chosen_a = [(parts_a[0][i], parts_a[1][i], parts_a[2][i]) for i in (0, 1)]
     chosen_b = [(parts_b[0][i], parts_b[1][i], parts_b[2][i]) for i in (0, 1)]
-    assert _joint_separation(chosen_a, chosen_b, parts_a, parts_b)[2] == pytest.approx(expected, rel=1e-9)
-    one = _joint_separation([], [], parts_a, parts_b)
-    two = _joint_separation(chosen_a[:1], chosen_b[:1], parts_a, parts_b)[1]
+    assert joint_separation(chosen_a, chosen_b, parts_a, parts_b)[2] == pytest.approx(expected, rel=1e-9)
+    one = joint_separation([], [], parts_a, parts_b)
+    two = joint_separation(chosen_a[:1], chosen_b[:1], parts_a, parts_b)[1]
     assert one[0] < two < 2 * one[0]
 
 
@@ -159,11 +160,11 @@ def test_unequal_scatter_and_equal_scatter_are_separated_by_runs_at_an_end_of_th
     that decide are at an end of that factor's range (where the scatters differ most), not where the means
     happen to differ, and they separate the two far beyond what their means alone would."""
     table, planted = ccd_table(seed, 2, "het", 30.0)
-    data, _ = _prepare(table, FACTORS[2], "y", None, ())
+    data, _ = prepare_data(table, FACTORS[2], "y", None, ())
     j = FACTORS[2].index(planted.factor)
     v = data.coded[:, j] / data.alpha
-    plain = _Model(data, _Spec())
-    het = _Model(data, _Spec(weight_on=planted.factor, weight_gamma=2.5, weight_values=tuple(float(x) for x in v)))
+    plain = Model(data, ModelForm())
+    het = Model(data, ModelForm(weight_on=planted.factor, weight_gamma=2.5, weight_values=tuple(float(x) for x in v)))
     runs = discrimination.discriminating_runs(data, [plain, het], ["equal", "unequal"])
     coded = data.coding.to_coded(np.array([[r[f] for f in FACTORS[2]] for r in runs]))
     assert np.allclose(np.abs(coded[:, j]), data.alpha, atol=1e-3)
@@ -204,8 +205,8 @@ def test_a_transformed_models_prediction_is_back_transformed_with_the_delta_meth
 
     table, _ = ccd_table(5, 2, "clean")
     table["y"] = table["y"] - table["y"].min() + 5.0  # positive, so the transform applies
-    data, _ = _prepare(table, FACTORS[2], "y", None, ())
-    model = _Model(data, _Spec(lam=lam))
+    data, _ = prepare_data(table, FACTORS[2], "y", None, ())
+    model = Model(data, ModelForm(lam=lam))
     points = np.array([[0.0, 0.0], [1.0, -1.0], [-data.alpha, 0.0]])
 
     terms = quadratic_terms(2)
@@ -217,6 +218,6 @@ def test_a_transformed_models_prediction_is_back_transformed_with_the_delta_meth
     else:
         mean, slope = (1 + lam * z) ** (1 / lam), (1 + lam * z) ** (1 / lam - 1)
     variance = slope ** 2 * (np.einsum("ij,jk,ik->i", rows, fit.cov_params(), rows) + fit.scale)
-    got_mean, got_variance = _prediction(model, points)
+    got_mean, got_variance = new_run_prediction(model, points)
     assert got_mean == pytest.approx(mean, rel=1e-9)
     assert got_variance == pytest.approx(variance, rel=1e-6)

@@ -83,14 +83,14 @@ def test_misfit_flagged_at_least_as_often_as_by_lack_of_fit(k, kind, size):
 def test_slip_candidates_are_decimal_slips_of_the_recorded_value():
     """Every candidate moves one factor of one run to 10^k times its recorded value (log-scaled factors:
     log10 shifted by k), k = +-1, +-2, +-3; a zero value has no slip."""
-    from demid.criticism.catalogue import slip_candidates
-    from demid.criticism.level1 import _prepare
-    from demid.criticism.models import _Model, _Spec
+    from demid.criticism.slips import slip_candidates
+    from demid.criticism.level1 import prepare_data
+    from demid.criticism.models import Model, ModelForm
 
     table, _ = ccd_table(0, 2, "clean")
     for log_factors in ((), ("gamma",)):
-        data, _ = _prepare(table, FACTORS[2], "y", None, log_factors)
-        model = _Model(data, _Spec())
+        data, _ = prepare_data(table, FACTORS[2], "y", None, log_factors)
+        model = Model(data, ModelForm())
         cands = slip_candidates(data, model)
         assert 0 < len(cands) <= data.n * 2 * 6
         for c in cands[:40]:
@@ -278,11 +278,11 @@ def test_no_further_run_tells_a_slip_from_a_shift_of_the_same_run(seed, n_factor
     runs separate them by far less than runs that decide need (target_separation), so the message sends the
     user to the run's input, not to more runs."""
     from demid.criticism import discrimination
-    from demid.criticism.level1 import _prepare
-    from demid.criticism.models import _Model, _Spec
+    from demid.criticism.level1 import prepare_data
+    from demid.criticism.models import Model, ModelForm
 
     table, planted = off_catalogue_table(seed, n_factors, "slip", **where)
-    data, _ = _prepare(table, FACTORS[n_factors], "y", None, ())
+    data, _ = prepare_data(table, FACTORS[n_factors], "y", None, ())
     f = criticize(table, FACTORS[n_factors], "y", n_null=199).findings[0]
     assert f.cause == "factor_level" and f.detail == planted.runs[0]
     assert "no further run tells a slip" in f.message
@@ -290,7 +290,7 @@ def test_no_further_run_tells_a_slip_from_a_shift_of_the_same_run(seed, n_factor
     point = np.array(table.loc[i, FACTORS[n_factors]], dtype=float)
     point[j] = f.info["fitting_value"]
     moved = float(data.coding.to_coded(point[None, :])[0, j])
-    shifted, slipped = _Model(data, _Spec(dropped=(i,))), _Model(data, _Spec(moved=((i, j, moved),)))
+    shifted, slipped = Model(data, ModelForm(dropped=(i,))), Model(data, ModelForm(moved=((i, j, moved),)))
     runs = discrimination.discriminating_runs(data, [shifted, slipped], ["shift", "slip"])
     assert len(runs) == discrimination.MAX_RUNS
     assert runs[-1]["separation"] < discrimination.target_separation(0.0) / 5
@@ -298,8 +298,8 @@ def test_no_further_run_tells_a_slip_from_a_shift_of_the_same_run(seed, n_factor
 
 # --------------------------------------------------------------------------- a cause must be singled out
 def _hyp(cause, p, detail=None):
-    from demid.criticism.catalogue import _Hypothesis
-    return _Hypothesis(cause, detail, logp=float(np.log(p)))
+    from demid.criticism.catalogue import Hypothesis
+    return Hypothesis(cause, detail, logp=float(np.log(p)))
 
 
 def test_a_cause_is_named_only_when_its_test_is_the_strongest_evidence():
@@ -352,13 +352,13 @@ def test_misfit_spread_over_several_tests_is_not_given_a_cause():
 
 # --------------------------------------------------------------------------- a cause of the whole design must not rest on one run
 def _first_round(table, k, seed=0):
-    from demid.criticism.catalogue import _Round
-    from demid.criticism.level1 import _prepare
-    from demid.criticism.models import _Model, _Spec
+    from demid.criticism.catalogue import Round
+    from demid.criticism.level1 import prepare_data
+    from demid.criticism.models import Model, ModelForm
 
-    data, _ = _prepare(table, FACTORS[k], "y", None, ())
-    model = _Model(data, _Spec())
-    return data, model, _Round(data, model, 199, np.random.default_rng(seed))
+    data, _ = prepare_data(table, FACTORS[k], "y", None, ())
+    model = Model(data, ModelForm())
+    return data, model, Round(data, model, 199, np.random.default_rng(seed))
 
 
 def test_one_run_deletions_match_refits_without_each_run():
@@ -367,7 +367,7 @@ def test_one_run_deletions_match_refits_without_each_run():
     var = sigma^2 exp(gamma v) profiled by WLS over the test's gamma grid, in its F form."""
     from scipy import stats as st
 
-    from demid.criticism.catalogue import _GAMMA_GRID
+    from demid.criticism.catalogue import GAMMA_GRID
     from demid.criticism.one_run import deleted_logp, worst_deletion
 
     table, _ = ccd_table(3, 3, "term", 4.0)
@@ -384,8 +384,8 @@ def test_one_run_deletions_match_refits_without_each_run():
         small = sm.OLS(model.y[keep], x[keep]).fit()
         big = sm.OLS(model.y[keep], np.column_stack([x[keep], extra[keep]])).fit()
         assert np.exp(got_term[i]) == pytest.approx(big.compare_f_test(small)[1], rel=1e-6)
-        llf = [sm.WLS(model.y[keep], x[keep], weights=np.exp(-g * v[keep])).fit().llf for g in _GAMMA_GRID]
-        lr = 2 * (max(llf) - llf[int(np.argmin(np.abs(_GAMMA_GRID)))])
+        llf = [sm.WLS(model.y[keep], x[keep], weights=np.exp(-g * v[keep])).fit().llf for g in GAMMA_GRID]
+        lr = 2 * (max(llf) - llf[int(np.argmin(np.abs(GAMMA_GRID)))])
         df = int(keep.sum()) - x.shape[1]
         p = st.f.sf((df - 1) * np.expm1(lr / keep.sum()), 1, df - 1)
         assert np.exp(got_het[i]) == pytest.approx(p, rel=1e-6)
@@ -498,9 +498,9 @@ def test_large_table_worst_deletion_of_unequal_scatter_equals_every_deletion(see
     """Above LOO_REFIT_MAX_RUNS runs only the runs ranked weakest by the fixed-covariate identity are
     refitted: the run and p found equal those of refitting without every run, for the fitted-value and the
     factor covariates (scatter growing with the response, one wild run at a corner)."""
-    from demid.criticism.catalogue import _Round
-    from demid.criticism.level1 import _prepare
-    from demid.criticism.models import _Model, _Spec
+    from demid.criticism.catalogue import Round
+    from demid.criticism.level1 import prepare_data
+    from demid.criticism.models import Model, ModelForm
     from demid.criticism.one_run import deleted_logp, worst_deletion
     from demid.surrogate import LOO_REFIT_MAX_RUNS
 
@@ -511,9 +511,9 @@ def test_large_table_worst_deletion_of_unequal_scatter_equals_every_deletion(see
     y = mean + 0.05 * np.exp(0.8 * x[:, 0]) * rng.standard_normal(n)
     y[np.argmax(x[:, 0] + x[:, 1])] += 1.0
     table = pd.DataFrame({"run": np.arange(1, n + 1), FACTORS[2][0]: x[:, 0], FACTORS[2][1]: x[:, 1], "y": y})
-    data, _ = _prepare(table, FACTORS[2], "y", None, ())
-    model = _Model(data, _Spec())
-    hypotheses = [h for h in _Round(data, model, 99, np.random.default_rng(seed)).hypotheses
+    data, _ = prepare_data(table, FACTORS[2], "y", None, ())
+    model = Model(data, ModelForm())
+    hypotheses = [h for h in Round(data, model, 99, np.random.default_rng(seed)).hypotheses
                   if h.cause == "heteroscedasticity"]
     assert {h.detail for h in hypotheses} >= {"fitted", FACTORS[2][0]}
     for h in hypotheses:

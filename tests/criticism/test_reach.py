@@ -9,7 +9,7 @@ import pandas as pd
 import pytest
 
 from demid.criticism import calibration_check
-from demid.criticism.reach import WIDEN_LIMIT, Reach, _smallest_positive_root, reach_beyond_bound, saturation_advice
+from demid.criticism.reach import WIDEN_LIMIT, Reach, smallest_positive_root, reach_beyond_bound, saturation_advice
 from demid.design import quadratic_terms
 from demid.sampling.domain import Domain
 from demid.spec import MaterialSpec
@@ -88,9 +88,9 @@ def test_a_straight_response_reaches_the_band_where_its_line_does():
     assert reach.quadratic_extension == pytest.approx(0.125, rel=1e-6)
     assert reach.quadratic_factor_value == pytest.approx(1.125, rel=1e-6)
     # the root of b t + c = 0 (no t^2 term) when it is positive, none otherwise
-    assert _smallest_positive_root(0.0, 8.0, -1.0) == pytest.approx(0.125)
-    assert _smallest_positive_root(0.0, 8.0, -12.0) == pytest.approx(1.5)
-    assert _smallest_positive_root(0.0, 8.0, 1.0) == np.inf and _smallest_positive_root(0.0, 0.0, -1.0) == np.inf
+    assert smallest_positive_root(0.0, 8.0, -1.0) == pytest.approx(0.125)
+    assert smallest_positive_root(0.0, 8.0, -12.0) == pytest.approx(1.5)
+    assert smallest_positive_root(0.0, 8.0, 1.0) == np.inf and smallest_positive_root(0.0, 0.0, -1.0) == np.inf
 
 
 def test_a_band_edge_just_below_where_the_response_levels_off_is_reached():
@@ -101,8 +101,8 @@ def test_a_band_edge_just_below_where_the_response_levels_off_is_reached():
     t = (4 - np.sqrt(0.8)) / 8
     assert reach.quadratic_extension == pytest.approx(t, rel=1e-6) and reach.widen and not reach.levels_off
     assert reach.quadratic_factor_value == pytest.approx(1 + t, rel=1e-6)
-    assert _smallest_positive_root(-1.0, 1.0, -0.2) == pytest.approx((1 - np.sqrt(0.2)) / 2)
-    assert _smallest_positive_root(-1.0, 1.0, -0.3) == np.inf  # discriminant -0.2: never
+    assert smallest_positive_root(-1.0, 1.0, -0.2) == pytest.approx((1 - np.sqrt(0.2)) / 2)
+    assert smallest_positive_root(-1.0, 1.0, -0.3) == np.inf  # discriminant -0.2: never
 
 
 def test_a_huge_extension_is_not_advised_as_widen():

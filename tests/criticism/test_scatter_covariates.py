@@ -9,9 +9,10 @@ import pytest
 import statsmodels.api as sm
 
 from demid.criticism import criticize, discrimination
-from demid.criticism.catalogue import _Hypothesis
-from demid.criticism.level1 import _apply, _prepare
-from demid.criticism.models import _Model, _Spec
+from demid.criticism.catalogue import Hypothesis
+from demid.criticism.extensions import extend_for
+from demid.criticism.level1 import prepare_data
+from demid.criticism.models import Model, ModelForm
 from demid.design import model_matrix, quadratic_terms
 from tests.generators import FACTORS, ccd_table, design
 
@@ -22,17 +23,17 @@ def test_scatter_with_the_predicted_value_grows_at_new_points_as_the_unweighted_
     unweighted quadratic's prediction at the point rescaled as at the runs (statsmodels OLS, computed here).
     A constant scatter there (the factor covariates' rule applied to no factor) fails it."""
     table, _ = ccd_table(seed, 2, "het", 30.0)
-    data, _ = _prepare(table, FACTORS[2], "y", None, ())
-    base = _Model(data, _Spec())
-    model = _Model(data, _apply(data, base, _Hypothesis("heteroscedasticity", "fitted"))[0])
+    data, _ = prepare_data(table, FACTORS[2], "y", None, ())
+    base = Model(data, ModelForm())
+    model = Model(data, extend_for(data, base, Hypothesis("heteroscedasticity", "fitted"))[0])
     assert model.spec.weight_gamma != 0.0
 
     ols = sm.OLS(table["y"].to_numpy(), model_matrix(data.coded, quadratic_terms(2))).fit()
     fz = ols.fittedvalues
     centre, half = (fz.max() + fz.min()) / 2, np.ptp(fz) / 2
-    points = discrimination._grid(data)
+    points = discrimination.candidate_grid(data)
     v = (model_matrix(points, quadratic_terms(2)) @ ols.params - centre) / half
-    noise = discrimination._prediction_parts(model, points)[2]
+    noise = discrimination.prediction_parts(model, points)[2]
     sigma2 = model.ssr / model.df_resid
     assert noise == pytest.approx(sigma2 * np.exp(model.spec.weight_gamma * v), rel=1e-9)
     assert noise.max() > 1.5 * noise.min()  # it does vary from point to point

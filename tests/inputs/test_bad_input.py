@@ -7,7 +7,7 @@ import re
 
 import pytest
 
-from ..workflow_helpers import run_snakemake, sha256
+from ..workflow_helpers import run_snakemake, sha256, written_results
 
 pytestmark = pytest.mark.workflow
 
@@ -148,7 +148,7 @@ def test_bad_input_is_one_clear_line(study_dir, name, mutate, expected):
     for pattern in expected:
         assert re.search(pattern, lines[0]), (pattern, lines[0])
     assert sha256(table_path) == before
-    assert not (study_dir / "results").exists()
+    assert not written_results(study_dir / "results")
 
 
 def _error_lines(proc) -> list[str]:
@@ -167,9 +167,9 @@ def test_cells_are_checked_once_in_the_job_and_the_header_at_start_up(study_dir)
     lines = _error_lines(proc)
     assert proc.returncode != 0 and "Traceback" not in proc.stdout + proc.stderr
     assert len(lines) == 1 and re.search(r"data/m\.csv, run 4, column 'y1'.*12x\.5", lines[0]), lines
-    log = (study_dir / "logs" / "analyse_material" / "m.log").read_text(encoding="utf-8")
+    log = (study_dir / "results" / "logs" / "analyse_material" / "m.log").read_text(encoding="utf-8")
     assert log.splitlines() == lines
-    assert not (study_dir / "results").exists()
+    assert not written_results(study_dir / "results")
     table_path.write_text(text.replace("run,a,b,y1,y2", "run,a,b,y1,y_2"), encoding="utf-8")
     dry = run_snakemake(study_dir, config, "-n")
     lines = _error_lines(dry)

@@ -3,7 +3,8 @@
 import numpy as np
 import pytest
 
-from demid.data import parse_number, read_table, validate_material
+from demid.csv_cells import parse_number
+from demid.data import read_table, validate_material
 from demid.errors import InputError
 from demid.spec import MaterialSpec
 

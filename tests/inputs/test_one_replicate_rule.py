@@ -7,12 +7,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from demid.criticism.catalogue import _Round
-from demid.criticism.level1 import _prepare
-from demid.criticism.models import _Model, _Spec
+from demid.criticism.catalogue import Round
+from demid.criticism.level1 import prepare_data
+from demid.criticism.models import Model, ModelForm
 from demid.design import REPLICATE_DECIMALS, Coding, ccd_points, model_matrix, quadratic_terms
 from demid.surrogate import fit_response
-from demid.transcription.engine import _DesignFit, _evaluate_designs
+from demid.transcription.engine import DesignFit, evaluate_designs
 
 
 def _table(offset):
@@ -30,12 +30,12 @@ def _pure_error_dfs(table):
     coding = Coding(("x1", "x2"), (0.0, 0.0), (1.0, 1.0))
     fit = fit_response(table, ["x1", "x2"], "y", coding=coding)
     anova = fit.anova().df_pure_error
-    data, _ = _prepare(table, ["x1", "x2"], "y", 1.41421, (), fit)
-    lof = [h for h in _Round(data, _Model(data, _Spec()), 99, np.random.default_rng(0)).hypotheses
+    data, _ = prepare_data(table, ["x1", "x2"], "y", 1.41421, (), fit)
+    lof = [h for h in Round(data, Model(data, ModelForm()), 99, np.random.default_rng(0)).hypotheses
            if h.cause == "lack_of_fit"]
     criticism = lof[0].info["df"][1]
-    single = _DesignFit(fit.coded, quadratic_terms(2), coding, False).df_pe
-    batched = int(_evaluate_designs(fit.coded[None], fit.y, quadratic_terms(2), None, {})["_df_pe"][0])
+    single = DesignFit(fit.coded, quadratic_terms(2), coding, False).df_pe
+    batched = int(evaluate_designs(fit.coded[None], fit.y, quadratic_terms(2), None, {})["_df_pe"][0])
     return anova, criticism, single, batched
 
 

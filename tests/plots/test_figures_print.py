@@ -13,7 +13,7 @@ from matplotlib.figure import Figure
 from PIL import Image
 
 from demid.plots.layout import PAGE_WIDTH_IN, hold_constant_axis, panel_grid
-from demid.plots.uncertainty import _spaced
+from demid.plots.uncertainty import spaced_ticks
 from demid.report.rsm import equation
 
 
@@ -66,8 +66,8 @@ def test_a_constant_series_gets_a_readable_axis():
 
 
 def test_log_tick_labels_are_spaced():
-    assert _spaced([0.5, 1, 2, 3, 5, 7.5, 10, 15, 20]) == {0.5, 1, 2, 3, 5, 7.5, 15}
-    assert _spaced([1, 10, 100]) == {1, 10, 100}
+    assert spaced_ticks([0.5, 1, 2, 3, 5, 7.5, 10, 15, 20]) == {0.5, 1, 2, 3, 5, 7.5, 15}
+    assert spaced_ticks([1, 10, 100]) == {1, 10, 100}
 
 
 def test_posterior_legend_uses_configured_labels():

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from demid.sampling.exact import _integrate
+from demid.sampling import quadrature
 
 
 def _substituted(f, v):
@@ -27,7 +27,7 @@ def _substituted(f, v):
 def test_one_piece_estimate_is_quadpacks_formula(name, f, exact):
     """With a loose tolerance one round is accepted: the integral is the 15-point Kronrod value and the
     estimate is v * min(1, (200 |K - G| / v) ** 1.5), v = the integral of |f - mean f| over the piece."""
-    total, error = _integrate(lambda owner, s: f(s)[:, None], [0], [0.0], [1.0], 1, rtol=10.0)
+    total, error = quadrature.integrate(lambda owner, s: f(s)[:, None], [0], [0.0], [1.0], 1, rtol=10.0)
     kronrod = float(total[0, 0])
     # the 7-point Gauss rule on the substituted integrand, from numpy's Legendre nodes
     x, w = np.polynomial.legendre.leggauss(7)
@@ -48,7 +48,7 @@ def test_error_estimate_bounds_the_true_error_on_each_owner():
     def func(owner, s):
         return np.select([owner == 0, owner == 1, owner == 2], [f(s) for f in funcs])[:, None]
 
-    total, error = _integrate(func, [0, 1, 2], [0.0] * 3, [1.0] * 3, 3, rtol=1e-9)
+    total, error = quadrature.integrate(func, [0, 1, 2], [0.0] * 3, [1.0] * 3, 3, rtol=1e-9)
     assert np.all(np.abs(total[:, 0] - exact) <= error + 1e-15)
     assert np.all(error <= 1e-8 * exact)
 

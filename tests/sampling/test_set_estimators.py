@@ -162,10 +162,10 @@ def test_cell_corner_ranges_equal_the_min_and_max_over_every_corner(shape):
     the cells and their 2**d corners."""
     from itertools import product
 
-    from demid.sampling.grid import _cell_range
+    from demid.sampling.grid import cell_range
 
     values = np.random.default_rng(len(shape)).normal(size=shape)
-    lo, hi = _cell_range(values)
+    lo, hi = cell_range(values)
     cells = tuple(n - 1 for n in shape)
     assert lo.shape == hi.shape == cells
     for cell in np.ndindex(*cells):

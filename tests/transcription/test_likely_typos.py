@@ -101,7 +101,7 @@ def test_a_shifted_point_is_not_read_as_a_swap_with_a_leading_zero(tmp_path, see
 def test_decimals_count_the_digits_after_the_point_of_the_positional_form(text):
     from decimal import Decimal, InvalidOperation
 
-    from demid.transcription.typos import _decimals
+    from demid.transcription.typos import cell_decimals
 
     # independently: write the number out positionally and count what follows the point
     try:
@@ -110,12 +110,12 @@ def test_decimals_count_the_digits_after_the_point_of_the_positional_form(text):
     except InvalidOperation:
         positional = ""
     expected = len(positional.split(".")[1]) if "." in positional else 0
-    assert _decimals(text) == expected
+    assert cell_decimals(text) == expected
 
 
 @pytest.mark.parametrize("text", ["10.5", "359.17", "-20.04", "7", "1001.5", "0.25"])
 def test_added_digit_repairs_remove_each_digit_once(text):
-    from demid.transcription.typos import _added_digit_repairs
+    from demid.transcription.typos import added_digit_repairs
 
     # brute force: every cell with one digit removed that still prints like a table number (no leading zero
     # before another digit) and reads as another value
@@ -128,7 +128,7 @@ def test_added_digit_repairs_remove_each_digit_once(text):
             continue
         if float(candidate) != float(text):
             expected.add(("digit_added", candidate, float(candidate)))
-    got = _added_digit_repairs(text)
+    got = added_digit_repairs(text)
     assert set(got) == expected
     if text == "10.5":
         assert ("digit_added", "0.5", 0.5) in got  # 0.5 is printed with its leading zero
@@ -141,10 +141,10 @@ def test_added_digit_repairs_remove_each_digit_once(text):
     (-50.0, 52.0, 50.0, True),    # a lost sign: 2 of a 100 miss
     (2.0, 1.0, -1.0, False)])     # 2 of a 3 miss
 def test_a_repair_explains_the_miss_when_it_removes_four_fifths_of_it(found, suggested, predicted, explains):
-    from demid.transcription.typos import _repair_explains
+    from demid.transcription.typos import repair_explains
 
     flag = {"found": found, "suggested": suggested, "predicted_from_other_runs": predicted}
-    assert _repair_explains(flag) is explains
+    assert repair_explains(flag) is explains
     assert (abs(suggested - predicted) <= 0.2 * abs(found - predicted) + 1e-12) is explains
 
 

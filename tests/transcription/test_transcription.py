@@ -18,7 +18,7 @@ from demid.transcription import (
     parse_printed,
     single_cell_slips,
 )
-from demid.transcription.engine import _DesignFit, _evaluate_designs, _lack_of_fit_p
+from demid.transcription.engine import DesignFit, evaluate_designs, lack_of_fit_p
 
 CENTRES = (0.5, 6.4, -2.0)
 UNITS = (0.3, 2.0, 1.5)
@@ -153,7 +153,7 @@ def test_closed_form_hypotheses_equal_direct_refits(tables):
     coef = {"coef_coded[x1]": ("coded", 1)}
     ymat = np.repeat(y[:, None], 3, axis=1)
     ymat[[0, 5, 19], [0, 1, 2]] = [10.0, -3.0, 0.5]
-    batch = _lack_of_fit_p(_DesignFit(coding.to_coded(x), terms, coding, False).evaluate(ymat, coef))
+    batch = lack_of_fit_p(DesignFit(coding.to_coded(x), terms, coding, False).evaluate(ymat, coef))
     designs = []
     for row, col, value in ((0, 0, 0.8), (5, 2, -3.5), (19, 1, 9.7636)):
         repaired = x.copy()
@@ -161,7 +161,7 @@ def test_closed_form_hypotheses_equal_direct_refits(tables):
         designs.append(repaired)
     codings = [Coding.from_levels(factors, d, alpha) for d in designs]
     stack = np.stack([c.to_coded(d) for c, d in zip(codings, designs)])
-    refits = _lack_of_fit_p(_evaluate_designs(stack, y, terms, None, coef))
+    refits = lack_of_fit_p(evaluate_designs(stack, y, terms, None, coef))
     for i in range(3):
         for values, frame in ((batch, table.assign(y=ymat[:, i])),
                               (refits, table.assign(**{f: designs[i][:, j] for j, f in enumerate(factors)}))):

@@ -11,6 +11,7 @@ from demid.out_path import claim_results_dir, results_owner_problem
 from demid.rule_outputs import ambiguous_output
 from demid.sampling import uses_grid
 from demid.spec import MaterialSpec
+from demid.steps import output_table
 from demid.waves import check_simulated, simulated_materials
 
 
@@ -34,11 +35,11 @@ try:
     # One MaterialSpec per material, built once from the validated config; rules pass it as their
     # only per-material parameter.
     SPECS = {name: MaterialSpec.from_config(name, config) for name in config["materials"]}
-    for _name, _material in config["materials"].items():
-        if _material.get("simulation"):  # its tables do not exist yet: each wave validates its own
+    for _spec in SPECS.values():
+        if _spec.simulated:  # its tables do not exist yet: each wave validates its own
             continue
-        with content_hidden_outside(SPECS[_name].data):
-            check_table_columns(SPECS[_name])
+        with content_hidden_outside(_spec.data):
+            check_table_columns(_spec)
 except InputError as err:
     sys.exit(f"demid: error: {err}")
 
@@ -57,7 +58,20 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 RESULTS = config["results_dir"]
 if results_owner_problem(RESULTS, Path.cwd()):  # another study's results: refused before anything runs
     sys.exit(f"demid: error: {results_owner_problem(RESULTS, Path.cwd())}")
-MATERIALS = list(config["materials"])
+MATERIALS = list(SPECS)
+
+
+def log_file(name):
+    """A job's log, under the results folder: a study run from its own folder (--directory) gets
+    everything the workflow writes in its results_dir, and its own files stay as they were."""
+    return f"{RESULTS}/logs/{name}"
+
+
+def benchmark_file(name):
+    """A job's timings and memory (Snakemake's benchmark), under the results folder like its log."""
+    return f"{RESULTS}/benchmarks/{name}"
+
+
 # The cross-material tables: summary_tables' output name -> file under tables/.
 SUMMARY_TABLE_FILES = {
     "surrogate_fit": "surrogate_fit",
@@ -86,7 +100,7 @@ def material_spec(wildcards):
 def material_spec_digest(wildcards):
     """The material's settings and the content of its table: either edited (even while the job runs)
     reruns the job."""
-    table = config["materials"][wildcards.material].get("data")  # none for a simulated material: its runs
+    table = SPECS[wildcards.material].data  # none for a simulated material: its runs
     return f"{SPECS[wildcards.material].digest}:{content_digest(table) if table else ''}"  # are jobs of their own
 
 
@@ -96,7 +110,7 @@ def published_digest(wildcards=None):
 
 
 def material_data(wildcards):
-    return config["materials"][wildcards.material]["data"]
+    return SPECS[wildcards.material].data
 
 
 def evaluation_mem_mb(wildcards):
@@ -107,33 +121,29 @@ def evaluation_mem_mb(wildcards):
 
 
 def pareto_materials():
-    return [m for m in MATERIALS if config["materials"][m].get("pareto")]
+    return [m for m in MATERIALS if SPECS[m].pareto]
 
 
 def material_pattern(pareto, simulated=False):
     """The materials with (or without) a Pareto front, as a wildcard constraint (none: matches nothing);
     those with a finished table, or with ``simulated`` those demid simulates."""
-    names = [m for m in MATERIALS if bool(config["materials"][m].get("pareto")) == pareto
-             and bool(config["materials"][m].get("simulation")) == simulated]
+    names = [m for m in MATERIALS if bool(SPECS[m].pareto) == pareto and SPECS[m].simulated == simulated]
     return "|".join(names) if names else "(?!x)x"
 
 
 def paper_figures():
     return [
-        f"{RESULTS}/figures/{mat['paper_figure']}_{name}.png"
-        for name, mat in config["materials"].items()
-        if mat.get("paper_figure")
+        f"{RESULTS}/figures/{SPECS[m].paper_figure}_{m}.png" for m in MATERIALS if SPECS[m].paper_figure
     ]
 
 
 def paper_figure_pattern():
-    names = sorted({m["paper_figure"] for m in config["materials"].values() if m.get("paper_figure")})
+    names = sorted({SPECS[m].paper_figure for m in MATERIALS if SPECS[m].paper_figure})
     return "|".join(names) if names else "(?!x)x"
 
 
 def paper_figure_source(wildcards):
-    mat = config["materials"][wildcards.material]
-    kind = "pareto" if mat.get("pareto") else "sets"
+    kind = "pareto" if SPECS[wildcards.material].pareto else "sets"
     return f"{RESULTS}/figures/{kind}_{wildcards.material}.png"
 
 
@@ -168,7 +178,7 @@ def per_material_outputs(material):
         f"{RESULTS}/figures/sets_{material}.png",
         f"{RESULTS}/figures/surface_{material}.png",
     ]
-    if config["materials"][material].get("pareto"):
+    if SPECS[material].pareto:
         out += [
             f"{RESULTS}/tables/pareto_{material}.csv",
             f"{RESULTS}/figures/pareto_{material}.png",
@@ -234,7 +244,7 @@ def report_figures():
     out = []
     for m in MATERIALS:
         out += [f"{RESULTS}/figures/sets_{m}.png", f"{RESULTS}/figures/surface_{m}.png"]
-        if config["materials"][m].get("pareto"):
+        if SPECS[m].pareto:
             out.append(f"{RESULTS}/figures/pareto_{m}.png")
         out += [
             f"{RESULTS}/figures/sweep_{m}.png",
@@ -262,51 +272,15 @@ def with_svg(figures):
 
 
 def material_outputs(pareto=False):
-    """Named outputs of a material's job (analyse_material): every per-material file; with
-    ``pareto`` also the front's table and figure."""
-    out = dict(
-        table=f"{RESULTS}/validated/{{material}}.parquet",
-        validation_summary=f"{RESULTS}/validated/{{material}}.json",
-        transcription=f"{RESULTS}/validated/{{material}}_transcription.parquet",
-        fits=f"{RESULTS}/fits/{{material}}.parquet",
-        statistics=f"{RESULTS}/fits/{{material}}_statistics.parquet",
-        anova=f"{RESULTS}/fits/{{material}}_anova.parquet",
-        diagnostics=f"{RESULTS}/fits/{{material}}_diagnostics.parquet",
-        scenarios=f"{RESULTS}/scenarios/{{material}}.parquet",
-        sets_figure=report(f"{RESULTS}/figures/sets_{{material}}.png", category="Admissible sets",
-                           caption="../report/sets.rst"),
-        surface_figure=report(f"{RESULTS}/figures/surface_{{material}}.png", category="Response surfaces",
-                              caption="../report/surface.rst"),
-        robust=f"{RESULTS}/uncertainty/{{material}}_robust.parquet",
-        sweep=f"{RESULTS}/uncertainty/{{material}}_sweep.parquet",
-        information_gain=f"{RESULTS}/uncertainty/{{material}}_information_gain.parquet",
-        ranking=f"{RESULTS}/uncertainty/{{material}}_ranking.parquet",
-        uncertainty_summary=f"{RESULTS}/uncertainty/{{material}}.json",
-        sweep_figure=report(f"{RESULTS}/figures/sweep_{{material}}.png", category="Uncertainty",
-                            caption="../report/sweep.rst"),
-        posterior_figure=report(f"{RESULTS}/figures/posterior_{{material}}.png", category="Uncertainty",
-                                caption="../report/posterior.rst"),
-        criticism=directory(f"{RESULTS}/criticism/{{material}}"),
-        findings=f"{RESULTS}/criticism/{{material}}_findings.parquet",
-        calibration=f"{RESULTS}/criticism/{{material}}_calibration.parquet",
-        criticism_summary=f"{RESULTS}/criticism/{{material}}.json",
-        residuals_figure=report(f"{RESULTS}/figures/residuals_{{material}}.png", category="Model criticism",
-                                caption="../report/residuals.rst"),
-        combinations=f"{RESULTS}/combinations/{{material}}.parquet",
-        combinations_summary=f"{RESULTS}/combinations/{{material}}.json",
-        fit_summary=f"{RESULTS}/fits/{{material}}.json",
-        combinations_figure=report(f"{RESULTS}/figures/combinations_{{material}}.png", category="Identified combinations",
-                                   caption="../report/combinations.rst"),
-    )
-    if pareto:
-        out.update(
-            pareto=f"{RESULTS}/tables/pareto_{{material}}.csv",
-            pareto_figure=report(f"{RESULTS}/figures/pareto_{{material}}.png", category="Pareto trade-off",
-                                 caption="../report/pareto.rst"),
-        )
-    # save_figure writes each PNG's SVG next to it
-    out.update({name.removesuffix("_figure") + "_svg": with_svg([str(path)])[1]
-                for name, path in out.items() if name.endswith("_figure")})
+    """Named outputs of a material's job (analyse_material), from the one table of them
+    (demid.steps.MATERIAL_OUTPUTS, whose names the job's result uses); with ``pareto`` also the
+    front's table and figure."""
+    out = {}
+    for name, entry in output_table(pareto).items():
+        path = f"{RESULTS}/{entry.path}"
+        if entry.caption:
+            path = report(path, category=entry.category, caption=f"../report/{entry.caption}")
+        out[name] = directory(path) if entry.directory else path
     return out
 
 

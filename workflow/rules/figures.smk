@@ -23,8 +23,8 @@ rule paper_figure:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/figures/{paper_figure}_{material}.log",
+        log_file("figures/{paper_figure}_{material}.log"),
     benchmark:
-        "benchmarks/figures/{paper_figure}_{material}.tsv"
+        benchmark_file("figures/{paper_figure}_{material}.tsv")
     script:
         "../../scripts/copy_figure.py"

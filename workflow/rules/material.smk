@@ -23,9 +23,9 @@ rule analyse_material:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/analyse_material/{material}.log",
+        log_file("analyse_material/{material}.log"),
     benchmark:
-        "benchmarks/analyse_material/{material}.tsv"
+        benchmark_file("analyse_material/{material}.tsv")
     script:
         "../../scripts/analyse_material.py"
 

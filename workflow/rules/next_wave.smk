@@ -18,8 +18,8 @@ rule next_wave:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/next_wave/next_wave.log",
+        log_file("next_wave/next_wave.log"),
     benchmark:
-        "benchmarks/next_wave/next_wave.tsv"
+        benchmark_file("next_wave/next_wave.tsv")
     script:
         "../../scripts/next_wave.py"

@@ -14,8 +14,8 @@ rule report:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/report/report.log",
+        log_file("report/report.log"),
     benchmark:
-        "benchmarks/report/report.tsv"
+        benchmark_file("report/report.tsv")
     script:
         "../../scripts/report.py"

@@ -46,7 +46,7 @@ rule simulate_run:
     log:
         f"{WAVE_RUN}/log",
     benchmark:
-        "benchmarks/simulate_run/{material}/wave{wave}/run{run}.tsv"
+        benchmark_file("simulate_run/{material}/wave{wave}/run{run}.tsv")
     script:
         "../../scripts/simulate_run.py"
 
@@ -68,9 +68,9 @@ rule assemble_wave:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/assemble_wave/{material}_wave{wave}.log",
+        log_file("assemble_wave/{material}_wave{wave}.log"),
     benchmark:
-        "benchmarks/assemble_wave/{material}_wave{wave}.tsv"
+        benchmark_file("assemble_wave/{material}_wave{wave}.tsv")
     script:
         "../../scripts/assemble_wave.py"
 
@@ -94,9 +94,9 @@ rule analyse_wave:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/analyse_wave/{material}_wave{wave}.log",
+        log_file("analyse_wave/{material}_wave{wave}.log"),
     benchmark:
-        "benchmarks/analyse_wave/{material}_wave{wave}.tsv"
+        benchmark_file("analyse_wave/{material}_wave{wave}.tsv")
     script:
         "../../scripts/analyse_wave.py"
 
@@ -134,9 +134,9 @@ checkpoint propose_wave:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/propose_wave/{material}_wave{wave}.log",
+        log_file("propose_wave/{material}_wave{wave}.log"),
     benchmark:
-        "benchmarks/propose_wave/{material}_wave{wave}.tsv"
+        benchmark_file("propose_wave/{material}_wave{wave}.tsv")
     script:
         "../../scripts/propose_wave.py"
 
@@ -153,9 +153,9 @@ rule final_wave:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/final_wave/{material}.log",
+        log_file("final_wave/{material}.log"),
     benchmark:
-        "benchmarks/final_wave/{material}.tsv"
+        benchmark_file("final_wave/{material}.tsv")
     script:
         "../../scripts/final_wave.py"
 
@@ -187,8 +187,8 @@ rule wave_history:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/wave_history/{material}.log",
+        log_file("wave_history/{material}.log"),
     benchmark:
-        "benchmarks/wave_history/{material}.tsv"
+        benchmark_file("wave_history/{material}.tsv")
     script:
         "../../scripts/wave_history.py"

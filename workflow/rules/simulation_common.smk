@@ -8,8 +8,8 @@ import pandas as pd
 from demid.simulation import Simulation, run_parameters
 from demid.waves import first_wave, next_wave_runs, stops_early, waves_max
 
-SIMULATED = [m for m in MATERIALS if config["materials"][m].get("simulation")]
-SIMULATIONS = {m: Simulation.from_material(config["materials"][m]) for m in SIMULATED}
+SIMULATED = [m for m in MATERIALS if SPECS[m].simulated]
+SIMULATIONS = {m: Simulation.from_material(SPECS[m].material_config()) for m in SIMULATED}
 FIRST_WAVES = {m: first_wave(SPECS[m], SIMULATIONS[m].seed) for m in SIMULATED}
 # A rule's retries are one number; a material with fewer records its failed run at its own last attempt.
 SIMULATION_RETRIES = max((s.retries for s in SIMULATIONS.values()), default=0)
@@ -20,8 +20,8 @@ def simulated_pattern(pareto=None, proposing=False):
     """The simulated materials (with or without a Pareto front; with ``proposing`` those whose waves
     propose next runs) as a wildcard constraint (none: matches nothing)."""
     names = [m for m in SIMULATED
-             if (pareto is None or bool(config["materials"][m].get("pareto")) == pareto)
-             and (not proposing or (config["materials"][m].get("waves") or {}).get("next_runs"))]
+             if (pareto is None or bool(SPECS[m].pareto) == pareto)
+             and (not proposing or SPECS[m].waves.get("next_runs"))]
     return "|".join(names) if names else "(?!x)x"
 
 
@@ -80,9 +80,9 @@ def assemble_inputs(wildcards):
 def wave_outputs(pareto=False):
     """A material's outputs (material_outputs) under results/waves/<k>/."""
     out = {}
-    for name, path in material_outputs(pareto).items():
-        moved = str(path).replace(f"{RESULTS}/", f"{RESULTS}/waves/{{wave}}/", 1)
-        out[name] = directory(moved) if name == "criticism" else moved
+    for name, entry in output_table(pareto).items():
+        path = f"{RESULTS}/waves/{{wave}}/{entry.path}"
+        out[name] = directory(path) if entry.directory else path
     return out
 
 
@@ -102,7 +102,7 @@ def final_wave_inputs(pareto):
         wave = last_wave(wildcards.material)
         out = {name: str(path).format(material=wildcards.material, wave=wave)
                for name, path in wave_outputs(pareto).items()}
-        if (config["materials"][wildcards.material].get("waves") or {}).get("next_runs"):
+        if SPECS[wildcards.material].waves.get("next_runs"):
             out.update({f"proposal_{k}": v for k, v in proposal_files(wildcards.material, wave).items()})
         return out
 

@@ -20,9 +20,9 @@ rule story:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/story/story.log",
+        log_file("story/story.log"),
     benchmark:
-        "benchmarks/story/story.tsv"
+        benchmark_file("story/story.tsv")
     script:
         "../../scripts/story.py"
 
@@ -39,14 +39,14 @@ rule model_extensions:
         table=MODEL_EXTENSIONS_TABLE,
     params:
         specs=[SPECS[m] for m in MATERIALS],
-        extends={m: config["materials"][m].get("extends") or "" for m in MATERIALS},
+        extends={m: SPECS[m].extends or "" for m in MATERIALS},
     resources:
         mem_mb=500,
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/story/model_extensions.log",
+        log_file("story/model_extensions.log"),
     benchmark:
-        "benchmarks/story/model_extensions.tsv"
+        benchmark_file("story/model_extensions.tsv")
     script:
         "../../scripts/model_extensions.py"

@@ -19,8 +19,8 @@ rule summary_tables:
     conda:
         "../envs/demid.yaml"
     log:
-        "logs/tables/summary.log",
+        log_file("tables/summary.log"),
     benchmark:
-        "benchmarks/tables/summary.tsv"
+        benchmark_file("tables/summary.tsv")
     script:
         "../../scripts/summary_tables.py"

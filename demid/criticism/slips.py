@@ -1,0 +1,144 @@
+"""Slipped factor values (cause ``factor_level``): a run whose response fits another value of one factor, a
+decimal point or unit prefix off by one to three places; the candidates, the drop of the residual sum of
+squares when a run is moved, and the Bayes factor of the best slip against a mean shift of the run.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+from scipy import stats
+
+from ..design import LEVERAGE_UNPREDICTABLE, model_matrix
+from .models import orthonormal_basis, residualize
+
+if TYPE_CHECKING:
+    from .models import Data, Model
+
+
+# Slips of a recorded factor value tried by ``factor_level``: a decimal point or unit prefix off by one
+# to three places (x 10^k); on log-scaled factors the same slips shift log10 by k.
+_SLIP_POWERS = (-3, -2, -1, 1, 2, 3)
+_SLIP_PRIOR = {1: 0.5, 2: 0.25, 3: 0.25}
+# A slip is only judged where the runs can predict: moved values beyond this multiple of the design's
+# reach (its largest coded level) would be quadratic extrapolation, which fits a wild run by chance.
+_SLIP_REACH = 2.0
+
+
+# =========================================================================== factor-level slips
+@dataclass(frozen=True)
+class SlipCandidate:
+    """Run ``row`` (index into the data) with factor ``factor`` at ``coded`` instead of its recorded level."""
+
+    row: int
+    factor: int
+    power: int
+    coded: float
+
+
+def slip_candidates(data: Data, m: Model) -> list[SlipCandidate]:
+    """Every kept run x factor x decimal slip whose value differs from the recorded one."""
+    model_units = data.coding.to_actual(m.coded)
+    reach = _SLIP_REACH * float(np.max(np.abs(data.coded)))
+    out = []
+    for pos, row in enumerate(np.flatnonzero(m.keep)):
+        for j, name in enumerate(data.factors):
+            v = model_units[pos, j]
+            for k in _SLIP_POWERS:
+                moved = v + k if name in data.log_factors else v * 10.0 ** k
+                if moved == v or not np.isfinite(moved):
+                    continue
+                point = model_units[pos].copy()
+                point[j] = moved
+                coded = float(data.coding.to_coded(point[None, :])[0, j])
+                if abs(coded) <= reach:
+                    out.append(SlipCandidate(int(row), j, k, coded))
+    return out
+
+
+def moved_rows(m: Model, cands: list[SlipCandidate]) -> np.ndarray:
+    """Model-matrix rows (K, p) of the candidates (run-order column unchanged)."""
+    pos = {int(r): i for i, r in enumerate(np.flatnonzero(m.keep))}
+    coded = np.array([m.coded[pos[c.row]] for c in cands])
+    coded[np.arange(len(cands)), [c.factor for c in cands]] = [c.coded for c in cands]
+    rows = model_matrix(coded, m.mean_terms)
+    beyond = m.x[[pos[c.row] for c in cands], len(m.mean_terms):]  # blocks, drift, step: unchanged
+    return np.column_stack([rows, beyond]) if beyond.shape[1] else rows
+
+
+def slip_ratios(m: Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per column of y (n, B): max over candidates of SSE / SSE(run moved), and the arg max.
+
+    Moving run i changes one row of the model matrix; with the fit without run i (beta_(i),
+    A_(i) = (X_(i)'X_(i))^-1), SSE(moved) = SSE_(i) + (y_i - x' beta_(i))^2 / (1 + x' A_(i) x').
+    The fit without run i comes from the full fit (A = (X'X)^-1, beta, residuals e, leverage h_i) by
+    the leave-one-out identities A_(i) = A + A x_i x_i' A / (1 - h_i), beta_(i) = beta - A x_i e_i / (1 - h_i),
+    SSE_(i) = SSE - e_i^2 / (1 - h_i): one fit in all, not one per run (n fits of n runs: quadratic in
+    the number of runs).
+    """
+    x = m.x
+    rows = moved_rows(m, cands)
+    pos_of = {int(r): i for i, r in enumerate(np.flatnonzero(m.keep))}
+    q = orthonormal_basis(x)
+    a = np.linalg.pinv(x.T @ x)
+    beta = a @ (x.T @ y)
+    resid = y - x @ beta
+    sse0 = np.sum(residualize(q, y) ** 2, axis=0)
+    best = np.zeros(y.shape[1])
+    arg = np.zeros(y.shape[1], dtype=int)
+    by_run: dict[int, list[int]] = {}
+    for k, c in enumerate(cands):
+        by_run.setdefault(pos_of[c.row], []).append(k)
+    for i, ks in by_run.items():
+        if m.hat[i] >= LEVERAGE_UNPREDICTABLE:
+            continue
+        ax = a @ x[i]
+        h_i = float(x[i] @ ax)
+        sse_without = np.maximum(sse0 - resid[i] ** 2 / (1.0 - h_i), 0.0)
+        r = rows[ks]
+        rax = r @ ax
+        g = np.einsum("kp,pq,kq->k", r, a, r) + rax ** 2 / (1.0 - h_i)
+        e_moved = y[i][None, :] - r @ beta + np.outer(rax, resid[i] / (1.0 - h_i))
+        sse_moved = sse_without[None, :] + e_moved ** 2 / (1.0 + g)[:, None]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = sse0[None, :] / np.maximum(sse_moved, 1e-300 * np.maximum(sse0[None, :], 1e-300))
+        top = np.argmax(ratio, axis=0)
+        val = ratio[top, np.arange(y.shape[1])]
+        better = val > best
+        best = np.where(better, val, best)
+        arg = np.where(better, np.asarray(ks)[top], arg)
+    return best, arg
+
+
+def slip_fit(m: Model, same_run: list[SlipCandidate], n_factors: int) -> tuple[SlipCandidate, dict]:
+    """The most probable slip of the run, how well it fits, and the Bayes factor of "a slip" against
+    "a mean shift" for the run.
+
+    t_moved / t_recorded: the run's prediction error from the other runs (in standard errors) at the
+    slipped and at the recorded value.  The Bayes factor compares the run's response given the other
+    runs under a slip (prior over the slips: half on one decimal place, a quarter each on two and three,
+    spread evenly over factors and directions) with a mean shift of unknown size, uniform over the
+    observed range of the response; one run can only favour a slip when it lands close to what a
+    slip predicts, compared with how many slips there are and how wide the responses range.
+    """
+    pos = int(np.flatnonzero(np.flatnonzero(m.keep) == same_run[0].row)[0])
+    x = m.x
+    others = np.ones(len(m.z), dtype=bool)
+    others[pos] = False
+    a = np.linalg.pinv(x[others].T @ x[others])
+    beta = a @ (x[others].T @ m.z[others])
+    resid = m.z[others] - x[others] @ beta
+    s = math.sqrt(float(resid @ resid) / max(int(others.sum()) - m.rank, 1))
+    rows = moved_rows(m, same_run)
+    se = s * np.sqrt(1.0 + np.einsum("kp,pq,kq->k", rows, a, rows))
+    t = (m.z[pos] - rows @ beta) / se
+    weight = np.array([_SLIP_PRIOR[abs(d.power)] / (2 * n_factors) for d in same_run])
+    mass = weight * stats.norm.pdf(t) / se
+    spread = float(np.ptp(m.z))
+    k = int(np.argmax(mass))  # the slip that best explains the run, a priori simpler slips first
+    t_recorded = float((m.z[pos] - x[pos] @ beta) / (s * math.sqrt(1.0 + x[pos] @ a @ x[pos])))
+    return same_run[k], {"t_moved": float(t[k]), "t_recorded": t_recorded,
+                         "bayes_factor": float(np.sum(mass)) * spread if spread > 0 else 0.0}
