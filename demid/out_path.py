@@ -127,6 +127,8 @@ def results_owner_problem(results_dir: Path | str, study_dir: Path | str) -> str
     study = str(Path(study_dir).resolve())
     if not owner or owner == study or not Path(owner).is_dir():  # a study moved or deleted leaves its claim
         return ""
+    if (Path(study_dir) / results_dir).resolve().is_relative_to(study):
+        return ""  # a results folder inside the study folder is its own: a copied study folder takes its copy over
     return (f"config key results_dir: '{results_dir}' holds the results of the study in {owner}; two studies "
             f"writing one results_dir overwrite each other, so give this one its own (or delete {marker} if "
             "that study is gone)")

@@ -15,8 +15,8 @@ import numpy as np
 from .quadrature import argmin_by_owner, integrate, zoom_min
 from .roots import Lines, chebyshev_roots, horner, line_coefficients, ragged, real_roots_unit, sylvester_det
 
-_QUADRATURE_RTOL = 1e-7  # per plane (QUADPACK estimates are conservative: true errors ~1e-11)
-_OUTER_RTOL = 1e-6
+QUADRATURE_RTOL = 1e-7  # per plane (QUADPACK estimates are conservative: true errors ~1e-11)
+OUTER_RTOL = 1e-6
 _BISECTION_STEPS = 60
 _SCAN_POINTS = 65        # slices scanned before the zoom refinement (3 factors)
 
@@ -146,7 +146,7 @@ class Planes:
         pieces = self.pieces(axis)
         f = pieces.feasible
         total, error = integrate(lambda o, s: self.lines(axis, o, s).length[:, None], pieces.owner[f],
-                                 pieces.lower[f], pieces.upper[f], self.count, rtol or _QUADRATURE_RTOL)
+                                 pieces.lower[f], pieces.upper[f], self.count, rtol or QUADRATURE_RTOL)
         return total[:, 0], error
 
     def spans(self, coord: int, polish: bool = True) -> np.ndarray:
@@ -292,7 +292,7 @@ class Solid:
             return np.column_stack([area, error])
 
         edges = np.linspace(lower, upper, 9)
-        total, error = integrate(areas, np.zeros(8, dtype=int), edges[:-1], edges[1:], 1, _OUTER_RTOL, columns=2)
+        total, error = integrate(areas, np.zeros(8, dtype=int), edges[:-1], edges[1:], 1, OUTER_RTOL, columns=2)
         return float(total[0, 0]), float(error[0] + total[0, 1])
 
     def distance(self, ref: np.ndarray, axis: int, lower: float, upper: float) -> tuple[float, np.ndarray]:

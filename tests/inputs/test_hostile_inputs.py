@@ -611,3 +611,10 @@ def test_two_studies_sharing_one_results_dir_the_second_is_refused(tmp_path):
     shutil.rmtree(first)  # a study gone leaves its claim: the other may take the folder over
     assert results_owner_problem(shared, second) == "" and claim_results_dir(shared, second) == ""
     assert (shared / STUDY_MARKER).read_text(encoding="utf-8") == f"{second.resolve()}\n"
+    # a study folder copied with its results inside: the copy's results are its own, the original's claim aside
+    inside = tmp_path / "own" / "results"
+    assert claim_results_dir(inside, tmp_path / "own") == ""
+    shutil.copytree(tmp_path / "own", tmp_path / "own copy")
+    assert claim_results_dir(tmp_path / "own copy" / "results", tmp_path / "own copy") == ""
+    assert (tmp_path / "own copy" / "results" / STUDY_MARKER).read_text(encoding="utf-8") == \
+        f"{(tmp_path / 'own copy').resolve()}\n"

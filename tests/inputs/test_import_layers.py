@@ -173,7 +173,7 @@ INPUT_LAYER = {
     "demid.io": set(),
     "demid.plots": {"demid.lazy"},
     "demid.plots.labels": set(),
-    "demid.simulation": {"demid.errors"},
+    "demid.simulation": {"demid.errors", "demid.numbers"},
 }
 
 

@@ -13,7 +13,8 @@ from scipy import integrate
 from demid.design import quadratic_terms
 from demid.sampling import Domain
 from demid.sampling.evaluate import evaluate_set
-from demid.sampling.exact import _OUTER_RTOL, _QUADRATURE_RTOL, _integrate
+from demid.sampling.planes import OUTER_RTOL, QUADRATURE_RTOL
+from demid.sampling.quadrature import integrate as integrate_pieces
 from demid.surrogate import Surrogate
 
 
@@ -28,7 +29,7 @@ def test_a_smooth_pieces_estimate_is_quadpacks_scaled_difference(kind, k):
     """One piece, accepted in one round: the estimate is v·(200|K − G|/v)^1.5 with v the integrand's variation
     about its mean, here with 200|K − G|/v below 1 (the power matters; above 1 the estimate is v itself)."""
     f = {"exp": lambda s: np.exp(k * s), "inverse": lambda s: 1 / (k + s), "root": lambda s: np.sqrt(s + k / 10)}[kind]
-    total, error = _integrate(lambda owner, s: f(s)[:, None], [0], [0.0], [1.0], 1, rtol=10.0)
+    total, error = integrate_pieces(lambda owner, s: f(s)[:, None], [0], [0.0], [1.0], 1, rtol=10.0)
     kronrod = float(total[0, 0])
     x, w = np.polynomial.legendre.leggauss(7)
     gauss = float(np.sum(w / 2 * _substituted(f, (x + 1) / 2)))
@@ -70,10 +71,10 @@ def test_the_reported_fraction_error_bounds_the_true_error_and_no_more_than_aske
         # each of the two integrations meets its relative tolerance; the error adds both and their difference
         (along0,), _ = exact._shape.integral(0)
         (along1,), _ = exact._shape.integral(1)
-        asked = 2 * _QUADRATURE_RTOL * exact.fraction + abs(along0 - along1)
+        asked = 2 * QUADRATURE_RTOL * exact.fraction + abs(along0 - along1)
     else:
         # the outer quadrature meets its tolerance over slices whose areas meet theirs
-        asked = (_OUTER_RTOL + _QUADRATURE_RTOL) * exact.fraction
+        asked = (OUTER_RTOL + QUADRATURE_RTOL) * exact.fraction
     assert exact.fraction_error <= asked * (1 + 1e-9) + 1e-15
 
 
@@ -85,8 +86,8 @@ def test_a_volumes_error_is_the_outer_estimate_plus_the_slices_errors_integrated
     solid, axis = exact._shape, exact._outer_axis
     lo, hi = exact._unit_spans[axis]
     edges = np.linspace(lo, hi, 9)
-    _, outer = _integrate(lambda owners, s: solid.planes(axis, s).integral(0)[0][:, None], np.zeros(8, dtype=int),
-                          edges[:-1], edges[1:], 1, _OUTER_RTOL)
+    _, outer = integrate_pieces(lambda owners, s: solid.planes(axis, s).integral(0)[0][:, None], np.zeros(8, dtype=int),
+                          edges[:-1], edges[1:], 1, OUTER_RTOL)
     slices = integrate.quad(lambda s: float(solid.planes(axis, np.array([s])).integral(0)[1][0]), lo, hi,
                             points=edges[1:-1], limit=200)[0]
     assert slices > outer[0] / 100  # premise: the slices' errors are a visible part of the sum
