@@ -21,7 +21,7 @@ from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .discrimination import (AMBIGUOUS_AICC, CONFIRM_AICC, CONFIRM_PURPOSE, PURPOSE, candidate_kind,
                              candidate_label, close_candidates, discriminating_runs)
-from .catalogue import (CAUSES, MISFIT_TESTS, slip_candidates, step_directions, _GAMMA_BOUND, _LAMBDA_FINE_GRID,
+from .catalogue import (CAUSES, MISFIT_TESTS, slip_candidates, step_starts, _GAMMA_BOUND, _LAMBDA_FINE_GRID,
                         _NICE_LAMBDAS, _Round, _boxcox_profile)
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, other_reading_of_the_run,
                       rests_on_one_run, runs_for_next_wave, strongest_rival, unexplained_evidence, verdict_of)
@@ -433,7 +433,8 @@ def _deciding_runs(data: _Data, close: list[dict], purpose: str, named: tuple | 
     for c in close:
         # a rival's covariates are not: runs spent telling them apart would not decide the named cause
         aliased = c["cause"] == "missing_term" or (c["cause"], c["detail"]) == named
-        for j, (mo, detail) in enumerate(zip([c["model"]] + (c.get("aliased_models", []) if aliased else []),
+        model = c["model"] if "model" in c else _Model(data, c["spec"])
+        for j, (mo, detail) in enumerate(zip([model] + (c.get("aliased_models", []) if aliased else []),
                                              [c["detail"]] + c.get("aliased", []))):
             models.append(mo)
             labels.append(candidate_label(c["cause"], detail))
@@ -469,12 +470,13 @@ def _candidate_entries(data: _Data, base_model: _Model, first_round) -> list[dic
             entry["aliased"] = [term_name(t, data.factors) for t in h.detail.terms[1:]]
         entries.append(entry)
         if h.cause == "step":
-            starts, _ = step_directions(base_model, _orth(base_model.xw))
-            for start in starts:
+            for start in step_starts(base_model, _orth(base_model.xw)):
                 if start != int(h.detail):
-                    other = _Model(data, replace(base_model.spec, step=start))
+                    # the spec, not the model: a model per change-point kept at once grows as runs squared;
+                    # the few that come close are fitted again (the same numbers) when their runs are chosen
+                    spec = replace(base_model.spec, step=start)
                     entries.append({"cause": "step", "detail": _run_value(data.runs[start]),
-                                    "aicc": other.aicc + price, "model": other})
+                                    "aicc": _Model(data, spec).aicc + price, "spec": spec})
     _alias_scatter_covariates(entries)
     return entries
 
