@@ -21,13 +21,14 @@ from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .discrimination import (AMBIGUOUS_AICC, CONFIRM_AICC, CONFIRM_PURPOSE, PURPOSE, candidate_kind,
                              candidate_label, close_candidates, discriminating_runs)
-from .catalogue import (CAUSES, MISFIT_TESTS, slip_candidates, step_starts, _GAMMA_BOUND, _LAMBDA_FINE_GRID,
+from .catalogue import (CAUSES, MISFIT_TESTS, slip_candidates, step_direction_chunks,
+                        step_starts, STEP_CHUNK, _GAMMA_BOUND, _LAMBDA_FINE_GRID,
                         _NICE_LAMBDAS, _Round, _boxcox_profile)
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, exact_fit_message, other_reading_of_the_run,
                       rests_on_one_run, runs_for_next_wave, strongest_rival, unexplained_evidence, verdict_of)
 from .messages import _CAUSE_WORDS, _message, corner_only_runs
-from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _num, _orth, _run_value, _transform_name,
-                     infer_axial_distance)
+from .models import (TRANSFORM_NAMES, _Data, _Model, _Spec, _aicc, _num, _orth, _run_value, _transform_name,
+                     gaussian_loglik, infer_axial_distance)
 from .run_order import RunOrder, assess_run_order
 
 if TYPE_CHECKING:
@@ -470,15 +471,32 @@ def _candidate_entries(data: _Data, base_model: _Model, first_round) -> list[dic
             entry["aliased"] = [term_name(t, data.factors) for t in h.detail.terms[1:]]
         entries.append(entry)
         if h.cause == "step":
-            for start in step_starts(base_model, _orth(base_model.xw)):
+            for start, step_aicc in _step_aiccs(data, base_model):
                 if start != int(h.detail):
                     # the spec, not the model: a model per change-point kept at once grows as runs squared;
-                    # the few that come close are fitted again (the same numbers) when their runs are chosen
-                    spec = replace(base_model.spec, step=start)
+                    # the few that come close are fitted (the same numbers) when their runs are chosen
                     entries.append({"cause": "step", "detail": _run_value(data.runs[start]),
-                                    "aicc": _Model(data, spec).aicc + price, "spec": spec})
+                                    "aicc": step_aicc + price, "spec": replace(base_model.spec, step=start)})
     _alias_scatter_covariates(entries)
     return entries
+
+
+def _step_aiccs(data: _Data, base_model: _Model):
+    """(change-point, AICc) of the base model with a step at each change-point in run order.  On up to
+    STEP_CHUNK runs each is fitted; on more, a fit per change-point would cost runs squared, and the residual
+    sum of squares comes from the base fit: SSR = SSR_base - (u'e)^2, u the step column residualised on the
+    model and normalised, e the base residuals (the same AICc to round-off)."""
+    q = _orth(base_model.xw)
+    if len(base_model.y) <= STEP_CHUNK:
+        for start in step_starts(base_model, q):
+            yield start, _Model(data, replace(base_model.spec, step=start)).aicc
+        return
+    n_params = base_model.n_params + 1  # the step's coefficient
+    for starts, directions in step_direction_chunks(base_model, q):
+        ssr = base_model.ssr - (directions.T @ base_model.resid_w) ** 2
+        for start, step_ssr in zip(starts, ssr):
+            loglik = gaussian_loglik(float(step_ssr), data.n) + 0.5 * float(np.sum(np.log(base_model.w)))
+            yield start, _aicc(loglik, data.n, n_params)
 
 
 def _alias_scatter_covariates(entries: list[dict]) -> None:

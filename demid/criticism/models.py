@@ -62,6 +62,12 @@ def _hat(x: np.ndarray) -> np.ndarray:
     return np.sum(q * q, axis=1)
 
 
+def gaussian_loglik(ssr: float, n: int) -> float:
+    """Gaussian log-likelihood of n observations at the maximum-likelihood variance ssr / n."""
+    sigma2 = ssr / n
+    return -0.5 * n * (np.log(2 * np.pi * sigma2) + 1.0)
+
+
 def _boxcox(y: np.ndarray, lam: float | None) -> np.ndarray:
     if lam is None:
         return y
@@ -270,9 +276,7 @@ class _Model:
     @property
     def loglik(self) -> float:
         """Gaussian log-likelihood of all n original observations (mean-shift for excluded runs)."""
-        n = self.data.n
-        sigma2 = self.ssr / n
-        ll = -0.5 * n * (np.log(2 * np.pi * sigma2) + 1.0) + 0.5 * float(np.sum(np.log(self.w)))
+        ll = gaussian_loglik(self.ssr, self.data.n) + 0.5 * float(np.sum(np.log(self.w)))
         if self.spec.weight_on is not None and self.spec.dropped:
             v = np.asarray(self.spec.weight_values, dtype=float)[~self.keep]
             ll += 0.5 * float(np.sum(-self.spec.weight_gamma * v))

@@ -61,3 +61,19 @@ def test_the_chunks_give_the_statistics_of_all_change_points_at_once(monkeypatch
     assert chunked.detail == whole.detail and chunked.info == whole.info
     assert chunked.statistic == pytest.approx(whole.statistic, rel=1e-12)
     np.testing.assert_allclose(chunked.null_logp, whole.null_logp, rtol=1e-12)
+
+
+def test_rival_steps_on_many_runs_have_the_aicc_of_their_fitted_models():
+    """Above STEP_CHUNK runs the AICc of a step at each change-point comes from the base fit, not a fit per
+    change-point (runs squared): it equals the AICc of the model fitted with that step."""
+    from dataclasses import replace
+
+    from demid.criticism.level1 import _step_aiccs
+
+    n = catalogue.STEP_CHUNK + 40
+    data, _ = _prepare(_random_table(n, seed=3), ["a", "b"], "y", 1.0, (), None)
+    base = _Model(data, _Spec())
+    found = list(_step_aiccs(data, base))
+    assert [start for start, _ in found] == step_starts(base, _orth(base.xw))
+    for start, aicc in found[::25]:
+        assert aicc == pytest.approx(_Model(data, replace(base.spec, step=start)).aicc, rel=1e-9, abs=1e-9)
