@@ -8,9 +8,11 @@ with three responses (two with targets, one to minimise on a Pareto front), two 
 ``analyse_material`` rule does (:func:`demid.steps.material_step`, then every output written), in a
 fresh Python process so that imports count as they do under Snakemake, and the table shows its
 wall and CPU seconds (median of ``--reps``), the ratios to the previous row, and for the run cases
-the CPU milliseconds per added run (flat when the cost is linear in the runs).
+the CPU milliseconds per added run (flat when the cost is linear in the runs).  ``--grid`` gives runs x
+factors (custom designs) with CPU seconds and the job process's peak resident memory.
 
     python benchmarks/scaling.py --factors 2 3 4 5 6 --runs 13 100 1000 10000
+    python benchmarks/scaling.py --grid --runs 13 200 2000 10000 --grid-factors 2 4 6
     python benchmarks/scaling.py --quick                # 2, 4, 6 factors; 13, 1000 runs; one rep
     python benchmarks/scaling.py --one 6 ccd            # one case, JSON (used by the table; or --one 2 1000)
 """
@@ -20,6 +22,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -126,7 +129,8 @@ def run_one(k: int, runs: int | None) -> dict:
         os.chdir(REPO)
     # the study's generation is not part of the job; imports are (Snakemake starts a fresh Python)
     return {"factors": k, "runs": n_runs, "wall": time.perf_counter() - start_wall - setup_wall,
-            "cpu": time.process_time() - start_cpu - setup_cpu}
+            "cpu": time.process_time() - start_cpu - setup_cpu,
+            "peak_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024}  # Linux: kB
 
 
 def measure(k: int, runs: int | None, reps: int) -> dict:
@@ -134,10 +138,23 @@ def measure(k: int, runs: int | None, reps: int) -> dict:
     env = dict(os.environ, PYTHONPATH=str(REPO) + os.pathsep + os.environ.get("PYTHONPATH", ""))
     rows = []
     for _ in range(reps):
-        done = subprocess.run(args, env=env, check=True, capture_output=True, text=True)
+        done = subprocess.run(args, env=env, capture_output=True, text=True)
+        if done.returncode:  # e.g. fewer runs than the quadratic's terms: the job refuses the table
+            lines = (done.stderr or done.stdout).strip().splitlines()
+            return {"factors": k, "runs": runs, "error": lines[-1] if lines else f"exit {done.returncode}"}
         rows.append(json.loads(done.stdout.strip().splitlines()[-1]))
     return {"factors": k, "runs": rows[0]["runs"], "wall": statistics.median(r["wall"] for r in rows),
-            "cpu": statistics.median(r["cpu"] for r in rows)}
+            "cpu": statistics.median(r["cpu"] for r in rows), "peak_mb": max(r["peak_mb"] for r in rows)}
+
+
+def _grid_table(rows: list[dict]) -> None:
+    print("\ncustom designs (uniformly random runs): one material job, runs x factors")
+    print(f"{'runs':>6} {'factors':>7} {'wall s':>8} {'cpu s':>8} {'peak MB':>8}")
+    for row in rows:
+        if "error" in row:
+            print(f"{row['runs']:>6} {row['factors']:>7}  refused: {row['error'][:90]}")
+        else:
+            print(f"{row['runs']:>6} {row['factors']:>7} {row['wall']:8.2f} {row['cpu']:8.2f} {row['peak_mb']:8.0f}")
 
 
 def _table(title: str, rows: list[dict], per: str) -> None:
@@ -165,12 +182,18 @@ def main(argv=None) -> None:
                         help="run counts of the custom-design studies")
     parser.add_argument("--run-factors", type=int, default=2, help="factors of the custom-design studies")
     parser.add_argument("--reps", type=int, default=1, help="repeats per case (median shown)")
+    parser.add_argument("--grid", action="store_true",
+                        help="runs x factors of custom designs (--runs, --grid-factors), with peak memory")
+    parser.add_argument("--grid-factors", type=int, nargs="*", default=[2, 4, 6], help="factors of the grid")
     parser.add_argument("--quick", action="store_true", help="2, 4, 6 factors; 13 and 1000 runs; one repeat")
     parser.add_argument("--one", nargs=2, metavar=("FACTORS", "RUNS"), help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.one:
         k, runs = int(args.one[0]), None if args.one[1] == "ccd" else int(args.one[1])
         print(json.dumps(run_one(k, runs)))
+        return
+    if args.grid:
+        _grid_table([measure(k, n, args.reps) for n in args.runs for k in args.grid_factors])
         return
     if args.quick:
         args.factors, args.runs, args.reps = [2, 4, 6], [13, 1000], 1

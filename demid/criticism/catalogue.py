@@ -104,10 +104,16 @@ def _added_variable_stats_many(e: np.ndarray, u: np.ndarray, df2: int) -> np.nda
         return proj ** 2 * df2 / np.maximum(sse - proj ** 2, 1e-300 * np.maximum(sse, 1e-300))
 
 
-def step_directions(m: Model, q: np.ndarray) -> tuple[list[int], np.ndarray]:
+#: Change-points whose step columns are held at once: the columns are n long and there are about n
+#: change-points, so all of them at once would be an n x n matrix (800 MB at 10,000 runs).
+STEP_CHUNK = 256
+
+
+def step_direction_chunks(m: Model, q: np.ndarray, size: int | None = None):
     """Change-points in run order (index into the data of the first run after each) and their step columns
-    residualised on the model and normalised (n, C); change-points the model already explains (a block
-    boundary) are left out."""
+    residualised on the model and normalised (n, C), ``size`` change-points at a time; change-points the model
+    already explains (a block boundary) are left out."""
+    size = size or STEP_CHUNK
     kept = np.flatnonzero(m.keep)
     order = kept[np.argsort(m.data.runs[kept].astype(float), kind="stable")]
     starts, cols = [], []
@@ -117,7 +123,16 @@ def step_directions(m: Model, q: np.ndarray) -> tuple[list[int], np.ndarray]:
         if np.linalg.norm(r) > 1e-6 * max(np.linalg.norm(col), 1e-300):
             starts.append(int(order[c]))
             cols.append(r / np.linalg.norm(r))
-    return starts, (np.column_stack(cols) if cols else np.zeros((len(kept), 0)))
+        if len(cols) == size:
+            yield starts, np.column_stack(cols)
+            starts, cols = [], []
+    if cols:
+        yield starts, np.column_stack(cols)
+
+
+def step_starts(m: Model, q: np.ndarray) -> list[int]:
+    """The change-points :func:`step_direction_chunks` tests."""
+    return [start for starts, _ in step_direction_chunks(m, q) for start in starts]
 
 
 def _outlier_stats(e: np.ndarray, hat: np.ndarray, df: int):
@@ -296,16 +311,20 @@ class Round:
         change-points (at least STEP_MIN_RUNS runs each side); nominal p Bonferroni over the change-points
         (ranking only: the family test uses the simulated joint null of the maximum)."""
         df = m.df_resid
-        starts, directions = step_directions(m, q)
+        starts, f_obs, f_null = [], [], None
+        for chunk, directions in step_direction_chunks(m, q):
+            starts += chunk
+            f_obs.append(_added_variable_stats_many(e_obs, directions, df - 1)[:, 0])
+            chunk_null = _added_variable_stats_many(e_null, directions, df - 1).max(axis=0)
+            f_null = chunk_null if f_null is None else np.maximum(f_null, chunk_null)
         if not starts:
             return
-        f_obs = _added_variable_stats_many(e_obs, directions, df - 1)[:, 0]
+        f_obs = np.concatenate(f_obs)
         best = int(np.argmax(f_obs))
         n_points = len(starts)
         h = Hypothesis("step", starts[best], [], float(f_obs[best]),
                        float(min(0.0, math.log(n_points) + f_logp(f_obs[best], df - 1))),
                        info={"change_points": n_points})
-        f_null = _added_variable_stats_many(e_null, directions, df - 1).max(axis=0)
         h.null_logp = np.minimum(0.0, math.log(n_points) + f_logp(f_null, df - 1))
         self.hypotheses.append(h)
 

@@ -24,7 +24,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "TRANSFORM_NAMES", "Data", "ExtendedSurrogate", "Model", "ModelForm", "aicc_of", "boxcox",
-    "infer_axial_distance", "inv_boxcox", "json_number", "leverages", "orthonormal_basis", "residualize",
+    "gaussian_loglik", "infer_axial_distance", "inv_boxcox", "json_number", "leverages", "orthonormal_basis", "residualize",
     "run_label", "short_number", "transform_name",
 ]
 
@@ -92,6 +92,12 @@ def inv_boxcox(z: np.ndarray, lam: float | None) -> np.ndarray:
         return np.exp(np.clip(z, -700, 700))
     base = np.maximum(1.0 + lam * z, 1e-12)
     return np.exp(np.clip(np.log(base) / lam, -700, 700))
+
+
+def gaussian_loglik(ssr: float, n: int) -> float:
+    """Gaussian log-likelihood of n observations at the maximum-likelihood variance ssr / n."""
+    sigma2 = ssr / n
+    return -0.5 * n * (np.log(2 * np.pi * sigma2) + 1.0)
 
 
 def aicc_of(llf: float, nobs: int, k: int) -> float:
@@ -294,9 +300,7 @@ class Model:
     @property
     def loglik(self) -> float:
         """Gaussian log-likelihood of all n original observations (mean-shift for excluded runs)."""
-        n = self.data.n
-        sigma2 = self.ssr / n
-        ll = -0.5 * n * (np.log(2 * np.pi * sigma2) + 1.0) + 0.5 * float(np.sum(np.log(self.w)))
+        ll = gaussian_loglik(self.ssr, self.data.n) + 0.5 * float(np.sum(np.log(self.w)))
         if self.spec.weight_on is not None and self.spec.dropped:
             v = np.asarray(self.spec.weight_values, dtype=float)[~self.keep]
             ll += 0.5 * float(np.sum(-self.spec.weight_gamma * v))

@@ -17,12 +17,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..design import LEVERAGE_UNPREDICTABLE, term_name
-from .catalogue import CAUSES, MISFIT_TESTS, step_directions
+from .catalogue import CAUSES, MISFIT_TESTS, STEP_CHUNK, step_direction_chunks, step_starts
 from .discrimination import (AMBIGUOUS_AICC, CONFIRM_AICC, CONFIRM_PURPOSE, PURPOSE, candidate_kind,
                              candidate_label, close_candidates, discriminating_runs)
 from .extensions import RUN_ORDER_CAUSES, catalogue_entry, detail_json, extend_for, step_price
 from .messages import corner_only_runs
-from .models import Data, Model, json_number, orthonormal_basis, run_label, transform_name
+from .models import (Data, Model, aicc_of, gaussian_loglik, json_number, orthonormal_basis, run_label,
+                     transform_name)
 from .slips import slip_candidates
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, other_reading_of_the_run, rests_on_one_run,
                       strongest_rival, unexplained_evidence)
@@ -202,7 +203,8 @@ def _deciding_runs(data: Data, close: list[dict], purpose: str, named: tuple | N
     for c in close:
         # a rival's covariates are not: runs spent telling them apart would not decide the named cause
         aliased = c["cause"] == "missing_term" or (c["cause"], c["detail"]) == named
-        for j, (mo, detail) in enumerate(zip([c["model"]] + (c.get("aliased_models", []) if aliased else []),
+        model = c["model"] if "model" in c else Model(data, c["spec"])
+        for j, (mo, detail) in enumerate(zip([model] + (c.get("aliased_models", []) if aliased else []),
                                              [c["detail"]] + c.get("aliased", []))):
             models.append(mo)
             labels.append(candidate_label(c["cause"], detail))
@@ -238,14 +240,32 @@ def candidate_entries(data: Data, base_model: Model, first_round) -> list[dict]:
             entry["aliased"] = [term_name(t, data.factors) for t in h.detail.terms[1:]]
         entries.append(entry)
         if h.cause == "step":
-            starts, _ = step_directions(base_model, orthonormal_basis(base_model.xw))
-            for start in starts:
+            for start, step_aicc in _step_aiccs(data, base_model):
                 if start != int(h.detail):
-                    other = Model(data, replace(base_model.spec, step=start))
+                    # the spec, not the model: a model per change-point kept at once grows as runs squared;
+                    # the few that come close are fitted (the same numbers) when their runs are chosen
                     entries.append({"cause": "step", "detail": run_label(data.runs[start]),
-                                    "aicc": other.aicc + price, "model": other})
+                                    "aicc": step_aicc + price, "spec": replace(base_model.spec, step=start)})
     _alias_scatter_covariates(entries)
     return entries
+
+
+def _step_aiccs(data: Data, base_model: Model):
+    """(change-point, AICc) of the base model with a step at each change-point in run order.  On up to
+    STEP_CHUNK runs each is fitted; on more, a fit per change-point would cost runs squared, and the residual
+    sum of squares comes from the base fit: SSR = SSR_base - (u'e)^2, u the step column residualised on the
+    model and normalised, e the base residuals (the same AICc to round-off)."""
+    q = orthonormal_basis(base_model.xw)
+    if len(base_model.y) <= STEP_CHUNK:
+        for start in step_starts(base_model, q):
+            yield start, Model(data, replace(base_model.spec, step=start)).aicc
+        return
+    n_params = base_model.n_params + 1  # the step's coefficient
+    for starts, directions in step_direction_chunks(base_model, q):
+        ssr = base_model.ssr - (directions.T @ base_model.resid_w) ** 2
+        for start, step_ssr in zip(starts, ssr):
+            loglik = gaussian_loglik(float(step_ssr), data.n) + 0.5 * float(np.sum(np.log(base_model.w)))
+            yield start, aicc_of(loglik, data.n, n_params)
 
 
 def _alias_scatter_covariates(entries: list[dict]) -> None:

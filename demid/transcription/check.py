@@ -23,6 +23,10 @@ if TYPE_CHECKING:
     from ..spec import MaterialSpec
 
 
+#: Response hypotheses are evaluated in blocks of at most this many cells (runs x hypotheses): 32 MB.
+_CELLS_PER_BLOCK = 4_000_000
+
+
 # --------------------------------------------------------------------------- results
 @dataclass(frozen=True)
 class Suspect:
@@ -260,9 +264,13 @@ def _response_hypotheses(texts: list, response: str, y_all: np.ndarray, fit_rows
             y_columns.append((i, value))
             records.append((row, response, text, y_all[row], cand_text, value, kind,
                             _irregularity(text, cand_text, precision[row])))
-    if y_columns:
-        ymat = np.repeat(y[:, None], len(y_columns), axis=1)
-        ymat[[i for i, _ in y_columns], np.arange(len(y_columns))] = [v for _, v in y_columns]
+    # a column per hypothesis, about 20 per cell: a few thousand columns at a time, or a large table's
+    # hypotheses would be an n x 20n matrix
+    per_block = max(1, _CELLS_PER_BLOCK // max(len(y), 1))
+    for start in range(0, len(y_columns), per_block):
+        part = y_columns[start:start + per_block]
+        ymat = np.repeat(y[:, None], len(part), axis=1)
+        ymat[[i for i, _ in part], np.arange(len(part))] = [v for _, v in part]
         blocks.append(table_design.evaluate(ymat, coef_index))
 
 

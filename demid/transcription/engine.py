@@ -24,6 +24,19 @@ if TYPE_CHECKING:
 
 _ALPHA_SLACK = 3e-4  # coded units: a table printed from alpha = 1.41421 against a declared 1.414
 
+#: Up to this many runs pure error is the projection on the replicate groups (an n x n matrix); above it, the
+#: deviations from each group's mean (the same value to round-off, without 800 MB at 10,000 runs).
+_PROJECTION_RUNS = 256
+
+
+def _group_deviations_ss(y: np.ndarray, groups: np.ndarray) -> np.ndarray:
+    """Sum of squared deviations of each column of y (n, m) from its replicate group's mean."""
+    size = np.bincount(groups)
+    means = np.zeros((len(size), y.shape[1]))
+    np.add.at(means, groups, y)
+    means /= size[:, None]
+    return np.sum((y - means[groups]) ** 2, axis=0)
+
 
 # --------------------------------------------------------------------------- fitting engine
 def _coded_to_actual_matrix(coding: Coding, terms: list[Term]) -> np.ndarray:
@@ -110,9 +123,12 @@ class DesignFit:
         self.hat = np.sum(u[:, :rank] ** 2, axis=1)
         groups = replicate_groups(coded) if n else np.zeros(0, dtype=int)
         n_groups = int(groups.max()) + 1 if n else 0
-        onehot = np.zeros((n, n_groups))
-        onehot[np.arange(n), groups] = 1.0
-        self.group_mean = onehot @ (onehot.T / onehot.sum(axis=0)[:, None]) if n else np.zeros((0, 0))
+        self.groups = groups
+        self.group_mean = None if n > _PROJECTION_RUNS else np.zeros((0, 0))
+        if 0 < n <= _PROJECTION_RUNS:
+            onehot = np.zeros((n, n_groups))  # runs x groups: as large as n x n without replicates
+            onehot[np.arange(n), groups] = 1.0
+            self.group_mean = onehot @ (onehot.T / onehot.sum(axis=0)[:, None])
         self.n, self.p, self.rank = n, p, rank
         self.df_pe = n - n_groups
         self.to_actual = _coded_to_actual_matrix(coding, terms) if need_actual else None
@@ -123,7 +139,10 @@ class DesignFit:
         resid = y - self.x @ beta
         sse = np.sum(resid ** 2, axis=0)
         sst = np.sum((y - y.mean(axis=0)) ** 2, axis=0)
-        ss_pe = np.sum((y - self.group_mean @ y) ** 2, axis=0)
+        if self.group_mean is None:
+            ss_pe = _group_deviations_ss(y, self.groups)
+        else:
+            ss_pe = np.sum((y - self.group_mean @ y) ** 2, axis=0)
         if np.all(self.hat < LEVERAGE_ONE):
             press = np.sum((resid / (1.0 - self.hat)[:, None]) ** 2, axis=0)
         else:
@@ -153,11 +172,16 @@ def evaluate_designs(coded: np.ndarray, y: np.ndarray, terms: list[Term], to_act
     with np.errstate(divide="ignore", invalid="ignore"):
         press = np.where(np.all(hat < LEVERAGE_ONE, axis=1), np.sum((resid / (1.0 - hat)) ** 2, axis=1), np.nan)
     # Replicates: the rule of demid.design.replicate_groups, for a batch of designs at once.
-    keys = replicate_keys(coded)
-    same = np.all(keys[:, :, None, :] == keys[:, None, :, :], axis=3)
-    size = same.sum(axis=2)
-    ss_pe = np.sum((y[None, :] - (same @ y) / size) ** 2, axis=1)
-    df_pe = n - np.rint(np.sum(1.0 / size, axis=1)).astype(int)
+    if n <= _PROJECTION_RUNS:
+        keys = replicate_keys(coded)
+        same = np.all(keys[:, :, None, :] == keys[:, None, :, :], axis=3)
+        size = same.sum(axis=2)
+        ss_pe = np.sum((y[None, :] - (same @ y) / size) ** 2, axis=1)
+        df_pe = n - np.rint(np.sum(1.0 / size, axis=1)).astype(int)
+    else:  # one design at a time: the batch's (m, n, n) comparison would grow as runs squared times designs
+        groups = [replicate_groups(c) for c in coded]
+        ss_pe = np.array([_group_deviations_ss(y[:, None], g)[0] for g in groups])
+        df_pe = np.array([n - (int(g.max()) + 1) for g in groups])
     out = _statistics(sse, sst, press, ss_pe, n, p, rank, df_pe)
     return _add_coefficients(out, beta, to_actual, coefficients)
 
