@@ -36,6 +36,18 @@ class Level2Problem:
         return relative_error(self.values(s), self.targets[:, None])
 
 
+def spread_starts(order: np.ndarray, grid_s: np.ndarray, starts: int) -> list[int]:
+    """Up to ``starts`` grid nodes in the ranking ``order``, each more than 0.1 (search units, largest coordinate)
+    from those taken before it, so that the local searches start in different places."""
+    picks = [order[0]]
+    for i in order[1:]:
+        if len(picks) >= starts:
+            break
+        if np.min(np.max(np.abs(grid_s[picks] - grid_s[i]), axis=1)) > 0.1:
+            picks.append(i)
+    return picks
+
+
 def _worst(err: np.ndarray, weights: np.ndarray, shared: bool) -> np.ndarray:
     """Largest weighted |error| w_k |e_k| per column; with a shared bias, what is left after the best one
     (:func:`_shared_bias_envelope`)."""
@@ -78,12 +90,7 @@ def minimax(problem: Level2Problem, grid_s: np.ndarray, grid_err: np.ndarray, ro
     weights = problem.weights[rows]
     worst = _worst(grid_err[rows], weights, shared)
     order = np.argsort(worst, kind="stable")
-    picks = [order[0]]
-    for i in order[1:]:
-        if len(picks) >= starts:
-            break
-        if np.min(np.max(np.abs(grid_s[picks] - grid_s[i]), axis=1)) > 0.1:
-            picks.append(i)
+    picks = spread_starts(order, grid_s, starts)
     d = grid_s.shape[1]
 
     def evaluate(s):
@@ -132,12 +139,7 @@ def _smallest_bias(problem: Level2Problem, grid_s: np.ndarray, grid_err: np.ndar
     w = problem.weights[others]
     score = np.max(w[:, None] * np.abs(grid_err[others]), axis=0) + _BIAS_WEIGHT * np.abs(grid_err[row])
     order = np.argsort(score, kind="stable")
-    picks = [order[0]]
-    for i in order[1:]:
-        if len(picks) >= starts:
-            break
-        if np.min(np.max(np.abs(grid_s[picks] - grid_s[i]), axis=1)) > 0.1:
-            picks.append(i)
+    picks = spread_starts(order, grid_s, starts)
 
     def cons(v):
         e = problem.errors(v[:d])[:, 0]
