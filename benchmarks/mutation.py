@@ -955,7 +955,7 @@ def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]
 #: its mutants are drawn apart from the in-sample draw (the default ``--seed``, against which tests were written
 #: run by run), and no test may be written against them.  Once its survivors have been read and tests added for
 #: them, its score is in-sample too: write down a new seed here, unused, before the next round.
-HELD_OUT_SEED = 704_913
+HELD_OUT_SEED = 902_611  # the third round's; 704_913's 18 mutants were read and tested (in-sample now)
 
 
 def _draw(mutant_id: str, seed: int) -> float:
