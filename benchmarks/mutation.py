@@ -958,6 +958,22 @@ def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]
 HELD_OUT_SEED = 902_611  # the third round's; 704_913's 18 mutants were read and tested (in-sample now)
 
 
+#: Draws that tests were written against, run by run (seed, mutants per module): never part of a held-out draw.
+#: The in-sample rounds used seed 14 with up to 20 per module, seed 15 with up to 8 (the third round), and the
+#: second held-out draw (704_913, 3 per module) was read and tested.
+SEEN_DRAWS = ["14:20", "15:8", "704913:3"]
+
+
+def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:
+    """The ids of the ``SEED:N`` draws in ``seen`` (the N lowest-hash mutants of each module for SEED)."""
+    ids: set[str] = set()
+    for item in seen:
+        seed, n = (int(part) for part in item.split(":"))
+        for muts in per_module.values():
+            ids.update(mu.id for mu in sorted(muts, key=lambda mu: _draw(mu.id, seed))[:n])
+    return ids
+
+
 def _draw(mutant_id: str, seed: int) -> float:
     """A uniform number in [0, 1) fixed by the mutant id and the seed."""
     digest = hashlib.sha256(f"{seed}:{mutant_id}".encode("utf-8")).digest()
@@ -981,6 +997,9 @@ def main(argv=None) -> int:
                     help="score the held-out draw (HELD_OUT_SEED, without the mutants of the --seed draw) next to "
                          "the in-sample draw of --seed, with the same --sample/--per-module")
     ap.add_argument("--held-out-only", action="store_true", help="with --held-out: run the held-out draw alone")
+    ap.add_argument("--seen", action="append", default=[], metavar="SEED:N",
+                    help="with --held-out: also leave out of the held-out draw the N lowest-hash mutants per module "
+                         "of SEED (draws that tests were written against; repeatable). Default: SEEN_DRAWS")
     ap.add_argument("--list", action="store_true", help="count mutants and exit")
     ap.add_argument("--show", action="store_true", help="print every mutant id with --list")
     args = ap.parse_args(argv)
@@ -1006,6 +1025,7 @@ def main(argv=None) -> int:
     draws = {f"in-sample (seed {args.seed})": _choose(per_module, args, args.seed, everything)}
     if args.held_out:
         taken = {mu.id for muts in draws[next(iter(draws))].values() for mu in muts}
+        taken |= _seen_ids(per_module, args.seen or SEEN_DRAWS)
         held = _choose(per_module, args, HELD_OUT_SEED, everything, exclude=taken)
         if args.held_out_only:
             draws = {}
