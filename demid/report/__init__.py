@@ -10,7 +10,7 @@ from ..lazy import lazy_exports
 
 _WHERE = {
     "execute_report": ".render", "render_html": ".render",
-    "ReportSections": ".sections", "markdown_table": ".sections",
+    "ReportSections": ".sections", "markdown_table": ".markdown",
     "IDENTIFIABILITY_COLUMNS": ".tables", "SURROGATE_FIT_COLUMNS": ".tables", "TRANSCRIPTION_COLUMNS": ".tables",
     "identifiability_table": ".tables", "pareto_intervals": ".tables", "stack_material_tables": ".tables",
     "summary_tables": ".tables", "surrogate_fit_table": ".tables",

@@ -66,9 +66,13 @@ def stored_surfaces(fits: pd.DataFrame, anova: pd.DataFrame, table: pd.DataFrame
     return out
 
 
-def _symbol(name: str, symbols: dict[str, str]) -> str:
+def term_symbol(name: str, symbols: dict[str, str]) -> str:
+    """A model term in ``symbols`` (factor -> letter or label): ``a:b`` as ``A·B``, ``a^2`` as ``A²``; the
+    intercept as "–"."""
+    if name == "Intercept":
+        return "–"
     return ":".join(symbols.get(p.split("^")[0], p.split("^")[0]) + ("²" if p.endswith("^2") else "")
-                    for p in name.split(":"))
+                    for p in name.split(":")).replace(":", "·")
 
 
 #: Coefficients smaller than this fraction of the largest are floating-point round-off of a term
@@ -84,7 +88,7 @@ def equation(names: list[str], coefficients, symbols: dict[str, str], response: 
     for name, b in zip(names[1:], coefficients[1:]):
         if abs(float(b)) <= floor:
             continue
-        text += f" {'−' if b < 0 else '+'} {abs(b):.{digits}g}·" + _symbol(name, symbols).replace(":", "·")
+        text += f" {'−' if b < 0 else '+'} {abs(b):.{digits}g}·" + term_symbol(name, symbols)
     return text
 
 

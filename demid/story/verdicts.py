@@ -15,6 +15,7 @@ import pandas as pd
 
 # the thresholds are the search range's scale, shared with the combinations: defined beside BOUND_TOUCH
 from ..sampling.domain import BOUND_TOUCH, IDENTIFIED_MAX_WIDTH, SIDES_OF, UNRESOLVED_MIN_WIDTH, Domain, sides_at_limit
+from ..uncertainty.recommended import UNINFORMATIVE_FRACTION
 from .words import unit_text
 
 VERDICT_TEXT = (
@@ -32,6 +33,11 @@ VERDICT_COLUMNS = ["material", "scenario", "factor", "strict_lower", "strict_upp
                    "plausible_upper", "verdict", "reason"]
 
 UNINFORMATIVE = "uninformative observable"
+
+#: The rule of :data:`UNINFORMATIVE` in words, read beside :data:`VERDICT_TEXT`.
+UNINFORMATIVE_TEXT = (f"**{UNINFORMATIVE}**: every observable of the scenario leaves at least "
+                      f"{100 * UNINFORMATIVE_FRACTION:g} % of the search range admissible on its own (its band covers "
+                      "its whole simulated range).")
 
 
 def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False,
@@ -60,6 +66,13 @@ def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: 
 def interval_at_bound(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False) -> str:
     """The ``at_bound`` value of one interval in its factor's range (:meth:`Domain.at_bound`)."""
     return Domain(("x",), (bound_lower,), (bound_upper,), (log,)).at_bound([lower], [upper])[0]
+
+
+def reference_within(level2: dict) -> bool:
+    """Whether the reference point meets every target: level 2's own judgement (each observable against its
+    own tolerance), or, in results written before it was recorded, its largest error against the tolerance."""
+    inside = level2.get("reference_within")
+    return level2["reference_max_error"] <= level2["tolerance"] if inside is None else inside
 
 
 def _pct(width: float) -> str:
