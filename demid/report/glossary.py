@@ -46,5 +46,5 @@ def term(words: str, key: str) -> str:
 
 def glossary(report: ReportContext) -> list:
     return [report.md("## Terms\n\n" + "\n".join(f"- <strong id=\"term-{key}\">{name}</strong>: {text}"
-                                                for key, name, text in GLOSSARY))]
+                                                 for key, name, text in GLOSSARY))]
 

@@ -52,8 +52,8 @@ def waves(report: ReportContext, m: str) -> list:
         lines += ["", f"**Why the loop stopped after wave {last['wave']}:** {stop_line}"]
     parts = [report.md("\n".join(lines))]
     parts.append(report.image(report.root / "figures" / f"waves_{m}.png",
-                             f"Feasible fraction of Ω against the runs simulated, and each factor's admissible "
-                             f"interval per wave over the wave's box, of {report.label(m)}"))
+                              f"Feasible fraction of Ω against the runs simulated, and each factor's admissible "
+                              f"interval per wave over the wave's box, of {report.label(m)}"))
     return parts
 
 
@@ -79,7 +79,7 @@ def next_wave(report: ReportContext, m: str) -> list:
             sub[f.name] = [coordinate_text(float(v), f.lower, f.upper) for v in sub[f.name]]
     sub = sub.rename(columns={f.name: f.label for f in spec.factors})
     return [report.md("### What to simulate next\n\n" + report.speak(reason, m) + (" " + advice if advice else "")
-                     + " Once simulated, they are studied in the next domain (tables/next_domain.csv) with the "
-                     "earlier runs inside it (`design: {type: custom}`).\n\n"
-                     + markdown_table(sub.drop(columns="material")))]
+                      + " Once simulated, they are studied in the next domain (tables/next_domain.csv) with the "
+                      "earlier runs inside it (`design: {type: custom}`).\n\n"
+                      + markdown_table(sub.drop(columns="material")))]
 

@@ -37,6 +37,11 @@ REPORT_HEADERS = {
 P_COLUMNS = frozenset({"p_value", "lof_p", "breusch_pagan_p", "reset_p", "shapiro_p", "PR(>F)"})
 
 
+def change_text(before: float, after: float) -> str:
+    """The relative change from ``before`` to ``after``, signed, in % to one decimal; "n/a" from nothing."""
+    return f"{100 * (after - before) / before:+.1f} %" if before > 0 else "n/a"
+
+
 def markdown_table(frame: pd.DataFrame, digits: int = 4) -> str:
     """A GitHub-style Markdown table (no extra dependency), numbers to ``digits`` significant digits;
     headers in words (:data:`REPORT_HEADERS`)."""

@@ -64,7 +64,7 @@ def pareto(report: ReportContext, m: str) -> list:
     if crit_path.is_file():
         import json
 
-        from .summary import unpredictive_responses
+        from .model_criticism import unpredictive_responses
 
         bad = [r for r in dict.fromkeys((par["error_of"], par["minimise"]))
                if r in unpredictive_responses(json.loads(crit_path.read_text(encoding="utf-8")))]

@@ -1,15 +1,104 @@
 """The report's section "What the model gets wrong": level 1 (each surrogate against the simulation runs), level
-2 (the calibrated simulation against the experiment) and the reference point, as the criticism step wrote them."""
+2 (the calibrated simulation against the experiment) and the reference point, as the criticism step wrote them;
+and the same in a line per response for the summary (:func:`criticism_lines`)."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from ..story.verdicts import reference_within
+from ..story.words import in_order, labelled, level2_own_tolerances, level2_within
 from .glossary import term
 from .markdown import keys_labelled, markdown_table
 
 if TYPE_CHECKING:
     from .context import ReportContext
+
+
+#: The criticism verdicts in the report's words.
+VERDICT_WORDS = {"adequate": "adequate (within the tests' power)", "defect": "defect named",
+                 "unexplained": "misfit unexplained", "does_not_predict": "does not predict",
+                 "ambiguous": "ambiguous cause"}
+
+
+def verdict_sentence(response: str, res: dict) -> str:
+    """The verdict message without its leading "<response>: <verdict> — " (the report names both)."""
+    text = res.get("verdict_message", "")
+    head = f"{response}: "
+    if text.startswith(head) and " — " in text:
+        return text.split(" — ", 1)[1]
+    return text[len(head):] if text.startswith(head) else text
+
+
+def unpredictive_responses(info: dict) -> list[str]:
+    """Responses whose surrogate does not predict left-out runs (verdict ``does_not_predict``)."""
+    return [r for r, res in in_order(info.get("level1") or {}) if res.get("verdict") == "does_not_predict"]
+
+
+def unreliable_surrogate_lines(info: dict, spec) -> list[str]:
+    """One warning per scenario (and the Pareto front) that relies on a surrogate that does not predict."""
+    bad = unpredictive_responses(info)
+    lines = []
+    for sc in spec.scenarios:
+        used = [r for r in sc.observables if r in bad]
+        if used:
+            names = ", ".join(spec.response_labels.get(r, r) for r in used)
+            lines.append(f"⚠ Scenario *{sc.label}* uses {names}, whose surrogate does not predict left-out runs "
+                         f"(Q² < 0): its admissible set should not be used to decide admissibility.")
+    pareto = spec.pareto
+    used = [r for r in (pareto.error_of, pareto.minimise) if r in bad] if pareto is not None else []
+    if used:
+        names = ", ".join(spec.response_labels.get(r, r) for r in dict.fromkeys(used))
+        lines.append(f"⚠ The Pareto front uses {names}, whose surrogate does not predict left-out runs (Q² < 0): "
+                     f"treat the front as indicative only.")
+    return lines
+
+
+def criticism_lines(info: dict, spec) -> list[str]:
+    """One line per response (surrogate vs runs) and one for simulation vs experiment."""
+    lines = []
+    level1 = info.get("level1", {})
+    for response in [r for r in spec.response_names if r in level1]:
+        res = level1[response]
+        label = spec.response_labels.get(response, response)
+        if res.get("verdict_message"):
+            lines.append(f"Surrogate of {label} — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
+                         + labelled(verdict_sentence(response, res), spec))
+        elif res["messages"]:
+            lines.append(f"Surrogate of {label}: " + labelled(" ".join(res["messages"]), spec))
+        else:
+            lines.append(f"Surrogate of {label}: no defect found — the quadratic fits the simulation runs.")
+    run_order = info.get("run_order") or {}
+    if run_order.get("drift_tested") is False:
+        lines.append(f"Run order: {run_order['message']}")
+    lines += unreliable_surrogate_lines(info, spec)
+    level2 = info.get("level2")
+    if level2:
+        from ..criticism.messages import level2_miss_text
+        from ..precision import percent_text
+
+        tol = 100 * level2["tolerance"]
+        own = level2_own_tolerances(level2)
+        uniform = own is None
+        within = level2_within(level2, spec)
+        best = percent_text(level2["best_max_error"])
+        own_miss = labelled(level2_miss_text(level2["best_errors"], level2["tolerance"], own), spec) if not uniform else ""
+        if level2["feasible"]:
+            lines.append(f"Simulation vs experiment: every target can be met within {within} "
+                         f"(best point misses {f'by at most {best}' if uniform else own_miss}).")
+        else:
+            lines.append(f"Simulation vs experiment: the targets cannot all be met within {within}; the best point "
+                         f"misses {f'by {best}' if uniform else own_miss}"
+                         + (f", limited by {spec.response_labels.get(limit, limit)}"
+                            if (limit := level2.get("bottleneck")) else "") + ".")
+        if level2.get("reference_max_error") is not None:
+            lines.append(f"Reference point: largest error {percent_text(level2['reference_max_error'])} "
+                         f"({'within' if reference_within(level2) else 'outside'} "
+                         + (f"the {tol:g} % tolerance)." if uniform else
+                            level2_within(level2, spec, brackets=False) + ")."))
+        # a best point on a bound is told by the advice (demid.story), where widening can reach something
+        lines += list(level2.get("extrapolation") or [])
+    return lines
 
 
 def criticism(report: ReportContext, m: str) -> list:
@@ -27,8 +116,6 @@ def criticism(report: ReportContext, m: str) -> list:
              f"with its extension and the measured gain (leave-one-out RMSE, {term('AICc', 'aicc')}); a "
              f"surrogate whose {term('Q²', 'q2')} is below 0 does not predict."]
     from ..precision import percent_text
-    from ..story.words import in_order, labelled
-    from .summary import VERDICT_WORDS, unreliable_surrogate_lines, verdict_sentence
 
     spec = report.specs()[m]
     for response, res in in_order(info["level1"], spec.response_names):
@@ -71,13 +158,13 @@ def criticism(report: ReportContext, m: str) -> list:
             where = "cannot lie in it: the admissible set is empty"
         else:
             near = ", ".join(f"{spec.factor(f).label} = {v:.4g}" for f, v in in_order(pos["nearest_admissible"],
-                                                                                     spec.factor_names))
+                                                                                      spec.factor_names))
             where = (f"lies outside it, {pos['distance_pct_of_range']:.1f} % of the search range from the "
                      f"nearest admissible point ({near})")
         scenario = report.speak(pos["scenario"], m)
         lines.append(f"- Reference point vs scenario *{scenario}*: it {where} (errors {errs}).")
     parts = [report.md("\n".join(lines))]
     parts.append(report.image(report.root / "figures" / f"residuals_{m}.png",
-                             f"Residuals of each response surface of {report.label(m)} against fitted value, run order and normal quantiles"))
+                              f"Residuals of each response surface of {report.label(m)} against fitted value, run order and normal quantiles"))
     return parts
 

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 import pandas as pd
 
-from .markdown import RANKING_HEADERS, keys_labelled, markdown_table
+from .markdown import RANKING_HEADERS, change_text, keys_labelled, markdown_table
 
 if TYPE_CHECKING:
     from .context import ReportContext
@@ -64,16 +64,14 @@ def uncertainty(report: ReportContext, m: str) -> list:
         if len(scen) >= 2:
             first = sub[sub["scenario"] == scen[0]].iloc[0]
             last = sub[sub["scenario"] == scen[-1]].iloc[0]
-            def _contr(a, b):
-                return f"{100 * (b - a) / a:+.1f} %" if a > 0 else "n/a"
             lines += ["", f"From {shown.get(scen[0], scen[0])} to {shown.get(scen[-1], scen[-1])} the feasible "
                       "fraction changes by "
-                      f"{_contr(first['strict_fraction_pct'], last['strict_fraction_pct'])} (strict) and "
-                      f"{_contr(first['robust_fraction_pct'], last['robust_fraction_pct'])} (robust)."]
+                      f"{change_text(first['strict_fraction_pct'], last['strict_fraction_pct'])} (strict) and "
+                      f"{change_text(first['robust_fraction_pct'], last['robust_fraction_pct'])} (robust)."]
         parts.append(report.md("\n".join(lines)))
     parts.append(report.md("**Tolerance sweep** — conclusions should not hang on one ε."))
     parts.append(report.image(report.root / "figures" / f"sweep_{m}.png",
-                             f"Feasible fraction and admissible widths of {report.label(m)} against the tolerance"))
+                              f"Feasible fraction and admissible widths of {report.label(m)} against the tolerance"))
     ranking = report.csv("observable_ranking.csv")
     if ranking is not None and len(ranking[ranking["material"] == m]):
         from ..story import RANKING_KINDS, StudyAdvice
@@ -83,18 +81,18 @@ def uncertainty(report: ReportContext, m: str) -> list:
         out_of_reach = ("targets_reachable" in sub.columns
                         and not sub["targets_reachable"].astype(str).str.lower().eq("true").all())
         parts.append(report.md("**Which experiment next.** Every observable set ranked by the information it "
-                              "adds: how far it narrows the parameters, in bits (1 bit = the plausible region "
-                              "halves; the Kullback–Leibler divergence from the uniform prior on Ω to the "
-                              "posterior). *Added to the best smaller set* is what the last observable brings "
-                              "beyond the best set without it"
-                              + ("; sets whose targets cannot be met (one alone or all together) come "
-                                 "last, without a gain: their "
-                                 "posterior measures a discrepancy between simulation and experiment, not "
-                                 "information" if out_of_reach else "") + ".\n\n"
-                              + markdown_table(keys_labelled(ranking_display(sub, info.get("uninformative")), spec))
-                              + ("\n\n" + "\n".join(walk) if walk else "")))
+                               "adds: how far it narrows the parameters, in bits (1 bit = the plausible region "
+                               "halves; the Kullback–Leibler divergence from the uniform prior on Ω to the "
+                               "posterior). *Added to the best smaller set* is what the last observable brings "
+                               "beyond the best set without it"
+                               + ("; sets whose targets cannot be met (one alone or all together) come "
+                                  "last, without a gain: their "
+                                  "posterior measures a discrepancy between simulation and experiment, not "
+                                  "information" if out_of_reach else "") + ".\n\n"
+                               + markdown_table(keys_labelled(ranking_display(sub, info.get("uninformative")), spec))
+                               + ("\n\n" + "\n".join(walk) if walk else "")))
     parts.append(report.image(report.root / "figures" / f"posterior_{m}.png",
-                             f"Marginal posterior densities of the factors of {report.label(m)}, one curve per observable set"))
+                              f"Marginal posterior densities of the factors of {report.label(m)}, one curve per observable set"))
     if info.get("notes"):
         parts.append(report.md("\n".join(f"- {report.speak(n, m)}" for n in info["notes"])))
     return parts

@@ -7,8 +7,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..io import read_parquet
+from ..precision import ROUND_OFF
 from .glossary import term
-from .markdown import markdown_table, study_keys_labelled
+from .markdown import change_text, markdown_table, study_keys_labelled
 from .tables import IDENTIFIABILITY_COLUMNS
 
 if TYPE_CHECKING:
@@ -40,8 +41,8 @@ def surrogate_fit(report: ReportContext) -> list:
     if table is None:
         return []
     return [report.md(f"## Surrogate fidelity{report.paper('Table 2')}\n\nrmse = √(SSE/n); resid_std = √(SSE/(n−p)); "
-                     "q2 = 1 − PRESS/SST (leave-one-out); lack of fit is tested against pure error from "
-                     "replicated runs.\n\n" + markdown_table(study_keys_labelled(table, report.specs())))]
+                      "q2 = 1 − PRESS/SST (leave-one-out); lack of fit is tested against pure error from "
+                      "replicated runs.\n\n" + markdown_table(study_keys_labelled(table, report.specs())))]
 
 
 def identifiability(report: ReportContext) -> list:
@@ -79,16 +80,15 @@ def identifiability(report: ReportContext) -> list:
             other = sub[sub["scenario"] == s]
             f0 = base["feasible_fraction_pct"].iloc[0]
             f1 = other["feasible_fraction_pct"].iloc[0]
-            change = f"{100 * (f1 - f0) / f0:+.1f} %" if f0 > 0 else "n/a"
             widths = []
             for fac in base["factor"]:
                 w0 = base.loc[base["factor"] == fac, "width"].iloc[0]
                 w1 = other.loc[other["factor"] == fac, "width"].iloc[0]
                 if w0 > 0 and w1 == w1:
-                    widths.append(f"W({factor_label.get(fac, fac)}) {100 * (w1 - w0) / w0:+.1f} %")
+                    widths.append(f"W({factor_label.get(fac, fac)}) {change_text(w0, w1)}")
             lines.append(f"- **{report.label(m)}**: {scenario_label.get(s, s)} vs "
                          f"{scenario_label.get(scen[0], scen[0])}: Φ {f0:.4g} % → {f1:.4g} % "
-                         f"({change}); " + ", ".join(widths))
+                         f"({change_text(f0, f1)}); " + ", ".join(widths))
     return [report.md("\n".join(lines))]
 
 
@@ -127,11 +127,11 @@ def paper_comparison(report: ReportContext) -> list:
                  + ".")
     shown = table.copy()
     # a difference at floating-point round-off of the value is no difference (1.4e-14 of 100)
-    noise = shown["abs_diff"].abs() <= 1e-9 * shown["published"].abs().clip(lower=1e-300)
+    noise = shown["abs_diff"].abs() <= ROUND_OFF * shown["published"].abs().clip(lower=1e-300)
     shown.loc[noise, ["abs_diff", "rel_diff"]] = 0.0
     known = shown["material"].isin(report.materials)
     shown.loc[known, "quantity"] = [report.speak(q, m) for q, m in zip(shown.loc[known, "quantity"],
-                                                                      shown.loc[known, "material"])]
+                                                                       shown.loc[known, "material"])]
     shown.loc[known, "material"] = shown.loc[known, "material"].map(report.label)
     return [report.md(text + "\n\n" + markdown_table(shown))]
 

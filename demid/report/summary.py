@@ -4,8 +4,9 @@ A recommended parameter set, the admissible interval and a verdict per factor an
 the criticism verdicts in one line each and the next step.  Every number is read from the
 results tree; nothing is recomputed here.  The verdicts on the plausible interval and the advice
 are :mod:`demid.story`'s (``tables/verdicts.csv``, ``tables/advice.csv``, the verdict rule in
-:mod:`demid.story.verdicts`, where the recommended point stands in :mod:`demid.story.recommended`); this
-module writes the criticism and combination lines and lays the section out.
+:mod:`demid.story.verdicts`, where the recommended point stands in :mod:`demid.story.recommended`); the
+criticism in a line per response is :mod:`.model_criticism`'s.  This module writes the combination lines and
+lays the section out.
 """
 
 from __future__ import annotations
@@ -15,99 +16,13 @@ from typing import TYPE_CHECKING
 import pandas as pd
 
 from ..io import read_parquet
-from ..story.verdicts import reference_within
-from ..story.words import in_order, labelled, level2_own_tolerances, level2_within
+from ..story.words import in_order
 from .glossary import term
 from .markdown import markdown_table
+from .model_criticism import criticism_lines
 
 if TYPE_CHECKING:
     from .context import ReportContext
-
-#: The criticism verdicts in the report's words.
-VERDICT_WORDS = {"adequate": "adequate (within the tests' power)", "defect": "defect named",
-                 "unexplained": "misfit unexplained", "does_not_predict": "does not predict",
-                 "ambiguous": "ambiguous cause"}
-
-
-def verdict_sentence(response: str, res: dict) -> str:
-    """The verdict message without its leading "<response>: <verdict> — " (the report names both)."""
-    text = res.get("verdict_message", "")
-    head = f"{response}: "
-    if text.startswith(head) and " — " in text:
-        return text.split(" — ", 1)[1]
-    return text[len(head):] if text.startswith(head) else text
-
-
-def unpredictive_responses(info: dict) -> list[str]:
-    """Responses whose surrogate does not predict left-out runs (verdict ``does_not_predict``)."""
-    return [r for r, res in in_order(info.get("level1") or {}) if res.get("verdict") == "does_not_predict"]
-
-
-def unreliable_surrogate_lines(info: dict, spec) -> list[str]:
-    """One warning per scenario (and the Pareto front) that relies on a surrogate that does not predict."""
-    bad = unpredictive_responses(info)
-    lines = []
-    for sc in spec.scenarios:
-        used = [r for r in sc.observables if r in bad]
-        if used:
-            names = ", ".join(spec.response_labels.get(r, r) for r in used)
-            lines.append(f"⚠ Scenario *{sc.label}* uses {names}, whose surrogate does not predict left-out runs "
-                         f"(Q² < 0): its admissible set should not be used to decide admissibility.")
-    pareto = spec.pareto
-    used = [r for r in (pareto.error_of, pareto.minimise) if r in bad] if pareto is not None else []
-    if used:
-        names = ", ".join(spec.response_labels.get(r, r) for r in dict.fromkeys(used))
-        lines.append(f"⚠ The Pareto front uses {names}, whose surrogate does not predict left-out runs (Q² < 0): "
-                     f"treat the front as indicative only.")
-    return lines
-
-
-def criticism_lines(info: dict, spec) -> list[str]:
-    """One line per response (surrogate vs runs) and one for simulation vs experiment."""
-    lines = []
-    level1 = info.get("level1", {})
-    for response in [r for r in spec.response_names if r in level1]:
-        res = level1[response]
-        label = spec.response_labels.get(response, response)
-        if res.get("verdict_message"):
-            lines.append(f"Surrogate of {label} — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
-                         + labelled(verdict_sentence(response, res), spec))
-        elif res["messages"]:
-            lines.append(f"Surrogate of {label}: " + labelled(" ".join(res["messages"]), spec))
-        else:
-            lines.append(f"Surrogate of {label}: no defect found — the quadratic fits the simulation runs.")
-    run_order = info.get("run_order") or {}
-    if run_order.get("drift_tested") is False:
-        lines.append(f"Run order: {run_order['message']}")
-    lines += unreliable_surrogate_lines(info, spec)
-    level2 = info.get("level2")
-    if level2:
-        from ..criticism.messages import level2_miss_text
-        from ..precision import percent_text
-
-        tol = 100 * level2["tolerance"]
-        own = level2_own_tolerances(level2)
-        uniform = own is None
-        within = level2_within(level2, spec)
-        best = percent_text(level2["best_max_error"])
-        own_miss = labelled(level2_miss_text(level2["best_errors"], level2["tolerance"], own), spec) if not uniform else ""
-        if level2["feasible"]:
-            lines.append(f"Simulation vs experiment: every target can be met within {within} "
-                         f"(best point misses {f'by at most {best}' if uniform else own_miss}).")
-        else:
-            lines.append(f"Simulation vs experiment: the targets cannot all be met within {within}; the best point "
-                         f"misses {f'by {best}' if uniform else own_miss}"
-                         + (f", limited by {spec.response_labels.get(limit, limit)}"
-                            if (limit := level2.get("bottleneck")) else "") + ".")
-        if level2.get("reference_max_error") is not None:
-            lines.append(f"Reference point: largest error {percent_text(level2['reference_max_error'])} "
-                         f"({'within' if reference_within(level2) else 'outside'} "
-                         + (f"the {tol:g} % tolerance)." if uniform else
-                            level2_within(level2, spec, brackets=False) + ")."))
-        # a best point on a bound is told by the advice (demid.story), where widening can reach something
-        lines += list(level2.get("extrapolation") or [])
-    return lines
-
 
 def combination_lines(combinations: dict, spec) -> list[str]:
     """One line per scenario and set: what the set identifies in combination (its text in
@@ -134,19 +49,18 @@ def summary(report: ReportContext) -> list:
     from ..sampling.residuals import PLAUSIBLE_DEFINITION
     from ..story import StudyAdvice, verdict_display
     from ..story.verdicts import UNINFORMATIVE_TEXT, VERDICT_TEXT
-    from ..story.words import in_order
 
     verdicts_all = report.csv("verdicts.csv")
     advice = StudyAdvice.from_frame(report.csv("advice.csv"))
     answers = [_answer_line(report, m, verdicts_all, advice) for m in report.materials]
     parts = [report.md("## Summary\n\n" + "\n".join(f"- {a}" for a in answers if a) + "\n\n"
-                      "**How to read it.** Per factor and observable scenario the "
-                      f"{term('plausible interval', 'plausible-set')} is judged; the strict interval (the set if "
-                      "surrogate and measurements were exact: section "
-                      f"*Admissible sets*{report.paper('Table 3')}) stands beside it. "
-                      f"{term('Plausible set', 'plausible-set')}: "
-                      + PLAUSIBLE_DEFINITION + " Verdicts: " + VERDICT_TEXT + " " + UNINFORMATIVE_TEXT
-                      + " Other terms: [Terms](#Terms).")]
+                       "**How to read it.** Per factor and observable scenario the "
+                       f"{term('plausible interval', 'plausible-set')} is judged; the strict interval (the set if "
+                       "surrogate and measurements were exact: section "
+                       f"*Admissible sets*{report.paper('Table 3')}) stands beside it. "
+                       f"{term('Plausible set', 'plausible-set')}: "
+                       + PLAUSIBLE_DEFINITION + " Verdicts: " + VERDICT_TEXT + " " + UNINFORMATIVE_TEXT
+                       + " Other terms: [Terms](#Terms).")]
     for m in report.materials:
         spec = report.specs()[m]
         lines = [f"### {spec.label}", ""]
