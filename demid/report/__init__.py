@@ -1,7 +1,7 @@
 """Cross-material tables and the HTML report.
 
 ``tables`` (the CSVs under tables/), ``sections`` (the report's text, read by the
-notebook) and ``render`` (papermill execution and HTML).  Names are imported from their
+notebook; one module per section, see its docstring) and ``render`` (papermill execution and HTML).  Names are imported from their
 submodule on first use (PEP 562): the report job's own process only executes and renders the
 notebook (the kernel builds the sections), so it does not import pandas and the sections for nothing.
 """
