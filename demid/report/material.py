@@ -64,10 +64,10 @@ def pareto(report: ReportContext, m: str) -> list:
     if crit_path.is_file():
         import json
 
-        from .model_criticism import unpredictive_responses
+        from ..story.verdicts import unpredictive_responses
 
-        bad = [r for r in dict.fromkeys((par["error_of"], par["minimise"]))
-               if r in unpredictive_responses(json.loads(crit_path.read_text(encoding="utf-8")))]
+        level1 = json.loads(crit_path.read_text(encoding="utf-8")).get("level1") or {}
+        bad = [r for r in dict.fromkeys((par["error_of"], par["minimise"])) if r in unpredictive_responses(level1)]
         if bad:
             text += (f" ⚠ It relies on the surrogate of {', '.join(said.get(r, r) for r in bad)}, which "
                      "does not predict left-out "

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ..story.verdicts import reference_within
+from ..story.verdicts import reference_within, unpredictive_responses
 from ..story.words import in_order, labelled, level2_own_tolerances, level2_within
 from .glossary import term
 from .markdown import keys_labelled, markdown_table
@@ -30,14 +30,9 @@ def verdict_sentence(response: str, res: dict) -> str:
     return text[len(head):] if text.startswith(head) else text
 
 
-def unpredictive_responses(info: dict) -> list[str]:
-    """Responses whose surrogate does not predict left-out runs (verdict ``does_not_predict``)."""
-    return [r for r, res in in_order(info.get("level1") or {}) if res.get("verdict") == "does_not_predict"]
-
-
 def unreliable_surrogate_lines(info: dict, spec) -> list[str]:
     """One warning per scenario (and the Pareto front) that relies on a surrogate that does not predict."""
-    bad = unpredictive_responses(info)
+    bad = unpredictive_responses(info.get("level1") or {})
     lines = []
     for sc in spec.scenarios:
         used = [r for r in sc.observables if r in bad]

@@ -94,22 +94,20 @@ def summary(report: ReportContext) -> list:
 
 
 def _answer_line(report: ReportContext, m: str, verdicts_all: pd.DataFrame | None, advice) -> str:
-    """One material's answer in a line: with its fullest scenario, the factors identified, those not
-    (with their verdict), and the next step."""
+    """One material's answer in a line (:func:`~demid.story.verdicts.material_answer`: with its fullest scenario,
+    the factors identified, those not with their verdict) and the next step."""
+    from ..story.verdicts import material_answer
+
     spec = report.specs()[m]
-    if verdicts_all is None or not len(verdicts_all[verdicts_all["material"] == m]):
+    answer = material_answer(None if verdicts_all is None else verdicts_all[verdicts_all["material"] == m], spec)
+    if answer is None:
         return ""
-    rows = verdicts_all[verdicts_all["material"] == m]
-    scenario = max(spec.scenarios, key=lambda sc: len(sc.observables))
-    rows = rows[rows["scenario"] == scenario.name]
-    found = [spec.factor(f).label for f, v in zip(rows["factor"], rows["verdict"]) if str(v) == "identified"]
-    combined = [spec.factor(f).label for f, v in zip(rows["factor"], rows["verdict"])
-                if "identified in combination" in str(v)]
-    missing = [f"{spec.factor(f).label} {v}" for f, v in zip(rows["factor"], rows["verdict"])
-               if str(v) != "identified" and "identified in combination" not in str(v)]
-    text = (f"**{spec.label}**, with *{scenario.label}*: identified: {', '.join(found) or 'none'}"
-            + (f"; in {term('combination', 'combination')} only: {', '.join(combined)}" if combined else "")
-            + f"; not identified: {', '.join(missing) or 'none'}.")
+    label = {f.name: f.label for f in spec.factors}
+    combined = ", ".join(label[f] for f in answer.in_combination)
+    text = (f"**{spec.label}**, with *{answer.scenario.label}*: identified: "
+            f"{', '.join(label[f] for f in answer.identified) or 'none'}"
+            + (f"; in {term('combination', 'combination')} only: {combined}" if combined else "")
+            + f"; not identified: {', '.join(f'{label[f]} {v}' for f, v in answer.not_identified) or 'none'}.")
     decision, _ = advice.next_step(m)
     return text + (f" **Next step:** {decision}" if decision else "")
 

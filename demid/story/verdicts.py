@@ -10,6 +10,8 @@ the combinations read them too; the report only renders it.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import pandas as pd
 
@@ -189,7 +191,7 @@ def in_combination(verdicts: pd.DataFrame, spec, combinations: dict) -> pd.DataF
         partners = plausible.get(row["scenario"], {}).get(row["factor"])
         if partners:
             others = " and ".join(spec.factor(p).label for p in partners)
-            out.at[i, "verdict"] = f"unresolved alone; identified in combination with {others}"
+            out.at[i, "verdict"] = f"unresolved alone; {IN_COMBINATION} with {others}"
             out.at[i, "reason"] = (f"{row['reason']}; the plausible set is narrow along a combination of it with "
                                    f"{others} (tables/combinations.csv)")
             continue
@@ -199,6 +201,41 @@ def in_combination(verdicts: pd.DataFrame, spec, combinations: dict) -> pd.DataF
             out.at[i, "reason"] = (f"{row['reason']}; identified in combination with {others} if surrogate and "
                                    "measurements were exact (the strict set; the plausible set is not narrow along it)")
     return out
+
+
+#: The mark :func:`in_combination` leaves in a verdict whose factor is identified only with others.
+IN_COMBINATION = "identified in combination"
+
+
+@dataclass(frozen=True)
+class MaterialAnswer:
+    """A material's answer in one line: the scenario it is given for (the one with the most observables) and
+    its factors by verdict, in the config's order."""
+
+    scenario: object                         # the spec's Scenario
+    identified: list[str]                    # factor keys
+    in_combination: list[str]                # identified only in combination with others
+    not_identified: list[tuple[str, str]]    # (factor key, verdict)
+
+
+def material_answer(verdicts: pd.DataFrame, spec) -> MaterialAnswer | None:
+    """The answer of one material from its rows of ``tables/verdicts.csv``: with its fullest scenario, the
+    factors identified, those identified in combination only, and the others with their verdict; None without
+    verdicts."""
+    if verdicts is None or not len(verdicts):
+        return None
+    scenario = max(spec.scenarios, key=lambda sc: len(sc.observables))
+    rows = verdicts[verdicts["scenario"] == scenario.name]
+    pairs = [(f, str(v)) for f, v in zip(rows["factor"], rows["verdict"])]
+    return MaterialAnswer(scenario, [f for f, v in pairs if v == "identified"],
+                          [f for f, v in pairs if IN_COMBINATION in v],
+                          [(f, v) for f, v in pairs if v != "identified" and IN_COMBINATION not in v])
+
+
+def unpredictive_responses(level1: dict) -> list[str]:
+    """The responses whose surrogate does not predict left-out runs (level 1's verdict ``does_not_predict``,
+    Q² < 0), in the order level 1 lists them: what is read off them is indicative only."""
+    return [r for r, res in (level1 or {}).items() if res.get("verdict") == "does_not_predict"]
 
 
 def verdict_display(verdicts: pd.DataFrame, spec) -> pd.DataFrame:
