@@ -45,6 +45,7 @@ def term(words: str, key: str) -> str:
 
 
 def glossary(report: ReportContext) -> list:
+    """The last section: every term with its anchor."""
     return [report.md("## Terms\n\n" + "\n".join(f"- <strong id=\"term-{key}\">{name}</strong>: {text}"
                                                  for key, name, text in GLOSSARY))]
 

@@ -110,8 +110,6 @@ def criticism(report: ReportContext, m: str) -> list:
              "run-order drift, non-constant variance) with family-wise error control; a finding is kept only "
              f"with its extension and the measured gain (leave-one-out RMSE, {term('AICc', 'aicc')}); a "
              f"surrogate whose {term('Q²', 'q2')} is below 0 does not predict."]
-    from ..precision import percent_text
-
     spec = report.specs()[m]
     for response, res in in_order(info["level1"], spec.response_names):
         name = spec.response_labels.get(response, response)
@@ -126,17 +124,7 @@ def criticism(report: ReportContext, m: str) -> list:
     if run_order.get("drift_tested") is False:
         lines += [f"- Run order: {labelled(run_order['message'], spec)}"]
     lines += [f"- {w}" for w in unreliable_surrogate_lines(info, spec)]
-    findings = report.csv("criticism.csv")
-    if findings is not None and "cause" in findings.columns:
-        findings = findings[findings["cause"] != "none"]
-    if findings is not None and "response" in findings.columns and len(findings[findings["material"] == m]):
-        cols = [c for c in ["response", "cause", "detail", "p_value", "loo_rmse_baseline", "loo_rmse_extended",
-                            "delta_aicc"] if c in findings.columns]
-        shown = keys_labelled(findings[findings["material"] == m][cols], spec)
-        shown["cause"] = shown["cause"].astype(str).str.replace(";", ", ").str.replace("_", " ")
-        if "detail" in shown:
-            shown["detail"] = shown["detail"].fillna("").astype(str).map(lambda t: report.speak(t, m))
-        lines += ["", markdown_table(shown)]
+    lines += _findings_table(report, m)
     level2 = info.get("level2")
     if level2:
         from ..story import LEVEL2_KINDS, StudyAdvice
@@ -144,7 +132,36 @@ def criticism(report: ReportContext, m: str) -> list:
         advice = StudyAdvice.from_frame(report.csv("advice.csv")).texts(m, LEVEL2_KINDS)
         lines += ["", "**Level 2 — calibrated simulation against the experiment.** "
                   + " ".join([labelled(level2.get("finding", ""), spec), *advice])]
-    for pos in info.get("reference_point") or []:
+    lines += _reference_point_lines(report, m, info.get("reference_point") or [])
+    parts = [report.md("\n".join(lines))]
+    parts.append(report.image(report.root / "figures" / f"residuals_{m}.png",
+                              f"Residuals of each response surface of {report.label(m)} against fitted value, run order and normal quantiles"))
+    return parts
+
+
+def _findings_table(report: ReportContext, m: str) -> list[str]:
+    """The named causes of ``m`` (tables/criticism.csv, rows with a cause) as a table, or nothing."""
+    findings = report.csv("criticism.csv")
+    if findings is not None and "cause" in findings.columns:
+        findings = findings[findings["cause"] != "none"]
+    if findings is None or "response" not in findings.columns or not len(findings[findings["material"] == m]):
+        return []
+    cols = [c for c in ["response", "cause", "detail", "p_value", "loo_rmse_baseline", "loo_rmse_extended",
+                        "delta_aicc"] if c in findings.columns]
+    shown = keys_labelled(findings[findings["material"] == m][cols], report.specs()[m])
+    shown["cause"] = shown["cause"].astype(str).str.replace(";", ", ").str.replace("_", " ")
+    if "detail" in shown:
+        shown["detail"] = shown["detail"].fillna("").astype(str).map(lambda t: report.speak(t, m))
+    return ["", markdown_table(shown)]
+
+
+def _reference_point_lines(report: ReportContext, m: str, positions: list[dict]) -> list[str]:
+    """Per scenario, where the reference point lies against the admissible set, with its errors."""
+    from ..precision import percent_text
+
+    spec = report.specs()[m]
+    lines = []
+    for pos in positions:
         errs = ", ".join(f"{spec.response_labels.get(o, o)} {'+' if e > 0 else ''}{percent_text(e)}"
                          for o, e in in_order(pos["errors"]))
         if pos["inside"]:
@@ -156,10 +173,6 @@ def criticism(report: ReportContext, m: str) -> list:
                                                                                       spec.factor_names))
             where = (f"lies outside it, {pos['distance_pct_of_range']:.1f} % of the search range from the "
                      f"nearest admissible point ({near})")
-        scenario = report.speak(pos["scenario"], m)
-        lines.append(f"- Reference point vs scenario *{scenario}*: it {where} (errors {errs}).")
-    parts = [report.md("\n".join(lines))]
-    parts.append(report.image(report.root / "figures" / f"residuals_{m}.png",
-                              f"Residuals of each response surface of {report.label(m)} against fitted value, run order and normal quantiles"))
-    return parts
-
+        lines.append(f"- Reference point vs scenario *{report.speak(pos['scenario'], m)}*: it {where} "
+                     f"(errors {errs}).")
+    return lines

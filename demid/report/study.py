@@ -17,6 +17,8 @@ if TYPE_CHECKING:
 
 
 def header(report: ReportContext) -> list:
+    """The report's title, its question, the materials and, where published numbers are declared, their
+    provenance."""
     text = ["# demid — identifiability report", "",
             "Which measured observables identify the DEM micro-parameters within the design domain? "
             "For every material, quadratic response surfaces are fitted to the designed simulation runs, "
@@ -37,6 +39,7 @@ def header(report: ReportContext) -> list:
 
 
 def surrogate_fit(report: ReportContext) -> list:
+    """Surrogate fidelity of every response (tables/surrogate_fit.csv), its statistics defined."""
     table = report.csv("surrogate_fit.csv")
     if table is None:
         return []
@@ -46,50 +49,63 @@ def surrogate_fit(report: ReportContext) -> list:
 
 
 def identifiability(report: ReportContext) -> list:
+    """The admissible sets of every material (tables/identifiability.csv), with a line per scenario no point
+    meets and per scenario against the first: how Φ and each width change."""
     table = report.csv("identifiability.csv")
     if table is None:
         return []
     lines = [f"## Admissible sets{report.paper('Table 3')}", "",
              markdown_table(study_keys_labelled(table[IDENTIFIABILITY_COLUMNS], report.specs())), ""]
     for m in report.materials:
-        path = report.root / "scenarios" / f"{m}.parquet"
-        if not path.is_file():
-            continue
-        scen = read_parquet(path).drop_duplicates("scenario")
-        from ..precision import percent_text
-        from ..tolerance import has_own_tolerance
-
-        own = has_own_tolerance(report.specs()[m])
-        error = ("largest relative error, each observable's against its own tolerance, expressed at the "
-                 "scenario's" if own else "largest relative error")
-        scenario_label = {sc.name: sc.label for sc in report.specs()[m].scenarios}
-        for _, row in scen[scen["feasible_fraction_pct"] == 0].iterrows():
-            lines.append(f"- **{report.label(m)}**, {scenario_label.get(row['scenario'], row['scenario'])}: no point of the domain meets every target "
-                         f"within {100 * row['tolerance']:g} %{' (or its own tolerance)' if own else ''}; the "
-                         f"closest point misses by {percent_text(row['best_max_rel_error'])} ({error}).")
+        lines += _empty_set_lines(report, m)
     for m in report.materials:
-        sub = table[table["material"] == m]
-        scen = list(dict.fromkeys(sub["scenario"]))
-        if len(scen) < 2:
-            continue
-        base = sub[sub["scenario"] == scen[0]]
-        spec = report.specs()[m]
-        scenario_label = {sc.name: sc.label for sc in spec.scenarios}
-        factor_label = {f.name: f.label for f in spec.factors}
-        for s in scen[1:]:
-            other = sub[sub["scenario"] == s]
-            f0 = base["feasible_fraction_pct"].iloc[0]
-            f1 = other["feasible_fraction_pct"].iloc[0]
-            widths = []
-            for fac in base["factor"]:
-                w0 = base.loc[base["factor"] == fac, "width"].iloc[0]
-                w1 = other.loc[other["factor"] == fac, "width"].iloc[0]
-                if w0 > 0 and w1 == w1:
-                    widths.append(f"W({factor_label.get(fac, fac)}) {change_text(w0, w1)}")
-            lines.append(f"- **{report.label(m)}**: {scenario_label.get(s, s)} vs "
-                         f"{scenario_label.get(scen[0], scen[0])}: Φ {f0:.4g} % → {f1:.4g} % "
-                         f"({change_text(f0, f1)}); " + ", ".join(widths))
+        lines += _scenario_change_lines(report, m, table[table["material"] == m])
     return [report.md("\n".join(lines))]
+
+
+def _empty_set_lines(report: ReportContext, m: str) -> list[str]:
+    """Per scenario of ``m`` that no point meets: by how much the closest point misses (scenarios/{m}.parquet)."""
+    path = report.root / "scenarios" / f"{m}.parquet"
+    if not path.is_file():
+        return []
+    from ..precision import percent_text
+    from ..tolerance import has_own_tolerance
+
+    scen = read_parquet(path).drop_duplicates("scenario")
+    own = has_own_tolerance(report.specs()[m])
+    error = ("largest relative error, each observable's against its own tolerance, expressed at the "
+             "scenario's" if own else "largest relative error")
+    scenario_label = {sc.name: sc.label for sc in report.specs()[m].scenarios}
+    return [f"- **{report.label(m)}**, {scenario_label.get(row['scenario'], row['scenario'])}: no point of the domain "
+            f"meets every target within {100 * row['tolerance']:g} %{' (or its own tolerance)' if own else ''}; the "
+            f"closest point misses by {percent_text(row['best_max_rel_error'])} ({error})."
+            for _, row in scen[scen["feasible_fraction_pct"] == 0].iterrows()]
+
+
+def _scenario_change_lines(report: ReportContext, m: str, sub) -> list[str]:
+    """Per later scenario of ``m`` against its first (``sub``: its rows of the table): Φ and each width."""
+    scen = list(dict.fromkeys(sub["scenario"]))
+    if len(scen) < 2:
+        return []
+    base = sub[sub["scenario"] == scen[0]]
+    spec = report.specs()[m]
+    scenario_label = {sc.name: sc.label for sc in spec.scenarios}
+    factor_label = {f.name: f.label for f in spec.factors}
+    lines = []
+    for s in scen[1:]:
+        other = sub[sub["scenario"] == s]
+        f0 = base["feasible_fraction_pct"].iloc[0]
+        f1 = other["feasible_fraction_pct"].iloc[0]
+        widths = []
+        for fac in base["factor"]:
+            w0 = base.loc[base["factor"] == fac, "width"].iloc[0]
+            w1 = other.loc[other["factor"] == fac, "width"].iloc[0]
+            if w0 > 0 and w1 == w1:
+                widths.append(f"W({factor_label.get(fac, fac)}) {change_text(w0, w1)}")
+        lines.append(f"- **{report.label(m)}**: {scenario_label.get(s, s)} vs "
+                     f"{scenario_label.get(scen[0], scen[0])}: Φ {f0:.4g} % → {f1:.4g} % "
+                     f"({change_text(f0, f1)}); " + ", ".join(widths))
+    return lines
 
 
 def model_extensions(report: ReportContext) -> list:
@@ -109,6 +125,7 @@ def model_extensions(report: ReportContext) -> list:
 
 
 def paper_comparison(report: ReportContext) -> list:
+    """Appendix: every published number against its reproduction (tables/paper_comparison.csv)."""
     table = report.csv("paper_comparison.csv")
     if table is None:
         return []
