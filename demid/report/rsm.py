@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from ..precision import ROUND_OFF
 from ..surrogate import TERM_BLOCKS
 
 #: Rows of the stored ANOVA that split the row above them: the term groups split the model, lack of fit and
@@ -66,25 +67,28 @@ def stored_surfaces(fits: pd.DataFrame, anova: pd.DataFrame, table: pd.DataFrame
     return out
 
 
-def _symbol(name: str, symbols: dict[str, str]) -> str:
+def term_symbol(name: str, symbols: dict[str, str]) -> str:
+    """A model term in ``symbols`` (factor -> letter or label): ``a:b`` as ``A·B``, ``a^2`` as ``A²``; the
+    intercept as "–"."""
+    if name == "Intercept":
+        return "–"
     return ":".join(symbols.get(p.split("^")[0], p.split("^")[0]) + ("²" if p.endswith("^2") else "")
-                    for p in name.split(":"))
+                    for p in name.split(":")).replace(":", "·")
 
 
-#: Coefficients smaller than this fraction of the largest are floating-point round-off of a term
-#: the data do not carry (1.8e-12·A·B beside terms of order 1): left out of printed equations.
-ROUND_OFF_FRACTION = 1e-9
 
 
 def equation(names: list[str], coefficients, symbols: dict[str, str], response: str, digits: int = 4) -> str:
     """``y = b0 + b1·x1 − …`` with ``·`` between factors of a term; terms at round-off are left out."""
-    floor = ROUND_OFF_FRACTION * max((abs(float(b)) for b in coefficients), default=0.0)
+    # coefficients at round-off of the largest are terms the data do not carry (1.8e-12·A·B beside terms of
+    # order 1): left out
+    floor = ROUND_OFF * max((abs(float(b)) for b in coefficients), default=0.0)
     b0 = float(coefficients[0])
     text = f"{response} = {0.0 if abs(b0) <= floor else b0:.{digits}g}"
     for name, b in zip(names[1:], coefficients[1:]):
         if abs(float(b)) <= floor:
             continue
-        text += f" {'−' if b < 0 else '+'} {abs(b):.{digits}g}·" + _symbol(name, symbols).replace(":", "·")
+        text += f" {'−' if b < 0 else '+'} {abs(b):.{digits}g}·" + term_symbol(name, symbols)
     return text
 
 

@@ -4,103 +4,25 @@ A recommended parameter set, the admissible interval and a verdict per factor an
 the criticism verdicts in one line each and the next step.  Every number is read from the
 results tree; nothing is recomputed here.  The verdicts on the plausible interval and the advice
 are :mod:`demid.story`'s (``tables/verdicts.csv``, ``tables/advice.csv``, the verdict rule in
-:mod:`demid.story.verdicts`); this module writes the criticism and combination lines.
+:mod:`demid.story.verdicts`, where the recommended point stands in :mod:`demid.story.recommended`); the
+criticism in a line per response is :mod:`.model_criticism`'s.  This module writes the combination lines and
+lays the section out.
 """
 
 from __future__ import annotations
 
-import numpy as np
+from typing import TYPE_CHECKING
 
-from ..sampling.domain import SIDES_OF, sides_at_limit
-from ..story.words import in_order, labelled, level2_own_tolerances, level2_within
+import pandas as pd
 
-#: The criticism verdicts in the report's words.
-VERDICT_WORDS = {"adequate": "adequate (within the tests' power)", "defect": "defect named",
-                 "unexplained": "misfit unexplained", "does_not_predict": "does not predict",
-                 "ambiguous": "ambiguous cause"}
+from ..io import read_parquet
+from ..story.words import in_order
+from .glossary import term
+from .markdown import markdown_table
+from .model_criticism import criticism_lines
 
-
-def verdict_sentence(response: str, res: dict) -> str:
-    """The verdict message without its leading "<response>: <verdict> — " (the report names both)."""
-    text = res.get("verdict_message", "")
-    head = f"{response}: "
-    if text.startswith(head) and " — " in text:
-        return text.split(" — ", 1)[1]
-    return text[len(head):] if text.startswith(head) else text
-
-
-def unpredictive_responses(info: dict) -> list[str]:
-    """Responses whose surrogate does not predict left-out runs (verdict ``does_not_predict``)."""
-    return [r for r, res in in_order(info.get("level1") or {}) if res.get("verdict") == "does_not_predict"]
-
-
-def unreliable_surrogate_lines(info: dict, spec) -> list[str]:
-    """One warning per scenario (and the Pareto front) that relies on a surrogate that does not predict."""
-    bad = unpredictive_responses(info)
-    lines = []
-    for sc in spec.scenarios:
-        used = [r for r in sc.observables if r in bad]
-        if used:
-            names = ", ".join(spec.response_labels.get(r, r) for r in used)
-            lines.append(f"⚠ Scenario *{sc.label}* uses {names}, whose surrogate does not predict left-out runs "
-                         f"(Q² < 0): its admissible set should not be used to decide admissibility.")
-    pareto = spec.pareto
-    used = [r for r in (pareto.error_of, pareto.minimise) if r in bad] if pareto is not None else []
-    if used:
-        names = ", ".join(spec.response_labels.get(r, r) for r in dict.fromkeys(used))
-        lines.append(f"⚠ The Pareto front uses {names}, whose surrogate does not predict left-out runs (Q² < 0): "
-                     f"treat the front as indicative only.")
-    return lines
-
-
-def criticism_lines(info: dict, spec) -> list[str]:
-    """One line per response (surrogate vs runs) and one for simulation vs experiment."""
-    lines = []
-    level1 = info.get("level1", {})
-    for response in [r for r in spec.response_names if r in level1]:
-        res = level1[response]
-        label = spec.response_labels.get(response, response)
-        if res.get("verdict_message"):
-            lines.append(f"Surrogate of {label} — **{VERDICT_WORDS.get(res['verdict'], res['verdict'])}**: "
-                         + labelled(verdict_sentence(response, res), spec))
-        elif res["messages"]:
-            lines.append(f"Surrogate of {label}: " + labelled(" ".join(res["messages"]), spec))
-        else:
-            lines.append(f"Surrogate of {label}: no defect found — the quadratic fits the simulation runs.")
-    run_order = info.get("run_order") or {}
-    if run_order.get("drift_tested") is False:
-        lines.append(f"Run order: {run_order['message']}")
-    lines += unreliable_surrogate_lines(info, spec)
-    level2 = info.get("level2")
-    if level2:
-        from ..criticism.messages import level2_miss_text
-        from ..precision import percent_text
-
-        tol = 100 * level2["tolerance"]
-        own = level2_own_tolerances(level2)
-        uniform = own is None
-        within = level2_within(level2, spec)
-        best = percent_text(level2["best_max_error"])
-        own_miss = labelled(level2_miss_text(level2["best_errors"], level2["tolerance"], own), spec) if not uniform else ""
-        if level2["feasible"]:
-            lines.append(f"Simulation vs experiment: every target can be met within {within} "
-                         f"(best point misses {f'by at most {best}' if uniform else own_miss}).")
-        else:
-            lines.append(f"Simulation vs experiment: the targets cannot all be met within {within}; the best point "
-                         f"misses {f'by {best}' if uniform else own_miss}"
-                         + (f", limited by {spec.response_labels.get(limit, limit)}"
-                            if (limit := level2.get("bottleneck")) else "") + ".")
-        if level2.get("reference_max_error") is not None:
-            inside = level2.get("reference_within")
-            inside = level2["reference_max_error"] <= level2["tolerance"] if inside is None else inside
-            lines.append(f"Reference point: largest error {percent_text(level2['reference_max_error'])} "
-                         f"({'within' if inside else 'outside'} "
-                         + (f"the {tol:g} % tolerance)." if uniform else
-                            level2_within(level2, spec, brackets=False) + ")."))
-        # a best point on a bound is told by the advice (demid.story), where widening can reach something
-        lines += list(level2.get("extrapolation") or [])
-    return lines
-
+if TYPE_CHECKING:
+    from .context import ReportContext
 
 def combination_lines(combinations: dict, spec) -> list[str]:
     """One line per scenario and set: what the set identifies in combination (its text in
@@ -119,55 +41,144 @@ def combination_lines(combinations: dict, spec) -> list[str]:
     return lines
 
 
-def point_on_edge_text(spec, point: dict, runs, verdicts: dict, widened: set) -> str:
-    """What a reader must know of a recommended point that sits on a search bound or outside the region the
-    design runs cover (their convex hull): per factor on a bound, whether the advice widens that bound, and
-    that outside the runs the surrogate extrapolates.  Empty for a point inside the runs, off every bound.
+def summary(report: ReportContext) -> list:
+    """Per material: recommended set, verdict per factor and scenario, criticism, next step.
 
-    ``runs``: the design runs (rows, factor columns in the spec's order, actual units) or None; ``verdicts``:
-    factor -> its verdict in the point's scenario; ``widened``: the (factor, side) pairs the advice widens."""
-    from ..criticism.edges import in_hull
+    Verdicts and advice are read from ``tables/verdicts.csv`` and ``tables/advice.csv`` (rule
+    ``story``): the same rows level 2 and the next-wave section show."""
+    from ..sampling.residuals import PLAUSIBLE_DEFINITION
+    from ..story import StudyAdvice, verdict_display
+    from ..story.verdicts import UNINFORMATIVE_TEXT, VERDICT_TEXT
 
-    domain = spec.domain
-    sides = domain.at_bound([point[f] for f in spec.factor_names], [point[f] for f in spec.factor_names])
-    groups: dict[tuple, list[str]] = {}  # factors that get the same words, named together
-    for f, side in zip(spec.factors, sides):
-        for s in SIDES_OF[side]:
-            if s in sides_at_limit((f.lower, f.upper), f.limits):
-                groups.setdefault(("limit", s, ""), []).append(f.label)
-            else:
-                kind = "widened" if (f.name, s) in widened else "kept"
-                why = verdicts.get(f.name, "") if kind == "kept" else ""
-                groups.setdefault((kind, s, why if why in ("unresolved", "bounded", "identified") else ""),
-                                  []).append(f.label)
-    clauses = []
-    for (kind, s, why), labels in groups.items():
-        many = len(labels) > 1
-        names = ", ".join(labels[:-1]) + " and " + labels[-1] if many else labels[0]
-        if kind == "limit":
-            clauses.append(f"{names} {'are' if many else 'is'} at {'their' if many else 'its'} physical {s} "
-                           f"limit{'s' if many else ''}, beyond which no value lies")
-        elif kind == "widened":
-            clauses.append(f"{names} {'lie' if many else 'lies'} on {'their' if many else 'its'} {s} search "
-                           f"bound{'s' if many else ''}, which the advice below widens: the plausible set may "
-                           "continue beyond it, and the recommended value with it")
-        else:
-            clauses.append(f"{names} {'lie' if many else 'lies'} on {'their' if many else 'its'} {s} search "
-                           f"bound{'s' if many else ''}; no widening is advised there"
-                           + (f" (the plausible interval{'s are' if many else ' is'} {why}: a wider range would "
-                              f"not narrow {'them' if many else 'it'})" if why else ""))
-    outside = False
-    if runs is not None and len(runs):
-        lo, hi = domain.search_bounds()
-        span = np.where(hi > lo, hi - lo, 1.0)
-        z = (domain.to_search(np.asarray(runs, dtype=float)) - lo) / span
-        u = (domain.to_search(np.array([[point[f] for f in spec.factor_names]], dtype=float))[0] - lo) / span
-        outside = not in_hull(z, u, 1e-3)
-    if not clauses and not outside:
+    verdicts_all = report.csv("verdicts.csv")
+    advice = StudyAdvice.from_frame(report.csv("advice.csv"))
+    answers = [_answer_line(report, m, verdicts_all, advice) for m in report.materials]
+    parts = [report.md("## Summary\n\n" + "\n".join(f"- {a}" for a in answers if a) + "\n\n"
+                       "**How to read it.** Per factor and observable scenario the "
+                       f"{term('plausible interval', 'plausible-set')} is judged; the strict interval (the set if "
+                       "surrogate and measurements were exact: section "
+                       f"*Admissible sets*{report.paper('Table 3')}) stands beside it. "
+                       f"{term('Plausible set', 'plausible-set')}: "
+                       + PLAUSIBLE_DEFINITION + " Verdicts: " + VERDICT_TEXT + " " + UNINFORMATIVE_TEXT
+                       + " Other terms: [Terms](#Terms).")]
+    for m in report.materials:
+        spec = report.specs()[m]
+        lines = [f"### {spec.label}", ""]
+        info = report.json(report.root / "criticism" / f"{m}.json")
+        unc = report.json(report.root / "uncertainty" / f"{m}.json")
+        level2 = info.get("level2") or {}
+        verdicts = (verdicts_all[verdicts_all["material"] == m] if verdicts_all is not None
+                    else pd.DataFrame(columns=["scenario", "factor", "verdict"]))
+        widened = {(i.factor, i.bound) for i in advice.items if i.material == m and i.kind == "widen"}
+        lines += _recommended_lines(report, spec, unc.get("recommended"), verdicts, level2, widened)
+        for o, why in in_order(unc.get("uninformative") or {}, spec.response_names):
+            lines.append(f"{spec.response_labels.get(o, o)} is an **uninformative observable**: {why}.")
+        if len(verdicts):
+            lines += ["", markdown_table(verdict_display(verdicts, spec), 3)]
+        combos = report.json(report.root / "combinations" / f"{m}.json")
+        combo_lines = combination_lines(combos, spec)
+        if combo_lines:
+            lines += ["", f"**What is identified in {term('combination', 'combination')}** (principal axes of each "
+                      "set in coded units; "
+                      "tables/combinations.csv):", ""] + [f"- {c}" for c in combo_lines]
+        crit = criticism_lines(info, spec)
+        if crit:
+            lines += ["", "**What the models get wrong:**", ""] + [f"- {c}" for c in crit]
+        decision, also = advice.next_step(m)
+        if decision:
+            lines += ["", "**Next step:**", "", f"- {decision}"]
+        if also:
+            lines += ["", "**Also:**", ""] + [f"- {s}" for s in also]
+        parts.append(report.md("\n".join(lines)))
+    return parts
+
+
+def _answer_line(report: ReportContext, m: str, verdicts_all: pd.DataFrame | None, advice) -> str:
+    """One material's answer in a line (:func:`~demid.story.verdicts.material_answer`: with its fullest scenario,
+    the factors identified, those not with their verdict) and the next step."""
+    from ..story.verdicts import material_answer
+
+    spec = report.specs()[m]
+    answer = material_answer(None if verdicts_all is None else verdicts_all[verdicts_all["material"] == m], spec)
+    if answer is None:
         return ""
-    text = "⚠ " + "; ".join(clauses) + ("." if clauses else "")
-    if outside:
-        text += (" " if clauses else "") + (
-            "The point lies outside the region the design runs cover (their convex hull): its predictions are the "
-            "quadratic's extrapolation, backed by no simulation, so simulate it before relying on it.")
-    return text
+    label = {f.name: f.label for f in spec.factors}
+    combined = ", ".join(label[f] for f in answer.in_combination)
+    text = (f"**{spec.label}**, with *{answer.scenario.label}*: identified: "
+            f"{', '.join(label[f] for f in answer.identified) or 'none'}"
+            + (f"; in {term('combination', 'combination')} only: {combined}" if combined else "")
+            + f"; not identified: {', '.join(f'{label[f]} {v}' for f, v in answer.not_identified) or 'none'}.")
+    decision, _ = advice.next_step(m)
+    return text + (f" **Next step:** {decision}" if decision else "")
+
+
+def _recommended_lines(report: ReportContext, spec, recommended: dict | None, verdicts: pd.DataFrame, level2: dict,
+                       widened: set = frozenset()) -> list[str]:
+    """The most robust plausible point with each factor's plausible interval beside it, to the digits that
+    interval supports; plainly said when the set is wide, or when no point meets every target, or when the
+    point sits on a search bound or outside the runs (``widened``: the (factor, side) pairs advised wider)."""
+    import numpy as np
+
+    from ..uncertainty.recommended import digits_for
+    from ..story.words import unit_text
+    from ..story.recommended import point_on_edge_text
+
+    if not recommended:
+        return []
+    scenario = next((sc for sc in spec.scenarios if sc.name == recommended["scenario"]), None)
+    label = scenario.label if scenario else recommended["scenario"]
+    rows = verdicts[verdicts["scenario"] == recommended["scenario"]].set_index("factor") if len(verdicts) else None
+    lines = []
+    strict_empty = rows is not None and len(rows) and rows["strict_lower"].isna().all()
+    if strict_empty:
+        lines.append(f"With every observable of *{label}* no point of the search range is admissible, so there "
+                     "are no admissible intervals.")
+    if not recommended["plausible"]:
+        over = ", ".join(spec.response_labels.get(o, o) for o in level2.get("observables", []))
+        text = (f"**No parameter set meets every target.** No point is plausible for *{label}* either: at every "
+                f"point some observable lies outside its plausible band (smallest implausibility "
+                f"{recommended['implausibility']:.3g} > 1).")
+        if level2.get("best_point"):
+            best = level2["best_point"]
+            point = ", ".join(f"{spec.factor(f).label} = {best[f]:.4g}" for f in spec.factor_names if f in best)
+            text += (f" The closest point (smallest largest relative error over {over}) is {point}; see the "
+                     "level-2 criticism and the next step below.")
+        return [text] + lines
+    shown, wide, unresolved = [], [], []
+    for f in spec.factors:
+        value = recommended["point"][f.name]
+        lo = hi = float("nan")
+        if rows is not None and f.name in rows.index:
+            lo, hi = float(rows.loc[f.name, "plausible_lower"]), float(rows.loc[f.name, "plausible_upper"])
+            verdict = str(rows.loc[f.name, "verdict"])
+            if verdict != "identified":
+                wide.append(f.label)
+            if verdict == "unresolved":
+                unresolved.append(f.label)
+        digits = digits_for(hi - lo)
+        unit = f" {unit_text(f.unit)}" if f.unit != "-" else ""
+        interval = f" (plausible {lo:.{digits}f}–{hi:.{digits}f})" if np.isfinite(lo) else ""
+        shown.append(f"{f.label} = {value:.{digits}f}{unit}{interval}")
+    head = ("**Recommended parameter set**" if level2.get("feasible", True) or not strict_empty else
+            "**No parameter set meets every target** within the tolerance; counting the surrogate's and the "
+            "measurements' uncertainty, the most plausible point")
+    text = (f"{head} (the point of the plausible set of *{label}* with the largest margin to every band, "
+            f"{term('implausibility', 'implausibility')} {recommended['implausibility']:.2f}): "
+            + "; ".join(shown) + ".")
+    if unresolved:
+        names = ", ".join(unresolved[:-1]) + " and " + unresolved[-1] if len(unresolved) > 1 else unresolved[0]
+        them = "it" if len(unresolved) == 1 else "each"
+        text += (f" *{label}* does not pin down {names}: its plausible set spans (almost) the whole search range "
+                 f"of {them}.")
+    if wide:
+        text += (f" The plausible set is wide in {', '.join(wide)}: any point of those intervals matches the "
+                 "measurements as well, so this point is one choice among many.")
+    edge = point_on_edge_text(spec, recommended["point"], _design_runs(report, spec),
+                              {} if rows is None else rows["verdict"].astype(str).to_dict(), widened)
+    return [text] + (["", edge, ""] if edge else []) + lines
+
+
+def _design_runs(report: ReportContext, spec):
+    """The material's design runs (factor columns, actual units), or None before validation."""
+    path = report.root / "validated" / f"{spec.name}.parquet"
+    return read_parquet(path)[spec.factor_names].to_numpy(dtype=float) if path.is_file() else None

@@ -2,7 +2,8 @@
 
 :mod:`~demid.story.verdicts` judges each factor on the plausible interval (the strict one beside it);
 :mod:`~demid.story.advice` holds every piece of advice, computed once, the one source the report reads
-(:mod:`~demid.story.measurements`: the observable ranking in words); :func:`study_story` builds both
+(:mod:`~demid.story.measurements`: the observable ranking in words; :mod:`~demid.story.recommended`: where
+the recommended point stands); :func:`study_story` builds both
 for the materials of a results tree (``tables/verdicts.csv``, ``tables/advice.csv``).
 """
 

@@ -24,6 +24,7 @@ import pandas as pd
 from ..criticism.reach import Reach, saturation_advice
 from ..precision import rough_text
 from .measurements import measurement_order
+from .verdicts import unpredictive_responses
 from .words import level2_within, unit_text
 
 ADVICE_COLUMNS = ["material", "kind", "factor", "bound", "observable", "text", "decision"]
@@ -149,7 +150,7 @@ def _recalibrate(spec, level1: dict, level2: dict, checked: set) -> list[AdviceI
 def _unpredictive(level1: dict) -> set[str]:
     """The responses whose surrogate does not predict left-out runs (Q² < 0): advice built on them says so
     and quotes their numbers to :data:`~demid.precision.UNPREDICTIVE_DIGITS` (:func:`~demid.precision.rough_text`)."""
-    return {r for r, res in (level1 or {}).items() if res.get("verdict") == "does_not_predict"}
+    return set(unpredictive_responses(level1))
 
 
 def _not_predicting(spec, names) -> str:

@@ -10,11 +10,14 @@ the combinations read them too; the report only renders it.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import pandas as pd
 
 # the thresholds are the search range's scale, shared with the combinations: defined beside BOUND_TOUCH
 from ..sampling.domain import BOUND_TOUCH, IDENTIFIED_MAX_WIDTH, SIDES_OF, UNRESOLVED_MIN_WIDTH, Domain, sides_at_limit
+from ..uncertainty.recommended import UNINFORMATIVE_FRACTION
 from .words import unit_text
 
 VERDICT_TEXT = (
@@ -32,6 +35,11 @@ VERDICT_COLUMNS = ["material", "scenario", "factor", "strict_lower", "strict_upp
                    "plausible_upper", "verdict", "reason"]
 
 UNINFORMATIVE = "uninformative observable"
+
+#: The rule of :data:`UNINFORMATIVE` in words, read beside :data:`VERDICT_TEXT`.
+UNINFORMATIVE_TEXT = (f"**{UNINFORMATIVE}**: every observable of the scenario leaves at least "
+                      f"{100 * UNINFORMATIVE_FRACTION:g} % of the search range admissible on its own (its band covers "
+                      "its whole simulated range).")
 
 
 def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False,
@@ -60,6 +68,13 @@ def factor_verdict(lower: float, upper: float, bound_lower: float, bound_upper: 
 def interval_at_bound(lower: float, upper: float, bound_lower: float, bound_upper: float, log: bool = False) -> str:
     """The ``at_bound`` value of one interval in its factor's range (:meth:`Domain.at_bound`)."""
     return Domain(("x",), (bound_lower,), (bound_upper,), (log,)).at_bound([lower], [upper])[0]
+
+
+def reference_within(level2: dict) -> bool:
+    """Whether the reference point meets every target: level 2's own judgement (each observable against its
+    own tolerance), or, in results written before it was recorded, its largest error against the tolerance."""
+    inside = level2.get("reference_within")
+    return level2["reference_max_error"] <= level2["tolerance"] if inside is None else inside
 
 
 def _pct(width: float) -> str:
@@ -176,7 +191,7 @@ def in_combination(verdicts: pd.DataFrame, spec, combinations: dict) -> pd.DataF
         partners = plausible.get(row["scenario"], {}).get(row["factor"])
         if partners:
             others = " and ".join(spec.factor(p).label for p in partners)
-            out.at[i, "verdict"] = f"unresolved alone; identified in combination with {others}"
+            out.at[i, "verdict"] = f"unresolved alone; {IN_COMBINATION} with {others}"
             out.at[i, "reason"] = (f"{row['reason']}; the plausible set is narrow along a combination of it with "
                                    f"{others} (tables/combinations.csv)")
             continue
@@ -186,6 +201,41 @@ def in_combination(verdicts: pd.DataFrame, spec, combinations: dict) -> pd.DataF
             out.at[i, "reason"] = (f"{row['reason']}; identified in combination with {others} if surrogate and "
                                    "measurements were exact (the strict set; the plausible set is not narrow along it)")
     return out
+
+
+#: The mark :func:`in_combination` leaves in a verdict whose factor is identified only with others.
+IN_COMBINATION = "identified in combination"
+
+
+@dataclass(frozen=True)
+class MaterialAnswer:
+    """A material's answer in one line: the scenario it is given for (the one with the most observables) and
+    its factors by verdict, in the config's order."""
+
+    scenario: object                         # the spec's Scenario
+    identified: list[str]                    # factor keys
+    in_combination: list[str]                # identified only in combination with others
+    not_identified: list[tuple[str, str]]    # (factor key, verdict)
+
+
+def material_answer(verdicts: pd.DataFrame, spec) -> MaterialAnswer | None:
+    """The answer of one material from its rows of ``tables/verdicts.csv``: with its fullest scenario, the
+    factors identified, those identified in combination only, and the others with their verdict; None without
+    verdicts."""
+    if verdicts is None or not len(verdicts):
+        return None
+    scenario = max(spec.scenarios, key=lambda sc: len(sc.observables))
+    rows = verdicts[verdicts["scenario"] == scenario.name]
+    pairs = [(f, str(v)) for f, v in zip(rows["factor"], rows["verdict"])]
+    return MaterialAnswer(scenario, [f for f, v in pairs if v == "identified"],
+                          [f for f, v in pairs if IN_COMBINATION in v],
+                          [(f, v) for f, v in pairs if v != "identified" and IN_COMBINATION not in v])
+
+
+def unpredictive_responses(level1: dict) -> list[str]:
+    """The responses whose surrogate does not predict left-out runs (level 1's verdict ``does_not_predict``,
+    Q² < 0), in the order level 1 lists them: what is read off them is indicative only."""
+    return [r for r, res in (level1 or {}).items() if res.get("verdict") == "does_not_predict"]
 
 
 def verdict_display(verdicts: pd.DataFrame, spec) -> pd.DataFrame:

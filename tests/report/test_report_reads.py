@@ -60,7 +60,7 @@ def _ccd_runs(alpha=1.41421):
 
 
 def test_a_point_on_a_bound_and_outside_the_runs_says_so_with_the_advice_on_that_bound():
-    from demid.report.summary import point_on_edge_text
+    from demid.story.recommended import point_on_edge_text
 
     spec = _spec()
     runs = _ccd_runs()

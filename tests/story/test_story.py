@@ -261,11 +261,11 @@ def test_demo_advice_rows_are_the_summary_and_level2_text_and_table3_is_unchange
         level2 = _markdown(sections.criticism(m))
         walk = advice[(advice["material"] == m) & (advice["kind"] == "measurement_order")]["text"]
         ranking_section = _markdown(sections.uncertainty(m))  # the ranking in words, below the ranking
-        assert len(walk) and all(_shown(t, sections._plain_labels) in ranking_section for t in walk), m
+        assert len(walk) and all(_shown(t, sections.plain_labels) in ranking_section for t in walk), m
         rows = advice[(advice["material"] == m) & (advice["kind"] != "measurement_order")]
-        labels = sections._plain_labels
+        labels = sections.plain_labels
         bullets = [line[2:] for line in summary.split(f"### ")[[s.split("\n")[0] for s in summary.split("### ")].index(
-            sections._label(m))].splitlines() if line.startswith("- ")]
+            sections.label(m))].splitlines() if line.startswith("- ")]
         next_steps = bullets[-len(rows):] if len(rows) else []
         assert next_steps == [_shown(t, labels) for t in rows["text"]], m
         for text in rows[rows["kind"].isin(["widen", "check_target", "recalibrate"])]["text"]:
@@ -320,7 +320,7 @@ def test_a_study_with_a_unit_slip_and_a_next_wave_gets_one_consistent_story(stud
     assert both["reason"].str.contains("the target of y2 lies far outside every simulated value").all()
     _, sections = _report_texts(study_dir, cfg_path)
     stop = advice.loc[advice["kind"] == "stop", "text"].iloc[0]
-    stop = _shown(stop, sections._plain_labels)
+    stop = _shown(stop, sections.plain_labels)
     assert stop in _markdown(sections.next_wave("m")) and stop in _markdown(sections.summary())
     assert (study_dir / "results" / "tables" / "next_runs.csv").is_file()
 
