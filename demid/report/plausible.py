@@ -41,7 +41,7 @@ def ranking_display(ranking: pd.DataFrame, uninformative: dict | None = None) ->
 
 
 def uncertainty(report: ReportContext, m: str) -> list:
-    """Strict vs robust sets, tolerance sweep, posteriors and the next-experiment advice."""
+    """Strict vs plausible sets, tolerance sweep, posteriors and the next-experiment advice."""
     summary = report.root / "uncertainty" / f"{m}.json"
     if not summary.is_file():
         return []
@@ -50,14 +50,14 @@ def uncertainty(report: ReportContext, m: str) -> list:
     info = json.loads(summary.read_text(encoding="utf-8"))
     spec = report.specs()[m]
     parts = [report.md("### Beyond deterministic admissibility")]
-    robust = report.csv("robust_identifiability.csv")
-    if robust is not None and len(robust[robust["material"] == m]):
-        sub = robust[robust["material"] == m]
+    plausible = report.csv("robust_identifiability.csv")
+    if plausible is not None and len(plausible[plausible["material"] == m]):
+        sub = plausible[plausible["material"] == m]
         cols = ["scenario", "observables", "tolerance", "z", "factor", "strict_fraction_pct",
                 "robust_fraction_pct", "strict_width", "robust_width"]
         from ..sampling.residuals import PLAUSIBLE_DEFINITION
 
-        lines = ["**Strict vs plausible (robust) admissible sets.** " + PLAUSIBLE_DEFINITION, "",
+        lines = ["**Strict vs plausible admissible sets.** " + PLAUSIBLE_DEFINITION, "",
                  markdown_table(keys_labelled(sub[cols], spec))]
         scen = list(dict.fromkeys(sub["scenario"]))
         shown = {sc.name: sc.label for sc in spec.scenarios}
@@ -67,7 +67,7 @@ def uncertainty(report: ReportContext, m: str) -> list:
             lines += ["", f"From {shown.get(scen[0], scen[0])} to {shown.get(scen[-1], scen[-1])} the feasible "
                       "fraction changes by "
                       f"{change_text(first['strict_fraction_pct'], last['strict_fraction_pct'])} (strict) and "
-                      f"{change_text(first['robust_fraction_pct'], last['robust_fraction_pct'])} (robust)."]
+                      f"{change_text(first['robust_fraction_pct'], last['robust_fraction_pct'])} (plausible)."]
         parts.append(report.md("\n".join(lines)))
     parts.append(report.md("**Tolerance sweep** — conclusions should not hang on one ε."))
     parts.append(report.image(report.root / "figures" / f"sweep_{m}.png",
