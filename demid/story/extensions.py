@@ -70,11 +70,12 @@ def model_extensions(specs: dict, extends: dict[str, str], criticism: dict[str, 
 def extension_sentence(row: dict, labels: dict[str, str], factor_labels: dict[str, str],
                        scenario_label: str) -> str:
     """"Adding μ_r to the model of no_rolling: the best point's error falls from 23.7 % to 0 %; ..." """
+    from ..precision import percent_text
     from ..waves import STOP_Q2
 
     added = [factor_labels.get(f, f) for f in str(row["added_factors"] or "").split("+") if f]
     what = f"Adding {', '.join(added)} to" if added else "Extending"
-    before, after = 100 * abs(row["best_error_before"]), 100 * abs(row["best_error_after"])
+    before, after = abs(row["best_error_before"]), abs(row["best_error_after"])
     verb = "falls" if after < before else "does not fall" if after == before else "rises"
 
     def weak(q2) -> bool:  # the report's rows carry "" for a missing Q² (NaN filled)
@@ -91,7 +92,7 @@ def extension_sentence(row: dict, labels: dict[str, str], factor_labels: dict[st
             "does not grow")
     return (f"{what} the model of {labels.get(row['extends'], row['extends'])} "
             f"({labels.get(row['material'], row['material'])}): the best point's largest error {verb} from "
-            f"{before:.3g} % to {after:.3g} %; the admissible set of *{scenario_label}* {grow} from "
+            f"{percent_text(before)} to {percent_text(after)}; the admissible set of *{scenario_label}* {grow} from "
             f"{share(row['feasible_fraction_before_pct'], row.get('surrogate_q2_before'))} to "
             f"{share(row['feasible_fraction_after_pct'], row.get('surrogate_q2_after'))}."
             + (f" A set read off a surrogate whose leave-one-out Q² is below {STOP_Q2:g} is what that surrogate "

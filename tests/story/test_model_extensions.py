@@ -71,6 +71,10 @@ def test_a_set_read_off_a_surrogate_that_does_not_predict_says_so_beside_its_sha
     assert table.loc[0, "surrogate_q2_before"] == -1.977 and table.loc[0, "surrogate_q2_after"] == -0.3008
     text = extension_sentence(table.iloc[0].to_dict(), {"base": "No rolling", "ext": "Rolling"}, {"mu_r": "μ_r"},
                               "AoR ±4 %")
+    # a best point that meets the target up to rounding (1.5e-16) is not printed as "1.48e-14 %"
+    rounding = dict(table.iloc[0].to_dict(), best_error_after=1.4803e-16)
+    assert "falls from 23.7 % to < 0.01 %;" in extension_sentence(rounding, {"base": "No rolling", "ext": "Rolling"},
+                                                                  {"mu_r": "μ_r"}, "AoR ±4 %")
     assert ("grows from empty (surrogate Q² = -1.98 < 0.5) to 39 % of Ω (surrogate Q² = -0.30 < 0.5). A set "
             "read off a surrogate whose leave-one-out Q² is below 0.5 is what that surrogate says, not yet the "
             "answer") in text
