@@ -59,8 +59,8 @@ def _surrogate_fit(rows):
 
 
 def test_a_set_read_off_a_surrogate_that_does_not_predict_says_so_beside_its_share():
-    """The Kratos heap's headline: the extended model's set (39 % of Ω) read off an angle surrogate with
-    Q² = -0.30, the base's empty set off one with Q² = -1.98; each share carries its Q², and the sentence says
+    """The Kratos heap's 11-run tables (examples/dem_heap/data): the extended model's set (39 % of Ω) read off an
+    angle surrogate with Q² = -0.30, the base's empty set off one with Q² = -1.98; each share carries its Q², and the sentence says
     such a set is not yet the answer. A surrogate that predicts (Q² 0.81 here) adds nothing."""
     specs = {"base": MaterialSpec.from_material("base", BASE), "ext": MaterialSpec.from_material("ext", EXTENDED)}
     criticism = {"base": {"level2": {"best_max_error": 0.2367}}, "ext": {"level2": {"best_max_error": 0.0}}}
