@@ -198,6 +198,11 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
         "feasible_fraction_before_pct": (PCT, "Admissible fraction of Ω of the scenario for the extended material "
                                               "(identifiability.csv)."),
         "feasible_fraction_after_pct": (PCT, "The same for this material."),
+        "surrogate_q2_before": ("–", "Lowest leave-one-out Q² of the extended material's surrogates of the "
+                                     "scenario's observables (surrogate_fit.csv): below 0.5 its admissible fraction "
+                                     "is what a surrogate that does not predict well enough says, and the report "
+                                     "says so beside it."),
+        "surrogate_q2_after": ("–", "The same for this material."),
     },
     "next_runs": {
         "proposal": ("–", "Number of the proposed run (1..count)."),
@@ -249,7 +254,8 @@ TABLE_COLUMNS = {
                  "plausible_upper", "verdict", "reason"],
     "advice": ["material", "kind", "factor", "bound", "observable", "text", "decision"],
     "model_extensions": ["material", "extends", "added_factors", "best_error_before", "best_error_after",
-                         "feasible_fraction_before_pct", "feasible_fraction_after_pct", "scenario"],
+                         "feasible_fraction_before_pct", "feasible_fraction_after_pct", "scenario",
+                         "surrogate_q2_before", "surrogate_q2_after"],
     "paper_comparison": ["quantity", "material", "published", "reproduced", "abs_diff", "rel_diff", "tolerance",
                          "pass", "printed_agrees"],
 }

@@ -39,10 +39,12 @@ def test_the_table_reads_both_materials_numbers_and_names_the_added_factors():
     table = model_extensions(specs, {"base": "", "ext": "base"}, criticism, ident)
     assert list(table.columns) == MODEL_EXTENSION_COLUMNS
     # one row: the only scenario both have; the extended material's own scenario has nothing to compare with
-    assert table.to_dict("records") == [{
+    q2 = ["surrogate_q2_before", "surrogate_q2_after"]
+    assert table.drop(columns=q2).to_dict("records") == [{
         "material": "ext", "extends": "base", "added_factors": "mu_r", "best_error_before": 0.2367,
         "best_error_after": 0.0, "feasible_fraction_before_pct": 0.0, "feasible_fraction_after_pct": 38.97,
         "scenario": "aor"}]
+    assert table[q2].isna().all(axis=None)  # no surrogate_fit given: no Q², and the sentence says nothing of it
     text = extension_sentence(table.iloc[0].to_dict(), {"base": "No rolling", "ext": "Rolling"},
                               {"mu_r": "μ_r"}, "AoR ±4 %")
     assert text == ("Adding μ_r to the model of No rolling (Rolling): the best point's largest error falls from "
@@ -50,6 +52,41 @@ def test_the_table_reads_both_materials_numbers_and_names_the_added_factors():
     # no material extends another: an empty table with the columns
     none = model_extensions(specs, {}, criticism, ident)
     assert list(none.columns) == MODEL_EXTENSION_COLUMNS and none.empty
+
+
+def _surrogate_fit(rows):
+    return pd.DataFrame([{"material": m, "response": r, "q2": q} for m, r, q in rows])
+
+
+def test_a_set_read_off_a_surrogate_that_does_not_predict_says_so_beside_its_share():
+    """The Kratos heap's 11-run tables (examples/dem_heap/data): the extended model's set (39 % of Ω) read off an
+    angle surrogate with Q² = -0.30, the base's empty set off one with Q² = -1.98; each share carries its Q², and the sentence says
+    such a set is not yet the answer. A surrogate that predicts (Q² 0.81 here) adds nothing."""
+    specs = {"base": MaterialSpec.from_material("base", BASE), "ext": MaterialSpec.from_material("ext", EXTENDED)}
+    criticism = {"base": {"level2": {"best_max_error": 0.2367}}, "ext": {"level2": {"best_max_error": 0.0}}}
+    ident = _identifiability([("base", "aor", 0.0), ("ext", "aor", 38.97)])
+    fit = _surrogate_fit([("base", "theta", -1.977), ("ext", "theta", -0.3008), ("ext", "height", 0.9)])
+    table = model_extensions(specs, {"ext": "base"}, criticism, ident, fit)
+    # the lowest Q² of the scenario's observables (theta only: the height is not in the scenario)
+    assert table.loc[0, "surrogate_q2_before"] == -1.977 and table.loc[0, "surrogate_q2_after"] == -0.3008
+    text = extension_sentence(table.iloc[0].to_dict(), {"base": "No rolling", "ext": "Rolling"}, {"mu_r": "μ_r"},
+                              "AoR ±4 %")
+    # a best point that meets the target up to rounding (1.5e-16) is not printed as "1.48e-14 %"
+    rounding = dict(table.iloc[0].to_dict(), best_error_after=1.4803e-16)
+    assert "falls from 23.7 % to < 0.01 %;" in extension_sentence(rounding, {"base": "No rolling", "ext": "Rolling"},
+                                                                  {"mu_r": "μ_r"}, "AoR ±4 %")
+    assert ("grows from empty (surrogate Q² = -1.98 < 0.5) to 39 % of Ω (surrogate Q² = -0.30 < 0.5). A set "
+            "read off a surrogate whose leave-one-out Q² is below 0.5 is what that surrogate says, not yet the "
+            "answer") in text
+    # between 0 and 0.5 the surrogate is not "does not predict" for the criticism, but still not the answer
+    weak = dict(table.iloc[0].to_dict(), surrogate_q2_before=0.81, surrogate_q2_after=0.31)
+    text = extension_sentence(weak, {"base": "No rolling", "ext": "Rolling"}, {"mu_r": "μ_r"}, "AoR ±4 %")
+    assert "from empty to 39 % of Ω (surrogate Q² = 0.31 < 0.5). A set read off" in text
+    # both predict: the sentence is the plain gain; a Q² the report's row leaves blank ("") says nothing
+    for q2_after in (0.5, ""):
+        good = dict(table.iloc[0].to_dict(), surrogate_q2_before=0.81, surrogate_q2_after=q2_after)
+        assert extension_sentence(good, {"base": "No rolling", "ext": "Rolling"}, {"mu_r": "μ_r"},
+                                  "AoR ±4 %").endswith("grows from empty to 39 % of Ω.")
 
 
 def test_a_level2_without_targets_gives_nan_not_a_number_made_up():

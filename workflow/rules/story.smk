@@ -34,6 +34,7 @@ localrules:
 rule model_extensions:
     input:
         identifiability=f"{RESULTS}/tables/identifiability.csv",
+        surrogate_fit=f"{RESULTS}/tables/surrogate_fit.csv",
         criticism=[f"{RESULTS}/criticism/{m}.json" for m in MATERIALS],
     output:
         table=MODEL_EXTENSIONS_TABLE,
