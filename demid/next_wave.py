@@ -25,6 +25,11 @@ included, ``robust_z`` standard deviations), computed once by the uncertainty st
 The next wave is an ordinary study: bounds = next domain, data = earlier runs inside it plus
 the new runs, ``design: {type: custom}``.
 
+A simulated material's waves analyse every run over the search range Omega, so their runs are not held to a
+box: :func:`plan_omega_wave` places them anywhere in Omega where they decide the set
+(:mod:`demid.boundary_runs`: where the classification is most uncertain, and exploring where the set could
+still be), after the criticism's runs and the separating runs, all inside ``count``.
+
 Every step takes the material's :class:`~demid.spec.MaterialSpec`.  The module imports neither scipy nor statsmodels at load time, so the workflow's
 parse step can run :func:`check_next_runs`.
 """
