@@ -428,15 +428,8 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     if deciding:
         points = np.vstack([np.array([[d[f] for f in factors] for d in deciding]), points])
         purposes = [d["purpose"] for d in deciding] + purposes
-    runs = pd.DataFrame({"material": material, "proposal": np.arange(1, len(points) + 1)})
-    for i, f in enumerate(factors):
-        # rounded for the sheet; a run inside the next domain (support runs sit on its edges) stays inside
-        lo_i, hi_i = lower_actual[i], upper_actual[i]
-        runs[f] = [min(max(float(f"{v:.10g}"), lo_i), hi_i) if lo_i <= v <= hi_i else float(f"{v:.10g}")
-                   for v in points[:, i]]
-    runs["purpose"] = purposes
-    for r, sur in surrogates.items():
-        runs[f"predicted_{r}"] = sur.predict(points)
+    # support runs sit on the next domain's edges: rounded for the sheet, they stay inside it
+    runs = _runs_frame(material, spec, points, purposes, lower_actual, upper_actual, surrogates)
 
     reason = _box_reason(spec, refocus, lo, hi, lower_actual, upper_actual, empty)
     n_sep = sum(not isinstance(lab, str) for lab in labels)
