@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 from demid.next_wave import PURPOSE_DECIDE, plan_next_wave
 from demid.spec import MaterialSpec
 from demid.surrogate import fit_material
-from demid.uncertainty import robust_identifiability_frame
+from demid.uncertainty import plausible_identifiability_frame
 
 from .helpers import make_ccd_table
 
@@ -35,7 +35,7 @@ def _boundary_distance(x):
 
 
 def _study(response, target=TARGET, tolerance=TOL, count=9, noise=0.05, z=2.0, margin=0.1):
-    """A noisy CCD over [0, 1]^2 of ``response``, its quadratic fit and robust frame (as the analysis writes it)."""
+    """A noisy CCD over [0, 1]^2 of ``response``, its quadratic fit and plausible frame (as the analysis writes it)."""
     table = make_ccd_table(lambda x: {"y": response(x)}, [0, 0], [1, 1], noise=noise, seed=4)
     table = table.rename(columns={"x1": "a", "x2": "b"})
     table["status"] = "ok"
@@ -50,9 +50,9 @@ def _study(response, target=TARGET, tolerance=TOL, count=9, noise=0.05, z=2.0, m
 def _fit(table, spec, z):
     surrogates = {f.response: f.surrogate() for f in fit_material(table, spec)}
     target, tolerance = spec.targets["y"], spec.scenarios[0].tolerance
-    robust = robust_identifiability_frame(surrogates, spec.domain, {"y": (("y",), tolerance)}, {"y": target}, 201,
+    plausible = plausible_identifiability_frame(surrogates, spec.domain, {"y": (("y",), tolerance)}, {"y": target}, 201,
                                           z=z)
-    return surrogates, robust
+    return surrogates, plausible
 
 
 def test_the_runs_lie_near_the_true_boundary_far_more_than_a_space_filling_design():
@@ -60,8 +60,8 @@ def test_the_runs_lie_near_the_true_boundary_far_more_than_a_space_filling_desig
     wave's runs lie within 0.05 of an edge (the median distance), where a space-filling design's median is over
     three times farther.  (A design on the band at twice the plausible set's z, the runs before, had a median
     of 0.155: its runs filled the band instead of straddling its edges.)"""
-    table, spec, surrogates, robust = _study(_linear, noise=0.2)
-    wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0, analysed_over_omega=True)
+    table, spec, surrogates, plausible = _study(_linear, noise=0.2)
+    wave = plan_next_wave("m", table, surrogates, spec, plausible, z=2.0, analysed_over_omega=True)
     median = float(np.median(_boundary_distance(wave.runs[["a", "b"]].to_numpy(dtype=float))))
     space_filling = float(np.median(_boundary_distance(GRID)))
     assert space_filling > 0.15  # premise: the edges are a small part of the range
@@ -71,8 +71,8 @@ def test_the_runs_lie_near_the_true_boundary_far_more_than_a_space_filling_desig
 def test_the_wave_runs_spread_along_the_boundary():
     """The space-filling factor keeps a wave's runs apart: no two closer than a sixth of the spacing of a uniform
     design of every run (earlier and new), n^(-1/2) in two factors."""
-    table, spec, surrogates, robust = _study(_linear)
-    wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0, analysed_over_omega=True)
+    table, spec, surrogates, plausible = _study(_linear)
+    wave = plan_next_wave("m", table, surrogates, spec, plausible, z=2.0, analysed_over_omega=True)
     x = wave.runs[["a", "b"]].to_numpy(dtype=float)
     gaps = np.linalg.norm(x[:, None, :] - x[None, :, :], axis=2)[np.triu_indices(len(x), 1)]
     assert gaps.min() >= (len(table) + len(x)) ** -0.5 / 6
@@ -89,13 +89,13 @@ def linear_study():
 def test_the_count_is_never_exceeded(linear_study, count, deciding, spread):
     """Over generated waves (count, how many runs the criticism proposes and where), the wave has exactly
     ``count`` runs, the criticism's first, all inside the search range."""
-    table, spec, surrogates, robust = linear_study
+    table, spec, surrogates, plausible = linear_study
     spec = MaterialSpec.from_material("m", {**spec.material_config(), "next_runs": {"count": count, "scenario": "",
                                                                                      "margin": 0.1}})
     runs = [{"a": spread[0], "b": spread[1], "purpose": PURPOSE_DECIDE}] * deciding
     findings = pd.DataFrame([{"response": "y", "cause": "ambiguous", "detail": "outlier (3);step (9)", "aliases": "",
                               "discriminating_runs": json.dumps(runs)}])
-    wave = plan_next_wave("m", table, surrogates, spec, robust, findings, z=2.0, analysed_over_omega=True)
+    wave = plan_next_wave("m", table, surrogates, spec, plausible, findings, z=2.0, analysed_over_omega=True)
     assert len(wave.runs) == count
     assert wave.runs["purpose"].tolist()[:min(deciding, count)] == [PURPOSE_DECIDE] * min(deciding, count)
     assert wave.runs[["a", "b"]].apply(lambda c: c.between(0.0, 1.0)).all().all()
@@ -118,16 +118,16 @@ def test_a_set_a_refocused_box_cuts_gets_runs_in_the_cut_part_and_is_not_cut():
     from demid.scenario import JudgedScenario
 
     target, tolerance = 11.5, 0.02
-    table, spec, surrogates, robust = _study(_two_strips, target=target, tolerance=tolerance, noise=0.05)
-    robust = robust.copy()
-    robust.loc[robust["factor"] == "a", ["robust_lower", "robust_upper"]] = [0.0, 0.45]
+    table, spec, surrogates, plausible = _study(_two_strips, target=target, tolerance=tolerance, noise=0.05)
+    plausible = plausible.copy()
+    plausible.loc[plausible["factor"] == "a", ["robust_lower", "robust_upper"]] = [0.0, 0.45]
     truth = np.abs(_two_strips(GRID) - target) <= tolerance * target
-    lo, hi, _ = planned_box(spec, robust)
+    lo, hi, _ = planned_box(spec, plausible)
     cut = truth & ~np.all((GRID >= lo) & (GRID <= hi), axis=1)
     assert cut.sum() >= 0.4 * truth.sum()  # premise: the box cuts off the right strip
     rng = np.random.default_rng(7)
     for wave_number in (1, 2):
-        wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0, analysed_over_omega=True)
+        wave = plan_next_wave("m", table, surrogates, spec, plausible, z=2.0, analysed_over_omega=True)
         x = wave.runs[["a", "b"]].to_numpy(dtype=float)
         if wave_number == 1:
             near_cut = np.min(np.linalg.norm(x[:, None, :] - GRID[cut][None, :, :], axis=2), axis=1) <= 0.05
@@ -135,7 +135,7 @@ def test_a_set_a_refocused_box_cuts_gets_runs_in_the_cut_part_and_is_not_cut():
         new = pd.DataFrame({"run": np.arange(len(table) + 1, len(table) + 1 + len(x)), "a": x[:, 0], "b": x[:, 1],
                             "y": _two_strips(x) + 0.05 * rng.standard_normal(len(x)), "status": "ok"})
         table = pd.concat([table, new], ignore_index=True)
-        surrogates, robust = _fit(table, spec, 2.0)
+        surrogates, plausible = _fit(table, spec, 2.0)
     estimate = JudgedScenario(spec, spec.scenarios[0], surrogates, 2.0).contains(GRID, plausible=False)
     assert (estimate & cut).sum() >= 0.9 * cut.sum()
     assert (estimate ^ truth).sum() <= 0.3 * truth.sum()
