@@ -25,6 +25,11 @@ included, ``robust_z`` standard deviations), computed once by the uncertainty st
 The next wave is an ordinary study: bounds = next domain, data = earlier runs inside it plus
 the new runs, ``design: {type: custom}``.
 
+A simulated material's waves analyse every run over the search range Omega, so their runs are not held to a
+box: :func:`plan_omega_wave` places them anywhere in Omega where they decide the set
+(:mod:`demid.boundary_runs`: where the classification is most uncertain, and exploring where the set could
+still be), after the criticism's runs and the separating runs, all inside ``count``.
+
 Every step takes the material's :class:`~demid.spec.MaterialSpec`.  The module imports neither scipy nor statsmodels at load time, so the workflow's
 parse step can run :func:`check_next_runs`.
 """
@@ -64,6 +69,10 @@ BOX_SHARE = 1 / 4
 # plausible set instead of sitting inside it (benchmarks/next_wave.py: chosen over 1 and 3).
 BAND_Z_FACTOR = 2.0
 PURPOSE_SEPARATE = "separate aliased terms {terms} ({responses})"
+PURPOSE_BOUNDARY = ("design: where the classification of the set is most uncertain over the search range (the set's "
+                    "boundary is decided there)")
+PURPOSE_EXPLORE = ("design: where the surrogate is least certain over the search range (a part of the set it "
+                   "missed can appear there)")
 PURPOSE_DECIDE = run_purposes.DECIDE
 PURPOSE_CONFIRM = run_purposes.CONFIRM
 
@@ -383,6 +392,8 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     range (a simulated material's waves), so the criticism's runs outside the box are made too; by hand the
     next wave is studied in the box and they are left out.
     """
+    if analysed_over_omega:
+        return plan_omega_wave(material, table, surrogates, spec, findings, z=z)
     request = spec.next_runs
     factors = spec.factor_names
     domain = spec.domain
@@ -417,15 +428,8 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     if deciding:
         points = np.vstack([np.array([[d[f] for f in factors] for d in deciding]), points])
         purposes = [d["purpose"] for d in deciding] + purposes
-    runs = pd.DataFrame({"material": material, "proposal": np.arange(1, len(points) + 1)})
-    for i, f in enumerate(factors):
-        # rounded for the sheet; a run inside the next domain (support runs sit on its edges) stays inside
-        lo_i, hi_i = lower_actual[i], upper_actual[i]
-        runs[f] = [min(max(float(f"{v:.10g}"), lo_i), hi_i) if lo_i <= v <= hi_i else float(f"{v:.10g}")
-                   for v in points[:, i]]
-    runs["purpose"] = purposes
-    for r, sur in surrogates.items():
-        runs[f"predicted_{r}"] = sur.predict(points)
+    # support runs sit on the next domain's edges: rounded for the sheet, they stay inside it
+    runs = _runs_frame(material, spec, points, purposes, lower_actual, upper_actual, surrogates)
 
     reason = _box_reason(spec, refocus, lo, hi, lower_actual, upper_actual, empty)
     n_sep = sum(not isinstance(lab, str) for lab in labels)
@@ -448,6 +452,92 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     aim = bool(z > 0 and (n_support or BAND_Z_FACTOR != 1) and len(cand_u))
     value = (_wave_value(judged, lo, hi, points, len(deciding), earlier_u[inside], n_design, alias_sets, aim)
              if z > 0 else None)
+    return NextWave(dom_frame, runs, reason, value)
+
+
+def _separating_over_omega(alias_sets, existing_u: np.ndarray, lo: np.ndarray, hi: np.ndarray,
+                           budget: int) -> tuple[np.ndarray, list]:
+    """Runs (search units) that make each aliased term the criticism found separately estimable given the
+    ``existing_u`` runs, in Omega's coding; at most ``budget``; and their (members, responses) labels."""
+    from .criticism import separating_runs
+
+    k = len(lo)
+    center, half = (lo + hi) / 2, (hi - lo) / 2
+    coded = [(np.asarray(existing_u, dtype=float).reshape(-1, k) - center) / half]
+    labels = []
+    for members, responses in alias_sets:
+        pts = separating_runs(np.vstack(coded), quadratic_terms(k), list(members), 1.0)
+        coded += [np.reshape(p, (1, k)) for p in pts]
+        labels += [(members, responses)] * len(pts)
+    new = np.vstack(coded[1:])[:budget] if len(coded) > 1 else np.empty((0, k))
+    return center + new * half, labels[:budget]
+
+
+def _runs_frame(material: str, spec: MaterialSpec, points: np.ndarray, purposes: list[str], lower: np.ndarray,
+                upper: np.ndarray, surrogates: dict) -> pd.DataFrame:
+    """The proposals' table: rounded for the sheet (a run inside [lower, upper] stays inside), purpose and the
+    surrogates' predictions."""
+    runs = pd.DataFrame({"material": material, "proposal": np.arange(1, len(points) + 1)})
+    for i, f in enumerate(spec.factor_names):
+        lo_i, hi_i = lower[i], upper[i]
+        runs[f] = [min(max(float(f"{v:.10g}"), lo_i), hi_i) if lo_i <= v <= hi_i else float(f"{v:.10g}")
+                   for v in points[:, i]]
+    runs["purpose"] = purposes
+    for r, sur in surrogates.items():
+        runs[f"predicted_{r}"] = sur.predict(points)
+    return runs
+
+
+def plan_omega_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: MaterialSpec,
+                    findings: pd.DataFrame | None = None, *, z: float) -> NextWave:
+    """The next wave of a material whose waves analyse every run over the search range Omega (a simulated
+    material): its runs anywhere in Omega where they decide the refocus scenario's set
+    (:mod:`demid.boundary_runs`), after the criticism's deciding runs and replicates and the runs that separate
+    aliased terms, all inside ``next_runs.count``.  The next domain is the box that holds the wave's runs (where
+    they were placed; the analysis stays over Omega).  Arguments as :func:`plan_next_wave`."""
+    from .boundary_runs import boundary_runs, classification_error
+    from .scenario import JudgedScenario
+
+    count, factors, domain = spec.next_runs.count, spec.factor_names, spec.domain
+    refocus = next(sc for sc in spec.scenarios if sc.name == refocus_scenario(spec))
+    judged = JudgedScenario(spec, refocus, surrogates, z)
+    omega_lo, omega_hi = domain.search_bounds()
+    earlier_u = domain.to_search(table[factors].to_numpy(dtype=float)).reshape(-1, len(factors))
+    proposed = deciding_runs(findings, factors)
+    n_design = design_count(count, len(proposed), earlier_u, omega_lo, omega_hi)
+    deciding = proposed[:count - n_design]
+    deciding_u = domain.to_search(np.array([[d[f] for f in factors] for d in deciding], dtype=float)
+                                  .reshape(-1, len(factors))).reshape(-1, len(factors))
+    separating_u, sep_labels = _separating_over_omega(aliased_findings(findings, factors),
+                                                      np.vstack([earlier_u, deciding_u]), omega_lo, omega_hi, n_design)
+    design_u, kinds = boundary_runs(judged, np.vstack([earlier_u, deciding_u, separating_u]),
+                                    n_design - len(separating_u))
+    points = domain.to_actual(np.vstack([deciding_u, separating_u, design_u]).reshape(-1, len(factors)))
+    purposes = ([d["purpose"] for d in deciding]
+                + [PURPOSE_SEPARATE.format(terms=" = ".join(term_name(t, factors) for t in members),
+                                           responses=", ".join(responses)) for members, responses in sep_labels]
+                + [PURPOSE_BOUNDARY if kind == "boundary" else PURPOSE_EXPLORE for kind in kinds])
+    lower_actual, upper_actual = domain.to_actual(omega_lo)[0], domain.to_actual(omega_hi)[0]
+    runs = _runs_frame(material, spec, points, purposes, lower_actual, upper_actual, surrogates)
+    placed = runs[factors].to_numpy(dtype=float)
+    dom_frame = pd.DataFrame({"material": material, "factor": factors, "lower": placed.min(axis=0),
+                              "upper": placed.max(axis=0)})
+    n_boundary, n_explore = kinds.count("boundary"), kinds.count("explore")
+    design_x = domain.to_actual(design_u[:n_boundary].reshape(-1, len(factors)))
+    error = float(classification_error(judged, design_x).max()) if n_boundary else 0.0
+    reason = (f"Runs placed over the whole search range for scenario '{refocus.name}' "
+              f"({join_observables(refocus.observables)})" + _deciding_reason(deciding))
+    if len(proposed) > len(deciding):
+        reason += (f"; {len(proposed) - len(deciding)} more run(s) the criticism proposed do not fit in the wave's "
+                   f"{count} runs and are left out")
+    reason += (f"; {n_boundary} where the classification of the set is most uncertain (the largest probability of "
+               f"misclassifying one of their points is {error:.2f}), spread apart"
+               + (f", {n_explore} where the surrogate is least certain, so that a part of the set it missed can "
+                  f"appear" if n_explore else "")
+               + (f", {len(sep_labels)} to separate aliased terms the criticism found" if sep_labels else "") + ".")
+    from .wave_value import expected_contraction
+
+    value = expected_contraction(judged, points) if z > 0 else None
     return NextWave(dom_frame, runs, reason, value)
 
 

@@ -1,7 +1,8 @@
 """Waves of a simulated material: which runs each wave simulates and what each wave analyses.
 
 Wave 1 is the declared design over the configured bounds (:func:`first_wave`).
-Wave k+1 simulates wave k's proposed runs (``waves.next_runs``, placed in wave k's refocused box) and is
+Wave k+1 simulates wave k's proposed runs (``waves.next_runs``, placed over Omega where they decide the set:
+:func:`demid.next_wave.plan_omega_wave`) and is
 analysed with every run of waves 1..k+1 over the search range Omega the user declared, as a ``custom``
 design: a box is only where runs were placed, so every fraction, width and verdict of every wave is
 relative to Omega, and no part of the set is reported empty because it lies outside the last box.
@@ -50,7 +51,7 @@ def first_wave(spec: MaterialSpec, seed: int) -> pd.DataFrame:
 
 def wave_material(material: dict, data: str, domain: pd.DataFrame | None = None) -> dict:
     """The ``materials`` entry wave k analyses: the table ``data`` over the declared bounds (Omega) and, after
-    wave 1 (a refocused box ``domain`` placed its runs), a ``custom`` design: the table holds every run of
+    wave 1 (a box ``domain`` holds the runs placed since), a ``custom`` design: the table holds every run of
     waves 1..k, not the declared design.  Published statistics (of another table) are dropped;
     ``waves.next_runs`` is the wave's ``next_runs``."""
     mat = copy.deepcopy(material)

@@ -160,8 +160,10 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
                                 "the printed value."),
     },
     "next_domain": {
-        "lower": ("unit of the factor", "Lower end of the refocused search range for the next wave."),
-        "upper": ("unit of the factor", "Upper end of the refocused search range for the next wave."),
+        "lower": ("unit of the factor", "Lower end of the refocused search range for the next wave (a simulated "
+                                        "material's waves: of the box that holds the next wave's runs, placed "
+                                        "over the whole search range)."),
+        "upper": ("unit of the factor", "Upper end of the same range."),
     },
     "verdicts": {
         "strict_lower": (FACTOR_UNIT, "Lower end of the strict admissible interval (identifiability.csv): the set if surrogate "
@@ -210,6 +212,8 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
                          "tell apart ('decide between causes') and then to confirm or correct a named cause "
                          "('confirm the named cause'); then a design run in the refocused box "
                          "(over the whole box, so its edges are supported, or on the band near the plausible set), "
+                         "or, for a simulated material's waves, over the whole search range where the "
+                         "classification of the set is most uncertain or where the surrogate is least certain; "
                          "or a run that separates terms the criticism found aliased."),
     },
 }

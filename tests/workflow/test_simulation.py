@@ -327,7 +327,7 @@ def test_waves_run_unattended_rerun_nothing_and_are_byte_identical(tmp_path):
     assert first.returncode == 0, first.stderr[-3000:]
     results = study / "results"
 
-    # Two waves (stop_early: false): wave 2 simulated wave 1's proposals (in wave 1's box), numbered on, and
+    # Two waves (stop_early: false): wave 2 simulated wave 1's proposals (placed over Omega), numbered on, and
     # was analysed with every run over Omega; wave 1's decision carries the estimate the stop advice reads.
     decision = json.loads((results / "waves/1/next_wave/m/decision.json").read_text(encoding="utf-8"))
     assert set(decision) == {"stop", "action", "reason", "value", "plausible_fraction_of_omega_pct"}
