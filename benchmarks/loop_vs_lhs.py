@@ -272,25 +272,31 @@ def _table(points: np.ndarray, responses: dict, first_run: int = 1, wave: int = 
     return frame
 
 
-def _analyse(make_spec, table: pd.DataFrame, folder: Path, name: str):
+def _analyse(make_spec, table: pd.DataFrame, folder: Path, name: str, choose_surrogate: bool = False):
     """demid's per-material analysis of ``table`` written to ``name``.csv (as the workflow's job, without
-    drawing figures): the spec ``make_spec(path)`` and its result."""
+    drawing figures): the spec ``make_spec(path)`` and its result (``choose_surrogate``: as a simulated study's
+    waves after the first, the quadratic or kriging per response)."""
     from demid.io import write_full_csv
     from demid.steps import material_step
 
     path = folder / f"{name}.csv"
     write_full_csv(table, path)
     spec = make_spec(path)
-    return spec, material_step(spec, path, z=Z, tolerances=TOLERANCES, typo_stop=False)
+    return spec, material_step(spec, path, z=Z, tolerances=TOLERANCES, typo_stop=False,
+                               choose_surrogate=choose_surrogate)
 
 
-def _estimate(study: Study, spec, result) -> np.ndarray:
-    """The analysis' strict set of the scenario on the common grid, inside the box it covers."""
+def _estimate(study: Study, spec, result, statistics: pd.DataFrame | None = None) -> np.ndarray:
+    """The analysis' strict set of the scenario on the common grid, inside the box it covers, by the surrogates
+    its sets used (the choice stored in its statistics; ``statistics`` replaces them)."""
     from demid.io import as_stored
     from demid.surrogate import surrogates_from_frame
+    from demid.surrogate_choice import chosen_surrogates
     from demid.tolerance import scenario_surrogates
 
-    surrogates = surrogates_from_frame(as_stored(result.parquet["fits"]), spec.factor_names)
+    quadratic = surrogates_from_frame(as_stored(result.parquet["fits"]), spec.factor_names)
+    statistics = as_stored(result.parquet["statistics"]) if statistics is None else statistics
+    surrogates = chosen_surrogates(as_stored(result.parquet["table"]), spec, quadratic, statistics)
     judged = scenario_surrogates(surrogates, spec, TOLERANCE)
     lo, hi = np.array([f.lower for f in spec.factors]), np.array([f.upper for f in spec.factors])
     in_box = np.all((study.grid >= lo - 1e-9 * (hi - lo)) & (study.grid <= hi + 1e-9 * (hi - lo)), axis=1)
@@ -319,12 +325,13 @@ def run_loop(study: Study, folder: Path) -> dict:
     domain, scores, stop, largest_wave, previous = None, [], False, 0, None
     for wave in range(1, WAVES + 1):
         analysed = table  # scripts/assemble_wave.py: a wave analyses every run so far, over Omega
-        wspec, result = _analyse(lambda path: wave_spec(spec, path, domain), analysed, folder, f"wave{wave}")
+        wspec, result = _analyse(lambda path: wave_spec(spec, path, domain), analysed, folder, f"wave{wave}",
+                                 choose_surrogate=domain is not None)  # as scripts/analyse_wave.py
         scores.append(study.score(_estimate(study, wspec, result)))
         if wave == WAVES:
             break
-        frames = {name: {"m": as_stored(result.parquet[name])} for name in ("tables", "fits", "robust", "findings")
-                  if name in result.parquet}
+        frames = {name: {"m": as_stored(result.parquet[name])}
+                  for name in ("tables", "fits", "robust", "findings", "statistics") if name in result.parquet}
         frames["tables"] = {"m": as_stored(result.parquet["table"])}
         planned = plan_waves({"m": wspec}, frames, z=Z, analysed_over_omega=True)  # as scripts/propose_wave.py
         next_domain, proposals, _ = tabulate_waves({"m": wspec}, planned)
@@ -347,13 +354,24 @@ def run_loop(study: Study, folder: Path) -> dict:
                           ignore_index=True)
     return {"first_err": scores[0][0], "first_cover": scores[0][1], "loop_err": scores[-1][0],
             "loop_cover": scores[-1][1], "waves": len(scores), "runs": len(table), "largest_wave": largest_wave,
-            "stopped": bool(stop), "table": table}
+            "stopped": bool(stop), "kriging_used": _kriging_used(result), "table": table}
 
 
-def run_design(study: Study, points: np.ndarray, folder: Path, name: str,
-               stream: int) -> tuple[float, float, pd.DataFrame]:
-    """A one-shot design of the same budget over Omega, through demid's analysis (``design: custom``): set error,
-    coverage and the table of runs."""
+def _kriging_used(result) -> int:
+    """How many responses the last wave's sets judged by kriging."""
+    statistics = result.parquet["statistics"]
+    return int((statistics["surrogate"] == "kriging").sum()) if "surrogate" in statistics else 0
+
+
+def run_design(study: Study, points: np.ndarray, folder: Path, name: str, stream: int) -> dict:
+    """A one-shot design of the same budget over Omega, through demid's analysis (``design: custom``), as a user's
+    single table is analysed (the quadratic): set error and coverage; and of the same runs with the loop's
+    surrogate choice (:func:`demid.surrogate_choice.choose_surrogates`, the quadratic or kriging per response):
+    ``choice_err``, ``choice_cover``."""
+    from demid.io import as_stored
+    from demid.surrogate import surrogates_from_frame
+    from demid.surrogate_choice import choose_surrogates
+
     from demid.spec import MaterialSpec
 
     material = copy.deepcopy(_material(study.targets, study.seed))
@@ -367,65 +385,15 @@ def run_design(study: Study, points: np.ndarray, folder: Path, name: str,
 
     table = _table(points, study.simulate(points, rng))
     spec, result = _analyse(make_spec, table, folder, name)
-    return (*study.score(_estimate(study, spec, result)), table)
+    err, cover = study.score(_estimate(study, spec, result))
+    statistics = as_stored(result.parquet["statistics"])
+    quadratic = surrogates_from_frame(as_stored(result.parquet["fits"]), spec.factor_names)
+    choice = choose_surrogates(as_stored(result.parquet["table"]), spec, quadratic, statistics)
+    choice_err, choice_cover = study.score(_estimate(study, spec, result, choice.statistics))
+    return {"err": err, "cover": cover, "choice_err": choice_err, "choice_cover": choice_cover}
 
 
-# ------------------------------------------------------------- a diagnostic: kriging on the same runs
-def _quadratic_trend(u: np.ndarray) -> np.ndarray:
-    return np.column_stack([np.ones(len(u)), u, u ** 2, u[:, :1] * u[:, 1:2]])
-
-
-def kriging_mean(u: np.ndarray, y: np.ndarray, at: np.ndarray) -> np.ndarray:
-    """Universal kriging (a quadratic trend with a Gaussian-process residual, squared-exponential kernel with a
-    length per factor and a nugget for the scatter, fitted by restricted maximum likelihood) of ``y`` at ``u``
-    (Omega scaled to [0, 1]), predicted at ``at``: what a surrogate that can follow more than a quadratic makes
-    of the same runs (``--kriging``)."""
-    from scipy.optimize import minimize
-
-    mean, scale = float(np.mean(y)), float(np.std(y)) or 1.0
-    z = (y - mean) / scale
-    f = _quadratic_trend(u)
-    n, p = f.shape
-    d2 = (u[:, None, :] - u[None, :, :]) ** 2
-
-    def parts(theta):
-        lengths, nugget = np.exp(theta[:2]), np.exp(theta[2])
-        k = np.exp(-0.5 * np.sum(d2 / lengths ** 2, axis=2)) + (nugget + 1e-8) * np.eye(n)
-        c = np.linalg.cholesky(k)
-        ki_f = np.linalg.solve(c.T, np.linalg.solve(c, f))
-        ki_z = np.linalg.solve(c.T, np.linalg.solve(c, z))
-        a = f.T @ ki_f
-        beta = np.linalg.solve(a, f.T @ ki_z)
-        resid = z - f @ beta
-        ki_r = np.linalg.solve(c.T, np.linalg.solve(c, resid))
-        return c, a, beta, ki_r, resid, lengths
-
-    def restricted_nll(theta):
-        try:
-            c, a, _, ki_r, resid, _ = parts(theta)
-        except np.linalg.LinAlgError:
-            return 1e10
-        sigma2 = float(resid @ ki_r) / (n - p)
-        return 0.5 * ((n - p) * np.log(max(sigma2, 1e-300)) + 2 * np.sum(np.log(np.diag(c)))
-                      + np.linalg.slogdet(a)[1])
-
-    starts = [np.log([0.3, 0.3, 0.05]), np.log([0.15, 0.15, 0.01]), np.log([0.6, 0.6, 0.2])]
-    best = min((minimize(restricted_nll, s0, method="L-BFGS-B", bounds=[(np.log(0.03), np.log(3.0))] * 2
-                         + [(np.log(1e-6), np.log(10.0))]) for s0 in starts), key=lambda r: r.fun)
-    _, _, beta, ki_r, _, lengths = parts(best.x)
-    k_at = np.exp(-0.5 * np.sum((at[:, None, :] - u[None, :, :]) ** 2 / lengths ** 2, axis=2))
-    return mean + scale * (_quadratic_trend(at) @ beta + k_at @ ki_r)
-
-
-def kriging_score(study: Study, table: pd.DataFrame) -> tuple[float, float]:
-    """Set error and coverage of the strict set of kriging surrogates fitted to ``table``'s runs over Omega."""
-    ok = table[table["status"] == "ok"]
-    u, at = _u(ok[list(FACTORS)].to_numpy(dtype=float)), _u(study.grid)
-    predicted = {r: kriging_mean(u, ok[r].to_numpy(dtype=float), at) for r in study.targets}
-    return study.score(study.inside(predicted))
-
-
-def run_case(name: str, sim, seed: int, level: float, grid: int, kriging: bool = False) -> dict:
+def run_case(name: str, sim, seed: int, level: float, grid: int) -> dict:
     from scipy.stats import qmc
 
     study = Study(sim, seed, level, grid)
@@ -436,13 +404,9 @@ def run_case(name: str, sim, seed: int, level: float, grid: int, kriging: bool =
         lhs = run_design(study, lhs_points, folder, "lhs", 2)
         rand_points = LO + np.random.default_rng([seed, 3]).random((BUDGET, len(FACTORS))) * (HI - LO)
         rand = run_design(study, rand_points, folder, "random", 4)
-    row = {"simulator": name, "seed": seed, "level": level, "true_share_pct": 100 * float(study.truth.mean()),
-           **{k: v for k, v in loop.items() if k != "table"},
-           "lhs_err": lhs[0], "lhs_cover": lhs[1], "random_err": rand[0], "random_cover": rand[1]}
-    if kriging:
-        for method, table in (("loop", loop["table"]), ("lhs", lhs[2]), ("random", rand[2])):
-            row[f"{method}_kriging_err"], row[f"{method}_kriging_cover"] = kriging_score(study, table)
-    return row
+    return {"simulator": name, "seed": seed, "level": level, "true_share_pct": 100 * float(study.truth.mean()),
+            **{k: v for k, v in loop.items() if k != "table"},
+            **{f"lhs_{k}": v for k, v in lhs.items()}, **{f"random_{k}": v for k, v in rand.items()}}
 
 
 def _quiet_figures() -> None:
@@ -475,11 +439,12 @@ def summarise(frame: pd.DataFrame) -> str:
     lines.append("by noise level (response bands): " + "; ".join(
         f"{level:g}: CCD {row.first_err:.3f} loop {row.loop_err:.3f} LHS {row.lhs_err:.3f} random {row.random_err:.3f}"
         for level, row in by_level.iterrows()))
-    if "loop_kriging_err" in frame:
-        lines.append("kriging on the same runs (medians; loop/LHS, wins vs LHS): " + "; ".join(
-            f"{name} loop {sub.loop_kriging_err.median():.3f} LHS {sub.lhs_kriging_err.median():.3f} random "
-            f"{sub.random_kriging_err.median():.3f} ({sub.loop_kriging_err.median() / sub.lhs_kriging_err.median():.2f}, "
-            f"{int((sub.loop_kriging_err < sub.lhs_kriging_err).sum())}/{len(sub)})" for name, sub in groups))
+    lines.append("the same runs with the loop's surrogate choice (quadratic or kriging per response, by Q²), "
+                 "medians; loop/LHS, loop's wins vs LHS: " + "; ".join(
+                     f"{name} LHS {sub.lhs_choice_err.median():.3f} random {sub.random_choice_err.median():.3f} "
+                     f"({sub.loop_err.median() / sub.lhs_choice_err.median():.2f}, "
+                     f"{int((sub.loop_err < sub.lhs_choice_err).sum())}/{len(sub)})" for name, sub in groups))
+    lines.append(f"kriging judged the loop's last set of {int((frame.kriging_used > 0).sum())}/{len(frame)} studies")
     over = frame[(frame.runs > BUDGET) | (frame.largest_wave > COUNT)]
     worse = frame[frame.loop_err > frame.first_err]
     lines.append(f"loop worse than its own first wave in {len(worse)}/{len(frame)} studies; "
@@ -500,8 +465,6 @@ def main(argv=None):
     parser.add_argument("--simulators", default=",".join(SIMULATORS))
     parser.add_argument("--grid", type=int, default=201, help="common scoring grid, points per factor")
     parser.add_argument("--csv", default="", help="write the per-study rows here")
-    parser.add_argument("--kriging", action="store_true",
-                        help="also score universal kriging fitted to each method's runs (a diagnostic for the surrogate)")
     parser.add_argument("--full-budget", action="store_true",
                         help="the loop runs every wave (waves.stop_early: false), to tell the stop rule's share apart")
     args = parser.parse_args(argv)
@@ -514,11 +477,12 @@ def main(argv=None):
     for name in args.simulators.split(","):
         for seed in range(args.seed_start, args.seed_start + seeds):
             level = args.level if args.level is not None else LEVELS[seed % len(LEVELS)]
-            rows.append(run_case(name, SIMULATORS[name], seed, level, args.grid, args.kriging))
+            rows.append(run_case(name, SIMULATORS[name], seed, level, args.grid))
             r = rows[-1]
             print(f"{name:11s} seed {seed:3d} level {level:.1f}  true {r['true_share_pct']:5.2f} % of Omega  "
                   f"CCD {r['first_err']:.3f}  loop {r['loop_err']:.3f} ({r['runs']} runs, {r['waves']} waves)  "
-                  f"LHS {r['lhs_err']:.3f}  random {r['random_err']:.3f}", flush=True)
+                  f"LHS {r['lhs_err']:.3f} (choice {r['lhs_choice_err']:.3f})  random {r['random_err']:.3f} "
+                  f"(choice {r['random_choice_err']:.3f})", flush=True)
     frame = pd.DataFrame(rows)
     if args.csv:
         frame.to_csv(args.csv, index=False)

@@ -456,16 +456,19 @@ def plan_waves(specs: dict, frames: dict, *, z: float, analysed_over_omega: bool
 
     ``specs``: material -> :class:`~demid.spec.MaterialSpec`.
     ``frames``: ``tables``, ``fits``, ``robust``, ``findings`` -> material -> frame (the pipeline's
-    validated table, fits, robust-identifiability and criticism-findings intermediates).
+    validated table, fits, robust-identifiability and criticism-findings intermediates), and optionally
+    ``statistics`` (the fit statistics: where a wave's sets used kriging, the runs are placed by it too).
     """
     from .surrogate import surrogates_from_frame
+    from .surrogate_choice import chosen_surrogates
 
     waves = {}
     for m, spec in specs.items():
         table = frames["tables"][m]
         if "status" in table:
             table = table[table["status"] != "failed"]
-        surrogates = surrogates_from_frame(frames["fits"][m], spec.factor_names)
+        surrogates = chosen_surrogates(table, spec, surrogates_from_frame(frames["fits"][m], spec.factor_names),
+                                       frames.get("statistics", {}).get(m))
         waves[m] = plan_next_wave(m, table, surrogates, spec, frames["robust"][m], frames["findings"][m], z=z,
                                   analysed_over_omega=analysed_over_omega)
     return waves

@@ -149,6 +149,16 @@ def _change_text(evidence: WaveEvidence, change: float) -> str:
             f"({100 * change:+.1f} %)")
 
 
+def surrogate_evidence(row) -> dict:
+    """One response's Q² and lack-of-fit p-value for the stop rule, of the surrogate its sets use (a fit
+    statistics row): kriging has no lack-of-fit test (its nugget is the scatter it fits), so only its Q²."""
+    from .kriging import KIND
+    from .surrogate_choice import used_q2
+
+    lof_p = float("nan") if getattr(row, "surrogate", None) == KIND else float(row.lof_p)
+    return {"q2": used_q2(row), "lof_p": lof_p}
+
+
 def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, robust: pd.DataFrame,
                   statistics: pd.DataFrame, criticism: dict, previous: dict | None, runs: pd.DataFrame) -> WaveEvidence:
     """The :class:`WaveEvidence` of wave ``wave`` of the material ``spec`` (its full search range): from the
@@ -162,9 +172,7 @@ def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, ro
     rows = robust[robust["scenario"] == scenario]
     plausible = float(rows["robust_fraction_pct"].iloc[0]) if len(rows) else 0.0  # a share of Omega already
     observables = next(sc.observables for sc in analysed.scenarios if sc.name == scenario)
-    stats = statistics.set_index("response")
-    surrogates = {r: {"q2": float(stats.at[r, "q2"]), "lof_p": float(stats.at[r, "lof_p"])}
-                  for r in observables if r in stats.index}
+    surrogates = {row.response: surrogate_evidence(row) for row in statistics.itertuples() if row.response in observables}
     level2 = criticism.get("level2") or {}
     return WaveEvidence(wave=wave, max_waves=waves_max(spec), plausible_pct=plausible,
                         previous_pct=None if previous is None else previous.get("plausible_fraction_of_omega_pct"),
@@ -330,6 +338,7 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
     for a material without waves.  Plausible shares are of Omega (every wave is analysed over Omega); intervals
     are in actual units."""
     from .next_wave import refocus_scenario
+    from .surrogate_choice import choice_text, surrogate_record, used_q2
 
     rows = []
     for number, wave in enumerate(waves, start=1):
@@ -341,8 +350,10 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
         failed = int((table["status"] == "failed").sum()) if "status" in table else 0
         rows.append({
             "wave": number, "simulated": len(table), "failed": failed, "analysed": len(wave["analysed"]),
-            "surrogate": str(stats["surrogate"].iloc[0]) if "surrogate" in stats and len(stats) else "quadratic",
-            "q2": {str(r): float(q) for r, q in zip(stats["response"], stats["q2"])},
+            "surrogate": ("; ".join(choice_text(spec.response_labels.get(r.response, r.response), r)
+                                    for r in stats.itertuples()) if "surrogate" in stats else "quadratic"),
+            "q2": {str(r.response): used_q2(r) for r in stats.itertuples()},
+            "surrogates": {str(r.response): surrogate_record(r) for r in stats.itertuples()},
             "scenario": scenario,
             "plausible_fraction_of_omega_pct": float(robust["robust_fraction_pct"].iloc[0]) if len(robust) else 0.0,
             "plausible": {f: [float(robust.at[f, "robust_lower"]), float(robust.at[f, "robust_upper"])]
