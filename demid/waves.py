@@ -336,7 +336,9 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
     runs analysed), ``domain`` (its box, None for wave 1), ``robust`` (its robust-identifiability frame) and
     ``statistics`` (its fit statistics).  ``decision``: the last wave's decision (:func:`stop_decision`), None
     for a material without waves.  Plausible shares are of Omega (every wave is analysed over Omega); intervals
-    are in actual units."""
+    are in actual units.  Per wave ``surrogate`` says in words which surrogate judged each response's sets and
+    why, ``q2`` is that surrogate's Q² per response, and ``surrogates`` per response the one used with both Q²
+    (:mod:`demid.surrogate_choice`; wave 1: the quadratic)."""
     from .next_wave import refocus_scenario
     from .surrogate_choice import choice_text, surrogate_record, used_q2
 

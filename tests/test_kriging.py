@@ -263,3 +263,22 @@ def test_a_wave_analysed_with_the_choice_judges_its_sets_by_kriging_and_criticis
     assert robust["robust_fraction_pct"].iloc[0] == pytest.approx(share, abs=0.3)
     assert robust["robust_fraction_pct"].iloc[0] != pytest.approx(plain_robust["robust_fraction_pct"].iloc[0],
                                                                  abs=0.3)
+
+
+def test_the_waves_summary_says_per_wave_which_surrogate_judged_each_response_and_both_q2(tmp_path):
+    from demid.waves import wave_summary
+
+    table = pd.DataFrame({"run": [1, 2, 3], "a": 0.5, "b": 5.0, "y": 30.0, "status": "ok"})
+    table.to_csv(tmp_path / "t.csv", index=False)
+    spec = _spec({"y": 30.0}, tmp_path / "t.csv")
+    robust = pd.DataFrame({"scenario": "all", "factor": ["a", "b"], "robust_fraction_pct": 1.5,
+                           "robust_lower": [0.2, 2.0], "robust_upper": [0.4, 4.0]})
+    first = pd.DataFrame({"response": ["y"], "q2": [0.42], "lof_p": [0.01]})
+    second = first.assign(surrogate=KIND, q2_kriging=0.81, kriging_hyperparameters="{}")
+    waves = [{"table": table, "analysed": table, "domain": None, "robust": robust, "statistics": stats}
+             for stats in (first, second)]
+    summary = wave_summary(spec, waves, None)["waves"]
+    assert summary[0]["surrogate"] == "quadratic" and summary[0]["q2"] == {"y": 0.42}
+    assert summary[1]["surrogate"] == "y by kriging (Q² 0.81 against the quadratic's 0.42)"
+    assert summary[1]["q2"] == {"y": 0.81}
+    assert summary[1]["surrogates"] == {"y": {"used": KIND, "q2_quadratic": 0.42, "q2_kriging": 0.81}}
