@@ -13,18 +13,23 @@ seeds through 0.2, 0.4, 0.6, 0.8, 1.0 (``--level`` fixes it).  Three ways to spe
 * **loop**: demid's waves as the workflow runs them (``workflow/rules/simulation.smk``), replayed in
   Python: wave 1 = :func:`demid.waves.first_wave`; each wave's table is every run so far, analysed (as
   ``scripts/assemble_wave.py`` gives it) by :func:`demid.steps.material_step` on
-  :func:`demid.waves.wave_spec` (as ``scripts/analyse_wave.py``),
+  :func:`demid.waves.wave_spec` (as ``scripts/analyse_wave.py``: after wave 1 with ``choose_surrogate``, each
+  response's sets judged by the quadratic or universal kriging, whichever predicts left-out runs better,
+  :mod:`demid.surrogate_choice`),
   the next wave is :func:`demid.next_wave.plan_waves` on that wave's stored frames and its decision
   :func:`demid.waves.stop_decision` (as ``scripts/propose_wave.py``), and the runs of wave k+1 are
   :func:`demid.waves.next_wave_runs` of the proposals read back from their CSV.  The figures are not
   drawn (no number depends on them); that and skipping the run folders is the only difference from
   Snakemake, whose per-job Python start-ups would make the benchmark an hour long.
 * **lhs**: a Latin hypercube of 31 runs over Omega (scipy.stats.qmc, seeded), one table with
-  ``design: custom``, analysed by the same :func:`demid.steps.material_step`.
-* **random**: 31 uniformly random runs over Omega, analysed the same way.
+  ``design: custom``, analysed by the same :func:`demid.steps.material_step` as a user's single table is (the
+  quadratic); and the same runs with the loop's surrogate choice (:func:`demid.surrogate_choice.choose_surrogates`
+  on that analysis' table and statistics: "LHS choice").
+* **random**: 31 uniformly random runs over Omega, analysed the same two ways.
 
 Every estimate is scored on one common grid of Omega (``--grid`` points per factor): the estimate's set
-is the analysis' strict set of the scenario, i.e. the grid points where each observable's surrogate is
+is the analysis' strict set of the scenario, i.e. the grid points where each observable's surrogate (the one
+its sets used: :func:`demid.surrogate_choice.chosen_surrogates` of the stored statistics) is
 within the tolerance of its target, inside the box the analysis covered (a wave's set is reported over
 its box only); the set error is |estimate xor truth| / |truth| and the coverage |estimate & truth| /
 |truth|.  For the loop the first wave (the CCD alone) is scored too, so the table shows whether the waves
@@ -34,8 +39,8 @@ Printed: per simulator the medians of set error and coverage for CCD alone, loop
 ratio of medians loop / LHS, the win rates of the loop against LHS and random (lower set error), and the
 runs the loop simulated against its budget (13 + 9 per further wave).
 
-Run:  python benchmarks/loop_vs_lhs.py [--seeds 10] [--quick] [--level 0.5] [--simulators a,b]
-      (default: 6 simulators x 10 seeds, about 3 CPU minutes, 4 with ``--kriging``; ``--quick``: 4 seeds.)
+Run:  python benchmarks/loop_vs_lhs.py [--seeds 10] [--seed-start 0] [--quick] [--level 0.5] [--simulators a,b]
+      [--csv rows.csv]  (default: 6 simulators x 10 seeds, 15-60 minutes on a loaded machine; ``--quick``: 4 seeds.)
 
 RESULTS (default invocation, 60 studies; medians of the set error, loop/LHS the ratio of the medians, wins
 the studies where the loop's set error is lower; "runs" the median runs the loop simulated)
@@ -80,8 +85,9 @@ also makes the criticism's runs outside the box: none of these studies had one):
     worse than its own first wave in 21/60; stopped early in 35/60 (20/60 over the box); over budget in 0/60
     by noise level: loop 0.59 / 0.61 / 0.62 / 0.70 / 0.86
 
-Kriging on the same runs (``--kriging``: a quadratic trend with a Gaussian-process residual fitted to each
-method's runs over Omega, strict set as above; median set error, loop/LHS, loop's wins against LHS):
+Kriging on the same runs (a diagnostic of the benchmark before the loop had kriging: a quadratic trend with a
+Gaussian-process residual fitted to each method's runs over Omega, strict set as above; median set error,
+loop/LHS, loop's wins against LHS):
 
     saturating loop 0.357  LHS 0.596  random 0.378   0.60   8/10
     periodic   loop 0.494  LHS 0.819  random 0.851   0.60   9/10
