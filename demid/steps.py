@@ -293,6 +293,10 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
                                    strict_sets=stored_strict_sets(scenarios, judged, reference=True) if same else None,
                                    run_candidates=_next_box_points(spec, uncertainty.robust),
                                    simulated=not typo_stop)  # a simulated wave: demid made every run itself
+    if not same:
+        from .surrogate_choice import mark_criticism
+
+        mark_criticism(criticism.summary, fits["statistics"])
     combos = combinations_step(surrogates, spec, validated.coding, fitted, sets.sets or {}, z=z,
                                ranking=uncertainty.ranking, judged=judged)
     figures = {"sets_figure": sets.figure, "surface_figure": sets.surface,

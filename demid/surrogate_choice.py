@@ -133,3 +133,26 @@ def surrogate_record(row) -> dict:
 
     return {"used": getattr(row, "surrogate", QUADRATIC), "q2_quadratic": number(float(row.q2)),
             "q2_kriging": number(getattr(row, "q2_kriging", None))}
+
+
+#: The key a kriging-judged response gets in the criticism's level-1 entry (``criticism/<material>.json``): the
+#: criticism is of the quadratic, and its "does not predict" is about the quadratic, not about the sets.
+SETS_SURROGATE_KEY = "sets_surrogate"
+
+
+def mark_criticism(summary: dict, statistics: pd.DataFrame) -> None:
+    """Tell the criticism summary's level-1 entries which responses' sets kriging judged, with its Q², so the
+    advice and the report do not call those sets untrustworthy for the quadratic's Q² alone."""
+    level1 = summary.get("level1") or {}
+    for row in statistics.itertuples():
+        if getattr(row, "surrogate", QUADRATIC) == KIND and row.response in level1:
+            level1[row.response][SETS_SURROGATE_KEY] = {"surrogate": KIND, "q2": float(row.q2_kriging)}
+
+
+def sets_do_not_predict(level1_entry: dict) -> bool:
+    """Whether a response's sets rest on a surrogate that does not predict left-out runs (Q² < 0): the
+    criticism's ``does_not_predict`` verdict of the quadratic, unless kriging judged the sets and predicts."""
+    if level1_entry.get("verdict") != "does_not_predict":
+        return False
+    used = level1_entry.get(SETS_SURROGATE_KEY)
+    return not (used and used.get("q2") is not None and used["q2"] >= 0)

@@ -282,3 +282,25 @@ def test_the_waves_summary_says_per_wave_which_surrogate_judged_each_response_an
     assert summary[1]["surrogate"] == "y by kriging (Q² 0.81 against the quadratic's 0.42)"
     assert summary[1]["q2"] == {"y": 0.81}
     assert summary[1]["surrogates"] == {"y": {"used": KIND, "q2_quadratic": 0.42, "q2_kriging": 0.81}}
+
+
+def test_sets_judged_by_a_predicting_kriging_are_not_called_untrustworthy_for_the_quadratics_q2(tmp_path):
+    """The criticism's "does not predict" is the quadratic's; where kriging (Q² >= 0) judged the sets, the advice
+    does not tell the user to distrust them, and the report's warning leaves them out; where kriging does not
+    predict either, both still say so."""
+    from demid.report.summary import unpredictive_responses
+    from demid.story import material_advice
+    from demid.surrogate_choice import mark_criticism
+
+    table = pd.DataFrame({"run": [1, 2, 3], "a": 0.5, "b": 5.0, "y": 30.0, "status": "ok"})
+    table.to_csv(tmp_path / "t.csv", index=False)
+    spec = _spec({"y": 30.0}, tmp_path / "t.csv")
+    verdicts = pd.DataFrame(columns=["scenario", "factor", "verdict"])
+    for q2_kriging, distrusted in ((0.81, False), (-0.2, True)):
+        criticism = {"level1": {"y": {"verdict": "does_not_predict"}}}
+        mark_criticism(criticism, pd.DataFrame({"response": ["y"], "q2": [-0.4], "surrogate": [KIND],
+                                                "q2_kriging": [q2_kriging]}))
+        said = [i for i in material_advice(spec, verdicts, criticism=criticism)
+                if i.kind == "recalibrate" and "does not predict" in i.text]
+        assert bool(said) is distrusted
+        assert (unpredictive_responses(criticism) == ["y"]) is distrusted

@@ -31,7 +31,9 @@ def verdict_sentence(response: str, res: dict) -> str:
 
 def unpredictive_responses(info: dict) -> list[str]:
     """Responses whose surrogate does not predict left-out runs (verdict ``does_not_predict``)."""
-    return [r for r, res in in_order(info.get("level1") or {}) if res.get("verdict") == "does_not_predict"]
+    from ..surrogate_choice import sets_do_not_predict
+
+    return [r for r, res in in_order(info.get("level1") or {}) if sets_do_not_predict(res)]
 
 
 def unreliable_surrogate_lines(info: dict, spec) -> list[str]:
