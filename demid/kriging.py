@@ -213,13 +213,13 @@ class KrigingSurrogate:
                               float(self.nugget))
 
     # ------------------------------------------------------------------ the Surrogate interface
-    def predict(self, points, chunk: int = 8192) -> np.ndarray:
+    def predict(self, points, chunk: int = 4096) -> np.ndarray:
         u = self.unit(points)
         out = np.concatenate([self.system.mean(u[s:s + chunk]) for s in range(0, len(u), chunk)]) if len(u) else \
             np.empty(0)
         return self.offset + self.gain * (self.y_center + self.y_scale * out)
 
-    def se_mean(self, points, chunk: int = 8192) -> np.ndarray:
+    def se_mean(self, points, chunk: int = 4096) -> np.ndarray:
         """Standard error of the predicted mean (the trend's uncertainty included)."""
         u = self.unit(points)
         var = (np.concatenate([self.system.mean_variance(u[s:s + chunk]) for s in range(0, len(u), chunk)])

@@ -172,7 +172,8 @@ def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, ro
     rows = robust[robust["scenario"] == scenario]
     plausible = float(rows["robust_fraction_pct"].iloc[0]) if len(rows) else 0.0  # a share of Omega already
     observables = next(sc.observables for sc in analysed.scenarios if sc.name == scenario)
-    surrogates = {row.response: surrogate_evidence(row) for row in statistics.itertuples() if row.response in observables}
+    by_response = {row.response: row for row in statistics.itertuples()}
+    surrogates = {r: surrogate_evidence(by_response[r]) for r in observables if r in by_response}
     level2 = criticism.get("level2") or {}
     return WaveEvidence(wave=wave, max_waves=waves_max(spec), plausible_pct=plausible,
                         previous_pct=None if previous is None else previous.get("plausible_fraction_of_omega_pct"),
