@@ -253,6 +253,10 @@ def test_a_wave_analysed_with_the_choice_judges_its_sets_by_kriging_and_criticis
     assert chosen.parquet["fits"].equals(plain.parquet["fits"])
     assert chosen.json["fit_summary"] == plain.json["fit_summary"]
     assert chosen.parquet["findings"].equals(plain.parquet["findings"])
+    from demid.sampling.evaluate import EXACT_METHOD
+
+    assert set(plain.parquet["scenarios"]["method"]) == {EXACT_METHOD}  # the quadratic's set: exact
+    assert EXACT_METHOD not in set(chosen.parquet["scenarios"]["method"])  # kriging's: on the grid
     robust = as_stored(chosen.parquet["robust"])
     plain_robust = as_stored(plain.parquet["robust"])
     kriging = KrigingSurrogate.from_hyperparameters("y", ["a", "b"], table[["a", "b"]].to_numpy(),
