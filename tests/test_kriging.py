@@ -113,6 +113,19 @@ def test_the_fit_is_deterministic_and_its_stored_hyperparameters_rebuild_it():
                                                                                       rebuilt.se_mean(at))
 
 
+def test_a_log_scale_factor_is_kriged_in_log10_over_its_search_range():
+    """A factor on a log scale: the same surrogate as one on its log10 values, bounds in log10 (search units)."""
+    u, y = _tiny()
+    x = np.column_stack([u[:, 0], 10 ** (-3 + 2 * u[:, 1])])  # b from 1e-3 to 1e-1
+    logged = KrigingSurrogate("y", ["a", "b"], x, y, np.array([0.0, -3.0]), np.array([1.0, -1.0]), LENGTHS, NUGGET,
+                              log_factors=("b",))
+    at = np.array([[0.2, 0.004], [0.9, 0.05]])
+    plain = _surrogate(u, y)
+    at_unit = np.column_stack([at[:, 0], (np.log10(at[:, 1]) + 3) / 2])
+    assert logged.predict(at) == pytest.approx(plain.predict(at_unit), rel=1e-10)
+    assert logged.se_mean(at) == pytest.approx(plain.se_mean(at_unit), rel=1e-8)
+
+
 def test_rescaling_for_an_own_tolerance_moves_predictions_and_errors_like_a_polynomial():
     u, y = _tiny()
     sur = _surrogate(u, y)
