@@ -159,17 +159,17 @@ def surrogate_evidence(row) -> dict:
     return {"q2": used_q2(row), "lof_p": lof_p}
 
 
-def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, robust: pd.DataFrame,
+def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, plausible: pd.DataFrame,
                   statistics: pd.DataFrame, criticism: dict, previous: dict | None, runs: pd.DataFrame) -> WaveEvidence:
     """The :class:`WaveEvidence` of wave ``wave`` of the material ``spec`` (its full search range): from the
-    wave's box ``domain``, robust-identifiability frame, fit statistics, criticism summary and proposed
+    wave's box ``domain``, plausible-identifiability frame, fit statistics, criticism summary and proposed
     ``runs``, and the previous wave's decision (``previous``, None for wave 1)."""
     from .next_wave import refocus_scenario
     from .run_purposes import CONFIRM, DECIDE
 
     analysed = wave_spec(spec, "", domain) if domain is not None else spec
     scenario = refocus_scenario(analysed)
-    rows = robust[robust["scenario"] == scenario]
+    rows = plausible[plausible["scenario"] == scenario]
     plausible = float(rows["robust_fraction_pct"].iloc[0]) if len(rows) else 0.0  # a share of Omega already
     observables = next(sc.observables for sc in analysed.scenarios if sc.name == scenario)
     by_response = {row.response: row for row in statistics.itertuples()}
@@ -334,7 +334,7 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
     """What each wave simulated and found, and why the loop stopped, for the report's "Waves" section.
 
     ``waves``: per wave in order, ``table`` (every run simulated up to it, with ``status``), ``analysed`` (its
-    runs analysed), ``domain`` (its box, None for wave 1), ``robust`` (its robust-identifiability frame) and
+    runs analysed), ``domain`` (its box, None for wave 1), ``plausible`` (its plausible-identifiability frame) and
     ``statistics`` (its fit statistics).  ``decision``: the last wave's decision (:func:`stop_decision`), None
     for a material without waves.  Plausible shares are of Omega (every wave is analysed over Omega); intervals
     are in actual units.  Per wave ``surrogate`` says in words which surrogate judged each response's sets and
@@ -347,7 +347,7 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
     for number, wave in enumerate(waves, start=1):
         analysed = wave_spec(spec, "", wave["domain"])
         scenario = refocus_scenario(analysed)
-        robust = wave["robust"][wave["robust"]["scenario"] == scenario].set_index("factor")
+        plausible = wave["plausible"][wave["plausible"]["scenario"] == scenario].set_index("factor")
         stats = wave["statistics"]
         table = wave["table"]
         failed = int((table["status"] == "failed").sum()) if "status" in table else 0
@@ -358,7 +358,7 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
             "q2": {str(r.response): used_q2(r) for r in stats.itertuples()},
             "surrogates": {str(r.response): surrogate_record(r) for r in stats.itertuples()},
             "scenario": scenario,
-            "plausible_fraction_of_omega_pct": float(robust["robust_fraction_pct"].iloc[0]) if len(robust) else 0.0,
-            "plausible": {f: [float(robust.at[f, "robust_lower"]), float(robust.at[f, "robust_upper"])]
-                          for f in spec.factor_names if f in robust.index}})
+            "plausible_fraction_of_omega_pct": float(plausible["robust_fraction_pct"].iloc[0]) if len(plausible) else 0.0,
+            "plausible": {f: [float(plausible.at[f, "robust_lower"]), float(plausible.at[f, "robust_upper"])]
+                          for f in spec.factor_names if f in plausible.index}})
     return {"material": spec.name, "waves": rows, "decision": decision}

@@ -244,7 +244,7 @@ def test_the_choice_is_rebuilt_for_the_next_wave_and_tells_the_stop_rule_its_q2(
 
 
 def test_a_wave_analysed_with_the_choice_judges_its_sets_by_kriging_and_criticises_the_quadratic(tmp_path):
-    """The whole per-material step with ``choose_surrogate``: the statistics say kriging, the robust (plausible)
+    """The whole per-material step with ``choose_surrogate``: the statistics say kriging, the plausible (plausible)
     set is the one of the kriging surrogate, and the criticism, the canonical analysis and Table 2's columns
     are the quadratic's."""
     from demid.io import as_stored, write_full_csv
@@ -270,15 +270,15 @@ def test_a_wave_analysed_with_the_choice_judges_its_sets_by_kriging_and_criticis
 
     assert set(plain.parquet["scenarios"]["method"]) == {EXACT_METHOD}  # the quadratic's set: exact
     assert EXACT_METHOD not in set(chosen.parquet["scenarios"]["method"])  # kriging's: on the grid
-    robust = as_stored(chosen.parquet["robust"])
-    plain_robust = as_stored(plain.parquet["robust"])
+    plausible = as_stored(chosen.parquet["plausible"])
+    plain_robust = as_stored(plain.parquet["plausible"])
     kriging = KrigingSurrogate.from_hyperparameters("y", ["a", "b"], table[["a", "b"]].to_numpy(),
                                                     table["y"].to_numpy(), *spec.domain.search_bounds(),
                                                     stats["kriging_hyperparameters"].iloc[0])
     judged = JudgedScenario(spec, spec.scenarios[0], {"y": kriging}, 2.0)
     share = 100 * judged.contains(spec.domain.grid(201)).mean()
-    assert robust["robust_fraction_pct"].iloc[0] == pytest.approx(share, abs=0.3)
-    assert robust["robust_fraction_pct"].iloc[0] != pytest.approx(plain_robust["robust_fraction_pct"].iloc[0],
+    assert plausible["robust_fraction_pct"].iloc[0] == pytest.approx(share, abs=0.3)
+    assert plausible["robust_fraction_pct"].iloc[0] != pytest.approx(plain_robust["robust_fraction_pct"].iloc[0],
                                                                  abs=0.3)
 
 
@@ -288,11 +288,11 @@ def test_the_waves_summary_says_per_wave_which_surrogate_judged_each_response_an
     table = pd.DataFrame({"run": [1, 2, 3], "a": 0.5, "b": 5.0, "y": 30.0, "status": "ok"})
     table.to_csv(tmp_path / "t.csv", index=False)
     spec = _spec({"y": 30.0}, tmp_path / "t.csv")
-    robust = pd.DataFrame({"scenario": "all", "factor": ["a", "b"], "robust_fraction_pct": 1.5,
+    plausible = pd.DataFrame({"scenario": "all", "factor": ["a", "b"], "robust_fraction_pct": 1.5,
                            "robust_lower": [0.2, 2.0], "robust_upper": [0.4, 4.0]})
     first = pd.DataFrame({"response": ["y"], "q2": [0.42], "lof_p": [0.01]})
     second = first.assign(surrogate=KIND, q2_kriging=0.81, kriging_hyperparameters="{}")
-    waves = [{"table": table, "analysed": table, "domain": None, "robust": robust, "statistics": stats}
+    waves = [{"table": table, "analysed": table, "domain": None, "plausible": plausible, "statistics": stats}
              for stats in (first, second)]
     summary = wave_summary(spec, waves, None)["waves"]
     assert summary[0]["surrogate"] == "quadratic" and summary[0]["q2"] == {"y": 0.42}
