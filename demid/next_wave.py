@@ -10,7 +10,7 @@ included, ``robust_z`` standard deviations), computed once by the uncertainty st
   With an empty plausible set nothing can be refocused and the current range is kept.
 * **design runs**: a small design in that box, chosen greedily (D-optimal for the full
   quadratic, given the earlier runs that already lie in the box).  A quarter of them
-  (:data:`BOX_SHARE`) come from the box's 5-level grid {-1, -1/2, 0, 1/2, 1}^k (3 levels above
+  (:data:`demid.wave_runs.BOX_SHARE`) come from the box's 5-level grid {-1, -1/2, 0, 1/2, 1}^k (3 levels above
   three factors), so the box's own quadratic is supported at its edges and corners; the rest from
   the grid points of the *band*, the plausible set at twice ``robust_z`` (:data:`BAND_Z_FACTOR`),
   where the set's boundary is decided.  Where the band cannot determine a quadratic (a set on a
@@ -37,16 +37,17 @@ parse step can run :func:`check_next_runs`.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from itertools import product
 from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
 
 from . import run_purposes
-from .design import model_matrix, parse_term, quadratic_terms, term_name
+from .design import quadratic_terms, term_name
 from .errors import InputError
 from .spec import MaterialSpec, join_observables
+from .wave_runs import (candidate_points, deciding_reason, full_rank, aliased_findings,
+                        box_support_count, criticism_runs_in_box, d_optimal_augment, deciding_runs, design_count)
 
 if TYPE_CHECKING:
     from .sampling import Domain
@@ -59,12 +60,6 @@ PURPOSE_SUPPORT = ("design: D-optimal quadratic run over the whole refocused box
                    "so the box's fit does not extrapolate there)")
 PURPOSE_DESIGN_BOX = ("design: D-optimal quadratic run in the refocused box, off the plausible set (the plausible "
                       "points alone cannot determine the quadratic)")
-# A share of the design runs supports the whole refocused box: with every run on the band, the box's
-# fit extrapolates at its edges and corners and admits false regions there (benchmarks/next_wave.py).
-# A quarter rather than a third: where the set is small in the box, each corner run sits far from the
-# set's boundary, which decides the symmetric difference, so a third of the runs there lost to random
-# runs (benchmarks/next_wave.py, 32 seeds: wins 0.69 -> 0.73, confirmed on seeds 100-131: 0.63 -> 0.69).
-BOX_SHARE = 1 / 4
 # The band: the plausible set at BAND_Z_FACTOR x robust_z, so the band runs straddle the boundary of the
 # plausible set instead of sitting inside it (benchmarks/next_wave.py: chosen over 1 and 3).
 BAND_Z_FACTOR = 2.0
@@ -138,151 +133,15 @@ def planned_box(spec: MaterialSpec, plausible: pd.DataFrame) -> tuple[np.ndarray
 def box_points(domain: Domain, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
     """The box's grid (the one its design runs come from) in actual units: where the criticism chooses the
     runs a next wave makes, so that they lie where the wave's table keeps them."""
-    grid = _candidates(len(lo))
+    grid = candidate_points(len(lo))
     return domain.to_actual(lo + (grid + 1.0) / 2.0 * (hi - lo))
-
-
-def _candidates(k: int) -> np.ndarray:
-    levels = (-1.0, -0.5, 0.0, 0.5, 1.0) if k <= 3 else (-1.0, 0.0, 1.0)
-    return np.array(list(product(levels, repeat=k)))
-
-
-def d_optimal_augment(existing: np.ndarray, count: int, k: int, candidates: np.ndarray | None = None) -> np.ndarray:
-    """``count`` coded points from ``candidates`` (default: the box's grid), added one at a time, each
-    maximising det(X'X) of the full quadratic over existing + chosen points.  By the rank-one update
-    det(M + f f') = det(M) (1 + f' M^-1 f) that is the candidate of largest prediction variance
-    f' M^-1 f.  A candidate is used once before any repeats; ties go to the candidate farthest from
-    the points already there (then candidate order)."""
-    terms = quadratic_terms(k)
-    cands = _candidates(k) if candidates is None or not len(candidates) else np.asarray(candidates, dtype=float)
-    f = model_matrix(cands, terms)
-    current = np.asarray(existing, dtype=float).reshape(-1, k)
-    # A tiny ridge keeps M invertible while the first runs are still fewer than the coefficients.
-    info = model_matrix(current, terms).T @ model_matrix(current, terms) + 1e-9 * np.eye(len(terms))
-    dist = (np.min(np.linalg.norm(cands[:, None, :] - current[None, :, :], axis=2), axis=1)
-            if len(current) else np.full(len(cands), np.inf))
-    used = dist < 1e-9
-    chosen = []
-    for _ in range(count):
-        if used.all():
-            used[:] = False
-        variance = np.einsum("ij,ij->i", f @ np.linalg.inv(info), f)
-        key = np.where(used, -np.inf, np.round(np.log1p(np.maximum(variance, 0.0)), 9))
-        top = np.flatnonzero(key == key.max())
-        best = int(top[np.argmax(np.round(dist[top], 9))])
-        used[best] = True
-        chosen.append(cands[best])
-        info += np.outer(f[best], f[best])
-        dist = np.minimum(dist, np.linalg.norm(cands - cands[best], axis=1))
-    return np.array(chosen).reshape(-1, k)
-
-
-def aliased_findings(findings: pd.DataFrame | None, factors: list[str]) -> list[tuple[tuple, list[str]]]:
-    """Alias sets (as term tuples) named by missing-term findings, with the responses naming them."""
-    if findings is None or not len(findings) or "cause" not in findings:
-        return []
-    out: dict[tuple, list[str]] = {}
-    for _, row in findings[findings["cause"] == "missing_term"].iterrows():
-        names = [n for n in str(row["aliases"]).split(";") if n]
-        if len(names) < 2:
-            continue
-        members = tuple(parse_term(n, factors) for n in names)
-        out.setdefault(members, []).append(str(row["response"]))
-    return list(out.items())
-
-
-def deciding_runs(findings: pd.DataFrame | None, factors: list[str]) -> list[dict]:
-    """The runs the criticism proposes for the next wave (a row's ``discriminating_runs``): those that decide
-    between causes it cannot tell apart first, then those that would confirm or correct a named cause; in the
-    order proposed, each with its ``purpose``.  A replicate is kept (replicates are what tell a wild run from
-    unequal scatter); a point that several responses propose is made as often as the one that proposes it
-    most often, not once for each."""
-    import json
-
-    if findings is None or not len(findings) or "discriminating_runs" not in findings:
-        return []
-    proposed = []
-    for _, row in findings.iterrows():
-        text = row["discriminating_runs"]
-        if isinstance(text, str) and text:
-            proposed += [(run, str(row["response"])) for run in json.loads(text)]
-    # decide first: until then no cause can be trusted (sorted is stable: the proposed order within each)
-    proposed.sort(key=lambda item: item[0].get("purpose", PURPOSE_DECIDE) != PURPOSE_DECIDE)
-    out, made, asked = [], {}, {}
-    for run, response in proposed:
-        key = tuple(float(run[f]) for f in factors)
-        asked[key, response] = asked.get((key, response), 0) + 1
-        if asked[key, response] > made.get(key, 0):
-            made[key] = made.get(key, 0) + 1
-            out.append({**{f: float(run[f]) for f in factors}, "response": response,
-                        "purpose": run.get("purpose", PURPOSE_DECIDE)})
-    return out
-
-
-#: A criticism run this far (a share of the search range) outside the next box is taken as meant on its bound: the
-#: criticism writes its points rounded (criticism.models._Data.point_dict: on the box's grid to 6 significant
-#: digits, as this module writes its own runs; on the design's levels to 4 digits of the design's range).
-CRITICISM_ROUNDING = 1e-3
-
-
-def criticism_runs_in_box(runs: list[dict], factors: list[str], domain: Domain, lo: np.ndarray,
-                          hi: np.ndarray) -> tuple[list[dict], int]:
-    """The criticism's runs that the next wave can use, and how many it cannot: its table keeps only runs inside
-    the next box [lo, hi] (search units), so a run outside would be simulated for nothing.  A run outside by
-    no more than the criticism's rounding is put on the bound."""
-    if not runs:
-        return [], 0
-    u = domain.to_search(np.array([[r[f] for f in factors] for r in runs], dtype=float))
-    cur_lo, cur_hi = domain.search_bounds()
-    slack = CRITICISM_ROUNDING * (cur_hi - cur_lo)
-    usable = np.all((u >= lo - slack) & (u <= hi + slack), axis=1)
-    box = domain.to_actual(np.array([lo, hi]))
-    out = []
-    for run, ok, point in zip(runs, usable, u):
-        if ok:
-            out.append({**run, **{f: float(box[0, i] if point[i] < lo[i] else box[1, i] if point[i] > hi[i]
-                                         else run[f]) for i, f in enumerate(factors)}})
-    return out, int(np.sum(~usable))
-
-
-def _deciding_reason(deciding: list[dict]) -> str:
-    """The reason's clause for the criticism's runs: how many, what for, for which responses."""
-    parts = []
-    for purpose, what in ((PURPOSE_DECIDE, "to decide between causes the criticism cannot tell apart"),
-                          (PURPOSE_CONFIRM, "to confirm or correct a cause the criticism named")):
-        runs = [d for d in deciding if d["purpose"] == purpose]
-        if runs:
-            parts.append(f"{len(runs)} run(s) {what} ({', '.join(dict.fromkeys(d['response'] for d in runs))})")
-    return "; first " + ", then ".join(parts) if parts else ""
-
-
-def _full_rank(points: np.ndarray, k: int) -> int:
-    """How many quadratic coefficients short of full rank the points are (0: estimable)."""
-    m = model_matrix(points, quadratic_terms(k))
-    return m.shape[1] - int(np.linalg.matrix_rank(m, tol=1e-8 * max(np.abs(m).max(), 1.0) * len(m)))
-
-
-def design_count(count: int, n_deciding: int, earlier: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> int:
-    """How many of a wave's ``count`` runs are design runs, the criticism's ``n_deciding`` runs taking the others:
-    ``count`` is the wave's whole budget.  The design keeps at least the runs the box's quadratic is short of
-    given the ``earlier`` runs inside the box (search units), so that the next wave's fit is determined whatever
-    the criticism's runs are (they may all be replicates of one point)."""
-    k = len(lo)
-    coded = (np.asarray(earlier, dtype=float).reshape(-1, k) - (lo + hi) / 2) / ((hi - lo) / 2)
-    short = _full_rank(coded, k) if len(coded) else len(quadratic_terms(k))
-    return max(count - n_deciding, min(short, count))
-
-
-def box_support_count(count: int, share: float | None = None) -> int:
-    """How many of ``count`` design runs support the whole refocused box (the rest go on the band)."""
-    return int(round((BOX_SHARE if share is None else share) * count))
 
 
 def _design(existing: np.ndarray, count: int, k: int, plausible: np.ndarray,
             share: float | None = None) -> tuple[np.ndarray, list[str]]:
     """Design points and their kinds (``support``, ``band``, ``box``).
 
-    Support runs first (a share :data:`BOX_SHARE` of the runs): D-optimal over the box's 5-level grid
+    Support runs first (a share :data:`~demid.wave_runs.BOX_SHARE` of the runs): D-optimal over the box's 5-level grid
     given the earlier runs, so the box's quadratic is not extrapolated at the box's edges and corners.
     Then D-optimal points on the band (the plausible part of the box) given earlier + support runs.
     Where those cannot determine the box's quadratic (a band thin enough to lie on a conic), the missing
@@ -293,7 +152,7 @@ def _design(existing: np.ndarray, count: int, k: int, plausible: np.ndarray,
     base = np.vstack([existing, support])
     n_band = count - len(support)
     band = d_optimal_augment(base, n_band, k, plausible)
-    short = min(_full_rank(np.vstack([base, band]), k), n_band)
+    short = min(full_rank(np.vstack([base, band]), k), n_band)
     if short:
         band = d_optimal_augment(base, n_band - short, k, plausible)
         band = np.vstack([band, d_optimal_augment(np.vstack([base, band]), short, k)])
@@ -435,7 +294,7 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     n_sep = sum(not isinstance(lab, str) for lab in labels)
     n_box = labels.count("box")
     n_support = labels.count("support")
-    reason += _deciding_reason(deciding)
+    reason += deciding_reason(deciding)
     if left_out:
         reason += (f"; {left_out} run(s) the criticism proposed lie outside the refocused box and are left out (the "
                    f"next wave's table keeps only runs inside it)")
@@ -526,7 +385,7 @@ def plan_omega_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: 
     design_x = domain.to_actual(design_u[:n_boundary].reshape(-1, len(factors)))
     error = float(classification_error(judged, design_x).max()) if n_boundary else 0.0
     reason = (f"Runs placed over the whole search range for scenario '{refocus.name}' "
-              f"({join_observables(refocus.observables)})" + _deciding_reason(deciding))
+              f"({join_observables(refocus.observables)})" + deciding_reason(deciding))
     if len(proposed) > len(deciding):
         reason += (f"; {len(proposed) - len(deciding)} more run(s) the criticism proposed do not fit in the wave's "
                    f"{count} runs and are left out")
@@ -546,16 +405,19 @@ def plan_waves(specs: dict, frames: dict, *, z: float, analysed_over_omega: bool
 
     ``specs``: material -> :class:`~demid.spec.MaterialSpec`.
     ``frames``: ``tables``, ``fits``, ``plausible``, ``findings`` -> material -> frame (the pipeline's
-    validated table, fits, plausible-identifiability and criticism-findings intermediates).
+    validated table, fits, plausible-identifiability and criticism-findings intermediates), and optionally
+    ``statistics`` (the fit statistics: where a wave's sets used kriging, the runs are placed by it too).
     """
     from .surrogate import surrogates_from_frame
+    from .surrogate_choice import chosen_surrogates
 
     waves = {}
     for m, spec in specs.items():
         table = frames["tables"][m]
         if "status" in table:
             table = table[table["status"] != "failed"]
-        surrogates = surrogates_from_frame(frames["fits"][m], spec.factor_names)
+        surrogates = chosen_surrogates(table, spec, surrogates_from_frame(frames["fits"][m], spec.factor_names),
+                                       frames.get("statistics", {}).get(m))
         waves[m] = plan_next_wave(m, table, surrogates, spec, frames["plausible"][m], frames["findings"][m], z=z,
                                   analysed_over_omega=analysed_over_omega)
     return waves

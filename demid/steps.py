@@ -256,9 +256,14 @@ def _next_box_points(spec: MaterialSpec, plausible: pd.DataFrame) -> np.ndarray 
 
 
 def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
-                  typo_stop: bool = True) -> MaterialAnalysis:
+                  typo_stop: bool = True, choose_surrogate: bool = False) -> MaterialAnalysis:
     """One material from its transcribed table to every per-material output: validation and the
-    transcription check, the fit, the scenario sets (and Pareto front), uncertainty and criticism."""
+    transcription check, the fit, the scenario sets (and Pareto front), uncertainty and criticism.
+
+    ``choose_surrogate`` (a simulated study's waves after the first): per response the quadratic or kriging,
+    whichever predicts left-out runs better (:func:`demid.surrogate_choice.choose_surrogates`), judges the sets,
+    the uncertainty and the combinations; the criticism and the canonical analysis stay on the quadratic (they
+    need its coefficients), with the quadratic's own sets."""
     from .criticism import criticize_material
     from .io import as_stored
     from .sampling.stored import stored_strict_sets
@@ -270,17 +275,28 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
     table = as_stored(validated.table)
     fitted = fit_material(table, spec, coding=validated.coding)
     fits = fit_frames(fitted)
-    surrogates = surrogates_from_frame(as_stored(fits["fits"]), spec.factor_names)
+    quadratic = surrogates_from_frame(as_stored(fits["fits"]), spec.factor_names)
+    surrogates = quadratic
+    if choose_surrogate:
+        from .surrogate_choice import choose_surrogates
+
+        choice = choose_surrogates(table, spec, quadratic, fits["statistics"])
+        surrogates, fits["statistics"] = choice.surrogates, choice.statistics
     judged = judged_scenarios(spec, surrogates, z)  # each scenario judged once, asked by every step below
     sets = admissibility_step(surrogates, spec, table, judged)
     scenarios = as_stored(sets.scenarios)
     uncertainty = analyse_material(surrogates, spec, z=z, tolerances=tolerances, judged=judged,
                                    strict_sets=stored_strict_sets(scenarios, judged))
-    criticism = criticize_material(table, surrogates, spec, coding=validated.coding,
+    same = surrogates is quadratic  # else the criticism evaluates the quadratic's own sets
+    criticism = criticize_material(table, quadratic, spec, coding=validated.coding,
                                    fits={fit.response: fit for fit in fitted},
-                                   strict_sets=stored_strict_sets(scenarios, judged, reference=True),
+                                   strict_sets=stored_strict_sets(scenarios, judged, reference=True) if same else None,
                                    run_candidates=_next_box_points(spec, uncertainty.plausible),
                                    simulated=not typo_stop)  # a simulated wave: demid made every run itself
+    if not same:
+        from .surrogate_choice import mark_criticism
+
+        mark_criticism(criticism.summary, fits["statistics"])
     combos = combinations_step(surrogates, spec, validated.coding, fitted, sets.sets or {}, z=z,
                                ranking=uncertainty.ranking, judged=judged)
     figures = {"sets_figure": sets.figure, "surface_figure": sets.surface,

@@ -39,6 +39,8 @@ def rescaled_surrogate(surrogate, target: float, scale: float):
     """The polynomial ``y* + scale (ŷ - y*)`` with standard errors times ``scale``."""
     if scale == 1.0:
         return surrogate
+    if hasattr(surrogate, "rescaled"):  # not a polynomial (demid.kriging): it rescales its own output
+        return surrogate.rescaled(target, scale)
     coefficients = scale * np.asarray(surrogate.coefficients, dtype=float)
     intercept = [i for i, t in enumerate(surrogate.terms) if not any(t)]
     coefficients[intercept[0]] += (1.0 - scale) * float(target)

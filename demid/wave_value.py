@@ -27,6 +27,8 @@ STOP_CONTRACTION = 0.10
 
 def _updated_se(surrogate, points: np.ndarray, new_runs: np.ndarray) -> np.ndarray:
     """se of the fitted mean at ``points`` once ``new_runs`` (actual units) are added to the fit."""
+    if hasattr(surrogate, "se_mean_after"):  # not a polynomial (demid.kriging): its own update
+        return surrogate.se_mean_after(points, new_runs)
     f_new = model_matrix(surrogate.model_units(new_runs), surrogate.terms)
     scale = float(surrogate.resid_var)
     cov = np.asarray(surrogate.covariance, dtype=float)

@@ -150,6 +150,16 @@ def _change_text(evidence: WaveEvidence, change: float) -> str:
             f"({100 * change:+.1f} %)")
 
 
+def surrogate_evidence(row) -> dict:
+    """One response's Q² and lack-of-fit p-value for the stop rule, of the surrogate its sets use (a fit
+    statistics row): kriging has no lack-of-fit test (its nugget is the scatter it fits), so only its Q²."""
+    from .kriging import KIND
+    from .surrogate_choice import used_q2
+
+    lof_p = float("nan") if getattr(row, "surrogate", None) == KIND else float(row.lof_p)
+    return {"q2": used_q2(row), "lof_p": lof_p}
+
+
 def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, plausible: pd.DataFrame,
                   statistics: pd.DataFrame, criticism: dict, previous: dict | None, runs: pd.DataFrame) -> WaveEvidence:
     """The :class:`WaveEvidence` of wave ``wave`` of the material ``spec`` (its full search range): from the
@@ -163,9 +173,8 @@ def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, pl
     rows = plausible[plausible["scenario"] == scenario]
     plausible = float(rows["robust_fraction_pct"].iloc[0]) if len(rows) else 0.0  # a share of Omega already
     observables = next(sc.observables for sc in analysed.scenarios if sc.name == scenario)
-    stats = statistics.set_index("response")
-    surrogates = {r: {"q2": float(stats.at[r, "q2"]), "lof_p": float(stats.at[r, "lof_p"])}
-                  for r in observables if r in stats.index}
+    by_response = {row.response: row for row in statistics.itertuples()}
+    surrogates = {r: surrogate_evidence(by_response[r]) for r in observables if r in by_response}
     level2 = criticism.get("level2") or {}
     return WaveEvidence(wave=wave, max_waves=waves_max(spec), plausible_pct=plausible,
                         previous_pct=None if previous is None else previous.get("plausible_fraction_of_omega_pct"),
@@ -329,8 +338,11 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
     runs analysed), ``domain`` (its box, None for wave 1), ``plausible`` (its plausible-identifiability frame) and
     ``statistics`` (its fit statistics).  ``decision``: the last wave's decision (:func:`stop_decision`), None
     for a material without waves.  Plausible shares are of Omega (every wave is analysed over Omega); intervals
-    are in actual units."""
+    are in actual units.  Per wave ``surrogate`` says in words which surrogate judged each response's sets and
+    why, ``q2`` is that surrogate's Q² per response, and ``surrogates`` per response the one used with both Q²
+    (:mod:`demid.surrogate_choice`; wave 1: the quadratic)."""
     from .next_wave import refocus_scenario
+    from .surrogate_choice import choice_text, surrogate_record, used_q2
 
     rows = []
     for number, wave in enumerate(waves, start=1):
@@ -342,8 +354,10 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
         failed = int((table["status"] == "failed").sum()) if "status" in table else 0
         rows.append({
             "wave": number, "simulated": len(table), "failed": failed, "analysed": len(wave["analysed"]),
-            "surrogate": str(stats["surrogate"].iloc[0]) if "surrogate" in stats and len(stats) else "quadratic",
-            "q2": {str(r): float(q) for r, q in zip(stats["response"], stats["q2"])},
+            "surrogate": ("; ".join(choice_text(spec.response_labels.get(r.response, r.response), r)
+                                    for r in stats.itertuples()) if "surrogate" in stats else "quadratic"),
+            "q2": {str(r.response): used_q2(r) for r in stats.itertuples()},
+            "surrogates": {str(r.response): surrogate_record(r) for r in stats.itertuples()},
             "scenario": scenario,
             "plausible_fraction_of_omega_pct": float(plausible["robust_fraction_pct"].iloc[0]) if len(plausible) else 0.0,
             "plausible": {f: [float(plausible.at[f, "robust_lower"]), float(plausible.at[f, "robust_upper"])]

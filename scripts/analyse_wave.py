@@ -1,5 +1,6 @@
 """Snakemake script: one wave of a simulated material, analysed like a finished table (every run so far,
-over the declared search range Omega; after wave 1 as a custom design)."""
+over the declared search range Omega; after wave 1 as a custom design, each response's sets judged by the
+quadratic or kriging, whichever predicts left-out runs better)."""
 
 import sys
 
@@ -15,7 +16,8 @@ inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: 
 domain = pd.read_csv(inp.domain) if "domain" in inp.keys() else None
 spec = wave_spec(params.spec, inp.data, domain)
 try:  # e.g. too many failed runs for the quadratic: one line naming the wave's table, not a traceback
-    result = material_step(spec, inp.data, z=params.z, tolerances=params.tolerances, typo_stop=False)
+    result = material_step(spec, inp.data, z=params.z, tolerances=params.tolerances, typo_stop=False,
+                           choose_surrogate=domain is not None)  # after wave 1: quadratic or kriging, measured
 except InputError as err:
     stop_job(err)
 for warning in result.warnings:

@@ -12,8 +12,8 @@ from demid.admissibility import Domain
 from demid.config import validate_schema
 from demid.design import model_matrix, quadratic_terms
 from demid.errors import InputError
-from demid.next_wave import (DOMAIN_COLUMNS, PURPOSE_DESIGN, PURPOSE_SUPPORT, aliased_findings, check_next_runs, d_optimal_augment,
-                             next_box, plan_materials, plan_next_wave, propose_runs)
+from demid.next_wave import DOMAIN_COLUMNS, PURPOSE_DESIGN, PURPOSE_SUPPORT, check_next_runs, next_box, plan_materials, plan_next_wave, propose_runs
+from demid.wave_runs import aliased_findings, d_optimal_augment
 from demid.spec import MaterialSpec
 from demid.surrogate import fit_material
 from demid.uncertainty import plausible_identifiability_frame
@@ -106,13 +106,13 @@ def test_the_proposals_support_the_whole_refocused_box(monkeypatch):
     (a quarter of the runs) sit on distinct corners of the box, the nearest run to the worst-served
     corner is closer than with every run on the band (whose ring leaves the corners empty), and the
     D-criterion of the box's quadratic is far better than that choice's."""
-    import demid.next_wave as nw
+    import demid.wave_runs as wr
 
     table, surrogates, spec, plausible = _annulus_material(count=9)
     wave = plan_next_wave("m", table, surrogates, spec, plausible, z=2.0)
     coded = _box_runs(wave, table)
     support = coded[len(coded) - len(wave.runs):][(wave.runs["purpose"] == PURPOSE_SUPPORT).to_numpy()]
-    monkeypatch.setattr(nw, "BOX_SHARE", 0.0)
+    monkeypatch.setattr(wr, "BOX_SHARE", 0.0)
     band_only = _box_runs(plan_next_wave("m", table, surrogates, spec, plausible, z=2.0), table)
     corners = np.array(list(product((-1.0, 1.0), repeat=2)))
 
@@ -134,7 +134,7 @@ def test_the_proposals_support_the_whole_refocused_box(monkeypatch):
 def test_a_quarter_of_the_design_runs_support_the_box():
     """The support share (benchmarks/next_wave.py: a third of the runs on the box's corners lost to
     random runs where the set is small in the box; a quarter won on seeds the choice was not made on)."""
-    from demid.next_wave import box_support_count
+    from demid.wave_runs import box_support_count
 
     assert [box_support_count(n) for n in (0, 3, 4, 8, 9, 12, 20)] == [0, 1, 1, 2, 2, 3, 5]
     assert box_support_count(9, share=1 / 3) == 3
@@ -271,10 +271,10 @@ def test_runs_off_a_thin_plausible_set_are_labelled_so(monkeypatch):
     """A tolerance of 0.2 % leaves a ring too thin for the 41 x 41 grid of the box to hold more than a few
     points: the design takes the rest from the whole box, and those runs are not said to be on the band.
     (With the support runs the ring's points already complete the quadratic, so they are switched off.)"""
-    import demid.next_wave as nw
+    import demid.wave_runs as wr
     from demid.next_wave import PURPOSE_DESIGN_BOX
 
-    monkeypatch.setattr(nw, "BOX_SHARE", 0.0)
+    monkeypatch.setattr(wr, "BOX_SHARE", 0.0)
 
     table, surrogates, spec, plausible = _annulus_material(count=9, tolerance=0.002)
     wave = plan_next_wave("m", table, surrogates, spec, plausible, z=0.0)
@@ -355,7 +355,7 @@ def test_the_count_is_the_whole_wave_the_criticism_runs_included():
     assert PURPOSE_DECIDE not in four.runs["purpose"].tolist()[4:]
     assert "left out" not in four.reason
 
-    from demid.next_wave import design_count
+    from demid.wave_runs import design_count
 
     lo, hi = (box[["lower", "upper"]].to_numpy().T)
     earlier = table[["a", "b"]].to_numpy(dtype=float)

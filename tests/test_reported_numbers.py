@@ -370,7 +370,7 @@ def test_next_wave_runs_each_maximise_the_determinant(k, existing, count):
     from itertools import product
 
     from demid.design import model_matrix, quadratic_terms
-    from demid.next_wave import d_optimal_augment
+    from demid.wave_runs import d_optimal_augment
 
     terms = quadratic_terms(k)
     grid = np.array(list(product((-1.0, -0.5, 0.0, 0.5, 1.0), repeat=k)))

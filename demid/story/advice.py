@@ -23,6 +23,7 @@ import pandas as pd
 
 from ..criticism.reach import Reach, saturation_advice
 from ..precision import rough_text
+from ..surrogate_choice import sets_do_not_predict
 from .measurements import measurement_order
 from .verdicts import unpredictive_responses
 from .words import level2_within, unit_text
@@ -127,7 +128,7 @@ def _check_targets(spec, implausible: dict, ranking) -> list[AdviceItem]:
 def _recalibrate(spec, level1: dict, level2: dict, checked: set) -> list[AdviceItem]:
     items = []
     for r, res in (level1 or {}).items():
-        if res.get("verdict") == "does_not_predict":
+        if sets_do_not_predict(res):
             in_sets = any(r in sc.observables for sc in spec.scenarios)
             pareto = spec.pareto is not None and r in (spec.pareto.error_of, spec.pareto.minimise)
             uses = ("the sets that use it are not to be trusted" if in_sets else

@@ -233,9 +233,12 @@ def material_answer(verdicts: pd.DataFrame, spec) -> MaterialAnswer | None:
 
 
 def unpredictive_responses(level1: dict) -> list[str]:
-    """The responses whose surrogate does not predict left-out runs (level 1's verdict ``does_not_predict``,
-    Q² < 0), in the order level 1 lists them: what is read off them is indicative only."""
-    return [r for r, res in (level1 or {}).items() if res.get("verdict") == "does_not_predict"]
+    """The responses whose sets rest on a surrogate that does not predict left-out runs (level 1's verdict
+    ``does_not_predict``, Q² < 0, unless a kriging surrogate that predicts judged a simulated wave's sets), in
+    the order level 1 lists them: what is read off them is indicative only."""
+    from ..surrogate_choice import sets_do_not_predict  # kriging that predicts, where it judged the sets
+
+    return [r for r, res in (level1 or {}).items() if sets_do_not_predict(res)]
 
 
 def verdict_display(verdicts: pd.DataFrame, spec) -> pd.DataFrame:

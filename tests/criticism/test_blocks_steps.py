@@ -183,7 +183,8 @@ def test_fit_command_reports_block_effects_and_a_blocks_row(tmp_path):
 
 
 def test_ambiguous_runs_reach_the_next_wave_first():
-    from demid.next_wave import PURPOSE_DECIDE, deciding_runs
+    from demid.next_wave import PURPOSE_DECIDE
+    from demid.wave_runs import deciding_runs
 
     for seed in range(12):
         table, _ = off_catalogue_table(seed, 2, "batch", 6.0)

@@ -132,7 +132,8 @@ def test_a_next_wave_makes_the_runs_the_criticism_proposes_and_no_others():
     """Planted defects (2 factors, seeds 0-7): a named cause's confirming runs (replicates included) reach the
     criticism frame's finding row and from there the next wave with purpose 'confirm the named cause', as the
     message says; an ambiguous verdict's deciding runs reach its row; a verdict without runs puts none there."""
-    from demid.next_wave import PURPOSE_CONFIRM, PURPOSE_DECIDE, deciding_runs
+    from demid.next_wave import PURPOSE_CONFIRM, PURPOSE_DECIDE
+    from demid.wave_runs import deciding_runs
 
     seen = set()
     for kind, size in (("term", 6.0), ("drift", 8.0), ("outlier", 10.0), ("clean", 0.0)):
@@ -165,7 +166,8 @@ def test_a_cause_named_when_the_quadratic_does_not_predict_is_offered_its_confir
     """Large planted outliers (2 factors, seeds 0-15): where the quadratic predicts worse than the mean
     (does_not_predict) and the criticism names a cause, the verdict offers the runs that would confirm it, as a
     defect's does, and they reach the next wave; the case occurs."""
-    from demid.next_wave import PURPOSE_CONFIRM, deciding_runs
+    from demid.next_wave import PURPOSE_CONFIRM
+    from demid.wave_runs import deciding_runs
 
     seen = 0
     for seed in range(16):
@@ -191,7 +193,8 @@ def test_the_next_wave_makes_the_deciding_runs_before_the_confirming_ones():
     serves both; the reason counts both."""
     import json
 
-    from demid.next_wave import PURPOSE_CONFIRM, PURPOSE_DECIDE, deciding_runs, plan_next_wave
+    from demid.next_wave import PURPOSE_CONFIRM, PURPOSE_DECIDE, plan_next_wave
+    from demid.wave_runs import deciding_runs
     from tests.test_next_wave import _annulus_material
 
     confirm = [{"a": 0.3, "b": 0.7, "purpose": PURPOSE_CONFIRM}, {"a": 0.5, "b": 0.5, "purpose": PURPOSE_CONFIRM},
@@ -221,7 +224,8 @@ def test_criticism_runs_outside_the_next_box_are_left_out_and_the_reason_says_so
     kept as it is."""
     import json
 
-    from demid.next_wave import CRITICISM_ROUNDING, PURPOSE_DECIDE, plan_next_wave
+    from demid.next_wave import PURPOSE_DECIDE, plan_next_wave
+    from demid.wave_runs import CRITICISM_ROUNDING
     from tests.test_next_wave import _annulus_material
 
     table, surrogates, cfg, plausible = _annulus_material(count=9)
@@ -249,7 +253,8 @@ def test_with_a_next_box_the_criticism_chooses_its_runs_inside_it():
     the next wave leaves none out, and each is a point of that grid written as the next wave writes its own; without
     it (the design's levels) some proposed runs lie outside the same box.  Planted drifts and outliers, 2 factors,
     seeds 0-5; a box over the upper half of each factor's range."""
-    from demid.next_wave import box_points, criticism_runs_in_box
+    from demid.next_wave import box_points
+    from demid.wave_runs import criticism_runs_in_box
     from demid.sampling import Domain
     from tests.generators import RANGES
 

@@ -14,7 +14,7 @@ from demid import run_purposes
 from demid.criticism import criticize
 from demid.criticism.verdict import OUTLIER_REPLICATES, UNEXPLAINED_REPLICATED_RUNS
 from demid.design import Coding, ccd_points, rotatable_alpha
-from demid.next_wave import deciding_runs
+from demid.wave_runs import deciding_runs
 from demid.surrogate import fit_response
 
 from ..generators import FACTORS, ccd_table
