@@ -336,7 +336,11 @@ TABLE: dict[str, dict] = {
     },
     "demid/waves.py": {
         "functions": None,
-        "tests": ["tests/test_waves.py", "tests/report/test_report_reads.py", _NOT_WORKFLOW],
+        "tests": ["tests/test_waves.py", "tests/report/test_report_reads.py", _NOT_WORKFLOW, *[
+            f"tests/workflow/test_simulation.py::{name}" for name in (
+                "test_first_wave_is_the_design_generator_sheet", "test_simulation_config_errors_name_the_key",
+                "test_wave_history_gives_each_wave_fraction_of_omega_and_the_box_its_runs_were_placed_in",
+                "test_waves_stop_on_the_measured_change_the_budget_or_the_model_never_on_a_misfitting_surrogate")]],
     },
     "demid/admissibility.py": {
         "functions": None,
