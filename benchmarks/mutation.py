@@ -286,8 +286,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/uncertainty/recommended.py": {
         "functions": None,
-        "tests": ["tests/uncertainty/test_uncertainty.py", "tests/story/test_story.py", "tests/story/test_advice_wording.py",
-                  _NOT_WORKFLOW],
+        "tests": ["tests/uncertainty/test_recommended.py", "tests/uncertainty/test_uncertainty.py", "tests/story/test_story.py",
+                  "tests/story/test_advice_wording.py", _NOT_WORKFLOW],
     },
     "demid/uncertainty/material.py": {
         "functions": None,
@@ -380,12 +380,12 @@ TABLE: dict[str, dict] = {
     "demid/combinations/axes.py": {
         "functions": None,
         "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py",
-                  "tests/story/test_verdicts.py"],
+                  "tests/combinations/test_combination_outputs.py", "tests/story/test_verdicts.py"],
     },
     "demid/combinations/material.py": {
         "functions": None,
         "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py",
-                  "tests/report/test_advice_source.py"],
+                  "tests/combinations/test_combination_outputs.py", "tests/report/test_advice_source.py"],
     },
     "demid/story/advice.py": {
         "functions": None,
@@ -526,6 +526,7 @@ EQUIVALENT: dict[str, str] = {
         "reshape(-2, k): numpy takes any negative size as the one unknown dimension, so the shape is the same "
         "(checked with numpy 2.4.6)",
     # --- combinations
+    "demid/combinations/axes.py::principal_axes::int(len(points)) => len(points)#0": "len() returns an int already",
     "demid/combinations/axes.py::linear_statement::float(a[np.argmax(np.abs(normal))]) => "
     "a[np.argmax(np.abs(normal))]#0": _NUMPY_FLOAT + " (lead only divides and is formatted)",
     "demid/combinations/material.py::_cut_side::proj.min() <= box_min + tol => proj.min() < box_min + tol#0":
@@ -604,6 +605,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/transcription/engine.py::_statistics::n = np.broadcast_to(n, sse.shape) => pass#0":
         "numpy broadcasts the scalar n in every later expression: the same arrays result",
     # --- uncertainty
+    "demid/uncertainty/recommended.py::recommended_point::0 => -1#0":
+        "contains() of the one point points[best:best + 1] returns one value: its first and last are the same",
     "demid/sampling/polish.py::_polish::0 => -1#6": "sign is +1.0 or -1.0: 'sign > 0' and 'sign > -1' agree",
     # --- data
     "demid/data.py::read_table::float(run_val) => run_val#0": "parse_number returns a float already",

@@ -151,3 +151,24 @@ def test_the_ranking_in_words_on_a_surrogate_that_does_not_predict_says_so_to_on
     # 1.2222 -> 1, 2.0123 -> 2, 3.2345 -> 3, 100 (1 - 3.456 / 20) = 82.72 -> 80, 3.456 -> 3
     assert rough[2] == ("From D, adding S gains 1 bits (2 -> 3) and shrinks the admissible fraction by 80 % "
                         "(20 % -> 3 %).")
+
+
+def test_advice_read_back_from_its_table_keeps_each_item_and_its_next_step():
+    """tables/advice.csv read back (every cell a string, an empty one NaN) gives the same items; no table, or an
+    empty one, gives no advice; the next step is the first decision among the kinds the summary gives, the
+    others of those kinds follow in their order."""
+    from demid.story import AdviceItem, StudyAdvice
+
+    items = [AdviceItem("m", "add_observable", "", "", "S", "Measure S.", False),
+             AdviceItem("m", "widen", "a", "upper", "", "Widen a.", True),
+             AdviceItem("n", "stop", "", "", "", "Stop.", True),
+             AdviceItem("m", "measurement_order", "", "", "", "The order.", False),
+             AdviceItem("m", "next_runs", "", "", "", "Run nine more.", False)]
+    table = StudyAdvice(items).to_frame()
+    read = StudyAdvice.from_frame(table.astype(str).replace({"": float("nan")}))
+    assert read.items == items
+    assert StudyAdvice.from_frame(None).items == [] and StudyAdvice.from_frame(table.iloc[0:0]).items == []
+    assert read.next_step("m") == ("Widen a.", ["Measure S.", "Run nine more."])
+    assert read.next_step("n") == ("Stop.", [])
+    assert read.texts("m", kinds=("measurement_order", "widen")) == ["Widen a.", "The order."]
+    assert read.texts("n") == ["Stop."]

@@ -1,0 +1,174 @@
+"""The numbers tables/combinations.csv and the combination sentences are made of, each against an independent
+computation over generated sets (2-4 factors, weighted and unweighted points, boxes of unequal extents): the
+principal axes from numpy's weighted covariance, the band's centre line from a plain loop over bins, the
+cut side from the points' projections, the table's columns, and the direction text parsed back."""
+
+from __future__ import annotations
+
+import itertools
+import re
+
+import numpy as np
+import pandas as pd
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from demid.combinations.axes import UNIFORM_WIDTH_PER_SD, band_curve, principal_axes
+from demid.combinations.material import MaterialCombinations, _cut_side, _direction_text, set_combinations
+from demid.sampling.domain import BOUND_TOUCH
+from demid.spec import MaterialSpec
+
+
+def _cloud(seed: int, d: int, m: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """m points of an elongated, tilted Gaussian cloud in d factors, volume weights and an unequal coded box."""
+    rng = np.random.default_rng(seed)
+    scales = np.sort(rng.uniform(0.02, 0.6, d))
+    rotation, _ = np.linalg.qr(rng.normal(size=(d, d)))
+    points = (rng.normal(size=(m, d)) * scales) @ rotation.T + rng.uniform(-0.3, 0.3, d)
+    return points, rng.uniform(0.1, 2.0, m), rng.uniform(0.5, 3.0, d)
+
+
+@given(seed=st.integers(0, 10_000), d=st.integers(2, 4), m=st.integers(12, 300), weighted=st.booleans())
+@settings(max_examples=30, deadline=None, derandomize=True)
+def test_principal_axes_are_the_weighted_covariances_eigenvectors_narrowest_first(seed, d, m, weighted):
+    points, weights, half = _cloud(seed, d, m)
+    lower, upper = -half, 1.5 * half
+    axes = principal_axes(points, lower, upper, weights=weights if weighted else None)
+    w = weights if weighted else np.ones(m)
+    centre = np.average(points, axis=0, weights=w)
+    cov = np.cov(points.T, aweights=w, bias=True)
+    values, vectors = np.linalg.eigh(cov)
+    assert axes.n_points == m and axes.factors == tuple(f"x{i + 1}" for i in range(d))
+    assert np.allclose(axes.centre, centre, atol=1e-12)
+    assert np.allclose(axes.widths, np.sqrt(12.0 * np.clip(values, 0, None)), rtol=1e-9, atol=1e-12)
+    assert UNIFORM_WIDTH_PER_SD == pytest.approx(np.sqrt(12.0))
+    for j in range(d):
+        v = axes.directions[:, j]
+        assert abs(abs(v @ vectors[:, j]) - 1.0) < 1e-8  # the same axis, up to its sign
+        assert v[np.argmax(np.abs(v))] > 0  # sign fixed: the largest loading is positive
+        assert axes.box_extent[j] == pytest.approx(np.abs(v) @ (upper - lower), rel=1e-12)
+    assert np.allclose(axes.width_fraction, axes.widths / axes.box_extent)
+
+
+def test_a_set_without_points_or_without_volume_has_no_axes():
+    points = np.array([[0.1, 0.2], [0.3, -0.1], [0.0, 0.5]])
+    assert principal_axes(np.zeros((0, 2)), -np.ones(2), np.ones(2)) is None
+    assert principal_axes(points, -np.ones(2), np.ones(2), weights=np.zeros(3)) is None
+    assert principal_axes(points, -np.ones(2), np.ones(2), weights=[0.0, 0.0, 1.0]) is not None
+
+
+@given(seed=st.integers(0, 10_000), per_bin=st.integers(3, 16), bins=st.integers(3, 25))
+@settings(max_examples=30, deadline=None, derandomize=True)
+def test_a_scattered_bands_centre_line_is_taken_over_equal_bins(seed, per_bin, bins):
+    """Points off any grid (more distinct values than columns): equal bins between the smallest and largest
+    value along the band, each bin's lowest, highest and mean position."""
+    rng = np.random.default_rng(seed)
+    # a jittered ladder of at least three values per bin (none left empty), stretched and moved
+    m = per_bin * bins
+    x = (np.linspace(-1.0, 1.0, m) + rng.uniform(-0.4, 0.4, m) / m) * rng.uniform(0.5, 3.0) + rng.uniform(-1, 1)
+    y = 0.4 * x + rng.uniform(-0.1, 0.1, m)
+    curve = band_curve(np.column_stack([y, x]), along=1, across=0, max_columns=bins)
+    width = (x.max() - x.min()) / bins
+    which = np.minimum(((x - x.min()) / width).astype(int), bins - 1)
+    rows = []
+    for b in range(bins):
+        inside = which == b
+        if inside.any():
+            lo, hi = y[inside].min(), y[inside].max()
+            rows.append((x[inside].mean(), lo, (lo + hi) / 2, hi, hi - lo))
+    expected = pd.DataFrame(rows, columns=["along", "lower", "mid", "upper", "width"])
+    # a point on an inner bin edge may fall either side by round-off; the bins' counts must agree otherwise
+    assert len(curve) == len(expected)
+    assert np.allclose(curve.to_numpy(), expected.to_numpy(), atol=1e-9)
+
+
+def test_a_grids_centre_line_has_one_row_per_column():
+    axis = np.linspace(-1.0, 1.0, 9)
+    grid = np.array(list(itertools.product(axis, axis)))
+    band = grid[np.abs(grid[:, 1] - 0.5 * grid[:, 0]) <= 0.3]
+    curve = band_curve(band, along=0, across=1)
+    assert list(curve["along"]) == pytest.approx(list(axis))
+    for row in curve.itertuples():
+        column = band[np.isclose(band[:, 0], row.along), 1]
+        assert (row.lower, row.upper, row.width) == pytest.approx((column.min(), column.max(), np.ptp(column)))
+
+
+@pytest.mark.parametrize("normal", [(1.0, 0.0), (0.6, 0.8), (-0.6, 0.8), (0.0, -1.0)])
+@pytest.mark.parametrize("extent", [(1.0, 1.0), (10.0, 0.5), (0.2, 4.0)])
+def test_the_cut_side_is_where_the_projections_reach_the_box_within_the_touch_tolerance(normal, extent):
+    normal = np.array(normal)
+    lower, upper = -np.array(extent), 2 * np.array(extent)
+    corners = np.array(list(itertools.product(*zip(lower, upper))))
+    box_min, box_max = (corners @ normal).min(), (corners @ normal).max()
+    tol = BOUND_TOUCH * (box_max - box_min)
+    centre = corners.mean(axis=0)
+    for low_gap, high_gap, expected in [(0.5 * tol, 3 * tol, "lower"), (3 * tol, 0.5 * tol, "upper"),
+                                        (0.5 * tol, 0.5 * tol, "both"), (1.5 * tol, 1.5 * tol, "none")]:
+        # two points on the normal's line through the box's centre, at the given gaps from the box's ends
+        t_lo = box_min + low_gap - centre @ normal
+        t_hi = box_max - high_gap - centre @ normal
+        points = np.array([centre + t_lo * normal, centre + t_hi * normal])
+        assert _cut_side(points, normal, lower, upper) == expected, (low_gap / tol, high_gap / tol)
+
+
+@pytest.mark.parametrize("vector, text", [
+    ((0.6, -0.8), "(0.60·a − 0.80·b)"),
+    ((-0.6, 0.8), "(−0.60·a + 0.80·b)"),
+    ((0.004, 1.0, -0.0049), "(1.00·b)"),
+    ((0.0, -0.5, 0.5), "(−0.50·b + 0.50·c)"),
+    ((0.25, 0.25, 0.25, 0.9), "(0.25·a + 0.25·b + 0.25·c + 0.90·d)"),
+])
+def test_a_direction_is_written_with_its_signs_and_loadings(vector, text):
+    assert _direction_text(np.array(vector), list("abcd")[:len(vector)]) == text
+
+
+def _spec(d: int) -> MaterialSpec:
+    return MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "custom"},
+        "factors": {n: {"lower": -1.0, "upper": 1.0} for n in "abcd"[:d]},
+        "responses": {"y": {"target": 1.0}}, "scenarios": {"s": {"observables": ["y"], "tolerance": 0.05}}},
+        grid_points=11)
+
+
+@pytest.mark.parametrize("d", [2, 3, 4])
+def test_the_combinations_table_has_a_row_per_direction_of_each_set_with_its_loadings(d):
+    results = []
+    for k, (scenario, name) in enumerate([("s", "strict"), ("s", "plausible"), ("t", "strict")]):
+        points, _, _ = _cloud(7 + k, d, 60)
+        results.append(set_combinations(points, -np.ones(d), np.ones(d), tuple("abcd"[:d]), scenario=scenario,
+                                        set_name=name))
+    results.append(set_combinations(np.zeros((0, d)), -np.ones(d), np.ones(d), tuple("abcd"[:d]), scenario="u",
+                                    set_name="strict"))
+    frame = MaterialCombinations(_spec(d), None, results, [], -np.ones(d), np.ones(d)).to_frame()
+    factors = list("abcd"[:d])
+    assert list(frame.columns) == ["scenario", "set", "direction", *factors, "width_coded", "width_fraction_of_range"]
+    assert len(frame) == 3 * d  # the empty set has no direction
+    for k, res in enumerate(results[:3]):
+        part = frame.iloc[k * d:(k + 1) * d]
+        assert set(part["scenario"]) == {res.scenario} and set(part["set"]) == {res.set}
+        assert list(part["direction"]) == list(range(1, d + 1))
+        assert np.allclose(part[factors].to_numpy(), res.axes.directions.T)
+        assert np.allclose(part["width_coded"], res.axes.widths)
+        assert np.allclose(part["width_fraction_of_range"], res.axes.width_fraction)
+    empty = MaterialCombinations(_spec(d), None, results[3:], [], -np.ones(d), np.ones(d)).to_frame()
+    assert empty.empty and list(empty.columns) == list(frame.columns)
+
+
+def test_every_width_a_combination_sentence_quotes_is_the_sets_own():
+    """A small region (every direction identified) quotes each direction's width; a wide set its narrowest."""
+    rng = np.random.default_rng(3)
+    spec = _spec(3)
+    small = set_combinations(rng.uniform(-0.05, 0.05, (400, 3)), -np.ones(3), np.ones(3), ("a", "b", "c"),
+                             scenario="s", set_name="strict")
+    small.statement = "a region"
+    said = MaterialCombinations(spec, None, [small], [], -np.ones(3), np.ones(3)).sentences(small)
+    quoted = [float(v) for v in re.findall(r"([\d.]+) %", said)]
+    assert said.startswith("every direction is identified")
+    assert quoted == pytest.approx(list(100 * small.axes.width_fraction), abs=0.051)
+    wide = set_combinations(rng.uniform(-1, 1, (400, 3)), -np.ones(3), np.ones(3), ("a", "b", "c"), scenario="s",
+                            set_name="strict")
+    text = MaterialCombinations(spec, None, [wide], [], -np.ones(3), np.ones(3)).sentences(wide)
+    number = float(re.search(r"the set is (\d+) % of the range wide", text).group(1))
+    width = wide.band_fraction if np.isfinite(wide.band_fraction) else wide.axes.width_fraction[0]
+    assert number == pytest.approx(100 * width, abs=0.51)
