@@ -359,7 +359,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/story/measurements.py": {
         "functions": None,
-        "tests": ["tests/uncertainty/test_ranking.py", "tests/story/test_advice_wording.py", "tests/story/test_story.py",
+        "tests": ["tests/story/test_measurement_order_properties.py", "tests/uncertainty/test_ranking.py",
+                  "tests/story/test_advice_wording.py", "tests/story/test_story.py",
                   "tests/report/test_advice_source.py", "tests/uncertainty/test_uncertainty.py",
                   "tests/test_reported_numbers.py", "tests/criticism/test_unreachable_targets.py", _NOT_WORKFLOW],
     },
