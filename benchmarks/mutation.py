@@ -409,7 +409,12 @@ TABLE: dict[str, dict] = {
     "demid/design_check.py": {
         "functions": None,
         "tests": ["tests/inputs/test_data.py", "tests/inputs/test_design.py", "tests/inputs/test_cli.py",
-                  *_READ_TABLE_TESTS],
+                  "tests/inputs/test_design_generation.py", *[
+                      f"tests/inputs/test_stranger_tables.py::{name}" for name in (
+                          "test_valid_designs_validate_and_are_coded_by_their_geometry",
+                          "test_mistyped_factor_cell_is_located_not_absorbed_into_the_coding",
+                          "test_ccd_whose_centre_runs_all_failed_is_refused",
+                          "test_failed_run_with_a_value_left_in_its_cell_is_an_error")]],
     },
     "demid/criticism/discrimination.py": {
         "functions": None,
@@ -510,6 +515,9 @@ EQUIVALENT: dict[str, str] = {
         "the unscrambled Sobol sequence is an equally stratified low-discrepancy sample of the same size: "
         "the fraction is estimated as well",
     # --- verdicts
+    "demid/story/words.py::labelled::v and v != k => v or v != k#0":
+        "a label is never empty (MaterialSpec fills an absent one with the key): the extra entries map a key to "
+        "itself, and replacing a key by itself leaves the text as it was",
     "demid/story/verdicts.py::verdict_frame::float(strict['upper'].iloc[0]) => strict['upper'].iloc[0]#0":
         _NUMPY_FLOAT + " (the bounds of identifiability.csv are a float column: NaN marks an empty set)",
     # --- ranking

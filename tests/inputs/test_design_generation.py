@@ -175,3 +175,33 @@ def test_every_option_has_help():
 
 def test_parse_factor():
     assert parse_factor("mu_r=0.05:0.35") == FactorRange("mu_r", 0.05, 0.35)
+
+
+@pytest.mark.parametrize("k", [2, 3, 4])
+@pytest.mark.parametrize("blocks", [1, 2, 3, 4])
+@pytest.mark.parametrize("centres", [1, 2, 3, 5])
+def test_a_ccd_is_written_in_two_blocks_and_from_three_factors_in_three_each_with_a_centre_run(k, blocks, centres):
+    """2 blocks (factorial | axial) for any CCD, 3 (two half-factorials | axial) from three factors on; each block
+    needs a centre run; 1 block is no blocking."""
+    factors = [FactorRange(f"x{i}", 0.0, 1.0 + i) for i in range(k)]
+    allowed = blocks == 1 or (blocks == 2 or (blocks == 3 and k >= 3))
+    if not allowed:
+        with pytest.raises(InputError, match=f"--blocks: a {k}-factor CCD is run in 2 blocks .*found {blocks}"):
+            generate_sheet("ccd", factors, center_runs=centres, blocks=blocks)
+        return
+    if blocks > centres:
+        with pytest.raises(InputError, match=f"--center-runs: {blocks} blocks need a centre run each, found "
+                                             f"{centres} centre runs"):
+            generate_sheet("ccd", factors, center_runs=centres, blocks=blocks)
+        return
+    frame = generate_sheet("ccd", factors, center_runs=centres, blocks=blocks, seed=3).to_frame()
+    if blocks == 1:
+        assert "block" not in frame
+        return
+    assert sorted(set(frame["block"])) == list(range(1, blocks + 1))
+    assert list(frame["block"]) == sorted(frame["block"])  # block after block
+    coded = frame[[f.name for f in factors]].to_numpy() / np.array([1.0 + i for i in range(k)]) * 2 - 1
+    centre = np.all(np.abs(coded) < 1e-9, axis=1)
+    axial = ~centre & np.any(np.abs(coded) < 1e-9, axis=1)
+    assert set(frame.loc[axial, "block"]) == {blocks}
+    assert all(centre[frame["block"] == b].any() for b in range(1, blocks + 1))
