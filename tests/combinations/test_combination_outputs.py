@@ -172,3 +172,118 @@ def test_every_width_a_combination_sentence_quotes_is_the_sets_own():
     number = float(re.search(r"the set is (\d+) % of the range wide", text).group(1))
     width = wide.band_fraction if np.isfinite(wide.band_fraction) else wide.axes.width_fraction[0]
     assert number == pytest.approx(100 * width, abs=0.51)
+
+
+# ------------------------------------------------------------------------------------------ the statement
+@given(seed=st.integers(0, 10_000), d=st.integers(2, 4), log_mask=st.integers(0, 15))
+@settings(max_examples=40, deadline=None, derandomize=True)
+def test_a_linear_statement_holds_on_the_bands_centre_plane_and_its_edges_in_search_units(seed, d, log_mask):
+    """a·s = c on the plane normal·x = normal·centre (x coded, s = centre_s + x·unit in search units), a·s = c ± w
+    on its two edges normal·x = normal·centre ± width/2; a has unit length and its largest entry is positive; the
+    sentence, read back term by term, is the same equation scaled to the leading factor."""
+    from demid.combinations.axes import linear_statement
+    from demid.design import Coding
+
+    rng = np.random.default_rng(seed)
+    normal = rng.normal(size=d)
+    normal /= np.linalg.norm(normal) * (1 if rng.uniform() < 0.5 else -1)
+    centre, width = rng.uniform(-0.5, 0.5, d), rng.uniform(0.01, 0.4)
+    unit, mid = rng.uniform(0.1, 30.0, d), rng.uniform(-5.0, 50.0, d)
+    log = [bool(log_mask >> i & 1) for i in range(d)]
+    labels = [f"p{i}" for i in range(d)]
+    a, c, w, text = linear_statement(normal, centre, width, Coding(tuple(labels), tuple(mid), tuple(unit)), labels,
+                                     log, digits=6)
+    assert np.linalg.norm(a) == pytest.approx(1.0) and a[np.argmax(np.abs(a))] > 0 and w > 0
+    tangent = np.linalg.svd(normal[None, :])[2][1:]  # directions within the plane
+    for offset, side in ((0.0, 0), (width / 2, 1), (-width / 2, -1)):
+        for t in rng.normal(size=(3, d - 1)):
+            x = centre + offset * normal + t @ tangent
+            s = mid + x * unit
+            assert abs(a @ s - c) == pytest.approx(abs(side) * w, rel=1e-7, abs=1e-9 * (abs(c) + 1))
+    # the sentence: "p2 + 0.5·log10 p0 − 3·p1 = c ± w", the leading factor (largest |normal|) first with coefficient 1
+    lhs, rhs = text.split(" = ")
+    lead = int(np.argmax(np.abs(normal)))
+    terms = re.findall(r"(^−?|[+−] )(?:([\d.e+-]+)·)?(log10 )?(p\d)", lhs)
+    assert terms[0][3] == f"p{lead}" and terms[0][1] == ""
+    shown = {}
+    for sign, coef, lg, name in terms:
+        assert bool(lg) == log[int(name[1:])]
+        shown[int(name[1:])] = (-1 if "−" in sign else 1) * (float(coef) if coef else 1.0)
+    expected = a / a[lead]
+    for i in range(d):
+        if abs(expected[i]) >= 0.5e-6:
+            assert shown[i] == pytest.approx(expected[i], rel=1e-5), text
+        else:
+            assert i not in shown
+    value, half = (float(v.replace("−", "-")) for v in rhs.split(" ± "))
+    assert half == pytest.approx(w / abs(a[lead]), rel=0.05)
+    assert value == pytest.approx(c / a[lead], abs=half)
+
+
+# ------------------------------------------------------------------------------------------ a band's bend
+def _axes_for(centre, normal, width):
+    from demid.combinations.axes import PrincipalAxes
+
+    normal = np.asarray(normal, dtype=float)
+    other = np.array([-normal[1], normal[0]])
+    return PrincipalAxes(("a", "b"), np.asarray(centre, dtype=float), np.column_stack([normal, other]),
+                         np.array([width, 1.0]), np.array([2.0, 2.0]), 100)
+
+
+@pytest.mark.parametrize("step", [0.01, 0.05])
+@pytest.mark.parametrize("gap_steps, clear", [(1.4, False), (1.6, True)])
+def test_a_bend_leaves_out_columns_within_one_and_a_half_steps_of_the_box(step, gap_steps, clear):
+    """Columns whose band reaches within 1.5 grid steps of the box's across-bounds are cut, and left out (when
+    three others remain); the bend is the largest distance of the rest's mid-points from the straight line, over
+    the band's width."""
+    from demid.combinations.axes import curve_bend
+
+    along = np.linspace(-0.8, 0.8, 9)
+    mid = 0.05 * along ** 2
+    lower, upper = mid - 0.1, mid + 0.1
+    # the last column is pushed to the box's upper end: its upper edge sits gap_steps steps below 1
+    upper[-1] = 1.0 - gap_steps * step
+    mid_last = (lower[-1] + upper[-1]) / 2
+    curve = pd.DataFrame({"along": along, "lower": lower, "mid": np.r_[mid[:-1], mid_last], "upper": upper})
+    curve["width"] = curve["upper"] - curve["lower"]
+    axes = _axes_for((0.0, 0.02), (0.0, 1.0), 0.2)
+    bend = curve_bend(curve, axes, 0, 1, [-1.0, -1.0], [1.0, 1.0], step)
+    kept = curve if clear else curve.iloc[:-1]
+    assert bend == pytest.approx(np.max(np.abs(kept["mid"] - 0.02)) / 0.2)
+    # a straight band's bend: its mid-points' spread about its own line only
+    flat = curve.assign(mid=0.02, lower=-0.08, upper=0.12)
+    assert curve_bend(flat, axes, 0, 1, [-1.0, -1.0], [1.0, 1.0], step) == pytest.approx(0.0, abs=1e-12)
+    assert np.isnan(curve_bend(curve, _axes_for((0.0, 0.02), (0.0, 1.0), 0.0), 0, 1, [-1, -1], [1, 1], step))
+
+
+@pytest.mark.parametrize("fractions, counts, median", [
+    ([0.1, 0.2, 0.3], [1, 1, 5], 0.3), ([0.3, 0.1, 0.2], [1, 5, 1], 0.1), ([0.4, 0.2], [3, 3], 0.2),
+    ([0.05, 0.5, 0.07, 0.06], [10, 1, 10, 10], 0.06)])
+def test_a_local_thickness_is_the_point_weighted_median_of_its_cells(fractions, counts, median):
+    from demid.combinations.axes import LocalThickness
+
+    n = len(fractions)
+    local = LocalThickness(np.zeros((n, 3)), np.zeros((n, 3)), np.zeros(n), np.array(fractions), np.array(counts))
+    assert local.fraction == pytest.approx(median)
+
+
+@given(seed=st.integers(0, 10_000), thickness=st.floats(0.08, 0.2))
+@settings(max_examples=8, deadline=None, derandomize=True)
+def test_a_flat_sheets_local_thickness_is_its_thickness(seed, thickness):
+    from demid.combinations.axes import local_thickness
+
+    """A slab |n·x| <= t/2 through the cube: cell by cell along the sheet the local width is t (the cells the
+    cube's faces cut are a few), its normal n, its fraction the width over the cube's extent along it."""
+    d = 3
+    rng = np.random.default_rng(seed)
+    normal = rng.normal(size=d)
+    normal /= np.linalg.norm(normal)
+    points = rng.uniform(-1, 1, (60_000, d))
+    points = points[np.abs(points @ normal) <= thickness / 2]
+    axes = principal_axes(points, -np.ones(d), np.ones(d))
+    local = local_thickness(points, axes, -np.ones(d), np.ones(d))
+    assert local.counts.sum() <= len(points) and local.counts.min() >= 30
+    assert np.allclose(local.fractions, local.widths / (np.abs(local.normals) @ np.full(d, 2.0)))
+    good = (np.abs(local.widths / thickness - 1) < 0.2) & (np.abs(np.abs(local.normals @ normal) - 1) < 0.02)
+    assert local.counts[good].sum() >= 0.7 * local.counts.sum()
+    assert local.fraction == pytest.approx(thickness / (np.abs(normal) @ np.full(d, 2.0)), rel=0.1)
