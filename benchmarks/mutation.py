@@ -408,8 +408,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/design_check.py": {
         "functions": None,
-        "tests": ["tests/inputs/test_data.py", "tests/inputs/test_design.py", "tests/inputs/test_cli.py",
-                  "tests/inputs/test_design_generation.py", *[
+        "tests": ["tests/inputs/test_design_check_known_answers.py", "tests/inputs/test_data.py",
+                  "tests/inputs/test_design.py", "tests/inputs/test_cli.py", "tests/inputs/test_design_generation.py", *[
                       f"tests/inputs/test_stranger_tables.py::{name}" for name in (
                           "test_valid_designs_validate_and_are_coded_by_their_geometry",
                           "test_mistyped_factor_cell_is_located_not_absorbed_into_the_coding",
