@@ -614,6 +614,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/transcription/engine.py::_statistics::n = np.broadcast_to(n, sse.shape) => pass#0":
         "numpy broadcasts the scalar n in every later expression: the same arrays result",
     # --- uncertainty
+    "demid/story/extensions.py::extension_sentence::abs(row['best_error_before']) => row['best_error_before']#0":
+        "best_error_before is level 2's best_max_error, a largest weighted |relative error|: never negative "
+        "(NaN when absent, and abs(NaN) is NaN)",
     "demid/uncertainty/recommended.py::recommended_point::0 => -1#0":
         "contains() of the one point points[best:best + 1] returns one value: its first and last are the same",
     "demid/sampling/polish.py::_polish::0 => -1#6": "sign is +1.0 or -1.0: 'sign > 0' and 'sign > -1' agree",
@@ -745,6 +748,11 @@ SETTINGS: dict[str, str] = {
     "demid/sampling/polish.py::start_points::min(n, int(1000000.0 ** (1.0 / d))) => "
     "max(n, int(1000000.0 ** (1.0 / d)))#0":
         "the resolution of the grid the polishing starts from when no node is admissible",
+    "demid/uncertainty/material.py::recommended_sizes::401 => 402#1":
+        "the resolution of the two-factor posteriors' grid (401 nodes per axis, chosen as converged)",
+    "demid/uncertainty/material.py::analyse_material::0 => 1#0":
+        "the default scramble seed of the Sobol points above three factors (the pipeline passes none): another "
+        "fixed seed gives an equally stratified, equally deterministic sample",
     "demid/uncertainty/sweep.py::tolerance_sweep::2 ** 14 => 2 * 14#0":
         "the default number of scrambled Sobol points (more than three factors); the pipeline passes its own",
 }

@@ -19,7 +19,7 @@ from demid.errors import InputError
 from demid.spec import MaterialSpec
 from demid.wave_value import STOP_CONTRACTION
 from demid.waves import (LACK_OF_FIT_ALPHA, STOP_Q2, WaveEvidence, box_share, check_simulated, inside_domain,
-                         measured_change, next_wave_runs, stop_decision, surrogate_limits)
+                         measured_change, next_wave_runs, stop_decision, surrogate_limits, wave_summary)
 
 _NUMBER = r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?"
 
@@ -227,3 +227,33 @@ def test_next_runs_count_must_determine_a_quadratic_with_one_degree_of_freedom_t
         check_simulated(_simulated(k, needed - 1))
     assert (f"waves.next_runs.count: {needed - 1} runs cannot determine a quadratic in {k} factors" in str(err.value)
             and f"at least {needed}" in str(err.value))
+
+
+# ------------------------------------------------------------------------------------------ the summary
+def _wave(runs: int, failed: int | None, plausible: float, statistics: pd.DataFrame, domain=None) -> dict:
+    table = pd.DataFrame({"run": range(1, runs + 1)})
+    if failed is not None:
+        table["status"] = ["failed"] * failed + ["ok"] * (runs - failed)
+    robust = pd.DataFrame({"scenario": ["s", "s", "other", "other"], "factor": ["f0", "f1", "f0", "f1"],
+                           "robust_fraction_pct": [plausible, plausible, 99.0, 99.0],
+                           "robust_lower": [1.5, 2.5, 1.0, 2.0], "robust_upper": [40.0, 90.0, 100.0, 200.0]})
+    return {"table": table, "analysed": table.head(runs - (failed or 0)), "domain": domain, "robust": robust,
+            "statistics": statistics}
+
+
+def test_the_wave_summary_counts_runs_and_reads_the_refocus_scenarios_share_and_intervals():
+    spec = _spec(2)
+    stats = pd.DataFrame({"response": ["y"], "q2": [0.93], "surrogate": ["quadratic with log(y)"]})
+    empty = pd.DataFrame({"response": [], "q2": [], "surrogate": []})
+    box = pd.DataFrame({"factor": ["f0", "f1"], "lower": [2.0, 3.0], "upper": [50.0, 100.0]})
+    decision = {"stop": True, "action": "stop", "reason": "r"}
+    summary = wave_summary(spec, [_wave(11, None, 12.5, stats), _wave(18, 3, 4.25, empty, box)], decision)
+    assert summary["material"] == "m" and summary["decision"] == decision
+    first, second = summary["waves"]
+    assert (first["wave"], first["simulated"], first["failed"], first["analysed"]) == (1, 11, 0, 11)
+    assert (second["wave"], second["simulated"], second["failed"], second["analysed"]) == (2, 18, 3, 15)
+    assert first["surrogate"] == "quadratic with log(y)" and second["surrogate"] == "quadratic"
+    assert first["q2"] == {"y": 0.93} and second["q2"] == {}
+    assert first["scenario"] == second["scenario"] == "s"
+    assert (first["plausible_fraction_of_omega_pct"], second["plausible_fraction_of_omega_pct"]) == (12.5, 4.25)
+    assert first["plausible"] == {"f0": [1.5, 40.0], "f1": [2.5, 90.0]}
