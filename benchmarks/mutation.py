@@ -262,7 +262,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/uncertainty/test_ranking.py",
                   "tests/test_reported_numbers.py::test_ranking_reports_gain_fraction_and_contraction_in_closed_form",
-                  "tests/test_reported_numbers.py::test_next_measurement_advice_quotes_the_gains_and_fractions_of_the_ranking",
+                  "tests/test_reported_numbers.py::test_measurement_order_quotes_the_gains_and_fractions_of_the_ranking",
                   "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_unreachable_targets.py"],
     },
     "demid/next_wave.py": {
