@@ -514,6 +514,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/wave_value.py::_evaluation_points::True => False#0":
         "the unscrambled Sobol sequence is an equally stratified low-discrepancy sample of the same size: "
         "the fraction is estimated as well",
+    "demid/wave_value.py::expected_contraction::contraction < STOP_CONTRACTION => contraction <= STOP_CONTRACTION#0":
+        "contraction is 1 - r with r a ratio in [0, 1]; 1 - r is exact there (Sterbenz) and 1 - 0.1 is no double, "
+        "so the contraction is never exactly 0.1",
+    "demid/wave_value.py::expected_contraction::np.isfinite(contraction) and contraction < STOP_CONTRACTION => "
+    "contraction < STOP_CONTRACTION#0":
+        "the contraction is NaN (an empty set) or finite: NaN < 0.1 is False as well",
     # --- verdicts
     "demid/story/words.py::labelled::v and v != k => v or v != k#0":
         "a label is never empty (MaterialSpec fills an absent one with the key): the extra entries map a key to "
@@ -548,6 +554,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
         "the product with the float abs(float(target)) is a float either way",
     "demid/tolerance.py::rescaled_surrogate::0 => -1#0": "a polynomial has one intercept term: first and last agree",
+    "demid/tolerance.py::observable_band::float(target) => target#1":
+        "float(tolerance) * abs(target) is the same float for an int or a float target",
     "demid/tolerance.py::rescaled_surrogate::float(target) => target#0":
         "target is a number: its product with a float is the same float",
     "demid/tolerance.py::rescaled_surrogate::float(surrogate.resid_var) => surrogate.resid_var#0":
@@ -753,6 +761,8 @@ SETTINGS: dict[str, str] = {
     "demid/uncertainty/material.py::analyse_material::0 => 1#0":
         "the default scramble seed of the Sobol points above three factors (the pipeline passes none): another "
         "fixed seed gives an equally stratified, equally deterministic sample",
+    "demid/wave_value.py::_evaluation_points::14 => 15#0":
+        "the number of Sobol points above three factors (2^14) the expected shrink is estimated on",
     "demid/uncertainty/sweep.py::tolerance_sweep::2 ** 14 => 2 * 14#0":
         "the default number of scrambled Sobol points (more than three factors); the pipeline passes its own",
 }
