@@ -19,7 +19,8 @@ from demid.errors import InputError
 from demid.spec import MaterialSpec
 from demid.wave_value import STOP_CONTRACTION
 from demid.waves import (LACK_OF_FIT_ALPHA, STOP_Q2, WaveEvidence, box_share, check_simulated, inside_domain,
-                         measured_change, next_wave_runs, stop_decision, surrogate_limits, wave_summary)
+                         measured_change, next_wave_runs, stop_decision, stops_early, surrogate_limits, wave_evidence,
+                         wave_material, wave_summary, waves_max)
 
 _NUMBER = r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?"
 
@@ -257,3 +258,49 @@ def test_the_wave_summary_counts_runs_and_reads_the_refocus_scenarios_share_and_
     assert first["scenario"] == second["scenario"] == "s"
     assert (first["plausible_fraction_of_omega_pct"], second["plausible_fraction_of_omega_pct"]) == (12.5, 4.25)
     assert first["plausible"] == {"f0": [1.5, 40.0], "f1": [2.5, 90.0]}
+
+
+def _two_scenario_spec(**extra) -> MaterialSpec:
+    material = {"data": "m.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 3},
+                "factors": {"a": {"lower": 0.0, "upper": 1.0}, "b": {"lower": 1.0, "upper": 11.0}},
+                "responses": {"y1": {"target": 5.0}, "y2": {"target": 7.0}, "y3": {"target": 9.0}},
+                "scenarios": {"one": {"observables": ["y1"], "tolerance": 0.05},
+                              "two": {"observables": ["y1", "y2"], "tolerance": 0.05}},
+                "waves": {"max": 3, "stop_early": True, "next_runs": {"count": 9}}, **extra}
+    return MaterialSpec.from_material("m", validate_schema({"materials": {"m": material}})["materials"]["m"])
+
+
+@pytest.mark.parametrize("previous, feasible", [(None, True), ({"plausible_fraction_of_omega_pct": 3.5}, False),
+                                                ({}, None)])
+def test_wave_evidence_reads_the_refocus_scenarios_share_its_surrogates_and_the_criticisms_runs(previous, feasible):
+    from demid.run_purposes import CONFIRM, DECIDE
+
+    spec = _two_scenario_spec()
+    robust = pd.DataFrame({"scenario": ["one", "one", "two", "two"], "factor": ["a", "b"] * 2,
+                           "robust_fraction_pct": [40.0, 40.0, 6.25, 6.25]})
+    statistics = pd.DataFrame({"response": ["y3", "y2", "y1"], "q2": [0.1, 0.8, 0.95], "lof_p": [0.5, 0.01, 0.3]})
+    runs = pd.DataFrame({"a": np.arange(7) / 10, "purpose": [CONFIRM, "fill", DECIDE, DECIDE, "fill", "x", CONFIRM]})
+    criticism = {"level2": {"feasible": feasible}} if feasible is not None else {}
+    ev = wave_evidence(spec, 2, None, robust, statistics, criticism, previous, runs)
+    assert (ev.wave, ev.max_waves, ev.plausible_pct) == (2, 3, 6.25)  # the scenario with the most observables
+    assert ev.previous_pct == (None if previous is None else previous.get("plausible_fraction_of_omega_pct"))
+    assert ev.surrogates == {"y1": {"q2": 0.95, "lof_p": 0.3}, "y2": {"q2": 0.8, "lof_p": 0.01}}
+    assert ev.model_limit is (feasible is False)
+    assert (ev.proposed, ev.criticism_runs) == (7, 4)
+    none = wave_evidence(spec, 1, None, robust[robust["scenario"] == "one"], statistics, {}, None, runs.iloc[0:0])
+    assert (none.plausible_pct, none.proposed, none.criticism_runs) == (0.0, 0, 0)  # the refocus set has no row
+    assert waves_max(spec) == 3 and stops_early(spec) is True
+
+
+def test_a_waves_material_entry_is_the_table_over_omega_and_after_a_box_a_custom_design():
+    material = {"data": "old.csv", "simulation": {"command": "x"}, "design": {"type": "ccd", "alpha": 1.41421},
+                "responses": {"y": {"target": 1.0, "published": {"r2": 0.9}}}, "confirmed_values": {"x": 1},
+                "waves": {"max": 2, "next_runs": {"count": 9, "scenario": "s"}}}
+    first = wave_material(material, "waves/1.csv")
+    assert first["data"] == "waves/1.csv" and first["next_runs"] == {"count": 9, "scenario": "s"}
+    assert "simulation" not in first and "waves" not in first and first["design"]["type"] == "ccd"
+    assert first["responses"]["y"]["published"] == {"r2": 0.9} and first["confirmed_values"] == {"x": 1}
+    later = wave_material(material, "waves/2.csv", pd.DataFrame({"factor": ["a"], "lower": [0.1], "upper": [0.2]}))
+    assert later["design"] == {"type": "custom"} and "published" not in later["responses"]["y"]
+    assert "confirmed_values" not in later
+    assert material["responses"]["y"]["published"] == {"r2": 0.9} and "waves" in material  # the input is kept
