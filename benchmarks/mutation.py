@@ -761,6 +761,8 @@ SETTINGS: dict[str, str] = {
     "demid/uncertainty/material.py::analyse_material::0 => 1#0":
         "the default scramble seed of the Sobol points above three factors (the pipeline passes none): another "
         "fixed seed gives an equally stratified, equally deterministic sample",
+    "demid/uncertainty/ranking.py::_met_together::500 => 499#0":
+        "L-BFGS-B's iteration cap in the search for a point meeting every target: it converges in far fewer",
     "demid/wave_value.py::_evaluation_points::14 => 15#0":
         "the number of Sobol points above three factors (2^14) the expected shrink is estimated on",
     "demid/uncertainty/sweep.py::tolerance_sweep::2 ** 14 => 2 * 14#0":
