@@ -354,7 +354,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/story/verdicts.py": {
         "functions": None,
-        "tests": ["tests/story/test_verdicts.py", "tests/story/test_story.py", "tests/test_physical_limits.py",
+        "tests": ["tests/story/test_verdicts.py", "tests/story/test_verdict_properties.py", "tests/story/test_story.py",
+                  "tests/test_physical_limits.py",
                   "tests/combinations/test_combinations.py", "tests/report/test_report_outputs.py", _NOT_WORKFLOW],
     },
     "demid/story/measurements.py": {
