@@ -276,8 +276,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/uncertainty/posterior.py": {
         "functions": None,
-        "tests": ["tests/uncertainty/test_uncertainty.py", "tests/uncertainty/test_ranking.py",
-                  "tests/uncertainty/test_own_tolerance_posteriors.py"],
+        "tests": ["tests/uncertainty/test_posterior_quantiles.py", "tests/uncertainty/test_uncertainty.py",
+                  "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py"],
     },
     "demid/uncertainty/robust.py": {
         "functions": None,

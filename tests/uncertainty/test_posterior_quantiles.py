@@ -1,0 +1,34 @@
+"""The posterior's quantiles (credible intervals) against closed forms: densities x^k on ranges of different
+signs and scales, whose CDF is ((x - a)/(b - a))^(k+1), including densities with much of their mass at the
+range's upper end (where the CDF's last step matters)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from demid.uncertainty.posterior import _quantiles
+
+
+@given(k=st.integers(0, 3), a=st.floats(-50.0, 50.0), span=st.floats(1e-3, 1e3), n=st.integers(21, 201),
+       increasing=st.booleans())
+@settings(max_examples=60, deadline=None, derandomize=True)
+def test_quantiles_of_a_power_density_match_its_closed_form(k, a, span, n, increasing):
+    b = a + span
+    axis = np.linspace(a, b, n)
+    t = (axis - a) / span
+    density = (t if increasing else 1.0 - t) ** k * 7.3  # unnormalised: the scale must not matter
+    probs = [0.025, 0.16, 0.5, 0.84, 0.975]
+    found = _quantiles(axis, density, probs)
+    # CDF of t^k is t^(k+1); of (1-t)^k it is 1 - (1-t)^(k+1)
+    exact = [q ** (1 / (k + 1)) if increasing else 1 - (1 - q) ** (1 / (k + 1)) for q in probs]
+    tolerance = 1e-9 if k <= 1 else 2e-3  # a linear density's CDF is a quadratic: the cubic spline is exact
+    assert np.allclose((found - a) / span, exact, atol=tolerance)
+    assert np.all(np.diff(found) > 0)
+
+
+def test_a_ramp_rising_to_the_upper_end_has_its_median_at_one_over_root_two():
+    axis = np.linspace(0.0, 1.0, 11)
+    assert _quantiles(axis, 2 * axis, [0.5])[0] == pytest.approx(2 ** -0.5, abs=1e-12)
