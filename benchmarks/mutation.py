@@ -766,6 +766,9 @@ SETTINGS: dict[str, str] = {
         "L-BFGS-B's iteration cap in the search for a point meeting every target: it converges in far fewer",
     "demid/wave_value.py::_evaluation_points::14 => 15#0":
         "the number of Sobol points above three factors (2^14) the expected shrink is estimated on",
+    "demid/uncertainty/sweep.py::tolerance_sweep::False => True#0":
+        "whether the sweep's spans are polished by a local search or read off the grid or Sobol sample (the "
+        "strict sets of polynomials in up to three factors, the pipeline's, are exact either way)",
     "demid/uncertainty/sweep.py::tolerance_sweep::2 ** 14 => 2 * 14#0":
         "the default number of scrambled Sobol points (more than three factors); the pipeline passes its own",
 }
