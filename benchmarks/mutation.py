@@ -725,6 +725,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/sweep.py::tolerance_sweep::0 => -1#2":
         "with the strict set never reused, summarise_set recomputes it by evaluate_set, whose exact set takes no "
         "resolution (exact_set_on_domain has no n): the same numbers, at the cost of a second evaluation",
+    "demid/uncertainty/sweep.py::tolerance_sweep::float(nominal) => nominal#0":
+        "a scenario's tolerance lies strictly between 0 and 1 (the schema), so it is a float already",
     "demid/uncertainty/sweep.py::tolerance_sweep::float(nominal) => nominal#1":
         "eps == nominal compares numbers: an int nominal equals its float",
     "demid/uncertainty/sweep.py::tolerance_sweep::given is not None and given.exact is not None => "
