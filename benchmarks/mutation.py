@@ -401,7 +401,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/design_inference.py": {
         "functions": None,
-        "tests": ["tests/inputs/test_design_inference.py"],
+        "tests": ["tests/inputs/test_design_inference_properties.py", "tests/inputs/test_design_inference.py"],
     },
     "demid/design_generation.py": {
         "functions": None,
