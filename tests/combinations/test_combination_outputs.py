@@ -287,3 +287,77 @@ def test_a_flat_sheets_local_thickness_is_its_thickness(seed, thickness):
     good = (np.abs(local.widths / thickness - 1) < 0.2) & (np.abs(np.abs(local.normals @ normal) - 1) < 0.02)
     assert local.counts[good].sum() >= 0.7 * local.counts.sum()
     assert local.fraction == pytest.approx(thickness / (np.abs(normal) @ np.full(d, 2.0)), rel=0.1)
+
+
+# ------------------------------------------------------------------------------------------ gradients, curves, points
+@given(seed=st.integers(0, 10_000), d=st.integers(2, 4), log_mask=st.integers(0, 15))
+@settings(max_examples=20, deadline=None, derandomize=True)
+def test_a_surrogates_gradient_in_coded_units_is_the_chain_rule_through_the_coding(seed, d, log_mask):
+    """y = Σ c_i s_i + q (s_0 s_1) with s the search units (log10 of a log factor): dy/dx_i = unit_i ∂y/∂s_i."""
+    from demid.combinations.material import gradient_coded
+    from demid.design import Coding
+    from demid.sampling.domain import Domain
+
+    rng = np.random.default_rng(seed)
+    log = tuple(bool(log_mask >> i & 1) for i in range(d))
+    lower = np.where(log, 10.0 ** rng.uniform(-3, 0, d), rng.uniform(-5, 5, d))
+    upper = np.where(log, lower * 10.0 ** rng.uniform(1, 3, d), lower + rng.uniform(0.5, 20, d))
+    domain = Domain(tuple(f"f{i}" for i in range(d)), tuple(lower), tuple(upper), log)
+    lo, hi = domain.search_bounds()
+    coding = Coding(domain.factors, tuple((lo + hi) / 2), tuple((hi - lo) / 2))
+    c, q = rng.normal(size=d), rng.normal()
+
+    class Surrogate:
+        def predict(self, actual):
+            s = domain.to_search(np.asarray(actual, dtype=float))
+            return s @ c + q * s[:, 0] * s[:, 1]
+
+    points = lo + rng.uniform(0.1, 0.9, (5, d)) * (hi - lo)
+    found = gradient_coded(Surrogate(), domain, coding, points)
+    expected = np.tile(c, (5, 1))
+    expected[:, 0] += q * points[:, 1]
+    expected[:, 1] += q * points[:, 0]
+    assert np.allclose(found, expected * (hi - lo) / 2, rtol=1e-6, atol=1e-8)
+
+
+@pytest.mark.parametrize("length", [1, 5, 11, 12, 40, 401])
+def test_a_bands_curve_is_stored_with_at_most_eleven_rows_keeping_both_ends(length):
+    from demid.combinations.material import CURVE_ROWS, _curve_rows
+
+    curve = pd.DataFrame({"along": np.arange(length, dtype=float), "mid": np.arange(length) ** 2.0})
+    rows = _curve_rows(curve)
+    assert CURVE_ROWS == 11 and len(rows) == min(length, 11)
+    assert rows["along"].iloc[0] == 0 and rows["along"].iloc[-1] == length - 1
+    assert np.all(np.diff(rows["along"]) > 0) and list(rows.index) == list(range(len(rows)))
+    if length > 11:  # evenly spread: the gaps differ by at most one row
+        gaps = np.diff(rows["along"])
+        assert gaps.max() - gaps.min() <= 1
+
+
+@pytest.mark.parametrize("log", [(False, False), (True, False), (False, True, True)])
+def test_a_sets_admitted_grid_nodes_are_its_points_in_search_units_with_the_grid_step(log):
+    from demid.combinations.material import admitted_points
+    from demid.sampling.domain import Domain
+
+    d = len(log)
+    domain = Domain(tuple("abc"[:d]), (0.01, 2.0, 1.0)[:d], (10.0, 8.0, 100.0)[:d], log)
+    n = 7
+    lo, hi = domain.search_bounds()
+    axes = [np.linspace(a, b, n) for a, b in zip(lo, hi)]
+    grid = np.array(np.meshgrid(*axes, indexing="ij")).reshape(d, -1).T
+    mask = (grid[:, 0] - lo[0]) / (hi[0] - lo[0]) + (grid[:, 1] - lo[1]) / (hi[1] - lo[1]) <= 0.75
+
+    class GridSet:
+        points = None
+
+    aset = GridSet()
+    aset.mask = mask
+    points, step = admitted_points(aset, domain)
+    assert np.allclose(points, grid[mask]) and np.allclose(step, (hi - lo) / (n - 1))
+    aset.points = domain.to_actual(grid)  # a Sobol-like sample: its admitted points, no grid step
+    points, step = admitted_points(aset, domain)
+    assert np.allclose(points, grid[mask]) and np.isnan(step).all()
+    empty = GridSet()
+    empty.mask = np.zeros(0, dtype=bool)
+    points, step = admitted_points(empty, domain)
+    assert points.shape == (0, d) and np.isnan(step).all()
