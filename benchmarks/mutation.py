@@ -268,7 +268,7 @@ TABLE: dict[str, dict] = {
     "demid/next_wave.py": {
         "functions": None,
         "tests": ["tests/test_reported_numbers.py::test_next_wave_runs_each_maximise_the_determinant",
-                  "tests/test_next_wave.py", "tests/test_next_wave_properties.py", "tests/criticism/test_confirming_runs.py"],
+                  "tests/test_next_wave.py", "tests/test_next_wave_properties.py"],
     },
     "demid/pareto.py": {
         "functions": None,
