@@ -268,7 +268,7 @@ TABLE: dict[str, dict] = {
     "demid/next_wave.py": {
         "functions": None,
         "tests": ["tests/test_reported_numbers.py::test_next_wave_runs_each_maximise_the_determinant",
-                  "tests/test_next_wave.py", "tests/test_next_wave_properties.py"],
+                  "tests/test_next_wave.py", "tests/test_next_wave_properties.py", "tests/test_d_optimal_rule.py"],
     },
     "demid/pareto.py": {
         "functions": None,
@@ -541,6 +541,10 @@ EQUIVALENT: dict[str, str] = {
     "demid/blocks.py::check_blocks::np.abs(coded) < _ZERO => np.abs(coded) <= _ZERO#0":
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
     # --- next wave
+    "demid/next_wave.py::next_box::0 => -1#0": "to_search of one point returns one row: its first and last agree",
+    "demid/next_wave.py::_design::1 => 2#0":
+        "reshape(-2, k): numpy takes any negative size as the one unknown dimension, so the shape is the same "
+        "(checked with numpy 2.4.6)",
     "demid/next_wave.py::propose_runs::1 => 2#2":
         "reshape(-2, k): numpy takes any negative size as the one unknown dimension, so the shape is the same "
         "(checked with numpy 2.4.6)",
