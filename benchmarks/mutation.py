@@ -587,6 +587,8 @@ EQUIVALENT: dict[str, str] = {
         "value is a float or a numpy floating, both of which have is_integer()",
     "demid/blocks.py::check_blocks::np.abs(coded) < _ZERO => np.abs(coded) <= _ZERO#0":
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
+    "demid/blocks.py::ccd_blocks::np.abs(coded) > _ZERO => np.abs(coded) >= _ZERO#0":
+        "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
     # --- next wave
     "demid/next_wave.py::next_box::0 => -1#0": "to_search of one point returns one row: its first and last agree",
     "demid/next_wave.py::_design::1 => 2#0":
@@ -597,6 +599,8 @@ EQUIVALENT: dict[str, str] = {
         "(checked with numpy 2.4.6)",
     # --- combinations
     "demid/combinations/axes.py::principal_axes::int(len(points)) => len(points)#0": "len() returns an int already",
+    "demid/combinations/axes.py::linear_statement::abs(abs(coef) - 1) < 1e-12 => abs(abs(coef) - 1) <= 1e-12#0":
+        "differs only for a shown coefficient exactly 1e-12 from 1, to the last bit",
     "demid/combinations/axes.py::linear_statement::float(a[np.argmax(np.abs(normal))]) => "
     "a[np.argmax(np.abs(normal))]#0": _NUMPY_FLOAT + " (lead only divides and is formatted)",
     "demid/combinations/material.py::_cut_side::proj.min() <= box_min + tol => proj.min() < box_min + tol#0":
