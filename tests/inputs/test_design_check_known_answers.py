@@ -1,7 +1,7 @@
 """The design check's known answers (demid/design_check.py): the coding recovered from a CCD table for 2-4 factors
 (the centre and half-range of each factor, also when no run sits at the centre), the axial distance the runs show
-when one printed axial level carries more digits than another, and the repair named for a run typed onto no
-point of the design, its value parsed back."""
+when one printed axial level carries more digits than another, the repair named for a run typed onto no point
+of the design or onto another run's point, missing points named and counted, each value parsed back."""
 
 from __future__ import annotations
 
@@ -13,6 +13,7 @@ import pytest
 
 from demid.design import ccd_points
 from demid.design_check import _ccd_alpha_of_table, check_design, infer_coding
+from demid.design_generation import factorial_points
 from demid.errors import InputError
 
 _CENTRE = np.array([0.5, 6.0, -20.0, 1500.0])
@@ -79,3 +80,68 @@ def test_a_factorial_run_typed_onto_no_point_names_the_value_that_restores_it(k,
     said = re.search(rf"with {names[column]} = ([-\d.e+]+) it would be the factorial run the design is short of", text)
     assert said, text
     assert float(said.group(1)) == pytest.approx(true_value, rel=1e-6)
+
+
+def _points_said(text: str, names: list[str]) -> list[dict]:
+    """Every "(x1 0.3, x2 6)" point a message shows, as factor -> value."""
+    out = []
+    for group in re.findall(r"\((x1 [^()]*)\)", text):
+        parts = dict(p.rsplit(" ", 1) for p in group.split(", "))
+        if set(parts) == set(names):
+            out.append({n: float(v) for n, v in parts.items()})
+    return out
+
+
+@pytest.mark.parametrize("k, removed", [(2, 1), (3, 1), (3, 2)])
+def test_a_ccd_missing_axial_runs_names_the_first_missing_point_and_how_many_more(k, removed):
+    table, names = _ccd_table(k, 1.5, 3)
+    coded = (table[names].to_numpy() - _CENTRE[:k]) / _HALF[:k]
+    axial = np.flatnonzero(np.sum(np.abs(coded) > 1e-9, axis=1) == 1)
+    table = table.drop(index=axial[:removed]).reset_index(drop=True)
+    with pytest.raises(InputError) as err:
+        check_design(table, names, {"type": "ccd", "alpha": 1.5, "center_runs": 3}, "t.csv", "materials.m")
+    text = str(err.value)
+    assert f"has no run ({len(table)} runs in the table)" in text
+    assert ("and 1 more" in text) == (removed == 2)
+    (point,) = _points_said(text, names)
+    missing = {tuple(np.round(c, 6)) for c in coded[axial[:removed]]}
+    assert tuple(np.round([(point[n] - _CENTRE[i]) / _HALF[i] for i, n in enumerate(names)], 4)) in \
+        {tuple(np.round(m, 4)) for m in missing}
+
+
+@pytest.mark.parametrize("k", [2, 3])
+def test_a_factor_value_typed_as_another_level_names_both_runs_the_empty_point_and_the_value(k):
+    """A factorial run whose last factor is typed at the opposite level lands on another run's point: the point
+    counts still match; both runs, the empty point and the value that restores it are named."""
+    table, names = _ccd_table(k, 1.5, 3)
+    coded = (table[names].to_numpy() - _CENTRE[:k]) / _HALF[:k]
+    corner = np.all(coded > 0.99, axis=1)
+    (i,) = np.flatnonzero(corner)
+    other = np.flatnonzero(np.all(np.abs(coded[:, :-1] - 1) < 1e-9, axis=1) & (np.abs(coded[:, -1] + 1) < 1e-9))[0]
+    right = table.loc[i, names[-1]]
+    table.loc[i, names[-1]] = table.loc[other, names[-1]]
+    with pytest.raises(InputError) as err:
+        check_design(table, names, {"type": "ccd", "alpha": 1.5, "center_runs": 3}, "t.csv", "materials.m")
+    text = str(err.value)
+    assert "both are the point" in text and "which a CCD runs once" in text
+    said = re.search(rf"in one of them {names[-1]} is likely ([-\d.e+]+), typed as another level", text)
+    assert said and float(said.group(1)) == pytest.approx(right, rel=1e-6), text
+    repeated, empty = _points_said(text, names)
+    assert empty[names[-1]] == pytest.approx(right) and repeated[names[-1]] == pytest.approx(table.loc[other, names[-1]])
+    assert sorted(err.value.run) == sorted([int(table.loc[i, "run"]), int(table.loc[other, "run"])])
+
+
+@pytest.mark.parametrize("k, drop", [(2, 1), (3, 1), (3, 4)])
+def test_an_incomplete_three_level_factorial_counts_its_missing_points(k, drop):
+    coded = factorial_points(k, 2)
+    keep = np.ones(len(coded), dtype=bool)
+    non_centre = np.flatnonzero(np.any(coded != 0, axis=1))
+    keep[non_centre[-drop:]] = False
+    table = pd.DataFrame({"run": np.arange(1, keep.sum() + 1),
+                          **{f"x{i + 1}": _CENTRE[i] + coded[keep, i] * _HALF[i] for i in range(k)}})
+    names = [f"x{i + 1}" for i in range(k)]
+    with pytest.raises(InputError) as err:
+        check_design(table, names, {"type": "factorial", "center_runs": 2}, "t.csv", "materials.m")
+    text = str(err.value)
+    assert (f"a 3^{k} factorial has {3 ** k - 1} non-centre points, the table has {3 ** k - 1 - drop}; missing "
+            f"{drop}") in text
