@@ -145,3 +145,49 @@ def test_an_incomplete_three_level_factorial_counts_its_missing_points(k, drop):
     text = str(err.value)
     assert (f"a 3^{k} factorial has {3 ** k - 1} non-centre points, the table has {3 ** k - 1 - drop}; missing "
             f"{drop}") in text
+
+
+@pytest.mark.parametrize("k, centres", [(2, 1), (3, 4)])
+def test_a_ccd_declared_for_a_two_level_factorial_says_the_squares_need_axial_runs(k, centres):
+    corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * k, indexing="ij")).reshape(k, -1).T
+    coded = np.vstack([corners, np.zeros((centres, k))])
+    names = [f"x{i + 1}" for i in range(k)]
+    table = pd.DataFrame({"run": np.arange(1, len(coded) + 1),
+                          **{n: _CENTRE[i] + coded[:, i] * _HALF[i] for i, n in enumerate(names)}})
+    with pytest.raises(InputError) as err:
+        check_design(table, names, {"type": "ccd", "alpha": 1.5, "center_runs": centres}, "t.csv", "materials.m")
+    text = str(err.value)
+    assert (f"config key materials.m.design: the table has no axial runs: its runs are a two-level factorial with "
+            f"{centres} centre run(s)") in text
+    assert f"add the {2 * k} axial runs of a CCD, or run the 3^{k} factorial" in text
+
+
+@pytest.mark.parametrize("k", [3, 4])
+def test_a_box_behnken_design_with_every_edge_run_twice_is_called_replicated(k):
+    from demid.design import box_behnken_points
+
+    coded = box_behnken_points(k, 0)
+    coded = np.vstack([coded, coded, np.zeros((3, k))])
+    names = [f"x{i + 1}" for i in range(k)]
+    table = pd.DataFrame({"run": np.arange(1, len(coded) + 1),
+                          **{n: _CENTRE[i] + coded[:, i] * _HALF[i] for i, n in enumerate(names)}})
+    with pytest.raises(InputError) as err:
+        check_design(table, names, {"type": "box_behnken", "center_runs": 3}, "t.csv", "materials.m")
+    edges = 2 * k * (k - 1)
+    assert (f"the table has {2 * edges} edge-midpoint runs where a {k}-factor Box-Behnken design has {edges}: "
+            "replicated points?") in str(err.value)
+
+
+def test_no_repair_is_offered_toward_a_kind_of_point_the_design_is_not_short_of():
+    """Four factorial runs (one corner twice, one missing) and a run on no point: restoring the missing corner
+    would make five factorial runs where a 2-factor CCD has four, so the run is named without a repair."""
+    coded = np.array([(-1, -1), (-1, -1), (1, -1), (-1, 1), (1.0, 0.0),
+                      (-1.5, 0), (1.5, 0), (0, -1.5), (0, 1.5), (0, 0), (0, 0), (0, 0)], dtype=float)
+    names = ["x1", "x2"]
+    table = pd.DataFrame({"run": np.arange(1, len(coded) + 1),
+                          **{n: _CENTRE[i] + coded[:, i] * _HALF[i] for i, n in enumerate(names)}})
+    with pytest.raises(InputError) as err:
+        check_design(table, names, {"type": "ccd", "alpha": 1.5, "center_runs": 3}, "t.csv", "materials.m")
+    text = str(err.value)
+    assert "is not a factorial, axial or centre point of the" in text and "would be the" not in text
+    assert err.value.run == 5
