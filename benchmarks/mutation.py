@@ -571,6 +571,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/design_inference.py::InferredDesign.describe::max(self.alpha) - min(self.alpha) <= 0.001 * max(self.alpha) "
     "=> max(self.alpha) - min(self.alpha) < 0.001 * max(self.alpha)#0":
         "differs only for axial distances whose spread is exactly a thousandth of the largest, to the last bit",
+    "demid/story/measurements.py::measurement_order::by_frac[2] != best and by_frac[1] < f_new => by_frac[2] != best#0":
+        "best is the first option and min() returns the first of equal fractions: an option other than best is "
+        "by_frac only when its fraction is strictly smaller than best's",
     # --- verdicts
     "demid/story/words.py::labelled::v and v != k => v or v != k#0":
         "a label is never empty (MaterialSpec fills an absent one with the key): the extra entries map a key to "
