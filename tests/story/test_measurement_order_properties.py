@@ -111,4 +111,3 @@ def test_an_unreachable_target_is_named_first_and_left_out_and_a_ranking_cut_by_
     pair = pd.DataFrame({"observables": ["p", "q", "p+q"], "information_gain_bits": [1.0, 0.9, float("-inf")],
                          "feasible_fraction_pct": [40.0, 30.0, 0.0]})
     assert measurement_order(pair)[0].startswith("The targets of p + q can each be met but not together")
-
