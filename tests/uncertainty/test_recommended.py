@@ -107,3 +107,22 @@ def test_an_observable_whose_band_leaves_the_range_is_uninformative_with_its_sha
         assert (f"({bits} bit:" in text) if bits else "bit" not in text
     assert uninformative_observables(None) == {} and uninformative_observables(ranking.iloc[0:0]) == {}
     assert uninformative_observables(ranking.drop(columns="n_observables")) == {}
+
+
+@pytest.mark.parametrize("dim", [1, 2, 3, 4, 5, 6])
+def test_the_analysis_sizes_are_odd_grids_up_to_three_factors_and_balanced_sobol_samples_above(dim):
+    """A grid of odd size per axis holds the range's centre node; a scrambled Sobol sample is balanced only at a
+    power of two, and 2^14 points or more keep a fraction's error below the 0.1 % the sizes were chosen for."""
+    from demid.uncertainty.material import recommended_sizes
+
+    sizes = recommended_sizes(dim)
+    if dim <= 3:
+        assert set(sizes) == {"robust", "sweep", "posterior"}
+        assert all(n % 2 == 1 and n >= 41 for n in sizes.values())
+        assert sizes["robust"] >= sizes["sweep"]
+        return
+    assert set(sizes) == {"robust", "sweep", "posterior", "posterior_points"}
+    for key in ("robust", "sweep", "posterior_points"):
+        n = sizes[key]
+        assert n >= 2 ** 14 and n & (n - 1) == 0, (key, n)
+    assert sizes["posterior_points"] >= sizes["robust"] and 20 <= sizes["posterior"] <= 200  # histogram bins
