@@ -685,6 +685,15 @@ EQUIVALENT: dict[str, str] = {
     "demid/transcription/engine.py::_statistics::n = np.broadcast_to(n, sse.shape) => pass#0":
         "numpy broadcasts the scalar n in every later expression: the same arrays result",
     # --- uncertainty
+    "demid/story/extensions.py::extension_sentence::abs(row['best_error_after']) => row['best_error_after']#0":
+        "best_error_after is level 2's best_max_error, a largest weighted |relative error|: never negative "
+        "(NaN when absent, and abs(NaN) is NaN)",
+    "demid/admissibility.py::evaluate_scenarios::0 => 1#0":
+        "where the scenario column is inserted does not matter: the table is returned as table[columns], in the "
+        "fixed order of columns",
+    "demid/uncertainty/sweep.py::tolerance_sweep::z == 0 and uses_grid(domain.dim) => uses_grid(domain.dim)#0":
+        "summarise_set reads grid predictions only for z = 0: the extra predictions for z > 0 are made and never "
+        "read",
     "demid/story/extensions.py::extension_sentence::abs(row['best_error_before']) => row['best_error_before']#0":
         "best_error_before is level 2's best_max_error, a largest weighted |relative error|: never negative "
         "(NaN when absent, and abs(NaN) is NaN)",
@@ -832,6 +841,11 @@ SETTINGS: dict[str, str] = {
         "fixed seed gives an equally stratified, equally deterministic sample",
     "demid/uncertainty/ranking.py::_met_together::500 => 499#0":
         "L-BFGS-B's iteration cap in the search for a point meeting every target: it converges in far fewer",
+    "demid/uncertainty/ranking.py::_met_together::8 => 9#0":
+        "the number of local starts of the search for a point meeting every target (the best eight grid nodes)",
+    "demid/wave_value.py::_evaluation_points::2 => 3#0":
+        "the resolution of the grid the expected shrink is estimated on in three factors (201 instead of 41 nodes "
+        "per axis)",
     "demid/wave_value.py::_evaluation_points::14 => 15#0":
         "the number of Sobol points above three factors (2^14) the expected shrink is estimated on",
     "demid/uncertainty/sweep.py::tolerance_sweep::False => True#0":

@@ -138,3 +138,21 @@ def test_fractions_in_three_and_four_factors_match_a_dense_random_sample(k):
     assert 5 < fractions[0] < 95  # a set neither empty nor everything
     assert value["plausible_fraction_pct"] == pytest.approx(fractions[0], abs=1.0)
     assert value["expected_fraction_pct"] == pytest.approx(fractions[1], abs=1.0)
+
+
+@pytest.mark.parametrize("log", [(False,), (False, True), (True, False, False), (False, True, False, True),
+                                 (True,) * 5])
+def test_the_points_a_waves_value_is_estimated_on_fill_the_search_range(log):
+    """Grid nodes up to three factors, scrambled Sobol points above: inside the search range and reaching within
+    a few per cent of both ends of every factor."""
+    from demid.sampling.domain import Domain
+    from demid.wave_value import _evaluation_points
+
+    d = len(log)
+    lower = tuple(0.01 * (i + 1) if lg else -3.0 + i for i, lg in enumerate(log))
+    upper = tuple(100.0 * (i + 1) if lg else 5.0 + 2 * i for i, lg in enumerate(log))
+    domain = Domain(tuple(f"f{i}" for i in range(d)), lower, upper, log)
+    lo, hi = domain.search_bounds()
+    points = domain.to_search(_evaluation_points(domain))
+    assert np.all(points >= lo - 1e-9) and np.all(points <= hi + 1e-9)
+    assert np.all(points.min(axis=0) <= lo + 0.03 * (hi - lo)) and np.all(points.max(axis=0) >= hi - 0.03 * (hi - lo))

@@ -205,3 +205,14 @@ def test_a_ccd_is_written_in_two_blocks_and_from_three_factors_in_three_each_wit
     axial = ~centre & np.any(np.abs(coded) < 1e-9, axis=1)
     assert set(frame.loc[axial, "block"]) == {blocks}
     assert all(centre[frame["block"] == b].any() for b in range(1, blocks + 1))
+
+
+def test_the_config_fragment_keeps_the_factors_in_the_sheets_order():
+    from demid.design_generation import fragment_yaml
+
+    factors = [FactorRange("zeta", 1.0, 2.0), FactorRange("alpha", 0.1, 0.9), FactorRange("mu", 3.0, 5.0)]
+    sheet = generate_sheet("ccd", factors, center_runs=3)
+    material = yaml.safe_load(fragment_yaml(sheet, "m", "m.csv", responses=("y2", "y1")))["materials"]["m"]
+    assert list(material) == ["data", "design", "factors", "responses"]
+    assert list(material["factors"]) == ["zeta", "alpha", "mu"] and list(material["responses"]) == ["y2", "y1"]
+    assert material["factors"]["alpha"] == {"lower": 0.1, "upper": 0.9}

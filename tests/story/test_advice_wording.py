@@ -172,3 +172,11 @@ def test_advice_read_back_from_its_table_keeps_each_item_and_its_next_step():
     assert read.next_step("n") == ("Stop.", [])
     assert read.texts("m", kinds=("measurement_order", "widen")) == ["Widen a.", "The order."]
     assert read.texts("n") == ["Stop."]
+
+
+@pytest.mark.parametrize("unit, text", [("", "–"), ("-", "–"), (" - ", "–"), ("J m^-2", "J m⁻²"), ("m^{1.5}", "m¹·⁵"),
+                                        ("kg m^-3 s^2", "kg m⁻³ s²"), ("Pa", "Pa")])
+def test_a_unit_in_running_text_has_superscript_powers_and_a_dash_when_dimensionless(unit, text):
+    from demid.story.words import unit_text
+
+    assert unit_text(unit) == text
