@@ -32,3 +32,23 @@ def test_quantiles_of_a_power_density_match_its_closed_form(k, a, span, n, incre
 def test_a_ramp_rising_to_the_upper_end_has_its_median_at_one_over_root_two():
     axis = np.linspace(0.0, 1.0, 11)
     assert _quantiles(axis, 2 * axis, [0.5])[0] == pytest.approx(2 ** -0.5, abs=1e-12)
+
+
+@pytest.mark.parametrize("sigma", [0.02, 0.3])
+def test_a_sharp_likelihood_above_three_factors_gives_the_truncated_normals_mean_and_interval(sigma):
+    """Four factors (importance sampling from Sobol points): y = 2 + 3a with a measurement σ so small that the
+    log-likelihood spans thousands of nats over the range; the posterior of a is still the normal N(0.8, σ/3)."""
+    from tests.uncertainty.test_uncertainty import linear
+
+    from demid.sampling.domain import Domain
+    from demid.uncertainty.posterior import subset_posteriors
+
+    factors = ("a", "b", "c", "d")
+    domain = Domain(factors, (0.0, 0.0, 0.0, 0.0), (10.0, 1.0, 1.0, 1.0))
+    post = subset_posteriors({"y": linear(2.0, [3.0, 0.0, 0.0, 0.0], 0.0, factors)}, domain, ["y"], {"y": 4.4},
+                             {"y": sigma}, 51, seed=2)[("y",)]
+    sd = sigma / 3.0
+    assert post.mean[0] == pytest.approx(0.8, abs=max(0.2 * sd, 1e-3))
+    assert np.all(np.isfinite([post.credible_lower[0], post.credible_upper[0], post.information_gain_bits]))
+    assert post.credible_lower[0] < 0.8 < post.credible_upper[0]
+    assert np.allclose(post.mean[1:], 0.5, atol=0.02)
