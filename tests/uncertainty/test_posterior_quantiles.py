@@ -52,3 +52,29 @@ def test_a_sharp_likelihood_above_three_factors_gives_the_truncated_normals_mean
     assert np.all(np.isfinite([post.credible_lower[0], post.credible_upper[0], post.information_gain_bits]))
     assert post.credible_lower[0] < 0.8 < post.credible_upper[0]
     assert np.allclose(post.mean[1:], 0.5, atol=0.02)
+
+
+@pytest.mark.parametrize("predictive", [False, True])
+def test_the_likelihood_width_is_the_mean_error_by_default_and_adds_the_scatter_when_predictive(predictive):
+    """y = 2 + 3a, se_mean² = 0.25 everywhere and a residual variance of 4: the a-posterior is the truncated normal
+    of sd √(σ² + 0.25)/3 by default, √(σ² + 0.25 + 4)/3 for a predictive likelihood."""
+    from scipy import stats
+
+    from demid.design import quadratic_terms
+    from demid.sampling.domain import Domain
+    from demid.surrogate import Surrogate
+    from demid.uncertainty.posterior import grid_posterior
+
+    terms = quadratic_terms(2)
+    cov = np.zeros((len(terms), len(terms)))
+    cov[0, 0] = 0.25
+    coef = np.zeros(len(terms))
+    coef[:3] = [2.0, 3.0, 0.0]
+    surrogate = Surrogate("y", ["a", "b"], terms, coef, cov, 4.0, 7)
+    domain = Domain(("a", "b"), (0.0, 0.0), (10.0, 1.0))
+    sigma, mu = 1.5, 2.5
+    options = {"predictive": True} if predictive else {}
+    post = grid_posterior({"y": surrogate}, domain, ["y"], {"y": 2.0 + 3.0 * mu}, {"y": sigma}, 201, **options)
+    sd = np.sqrt(sigma ** 2 + 0.25 + (4.0 if predictive else 0.0)) / 3.0
+    exact = stats.truncnorm((0.0 - mu) / sd, (10.0 - mu) / sd, loc=mu, scale=sd)
+    assert np.allclose([post.credible_lower[0], post.credible_upper[0]], exact.ppf([0.025, 0.975]), rtol=1e-3)
