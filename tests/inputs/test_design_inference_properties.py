@@ -86,3 +86,16 @@ def test_a_two_level_factorial_with_centre_runs_is_inferred_and_checked_as_custo
     assert (found.family, found.center_runs) == ("two_level", centres)
     assert found.design["type"] == "custom"
     assert found.describe() == f"a {k}-factor two-level factorial with {centres} centre run{'s' if centres > 1 else ''}"
+
+
+@pytest.mark.parametrize("outer", [1.02, 1.039])
+def test_a_fourth_level_within_the_level_tolerance_of_a_factorial_level_is_no_axial_run(outer):
+    """A 3^2 factorial with one more run whose factor a sits 2-4 % of a coded unit beyond its +1 level: a level
+    that close to +1 is that level typed off, not the axial run of a CCD missing its other side."""
+    coded = np.vstack([factorial_points(2, 3), [(outer, 0.0)]])
+    table, names, logs = _table(coded, 11, 0)
+    found = infer_design(table, names, "t.csv", logs)
+    assert found.family != "ccd"
+    beyond = np.vstack([factorial_points(2, 3), [(1.3, 0.0)]])  # 0.3 beyond: an axial level
+    table, names, logs = _table(beyond, 11, 0)
+    assert infer_design(table, names, "t.csv", logs).alpha[0] == pytest.approx(1.3)
