@@ -595,6 +595,9 @@ EQUIVALENT: dict[str, str] = {
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
     # --- next wave
     "demid/next_wave.py::next_box::0 => -1#0": "to_search of one point returns one row: its first and last agree",
+    "demid/next_wave.py::propose_runs::1 => 2#0":
+        "the extra pass of range(count + 2) is reached only when no pass broke; it plans a design of -1 runs, "
+        "empty like the last pass's design of 0 runs, so the separating runs are chosen again from the same points",
     "demid/next_wave.py::_design::1 => 2#0":
         "reshape(-2, k): numpy takes any negative size as the one unknown dimension, so the shape is the same "
         "(checked with numpy 2.4.6)",
