@@ -589,6 +589,15 @@ EQUIVALENT: dict[str, str] = {
     "demid/story/measurements.py::measurement_order::by_frac[2] != best and by_frac[1] < f_new => by_frac[2] != best#0":
         "best is the first option and min() returns the first of equal fractions: an option other than best is "
         "by_frac only when its fraction is strictly smaller than best's",
+    "demid/design_check.py::odd_level_values::2 => 1#1":
+        "counts.max() < 2 with two or more distinct values means every count is 1, which the next test "
+        "((counts == counts.max()).sum() > 1) skips as well",
+    "demid/story/extensions.py::_fractions::0 => -1#0":
+        "identifiability.csv repeats a scenario's fraction on each factor's row: first and last agree",
+    "demid/story/extensions.py::model_extensions::extends.get(name) or '' => extends.get(name)#0":
+        "None and '' both fail 'not base', and base is read nowhere else before that test",
+    "demid/story/verdicts.py::verdict_display::np.isfinite(lo) and np.isfinite(hi) => np.isfinite(lo)#0":
+        "an interval's ends are NaN together (an empty set, or a row missing from one table), never one alone",
     # --- verdicts
     "demid/story/words.py::labelled::v and v != k => v or v != k#0":
         "a label is never empty (MaterialSpec fills an absent one with the key): the extra entries map a key to "
@@ -605,6 +614,8 @@ EQUIVALENT: dict[str, str] = {
         "value is a float or a numpy floating, both of which have is_integer()",
     "demid/blocks.py::check_blocks::np.abs(coded) < _ZERO => np.abs(coded) <= _ZERO#0":
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
+    "demid/blocks.py::check_blocks::int(np.sum((labels == lv) & centre)) => np.sum((labels == lv) & centre)#0":
+        "a numpy integer compares, prints and is written to JSON (io._clean) as the same int",
     "demid/blocks.py::ccd_blocks::np.abs(coded) > _ZERO => np.abs(coded) >= _ZERO#0":
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
     # --- next wave

@@ -191,3 +191,16 @@ def test_no_repair_is_offered_toward_a_kind_of_point_the_design_is_not_short_of(
     text = str(err.value)
     assert "is not a factorial, axial or centre point of the" in text and "would be the" not in text
     assert err.value.run == 5
+
+
+@pytest.mark.parametrize("half_place, unit, expected", [
+    (0.005, 0.1, [0.1, 0.15, 0.175]),     # a coarse print: half a place over the unit, times 2 + |level|
+    (0.0005, 0.1, [0.02, 0.02, 0.02]),     # a fine print: the level tolerance
+    (0.0, 0.1, [0.02, 0.02, 0.02]),        # not read from text
+    (0.005, 0.0, [0.02, 0.02, 0.02]),
+    (0.005, -0.1, [0.1, 0.15, 0.175]),
+])
+def test_the_tolerance_a_printed_level_gets_is_half_its_place_carried_through_the_coding(half_place, unit, expected):
+    from demid.design_check import _print_tolerance
+
+    assert np.allclose(_print_tolerance(0.02, half_place, unit, np.array([0.0, -1.0, 1.5])), expected)

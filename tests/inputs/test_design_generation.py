@@ -216,3 +216,28 @@ def test_the_config_fragment_keeps_the_factors_in_the_sheets_order():
     assert list(material) == ["data", "design", "factors", "responses"]
     assert list(material["factors"]) == ["zeta", "alpha", "mu"] and list(material["responses"]) == ["y2", "y1"]
     assert material["factors"]["alpha"] == {"lower": 0.1, "upper": 0.9}
+
+
+def test_a_fragment_opens_with_what_to_add_before_the_pipeline_runs():
+    from demid.design_generation import fragment_yaml
+
+    sheet = generate_sheet("ccd", [FactorRange("a", 0.0, 1.0), FactorRange("b", 1.0, 2.0)], center_runs=3)
+    text = fragment_yaml(sheet, "m", "m.csv")
+    assert text.startswith("# Generated with the run sheet; add `responses:`")
+    assert "# A factor with a physical limit takes `limits:`" in text
+    assert fragment_yaml(sheet, "m", "m.csv", responses=("y",)).startswith(
+        "# Generated with the run sheet; add a target to each response that is measured,")
+
+
+@pytest.mark.parametrize("k, blocks", [(5, 2), (5, 3), (6, 3)])
+def test_blocked_runs_keep_the_seeded_random_order_within_each_block(k, blocks):
+    """Block after block, and within a block the order the seed's permutation gives its runs."""
+    from demid.design import ccd_points
+
+    factors = [FactorRange(f"x{i}", 0.0, 1.0) for i in range(k)]
+    sheet = generate_sheet("ccd", factors, center_runs=6, blocks=blocks, seed=9)
+    n = len(sheet.coded)
+    permutation = np.random.default_rng(9).permutation(n)
+    expected = [i for b in range(1, blocks + 1) for i in permutation if sheet.blocks[i] == b]
+    assert list(sheet.order) == expected
+    assert np.allclose(sheet.coded, ccd_points(k, sheet.alpha, 6))

@@ -180,3 +180,15 @@ def test_a_unit_in_running_text_has_superscript_powers_and_a_dash_when_dimension
     from demid.story.words import unit_text
 
     assert unit_text(unit) == text
+
+
+def test_level2s_own_tolerances_are_read_back_in_the_config_order_of_its_observables():
+    """JSON sorts its keys (d10 before d5, a before z): the observables' own order is restored."""
+    from demid.story.words import level2_own_tolerances
+
+    level2 = {"tolerance": 0.05, "observables": ["z", "d5", "d10"], "tolerances": {"d10": 0.05, "d5": 0.02, "z": 0.1}}
+    assert list(level2_own_tolerances(level2).items()) == [("z", 0.1), ("d5", 0.02), ("d10", 0.05)]
+    # without the observables (an older result) the keys come in natural order
+    older = {"tolerance": 0.05, "tolerances": {"d10": 0.05, "d5": 0.02}}
+    assert list(level2_own_tolerances(older)) == ["d5", "d10"]
+    assert level2_own_tolerances({"tolerance": 0.05, "observables": ["a"], "tolerances": {"a": 0.05}}) is None
