@@ -343,7 +343,8 @@ TABLE: dict[str, dict] = {
     "demid/uncertainty/robust.py": {
         "functions": None,
         "tests": ["tests/uncertainty/test_uncertainty.py", "tests/sampling/test_set_estimators.py",
-                  "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py"],
+                  "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py",
+                  "tests/uncertainty/test_posterior_quantiles.py"],
     },
     "demid/uncertainty/recommended.py": {
         "functions": None,
@@ -598,6 +599,17 @@ EQUIVALENT: dict[str, str] = {
         "None and '' both fail 'not base', and base is read nowhere else before that test",
     "demid/story/verdicts.py::verdict_display::np.isfinite(lo) and np.isfinite(hi) => np.isfinite(lo)#0":
         "an interval's ends are NaN together (an empty set, or a row missing from one table), never one alone",
+    "demid/tolerance.py::same_tolerances::abs(float(v) - tolerance) <= 1e-12 * tolerance => "
+    "abs(float(v) - tolerance) < 1e-12 * tolerance#0":
+        "differs only for an own tolerance exactly 1e-12 (relative) from the scenario's, to the last bit",
+    "demid/uncertainty/sweep.py::tolerance_sweep::sorted({o for obs, _ in scenarios.values() for o in obs}) => "
+    "{o for obs, _ in scenarios.values() for o in obs}#0":
+        "only the order of the shared prediction frame's columns changes; they are read by name",
+    "demid/uncertainty/robust.py::summarise_set::2 => 1#2":
+        "without the shared grid predictions fraction_with_error predicts the same odd grid itself: the same "
+        "numbers, at the cost of more predictions",
+    "demid/design_inference.py::_symmetric::unit > 0 => unit >= 0#0":
+        "the unit is half the distance between two distinct sorted levels: never 0",
     # --- verdicts
     "demid/story/words.py::labelled::v and v != k => v or v != k#0":
         "a label is never empty (MaterialSpec fills an absent one with the key): the extra entries map a key to "
@@ -879,6 +891,8 @@ SETTINGS: dict[str, str] = {
     "demid/uncertainty/sweep.py::tolerance_sweep::False => True#0":
         "whether the sweep's spans are polished by a local search or read off the grid or Sobol sample (the "
         "strict sets of polynomials in up to three factors, the pipeline's, are exact either way)",
+    "demid/uncertainty/sweep.py::tolerance_sweep::0 => -1#0":
+        "the default scramble seed of the sweep's Sobol points above three factors (the pipeline passes its own)",
     "demid/uncertainty/sweep.py::tolerance_sweep::2 ** 14 => 2 * 14#0":
         "the default number of scrambled Sobol points (more than three factors); the pipeline passes its own",
 }

@@ -1,6 +1,7 @@
 """The posterior's quantiles (credible intervals) against closed forms: densities x^k on ranges of different
 signs and scales, whose CDF is ((x - a)/(b - a))^(k+1), including densities with much of their mass at the
-range's upper end (where the CDF's last step matters)."""
+range's upper end (where the CDF's last step matters); the likelihood's and the plausible band's width (the mean's
+error and σ, the residual scatter only when predictive) against the truncated normal and the closed-form span."""
 
 from __future__ import annotations
 
@@ -78,3 +79,26 @@ def test_the_likelihood_width_is_the_mean_error_by_default_and_adds_the_scatter_
     sd = np.sqrt(sigma ** 2 + 0.25 + (4.0 if predictive else 0.0)) / 3.0
     exact = stats.truncnorm((0.0 - mu) / sd, (10.0 - mu) / sd, loc=mu, scale=sd)
     assert np.allclose([post.credible_lower[0], post.credible_upper[0]], exact.ppf([0.025, 0.975]), rtol=1e-3)
+
+
+@pytest.mark.parametrize("sigma", [0.5, 2.0])
+def test_a_plausible_set_is_judged_by_the_means_error_and_sigma_not_the_residual_scatter(sigma):
+    """y = 2 + 3a, se_mean² = 0.25, a residual variance of 4: the plausible set |ŷ − y*| <= z √(se² + σ²) is the
+    interval mu ± z √(0.25 + σ²)/3 in a (the scatter of single runs is not the mean's error)."""
+    from demid.design import quadratic_terms
+    from demid.sampling.domain import Domain
+    from demid.surrogate import Surrogate
+    from demid.uncertainty.robust import robust_admissible_set
+
+    terms = quadratic_terms(2)
+    cov = np.zeros((len(terms), len(terms)))
+    cov[0, 0] = 0.25
+    coef = np.zeros(len(terms))
+    coef[:3] = [2.0, 3.0, 0.0]
+    surrogate = Surrogate("y", ["a", "b"], terms, coef, cov, 4.0, 7)
+    domain = Domain(("a", "b"), (0.0, 0.0), (10.0, 1.0))
+    mu = 4.0
+    found = robust_admissible_set({"y": surrogate}, domain, ["y"], {"y": 2.0 + 3.0 * mu}, 0.05, 201, z=2.0,
+                                  sigma={"y": sigma})
+    half = 2.0 * np.sqrt(0.25 + sigma ** 2) / 3.0
+    assert found.lower[0] == pytest.approx(mu - half, abs=0.06) and found.upper[0] == pytest.approx(mu + half, abs=0.06)
