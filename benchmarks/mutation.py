@@ -180,12 +180,11 @@ factorial one): 70/70 after.
 
 And a third, seed 17 (``--per-module 2`` on all 25 rows, after the seed-16 tests, none aimed at it): 30 killed
 of 50 as run, 60.0 %; 10 of the 20 left are equivalent or settings (9 and 1, all listed only after reading this draw), so
-30/40 = 75.0 % with today's lists.  Eight of the other ten were then killed by tests added for them (level 2's
-own tolerances in config order, the fragment's header and factor order, blocked runs in their seeded order, a
+30/40 = 75.0 % with today's lists.  Nine of the other ten were then killed by tests added for them (level 2's
+own tolerances in config order, the fragment's header, blocked runs in their seeded order, a
 printed level's tolerance, the no-scenarios note, same_tolerances, a diagonal covariance's update, the plausible
-band without the residual scatter); two are left: material_combinations passing the set, not its points, to the
-break-the-ridge advice (no fast test runs that advice end to end on an identified band) and the quantile's root
-choice with an unnormalised CDF (it matters only where the spline crosses q more than once).  The trend of the
+band without the residual scatter, the break-the-ridge advice end to end on a grid set); one is left: the
+quantile's root choice with an unnormalised CDF (it matters only where the spline crosses q more than once).  The trend of the
 three draws (in-sample after, then 81 % and 75 % unseen) says the held-out score of these modules is likely
 to lie near 80 %, short of the 90 % aimed at.
 """

@@ -361,3 +361,34 @@ def test_a_sets_admitted_grid_nodes_are_its_points_in_search_units_with_the_grid
     empty.mask = np.zeros(0, dtype=bool)
     points, step = admitted_points(empty, domain)
     assert points.shape == (0, d) and np.isnan(step).all()
+
+
+def test_a_materials_identified_band_gets_the_break_the_ridge_advice_of_the_observable_across_it():
+    """End to end on a grid set: y1 = a + b pins the band a + b = 1 (± 2 %); 'across' = a − b changes along it and
+    is named, with the angle between its gradient and the identified direction (90°)."""
+    from demid.combinations.material import material_combinations
+    from demid.design import Coding, quadratic_terms
+    from demid.sampling.grid import admissible_set
+    from demid.surrogate import Surrogate
+
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "custom"},
+        "factors": {"a": {"lower": 0.0, "upper": 1.0}, "b": {"lower": 0.0, "upper": 1.0}},
+        "responses": {"y1": {"target": 1.0}, "across": {"target": 0.0}},
+        "scenarios": {"band": {"observables": ["y1"], "tolerance": 0.02}}}, grid_points=201)
+    terms = quadratic_terms(2)
+
+    def linear(name, slopes):
+        coef = np.zeros(len(terms))
+        coef[1:3] = slopes
+        return Surrogate(name, ["a", "b"], terms, coef, np.zeros((len(terms), len(terms))), 0.0, 1)
+
+    surrogates = {"y1": linear("y1", [1.0, 1.0]), "across": linear("across", [1.0, -1.0])}
+    strict = {"band": admissible_set({"y1": surrogates["y1"]}, spec.domain, ["y1"], {"y1": 1.0}, 0.02, 201)}
+    found = material_combinations(surrogates, spec, Coding(("a", "b"), (0.5, 0.5), (0.5, 0.5)), strict, {})
+    (res,) = found.results
+    assert res.identified and res.cut == "none"
+    (line,) = found.advice
+    assert line.startswith("*band* identifies a combination and leaves its complement free: across changes most "
+                           "along the set (its gradient lies 90° off the identified direction)")
+    assert found.to_frame()["a"].abs().round(3).tolist() == [0.707, 0.707]
