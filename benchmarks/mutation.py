@@ -636,6 +636,8 @@ EQUIVALENT: dict[str, str] = {
         "value is a float or a numpy floating, both of which have is_integer()",
     "demid/blocks.py::check_blocks::np.abs(coded) < _ZERO => np.abs(coded) <= _ZERO#0":
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
+    "demid/blocks.py::check_blocks::int(np.sum(labels == lv)) => np.sum(labels == lv)#0":
+        "a numpy integer compares, prints and is written to JSON (io._clean) as the same int",
     "demid/blocks.py::check_blocks::int(np.sum((labels == lv) & centre)) => np.sum((labels == lv) & centre)#0":
         "a numpy integer compares, prints and is written to JSON (io._clean) as the same int",
     "demid/blocks.py::ccd_blocks::np.abs(coded) > _ZERO => np.abs(coded) >= _ZERO#0":
@@ -891,6 +893,9 @@ SETTINGS: dict[str, str] = {
         "fixed seed gives an equally stratified, equally deterministic sample",
     "demid/uncertainty/ranking.py::_met_together::500 => 499#0":
         "L-BFGS-B's iteration cap in the search for a point meeting every target: it converges in far fewer",
+    "demid/combinations/axes.py::band_curve::12 => 13#0":
+        "the decimals a coordinate is rounded to before grid columns are told apart (12 or 13: both far above the "
+        "round-off of grid coordinates, far below a grid step)",
     "demid/uncertainty/ranking.py::_met_together::8 => 9#0":
         "the number of local starts of the search for a point meeting every target (the best eight grid nodes)",
     "demid/wave_value.py::_evaluation_points::2 => 3#0":
