@@ -620,7 +620,11 @@ EQUIVALENT: dict[str, str] = {
         "numbers, at the cost of more predictions",
     "demid/design_inference.py::_symmetric::unit > 0 => unit >= 0#0":
         "the unit is half the distance between two distinct sorted levels: never 0",
+    "demid/waves.py::wave_summary::float(robust['robust_fraction_pct'].iloc[0]) => "
+    "robust['robust_fraction_pct'].iloc[0]#0": _NUMPY_FLOAT + " (the summary is written to JSON through io._clean)",
     # --- verdicts
+    "demid/story/words.py::labelled::v and v != k => v != k#0":
+        "a label is never empty (MaterialSpec fills an absent one with the key), so 'v and' is always true",
     "demid/story/words.py::labelled::v and v != k => v or v != k#0":
         "a label is never empty (MaterialSpec fills an absent one with the key): the extra entries map a key to "
         "itself, and replacing a key by itself leaves the text as it was",
@@ -896,6 +900,8 @@ SETTINGS: dict[str, str] = {
     "demid/combinations/axes.py::band_curve::12 => 13#0":
         "the decimals a coordinate is rounded to before grid columns are told apart (12 or 13: both far above the "
         "round-off of grid coordinates, far below a grid step)",
+    "demid/uncertainty/material.py::recommended_sizes::14 => 15#0":
+        "the number of Sobol points of the sweep above three factors (2^14, a balanced sample either way)",
     "demid/uncertainty/ranking.py::_met_together::8 => 9#0":
         "the number of local starts of the search for a point meeting every target (the best eight grid nodes)",
     "demid/wave_value.py::_evaluation_points::2 => 3#0":

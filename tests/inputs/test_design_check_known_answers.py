@@ -204,3 +204,15 @@ def test_the_tolerance_a_printed_level_gets_is_half_its_place_carried_through_th
     from demid.design_check import _print_tolerance
 
     assert np.allclose(_print_tolerance(0.02, half_place, unit, np.array([0.0, -1.0, 1.5])), expected)
+
+
+@pytest.mark.parametrize("low, high", [(-1.3, 1.5), (-1.5, 1.45)])
+def test_axial_levels_unequally_far_from_the_centre_show_no_axial_distance(low, high):
+    """Both factors' axial levels moved alike, so that their ratios to the factorial levels still agree: the runs
+    are still no CCD, whose axial runs sit equally far on both sides."""
+    table, names = _ccd_table(2, 1.5, 2)
+    for i, name in enumerate(names):
+        coded = (table[name] - _CENTRE[i]) / _HALF[i]
+        table.loc[np.isclose(coded, -1.5), name] = _CENTRE[i] + low * _HALF[i]
+        table.loc[np.isclose(coded, 1.5), name] = _CENTRE[i] + high * _HALF[i]
+    assert _ccd_alpha_of_table(table, names) is None
