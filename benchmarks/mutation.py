@@ -622,6 +622,10 @@ EQUIVALENT: dict[str, str] = {
         "the unit is half the distance between two distinct sorted levels: never 0",
     "demid/waves.py::wave_summary::float(robust['robust_fraction_pct'].iloc[0]) => "
     "robust['robust_fraction_pct'].iloc[0]#0": _NUMPY_FLOAT + " (the summary is written to JSON through io._clean)",
+    "demid/uncertainty/material.py::analyse_material::all((o in surrogates for o in widest.observables)) => "
+    "any((o in surrogates for o in widest.observables))#0":
+        "every scenario's observables have surrogates by this line (the plausible tables above raise KeyError "
+        "first for one without) and a scenario has at least one observable: all() and any() are both true",
     # --- verdicts
     "demid/story/words.py::labelled::v and v != k => v != k#0":
         "a label is never empty (MaterialSpec fills an absent one with the key), so 'v and' is always true",
