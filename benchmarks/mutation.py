@@ -860,6 +860,9 @@ EQUIVALENT: dict[str, str] = {
         "the shared grid predictions are then made for z = 1 instead of z = 0; summarise_set reads them only for "
         "z = 0, and without them each strict set predicts the same grid itself (predict_grid): the same numbers, "
         "at the cost of more predictions",
+    "demid/uncertainty/sweep.py::tolerance_sweep::0 => 1#2":
+        "with the strict set never reused, summarise_set recomputes it by evaluate_set, whose exact set takes no "
+        "resolution (exact_set_on_domain has no n): the same numbers, at the cost of a second evaluation",
     "demid/uncertainty/sweep.py::tolerance_sweep::float(nominal) => nominal#0":
         "a scenario's tolerance lies strictly between 0 and 1 (the schema), so it is a float already",
     "demid/uncertainty/sweep.py::tolerance_sweep::float(nominal) => nominal#1":

@@ -1,7 +1,8 @@
 """The posterior's quantiles (credible intervals) against closed forms: densities x^k on ranges of different
 signs and scales, whose CDF is ((x - a)/(b - a))^(k+1), including densities with much of their mass at the
 range's upper end (where the CDF's last step matters); the likelihood's and the plausible band's width (the mean's
-error and σ, the residual scatter only when predictive) against the truncated normal and the closed-form span."""
+error and σ, the residual scatter only when predictive) against the truncated normal and the closed-form span;
+the error a set above three factors reports, the half-width of its fraction's confidence interval."""
 
 from __future__ import annotations
 
@@ -102,3 +103,21 @@ def test_a_plausible_set_is_judged_by_the_means_error_and_sigma_not_the_residual
                                   sigma={"y": sigma})
     half = 2.0 * np.sqrt(0.25 + sigma ** 2) / 3.0
     assert found.lower[0] == pytest.approx(mu - half, abs=0.06) and found.upper[0] == pytest.approx(mu + half, abs=0.06)
+
+
+def test_a_set_above_three_factors_reports_the_half_width_of_its_fractions_confidence_interval():
+    from tests.uncertainty.test_uncertainty import linear
+
+    from demid.sampling.domain import Domain
+    from demid.sampling.sobol import sobol_fraction
+    from demid.uncertainty.robust import summarise_set
+
+    factors = ("a", "b", "c", "d")
+    domain = Domain(factors, (0.0,) * 4, (1.0,) * 4)
+    surrogates = {"y": linear(1.0, [1.0, 1.0, 0.0, 0.0], 0.0, factors)}
+    found = summarise_set(surrogates, domain, ["y"], {"y": 2.0}, 0.1, 11, sobol_points=2 ** 12, seed=3, z=0.5,
+                          sigma={"y": 0.05}, polish=False)
+    direct = sobol_fraction(surrogates, domain, ["y"], {"y": 2.0}, 0.1, 2 ** 12, 3, z=0.5, sigma={"y": 0.05},
+                            polish=False)
+    assert found.fraction == direct.fraction and direct.ci_upper > direct.ci_lower
+    assert found.error == pytest.approx((direct.ci_upper - direct.ci_lower) / 2, rel=1e-12)
