@@ -652,9 +652,6 @@ EQUIVALENT: dict[str, str] = {
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
     # --- next wave
     "demid/next_wave.py::next_box::0 => -1#0": "to_search of one point returns one row: its first and last agree",
-    "demid/next_wave.py::criticism_runs_in_box::float(box[0, i] if point[i] < lo[i] else box[1, i] if point[i] > "
-    "hi[i] else run[f]) => box[0, i] if point[i] < lo[i] else box[1, i] if point[i] > hi[i] else run[f]#0":
-        _NUMPY_FLOAT + " (the value only enters a float column of the runs table)",
     "demid/next_wave.py::propose_runs::1 => 2#0":
         "the extra pass of range(count + 2) is reached only when no pass broke; it plans a design of -1 runs, "
         "empty like the last pass's design of 0 runs, so the separating runs are chosen again from the same points",
