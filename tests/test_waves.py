@@ -235,10 +235,10 @@ def _wave(runs: int, failed: int | None, plausible: float, statistics: pd.DataFr
     table = pd.DataFrame({"run": range(1, runs + 1)})
     if failed is not None:
         table["status"] = ["failed"] * failed + ["ok"] * (runs - failed)
-    robust = pd.DataFrame({"scenario": ["s", "s", "other", "other"], "factor": ["f0", "f1", "f0", "f1"],
+    plausible = pd.DataFrame({"scenario": ["s", "s", "other", "other"], "factor": ["f0", "f1", "f0", "f1"],
                            "robust_fraction_pct": [plausible, plausible, 99.0, 99.0],
                            "robust_lower": [1.5, 2.5, 1.0, 2.0], "robust_upper": [40.0, 90.0, 100.0, 200.0]})
-    return {"table": table, "analysed": table.head(runs - (failed or 0)), "domain": domain, "robust": robust,
+    return {"table": table, "analysed": table.head(runs - (failed or 0)), "domain": domain, "plausible": plausible,
             "statistics": statistics}
 
 
@@ -276,18 +276,18 @@ def test_wave_evidence_reads_the_refocus_scenarios_share_its_surrogates_and_the_
     from demid.run_purposes import CONFIRM, DECIDE
 
     spec = _two_scenario_spec()
-    robust = pd.DataFrame({"scenario": ["one", "one", "two", "two"], "factor": ["a", "b"] * 2,
+    plausible = pd.DataFrame({"scenario": ["one", "one", "two", "two"], "factor": ["a", "b"] * 2,
                            "robust_fraction_pct": [40.0, 40.0, 6.25, 6.25]})
     statistics = pd.DataFrame({"response": ["y3", "y2", "y1"], "q2": [0.1, 0.8, 0.95], "lof_p": [0.5, 0.01, 0.3]})
     runs = pd.DataFrame({"a": np.arange(7) / 10, "purpose": [CONFIRM, "fill", DECIDE, DECIDE, "fill", "x", CONFIRM]})
     criticism = {"level2": {"feasible": feasible}} if feasible is not None else {}
-    ev = wave_evidence(spec, 2, None, robust, statistics, criticism, previous, runs)
+    ev = wave_evidence(spec, 2, None, plausible, statistics, criticism, previous, runs)
     assert (ev.wave, ev.max_waves, ev.plausible_pct) == (2, 3, 6.25)  # the scenario with the most observables
     assert ev.previous_pct == (None if previous is None else previous.get("plausible_fraction_of_omega_pct"))
     assert ev.surrogates == {"y1": {"q2": 0.95, "lof_p": 0.3}, "y2": {"q2": 0.8, "lof_p": 0.01}}
     assert ev.model_limit is (feasible is False)
     assert (ev.proposed, ev.criticism_runs) == (7, 4)
-    none = wave_evidence(spec, 1, None, robust[robust["scenario"] == "one"], statistics, {}, None, runs.iloc[0:0])
+    none = wave_evidence(spec, 1, None, plausible[plausible["scenario"] == "one"], statistics, {}, None, runs.iloc[0:0])
     assert (none.plausible_pct, none.proposed, none.criticism_runs) == (0.0, 0, 0)  # the refocus set has no row
     assert waves_max(spec) == 3 and stops_early(spec) is True
 

@@ -89,7 +89,7 @@ def test_a_plausible_set_is_judged_by_the_means_error_and_sigma_not_the_residual
     from demid.design import quadratic_terms
     from demid.sampling.domain import Domain
     from demid.surrogate import Surrogate
-    from demid.uncertainty.robust import robust_admissible_set
+    from demid.uncertainty.plausible import plausible_admissible_set
 
     terms = quadratic_terms(2)
     cov = np.zeros((len(terms), len(terms)))
@@ -99,7 +99,7 @@ def test_a_plausible_set_is_judged_by_the_means_error_and_sigma_not_the_residual
     surrogate = Surrogate("y", ["a", "b"], terms, coef, cov, 4.0, 7)
     domain = Domain(("a", "b"), (0.0, 0.0), (10.0, 1.0))
     mu = 4.0
-    found = robust_admissible_set({"y": surrogate}, domain, ["y"], {"y": 2.0 + 3.0 * mu}, 0.05, 201, z=2.0,
+    found = plausible_admissible_set({"y": surrogate}, domain, ["y"], {"y": 2.0 + 3.0 * mu}, 0.05, 201, z=2.0,
                                   sigma={"y": sigma})
     half = 2.0 * np.sqrt(0.25 + sigma ** 2) / 3.0
     assert found.lower[0] == pytest.approx(mu - half, abs=0.06) and found.upper[0] == pytest.approx(mu + half, abs=0.06)
@@ -110,7 +110,7 @@ def test_a_set_above_three_factors_reports_the_half_width_of_its_fractions_confi
 
     from demid.sampling.domain import Domain
     from demid.sampling.sobol import sobol_fraction
-    from demid.uncertainty.robust import summarise_set
+    from demid.uncertainty.plausible import summarise_set
 
     factors = ("a", "b", "c", "d")
     domain = Domain(factors, (0.0,) * 4, (1.0,) * 4)

@@ -117,12 +117,12 @@ def test_the_analysis_sizes_are_odd_grids_up_to_three_factors_and_balanced_sobol
 
     sizes = recommended_sizes(dim)
     if dim <= 3:
-        assert set(sizes) == {"robust", "sweep", "posterior"}
+        assert set(sizes) == {"plausible", "sweep", "posterior"}
         assert all(n % 2 == 1 and n >= 41 for n in sizes.values())
-        assert sizes["robust"] >= sizes["sweep"]
+        assert sizes["plausible"] >= sizes["sweep"]
         return
-    assert set(sizes) == {"robust", "sweep", "posterior", "posterior_points"}
-    for key in ("robust", "sweep", "posterior_points"):
+    assert set(sizes) == {"plausible", "sweep", "posterior", "posterior_points"}
+    for key in ("plausible", "sweep", "posterior_points"):
         n = sizes[key]
         assert n >= 2 ** 14 and n & (n - 1) == 0, (key, n)
-    assert sizes["posterior_points"] >= sizes["robust"] and 20 <= sizes["posterior"] <= 200  # histogram bins
+    assert sizes["posterior_points"] >= sizes["plausible"] and 20 <= sizes["posterior"] <= 200  # histogram bins
