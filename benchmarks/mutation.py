@@ -116,6 +116,84 @@ tests/uncertainty/test_uncertainty.py (the sweep's closed-form annulus and its n
 negative target and of a response without config), tests/sampling/test_admissibility.py (unit-cube
 coordinates of a linear and a log factor) and tests/criticism/test_edges.py (the extrapolation warnings
 on a scaled and a log factor: the runs' range in actual units, a reference point on the hull's vertex).
+
+A third round, the uncertainty, story, combinations, design, wave and next-wave modules, their rows first
+completed (every test file that exercises a module; new rows for uncertainty/recommended and material,
+story/measurements, words and extensions, design_generation, design_check, waves, admissibility and numbers)
+(seed 15, ``--per-module 5``, same columns; before: the tests of commit fcaba57 with tests/test_numbers.py and
+tests/test_waves.py, written before the draw and not aimed at it):
+
+    module                      N   before (as run)   before, same lists   after
+    story/advice.py             5   4/5   80.0 %      4/5   80.0 %        5/5  100 %
+    combinations/material.py    5   4/5   80.0 %      4/5   80.0 %        5/5  100 %
+    combinations/axes.py        5   2/5   40.0 %      2/4   50.0 %        4/4  100 %
+    blocks.py                   5   1/5   20.0 %      1/5   20.0 %        5/5  100 %
+    numbers.py                  5   5/5  100 %        5/5  100 %          5/5  100 %
+    admissibility.py            5   5/5  100 %        5/5  100 %          5/5  100 %
+    uncertainty/recommended.py  5   2/5   40.0 %      2/4   50.0 %        4/4  100 %
+    story/measurements.py       5   4/5   80.0 %      4/5   80.0 %        5/5  100 %
+    story/words.py              5   4/5   80.0 %      4/4  100 %          4/4  100 %
+    design_generation.py        5   3/5   60.0 %      3/5   60.0 %        5/5  100 %
+    design_check.py             5   2/5   40.0 %      2/5   40.0 %        5/5  100 %
+    uncertainty/material.py     5   2/5   40.0 %      2/3   66.7 %        3/3  100 %
+    story/extensions.py         5   4/5   80.0 %      4/4  100 %          4/4  100 %
+    waves.py                    5   3/5   60.0 %      3/5   60.0 %        5/5  100 %
+    story/verdicts.py           5   4/5   80.0 %      4/5   80.0 %        5/5  100 %
+    scenario.py                 5   5/5  100 %        5/5  100 %          5/5  100 %
+    tolerance.py                5   4/5   80.0 %      4/4  100 %          4/4  100 %
+    wave_value.py               5   2/5   40.0 %      2/2  100 %          2/2  100 %
+    uncertainty/ranking.py      5   4/5   80.0 %      4/4  100 %          4/4  100 %
+    uncertainty/plausible.py       5   5/5  100 %        5/5  100 %          5/5  100 %
+    uncertainty/posterior.py    5   4/5   80.0 %      4/5   80.0 %        5/5  100 %
+    uncertainty/sweep.py        5   1/4   25.0 %      1/1  100 %          1/1  100 %
+    formulas.py                 5   4/4  100 %        4/4  100 %          4/4  100 %
+    design_inference.py         5   4/5   80.0 %      4/4  100 %          4/4  100 %
+    next_wave.py                5   2/5   40.0 %      2/3   66.7 %        3/3  100 %
+    total                     125  84/123  68.3 %    84/106  79.2 %     106/106 100 %
+
+Nineteen of the 125 are listed as equivalent (14) or search settings (5: uncertainty/material 2, wave_value,
+ranking, sweep); counting the settings as survivors the after score is 106/111 = 95.5 %.  After: the survivors
+re-run (``--ids``) with tests/combinations/test_combination_outputs.py (principal axes against numpy's weighted
+covariance, a scattered band's centre line, the cut side, the linear statement read back, a bend's cut columns,
+local thickness, coded gradients, the combinations table), tests/uncertainty/test_recommended.py (the grid
+minimiser of a known implausibility, 1-4 factors), tests/uncertainty/test_posterior_quantiles.py (closed-form
+quantiles), tests/story/test_measurement_order_properties.py and test_advice_order_properties.py (every number
+the ranking walk, the widen and the check-target advice quote, parsed back; the priority rule),
+tests/story/test_verdict_properties.py, tests/inputs/test_design_check_known_answers.py and
+test_design_inference_properties.py (generated textbook designs), tests/test_d_optimal_rule.py (the documented
+greedy rule of the next wave's runs), the blocked CCDs of tests/test_blocks.py and test_design_generation.py, and
+tests/test_waves.py (the stop rule over generated evidence, each quoted number parsed back).
+
+Then a second in-sample draw, seed 16, run after those tests were written and before any test was aimed at it
+(``--per-module 4`` on nine of the rows above, ``--per-module 3`` on the other sixteen): 57 killed of 84.  Of
+the 27 left, 14 are listed as equivalent or search settings (9 of them only after reading this draw: comparisons
+at a threshold to the last bit, a min() over ties, a column inserted before a reorder, abs() of a best error
+that is never negative, the sweep's unread predictions, the reserved-runs loop's empty last pass; two
+local-search and grid settings), so the draw scores
+57/79 = 72.2 % as run and 57/70 = 81.4 % with today's lists: about what tests aimed at one draw catch of
+the next.  The 13 others were then killed by the tests added for them (the CCD declared for a two-level
+factorial, replicated Box-Behnken edges and repairs toward a kind of point the design is not short of in
+tests/inputs/test_design_check_known_answers.py; the analysis sizes; the config fragment's order; units in
+running text; extension sentences; the points a wave's value is estimated on; a sharp likelihood above three
+factors and a predictive likelihood in tests/uncertainty/test_posterior_quantiles.py; a fourth level near a
+factorial one): 70/70 after.
+
+And a third, seed 17 (``--per-module 2`` on all 25 rows, after the seed-16 tests, none aimed at it): 30 killed
+of 50 as run, 60.0 %; 10 of the 20 left are equivalent or settings (9 and 1, all listed only after reading this draw), so
+30/40 = 75.0 % with today's lists.  Nine of the other ten were then killed by tests added for them (level 2's
+own tolerances in config order, the fragment's header, blocked runs in their seeded order, a
+printed level's tolerance, the no-scenarios note, same_tolerances, a diagonal covariance's update, the plausible
+band without the residual scatter, the break-the-ridge advice end to end on a grid set); one is left: the
+quantile's root choice with an unnormalised CDF (it matters only where the spline crosses q more than once).
+
+And a fourth, seed 18 (``--per-module 2``, all 25 rows, after the seed-17 tests): 38 killed of 48 as run
+(2 equivalent already listed), 79.2 %; 7 of the 10 left listed after reading it (5 equivalent, 2 settings), so
+38/41 = 92.7 % with today's lists.  Two of the other three were killed by tests added for them (axial levels
+unequally far from the centre; a set's reported error above three factors); left: criticism_runs_in_box without
+float() (a run's value may reach it as an int).  The unseen draws scored 81 %, 75 % and 93 % with today's lists,
+pooled 125/151 = 82.8 % (57/70, 30/40, 38/41), as run 125/177 = 70.6 %: the held-out score of these modules is
+likely near 80-90 % once its equivalent mutants are read, short of the 90 % aimed at unless the later rounds'
+tests generalise better than the earlier ones did.
 """
 
 from __future__ import annotations
@@ -148,6 +226,8 @@ _READ_TABLE_TESTS = [f"tests/inputs/test_stranger_tables.py::{name}" for name in
     "test_ambiguous_thousands_separator_is_not_silently_read_as_decimal_comma",
     "test_line_numbers_count_comment_and_blank_lines",
     "test_numbers_written_1e_minus_6_are_read_as_numbers")]
+# pytest's marker option: whole files whose Snakemake tests the default selection leaves out
+_NOT_WORKFLOW = "-mnot workflow"
 TABLE: dict[str, dict] = {
     "demid/sampling/grid.py": {
         "functions": None,
@@ -260,13 +340,13 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/uncertainty/test_ranking.py",
                   "tests/test_reported_numbers.py::test_ranking_reports_gain_fraction_and_contraction_in_closed_form",
-                  "tests/test_reported_numbers.py::test_next_measurement_advice_quotes_the_gains_and_fractions_of_the_ranking",
+                  "tests/test_reported_numbers.py::test_measurement_order_quotes_the_gains_and_fractions_of_the_ranking",
                   "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_unreachable_targets.py"],
     },
     "demid/next_wave.py": {
         "functions": None,
         "tests": ["tests/test_reported_numbers.py::test_next_wave_runs_each_maximise_the_determinant",
-                  "tests/test_next_wave.py", "tests/test_next_wave_properties.py"],
+                  "tests/test_next_wave.py", "tests/test_next_wave_properties.py", "tests/test_d_optimal_rule.py"],
     },
     "demid/pareto.py": {
         "functions": None,
@@ -274,11 +354,25 @@ TABLE: dict[str, dict] = {
     },
     "demid/uncertainty/posterior.py": {
         "functions": None,
-        "tests": ["tests/uncertainty/test_uncertainty.py"],
+        "tests": ["tests/uncertainty/test_posterior_quantiles.py", "tests/uncertainty/test_uncertainty.py",
+                  "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py"],
     },
     "demid/uncertainty/plausible.py": {
         "functions": None,
-        "tests": ["tests/uncertainty/test_uncertainty.py", "tests/sampling/test_set_estimators.py"],
+        "tests": ["tests/uncertainty/test_uncertainty.py", "tests/sampling/test_set_estimators.py",
+                  "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py",
+                  "tests/uncertainty/test_posterior_quantiles.py"],
+    },
+    "demid/uncertainty/recommended.py": {
+        "functions": None,
+        "tests": ["tests/uncertainty/test_recommended.py", "tests/uncertainty/test_uncertainty.py", "tests/story/test_story.py",
+                  "tests/story/test_advice_wording.py", _NOT_WORKFLOW],
+    },
+    "demid/uncertainty/material.py": {
+        "functions": None,
+        "tests": ["tests/uncertainty/test_recommended.py", "tests/uncertainty/test_uncertainty.py",
+                  "tests/uncertainty/test_own_tolerance_posteriors.py", "tests/criticism/test_unreachable_targets.py",
+                  "tests/story/test_story.py", _NOT_WORKFLOW],
     },
     "demid/paper.py": {
         "functions": None,
@@ -300,7 +394,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/tolerance.py": {
         "functions": None,
-        "tests": ["tests/test_tolerance.py", "tests/criticism/test_level2_sign_properties.py"],
+        "tests": ["tests/test_tolerance.py", "tests/criticism/test_level2_sign_properties.py", "tests/test_scenario.py",
+                  "tests/criticism/test_level2_own_tolerance.py"],
     },
     "demid/formulas.py": {
         "functions": None,
@@ -316,32 +411,69 @@ TABLE: dict[str, dict] = {
     },
     "demid/wave_value.py": {
         "functions": None,
-        "tests": ["tests/test_wave_value.py", "tests/story/test_story.py::"
-                  "test_a_wave_that_cannot_narrow_the_set_says_stop_and_one_that_can_does_not"],
+        "tests": ["tests/test_wave_value.py", "tests/story/test_story.py", "tests/story/test_advice_properties.py",
+                  _NOT_WORKFLOW],
+    },
+    "demid/waves.py": {
+        "functions": None,
+        "tests": ["tests/test_waves.py", "tests/report/test_report_reads.py", _NOT_WORKFLOW, *[
+            f"tests/workflow/test_simulation.py::{name}" for name in (
+                "test_first_wave_is_the_design_generator_sheet", "test_simulation_config_errors_name_the_key",
+                "test_wave_history_gives_each_wave_fraction_of_omega_and_the_box_its_runs_were_placed_in",
+                "test_waves_stop_on_the_measured_change_the_budget_or_the_model_never_on_a_misfitting_surrogate")]],
+    },
+    "demid/admissibility.py": {
+        "functions": None,
+        "tests": ["tests/sampling/test_stored_sets.py", "tests/sampling/test_admissibility.py", "tests/story/test_story.py",
+                  _NOT_WORKFLOW],
+    },
+    "demid/numbers.py": {
+        "functions": None,
+        "tests": ["tests/test_numbers.py",
+                  "tests/inputs/test_hostile_inputs.py::test_an_unusable_number_in_a_table_is_one_line"],
     },
     "demid/story/verdicts.py": {
         "functions": None,
-        "tests": ["tests/story/test_verdicts.py"],
+        "tests": ["tests/story/test_verdicts.py", "tests/story/test_verdict_properties.py", "tests/story/test_story.py",
+                  "tests/test_physical_limits.py",
+                  "tests/combinations/test_combinations.py", "tests/report/test_report_outputs.py", _NOT_WORKFLOW],
+    },
+    "demid/story/measurements.py": {
+        "functions": None,
+        "tests": ["tests/story/test_measurement_order_properties.py", "tests/uncertainty/test_ranking.py",
+                  "tests/story/test_advice_wording.py", "tests/story/test_story.py",
+                  "tests/report/test_advice_source.py", "tests/uncertainty/test_uncertainty.py",
+                  "tests/test_reported_numbers.py", "tests/criticism/test_unreachable_targets.py", _NOT_WORKFLOW],
+    },
+    "demid/story/words.py": {
+        "functions": None,
+        "tests": ["tests/story/test_advice_wording.py", "tests/story/test_advice_properties.py", "tests/story/test_story.py",
+                  "tests/report/test_report_reads.py", "tests/plots/test_figures_print.py", _NOT_WORKFLOW],
+    },
+    "demid/story/extensions.py": {
+        "functions": None,
+        "tests": ["tests/story/test_model_extensions.py"],
     },
     "demid/blocks.py": {
         "functions": None,
-        "tests": ["tests/test_blocks.py", "tests/criticism/test_blocks_steps.py", "tests/test_blocks_properties.py"],
+        "tests": ["tests/test_blocks.py", "tests/criticism/test_blocks_steps.py", "tests/test_blocks_properties.py",
+                  "tests/inputs/test_data.py"],
     },
     "demid/combinations/axes.py": {
         "functions": None,
-        "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py"],
+        "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py",
+                  "tests/combinations/test_combination_outputs.py", "tests/story/test_verdicts.py"],
     },
     "demid/combinations/material.py": {
         "functions": None,
-        "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py"],
+        "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py",
+                  "tests/combinations/test_combination_outputs.py", "tests/report/test_advice_source.py"],
     },
     "demid/story/advice.py": {
         "functions": None,
-        "tests": ["tests/story/test_advice_wording.py", "tests/story/test_advice_properties.py",
-                  *[f"tests/story/test_story.py::{name}" for name in (
-                      "test_a_target_off_by_a_power_of_ten_gets_check_target_and_no_widening",
-                      "test_no_widening_of_an_unresolved_factor", "test_advice_round_trips_through_its_table",
-                      "test_a_wave_that_cannot_narrow_the_set_says_stop_and_one_that_can_does_not")]],
+        "tests": ["tests/story/test_advice_wording.py", "tests/story/test_advice_properties.py", "tests/story/test_story.py",
+                  "tests/story/test_advice_order_properties.py", "tests/test_physical_limits.py", "tests/report/test_report_reads.py", "tests/report/test_report_text.py",
+                  _NOT_WORKFLOW],
     },
     "demid/criticism/one_run.py": {
         "functions": None,
@@ -349,7 +481,21 @@ TABLE: dict[str, dict] = {
     },
     "demid/design_inference.py": {
         "functions": None,
-        "tests": ["tests/inputs/test_design_inference.py"],
+        "tests": ["tests/inputs/test_design_inference_properties.py", "tests/inputs/test_design_inference.py"],
+    },
+    "demid/design_generation.py": {
+        "functions": None,
+        "tests": ["tests/inputs/test_design_generation.py"],
+    },
+    "demid/design_check.py": {
+        "functions": None,
+        "tests": ["tests/inputs/test_design_check_known_answers.py", "tests/inputs/test_data.py",
+                  "tests/inputs/test_design.py", "tests/inputs/test_cli.py", "tests/inputs/test_design_generation.py", *[
+                      f"tests/inputs/test_stranger_tables.py::{name}" for name in (
+                          "test_valid_designs_validate_and_are_coded_by_their_geometry",
+                          "test_mistyped_factor_cell_is_located_not_absorbed_into_the_coding",
+                          "test_ccd_whose_centre_runs_all_failed_is_refused",
+                          "test_failed_run_with_a_value_left_in_its_cell_is_an_error")]],
     },
     "demid/criticism/discrimination.py": {
         "functions": None,
@@ -374,7 +520,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_own_tolerance_posteriors.py",
                   "tests/uncertainty/test_uncertainty.py::test_measurement_sigma_sources",
                   "tests/uncertainty/test_uncertainty.py::"
-                  "test_measurement_sigma_of_a_negative_target_and_a_response_without_config"],
+                  "test_measurement_sigma_of_a_negative_target_and_a_response_without_config",
+                  "tests/test_wave_value.py", "tests/sampling/test_stored_sets.py"],
     },
     "demid/io.py": {
         "functions": None,
@@ -448,7 +595,50 @@ EQUIVALENT: dict[str, str] = {
     "demid/wave_value.py::_evaluation_points::True => False#0":
         "the unscrambled Sobol sequence is an equally stratified low-discrepancy sample of the same size: "
         "the fraction is estimated as well",
+    "demid/wave_value.py::expected_contraction::contraction < STOP_CONTRACTION => contraction <= STOP_CONTRACTION#0":
+        "contraction is 1 - r with r a ratio in [0, 1]; 1 - r is exact there (Sterbenz) and 1 - 0.1 is no double, "
+        "so the contraction is never exactly 0.1",
+    "demid/wave_value.py::expected_contraction::np.isfinite(contraction) and contraction < STOP_CONTRACTION => "
+    "contraction < STOP_CONTRACTION#0":
+        "the contraction is NaN (an empty set) or finite: NaN < 0.1 is False as well",
+    "demid/design_inference.py::InferredDesign.describe::max(self.alpha) - min(self.alpha) <= 0.001 * max(self.alpha) "
+    "=> max(self.alpha) - min(self.alpha) < 0.001 * max(self.alpha)#0":
+        "differs only for axial distances whose spread is exactly a thousandth of the largest, to the last bit",
+    "demid/story/measurements.py::measurement_order::by_frac[2] != best and by_frac[1] < f_new => by_frac[2] != best#0":
+        "best is the first option and min() returns the first of equal fractions: an option other than best is "
+        "by_frac only when its fraction is strictly smaller than best's",
+    "demid/design_check.py::odd_level_values::2 => 1#1":
+        "counts.max() < 2 with two or more distinct values means every count is 1, which the next test "
+        "((counts == counts.max()).sum() > 1) skips as well",
+    "demid/story/extensions.py::_fractions::0 => -1#0":
+        "identifiability.csv repeats a scenario's fraction on each factor's row: first and last agree",
+    "demid/story/extensions.py::model_extensions::extends.get(name) or '' => extends.get(name)#0":
+        "None and '' both fail 'not base', and base is read nowhere else before that test",
+    "demid/story/verdicts.py::verdict_display::np.isfinite(lo) and np.isfinite(hi) => np.isfinite(lo)#0":
+        "an interval's ends are NaN together (an empty set, or a row missing from one table), never one alone",
+    "demid/tolerance.py::same_tolerances::abs(float(v) - tolerance) <= 1e-12 * tolerance => "
+    "abs(float(v) - tolerance) < 1e-12 * tolerance#0":
+        "differs only for an own tolerance exactly 1e-12 (relative) from the scenario's, to the last bit",
+    "demid/uncertainty/sweep.py::tolerance_sweep::sorted({o for obs, _ in scenarios.values() for o in obs}) => "
+    "{o for obs, _ in scenarios.values() for o in obs}#0":
+        "only the order of the shared prediction frame's columns changes; they are read by name",
+    "demid/uncertainty/plausible.py::summarise_set::2 => 1#2":
+        "without the shared grid predictions fraction_with_error predicts the same odd grid itself: the same "
+        "numbers, at the cost of more predictions",
+    "demid/design_inference.py::_symmetric::unit > 0 => unit >= 0#0":
+        "the unit is half the distance between two distinct sorted levels: never 0",
+    "demid/waves.py::wave_summary::float(plausible['robust_fraction_pct'].iloc[0]) => "
+    "plausible['robust_fraction_pct'].iloc[0]#0": _NUMPY_FLOAT + " (the summary is written to JSON through io._clean)",
+    "demid/uncertainty/material.py::analyse_material::all((o in surrogates for o in widest.observables)) => "
+    "any((o in surrogates for o in widest.observables))#0":
+        "every scenario's observables have surrogates by this line (the plausible tables above raise KeyError "
+        "first for one without) and a scenario has at least one observable: all() and any() are both true",
     # --- verdicts
+    "demid/story/words.py::labelled::v and v != k => v != k#0":
+        "a label is never empty (MaterialSpec fills an absent one with the key), so 'v and' is always true",
+    "demid/story/words.py::labelled::v and v != k => v or v != k#0":
+        "a label is never empty (MaterialSpec fills an absent one with the key): the extra entries map a key to "
+        "itself, and replacing a key by itself leaves the text as it was",
     "demid/story/verdicts.py::verdict_frame::float(strict['upper'].iloc[0]) => strict['upper'].iloc[0]#0":
         _NUMPY_FLOAT + " (the bounds of identifiability.csv are a float column: NaN marks an empty set)",
     # --- ranking
@@ -461,11 +651,27 @@ EQUIVALENT: dict[str, str] = {
         "value is a float or a numpy floating, both of which have is_integer()",
     "demid/blocks.py::check_blocks::np.abs(coded) < _ZERO => np.abs(coded) <= _ZERO#0":
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
+    "demid/blocks.py::check_blocks::int(np.sum(labels == lv)) => np.sum(labels == lv)#0":
+        "a numpy integer compares, prints and is written to JSON (io._clean) as the same int",
+    "demid/blocks.py::check_blocks::int(np.sum((labels == lv) & centre)) => np.sum((labels == lv) & centre)#0":
+        "a numpy integer compares, prints and is written to JSON (io._clean) as the same int",
+    "demid/blocks.py::ccd_blocks::np.abs(coded) > _ZERO => np.abs(coded) >= _ZERO#0":
+        "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
     # --- next wave
+    "demid/next_wave.py::next_box::0 => -1#0": "to_search of one point returns one row: its first and last agree",
+    "demid/next_wave.py::propose_runs::1 => 2#0":
+        "the extra pass of range(count + 2) is reached only when no pass broke; it plans a design of -1 runs, "
+        "empty like the last pass's design of 0 runs, so the separating runs are chosen again from the same points",
+    "demid/next_wave.py::_design::1 => 2#0":
+        "reshape(-2, k): numpy takes any negative size as the one unknown dimension, so the shape is the same "
+        "(checked with numpy 2.4.6)",
     "demid/next_wave.py::propose_runs::1 => 2#2":
         "reshape(-2, k): numpy takes any negative size as the one unknown dimension, so the shape is the same "
         "(checked with numpy 2.4.6)",
     # --- combinations
+    "demid/combinations/axes.py::principal_axes::int(len(points)) => len(points)#0": "len() returns an int already",
+    "demid/combinations/axes.py::linear_statement::abs(abs(coef) - 1) < 1e-12 => abs(abs(coef) - 1) <= 1e-12#0":
+        "differs only for a shown coefficient exactly 1e-12 from 1, to the last bit",
     "demid/combinations/axes.py::linear_statement::float(a[np.argmax(np.abs(normal))]) => "
     "a[np.argmax(np.abs(normal))]#0": _NUMPY_FLOAT + " (lead only divides and is formatted)",
     "demid/combinations/material.py::_cut_side::proj.min() <= box_min + tol => proj.min() < box_min + tol#0":
@@ -478,6 +684,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
         "the product with the float abs(float(target)) is a float either way",
     "demid/tolerance.py::rescaled_surrogate::0 => -1#0": "a polynomial has one intercept term: first and last agree",
+    "demid/tolerance.py::observable_band::float(target) => target#1":
+        "float(tolerance) * abs(target) is the same float for an int or a float target",
     "demid/tolerance.py::rescaled_surrogate::float(target) => target#0":
         "target is a number: its product with a float is the same float",
     "demid/tolerance.py::rescaled_surrogate::float(surrogate.resid_var) => surrogate.resid_var#0":
@@ -544,6 +752,20 @@ EQUIVALENT: dict[str, str] = {
     "demid/transcription/engine.py::_statistics::n = np.broadcast_to(n, sse.shape) => pass#0":
         "numpy broadcasts the scalar n in every later expression: the same arrays result",
     # --- uncertainty
+    "demid/story/extensions.py::extension_sentence::abs(row['best_error_after']) => row['best_error_after']#0":
+        "best_error_after is level 2's best_max_error, a largest weighted |relative error|: never negative "
+        "(NaN when absent, and abs(NaN) is NaN)",
+    "demid/admissibility.py::evaluate_scenarios::0 => 1#0":
+        "where the scenario column is inserted does not matter: the table is returned as table[columns], in the "
+        "fixed order of columns",
+    "demid/uncertainty/sweep.py::tolerance_sweep::z == 0 and uses_grid(domain.dim) => uses_grid(domain.dim)#0":
+        "summarise_set reads grid predictions only for z = 0: the extra predictions for z > 0 are made and never "
+        "read",
+    "demid/story/extensions.py::extension_sentence::abs(row['best_error_before']) => row['best_error_before']#0":
+        "best_error_before is level 2's best_max_error, a largest weighted |relative error|: never negative "
+        "(NaN when absent, and abs(NaN) is NaN)",
+    "demid/uncertainty/recommended.py::recommended_point::0 => -1#0":
+        "contains() of the one point points[best:best + 1] returns one value: its first and last are the same",
     "demid/sampling/polish.py::_polish::0 => -1#6": "sign is +1.0 or -1.0: 'sign > 0' and 'sign > -1' agree",
     # --- data
     "demid/data.py::read_table::float(run_val) => run_val#0": "parse_number returns a float already",
@@ -641,6 +863,15 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/sweep.py::tolerance_sweep::0 => -1#2":
         "with the strict set never reused, summarise_set recomputes it by evaluate_set, whose exact set takes no "
         "resolution (exact_set_on_domain has no n): the same numbers, at the cost of a second evaluation",
+    "demid/uncertainty/sweep.py::tolerance_sweep::0 => 1#1":
+        "the shared grid predictions are then made for z = 1 instead of z = 0; summarise_set reads them only for "
+        "z = 0, and without them each strict set predicts the same grid itself (predict_grid): the same numbers, "
+        "at the cost of more predictions",
+    "demid/uncertainty/sweep.py::tolerance_sweep::0 => 1#2":
+        "with the strict set never reused, summarise_set recomputes it by evaluate_set, whose exact set takes no "
+        "resolution (exact_set_on_domain has no n): the same numbers, at the cost of a second evaluation",
+    "demid/uncertainty/sweep.py::tolerance_sweep::float(nominal) => nominal#0":
+        "a scenario's tolerance lies strictly between 0 and 1 (the schema), so it is a float already",
     "demid/uncertainty/sweep.py::tolerance_sweep::float(nominal) => nominal#1":
         "eps == nominal compares numbers: an int nominal equals its float",
     "demid/uncertainty/sweep.py::tolerance_sweep::given is not None and given.exact is not None => "
@@ -673,6 +904,30 @@ SETTINGS: dict[str, str] = {
     "demid/sampling/polish.py::start_points::min(n, int(1000000.0 ** (1.0 / d))) => "
     "max(n, int(1000000.0 ** (1.0 / d)))#0":
         "the resolution of the grid the polishing starts from when no node is admissible",
+    "demid/uncertainty/material.py::recommended_sizes::401 => 402#1":
+        "the resolution of the two-factor posteriors' grid (401 nodes per axis, chosen as converged)",
+    "demid/uncertainty/material.py::analyse_material::0 => 1#0":
+        "the default scramble seed of the Sobol points above three factors (the pipeline passes none): another "
+        "fixed seed gives an equally stratified, equally deterministic sample",
+    "demid/uncertainty/ranking.py::_met_together::500 => 499#0":
+        "L-BFGS-B's iteration cap in the search for a point meeting every target: it converges in far fewer",
+    "demid/combinations/axes.py::band_curve::12 => 13#0":
+        "the decimals a coordinate is rounded to before grid columns are told apart (12 or 13: both far above the "
+        "round-off of grid coordinates, far below a grid step)",
+    "demid/uncertainty/material.py::recommended_sizes::14 => 15#0":
+        "the number of Sobol points of the sweep above three factors (2^14, a balanced sample either way)",
+    "demid/uncertainty/ranking.py::_met_together::8 => 9#0":
+        "the number of local starts of the search for a point meeting every target (the best eight grid nodes)",
+    "demid/wave_value.py::_evaluation_points::2 => 3#0":
+        "the resolution of the grid the expected shrink is estimated on in three factors (201 instead of 41 nodes "
+        "per axis)",
+    "demid/wave_value.py::_evaluation_points::14 => 15#0":
+        "the number of Sobol points above three factors (2^14) the expected shrink is estimated on",
+    "demid/uncertainty/sweep.py::tolerance_sweep::False => True#0":
+        "whether the sweep's spans are polished by a local search or read off the grid or Sobol sample (the "
+        "strict sets of polynomials in up to three factors, the pipeline's, are exact either way)",
+    "demid/uncertainty/sweep.py::tolerance_sweep::0 => -1#0":
+        "the default scramble seed of the sweep's Sobol points above three factors (the pipeline passes its own)",
     "demid/uncertainty/sweep.py::tolerance_sweep::2 ** 14 => 2 * 14#0":
         "the default number of scrambled Sobol points (more than three factors); the pipeline passes its own",
 }

@@ -115,3 +115,12 @@ def test_plausible_basis_names_each_source_of_the_band():
     assert text == "config sigma = 0.2; own tolerance ±0.5 mm; discrepancy δ = 0.3"
     relative = _spec(SimpleNamespace(**vars(_response("y", 4.0, tolerance=0.05)), unit="-"))
     assert plausible_basis(relative, "y").endswith("; own tolerance 0.05")
+
+
+def test_own_tolerances_equal_to_the_scenarios_to_round_off_are_the_same_tolerance():
+    from demid.tolerance import same_tolerances
+
+    assert same_tolerances(0.05, {"a": 0.05, "b": 0.05 * (1 + 1e-13)}) and same_tolerances(0.05, {})
+    assert same_tolerances(0.05, None)
+    assert not same_tolerances(0.05, {"a": 0.05, "b": 0.02})
+    assert not same_tolerances(0.05, {"a": 0.05 * (1 + 1e-9)})

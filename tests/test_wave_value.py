@@ -138,3 +138,39 @@ def test_fractions_in_three_and_four_factors_match_a_dense_random_sample(k):
     assert 5 < fractions[0] < 95  # a set neither empty nor everything
     assert value["plausible_fraction_pct"] == pytest.approx(fractions[0], abs=1.0)
     assert value["expected_fraction_pct"] == pytest.approx(fractions[1], abs=1.0)
+
+
+@pytest.mark.parametrize("log", [(False,), (False, True), (True, False, False), (False, True, False, True),
+                                 (True,) * 5])
+def test_the_points_a_waves_value_is_estimated_on_fill_the_search_range(log):
+    """Grid nodes up to three factors, scrambled Sobol points above: inside the search range and reaching within
+    a few per cent of both ends of every factor."""
+    from demid.sampling.domain import Domain
+    from demid.wave_value import _evaluation_points
+
+    d = len(log)
+    lower = tuple(0.01 * (i + 1) if lg else -3.0 + i for i, lg in enumerate(log))
+    upper = tuple(100.0 * (i + 1) if lg else 5.0 + 2 * i for i, lg in enumerate(log))
+    domain = Domain(tuple(f"f{i}" for i in range(d)), lower, upper, log)
+    lo, hi = domain.search_bounds()
+    points = domain.to_search(_evaluation_points(domain))
+    assert np.all(points >= lo - 1e-9) and np.all(points <= hi + 1e-9)
+    assert np.all(points.min(axis=0) <= lo + 0.03 * (hi - lo)) and np.all(points.max(axis=0) >= hi - 0.03 * (hi - lo))
+
+
+def test_new_runs_shrink_the_means_error_by_the_bayesian_update_of_a_diagonal_covariance():
+    """A fit whose covariance has zeros off its diagonal still learns from new runs: the updated covariance is
+    (C⁻¹ + F'F/s²)⁻¹, here with every matrix invertible."""
+    from demid.design import model_matrix, quadratic_terms
+    from demid.surrogate import Surrogate
+
+    terms = quadratic_terms(2)
+    cov = np.diag(np.linspace(0.5, 2.0, len(terms)))
+    surrogate = Surrogate("y", ["a", "b"], terms, np.ones(len(terms)), cov, 0.8, 7)
+    new_runs = np.array([[0.5, -0.5], [1.0, 1.0], [-1.0, 0.0], [0.0, 0.3], [0.2, 0.9], [-0.7, -0.8], [0.9, -0.2]])
+    points = np.array([[0.0, 0.0], [0.5, -0.5], [0.8, 0.8]])
+    found = _updated_se(surrogate, points, new_runs)
+    f_new, f = model_matrix(new_runs, terms), model_matrix(points, terms)
+    updated = np.linalg.inv(np.linalg.inv(cov) + f_new.T @ f_new / 0.8)
+    assert np.allclose(found, np.sqrt(np.einsum("ij,jk,ik->i", f, updated, f)), rtol=1e-9)
+    assert np.all(found < surrogate.se_mean(points))

@@ -92,6 +92,8 @@ def test_sets_with_an_unreachable_target_rank_last_without_a_gain():
     assert "discrepancy between simulation and experiment" in advice[0]
     assert "y1" not in " ".join(advice[1:])  # the advice proper leaves the unreachable target out
     assert result.unreachable == ("y1", "y1+y2")
+    assert [n for n in result.notes if n.startswith("Sets with targets out of reach (y1, y1+y2): no point")]
+    assert not [n for n in result.notes if n.startswith("No scenarios configured")]
     reachable, _ = _linear_material(19.0)
     ranked = analyse_material(reachable, _linear_material(19.0)[1], tolerances=[0.02]).ranking
     assert ranked["targets_reachable"].all() and ranked["information_gain_bits"].notna().all()

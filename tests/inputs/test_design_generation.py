@@ -175,3 +175,69 @@ def test_every_option_has_help():
 
 def test_parse_factor():
     assert parse_factor("mu_r=0.05:0.35") == FactorRange("mu_r", 0.05, 0.35)
+
+
+@pytest.mark.parametrize("k", [2, 3, 4])
+@pytest.mark.parametrize("blocks", [1, 2, 3, 4])
+@pytest.mark.parametrize("centres", [1, 2, 3, 5])
+def test_a_ccd_is_written_in_two_blocks_and_from_three_factors_in_three_each_with_a_centre_run(k, blocks, centres):
+    """2 blocks (factorial | axial) for any CCD, 3 (two half-factorials | axial) from three factors on; each block
+    needs a centre run; 1 block is no blocking."""
+    factors = [FactorRange(f"x{i}", 0.0, 1.0 + i) for i in range(k)]
+    allowed = blocks == 1 or (blocks == 2 or (blocks == 3 and k >= 3))
+    if not allowed:
+        with pytest.raises(InputError, match=f"--blocks: a {k}-factor CCD is run in 2 blocks .*found {blocks}"):
+            generate_sheet("ccd", factors, center_runs=centres, blocks=blocks)
+        return
+    if blocks > centres:
+        with pytest.raises(InputError, match=f"--center-runs: {blocks} blocks need a centre run each, found "
+                                             f"{centres} centre runs"):
+            generate_sheet("ccd", factors, center_runs=centres, blocks=blocks)
+        return
+    frame = generate_sheet("ccd", factors, center_runs=centres, blocks=blocks, seed=3).to_frame()
+    if blocks == 1:
+        assert "block" not in frame
+        return
+    assert sorted(set(frame["block"])) == list(range(1, blocks + 1))
+    assert list(frame["block"]) == sorted(frame["block"])  # block after block
+    coded = frame[[f.name for f in factors]].to_numpy() / np.array([1.0 + i for i in range(k)]) * 2 - 1
+    centre = np.all(np.abs(coded) < 1e-9, axis=1)
+    axial = ~centre & np.any(np.abs(coded) < 1e-9, axis=1)
+    assert set(frame.loc[axial, "block"]) == {blocks}
+    assert all(centre[frame["block"] == b].any() for b in range(1, blocks + 1))
+
+
+def test_the_config_fragment_keeps_the_factors_in_the_sheets_order():
+    from demid.design_generation import fragment_yaml
+
+    factors = [FactorRange("zeta", 1.0, 2.0), FactorRange("alpha", 0.1, 0.9), FactorRange("mu", 3.0, 5.0)]
+    sheet = generate_sheet("ccd", factors, center_runs=3)
+    material = yaml.safe_load(fragment_yaml(sheet, "m", "m.csv", responses=("y2", "y1")))["materials"]["m"]
+    assert list(material) == ["data", "design", "factors", "responses"]
+    assert list(material["factors"]) == ["zeta", "alpha", "mu"] and list(material["responses"]) == ["y2", "y1"]
+    assert material["factors"]["alpha"] == {"lower": 0.1, "upper": 0.9}
+
+
+def test_a_fragment_opens_with_what_to_add_before_the_pipeline_runs():
+    from demid.design_generation import fragment_yaml
+
+    sheet = generate_sheet("ccd", [FactorRange("a", 0.0, 1.0), FactorRange("b", 1.0, 2.0)], center_runs=3)
+    text = fragment_yaml(sheet, "m", "m.csv")
+    assert text.startswith("# Generated with the run sheet; add `responses:`")
+    assert "# A factor with a physical limit takes `limits:`" in text
+    assert fragment_yaml(sheet, "m", "m.csv", responses=("y",)).startswith(
+        "# Generated with the run sheet; add a target to each response that is measured,")
+
+
+@pytest.mark.parametrize("k, blocks", [(5, 2), (5, 3), (6, 3)])
+def test_blocked_runs_keep_the_seeded_random_order_within_each_block(k, blocks):
+    """Block after block, and within a block the order the seed's permutation gives its runs."""
+    from demid.design import ccd_points
+
+    factors = [FactorRange(f"x{i}", 0.0, 1.0) for i in range(k)]
+    sheet = generate_sheet("ccd", factors, center_runs=6, blocks=blocks, seed=9)
+    n = len(sheet.coded)
+    permutation = np.random.default_rng(9).permutation(n)
+    expected = [i for b in range(1, blocks + 1) for i in permutation if sheet.blocks[i] == b]
+    assert list(sheet.order) == expected
+    assert np.allclose(sheet.coded, ccd_points(k, sheet.alpha, 6))

@@ -151,3 +151,44 @@ def test_the_ranking_in_words_on_a_surrogate_that_does_not_predict_says_so_to_on
     # 1.2222 -> 1, 2.0123 -> 2, 3.2345 -> 3, 100 (1 - 3.456 / 20) = 82.72 -> 80, 3.456 -> 3
     assert rough[2] == ("From D, adding S gains 1 bits (2 -> 3) and shrinks the admissible fraction by 80 % "
                         "(20 % -> 3 %).")
+
+
+def test_advice_read_back_from_its_table_keeps_each_item_and_its_next_step():
+    """tables/advice.csv read back (every cell a string, an empty one NaN) gives the same items; no table, or an
+    empty one, gives no advice; the next step is the first decision among the kinds the summary gives, the
+    others of those kinds follow in their order."""
+    from demid.story import AdviceItem, StudyAdvice
+
+    items = [AdviceItem("m", "add_observable", "", "", "S", "Measure S.", False),
+             AdviceItem("m", "widen", "a", "upper", "", "Widen a.", True),
+             AdviceItem("n", "stop", "", "", "", "Stop.", True),
+             AdviceItem("m", "measurement_order", "", "", "", "The order.", False),
+             AdviceItem("m", "next_runs", "", "", "", "Run nine more.", False)]
+    table = StudyAdvice(items).to_frame()
+    read = StudyAdvice.from_frame(table.astype(str).replace({"": float("nan")}))
+    assert read.items == items
+    assert StudyAdvice.from_frame(None).items == [] and StudyAdvice.from_frame(table.iloc[0:0]).items == []
+    assert read.next_step("m") == ("Widen a.", ["Measure S.", "Run nine more."])
+    assert read.next_step("n") == ("Stop.", [])
+    assert read.texts("m", kinds=("measurement_order", "widen")) == ["Widen a.", "The order."]
+    assert read.texts("n") == ["Stop."]
+
+
+@pytest.mark.parametrize("unit, text", [("", "–"), ("-", "–"), (" - ", "–"), ("J m^-2", "J m⁻²"), ("m^{1.5}", "m¹·⁵"),
+                                        ("kg m^-3 s^2", "kg m⁻³ s²"), ("Pa", "Pa")])
+def test_a_unit_in_running_text_has_superscript_powers_and_a_dash_when_dimensionless(unit, text):
+    from demid.story.words import unit_text
+
+    assert unit_text(unit) == text
+
+
+def test_level2s_own_tolerances_are_read_back_in_the_config_order_of_its_observables():
+    """JSON sorts its keys (d10 before d5, a before z): the observables' own order is restored."""
+    from demid.story.words import level2_own_tolerances
+
+    level2 = {"tolerance": 0.05, "observables": ["z", "d5", "d10"], "tolerances": {"d10": 0.05, "d5": 0.02, "z": 0.1}}
+    assert list(level2_own_tolerances(level2).items()) == [("z", 0.1), ("d5", 0.02), ("d10", 0.05)]
+    # without the observables (an older result) the keys come in natural order
+    older = {"tolerance": 0.05, "tolerances": {"d10": 0.05, "d5": 0.02}}
+    assert list(level2_own_tolerances(older)) == ["d5", "d10"]
+    assert level2_own_tolerances({"tolerance": 0.05, "observables": ["a"], "tolerances": {"a": 0.05}}) is None

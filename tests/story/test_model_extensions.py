@@ -114,3 +114,23 @@ def test_the_data_dictionary_describes_the_table_columns():
     described = rows[rows["table"] == "model_extensions.csv"].set_index("column")
     assert list(described.index) == MODEL_EXTENSION_COLUMNS
     assert described.loc["feasible_fraction_after_pct", "unit"] == "% of Ω"
+
+
+@pytest.mark.parametrize("before, after, verb, grow, shares", [
+    (0.5, 0.8, "falls", "grows", ("0.5 % of Ω", "0.8 % of Ω")),      # shares below 1 % are shares, not empty
+    (0.0, 0.3, "falls", "grows", ("empty", "0.3 % of Ω")),
+    (12.5, 12.5, "falls", "does not grow", ("12.5 % of Ω", "12.5 % of Ω")),
+])
+def test_an_extension_sentence_quotes_each_share_of_omega_and_which_way_it_moved(before, after, verb, grow, shares):
+    row = {"material": "ext", "extends": "base", "added_factors": "mu_r+e", "best_error_before": 0.1,
+           "best_error_after": 0.05, "feasible_fraction_before_pct": before, "feasible_fraction_after_pct": after}
+    text = extension_sentence(row, {}, {"mu_r": "μ_r"}, "S")
+    assert text.startswith("Adding μ_r, e to the model of base (ext): the best point's largest error falls from "
+                           "10 % to 5 %")
+    assert f"the admissible set of *S* {grow} from {shares[0]} to {shares[1]}." in text
+
+
+def test_a_material_extending_one_not_in_the_study_gives_no_row():
+    specs = {"ext": MaterialSpec.from_material("ext", EXTENDED)}
+    table = model_extensions(specs, {"ext": "base"}, {"ext": {}}, _identifiability([("ext", "aor", 10.0)]))
+    assert table.empty and list(table.columns) == MODEL_EXTENSION_COLUMNS

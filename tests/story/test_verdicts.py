@@ -158,3 +158,13 @@ def test_the_verdict_width_thresholds_are_written_once():
                         written.setdefault(node.value.value, []).append(f"{path.name}:{target.id}")
     assert written == {0.10: ["domain.py:IDENTIFIED_MAX_WIDTH"], 0.90: ["domain.py:UNRESOLVED_MIN_WIDTH"]}, written
     assert (axes.IDENTIFIED_MAX_WIDTH, axes.FREE_MIN_WIDTH) == (IDENTIFIED_MAX_WIDTH, UNRESOLVED_MIN_WIDTH)
+
+
+@pytest.mark.parametrize("lower, upper", [(np.nan, 0.5), (0.2, np.nan), (np.nan, np.nan), (-np.inf, 0.5),
+                                          (0.2, np.inf)])
+def test_an_interval_with_an_end_missing_has_no_admissible_point(lower, upper):
+    from demid.story.verdicts import factor_verdict
+
+    verdict, width = factor_verdict(lower, upper, 0.0, 1.0)
+    assert verdict == "no admissible point" and np.isnan(width)
+    assert factor_verdict(0.2, 0.5, 0.0, 1.0)[0] != "no admissible point"
