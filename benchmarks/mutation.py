@@ -142,12 +142,32 @@ ROOT = Path(__file__).resolve().parents[1]
 _READ_TABLE_TESTS = [f"tests/inputs/test_stranger_tables.py::{name}" for name in (
     "test_valid_designs_validate_and_are_coded_by_their_geometry",
     "test_mistyped_factor_cell_is_located_not_absorbed_into_the_coding",
-    "test_spherical_ccd_whose_centre_runs_all_failed_is_refused",
+    "test_ccd_whose_centre_runs_all_failed_is_refused",
     "test_failed_run_with_a_value_left_in_its_cell_is_an_error",
     "test_partial_failure_is_written_as_nan_with_status_ok",
     "test_ambiguous_thousands_separator_is_not_silently_read_as_decimal_comma",
     "test_line_numbers_count_comment_and_blank_lines",
     "test_numbers_written_1e_minus_6_are_read_as_numbers")]
+# the exact sets' tests: exact.py and the plane-by-plane integration, root finding and quadrature it is built on
+_EXACT_SET_TESTS = ["tests/sampling/test_exact_sets.py", "tests/sampling/test_quadrature_error_estimate.py",
+                    "tests/sampling/test_exact_error_properties.py", "tests/test_reported_numbers.py",
+                    "tests/sampling/test_reference_point.py", "tests/sampling/test_set_estimators.py",
+                    "tests/test_core_contracts.py"]
+# level 1's naming of causes (aliasing, extensions, naming, slips): the criticism's planted effects and its
+# confirming and deciding runs; the level-2, figure and 3-factor tests exercise other modules, and the slowest
+# confirming-runs test repeats an outlier-or-slip case of the faster ones at four times their cost
+_NAMING_TESTS = ["tests/criticism/test_criticism.py", "tests/criticism/test_catalogue_known_answers.py",
+                 "tests/criticism/test_level1_known_answers.py", "tests/criticism/test_confirming_runs.py",
+                 "tests/criticism/test_scatter_covariates.py", "tests/criticism/test_linear_memory.py",
+                 "-knot level2 and not residual_figure and not 3f and not ambiguous_verdicts_slip"]
+# the level-2 search's tests
+_LEVEL2_TESTS = ["tests/criticism/test_level2_known_answers.py", "tests/test_reported_numbers.py",
+                 "tests/criticism/test_criticism.py", "tests/criticism/test_edges.py",
+                 "tests/criticism/test_unreachable_targets.py", "-klevel2 or edge or reach"]
+# the transcription check's tests (the CLI ones run the check end to end on a small table)
+_TRANSCRIPTION_TESTS = ["tests/transcription/test_transcription.py", "tests/transcription/test_transcription_printed_inputs.py",
+                        "tests/transcription/test_linear_memory.py", "tests/inputs/test_one_replicate_rule.py",
+                        "tests/test_statistics_known_answers.py", "tests/test_core_contracts.py"]
 TABLE: dict[str, dict] = {
     "demid/sampling/grid.py": {
         "functions": None,
@@ -163,8 +183,26 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_edges.py::test_at_bound_tolerance_is_relative_to_the_range_and_in_log_units"],
     },
     "demid/sampling/residuals.py": {
-        "functions": ["relative_residuals"],
-        "tests": ["tests/sampling/test_admissibility.py", "tests/test_core_contracts.py"],
+        "functions": None,
+        "tests": ["tests/sampling/test_admissibility.py", "tests/sampling/test_set_estimators.py",
+                  "tests/test_scenario.py",
+                  "tests/uncertainty/test_uncertainty.py", "tests/test_core_contracts.py"],
+    },
+    "demid/sampling/planes.py": {
+        "functions": None,
+        "tests": _EXACT_SET_TESTS,
+    },
+    "demid/sampling/roots.py": {
+        "functions": None,
+        "tests": _EXACT_SET_TESTS,
+    },
+    "demid/sampling/quadrature.py": {
+        "functions": None,
+        "tests": _EXACT_SET_TESTS,
+    },
+    "demid/sampling/stored.py": {
+        "functions": None,
+        "tests": ["tests/sampling/test_stored_sets.py"],
     },
     "demid/sampling/sobol.py": {
         "functions": ["sobol_admissible_set", "_extreme_points", "sobol_fraction"],
@@ -180,13 +218,15 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/test_surrogate.py", "tests/test_statistics_known_answers.py", "tests/test_core_contracts.py"],
     },
     "demid/precision.py": {
-        "functions": ["round_off_floor", "round_off_only"],
-        "tests": ["tests/test_surrogate.py", "tests/inputs/test_factor_round_off.py", "tests/criticism/test_noise_free.py"],
+        "functions": None,
+        "tests": ["tests/test_precision.py", "tests/inputs/test_factor_round_off.py", "tests/test_surrogate.py",
+                  "tests/criticism/test_noise_free.py"],
     },
     "demid/criticism/models.py": {
-        "functions": ["infer_axial_distance", "orthonormal_basis", "residualize", "leverages", "boxcox", "inv_boxcox",
-                      "aicc_of"],
+        "functions": None,
         "tests": ["tests/test_statistics_known_answers.py", "tests/criticism/test_criticism.py", "tests/test_core_contracts.py",
+                  "tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_level1_known_answers.py",
+                  "tests/criticism/test_linear_memory.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/catalogue.py": {
@@ -199,10 +239,9 @@ TABLE: dict[str, dict] = {
                   "errors_are_the_refits", "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/transcription/printed.py": {
-        "functions": ["PrintedValue.half_width", "PrintedValue.agrees", "PrintedValue.misfit", "_decimals_of",
-                      "parse_printed", "positional", "_printed_column", "_precision", "_irregularity"],
-        "tests": ["tests/transcription/test_transcription.py", "tests/test_statistics_known_answers.py",
-                  "tests/transcription/test_transcription_printed_inputs.py", "tests/test_core_contracts.py"],
+        "functions": None,
+        "tests": [*_TRANSCRIPTION_TESTS, "tests/inputs/test_stranger_tables.py::test_an_impossible_published_statistic_is_refused",
+                  "tests/inputs/test_stranger_tables.py::test_possible_published_statistics_pass"],
     },
     "demid/transcription/typos.py": {
         "functions": None,
@@ -212,10 +251,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/sampling/exact.py": {
         "functions": None,
-        "tests": ["tests/sampling/test_exact_sets.py", "tests/sampling/test_quadrature_error_estimate.py",
-                  "tests/sampling/test_exact_error_properties.py",
-                  "tests/test_reported_numbers.py", "tests/sampling/test_reference_point.py",
-                  "tests/sampling/test_set_estimators.py", "tests/test_core_contracts.py"],
+        "tests": _EXACT_SET_TESTS,
     },
     "demid/sampling/evaluate.py": {
         "functions": None,
@@ -232,9 +268,27 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/level2.py": {
         "functions": None,
-        "tests": ["tests/criticism/test_level2_known_answers.py", "tests/test_reported_numbers.py",
-                  "tests/criticism/test_criticism.py", "tests/criticism/test_edges.py",
-                  "tests/criticism/test_unreachable_targets.py", "-klevel2 or edge or reach"],
+        "tests": _LEVEL2_TESTS,
+    },
+    "demid/criticism/searches.py": {
+        "functions": None,
+        "tests": _LEVEL2_TESTS,
+    },
+    "demid/criticism/aliasing.py": {
+        "functions": None,
+        "tests": _NAMING_TESTS,
+    },
+    "demid/criticism/extensions.py": {
+        "functions": None,
+        "tests": _NAMING_TESTS,
+    },
+    "demid/criticism/naming.py": {
+        "functions": None,
+        "tests": _NAMING_TESTS,
+    },
+    "demid/criticism/slips.py": {
+        "functions": None,
+        "tests": _NAMING_TESTS,
     },
     "demid/criticism/verdict.py": {
         "functions": None,
@@ -285,13 +339,40 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/report/test_paper.py"],
     },
     "demid/transcription/engine.py": {
-        "functions": ["_statistics", "lack_of_fit_p"],
-        "tests": ["tests/transcription/test_transcription.py", "tests/test_core_contracts.py"],
+        "functions": None,
+        "tests": _TRANSCRIPTION_TESTS,
+    },
+    "demid/transcription/check.py": {
+        "functions": None,
+        "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_typo_stop.py", "tests/transcription/test_likely_typos.py",
+                  "tests/test_reconstruct.py", "tests/inputs/test_cli.py::test_check_transcription_cli_finds_planted_slip",
+                  "tests/inputs/test_cli.py::test_check_transcription_cli_consistent_exit_0"],
     },
     "demid/data.py": {
-        "functions": ["parse_number", "read_table", "infer_coding", "check_design", "check_bounds",
-                      "validate_material"],
+        "functions": None,
+        "tests": ["tests/inputs/test_data.py", "tests/test_core_contracts.py", "tests/inputs/test_stranger_tables.py",
+                  "tests/inputs/test_unit_slip_targets.py"],
+    },
+    # parse_number, infer_coding and check_design, once in data.py
+    "demid/csv_cells.py": {
+        "functions": ["parse_number", "is_number"],
         "tests": ["tests/inputs/test_data.py", "tests/test_core_contracts.py", *_READ_TABLE_TESTS],
+    },
+    "demid/design_check.py": {
+        "functions": ["_level_coding", "infer_coding", "_round_to_scale", "_ccd_alpha_of_table", "check_design",
+                      "_level_tolerance", "_check_design", "_expected_counts"],
+        "tests": ["tests/inputs/test_data.py", "tests/test_core_contracts.py", *_READ_TABLE_TESTS],
+    },
+    "demid/estimability.py": {
+        "functions": None,
+        "tests": ["tests/test_core_contracts.py::test_a_quadratic_in_two_factors_needs_seven_usable_runs", *[f"tests/inputs/test_stranger_tables.py::{name}" for name in (
+                      "test_ccd_whose_centre_runs_all_failed_is_refused", "test_criticize_refuses_a_factor_at_two_levels",
+                      "test_criticize_and_fit_refuse_a_saturated_fit", "test_criticize_refuses_a_rank_deficient_fit",
+                      "test_a_two_level_factorial_with_centre_runs_is_told_why_its_squares_cannot_be_fitted")]],
+    },
+    "demid/fit_statistics.py": {
+        "functions": None,
+        "tests": ["tests/test_surrogate.py", "tests/test_statistics_known_answers.py", "tests/inputs/test_one_replicate_rule.py", "tests/test_core_contracts.py"],
     },
     "demid/design.py": {
         "functions": None,
@@ -305,10 +386,6 @@ TABLE: dict[str, dict] = {
     "demid/formulas.py": {
         "functions": None,
         "tests": ["tests/test_formulas.py"],
-    },
-    "demid/precision.py": {
-        "functions": None,
-        "tests": ["tests/test_precision.py", "tests/inputs/test_factor_round_off.py"],
     },
     "demid/canonical.py": {
         "functions": None,
@@ -391,8 +468,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/sampling/domain.py::Domain.sobol::0 => 1#0":
         "the default scramble seed: any fixed seed gives an equally stratified, equally deterministic sample",
     "demid/sampling/grid.py::_curvature_margin::float(np.max(np.abs(d2))) => np.max(np.abs(d2))#0": _NUMPY_FLOAT,
-    "demid/sampling/grid.py::admissible_set::abs(targets[o]) => targets[o]#0":
-        "the band |r| <= eps is symmetric: dividing by -|y*| instead of |y*| flips the sign of r only",
     "demid/sampling/grid.py::_refine_span_ends::cell_lo + 1e-12 * abs(step[i]) => cell_lo#0":
         "a round-off guard in a skip test: without it an end that already lies on the cell edge is re-sampled "
         "and found again",
@@ -409,25 +484,25 @@ EQUIVALENT: dict[str, str] = {
         _NUMPY_FLOAT + " (node_fraction only enters a float column of to_frame)",
     "demid/sampling/sobol.py::sobol_fraction::float(means.mean()) => means.mean()#0":
         _NUMPY_FLOAT + " (the fraction enters arithmetic, max/min, float columns and JSON through _clean)",
-    "demid/sampling/exact.py::_real_roots_unit::coef.shape[:-1] + (0,) => coef.shape[:-1] - (0,)#0":
+    "demid/sampling/roots.py::real_roots_unit::coef.shape[:-1] + (0,) => coef.shape[:-1] - (0,)#0":
         "the degree-0 branch is never reached: exact_set raises every degree to at least 1 and the edge "
         "polynomials of a plane have the tensor's D+1 >= 2 coefficients",
-    "demid/sampling/exact.py::_Planes.spans::1 => 2#2":
+    "demid/sampling/planes.py::Planes.spans::1 => 2#2":
         "the fill value of 'last' is never read: only planes with a feasible piece are used, and their entry "
         "is overwritten",
-    "demid/sampling/exact.py::_chebyshev_roots::1 => 2#7":
+    "demid/sampling/roots.py::chebyshev_roots::1 => 2#7":
         "the last column is never written: a resultant's degree in s is at most top^2 (Bezout), below the "
         "2 top^2 the Chebyshev nodes allow, and interpolation noise under 1e-11 is zeroed before the degree "
         "is read",
-    "demid/sampling/exact.py::_companion_roots::imag_tol * np.maximum(1.0, np.abs(eig.real)) => "
+    "demid/sampling/roots.py::_companion_roots::imag_tol * np.maximum(1.0, np.abs(eig.real)) => "
     "np.maximum(1.0, np.abs(eig.real))#0":
         "a complex pair taken for real roots only adds cut points: every piece between cut points is judged "
         "at its midpoint, so the admissible intervals (and the breakpoints' pieces) are the same",
-    "demid/sampling/exact.py::_integrate::estimate <= target[owners] * h / length[owners] => "
+    "demid/sampling/quadrature.py::integrate::estimate <= target[owners] * h / length[owners] => "
     "estimate < target[owners] * h / length[owners]#0":
         "differs only when a piece's error estimate equals its share of the target to the last bit; the "
         "piece is then bisected once more and integrated to the same value within the estimate",
-    "demid/criticism/level2.py::_minimax::200 => 201#0":
+    "demid/criticism/searches.py::minimax::200 => 201#0":
         "SLSQP's iteration cap: the epigraph problems converge in far fewer iterations",
     # --- canonical analysis
     "demid/canonical.py::quadratic_parts::float(coef) => coef#0":
@@ -470,9 +545,9 @@ EQUIVALENT: dict[str, str] = {
     "a[np.argmax(np.abs(normal))]#0": _NUMPY_FLOAT + " (lead only divides and is formatted)",
     "demid/combinations/material.py::_cut_side::proj.min() <= box_min + tol => proj.min() < box_min + tol#0":
         "differs only for a projection equal to the box's end plus the touch tolerance to the last bit",
-    "demid/criticism/level1.py::extend_for::0 => -1#4":
+    "demid/criticism/extensions.py::extend_for::0 => -1#4":
         "data.to_actual of a single coded row returns one row: its first and last rows are the same",
-    "demid/criticism/level1.py::extend_for::int(np.argmax(prof)) => np.argmax(prof)#0":
+    "demid/criticism/extensions.py::extend_for::int(np.argmax(prof)) => np.argmax(prof)#0":
         "best only indexes the lambda grid: a numpy integer indexes the same element",
     # --- tolerance
     "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
@@ -496,9 +571,11 @@ EQUIVALENT: dict[str, str] = {
     "demid/sampling/evaluate.py::_evaluate_set::np.isfinite(base.best_error) and base.best_error < best_error => "
     "base.best_error < best_error#0": "a NaN compares False: the guard only states the intent",
     "demid/sampling/evaluate.py::_evaluate_set::float(exact.fraction) => exact.fraction#0": _NUMPY_FLOAT,
-    "demid/criticism/level2.py::_bottleneck::0 => -1#1":
+    "demid/criticism/searches.py::bottleneck_analysis::0 => -1#0":
         "observables[0] is only read when 'without' is empty, i.e. for a single observable: first and last agree",
-    "demid/criticism/level2.py::calibration_check::0 => -1#6":
+    "demid/criticism/level2.py::calibration_check::0 => -1#2":
+        "best_s is one point, so the values have one column: [:, 0] and [:, -1] are the same",
+    "demid/criticism/level2.py::calibration_check::0 => -1#3":
         "best_s is one point, so the errors have one column: [:, 0] and [:, -1] are the same",
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
@@ -518,7 +595,7 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/models.py::inv_boxcox::700 => 701#1": "overflow clip of exp(): differs only beyond e^700",
     "demid/criticism/models.py::infer_axial_distance::float(np.max(col)) => np.max(col)#0":
         _NUMPY_FLOAT + " (col is a float array; hi is only compared and used in arithmetic)",
-    "demid/criticism/level1.py::_choices::1 => 2#0":
+    "demid/criticism/naming.py::_choices::1 => 2#2":
         "the default is never read: every step hypothesis carries its change_points (catalogue.Round._step)",
     "demid/criticism/models.py::infer_axial_distance::1 - 1e-06 => 1#0":
         "differs only for inner levels within 1e-6 of the ends (a face-centred design): alpha = 1 / |inner| is 1 "
@@ -560,13 +637,13 @@ EQUIVALENT: dict[str, str] = {
         "os.umask(x) is only called to read the current umask, which is restored on the next line",
     "demid/io.py::atomic_path::0 => -1#0":
         "os.umask(x) is only called to read the current umask, which is restored on the next line",
-    "demid/io.py::write_parquet::pa.Table.from_pandas(frame.reset_index(drop=True), preserve_index=False) => "
+    "demid/io.py::_write_parquet_to::pa.Table.from_pandas(frame.reset_index(drop=True), preserve_index=False) => "
     "pa.Table.from_pandas(frame.reset_index(drop=True))#0":
         "after reset_index the index is a RangeIndex, which Arrow keeps only as pandas schema metadata, "
         "and that metadata is dropped on the next line",
-    "demid/io.py::write_parquet::floats or False => floats#0":
+    "demid/io.py::_write_parquet_to::floats or False => floats#0":
         "use_byte_stream_split=[] and =False both mean no column is split",
-    "demid/io.py::write_parquet::False => True#2":
+    "demid/io.py::_write_parquet_to::False => True#2":
         "with no float column every column is dictionary-encoded, which byte-stream-split does not touch: "
         "the file's bytes are identical (checked with pyarrow 26)",
     "demid/io.py::write_csv::round_significant(frame).to_csv(tmp, index=False, "
@@ -575,7 +652,7 @@ EQUIVALENT: dict[str, str] = {
         "pandas' default line terminator is os.linesep, '\\n' on the POSIX systems demid runs on",
     "demid/io.py::_clean::float(obj) => obj#0": _NUMPY_FLOAT,
     # --- level 2, evaluated sets, next wave, catalogue
-    "demid/criticism/level2.py::calibration_check::float(np.max(problem.weights * np.abs(problem.errors(best_s)"
+    "demid/criticism/level2.py::_best_point::float(np.max(problem.weights * np.abs(problem.errors(best_s)"
     "[:, 0]))) => np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0]))#1":
         _NUMPY_FLOAT + " (best_val is only compared, passed through float() and json_number)",
     "demid/next_wave.py::_full_rank::1e-08 * max(np.abs(m).max(), 1.0) * len(m) => 1e-08 * max(np.abs(m).max(), "
@@ -655,11 +732,8 @@ EQUIVALENT: dict[str, str] = {
 # mutant is not equivalent.  Left out of the score like an equivalent mutant and listed apart; the score
 # counting them as survivors is printed too.
 SETTINGS: dict[str, str] = {
-    "demid/criticism/level2.py::_minimax::4 => 3#0":
+    "demid/criticism/searches.py::minimax::4 => 3#0":
         "the number of SLSQP starts (the best grid nodes at least 0.1 apart): three reach the same minimax point",
-    "demid/criticism/level2.py::_smallest_bias::0 => -1#0":
-        "the first SLSQP start becomes the grid's worst node instead of its best; the best node's neighbours are "
-        "still starts (the narrow-well known answer, whose well holds a single grid node, still holds)",
     "demid/sampling/evaluate.py::start_nodes::21 => 20#0":
         "resolution of the grid the closest-approach search starts from (up to three factors)",
     "demid/sampling/evaluate.py::start_nodes::21 => 22#0":
