@@ -152,7 +152,7 @@ _READ_TABLE_TESTS = [f"tests/inputs/test_stranger_tables.py::{name}" for name in
 _EXACT_SET_TESTS = ["tests/sampling/test_exact_sets.py", "tests/sampling/test_quadrature_error_estimate.py",
                     "tests/sampling/test_exact_error_properties.py", "tests/test_reported_numbers.py",
                     "tests/sampling/test_reference_point.py", "tests/sampling/test_set_estimators.py",
-                    "tests/test_core_contracts.py"]
+                    "tests/sampling/test_roots_quadrature_properties.py", "tests/test_core_contracts.py"]
 # level 1's naming of causes (aliasing, extensions, naming, slips): the criticism's planted effects and its
 # confirming and deciding runs; the level-2, figure and 3-factor tests exercise other modules, and the slowest
 # confirming-runs test repeats an outlier-or-slip case of the faster ones at four times their cost
@@ -185,7 +185,7 @@ TABLE: dict[str, dict] = {
     "demid/sampling/residuals.py": {
         "functions": None,
         "tests": ["tests/sampling/test_admissibility.py", "tests/sampling/test_set_estimators.py",
-                  "tests/test_scenario.py",
+                  "tests/sampling/test_residuals_properties.py", "tests/test_scenario.py",
                   "tests/uncertainty/test_uncertainty.py", "tests/test_core_contracts.py"],
     },
     "demid/sampling/planes.py": {
@@ -215,7 +215,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/surrogate.py": {
         "functions": None,
-        "tests": ["tests/test_surrogate.py", "tests/test_statistics_known_answers.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/test_surrogate.py", "tests/test_surrogate_properties.py", "tests/test_statistics_known_answers.py",
+                  "tests/test_core_contracts.py"],
     },
     "demid/precision.py": {
         "functions": None,
@@ -372,7 +373,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/fit_statistics.py": {
         "functions": None,
-        "tests": ["tests/test_surrogate.py", "tests/test_statistics_known_answers.py", "tests/inputs/test_one_replicate_rule.py", "tests/test_core_contracts.py"],
+        "tests": ["tests/test_surrogate.py", "tests/test_statistics_known_answers.py", "tests/inputs/test_one_replicate_rule.py",
+                  "tests/test_fit_statistics.py", "tests/test_core_contracts.py"],
     },
     "demid/design.py": {
         "functions": None,
@@ -498,6 +500,11 @@ EQUIVALENT: dict[str, str] = {
     "np.maximum(1.0, np.abs(eig.real))#0":
         "a complex pair taken for real roots only adds cut points: every piece between cut points is judged "
         "at its midpoint, so the admissible intervals (and the breakpoints' pieces) are the same",
+    "demid/sampling/stored.py::stored_strict_sets::0 => -1#6":
+        "set_state_frame writes a scenario's reference distance on every one of its factor rows: the first and "
+        "the last row carry the same number",
+    "demid/sampling/stored.py::stored_strict_sets::float(rows['best_max_rel_error'].iloc[0]) => "
+    "rows['best_max_rel_error'].iloc[0]#0": _NUMPY_FLOAT + " (a float column of the scenarios table)",
     "demid/sampling/quadrature.py::integrate::estimate <= target[owners] * h / length[owners] => "
     "estimate < target[owners] * h / length[owners]#0":
         "differs only when a piece's error estimate equals its share of the target to the last bit; the "
