@@ -391,7 +391,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/canonical.py": {
         "functions": None,
-        "tests": ["tests/combinations/test_canonical.py", "tests/combinations/test_canonical_published.py"],
+        "tests": ["tests/combinations/test_canonical.py", "tests/combinations/test_canonical_published.py",
+                  "tests/combinations/test_canonical_properties.py"],
     },
     "demid/wave_value.py": {
         "functions": None,
@@ -457,7 +458,9 @@ TABLE: dict[str, dict] = {
     },
     "demid/io.py": {
         "functions": None,
-        "tests": ["tests/test_core_contracts.py", "-kjson or png or parquet or csv or atomic"],
+        "tests": ["tests/test_core_contracts.py",
+                  "tests/report/test_report_outputs.py::test_figures_drawn_in_two_processes_are_the_bytes_of_one",
+                  "-kjson or png or parquet or csv or atomic or figures_drawn"],
     },
 }
 
@@ -501,8 +504,8 @@ EQUIVALENT: dict[str, str] = {
         "a complex pair taken for real roots only adds cut points: every piece between cut points is judged "
         "at its midpoint, so the admissible intervals (and the breakpoints' pieces) are the same",
     "demid/sampling/stored.py::stored_strict_sets::0 => -1#6":
-        "set_state_frame writes a scenario's reference distance on every one of its factor rows: the first and "
-        "the last row carry the same number",
+        "set_state_frame writes a scenario's exact fraction, its error and its reference distance (one number "
+        "each) on every one of the scenario's factor rows: the first and the last row carry the same number",
     "demid/sampling/stored.py::stored_strict_sets::float(rows['best_max_rel_error'].iloc[0]) => "
     "rows['best_max_rel_error'].iloc[0]#0": _NUMPY_FLOAT + " (a float column of the scenarios table)",
     "demid/sampling/quadrature.py::integrate::estimate <= target[owners] * h / length[owners] => "
@@ -658,6 +661,9 @@ EQUIVALENT: dict[str, str] = {
     "index=False, float_format=f'%.{CSV_SIGNIFICANT_DIGITS}g')#0":
         "pandas' default line terminator is os.linesep, '\\n' on the POSIX systems demid runs on",
     "demid/io.py::_clean::float(obj) => obj#0": _NUMPY_FLOAT,
+    "demid/io.py::save_figures::len(items) < 2 or not hasattr(os, 'fork') => not hasattr(os, 'fork')#0":
+        "the guard only spares a fork: with fewer than two figures the other process draws the one figure (or "
+        "none) by the same code, so the same files are written",
     # --- level 2, evaluated sets, next wave, catalogue
     "demid/criticism/level2.py::_best_point::float(np.max(problem.weights * np.abs(problem.errors(best_s)"
     "[:, 0]))) => np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0]))#1":
