@@ -172,6 +172,8 @@ TABLE: dict[str, dict] = {
     "demid/sampling/grid.py": {
         "functions": None,
         "tests": ["tests/sampling/test_set_estimators.py", "tests/sampling/test_admissibility.py", "tests/test_core_contracts.py",
+                  "tests/sampling/test_grid_fraction_properties.py",
+                  "tests/uncertainty/test_uncertainty.py::test_fraction_with_error_meets_target_on_annulus",
                   "tests/uncertainty/test_uncertainty.py::test_plane_band_fraction_matches_sampling",
                   "tests/uncertainty/test_uncertainty.py::test_fraction_with_error_reports_grid_error_and_3d_shell",
                   "tests/uncertainty/test_uncertainty.py::test_polish_spans_thin_set_without_admissible_nodes"],
@@ -179,6 +181,7 @@ TABLE: dict[str, dict] = {
     "demid/sampling/domain.py": {
         "functions": None,
         "tests": ["tests/sampling/test_set_estimators.py", "tests/sampling/test_admissibility.py", "tests/test_core_contracts.py",
+                  "tests/sampling/test_domain_properties.py",
                   "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_edges.py::test_at_bound_of_closed_form_exact_sets",
                   "tests/criticism/test_edges.py::test_at_bound_tolerance_is_relative_to_the_range_and_in_log_units"],
     },
@@ -661,6 +664,7 @@ EQUIVALENT: dict[str, str] = {
     "index=False, float_format=f'%.{CSV_SIGNIFICANT_DIGITS}g')#0":
         "pandas' default line terminator is os.linesep, '\\n' on the POSIX systems demid runs on",
     "demid/io.py::_clean::float(obj) => obj#0": _NUMPY_FLOAT,
+    "demid/io.py::content_digest::20 => 21#0": "the size of the blocks the file is read in: the digest is the same",
     "demid/io.py::save_figures::len(items) < 2 or not hasattr(os, 'fork') => not hasattr(os, 'fork')#0":
         "the guard only spares a fork: with fewer than two figures the other process draws the one figure (or "
         "none) by the same code, so the same files are written",
@@ -686,6 +690,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/pareto.py::_within_front_box::f[s == s.min()].min() => f[s == s.min()].max()#0":
         "a looser pre-filter: the points it keeps besides are dominated by the least-second point and dropped by "
         "the sweep of pareto_front, whose order among the kept points is unchanged",
+    "demid/pareto.py::polish_front::0 => -1#1":
+        "u is one point (Domain.from_unit makes it one row): its prediction has one entry, first and last",
     "demid/pareto.py::polish_front::[(0.0, 1.0)] * domain.dim => [(0.0, 1.0)]#0":
         "scipy's L-BFGS-B broadcasts a single (lower, upper) pair to every coordinate (checked with scipy 1.17.1)",
     "demid/uncertainty/robust.py::robust_admissible_set::observables = tuple(observables) => pass#0":

@@ -49,3 +49,22 @@ def test_a_fitted_quadratics_stationary_point_curvatures_and_kind_are_those_it_w
     assert c.inside == bool(np.all(np.abs(stationary) <= alpha + 1e-9))
     for j, vector in enumerate(c.eigenvectors.T):
         np.testing.assert_allclose(big_b @ vector, c.eigenvalues[j] * vector, atol=1e-7)
+
+
+@given(seed=st.integers(0, 1000), past=st.sampled_from([1e-13, 1e-11, 5e-10]))
+@settings(max_examples=10, deadline=None, derandomize=True)
+def test_a_stationary_point_on_the_regions_edge_to_round_off_is_inside(seed, past):
+    """A stationary point computed a little past a face of the box (round-off of the solve) is on it."""
+    from demid.canonical import canonical_analysis
+
+    rng = np.random.default_rng(seed)
+    big_b = np.diag(rng.uniform(0.5, 2.0, size=2))
+    b = rng.normal(size=2)
+    xs = -0.5 * np.linalg.solve(big_b, b)
+    for face in range(2):
+        lower, upper = xs - 1.0, xs + 1.0
+        lower[face] = xs[face] + past  # the point lies `past` outside the lower face
+        c = canonical_analysis(0.0, b, big_b, region_lower=lower, region_upper=upper)
+        assert c.inside
+        lower[face] = xs[face] + 1e-6  # clearly outside
+        assert not canonical_analysis(0.0, b, big_b, region_lower=lower, region_upper=upper).inside
