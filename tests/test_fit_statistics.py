@@ -25,11 +25,16 @@ def _f_and_p(ss_a, df_a, ss_b, df_b, floor):
 
 @given(ss=st.lists(st.floats(0.01, 1e4), min_size=4, max_size=4), df_model=st.integers(1, 9),
        df_lof=st.integers(0, 6), df_pe=st.integers(0, 6), df_block=st.integers(0, 3),
-       floor=st.sampled_from([0.0, 0.0, 1e-3, 10.0]), scale=st.sampled_from([1e-6, 1.0, 1e6]))
+       floor=st.sampled_from([0.0, 0.0, 1e-3, 10.0]), scale=st.sampled_from([1e-6, 1.0, 1e6]),
+       pe_share=st.sampled_from([None, None, 0.0, 0.5, 1.0, 1.5]))
 @SETTINGS
-def test_every_rows_mean_square_f_and_p_are_the_anova_formulas(ss, df_model, df_lof, df_pe, df_block, floor, scale):
+def test_every_rows_mean_square_f_and_p_are_the_anova_formulas(ss, df_model, df_lof, df_pe, df_block, floor, scale,
+                                                               pe_share):
+    """``pe_share``: pure error as a share of the round-off floor's (identical replicates at 0)."""
     ss_model, ss_lof, ss_pe, ss_block = (v * scale for v in ss)
     floor = floor * scale
+    if pe_share is not None:
+        ss_pe = pe_share * floor * df_pe
     if df_lof == 0:
         ss_lof = 0.0
     if df_pe == 0:
