@@ -360,7 +360,8 @@ TABLE: dict[str, dict] = {
     # parse_number, infer_coding and check_design, once in data.py
     "demid/csv_cells.py": {
         "functions": ["parse_number", "is_number"],
-        "tests": ["tests/inputs/test_data.py", "tests/test_core_contracts.py", *_READ_TABLE_TESTS],
+        "tests": ["tests/inputs/test_data.py", "tests/inputs/test_number_cells_properties.py", "tests/test_core_contracts.py",
+                  *_READ_TABLE_TESTS],
     },
     "demid/design_check.py": {
         "functions": ["_level_coding", "infer_coding", "_round_to_scale", "_ccd_alpha_of_table", "check_design",
@@ -512,6 +513,11 @@ EQUIVALENT: dict[str, str] = {
         "each) on every one of the scenario's factor rows: the first and the last row carry the same number",
     "demid/sampling/stored.py::stored_strict_sets::float(rows['best_max_rel_error'].iloc[0]) => "
     "rows['best_max_rel_error'].iloc[0]#0": _NUMPY_FLOAT + " (a float column of the scenarios table)",
+    "demid/sampling/exact.py::ExactSet._worst_residual::float(np.max(np.abs(horner(coef, u[None, axis:axis + 1]))))"
+    " => np.max(np.abs(horner(coef, u[None, axis:axis + 1])))#0":
+        _NUMPY_FLOAT + " (its one caller compares it with the tolerance)",
+    "demid/sampling/evaluate.py::closest_approach::0 => -1#1":
+        "u is one point: worst(u) has one entry, first and last",
     "demid/sampling/quadrature.py::integrate::estimate <= target[owners] * h / length[owners] => "
     "estimate < target[owners] * h / length[owners]#0":
         "differs only when a piece's error estimate equals its share of the target to the last bit; the "
@@ -629,6 +635,9 @@ EQUIVALENT: dict[str, str] = {
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
         "groups); each group mean is then the run's own value (a product with a 0/1 matrix, exact), so "
         "ss_pe == 0 exactly and 'ss_pe > 0' already gives NaN",
+    "demid/transcription/check.py::_cell_repairs::float(actual) => actual#0":
+        "actual is an element of the table's float array of factor values: max() and the product are the same "
+        "float",
     "demid/transcription/printed.py::positional::'e' in text or 'E' in text => 'e' in text#0":
         "text is repr(float), which writes an exponent with a lower-case 'e' only (and positional is only "
         "called with finite values)",
