@@ -591,6 +591,7 @@ EQUIVALENT: dict[str, str] = {
     "demid/sampling/evaluate.py::_evaluate_set::np.isfinite(base.best_error) and base.best_error < best_error => "
     "base.best_error < best_error#0": "a NaN compares False: the guard only states the intent",
     "demid/sampling/evaluate.py::_evaluate_set::float(exact.fraction) => exact.fraction#0": _NUMPY_FLOAT,
+    "demid/sampling/evaluate.py::_evaluate_set::float(exact.fraction_error) => exact.fraction_error#0": _NUMPY_FLOAT,
     "demid/criticism/searches.py::bottleneck_analysis::0 => -1#0":
         "observables[0] is only read when 'without' is empty, i.e. for a single observable: first and last agree",
     "demid/criticism/level2.py::calibration_check::0 => -1#2":
@@ -771,6 +772,11 @@ SETTINGS: dict[str, str] = {
         "resolution of the grid the reachability search starts from (four factors and more)",
     "demid/uncertainty/ranking.py::_met_together::np.argsort(worst, kind='stable') => np.argsort(worst)#0":
         "which of equally good grid nodes start the searches (numpy's default sort is deterministic too)",
+    "demid/sampling/planes.py::Solid.span::False => True#0":
+        "whether the slice spans of the scan the zoom starts from are polished too (the final spans are polished "
+        "either way)",
+    "demid/sampling/planes.py::Solid.distance::33 => 32#0":
+        "the number of slices the closest-slice zoom starts from",
     "demid/sampling/polish.py::start_points::1.0 / d => 1.0#1":
         "the cap on the grid the polishing starts from when no node is admissible (its resolution)",
     "demid/sampling/polish.py::start_points::min(n, int(1000000.0 ** (1.0 / d))) => "
