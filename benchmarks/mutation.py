@@ -709,6 +709,9 @@ EQUIVALENT: dict[str, str] = {
         "plausibility_fields takes any sequence, and admissible_set turns observables into a tuple itself",
     "demid/paper.py::_rule::d <= 0.0005 => d < 0.0005#0":
         "differs only for an R^2 difference of exactly 0.0005 to the last bit",
+    "demid/paper.py::paper_comparison::0 => -1#0":
+        "identifiability.csv repeats a scenario's tolerance on each of its factor rows: the first and the last "
+        "carry the same number",
     "demid/paper.py::_fraction::0 => 1#0":
         "identifiability.csv repeats a scenario's fraction on each factor's row, and the paper's materials have "
         "two or three factors: the first and second rows carry the same number",
