@@ -244,7 +244,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/transcription/printed.py": {
         "functions": None,
-        "tests": [*_TRANSCRIPTION_TESTS, "tests/inputs/test_stranger_tables.py::test_an_impossible_published_statistic_is_refused",
+        "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_printed_properties.py",
+                  "tests/inputs/test_stranger_tables.py::test_an_impossible_published_statistic_is_refused",
                   "tests/inputs/test_stranger_tables.py::test_possible_published_statistics_pass"],
     },
     "demid/transcription/typos.py": {
@@ -639,6 +640,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/transcription/check.py::_cell_repairs::float(actual) => actual#0":
         "actual is an element of the table's float array of factor values: max() and the product are the same "
         "float",
+    "demid/transcription/printed.py::parse_printed::float(value) => value#1":
+        "a published number reaches this line as a Python float (YAML) or a numpy float64, which numpy prints "
+        "positionally with the same digits",
     "demid/transcription/printed.py::positional::'e' in text or 'E' in text => 'e' in text#0":
         "text is repr(float), which writes an exponent with a lower-case 'e' only (and positional is only "
         "called with finite values)",
