@@ -210,6 +210,7 @@ TABLE: dict[str, dict] = {
     "demid/sampling/sobol.py": {
         "functions": ["sobol_admissible_set", "_extreme_points", "sobol_fraction"],
         "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/sampling/test_admissibility.py",
+                  "tests/sampling/test_sobol_properties.py",
                   "tests/test_core_contracts.py"],
     },
     "demid/sampling/polish.py": {
