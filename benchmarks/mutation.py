@@ -278,7 +278,9 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/searches.py": {
         "functions": None,
-        "tests": _LEVEL2_TESTS,
+        "tests": [*_LEVEL2_TESTS[:-1], "tests/criticism/test_shared_bias_properties.py",
+                  "tests/criticism/test_level2_own_tolerance.py", "tests/criticism/test_level2_sign_properties.py",
+                  _LEVEL2_TESTS[-1] + " or shared_bias"],
     },
     "demid/criticism/aliasing.py": {
         "functions": None,
