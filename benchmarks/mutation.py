@@ -657,6 +657,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/sampling/polish.py::_polish::0 => -1#6": "sign is +1.0 or -1.0: 'sign > 0' and 'sign > -1' agree",
     # --- data
     "demid/data.py::read_table::float(run_val) => run_val#0": "parse_number returns a float already",
+    "demid/design_check.py::_level_coding::float(centre) => centre#0":
+        _NUMPY_FLOAT + " (centre is a value of the table's float column or a polyfit coefficient)",
     # --- design
     "demid/design.py::model_matrix::1 => 0#2":
         "'elif power > 0' after 'if power == 1' selects the same powers as 'elif power > 1'",
@@ -789,6 +791,10 @@ SETTINGS: dict[str, str] = {
         "either way)",
     "demid/sampling/planes.py::Solid.distance::33 => 32#0":
         "the number of slices the closest-slice zoom starts from",
+    "demid/criticism/searches.py::_smallest_bias::np.max(w[:, None] * np.abs(grid_err[others]), axis=0) + _BIAS_WEIGHT * "
+    "np.abs(grid_err[row]) => np.max(w[:, None] * np.abs(grid_err[others]), axis=0) - _BIAS_WEIGHT * "
+    "np.abs(grid_err[row])#0":
+        "the order of the grid nodes the bias search starts from (the bias enters the ranking at a weight of 1e-5)",
     "demid/sampling/polish.py::start_points::1.0 / d => 1.0#1":
         "the cap on the grid the polishing starts from when no node is admissible (its resolution)",
     "demid/sampling/polish.py::start_points::min(n, int(1000000.0 ** (1.0 / d))) => "
