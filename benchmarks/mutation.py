@@ -648,6 +648,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/transcription/printed.py::parse_printed::float(value) => value#1":
         "a published number reaches this line as a Python float (YAML) or a numpy float64, which numpy prints "
         "positionally with the same digits",
+    "demid/transcription/typos.py::two_sided_t_p::df - 1 => df#0":
+        "the branch is for odd df only, where (df - 1) // 2 and df // 2 are the same integer",
     "demid/transcription/printed.py::positional::'e' in text or 'E' in text => 'e' in text#0":
         "text is repr(float), which writes an exponent with a lower-case 'e' only (and positional is only "
         "called with finite values)",
