@@ -656,6 +656,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/transcription/engine.py::_statistics::n = np.broadcast_to(n, sse.shape) => pass#0":
         "numpy broadcasts the scalar n in every later expression: the same arrays result",
     # --- uncertainty
+    "demid/sampling/polish.py::start_points::2 * d => 2 / d#0":
+        "polish_spans runs on grid sets only (at most MAX_GRID_DIM = 3 factors; the Sobol path has its own), where "
+        "max(16, 2 d) and max(16, 2 / d) are both 16",
     "demid/sampling/polish.py::_polish::0 => -1#6": "sign is +1.0 or -1.0: 'sign > 0' and 'sign > -1' agree",
     # --- data
     "demid/data.py::read_table::float(run_val) => run_val#0": "parse_number returns a float already",
