@@ -634,6 +634,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/verdict.py::power_caveat::np.isfinite(size) and abs(size) >= 10000.0 => "
     "abs(size) >= 10000.0#0":
         "differs only for an infinite size, where plain_number falls back to short_number as well: both print 'inf'",
+    "demid/criticism/run_order.py::_rank_correlation::0 => 1#1":
+        "b is a ranking of the runs (a permutation of their ranks), whose range is the number of runs less one: "
+        "neither 0 nor 1 for the seven or more runs a quadratic needs",
     "demid/criticism/run_order.py::_follows_response::0 => -1#0":
         "a constant response has no rank correlation: scipy's Spearman rho is NaN, which fails the threshold, "
         "so the response is skipped either way",
