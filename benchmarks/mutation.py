@@ -232,7 +232,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_statistics_known_answers.py", "tests/criticism/test_criticism.py", "tests/test_core_contracts.py",
                   "tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_level1_known_answers.py",
-                  "tests/criticism/test_linear_memory.py",
+                  "tests/criticism/test_models_properties.py", "tests/criticism/test_linear_memory.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/catalogue.py": {

@@ -1,0 +1,95 @@
+"""Level 1's model fits (criticism.models.Model) over generated CCD tables and model forms (a Box-Cox transform or
+none, run-order drift, excluded runs, variance weights on a factor): the likelihood, AICc, parameter count,
+leverages and exact leave-one-out errors against a weighted least-squares fit written out with numpy and a refit
+without each run."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy import special, stats
+
+from demid.criticism.models import Data, Model, ModelForm
+from demid.design import Coding, ccd_points, model_matrix, quadratic_terms
+
+
+def _data(seed: int, centre: int) -> Data:
+    rng = np.random.default_rng(seed)
+    coded = ccd_points(2, 1.41421, centre)
+    runs = rng.permutation(len(coded)) + 1
+    x = model_matrix(coded, quadratic_terms(2))
+    y = np.exp(x @ rng.normal(scale=0.2, size=x.shape[1]) + 2.0 + rng.normal(scale=0.05, size=len(coded)))
+    return Data("y", ["a", "b"], coded, y, runs, Coding(("a", "b"), (0.0, 0.0), (1.0, 1.0)), 1.41421, (),
+                quadratic_terms(2))
+
+
+def _wls(x, z, w):
+    sw = np.sqrt(w)
+    beta = np.linalg.lstsq(x * sw[:, None], z * sw, rcond=None)[0]
+    return beta, (z - x @ beta) * sw
+
+
+@given(seed=st.integers(0, 1000), lam=st.sampled_from([None, 0.0, 0.5, -1.0]), drift=st.booleans(),
+       dropped=st.sampled_from([(), (2,), (0, 9)]), gamma=st.sampled_from([None, 0.7, -1.2]),
+       centre=st.sampled_from([3, 8]))
+@settings(max_examples=25, deadline=None, derandomize=True)
+def test_a_models_likelihood_aicc_and_leave_one_out_errors_are_those_of_its_weighted_fit(seed, lam, drift, dropped,
+                                                                                         gamma, centre):
+    data = _data(seed, centre)
+    weighted = gamma is not None
+    form = ModelForm(drift=drift, dropped=dropped, lam=lam, weight_on="a" if weighted else None,
+                     weight_gamma=gamma or 0.0, weight_values=tuple(data.coded[:, 0]) if weighted else ())
+    model = Model(data, form)
+    n = data.n
+    keep = np.ones(n, dtype=bool)
+    keep[list(dropped)] = False
+    y = data.y[keep]
+    z = y if lam is None else stats.boxcox(y, lmbda=lam)
+    x = model_matrix(data.coded[keep], quadratic_terms(2))
+    if drift:
+        runs = data.runs.astype(float)
+        x = np.column_stack([x, (runs[keep] - runs[keep].mean()) / max(np.ptp(runs), 1.0)])
+    w = np.exp(-gamma * data.coded[keep, 0]) if weighted else np.ones(keep.sum())
+    beta, resid_w = _wls(x, z, w)
+    ssr = float(resid_w @ resid_w)
+    ll = -0.5 * n * (np.log(2 * np.pi * ssr / n) + 1) + 0.5 * np.sum(np.log(w))
+    if weighted and dropped:
+        ll += 0.5 * np.sum(-gamma * data.coded[~keep, 0])
+    if lam is not None:
+        ll += (lam - 1) * np.sum(np.log(data.y))
+    k = x.shape[1] + 1 + len(dropped) + int(lam is not None) + int(weighted)
+    assert model.ssr == pytest.approx(ssr, rel=1e-9)
+    assert model.loglik == pytest.approx(ll, rel=1e-10, abs=1e-9)
+    assert model.n_params == k
+    if n - k - 1 > 0:
+        assert model.aicc == pytest.approx(-2 * ll + 2 * k * n / (n - k - 1), rel=1e-10, abs=1e-9)
+    else:  # as many parameters as runs allow: no AICc
+        assert np.isnan(model.aicc)
+    xw = x * np.sqrt(w)[:, None]
+    np.testing.assert_allclose(model.hat, np.diag(xw @ np.linalg.pinv(xw)), atol=1e-10)
+    np.testing.assert_allclose(model.fitted, z_inv(x @ beta, lam), rtol=1e-9)
+    loo = []
+    for i in range(len(y)):
+        others = np.arange(len(y)) != i
+        b, _ = _wls(x[others], z[others], w[others])
+        loo.append(y[i] - z_inv(x[i] @ b, lam))
+    loo = np.array(loo)
+    # where scipy's back-transform has no value (1 + lam z <= 0, far outside the data) the model's is clipped
+    # finite; a run the others cannot predict (leverage near 1) has none
+    predictable = np.diag(xw @ np.linalg.pinv(xw)) < 0.99
+    compared = np.isfinite(loo) & predictable
+    np.testing.assert_allclose(model.loo_errors[compared], loo[compared], rtol=1e-7, atol=1e-9 * np.abs(y).max())
+    assert np.all(np.isfinite(model.loo_errors[predictable]))
+    assert np.all(np.isnan(model.loo_errors[~predictable]))
+    expected_predictable = np.zeros(n, dtype=bool)
+    expected_predictable[keep] = predictable
+    np.testing.assert_array_equal(model.predictable, expected_predictable)
+    if compared.all():  # the leave-one-out RMSE over the runs it keeps and predicts
+        assert model.loo_rmse_on(np.ones(n, dtype=bool)) == pytest.approx(
+            np.sqrt(np.mean(np.square(loo[predictable]))), rel=1e-7)
+
+
+def z_inv(z, lam):
+    return z if lam is None else special.inv_boxcox(z, lam)
