@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from scipy.stats import special_ortho_group
 
@@ -19,6 +19,8 @@ from ..helpers import make_ccd_table
 @given(k=st.sampled_from([2, 3]), seed=st.integers(0, 1000), signs=st.lists(st.sampled_from([-1.0, 1.0]), min_size=3,
                                                                             max_size=3),
        spread=st.floats(0.2, 2.2), alpha_kind=st.sampled_from(["rotatable", "face"]))
+# a maximum inside the runs' box (axial runs at 1.414) but outside the factorial square [-1, 1]^2
+@example(k=2, seed=0, signs=[-1.0, -1.0, -1.0], spread=1.25, alpha_kind="rotatable")
 @settings(max_examples=20, deadline=None, derandomize=True)
 def test_a_fitted_quadratics_stationary_point_curvatures_and_kind_are_those_it_was_built_with(k, seed, signs,
                                                                                                spread, alpha_kind):
