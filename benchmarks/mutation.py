@@ -710,6 +710,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/next_wave.py::plan_next_wave::hi - lo => hi + lo#1":
         "a round-off guard: differs only for an earlier run beyond the box's upper end by between 1e-12 (hi - lo) "
         "and 1e-12 (hi + lo)",
+    "demid/criticism/aliasing.py::term_classes::float(c.direction @ u) => c.direction @ u#0":
+        _NUMPY_FLOAT + " (only its absolute value is compared)",
     "demid/criticism/catalogue.py::Round._missing_terms::0 => -1#0":
         "e_obs is the one column resid_w[:, None]: its statistics have one column, [0] and [-1] are the same",
     "demid/criticism/catalogue.py::Round._drift::float(f_logp(f_obs, df - 1)) => f_logp(f_obs, df - 1)#0":
