@@ -574,6 +574,8 @@ EQUIVALENT: dict[str, str] = {
         "differs only for a projection equal to the box's end plus the touch tolerance to the last bit",
     "demid/criticism/extensions.py::extend_for::0 => -1#4":
         "data.to_actual of a single coded row returns one row: its first and last rows are the same",
+    "demid/criticism/extensions.py::extend_for::float(data.y[i]) => data.y[i]#0":
+        _NUMPY_FLOAT + " (the observed value of a finding's detail, written to JSON through _clean)",
     "demid/criticism/extensions.py::extend_for::int(np.argmax(prof)) => np.argmax(prof)#0":
         "best only indexes the lambda grid: a numpy integer indexes the same element",
     # --- tolerance
