@@ -225,8 +225,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/precision.py": {
         "functions": None,
-        "tests": ["tests/test_precision.py", "tests/inputs/test_factor_round_off.py", "tests/test_surrogate.py",
-                  "tests/criticism/test_noise_free.py"],
+        "tests": ["tests/test_precision.py", "tests/test_precision_text_properties.py", "tests/inputs/test_factor_round_off.py",
+                  "tests/test_surrogate.py", "tests/criticism/test_noise_free.py"],
     },
     "demid/criticism/models.py": {
         "functions": None,
