@@ -240,7 +240,7 @@ TABLE: dict[str, dict] = {
         # the level-2 and figure tests exercise other functions; the 3-factor planted effects repeat the
         # 2-factor ones at four times the cost
         "tests": ["tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_criticism.py",
-                  "tests/test_core_contracts.py",
+                  "tests/criticism/test_models_properties.py", "tests/test_core_contracts.py",
                   "tests/criticism/test_level1_known_answers.py::test_a_slipped_factor_value_is_moved_and_the_loo_"
                   "errors_are_the_refits", "-knot level2 and not residual_figure and not 3f"],
     },

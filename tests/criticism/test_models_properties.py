@@ -93,3 +93,21 @@ def test_a_models_likelihood_aicc_and_leave_one_out_errors_are_those_of_its_weig
 
 def z_inv(z, lam):
     return z if lam is None else special.inv_boxcox(z, lam)
+
+
+@given(seed=st.integers(0, 1000), dropped=st.sampled_from([(), (1,)]))
+@settings(max_examples=5, deadline=None, derandomize=True)
+def test_the_variance_covariates_are_the_factors_over_alpha_and_the_fitted_values_scaled_to_plus_minus_one(seed,
+                                                                                                      dropped):
+    from demid.criticism.catalogue import Round
+
+    data = _data(seed, 3)
+    model = Model(data, ModelForm(dropped=dropped))
+    covariates = Round(data, model, 19, np.random.default_rng(seed)).covariates()
+    assert list(covariates) == ["a", "b", "fitted"]
+    for j, f in enumerate(("a", "b")):
+        np.testing.assert_allclose(covariates[f], data.coded[model.keep, j] / data.alpha)
+    fitted = covariates["fitted"]
+    assert (fitted.min(), fitted.max()) == pytest.approx((-1.0, 1.0))
+    np.testing.assert_allclose(fitted, -1 + 2 * (model.fitted_z - model.fitted_z.min()) / np.ptp(model.fitted_z),
+                               atol=1e-12)
