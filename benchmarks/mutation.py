@@ -159,7 +159,7 @@ _EXACT_SET_TESTS = ["tests/sampling/test_exact_sets.py", "tests/sampling/test_qu
 _NAMING_TESTS = ["tests/criticism/test_criticism.py", "tests/criticism/test_catalogue_known_answers.py",
                  "tests/criticism/test_level1_known_answers.py", "tests/criticism/test_confirming_runs.py",
                  "tests/criticism/test_scatter_covariates.py", "tests/criticism/test_linear_memory.py",
-                 "tests/criticism/test_term_classes_properties.py",
+                 "tests/criticism/test_term_classes_properties.py", "tests/criticism/test_models_properties.py",
                  "-knot level2 and not residual_figure and not 3f and not ambiguous_verdicts_slip"]
 # the level-2 search's tests
 _LEVEL2_TESTS = ["tests/criticism/test_level2_known_answers.py", "tests/test_reported_numbers.py",

@@ -111,3 +111,32 @@ def test_the_variance_covariates_are_the_factors_over_alpha_and_the_fitted_value
     assert (fitted.min(), fitted.max()) == pytest.approx((-1.0, 1.0))
     np.testing.assert_allclose(fitted, -1 + 2 * (model.fitted_z - model.fitted_z.min()) / np.ptp(model.fitted_z),
                                atol=1e-12)
+
+
+@given(seed=st.integers(0, 1000))
+@settings(max_examples=3, deadline=None, derandomize=True)
+def test_each_candidate_cause_pays_twice_the_log_of_the_places_it_chose_from(seed):
+    """AICc + 2 log(choices): the alias classes a missing term, the covariates unequal scatter, the predictable
+    runs an outlier, the change-points a step, the candidate slips a factor level was chosen from (1: none)."""
+    import math
+
+    from demid.criticism.catalogue import Round
+    from demid.criticism.naming import candidate_entries
+    from demid.criticism.slips import slip_candidates
+    from demid.design import LEVERAGE_UNPREDICTABLE
+
+    data = _data(seed, 3)
+    base = Model(data, ModelForm())
+    first = Round(data, base, 19, np.random.default_rng(seed))
+    counted = {cause: sum(h.cause == cause for h in first.hypotheses) for cause in ("missing_term", "heteroscedasticity")}
+    counted["outlier"] = int(np.sum(base.hat < LEVERAGE_UNPREDICTABLE))
+    counted["factor_level"] = max(len(slip_candidates(data, base)), 1)
+    steps = [h for h in first.hypotheses if h.cause == "step"]
+    if steps:
+        counted["step"] = int(steps[0].info["change_points"])
+    entries = candidate_entries(data, base, first)
+    assert {e["cause"] for e in entries} >= {"missing_term", "heteroscedasticity", "outlier"}
+    for entry in entries:
+        if "model" in entry:
+            price = 2 * math.log(counted.get(entry["cause"], 1))
+            assert entry["aicc"] - entry["model"].aicc == pytest.approx(price, abs=1e-9), entry["cause"]
