@@ -140,3 +140,19 @@ def test_each_candidate_cause_pays_twice_the_log_of_the_places_it_chose_from(see
         if "model" in entry:
             price = 2 * math.log(counted.get(entry["cause"], 1))
             assert entry["aicc"] - entry["model"].aicc == pytest.approx(price, abs=1e-9), entry["cause"]
+
+
+@given(seed=st.integers(0, 1000), rank=st.integers(0, 4), zero_columns=st.integers(0, 2))
+@settings(max_examples=30, deadline=None, derandomize=True)
+def test_the_orthonormal_basis_spans_the_column_space_of_a_rank_deficient_matrix(seed, rank, zero_columns):
+    """Orthonormal columns, as many as the rank, projecting every column of x onto itself (zero columns and
+    products of a smaller basis included; a matrix of zeros has none)."""
+    from demid.criticism.models import orthonormal_basis, residualize
+
+    rng = np.random.default_rng(seed)
+    x = rng.normal(size=(12, rank)) @ rng.normal(size=(rank, 5)) if rank else np.zeros((12, 5))
+    x = np.column_stack([x, np.zeros((12, zero_columns))])
+    q = orthonormal_basis(x)
+    assert q.shape == (12, rank)
+    np.testing.assert_allclose(q.T @ q, np.eye(rank), atol=1e-10)
+    np.testing.assert_allclose(residualize(q, x), 0.0, atol=1e-9 * max(1.0, np.abs(x).max()))
