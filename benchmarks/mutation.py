@@ -166,8 +166,8 @@ survivors re-run with ``--ids``, a row marked * holds survivors not re-run, coun
     total                       183  112/181 61.9 %   112/161 69.6 %   150/161 93.2 %
 
 22 of the 183 are excluded (19 equivalent, 3 search settings; each listed below with its reason); counting the
-settings as survivors the after score is 150/164 = 91.5 %. Before this round's tests the draw scored 112/181 = 61.9
-% as run; on the modules whose rows existed before (100 % after on seed 14) 48/87 = 55.2 %, as low as the first
+settings as survivors the after score is 150/164 = 91.5 %. Before this round's tests the draw scored 112/181 =
+61.9 % as run; on the modules whose rows existed before (100 % after on seed 14) 48/87 = 55.2 %, as low as the first
 held-out draw: an "after" column says how well tests cover the mutants they were written against, not the unseen
 ones. New rows: the modules the splits made (sampling/planes, roots, quadrature, stored; criticism/aliasing,
 extensions, naming, searches, slips; transcription/check; estimability, fit_statistics; csv_cells and design_check,
@@ -242,7 +242,8 @@ _LEVEL2_TESTS = ["tests/criticism/test_level2_known_answers.py", "tests/test_rep
                  "tests/criticism/test_criticism.py", "tests/criticism/test_edges.py",
                  "tests/criticism/test_unreachable_targets.py", "-klevel2 or edge or reach"]
 # the transcription check's tests (the CLI ones run the check end to end on a small table)
-_TRANSCRIPTION_TESTS = ["tests/transcription/test_transcription.py", "tests/transcription/test_transcription_printed_inputs.py",
+_TRANSCRIPTION_TESTS = ["tests/transcription/test_transcription.py",
+                        "tests/transcription/test_transcription_printed_inputs.py",
                         "tests/transcription/test_linear_memory.py", "tests/inputs/test_one_replicate_rule.py",
                         "tests/test_statistics_known_answers.py", "tests/test_core_contracts.py"]
 TABLE: dict[str, dict] = {
