@@ -628,3 +628,18 @@ def test_run_order_follows_the_response_it_is_most_strongly_rank_correlated_with
     for responses in ({"down": down, "up": up}, {"up": up, "down": down}):
         order = assess_run_order(runs, coded, responses)
         assert order.response == "down" and order.correlation == pytest.approx(-1.0)
+
+
+@pytest.mark.parametrize("causes", [["missing_term"], ["lack_of_fit"], ["missing_term", "lack_of_fit"],
+                                    ["drift", "outlier", "lack_of_fit", "heteroscedasticity"],
+                                    ["drift", "outlier", "heteroscedasticity"]])
+def test_the_power_caveats_specific_share_is_the_smallest_weight_of_a_specific_test(causes):
+    """Beside lack of fit (LOF_SHARE of the family's level), each of the m - 1 specific tests runs at
+    (1 − LOF_SHARE)/(m − 1) of it, i.e. at share (1 − LOF_SHARE)·m/(m − 1) of the level an equal split gives;
+    without lack of fit (or with it alone) every test gets an equal share, 1."""
+    from demid.criticism.catalogue import LOF_SHARE
+    from demid.criticism.verdict import _specific_share
+
+    m = len(causes)
+    expected = (1 - LOF_SHARE) * m / (m - 1) if "lack_of_fit" in causes and m > 1 else 1.0
+    assert _specific_share(causes) == pytest.approx(expected, rel=1e-12)

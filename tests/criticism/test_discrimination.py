@@ -75,6 +75,11 @@ def test_a_drift_goes_on_in_the_predictions_of_later_runs_a_step_does_not():
     later = new_run_prediction(drift, centre, 4)[0][0] - new_run_prediction(drift, centre, 1)[0][0]
     assert later == pytest.approx(3 * per_run)
     assert new_run_prediction(step, centre, 4)[0][0] == pytest.approx(new_run_prediction(step, centre, 1)[0][0])
+    # a new run is the next one unless said otherwise: one run after the last, at the centre's fitted value
+    # plus the drift since the runs' mean position
+    runs = data.runs.astype(float)
+    next_run = drift.beta[0] + per_run * (runs.max() + 1 - runs.mean())
+    assert new_run_prediction(drift, centre)[0][0] == pytest.approx(next_run, rel=1e-12)
 
 
 def _simulate_drift(seed: int, k: int, size: float, runs: list[dict]) -> pd.DataFrame:

@@ -171,3 +171,17 @@ def test_the_heap_without_rolling_friction_is_not_advised_to_widen_sliding_frict
     (reach,) = [r for r in result.reach if r.factor == "mu_s"]
     assert not reach.widen and reach.quadratic_extension > WIDEN_LIMIT
     assert "mu_s" not in result.widen and "Widen the range of mu_s" not in result.message
+
+
+@pytest.mark.parametrize("value", [-3e6, -1.0, 0.2, 5e4])
+def test_an_observable_is_flat_along_a_factor_when_it_changes_by_a_billionth_of_its_size(value):
+    """Flat: |slope| + |curvature| at most 1e-9 of |value| (or of 1 for values below 1): relative for large values,
+    absolute for small ones."""
+    import dataclasses
+
+    size = max(1.0, abs(value))
+    base = Reach("a", "upper", "y", value, 2.0 * value, 1.9 * value, 0.0, 0.0, np.inf, np.inf, np.inf, np.nan,
+                 np.nan, np.nan, np.nan, False)
+    for slope, curvature, flat in ((0.4e-9 * size, 0.5e-9 * size, True), (0.7e-9 * size, -0.7e-9 * size, False),
+                                   (0.0, 0.0, True), (-2e-9 * size, 0.0, False)):
+        assert dataclasses.replace(base, slope=slope, curvature=curvature).flat is flat

@@ -384,7 +384,9 @@ def test_a_deliberately_wider_search_range_is_accepted_and_warned_about(tmp_path
 @pytest.mark.parametrize("target, looks_like", [(264.0, "26.4 with the decimal point shifted"),
                                                 (-26.4, "26.4 with its sign lost"),
                                                 (2640.0, "26.4 with the decimal point shifted"),
-                                                (900.0, None)])
+                                                (900.0, None),
+                                                # a mistyped digit (29, 39 or 49) is no slip a target is known by
+                                                (99.0, None)])
 def test_a_target_far_outside_every_simulated_value_is_said_before_the_run(tmp_path, target, looks_like):
     from demid.data import far_target_warnings
 

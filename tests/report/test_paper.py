@@ -148,3 +148,20 @@ def test_missing_reproduction_is_nan_and_fails():
     missing = table[table["reproduced"].isna()]
     assert len(missing) > 0 and not missing["pass"].any()
     assert np.isnan(missing["abs_diff"]).all()
+
+
+def test_a_scenario_sets_unresolved_factor_and_a_published_zero_bound_get_their_rows():
+    """A factor the paper calls unresolved is compared as its width in % of the search range (only falling
+    short of 100 % counts); a published bound of 0 has an absolute difference and no relative one."""
+    pub = _published(scenario_sets={"m": {"a": {"feasible_fraction_pct": 1.0, "unresolved": ["z", "x"],
+                                                "lower": {"x": 0.0}}}},
+                     search_domain={"m": {"x": [0.1, 0.9], "z": [0.0, 12.0]}})
+    table = paper_comparison(pub, *_tables()).set_index("quantity")
+    z = table.loc["z unresolved: width [% of search range], a"]
+    assert z["published"] == 100.0 and z["reproduced"] == pytest.approx(100 * 10.0 / 12.0)
+    assert z["abs_diff"] == pytest.approx(100 - 100 * 10.0 / 12.0) and not z["pass"]
+    x = table.loc["x unresolved: width [% of search range], a"]
+    assert x["reproduced"] == pytest.approx(100.0) and x["abs_diff"] == 0.0 and x["pass"]
+    bound = table.loc["lower bound x (≳), a"]
+    assert bound["published"] == 0.0 and bound["reproduced"] == pytest.approx(0.1)
+    assert bound["abs_diff"] == pytest.approx(0.1) and np.isnan(bound["rel_diff"])

@@ -373,6 +373,9 @@ def test_bad_arguments():
         exact_set([squares(3)], [1.0], 0.1, [-1, -1], [1, 1])
     with pytest.raises(ValueError):
         exact_set([squares(2)], [1.0], 0.1, [-1, -1], [1, 1], reference=[0.0])
+    for lower in ([1, -1], [-1, 1], [2, -1]):  # one factor's range empty or reversed
+        with pytest.raises(ValueError, match="lower < upper"):
+            exact_set([squares(2)], [1.0], 0.1, lower, [1, 1])
 
 
 # --------------------------------------------------------------------------- the demonstration study

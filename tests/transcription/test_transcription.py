@@ -461,3 +461,21 @@ def test_a_repair_that_only_meets_a_printed_bound_is_not_a_lead(tables):
         repaired.loc[repaired["run"] == s.run, s.column] = s.suggested
         r2 = fit_response(repaired, factors, "y", alpha=alpha).statistics().r2
         assert abs(r2 - float(r2_text)) <= 0.0005 + 1e-12, (s, r2)
+
+
+@pytest.mark.parametrize("labels", ["shuffled", "none"])
+def test_a_suspect_is_named_by_the_tables_own_run_label(labels):
+    """Run labels as the table prints them (not its row numbers); a table without a run column numbers its rows
+    from one."""
+    table = montgomery()
+    row, truth = 3, table.loc[3, "y"]
+    table.loc[row, "y"] = 97.5
+    if labels == "shuffled":
+        table["run"] = np.random.default_rng(4).permutation(np.arange(101, 101 + len(table)))
+        expected = int(table.loc[row, "run"])
+    else:
+        table = table.drop(columns="run")
+        expected = row + 1
+    result = check_transcription(table, ["x1", "x2"], "y", MONTGOMERY_PUBLISHED, alpha=1.414)
+    best = result.suspects[0]
+    assert result.explained and (best.run, best.column, best.suggested) == (expected, "y", truth)
