@@ -355,7 +355,7 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
         rows.append({
             "wave": number, "simulated": len(table), "failed": failed, "analysed": len(wave["analysed"]),
             "surrogate": ("; ".join(choice_text(spec.response_labels.get(r.response, r.response), r)
-                                    for r in stats.itertuples()) if "surrogate" in stats else "quadratic"),
+                                    for r in stats.itertuples()) if "surrogate" in stats and len(stats) else "quadratic"),
             "q2": {str(r.response): used_q2(r) for r in stats.itertuples()},
             "surrogates": {str(r.response): surrogate_record(r) for r in stats.itertuples()},
             "scenario": scenario,

@@ -244,7 +244,7 @@ def _wave(runs: int, failed: int | None, plausible: float, statistics: pd.DataFr
 
 def test_the_wave_summary_counts_runs_and_reads_the_refocus_scenarios_share_and_intervals():
     spec = _spec(2)
-    stats = pd.DataFrame({"response": ["y"], "q2": [0.93], "surrogate": ["quadratic with log(y)"]})
+    stats = pd.DataFrame({"response": ["y"], "q2": [0.93], "surrogate": ["quadratic"]})
     empty = pd.DataFrame({"response": [], "q2": [], "surrogate": []})
     box = pd.DataFrame({"factor": ["f0", "f1"], "lower": [2.0, 3.0], "upper": [50.0, 100.0]})
     decision = {"stop": True, "action": "stop", "reason": "r"}
@@ -253,7 +253,7 @@ def test_the_wave_summary_counts_runs_and_reads_the_refocus_scenarios_share_and_
     first, second = summary["waves"]
     assert (first["wave"], first["simulated"], first["failed"], first["analysed"]) == (1, 11, 0, 11)
     assert (second["wave"], second["simulated"], second["failed"], second["analysed"]) == (2, 18, 3, 15)
-    assert first["surrogate"] == "quadratic with log(y)" and second["surrogate"] == "quadratic"
+    assert first["surrogate"] == "y by the quadratic (Q² 0.93)" and second["surrogate"] == "quadratic"
     assert first["q2"] == {"y": 0.93} and second["q2"] == {}
     assert first["scenario"] == second["scenario"] == "s"
     assert (first["plausible_fraction_of_omega_pct"], second["plausible_fraction_of_omega_pct"]) == (12.5, 4.25)
