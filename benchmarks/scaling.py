@@ -136,6 +136,7 @@ def run_one(k: int, runs: int | None) -> dict:
 def measure(k: int, runs: int | None, reps: int) -> dict:
     args = [sys.executable, __file__, "--one", str(k), "ccd" if runs is None else str(runs)]
     env = dict(os.environ, PYTHONPATH=str(REPO) + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    env.setdefault("OPENBLAS_NUM_THREADS", "1")  # as the workflow runs every job (workflow/rules/common.smk)
     rows = []
     for _ in range(reps):
         done = subprocess.run(args, env=env, capture_output=True, text=True)
