@@ -323,13 +323,13 @@ def run_loop(study: Study, folder: Path) -> dict:
         scores.append(study.score(_estimate(study, wspec, result)))
         if wave == WAVES:
             break
-        frames = {name: {"m": as_stored(result.parquet[name])} for name in ("tables", "fits", "robust", "findings")
+        frames = {name: {"m": as_stored(result.parquet[name])} for name in ("tables", "fits", "plausible", "findings")
                   if name in result.parquet}
         frames["tables"] = {"m": as_stored(result.parquet["table"])}
         planned = plan_waves({"m": wspec}, frames, z=Z, analysed_over_omega=True)  # as scripts/propose_wave.py
         next_domain, proposals, _ = tabulate_waves({"m": wspec}, planned)
         # as scripts/propose_wave.py: the decision on the measured change, the surrogates and the budget
-        evidence = wave_evidence(spec, wave, domain, as_stored(result.parquet["robust"]),
+        evidence = wave_evidence(spec, wave, domain, as_stored(result.parquet["plausible"]),
                                  as_stored(result.parquet["statistics"]), result.json["criticism_summary"], previous,
                                  proposals)
         previous = {**stop_decision(planned["m"].value, evidence),

@@ -57,7 +57,7 @@ run scored with the equivalent and settings lists of the after run):
     criticism/catalogue.py      20  12/20   60.0 %    12/18   66.7 %       18/18  100 %
     uncertainty/posterior.py    15  11/15   73.3 %    11/14   78.6 %       14/14  100 %
     pareto.py                   15   7/15   46.7 %     7/13   53.8 %       13/13  100 %
-    uncertainty/robust.py       15   6/15   40.0 %     6/12   50.0 %       12/12  100 %
+    uncertainty/plausible.py       15   6/15   40.0 %     6/12   50.0 %       12/12  100 %
     surrogate.py                15  12/13   92.3 %    12/12  100 %         12/12  100 %
     paper.py                    15  13/15   86.7 %    13/13  100 %         13/13  100 %
     criticism/verdict.py        12  10/12   83.3 %    10/12   83.3 %       12/12  100 %
@@ -276,7 +276,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/uncertainty/test_uncertainty.py"],
     },
-    "demid/uncertainty/robust.py": {
+    "demid/uncertainty/plausible.py": {
         "functions": None,
         "tests": ["tests/uncertainty/test_uncertainty.py", "tests/sampling/test_set_estimators.py"],
     },
@@ -589,7 +589,7 @@ EQUIVALENT: dict[str, str] = {
         "e_obs is the one column resid_w[:, None]: its statistics have one column, [0] and [-1] are the same",
     "demid/criticism/catalogue.py::Round._drift::float(f_logp(f_obs, df - 1)) => f_logp(f_obs, df - 1)#0":
         _NUMPY_FLOAT + " (logp enters comparisons, sums and np.exp only)",
-    # --- posteriors, Pareto fronts, robust sets, surrogate
+    # --- posteriors, Pareto fronts, plausible sets, surrogate
     "demid/uncertainty/posterior.py::_quantiles::int(np.clip(np.searchsorted(cdf / cdf[-1], q), 1, len(axis) - 1)) "
     "=> np.clip(np.searchsorted(cdf / cdf[-1], q), 1, len(axis) - 1)#0":
         "j only indexes axis: a numpy integer indexes the same element",
@@ -598,17 +598,17 @@ EQUIVALENT: dict[str, str] = {
         "the sweep of pareto_front, whose order among the kept points is unchanged",
     "demid/pareto.py::polish_front::[(0.0, 1.0)] * domain.dim => [(0.0, 1.0)]#0":
         "scipy's L-BFGS-B broadcasts a single (lower, upper) pair to every coordinate (checked with scipy 1.17.1)",
-    "demid/uncertainty/robust.py::robust_admissible_set::observables = tuple(observables) => pass#0":
+    "demid/uncertainty/plausible.py::plausible_admissible_set::observables = tuple(observables) => pass#0":
         "plausibility_fields takes any sequence, and admissible_set turns observables into a tuple itself",
     "demid/paper.py::_rule::d <= 0.0005 => d < 0.0005#0":
         "differs only for an R^2 difference of exactly 0.0005 to the last bit",
     "demid/paper.py::_fraction::0 => 1#0":
         "identifiability.csv repeats a scenario's fraction on each factor's row, and the paper's materials have "
         "two or three factors: the first and second rows carry the same number",
-    "demid/uncertainty/robust.py::summarise_set::z == 0 and n % 2 == 1 => n % 2 == 1#0":
+    "demid/uncertainty/plausible.py::summarise_set::z == 0 and n % 2 == 1 => n % 2 == 1#0":
         "grid predictions only reach summarise_set with z = 0: tolerance_sweep makes them only for strict sets, "
         "and the ranking asks for no error",
-    "demid/uncertainty/robust.py::robust_identifiability_frame::float(tolerance) => tolerance#0":
+    "demid/uncertainty/plausible.py::plausible_identifiability_frame::float(tolerance) => tolerance#0":
         "every caller passes a float tolerance (the schema's number): the column is the same float",
     "demid/surrogate.py::SurrogateFit.fitted_exactly::self.hat_diag >= LEVERAGE_UNPREDICTABLE => "
     "self.hat_diag > LEVERAGE_UNPREDICTABLE#0":

@@ -7,7 +7,7 @@ mildly periodic) stand in for the DEM model.  Per simulator and seed:
    "simulated" with Gaussian noise; targets are the noise-free simulator at a random point of
    the inner half of the domain, so the true admissible set is known to be non-empty;
 2. the global quadratic is fitted (``demid.surrogate.fit_material``) and its plausible set taken
-   from ``demid.uncertainty.robust_identifiability_frame``, as in the pipeline;
+   from ``demid.uncertainty.plausible_identifiability_frame``, as in the pipeline;
 3. (a) **next wave**: ``demid.next_wave.plan_next_wave`` with ``count`` runs; the proposals are
    simulated, and a new quadratic is fitted in the next domain on the earlier runs inside it plus
    the new runs (``design: custom``); its admissible set lives in that box;
@@ -52,7 +52,7 @@ from demid.design_generation import FactorRange, generate_sheet
 from demid.next_wave import plan_next_wave
 from demid.spec import MaterialSpec
 from demid.surrogate import fit_material
-from demid.uncertainty import robust_identifiability_frame
+from demid.uncertainty import plausible_identifiability_frame
 
 RANGES = {"e": (0.1, 0.9), "mu": (0.05, 0.35)}
 FACTORS = list(RANGES)
@@ -209,8 +209,8 @@ def run_case(name, sim, seed, count, n):
     ccd = _table(pts, _simulate(sim, pts, rng, scale))
     ccd_cfg = _cfg(LO, HI, targets, {"type": "ccd", "alpha": 2 ** 0.5, "center_runs": 5}, count)
     surs, _, ccd_set = _estimate(ccd, ccd_cfg, n)
-    robust = robust_identifiability_frame(surs, domain, {"both": (tuple(targets), TOLERANCE)}, targets, n, z=2.0)
-    wave = plan_next_wave("bench", ccd, surs, MaterialSpec.from_material("bench", ccd_cfg), robust, z=2.0)
+    plausible = plausible_identifiability_frame(surs, domain, {"both": (tuple(targets), TOLERANCE)}, targets, n, z=2.0)
+    wave = plan_next_wave("bench", ccd, surs, MaterialSpec.from_material("bench", ccd_cfg), plausible, z=2.0)
     box_lo, box_hi = wave.domain["lower"].to_numpy(), wave.domain["upper"].to_numpy()
     contained = bool(np.all(truth.lower >= box_lo - 1e-9) and np.all(truth.upper <= box_hi + 1e-9))
     # Smallest gap between the true set and a box side that was not clipped to the search range.

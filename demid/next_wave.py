@@ -2,7 +2,7 @@
 
 After a first design, the global quadratic locates the admissible set only roughly.  The next
 wave refocuses (history-matching style) on the *plausible* set of one scenario, i.e. the
-robust set of :mod:`demid.uncertainty` (surrogate standard error and measurement sigma
+plausible set of :mod:`demid.uncertainty` (surrogate standard error and measurement sigma
 included, ``robust_z`` standard deviations), computed once by the uncertainty step:
 
 * **next domain** = the plausible set's spans, widened by ``margin`` times the current range
@@ -115,11 +115,11 @@ def next_box(domain: Domain, plausible_lower, plausible_upper, margin: float) ->
     return np.maximum(lo_u, p_lo - pad), np.minimum(hi_u, p_hi + pad)
 
 
-def planned_box(spec: MaterialSpec, robust: pd.DataFrame) -> tuple[np.ndarray, np.ndarray, bool]:
+def planned_box(spec: MaterialSpec, plausible: pd.DataFrame) -> tuple[np.ndarray, np.ndarray, bool]:
     """The next box (search units) of a material with ``next_runs``: the plausible spans of its refocus
-    scenario (the robust-identifiability frame) widened by the margin and clipped; and whether the plausible
+    scenario (the plausible-identifiability frame) widened by the margin and clipped; and whether the plausible
     set is empty (the range is then kept)."""
-    rows = robust[robust["scenario"] == refocus_scenario(spec)].set_index("factor").loc[spec.factor_names]
+    rows = plausible[plausible["scenario"] == refocus_scenario(spec)].set_index("factor").loc[spec.factor_names]
     empty = float(rows["robust_fraction_pct"].iloc[0]) == 0 or not np.isfinite(rows["robust_lower"]).all()
     lo, hi = next_box(spec.domain, rows["robust_lower"].to_numpy(), rows["robust_upper"].to_numpy(),
                       spec.next_runs.margin)
@@ -370,15 +370,15 @@ def _wave_value(judged: JudgedScenario, lo: np.ndarray, hi: np.ndarray, points: 
 
 
 def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: MaterialSpec,
-                   robust: pd.DataFrame, findings: pd.DataFrame | None = None, *, z: float,
+                   plausible: pd.DataFrame, findings: pd.DataFrame | None = None, *, z: float,
                    analysed_over_omega: bool = False) -> NextWave:
     """The next domain and runs of one material with ``next_runs``.
 
     ``spec``: the material's :class:`~demid.spec.MaterialSpec`.
-    ``robust``: the material's robust-identifiability frame (:func:`demid.uncertainty.analyse_material`);
+    ``plausible``: the material's plausible-identifiability frame (:func:`demid.uncertainty.analyse_material`);
     its plausible spans of the refocus scenario are used as they are.  ``findings``: the material's
     criticism findings (missing terms with aliases get separating runs).  ``z``: the config's
-    ``robust_z``, the same as for the robust set, so that the plausible grid points used for the
+    ``robust_z``, the same as for the plausible set, so that the plausible grid points used for the
     design are those of that set.  ``analysed_over_omega``: the next wave analyses every run over the search
     range (a simulated material's waves), so the criticism's runs outside the box are made too; by hand the
     next wave is studied in the box and they are left out.
@@ -387,7 +387,7 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
     factors = spec.factor_names
     domain = spec.domain
     scenario = refocus_scenario(spec)
-    lo, hi, empty = planned_box(spec, robust)
+    lo, hi, empty = planned_box(spec, plausible)
     lower_actual, upper_actual = domain.to_actual(lo)[0], domain.to_actual(hi)[0]
     dom_frame = pd.DataFrame({"material": material, "factor": factors, "lower": lower_actual,
                               "upper": upper_actual})
@@ -455,8 +455,8 @@ def plan_waves(specs: dict, frames: dict, *, z: float, analysed_over_omega: bool
     """:func:`plan_next_wave` for every material given (``analysed_over_omega``: see there).
 
     ``specs``: material -> :class:`~demid.spec.MaterialSpec`.
-    ``frames``: ``tables``, ``fits``, ``robust``, ``findings`` -> material -> frame (the pipeline's
-    validated table, fits, robust-identifiability and criticism-findings intermediates).
+    ``frames``: ``tables``, ``fits``, ``plausible``, ``findings`` -> material -> frame (the pipeline's
+    validated table, fits, plausible-identifiability and criticism-findings intermediates).
     """
     from .surrogate import surrogates_from_frame
 
@@ -466,7 +466,7 @@ def plan_waves(specs: dict, frames: dict, *, z: float, analysed_over_omega: bool
         if "status" in table:
             table = table[table["status"] != "failed"]
         surrogates = surrogates_from_frame(frames["fits"][m], spec.factor_names)
-        waves[m] = plan_next_wave(m, table, surrogates, spec, frames["robust"][m], frames["findings"][m], z=z,
+        waves[m] = plan_next_wave(m, table, surrogates, spec, frames["plausible"][m], frames["findings"][m], z=z,
                                   analysed_over_omega=analysed_over_omega)
     return waves
 

@@ -52,7 +52,7 @@ MATERIAL_OUTPUTS = {
     "scenarios": Output("scenarios/{material}.parquet"),
     "sets_figure": Output("figures/sets_{material}.png", "Admissible sets", "sets.rst"),
     "surface_figure": Output("figures/surface_{material}.png", "Response surfaces", "surface.rst"),
-    "robust": Output("uncertainty/{material}_robust.parquet"),
+    "plausible": Output("uncertainty/{material}_robust.parquet"),
     "sweep": Output("uncertainty/{material}_sweep.parquet"),
     "information_gain": Output("uncertainty/{material}_information_gain.parquet"),
     "ranking": Output("uncertainty/{material}_ranking.parquet"),
@@ -210,14 +210,14 @@ def combinations_step(surrogates: dict, spec: MaterialSpec, coding: Coding, fitt
                       z: float, ranking: pd.DataFrame | None = None,
                       judged: dict | None = None) -> MaterialCombinationsStep:
     """Every scenario's identified combinations (strict set: the admissibility step's node masks;
-    plausible set: the robust set on the robust table's grid) and the canonical analysis of every fit.
+    plausible set: the plausible set on the plausible table's grid) and the canonical analysis of every fit.
     ``judged``: the scenarios judged once at ``z`` (:func:`~demid.scenario.judged_scenarios`)."""
     from .canonical import fit_canonical
     from .combinations import material_combinations, plausible_sets
     from .plots import combinations_figure
     from .uncertainty import recommended_sizes
 
-    plausible = plausible_sets(surrogates, spec, z=z, n=recommended_sizes(spec.dim)["robust"], judged=judged)
+    plausible = plausible_sets(surrogates, spec, z=z, n=recommended_sizes(spec.dim)["plausible"], judged=judged)
     result = material_combinations(surrogates, spec, coding, strict_sets, plausible, ranking)
     fit_summary = {fit.response: {"canonical": fit_canonical(fit).to_json()} for fit in fitted}
     return MaterialCombinationsStep(result.to_frame(), result.to_json(), fit_summary,
@@ -243,7 +243,7 @@ class MaterialAnalysis:
         return {*self.parquet, *self.csv, *self.json, *self.figures, "criticism"}
 
 
-def _next_box_points(spec: MaterialSpec, robust: pd.DataFrame) -> np.ndarray | None:
+def _next_box_points(spec: MaterialSpec, plausible: pd.DataFrame) -> np.ndarray | None:
     """Where the criticism chooses the runs it proposes when a next wave will make them: the next box's grid
     (a next wave made by hand keeps only runs inside the box; a simulated one places its design there); None
     without ``next_runs``."""
@@ -251,7 +251,7 @@ def _next_box_points(spec: MaterialSpec, robust: pd.DataFrame) -> np.ndarray | N
         return None
     from .next_wave import box_points, planned_box
 
-    lo, hi, _ = planned_box(spec, robust)
+    lo, hi, _ = planned_box(spec, plausible)
     return box_points(spec.domain, lo, hi)
 
 
@@ -279,7 +279,7 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
     criticism = criticize_material(table, surrogates, spec, coding=validated.coding,
                                    fits={fit.response: fit for fit in fitted},
                                    strict_sets=stored_strict_sets(scenarios, judged, reference=True),
-                                   run_candidates=_next_box_points(spec, uncertainty.robust),
+                                   run_candidates=_next_box_points(spec, uncertainty.plausible),
                                    simulated=not typo_stop)  # a simulated wave: demid made every run itself
     combos = combinations_step(surrogates, spec, validated.coding, fitted, sets.sets or {}, z=z,
                                ranking=uncertainty.ranking, judged=judged)
@@ -293,7 +293,7 @@ def material_step(spec: MaterialSpec, data: str | Path, *, z: float, tolerances,
         figures["pareto_figure"] = sets.pareto.figure
         csv["pareto"] = sets.pareto.table
     parquet = {"table": validated.table, "transcription": validated.transcription, **fits,
-               "scenarios": sets.scenarios, "robust": uncertainty.robust, "sweep": uncertainty.sweep,
+               "scenarios": sets.scenarios, "plausible": uncertainty.plausible, "sweep": uncertainty.sweep,
                "information_gain": uncertainty.information_gain, "ranking": uncertainty.ranking,
                "findings": criticism.findings, "calibration": criticism.calibration,
                "combinations": combos.table}

@@ -149,17 +149,17 @@ def _change_text(evidence: WaveEvidence, change: float) -> str:
             f"({100 * change:+.1f} %)")
 
 
-def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, robust: pd.DataFrame,
+def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, plausible: pd.DataFrame,
                   statistics: pd.DataFrame, criticism: dict, previous: dict | None, runs: pd.DataFrame) -> WaveEvidence:
     """The :class:`WaveEvidence` of wave ``wave`` of the material ``spec`` (its full search range): from the
-    wave's box ``domain``, robust-identifiability frame, fit statistics, criticism summary and proposed
+    wave's box ``domain``, plausible-identifiability frame, fit statistics, criticism summary and proposed
     ``runs``, and the previous wave's decision (``previous``, None for wave 1)."""
     from .next_wave import refocus_scenario
     from .run_purposes import CONFIRM, DECIDE
 
     analysed = wave_spec(spec, "", domain) if domain is not None else spec
     scenario = refocus_scenario(analysed)
-    rows = robust[robust["scenario"] == scenario]
+    rows = plausible[plausible["scenario"] == scenario]
     plausible = float(rows["robust_fraction_pct"].iloc[0]) if len(rows) else 0.0  # a share of Omega already
     observables = next(sc.observables for sc in analysed.scenarios if sc.name == scenario)
     stats = statistics.set_index("response")
@@ -325,7 +325,7 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
     """What each wave simulated and found, and why the loop stopped, for the report's "Waves" section.
 
     ``waves``: per wave in order, ``table`` (every run simulated up to it, with ``status``), ``analysed`` (its
-    runs analysed), ``domain`` (its box, None for wave 1), ``robust`` (its robust-identifiability frame) and
+    runs analysed), ``domain`` (its box, None for wave 1), ``plausible`` (its plausible-identifiability frame) and
     ``statistics`` (its fit statistics).  ``decision``: the last wave's decision (:func:`stop_decision`), None
     for a material without waves.  Plausible shares are of Omega (every wave is analysed over Omega); intervals
     are in actual units."""
@@ -335,7 +335,7 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
     for number, wave in enumerate(waves, start=1):
         analysed = wave_spec(spec, "", wave["domain"])
         scenario = refocus_scenario(analysed)
-        robust = wave["robust"][wave["robust"]["scenario"] == scenario].set_index("factor")
+        plausible = wave["plausible"][wave["plausible"]["scenario"] == scenario].set_index("factor")
         stats = wave["statistics"]
         table = wave["table"]
         failed = int((table["status"] == "failed").sum()) if "status" in table else 0
@@ -344,7 +344,7 @@ def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -
             "surrogate": str(stats["surrogate"].iloc[0]) if "surrogate" in stats and len(stats) else "quadratic",
             "q2": {str(r): float(q) for r, q in zip(stats["response"], stats["q2"])},
             "scenario": scenario,
-            "plausible_fraction_of_omega_pct": float(robust["robust_fraction_pct"].iloc[0]) if len(robust) else 0.0,
-            "plausible": {f: [float(robust.at[f, "robust_lower"]), float(robust.at[f, "robust_upper"])]
-                          for f in spec.factor_names if f in robust.index}})
+            "plausible_fraction_of_omega_pct": float(plausible["robust_fraction_pct"].iloc[0]) if len(plausible) else 0.0,
+            "plausible": {f: [float(plausible.at[f, "robust_lower"]), float(plausible.at[f, "robust_upper"])]
+                          for f in spec.factor_names if f in plausible.index}})
     return {"material": spec.name, "waves": rows, "decision": decision}

@@ -10,7 +10,7 @@ from demid.next_wave import plan_waves, tabulate_waves  # noqa: E402
 inp, params = snakemake.input, snakemake.params  # noqa: F821
 specs = {spec.name: spec for spec in params.specs}
 frames = {name: {m: read_parquet(path) for m, path in zip(specs, getattr(inp, name))}
-          for name in ("tables", "fits", "robust", "findings")}
+          for name in ("tables", "fits", "plausible", "findings")}
 waves = plan_waves(specs, frames, z=params.z)
 domain, runs, reasons = tabulate_waves(specs, waves)
 write_csv(domain, snakemake.output.domain)  # noqa: F821

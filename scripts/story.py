@@ -12,7 +12,7 @@ inp, out, params = snakemake.input, snakemake.output, snakemake.params  # noqa: 
 specs = {spec.name: spec for spec in params.specs}
 per_material = {name: dict(zip(specs, getattr(inp, name))) for name in ("tables", "criticism", "uncertainty",
                                                                           "combinations")}
-files = {"identifiability": inp.identifiability, "robust": inp.robust, "ranking": inp.ranking, **per_material,
+files = {"identifiability": inp.identifiability, "plausible": inp.plausible, "ranking": inp.ranking, **per_material,
          "next_wave_value": inp.get("next_wave_value"),
          "wave_summaries": {Path(f).stem.removeprefix("summary_"): f for f in inp.get("wave_summaries", [])}}
 verdicts, advice = study_story(specs, files)

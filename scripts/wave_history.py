@@ -23,8 +23,8 @@ history = wave_history(spec, waves)
 write_csv(history, out.table)
 save_figure(waves_figure(history, spec), out.figure)
 decision = json.loads(Path(inp.decision).read_text(encoding="utf-8")) if "decision" in inp.keys() else None
-summary = wave_summary(spec, [{"table": t, "analysed": a, "domain": d, "robust": read_parquet(r),
+summary = wave_summary(spec, [{"table": t, "analysed": a, "domain": d, "plausible": read_parquet(r),
                                "statistics": read_parquet(s)}
-                              for t, a, d, r, s in zip(tables, analysed, domains, inp.robust, inp.statistics)],
+                              for t, a, d, r, s in zip(tables, analysed, domains, inp.plausible, inp.statistics)],
                        decision)
 write_json(summary, out.summary)

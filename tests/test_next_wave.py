@@ -16,7 +16,7 @@ from demid.next_wave import (DOMAIN_COLUMNS, PURPOSE_DESIGN, PURPOSE_SUPPORT, al
                              next_box, plan_materials, plan_next_wave, propose_runs)
 from demid.spec import MaterialSpec
 from demid.surrogate import fit_material
-from demid.uncertainty import robust_identifiability_frame
+from demid.uncertainty import plausible_identifiability_frame
 
 from .helpers import make_ccd_table
 
@@ -40,14 +40,14 @@ def _annulus_material(count=9, tolerance=EPS, margin=0.1):
         "scenarios": {"y": {"observables": ["y"], "tolerance": tolerance}},
         "next_runs": {"count": count, "scenario": "", "margin": margin}})
     surrogates = {f.response: f.surrogate() for f in fit_material(table, spec)}
-    robust = robust_identifiability_frame(surrogates, spec.domain, {"y": (("y",), tolerance)}, {"y": R0 ** 2}, 201,
+    plausible = plausible_identifiability_frame(surrogates, spec.domain, {"y": (("y",), tolerance)}, {"y": R0 ** 2}, 201,
                                           z=2.0)
-    return table, surrogates, spec, robust
+    return table, surrogates, spec, plausible
 
 
 def test_next_domain_contains_the_planted_set_and_is_refocused():
-    table, surrogates, spec, robust = _annulus_material()
-    wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
+    table, surrogates, spec, plausible = _annulus_material()
+    wave = plan_next_wave("m", table, surrogates, spec, plausible, z=2.0)
     assert list(wave.domain.columns) == DOMAIN_COLUMNS
     outer = R0 * np.sqrt(1 + EPS)
     lower, upper = wave.domain["lower"].to_numpy(), wave.domain["upper"].to_numpy()
@@ -69,8 +69,8 @@ def test_next_box_clips_to_range_and_handles_log_factors():
 def test_proposals_lie_in_the_box_on_the_plausible_set_and_predict_observables():
     """A quarter of the runs support the whole box, the rest lie on the band (here, noise-free, the
     admissible set itself)."""
-    table, surrogates, spec, robust = _annulus_material(count=9)
-    wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
+    table, surrogates, spec, plausible = _annulus_material(count=9)
+    wave = plan_next_wave("m", table, surrogates, spec, plausible, z=2.0)
     runs = wave.runs
     assert list(runs.columns) == ["material", "proposal", "a", "b", "purpose", "predicted_y"]
     assert list(runs["proposal"]) == list(range(1, 10))
@@ -108,12 +108,12 @@ def test_the_proposals_support_the_whole_refocused_box(monkeypatch):
     D-criterion of the box's quadratic is far better than that choice's."""
     import demid.next_wave as nw
 
-    table, surrogates, spec, robust = _annulus_material(count=9)
-    wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
+    table, surrogates, spec, plausible = _annulus_material(count=9)
+    wave = plan_next_wave("m", table, surrogates, spec, plausible, z=2.0)
     coded = _box_runs(wave, table)
     support = coded[len(coded) - len(wave.runs):][(wave.runs["purpose"] == PURPOSE_SUPPORT).to_numpy()]
     monkeypatch.setattr(nw, "BOX_SHARE", 0.0)
-    band_only = _box_runs(plan_next_wave("m", table, surrogates, spec, robust, z=2.0), table)
+    band_only = _box_runs(plan_next_wave("m", table, surrogates, spec, plausible, z=2.0), table)
     corners = np.array(list(product((-1.0, 1.0), repeat=2)))
 
     def corner_gap(pts):
@@ -185,15 +185,15 @@ def test_findings_name_the_alias_sets():
 
 
 def test_same_inputs_same_tables():
-    table, surrogates, spec, robust = _annulus_material()
-    one = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
-    two = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
+    table, surrogates, spec, plausible = _annulus_material()
+    one = plan_next_wave("m", table, surrogates, spec, plausible, z=2.0)
+    two = plan_next_wave("m", table, surrogates, spec, plausible, z=2.0)
     pd.testing.assert_frame_equal(one.runs, two.runs)
     pd.testing.assert_frame_equal(one.domain, two.domain)
 
 
 def test_plan_materials_without_requests_gives_headers_only():
-    domain, runs, reasons = plan_materials({}, {"tables": {}, "fits": {}, "robust": {}, "findings": {}}, z=2.0)
+    domain, runs, reasons = plan_materials({}, {"tables": {}, "fits": {}, "plausible": {}, "findings": {}}, z=2.0)
     assert list(domain.columns) == DOMAIN_COLUMNS and len(domain) == 0 and reasons == {}
     assert list(runs.columns) == ["material", "proposal", "purpose"]
 
@@ -276,8 +276,8 @@ def test_runs_off_a_thin_plausible_set_are_labelled_so(monkeypatch):
 
     monkeypatch.setattr(nw, "BOX_SHARE", 0.0)
 
-    table, surrogates, spec, robust = _annulus_material(count=9, tolerance=0.002)
-    wave = plan_next_wave("m", table, surrogates, spec, robust, z=0.0)
+    table, surrogates, spec, plausible = _annulus_material(count=9, tolerance=0.002)
+    wave = plan_next_wave("m", table, surrogates, spec, plausible, z=0.0)
     assert wave.value is None  # strict sets (z = 0) have no plausible set for a wave to contract
     rel = np.abs(wave.runs["predicted_y"] / R0 ** 2 - 1)
     on = wave.runs["purpose"] == PURPOSE_DESIGN
@@ -311,8 +311,8 @@ def test_the_reason_lists_the_factors_whose_range_narrows_and_counts_the_earlier
     """With a margin of half the range the annulus' box keeps the whole range of b and narrows a at its upper
     end only: the reason names a alone, with the box's ends, and counts the earlier runs inside the box
     (counted here from the table).  A margin covering every edge keeps the range and says so."""
-    table, surrogates, spec, robust = _annulus_material(margin=0.5)
-    wave = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
+    table, surrogates, spec, plausible = _annulus_material(margin=0.5)
+    wave = plan_next_wave("m", table, surrogates, spec, plausible, z=2.0)
     box = wave.domain.set_index("factor")
     assert box.loc["b", "lower"] == 0.0 and box.loc["b", "upper"] == 1.0 and box.loc["a", "lower"] == 0.0
     a_hi = box.loc["a", "upper"]
@@ -322,8 +322,8 @@ def test_the_reason_lists_the_factors_whose_range_narrows_and_counts_the_earlier
     assert wave.reason.startswith(f"Refocused on the plausible set of scenario 'y' (y) with a margin of 0.5 of "
                                   f"the range: a 0–{a_hi:.4g}; 9 new runs from a D-optimal quadratic design "
                                   f"given the {inside} earlier run(s) inside the box: ")
-    table, surrogates, spec, robust = _annulus_material(margin=0.7)
-    kept = plan_next_wave("m", table, surrogates, spec, robust, z=2.0)
+    table, surrogates, spec, plausible = _annulus_material(margin=0.7)
+    kept = plan_next_wave("m", table, surrogates, spec, plausible, z=2.0)
     assert kept.domain[["lower", "upper"]].to_numpy().tolist() == [[0.0, 1.0], [0.0, 1.0]]
     assert kept.reason.startswith("The plausible set of scenario 'y' (y) reaches (within the margin) every edge of "
                                   f"the current range, so the range is kept; 9 new runs from a D-optimal quadratic "
@@ -339,8 +339,8 @@ def test_the_count_is_the_whole_wave_the_criticism_runs_included():
 
     from demid.next_wave import PURPOSE_DECIDE
 
-    table, surrogates, spec, robust = _annulus_material(count=9)
-    plain = plan_next_wave("m", table, surrogates, spec, robust, None, z=2.0)
+    table, surrogates, spec, plausible = _annulus_material(count=9)
+    plain = plan_next_wave("m", table, surrogates, spec, plausible, None, z=2.0)
     box = plain.domain.set_index("factor")
     middle = {f: float((box.at[f, "lower"] + box.at[f, "upper"]) / 2) for f in ("a", "b")}
 
@@ -349,7 +349,7 @@ def test_the_count_is_the_whole_wave_the_criticism_runs_included():
         return pd.DataFrame([{"response": "y", "cause": "ambiguous", "detail": "outlier (3);step (9)", "aliases": "",
                               "discriminating_runs": json.dumps(runs)}])
 
-    four = plan_next_wave("m", table, surrogates, spec, robust, findings(4), z=2.0)
+    four = plan_next_wave("m", table, surrogates, spec, plausible, findings(4), z=2.0)
     assert len(plain.runs) == 9 and len(four.runs) == 9
     assert four.runs["purpose"].tolist()[:4] == [PURPOSE_DECIDE] * 4
     assert PURPOSE_DECIDE not in four.runs["purpose"].tolist()[4:]
@@ -362,7 +362,7 @@ def test_the_count_is_the_whole_wave_the_criticism_runs_included():
     inside = earlier[np.all((earlier >= lo - 1e-12) & (earlier <= hi + 1e-12), axis=1)]
     short = 6 - np.linalg.matrix_rank(model_matrix((inside - (lo + hi) / 2) / ((hi - lo) / 2), quadratic_terms(2)))
     assert design_count(9, 12, inside, lo, hi) == short > 0  # the refocused box holds too few earlier runs
-    twelve = plan_next_wave("m", table, surrogates, spec, robust, findings(12), z=2.0)
+    twelve = plan_next_wave("m", table, surrogates, spec, plausible, findings(12), z=2.0)
     assert len(twelve.runs) == 9 and twelve.runs["purpose"].tolist().count(PURPOSE_DECIDE) == 9 - short
     assert f"; {12 - (9 - short)} more run(s) the criticism proposed do not fit in the wave's 9 runs" in twelve.reason
     new = np.vstack([inside, twelve.runs[["a", "b"]].to_numpy(dtype=float)])
@@ -378,14 +378,14 @@ def test_a_simulated_wave_makes_the_criticism_runs_outside_the_box_too():
 
     from demid.next_wave import PURPOSE_DECIDE
 
-    table, surrogates, spec, robust = _annulus_material(count=9)
+    table, surrogates, spec, plausible = _annulus_material(count=9)
     far = {"a": 0.95, "b": 0.05, "purpose": PURPOSE_DECIDE}
     findings = pd.DataFrame([{"response": "y", "cause": "ambiguous", "detail": "outlier (3);step (9)", "aliases": "",
                               "discriminating_runs": json.dumps([far, far])}])
-    by_hand = plan_next_wave("m", table, surrogates, spec, robust, findings, z=2.0)
+    by_hand = plan_next_wave("m", table, surrogates, spec, plausible, findings, z=2.0)
     assert PURPOSE_DECIDE not in by_hand.runs["purpose"].tolist()
     assert "2 run(s) the criticism proposed lie outside the refocused box and are left out" in by_hand.reason
-    simulated = plan_next_wave("m", table, surrogates, spec, robust, findings, z=2.0, analysed_over_omega=True)
+    simulated = plan_next_wave("m", table, surrogates, spec, plausible, findings, z=2.0, analysed_over_omega=True)
     assert len(simulated.runs) == 9 and simulated.runs["purpose"].tolist()[:2] == [PURPOSE_DECIDE] * 2
     assert simulated.runs[["a", "b"]].to_numpy()[:2].tolist() == [[0.95, 0.05]] * 2
     assert "left out" not in simulated.reason

@@ -76,11 +76,11 @@ def test_the_verdict_says_the_interval_ends_at_the_physical_limit():
     spec = _spec({"lower": 0.0, "upper": 1.0})
     strict = pd.DataFrame([{"scenario": "s", "factor": "x", "lower": 0.93, "upper": 1.0, "at_bound": "upper"},
                            {"scenario": "s", "factor": "w", "lower": 0.4, "upper": 0.45, "at_bound": "none"}])
-    robust = pd.DataFrame([{"scenario": "s", "factor": "x", "robust_lower": 0.92, "robust_upper": 1.0,
+    plausible = pd.DataFrame([{"scenario": "s", "factor": "x", "robust_lower": 0.92, "robust_upper": 1.0,
                             "robust_fraction_pct": 5.0},
                            {"scenario": "s", "factor": "w", "robust_lower": 0.4, "robust_upper": 0.46,
                             "robust_fraction_pct": 5.0}])
-    frame = verdict_frame(spec, strict, robust).set_index("factor")
+    frame = verdict_frame(spec, strict, plausible).set_index("factor")
     assert frame.loc["x", "verdict"] == "identified"
     assert frame.loc["x", "reason"].startswith("the plausible interval is 8 % of the search range wide and clear of "
                                                "the lower bound, ending at the physical upper limit (1), beyond which "
@@ -88,7 +88,7 @@ def test_the_verdict_says_the_interval_ends_at_the_physical_limit():
     assert "physical" not in frame.loc["w", "reason"]
     assert not [i for i in material_advice(spec, frame.reset_index()) if i.kind == "widen"]
     # without the limit the same interval is cut, and the range is widened there
-    plain = verdict_frame(_spec(None), strict, robust)
+    plain = verdict_frame(_spec(None), strict, plausible)
     assert plain.set_index("factor").loc["x", "verdict"] == "cut by the search range (upper bound)"
     assert [(i.kind, i.factor, i.bound) for i in material_advice(_spec(None), plain) if i.kind == "widen"] == [
         ("widen", "x", "upper")]

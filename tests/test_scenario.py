@@ -33,7 +33,7 @@ BUILDERS = ("plausibility_fields", "scenario_surrogates", "scenario_bands", "sce
 ALLOWED = {
     "scenario.py",
     "sampling/residuals.py",  # the plausible field's own module (the grid estimator's fields)
-    "uncertainty/robust.py",  # the plausible grid set of the robust table, given the judged surrogates and bands
+    "uncertainty/plausible.py",  # the plausible grid set of the plausible table, given the judged surrogates and bands
 }
 
 

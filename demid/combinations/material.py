@@ -1,9 +1,9 @@
 """Identified combinations of one material: per scenario, the strict and the plausible set.
 
 The *strict* set is the admissibility step's (its node mask on the evaluation grid, or its
-Sobol points above 3 factors); the *plausible* set is the robust set of
-:mod:`demid.uncertainty.robust` (``|ŷ − y*| ≤ ε|y*| + z·√(se² + σ²)``, the same z and
-measurement σ as the robust table) on the robust table's grid.  Both go through the same
+Sobol points above 3 factors); the *plausible* set is the plausible set of
+:mod:`demid.uncertainty.plausible` (``|ŷ − y*| ≤ ε|y*| + z·√(se² + σ²)``, the same z and
+measurement σ as the plausible table) on the plausible table's grid.  Both go through the same
 :func:`set_combinations`, which takes any set of points: a different plausible set is a
 different argument, not different code.
 
@@ -397,7 +397,7 @@ def material_combinations(surrogates: dict, spec: MaterialSpec, coding: Coding, 
 
 def plausible_sets(surrogates: dict, spec: MaterialSpec, *, z: float, n: int,
                    judged: dict | None = None) -> dict[str, AdmissibleSet]:
-    """Every scenario's plausible set on an n-grid (n Sobol points above 3 factors), as the robust table
+    """Every scenario's plausible set on an n-grid (n Sobol points above 3 factors), as the plausible table
     evaluates it: its z, each observable's own tolerance and measurement band, σ and discrepancy δ
     (:class:`~demid.scenario.JudgedScenario`; ``judged``: the scenarios already judged at ``z``)."""
     from ..scenario import judged_scenarios

@@ -61,15 +61,15 @@ _TABLES: dict[str, dict[str, tuple[str, str]]] = {
                                   "half a unit of that last printed digit."),
     },
     "robust_identifiability": {
-        "z": ("–", "Standard deviations added to ε in the robust set (z = 2 covers about 95 %)."),
+        "z": ("–", "Standard deviations added to ε in the plausible set (z = 2 covers about 95 %)."),
         "strict_fraction_pct": (PCT, "Feasible fraction of the strict set (tolerance only)."),
-        "robust_fraction_pct": (PCT, "Feasible fraction of the robust (plausible) set: tolerance plus "
+        "robust_fraction_pct": (PCT, "Feasible fraction of the plausible set: tolerance plus "
                                      "z·√(se² + σ²)."),
         "strict_lower": (FACTOR_UNIT, "Smallest factor value in the strict set."),
         "strict_upper": (FACTOR_UNIT, "Largest factor value in the strict set."),
         "strict_width": (FACTOR_UNIT, "strict_upper − strict_lower."),
-        "robust_lower": (FACTOR_UNIT, "Smallest factor value in the robust set."),
-        "robust_upper": (FACTOR_UNIT, "Largest factor value in the robust set."),
+        "robust_lower": (FACTOR_UNIT, "Smallest factor value in the plausible set."),
+        "robust_upper": (FACTOR_UNIT, "Largest factor value in the plausible set."),
         "robust_width": (FACTOR_UNIT, "robust_upper − robust_lower."),
         "strict_fraction_error_pct": (PCT, "Sampling error of strict_fraction_pct (0 on a full grid)."),
         "robust_fraction_error_pct": (PCT, "Sampling error of robust_fraction_pct (0 on a full grid)."),
@@ -282,8 +282,8 @@ def _next_wave_rows(next_wave: dict) -> list[tuple]:
 
 
 _COMBINATIONS = {
-    "set": ("–", "strict: the admissible set; plausible: the robust set (tolerance widened by z standard deviations "
-                 "of the surrogate's mean and of the measurement)."),
+    "set": ("–", "strict: the admissible set; plausible: the admissible set with the tolerance widened by z standard deviations "
+                 "of the surrogate's mean and of the measurement."),
     "direction": ("–", "Principal axis of the set in coded units, 1 = narrowest (the identified combination when "
                        "narrow), widest last."),
     "width_coded": ("coded unit", "√12 × standard deviation of the set along the direction: the full width of a "

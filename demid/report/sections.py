@@ -703,7 +703,7 @@ class ReportSections:
         return parts
 
     def uncertainty(self, m: str) -> list:
-        """Strict vs robust sets, tolerance sweep, posteriors and the next-experiment advice."""
+        """Strict vs plausible sets, tolerance sweep, posteriors and the next-experiment advice."""
         summary = self.root / "uncertainty" / f"{m}.json"
         if not summary.is_file():
             return []
@@ -712,14 +712,14 @@ class ReportSections:
         info = json.loads(summary.read_text(encoding="utf-8"))
         spec = self._specs()[m]
         parts = [self._md("### Beyond deterministic admissibility")]
-        robust = self._csv("robust_identifiability.csv")
-        if robust is not None and len(robust[robust["material"] == m]):
-            sub = robust[robust["material"] == m]
+        plausible = self._csv("robust_identifiability.csv")
+        if plausible is not None and len(plausible[plausible["material"] == m]):
+            sub = plausible[plausible["material"] == m]
             cols = ["scenario", "observables", "tolerance", "z", "factor", "strict_fraction_pct",
                     "robust_fraction_pct", "strict_width", "robust_width"]
             from ..sampling.residuals import PLAUSIBLE_DEFINITION
 
-            lines = ["**Strict vs plausible (robust) admissible sets.** " + PLAUSIBLE_DEFINITION, "",
+            lines = ["**Strict vs plausible admissible sets.** " + PLAUSIBLE_DEFINITION, "",
                      markdown_table(keys_labelled(sub[cols], spec))]
             scen = list(dict.fromkeys(sub["scenario"]))
             shown = {sc.name: sc.label for sc in spec.scenarios}
@@ -731,7 +731,7 @@ class ReportSections:
                 lines += ["", f"From {shown.get(scen[0], scen[0])} to {shown.get(scen[-1], scen[-1])} the feasible "
                           "fraction changes by "
                           f"{_contr(first['strict_fraction_pct'], last['strict_fraction_pct'])} (strict) and "
-                          f"{_contr(first['robust_fraction_pct'], last['robust_fraction_pct'])} (robust)."]
+                          f"{_contr(first['robust_fraction_pct'], last['robust_fraction_pct'])} (plausible)."]
             parts.append(self._md("\n".join(lines)))
         parts.append(self._md("**Tolerance sweep** — conclusions should not hang on one ε."))
         parts.append(self._image(self.root / "figures" / f"sweep_{m}.png",

@@ -30,7 +30,7 @@ def summary_tables(inputs: dict[str, dict[str, str | Path]]) -> dict[str, pd.Dat
         "identifiability": identifiability_table(list(inputs["scenarios"].values())),
         "transcription": stack_material_tables(inputs["transcription"]).reindex(columns=TRANSCRIPTION_COLUMNS),
     }
-    for name in ("robust", "sweep", "information_gain", "ranking", "findings", "calibration", "combinations"):
+    for name in ("plausible", "sweep", "information_gain", "ranking", "findings", "calibration", "combinations"):
         if name in inputs:
             out[name] = stack_material_tables(inputs[name])
     if "combinations" in out:  # materials with other factors stack their loadings in between: widths last

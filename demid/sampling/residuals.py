@@ -1,4 +1,4 @@
-"""Relative residuals (y - y*) / |y*| and their robust (plausibility) widening.
+"""Relative residuals (y - y*) / |y*| and their plausibility widening.
 
 A plausibility field is the surrogate's predicted mean with a band of ``z`` standard
 deviations (the fitted mean's standard error and the measurement sigma) around it;
@@ -24,7 +24,7 @@ def relative_residuals(predictions: dict[str, np.ndarray], targets: dict[str, fl
     return np.stack([relative_error(np.asarray(predictions[o], dtype=float), targets[o]) for o in observables])
 
 
-# =========================================================================== robust admissibility
+# =========================================================================== plausible admissibility
 #: The plausible set in words, for the report and the tables' notes (one definition, used for every verdict).
 PLAUSIBLE_DEFINITION = (
     "x is plausible when, for every observable k, |ŷₖ(x) − yₖ*| ≤ z·√(seₖ(x)² + σₖ² + δₖ²) "

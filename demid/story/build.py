@@ -18,7 +18,7 @@ def _json(path) -> dict:
 def study_story(specs: dict, files: dict) -> tuple[pd.DataFrame, pd.DataFrame]:
     """``(verdicts, advice)`` of every material.
 
-    ``specs``: material -> :class:`~demid.spec.MaterialSpec`.  ``files``: ``identifiability``, ``robust``,
+    ``specs``: material -> :class:`~demid.spec.MaterialSpec`.  ``files``: ``identifiability``, ``plausible``,
     ``ranking`` (the cross-material CSV tables), and per material (dicts material -> path) ``tables``
     (validated parquet), ``criticism`` and ``uncertainty`` (JSON summaries); optional ``next_wave_value``
     (JSON, materials with ``next_runs``); optional per material ``combinations`` (JSON: what each set
@@ -29,7 +29,7 @@ def study_story(specs: dict, files: dict) -> tuple[pd.DataFrame, pd.DataFrame]:
     from ..io import read_parquet
 
     ident = pd.read_csv(files["identifiability"])
-    robust = pd.read_csv(files["robust"])
+    plausible = pd.read_csv(files["plausible"])
     ranking = pd.read_csv(files["ranking"])
     value = _json(files.get("next_wave_value"))
     verdicts, advice = [], []
@@ -38,7 +38,7 @@ def study_story(specs: dict, files: dict) -> tuple[pd.DataFrame, pd.DataFrame]:
         uninformative = uncertainty.get("uninformative") or {}
         table = read_parquet(files["tables"][m])
         implausible = implausible_targets(table, spec.targets)
-        frame = verdict_frame(spec, ident[ident["material"] == m], robust[robust["material"] == m], uninformative,
+        frame = verdict_frame(spec, ident[ident["material"] == m], plausible[plausible["material"] == m], uninformative,
                               implausible)
         combinations = _json((files.get("combinations") or {}).get(m))
         frame = in_combination(frame, spec, combinations)

@@ -117,12 +117,12 @@ def _limit_ends(factor, lower: float, upper: float) -> dict:
             if s in sides_at_limit((factor.lower, factor.upper), factor.limits)}
 
 
-def verdict_frame(spec, identifiability: pd.DataFrame, robust: pd.DataFrame,
+def verdict_frame(spec, identifiability: pd.DataFrame, plausible: pd.DataFrame,
                   uninformative: dict[str, str] | None = None, implausible=()) -> pd.DataFrame:
     """One row per scenario x factor of one material (:data:`VERDICT_COLUMNS`).
 
     ``identifiability``: the material's rows of ``identifiability.csv`` (strict, with ``at_bound``);
-    ``robust``: its rows of ``robust_identifiability.csv`` (``robust_*`` = plausible);
+    ``plausible``: its rows of ``robust_identifiability.csv`` (``robust_*`` = plausible);
     ``uninformative``: observable -> reason (:func:`~demid.uncertainty.recommended.uninformative_observables`).
     A scenario whose every observable is uninformative gets that verdict.  ``implausible``: observables whose
     target lies far outside every simulated value (:func:`~demid.data.implausible_targets`): an empty set
@@ -133,7 +133,7 @@ def verdict_frame(spec, identifiability: pd.DataFrame, robust: pd.DataFrame,
     for sc in spec.scenarios:
         for f in spec.factors:
             strict = identifiability[(identifiability["scenario"] == sc.name) & (identifiability["factor"] == f.name)]
-            plaus = robust[(robust["scenario"] == sc.name) & (robust["factor"] == f.name)]
+            plaus = plausible[(plausible["scenario"] == sc.name) & (plausible["factor"] == f.name)]
             if strict.empty or plaus.empty:
                 continue
             s_lo, s_hi = float(strict["lower"].iloc[0]), float(strict["upper"].iloc[0])

@@ -3,7 +3,7 @@
 The admissible set of eq. (2) treats the surrogate as exact and the targets as
 known.  This module adds what a calibration decision needs on top of it:
 
-* **Robust (plausible) admissibility**, history-matching style: x is plausible when, for every
+* **Plausible admissibility**, history-matching style: x is plausible when, for every
   observable k, ``|yhat_k(x) - y_k*| <= z sqrt(se_mean_k(x)^2 + sigma_k^2 + delta_k^2)``, with
   ``se_mean`` the OLS standard error of the fitted mean (statsmodels' ``mean_se``), ``sigma_k`` the
   measurement standard deviation of the target (where none is configured, the tolerance band is the
@@ -24,7 +24,7 @@ known.  This module adds what a calibration decision needs on top of it:
 :func:`analyse_material` runs all of it for one configured material with the
 grid sizes of :func:`recommended_sizes`.
 
-Modules: ``robust``, ``sweep``, ``posterior``,
+Modules: ``plausible``, ``sweep``, ``posterior``,
 ``ranking`` and ``material`` (the per-material step);
 figures in :mod:`demid.plots.uncertainty`, estimators in :mod:`demid.sampling`, each scenario judged
 (its rescaled surrogates, bands and measurement sigma) in :mod:`demid.scenario`.
@@ -47,15 +47,15 @@ from .material import MaterialUncertainty, analyse_material, recommended_sizes
 from .posterior import (INFORMATION_GAIN_COLUMNS, NO_OBSERVABLE, Posterior, gaussian_loglik, grid_posterior,
                         information_gain_frame, posterior_from_loglik, subset_posteriors)
 from .ranking import RANKING_COLUMNS, rank_observable_sets
-from .robust import ROBUST_COLUMNS, SetSummary, robust_admissible_set, robust_identifiability_frame, summarise_set
+from .plausible import PLAUSIBLE_COLUMNS, SetSummary, plausible_admissible_set, plausible_identifiability_frame, summarise_set
 from .sweep import DEFAULT_SWEEP_TOLERANCES, SWEEP_COLUMNS, tolerance_sweep
 
 __all__ = ["DEFAULT_SWEEP_TOLERANCES", "FALLBACK_TOLERANCE", "INFORMATION_GAIN_COLUMNS", "NO_OBSERVABLE",
-           "RANKING_COLUMNS", "ROBUST_COLUMNS", "SWEEP_COLUMNS", "AdmissibleSet", "Domain", "FractionEstimate",
+           "RANKING_COLUMNS", "PLAUSIBLE_COLUMNS", "SWEEP_COLUMNS", "AdmissibleSet", "Domain", "FractionEstimate",
            "MaterialUncertainty", "PlausibilityField", "Posterior", "SetSummary", "SobolFraction",
            "admissible_set", "analyse_material", "cell_count", "fraction_with_error", "gaussian_loglik",
            "grid_posterior", "information_gain_frame", "measurement_sigma", "measurement_sigmas",
            "plane_band_fraction", "plausibility_fields", "polish_spans",
            "posterior_figure", "posterior_from_loglik", "predict_grid", "rank_observable_sets",
-           "recommended_sizes", "robust_admissible_set", "robust_identifiability_frame", "sigma_basis",
+           "recommended_sizes", "plausible_admissible_set", "plausible_identifiability_frame", "sigma_basis",
            "sobol_fraction", "subset_posteriors", "summarise_set", "tolerance_sweep", "tolerance_sweep_figure"]

@@ -1,6 +1,6 @@
 """Beyond deterministic admissibility, for one configured material.
 
-:func:`analyse_material` runs robust sets, the tolerance sweep, posteriors and the
+:func:`analyse_material` runs plausible sets, the tolerance sweep, posteriors and the
 observable ranking with the grid sizes of :func:`recommended_sizes`.
 """
 
@@ -20,7 +20,7 @@ from .posterior import INFORMATION_GAIN_COLUMNS, information_gain_frame, subset_
 from .ranking import RANKING_COLUMNS, rank_observable_sets
 from ..sampling.residuals import PLAUSIBLE_DEFINITION
 from .recommended import recommended_point, uninformative_observables
-from .robust import ROBUST_COLUMNS, robust_identifiability_frame
+from .plausible import PLAUSIBLE_COLUMNS, plausible_identifiability_frame
 from ..scenario import JudgedScenario, judged_scenarios, plausible_basis, reference_scenario
 from ..tolerance import has_own_tolerance
 from .sweep import DEFAULT_SWEEP_TOLERANCES, SWEEP_COLUMNS, tolerance_sweep
@@ -40,17 +40,17 @@ def recommended_sizes(dim: int) -> dict[str, int]:
     demo materials take a few seconds together.
     """
     if dim <= 2:
-        return {"robust": 401, "sweep": 201, "posterior": 401}
+        return {"plausible": 401, "sweep": 201, "posterior": 401}
     if uses_grid(dim):
-        return {"robust": 61, "sweep": 41, "posterior": 61}
-    return {"robust": 2 ** 16, "sweep": 2 ** 14, "posterior": 51, "posterior_points": 2 ** 16}
+        return {"plausible": 61, "sweep": 41, "posterior": 61}
+    return {"plausible": 2 ** 16, "sweep": 2 ** 14, "posterior": 51, "posterior_points": 2 ** 16}
 
 
 @dataclass
 class MaterialUncertainty:
     """Everything :func:`analyse_material` computes for one material."""
 
-    robust: pd.DataFrame
+    plausible: pd.DataFrame
     sweep: pd.DataFrame
     information_gain: pd.DataFrame
     ranking: pd.DataFrame
@@ -84,10 +84,10 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
                      tolerances=DEFAULT_SWEEP_TOLERANCES, sizes: dict[str, int] | None = None,
                      strict_sets: dict[str, AdmissibleSet] | None = None, seed: int = 0,
                      judged: dict[str, JudgedScenario] | None = None) -> MaterialUncertainty:
-    """Robust sets, tolerance sweep, posteriors and the observable ranking for one configured material.
+    """Plausible sets, tolerance sweep, posteriors and the observable ranking for one configured material.
 
     ``spec`` is the material's :class:`~demid.spec.MaterialSpec` (factors, responses with ``target`` and
-    optional ``sigma``/``sigma_rel``, scenarios).  Robust sets use the
+    optional ``sigma``/``sigma_rel``, scenarios).  Plausible sets use the
     configured measurement sigma or, when absent, the tolerance band read as a z-sigma measurement band;
     posteriors and the ranking use the same σ at the reference tolerance (the tolerance of the scenario
     with the most observables), an observable's own ``tolerance``/``tolerance_abs`` included
@@ -108,12 +108,12 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
     factor_labels = {f.name: axis_label(f) for f in spec.factors}  # mathtext with unit, for the figures
 
     if strict_sets is None:
-        # each scenario's strict set, evaluated once and shared by robust table, sweep and ranking
-        strict_sets = {sc.name: judged[sc.name].strict_set(sizes["robust"])
+        # each scenario's strict set, evaluated once and shared by plausible table, sweep and ranking
+        strict_sets = {sc.name: judged[sc.name].strict_set(sizes["plausible"])
                        for sc in spec.scenarios if uses_exact(surrogates, sc.observables, domain)}
     by_observables = {frozenset(sc.observables): strict_sets[sc.name] for sc in spec.scenarios
                       if sc.tolerance == tolerance and sc.name in strict_sets}
-    robust, sweep = _plausible_tables(spec, judged, targets, sizes, z, tolerances, strict_sets, seed)
+    plausible, sweep = _plausible_tables(spec, judged, targets, sizes, z, tolerances, strict_sets, seed)
     points = sizes.get("posterior_points", 2 ** 16)
     posteriors = subset_posteriors(at_reference, domain, observables, targets, post_sigma, sizes["posterior"],
                                    sigma_basis=post_basis, sobol_points=points, seed=seed) if observables else {}
@@ -129,12 +129,12 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
     information_gain.loc[information_gain["observables"].isin(unreachable),
                          ["information_gain_bits", "information_gain_error_bits"]] = float("nan")
     widest = max(spec.scenarios, key=lambda sc: len(sc.observables)) if spec.scenarios else None
-    recommended = (recommended_point(judged[widest.name], n=sizes["robust"])
+    recommended = (recommended_point(judged[widest.name], n=sizes["plausible"])
                    if widest is not None and all(o in surrogates for o in widest.observables) else None)
     uninformative = uninformative_observables(ranking)
     notes = _notes(spec, reference, sizes, strict_sets, unreachable, uninformative)
     return MaterialUncertainty(
-        recommended=recommended, uninformative=uninformative, robust=robust, sweep=sweep,
+        recommended=recommended, uninformative=uninformative, plausible=plausible, sweep=sweep,
         information_gain=information_gain,
         ranking=ranking,
         posteriors=posteriors, notes=notes, factor_labels=factor_labels, unreachable=unreachable,
@@ -144,23 +144,23 @@ def analyse_material(surrogates: dict[str, Surrogate], spec: MaterialSpec, *, z:
 
 def _plausible_tables(spec: MaterialSpec, judged: dict, targets: dict, sizes: dict, z: float, tolerances,
                       strict_sets: dict, seed: int) -> tuple[pd.DataFrame, pd.DataFrame]:
-    """The robust-identifiability table and the tolerance sweep of every judged scenario (empty tables
+    """The plausible-identifiability table and the tolerance sweep of every judged scenario (empty tables
     without scenarios)."""
     if not spec.scenarios:
-        return pd.DataFrame(columns=ROBUST_COLUMNS), pd.DataFrame(columns=SWEEP_COLUMNS)
+        return pd.DataFrame(columns=PLAUSIBLE_COLUMNS), pd.DataFrame(columns=SWEEP_COLUMNS)
     domain = spec.domain
     scenarios = {sc.name: (sc.observables, sc.tolerance) for sc in spec.scenarios}
-    robust = pd.concat([robust_identifiability_frame(
+    plausible = pd.concat([plausible_identifiability_frame(
         judged[sc.name].surrogates, domain, {sc.name: scenarios[sc.name]}, targets,
-        sizes["robust"], z=z, sigma=judged[sc.name].bands, strict_sets=strict_sets,
-        sobol_points=sizes["robust"], seed=seed) for sc in spec.scenarios], ignore_index=True)
+        sizes["plausible"], z=z, sigma=judged[sc.name].bands, strict_sets=strict_sets,
+        sobol_points=sizes["plausible"], seed=seed) for sc in spec.scenarios], ignore_index=True)
     # one sweep for all scenarios, unless an own tolerance makes each scenario's surrogates its own
     groups = ([spec.scenarios] if not has_own_tolerance(spec) else [(sc,) for sc in spec.scenarios])
     sweep = pd.concat([tolerance_sweep(judged[group[0].name].surrogates, domain,
                                        {sc.name: scenarios[sc.name] for sc in group}, targets, tolerances,
                                        sizes["sweep"], sobol_points=sizes["sweep"], seed=seed,
                                        strict_sets=strict_sets) for group in groups], ignore_index=True)
-    return robust, sweep
+    return plausible, sweep
 
 
 def _notes(spec: MaterialSpec, reference: JudgedScenario, sizes: dict, strict_sets: dict, unreachable: tuple,
@@ -173,7 +173,7 @@ def _notes(spec: MaterialSpec, reference: JudgedScenario, sizes: dict, strict_se
         + ".",
         f"Posteriors and ranking at tolerance {reference.tolerance:g}: "
         + "; ".join(f"{o}: {reference.sigma_basis[o]}" for o in observables) + ".",
-        f"Robust sets on {sizes['robust']} {grid_word}, sweeps on {sizes['sweep']}, "
+        f"Plausible sets on {sizes['plausible']} {grid_word}, sweeps on {sizes['sweep']}, "
         + (f"posteriors on {points} scrambled Sobol points ({sizes['posterior']} histogram bins)."
            if not uses_grid(dim) else f"posteriors on {sizes['posterior']} grid points per axis."),
     ]

@@ -16,7 +16,7 @@ from ..sampling.evaluate import closest_approach, relative_errors, start_nodes
 from ..sampling.grid import predict_grid
 from ..spec import join_observables
 from .posterior import NO_OBSERVABLE, subset_posteriors
-from .robust import summarise_set
+from .plausible import summarise_set
 
 if TYPE_CHECKING:
     from ..sampling import Domain

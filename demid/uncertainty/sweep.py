@@ -9,7 +9,7 @@ import pandas as pd
 from ..sampling import uses_grid
 from ..sampling.grid import predict_grid
 from ..spec import join_observables
-from .robust import summarise_set
+from .plausible import summarise_set
 
 if TYPE_CHECKING:
     from ..sampling import Domain

@@ -206,12 +206,12 @@ def test_plan_next_wave_lists_the_deciding_runs_first():
     from demid.next_wave import PURPOSE_DECIDE, plan_next_wave
     from tests.test_next_wave import _annulus_material
 
-    table, surrogates, cfg, robust = _annulus_material(count=5)
+    table, surrogates, cfg, plausible = _annulus_material(count=5)
     deciding = [{"a": 0.25, "b": 0.75, "purpose": PURPOSE_DECIDE}, {"a": 0.5, "b": 0.5, "purpose": PURPOSE_DECIDE}]
     findings = pd.DataFrame([{"response": "y", "cause": "ambiguous", "detail": "outlier (3);step (9)",
                               "aliases": "", "discriminating_runs": json.dumps(deciding)}])
-    plain = plan_next_wave("m", table, surrogates, cfg, robust, None, z=2.0)
-    wave = plan_next_wave("m", table, surrogates, cfg, robust, findings, z=2.0)
+    plain = plan_next_wave("m", table, surrogates, cfg, plausible, None, z=2.0)
+    wave = plan_next_wave("m", table, surrogates, cfg, plausible, findings, z=2.0)
     assert len(wave.runs) == len(plain.runs) == 5  # count is the whole wave: the deciding runs come inside it
     n_deciding = int((wave.runs["purpose"] == PURPOSE_DECIDE).sum())
     assert 1 <= n_deciding <= 2 and wave.runs["purpose"].tolist()[:n_deciding] == [PURPOSE_DECIDE] * n_deciding

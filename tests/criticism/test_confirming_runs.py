@@ -206,8 +206,8 @@ def test_the_next_wave_makes_the_deciding_runs_before_the_confirming_ones():
     assert [(r["a"], r["b"], r["purpose"], r["response"]) for r in runs] == [
         (0.5, 0.5, PURPOSE_DECIDE, "y2"), (0.2, 0.8, PURPOSE_DECIDE, "y2"), (0.2, 0.8, PURPOSE_DECIDE, "y2"),
         (0.3, 0.7, PURPOSE_CONFIRM, "y"), (0.3, 0.7, PURPOSE_CONFIRM, "y")]
-    table, surrogates, cfg, robust = _annulus_material(count=12)
-    wave = plan_next_wave("m", table, surrogates, cfg, robust, findings, z=2.0)
+    table, surrogates, cfg, plausible = _annulus_material(count=12)
+    wave = plan_next_wave("m", table, surrogates, cfg, plausible, findings, z=2.0)
     assert len(wave.runs) == 12  # the count includes them
     assert wave.runs["purpose"].tolist()[:5] == [PURPOSE_DECIDE] * 3 + [PURPOSE_CONFIRM] * 2
     assert not {PURPOSE_DECIDE, PURPOSE_CONFIRM} & set(wave.runs["purpose"].tolist()[5:])
@@ -224,8 +224,8 @@ def test_criticism_runs_outside_the_next_box_are_left_out_and_the_reason_says_so
     from demid.next_wave import CRITICISM_ROUNDING, PURPOSE_DECIDE, plan_next_wave
     from tests.test_next_wave import _annulus_material
 
-    table, surrogates, cfg, robust = _annulus_material(count=9)
-    plain = plan_next_wave("m", table, surrogates, cfg, robust, None, z=2.0)
+    table, surrogates, cfg, plausible = _annulus_material(count=9)
+    plain = plan_next_wave("m", table, surrogates, cfg, plausible, None, z=2.0)
     box = plain.domain.set_index("factor")
     (a_lo, a_hi), (b_lo, b_hi) = box.loc["a", ["lower", "upper"]], box.loc["b", ["lower", "upper"]]
     assert a_hi < 0.9 and b_lo > 0.1  # refocused: room outside the box within the search range [0, 1]
@@ -234,7 +234,7 @@ def test_criticism_runs_outside_the_next_box_are_left_out_and_the_reason_says_so
     inside = {"a": (a_lo + a_hi) / 2, "b": (b_lo + b_hi) / 2, "purpose": PURPOSE_DECIDE}
     findings = pd.DataFrame([{"response": "y", "cause": "ambiguous", "detail": "outlier (3);step (9)", "aliases": "",
                               "discriminating_runs": json.dumps([far, edge, inside])}])
-    wave = plan_next_wave("m", table, surrogates, cfg, robust, findings, z=2.0)
+    wave = plan_next_wave("m", table, surrogates, cfg, plausible, findings, z=2.0)
     assert len(wave.runs) == len(plain.runs)  # the count includes them
     assert wave.runs["a"].iloc[0] == a_hi  # on the bound exactly (the sheet rounds to 10 digits)
     assert wave.runs[["a", "b"]].to_numpy()[:2] == pytest.approx(np.array([[a_hi, edge["b"]],

@@ -149,14 +149,14 @@ def test_columns_dictionary_covers_every_declared_table():
     from demid.report.columns import TABLE_COLUMNS, columns_table
     from demid.report.tables import IDENTIFIABILITY_COLUMNS, SURROGATE_FIT_COLUMNS, TRANSCRIPTION_COLUMNS
     from demid.uncertainty.ranking import RANKING_COLUMNS
-    from demid.uncertainty.robust import ROBUST_COLUMNS
+    from demid.uncertainty.plausible import PLAUSIBLE_COLUMNS
 
     table = columns_table({"m": [("a", "mm"), ("b", "-")]})
     assert not table.duplicated(["table", "column"]).any()
     assert (table["description"].str.len() > 10).all()
     for name, cols in [("surrogate_fit", SURROGATE_FIT_COLUMNS), ("identifiability", IDENTIFIABILITY_COLUMNS),
                        ("transcription_check", TRANSCRIPTION_COLUMNS), ("observable_ranking", RANKING_COLUMNS),
-                       ("robust_identifiability", ROBUST_COLUMNS)]:
+                       ("robust_identifiability", PLAUSIBLE_COLUMNS)]:
         assert set(cols) <= set(TABLE_COLUMNS[name]) | {"material"}, name
     units = table.set_index(["table", "column"])["unit"]
     assert units[("identifiability.csv", "tolerance")].startswith("fraction")

@@ -295,9 +295,9 @@ def test_the_waves_figure_counts_runs_in_integers():
 # --------------------------------------------------------------------------- a simulated study's waves
 def _wave_frames(number: int, simulated: int, failed: int, analysed: int, pct: float, interval, q2: float):
     table = pd.DataFrame({"run": range(1, simulated + 1), "status": ["failed"] * failed + ["ok"] * (simulated - failed)})
-    robust = pd.DataFrame({"scenario": "s", "factor": ["a", "b"], "robust_fraction_pct": pct,
+    plausible = pd.DataFrame({"scenario": "s", "factor": ["a", "b"], "robust_fraction_pct": pct,
                            "robust_lower": [interval[0], 0.1], "robust_upper": [interval[1], 0.9]})
-    return {"table": table, "analysed": table.head(analysed), "domain": None, "robust": robust,
+    return {"table": table, "analysed": table.head(analysed), "domain": None, "plausible": plausible,
             "statistics": pd.DataFrame({"response": ["y"], "q2": [q2]})}
 
 

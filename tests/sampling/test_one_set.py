@@ -1,4 +1,4 @@
-"""One strict set per scenario and tolerance: Table 3, the strict columns of the robust table and
+"""One strict set per scenario and tolerance: Table 3, the strict columns of the plausible table and
 the sweep row at the configured tolerance repeat one number, and that number is the exact set
 of the fitted quadratics.
 
@@ -34,7 +34,7 @@ def demo(demo_run):
     root = demo_run
     tables = root / "results" / "tables"
     return {"root": root, "identifiability": pd.read_csv(tables / "identifiability.csv"),
-            "robust": pd.read_csv(tables / "robust_identifiability.csv"),
+            "plausible": pd.read_csv(tables / "robust_identifiability.csv"),
             "sweep": pd.read_csv(tables / "tolerance_sweep.csv"),
             "paper": pd.read_csv(tables / "paper_comparison.csv")}
 
@@ -50,17 +50,17 @@ def _rows(table, material, scenario, tolerance=None):
 def test_three_tables_repeat_one_strict_set(demo, material, scenario):
     ident = _rows(demo["identifiability"], material, scenario)
     eps = float(ident["tolerance"].iloc[0])
-    robust = _rows(demo["robust"], material, scenario)
+    plausible = _rows(demo["plausible"], material, scenario)
     sweep = _rows(demo["sweep"], material, scenario, eps)
-    assert len(ident) == len(robust) == len(sweep) == 2
+    assert len(ident) == len(plausible) == len(sweep) == 2
     frac = ident["feasible_fraction_pct"].iloc[0]
-    assert robust["strict_fraction_pct"].iloc[0] == pytest.approx(frac, rel=AGREE_RTOL)
+    assert plausible["strict_fraction_pct"].iloc[0] == pytest.approx(frac, rel=AGREE_RTOL)
     assert sweep["feasible_fraction_pct"].iloc[0] == pytest.approx(frac, rel=AGREE_RTOL)
     for column in ("lower", "upper", "width"):
-        np.testing.assert_allclose(robust.loc[ident.index, f"strict_{column}"], ident[column], rtol=AGREE_RTOL)
+        np.testing.assert_allclose(plausible.loc[ident.index, f"strict_{column}"], ident[column], rtol=AGREE_RTOL)
         np.testing.assert_allclose(sweep.loc[ident.index, column], ident[column], rtol=AGREE_RTOL)
     # the numerical error of the fraction is kept, and it is small
-    assert 0 <= robust["strict_fraction_error_pct"].iloc[0] < 1e-3 * frac
+    assert 0 <= plausible["strict_fraction_error_pct"].iloc[0] < 1e-3 * frac
 
 
 # --------------------------------------------------------------------------- independent reference

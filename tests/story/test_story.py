@@ -40,8 +40,8 @@ def _verdicts(spec, surrogates, z=2.0):
     frame, _ = evaluate_scenarios(surrogates, spec, 201)
     frame.insert(0, "material", "m")
     unc = analyse_material(surrogates, spec, z=z, tolerances=[0.01, 0.05],
-                           sizes={"robust": 101, "sweep": 21, "posterior": 41})
-    return verdict_frame(spec, frame, unc.robust, unc.uninformative), unc
+                           sizes={"plausible": 101, "sweep": 21, "posterior": 41})
+    return verdict_frame(spec, frame, unc.plausible, unc.uninformative), unc
 
 
 # --------------------------------------------------------------------------- item 1: the plausible set
@@ -83,11 +83,11 @@ def test_per_observable_tolerance_matches_an_independent_grid(own):
     a, b = np.meshgrid(centres, centres, indexing="ij")
     strict = (np.abs(a - 0.5) <= 0.01) & (np.abs(b ** 2 - 0.25) <= band2)
     assert frame["feasible_fraction_pct"].iloc[0] == pytest.approx(100 * strict.mean(), rel=5e-3)
-    unc = analyse_material(sur, spec, z=2.0, tolerances=[0.01, 0.05], sizes={"robust": 201, "sweep": 21,
+    unc = analyse_material(sur, spec, z=2.0, tolerances=[0.01, 0.05], sizes={"plausible": 201, "sweep": 21,
                                                                              "posterior": 41})
     # plausible: no sigma, so each band is its tolerance widened by the surrogate's se: z sqrt(se² + (band/z)²)
     plausible = (np.abs(a - 0.5) <= 0.01) & (np.abs(b ** 2 - 0.25) <= 2 * np.sqrt(se2 ** 2 + (band2 / 2) ** 2))
-    assert unc.robust["robust_fraction_pct"].iloc[0] == pytest.approx(100 * plausible.mean(), rel=1e-2)
+    assert unc.plausible["robust_fraction_pct"].iloc[0] == pytest.approx(100 * plausible.mean(), rel=1e-2)
     ranking = unc.ranking.set_index("observables")
     alone = np.abs(b ** 2 - 0.25) <= band2
     assert ranking.loc["y2", "feasible_fraction_pct"] == pytest.approx(100 * alone.mean(), rel=5e-3)

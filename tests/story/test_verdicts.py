@@ -23,7 +23,7 @@ def _spec() -> MaterialSpec:
 
 
 def _frames(rows):
-    """(identifiability, robust) from rows (scenario, factor, strict lo, strict hi, plausible lo, hi, fraction)."""
+    """(identifiability, plausible) from rows (scenario, factor, strict lo, strict hi, plausible lo, hi, fraction)."""
     strict = pd.DataFrame([{"scenario": s, "factor": f, "lower": lo, "upper": hi, "at_bound": None}
                            for s, f, lo, hi, *_ in rows])
     plaus = pd.DataFrame([{"scenario": s, "factor": f, "robust_lower": plo, "robust_upper": phi,

@@ -22,7 +22,7 @@ from .test_uncertainty import linear
 
 TOLERANCE, Z = 0.1, 2.0
 TARGETS = {"y1": 0.5, "y2": 0.6}
-SIZES = {"robust": 101, "sweep": 21, "posterior": 801}
+SIZES = {"plausible": 101, "sweep": 21, "posterior": 801}
 
 
 def _material(**own):

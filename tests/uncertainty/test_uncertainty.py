@@ -88,7 +88,7 @@ def test_measurement_sigma_sources():
     assert basis["a"].startswith("config sigma_rel") and "tolerance/2" in basis["b"]
 
 
-# --------------------------------------------------------------------------- robust sets
+# --------------------------------------------------------------------------- plausible sets
 def test_plausibility_field_is_exactly_the_widened_band(mortar_like):
     """|ŷ - y*| <= z sqrt(se² + σ² + δ²): with σ configured the tolerance plays no part."""
     _, surrogates, domain, targets = mortar_like
@@ -108,11 +108,11 @@ def test_plausible_set_contains_strict_set_without_configured_sigma(mortar_like)
     _, surrogates, domain, targets = mortar_like
     for observables in (["d15"], ["d5", "d10", "d15"]):
         strict = admissible_set(surrogates, domain, observables, targets, 0.02, 101)
-        robust = unc.robust_admissible_set(surrogates, domain, observables, targets, 0.02, 101, z=2.0)
-        assert robust.fraction > strict.fraction > 0
-        assert np.all(robust.mask[strict.mask])
-        assert np.all(robust.lower <= strict.lower) and np.all(robust.upper >= strict.upper)
-        same = unc.robust_admissible_set(surrogates, domain, observables, targets, 0.02, 101, z=0.0)
+        plausible = unc.plausible_admissible_set(surrogates, domain, observables, targets, 0.02, 101, z=2.0)
+        assert plausible.fraction > strict.fraction > 0
+        assert np.all(plausible.mask[strict.mask])
+        assert np.all(plausible.lower <= strict.lower) and np.all(plausible.upper >= strict.upper)
+        same = unc.plausible_admissible_set(surrogates, domain, observables, targets, 0.02, 101, z=0.0)
         assert same.fraction == strict.fraction
 
 
@@ -120,12 +120,12 @@ def test_plausible_set_with_exact_surrogate_and_sigma_equals_strict_set_at_z_sig
     """No surrogate error: the plausible band is z·σ alone, not ε + z·σ (no double counting)."""
     sur = {"y": ring([0.47, 0.52])}
     target, eps, sigma, z = 0.09, 0.02, 0.0009, 2.0
-    robust = unc.robust_admissible_set(sur, SQUARE, ["y"], {"y": target}, eps, 81, z=z, sigma={"y": sigma})
+    plausible = unc.plausible_admissible_set(sur, SQUARE, ["y"], {"y": target}, eps, 81, z=z, sigma={"y": sigma})
     same = admissible_set(sur, SQUARE, ["y"], {"y": target}, z * sigma / target, 81)
-    assert robust.fraction == pytest.approx(same.fraction, rel=1e-12)
-    assert robust.fraction == pytest.approx(2 * np.pi * target * (z * sigma / target), rel=2e-3)
+    assert plausible.fraction == pytest.approx(same.fraction, rel=1e-12)
+    assert plausible.fraction == pytest.approx(2 * np.pi * target * (z * sigma / target), rel=2e-3)
     # without sigma the tolerance is the band: the plausible set is the strict one
-    alone = unc.robust_admissible_set(sur, SQUARE, ["y"], {"y": target}, eps, 81, z=z)
+    alone = unc.plausible_admissible_set(sur, SQUARE, ["y"], {"y": target}, eps, 81, z=z)
     strict = admissible_set(sur, SQUARE, ["y"], {"y": target}, eps, 81)
     assert alone.fraction == pytest.approx(strict.fraction, rel=1e-12)
 
@@ -133,8 +133,8 @@ def test_plausible_set_with_exact_surrogate_and_sigma_equals_strict_set_at_z_sig
 def test_robust_identifiability_frame_contract(mortar_like):
     _, surrogates, domain, targets = mortar_like
     scenarios = {"d15_only": (["d15"], 0.02), "full_sequence": (["d5", "d10", "d15"], 0.02)}
-    frame = unc.robust_identifiability_frame(surrogates, domain, scenarios, targets, 61, z=2.0)
-    assert list(frame.columns[:13]) == unc.ROBUST_COLUMNS
+    frame = unc.plausible_identifiability_frame(surrogates, domain, scenarios, targets, 61, z=2.0)
+    assert list(frame.columns[:13]) == unc.PLAUSIBLE_COLUMNS
     assert len(frame) == 4
     assert (frame["strict_fraction_error_pct"] < 0.01 * frame["strict_fraction_pct"]).all()
     assert (frame["robust_fraction_pct"] >= frame["strict_fraction_pct"]).all()
@@ -420,8 +420,8 @@ def test_analyse_material_two_factors(mortar_like):
         {"d15_only": {"observables": ["d15"], "tolerance": 0.02},
          "full_sequence": {"observables": ["d5", "d10", "d15"], "tolerance": 0.02}})
     result = unc.analyse_material(surrogates, cfg, tolerances=[0.01, 0.05],
-                                  sizes={"robust": 61, "sweep": 41, "posterior": 61})
-    assert list(result.robust.columns[:13]) == unc.ROBUST_COLUMNS and len(result.robust) == 4
+                                  sizes={"plausible": 61, "sweep": 41, "posterior": 61})
+    assert list(result.plausible.columns[:13]) == unc.PLAUSIBLE_COLUMNS and len(result.plausible) == 4
     assert set(result.sweep["tolerance"]) == {0.01, 0.02, 0.05}
     assert len(result.ranking) == 7 and len(result.information_gain) == 14
     assert "config sigma = 0.5" in result.notes[0] and "tolerance/2" in result.notes[1]
@@ -435,10 +435,10 @@ def test_analyse_material_four_factors_uses_sobol():
     cfg = _material_cfg({f: {"lower": 0.0, "upper": 1.0} for f in factors}, {"y": {"target": 0.09}},
                         {"shell": {"observables": ["y"], "tolerance": 0.5}})
     result = unc.analyse_material(sur, cfg, tolerances=[0.2],
-                                  sizes={"robust": 2 ** 12, "sweep": 2 ** 10, "posterior": 21,
+                                  sizes={"plausible": 2 ** 12, "sweep": 2 ** 10, "posterior": 21,
                                          "posterior_points": 2 ** 12})
     exact = np.pi ** 2 / 2 * 0.09 ** 2 * (1.5 ** 2 - 0.5 ** 2)
-    row = result.robust.iloc[0]
+    row = result.plausible.iloc[0]
     assert row["strict_fraction_pct"] == pytest.approx(100 * exact, abs=0.6)
     # Randomised QMC is no worse than plain Monte Carlo, whose 95 % half-width with 4096 points
     # is 1.96 sqrt(p (1 - p) / 4096) = 0.83 percentage points here.
@@ -461,7 +461,7 @@ def test_robust_identifiability_frame_known_answers():
     surrogates = {"y1": linear(0.0, [1.0, 0.0]), "y2": linear(0.0, [0.0, 1.0])}
     surrogates["y2"].response = "y2"
     targets, scenarios = {"y1": 0.5, "y2": 0.5}, {"both": (["y1", "y2"], 0.1)}
-    two = unc.robust_identifiability_frame(surrogates, SQUARE, {"a": (["y1"], 0.1), **scenarios}, targets, 41,
+    two = unc.plausible_identifiability_frame(surrogates, SQUARE, {"a": (["y1"], 0.1), **scenarios}, targets, 41,
                                            z=2.0, sigma={"y1": 0.02, "y2": 0.02})
     assert list(two.index) == [0, 1, 2, 3]  # one row per scenario and factor, numbered through
     frame = two[two["scenario"] == "both"].reset_index(drop=True)
@@ -470,23 +470,23 @@ def test_robust_identifiability_frame_known_answers():
                     atol=1e-9)
     assert_allclose(frame[["robust_lower", "robust_upper", "robust_width"]].to_numpy(), [[0.46, 0.54, 0.08]] * 2,
                     atol=1e-6)
-    robust = unc.summarise_set(surrogates, SQUARE, ("y1", "y2"), targets, 0.1, 41, z=2.0,
+    plausible = unc.summarise_set(surrogates, SQUARE, ("y1", "y2"), targets, 0.1, 41, z=2.0,
                                sigma={"y1": 0.02, "y2": 0.02})
-    assert frame["robust_fraction_pct"].iloc[0] == pytest.approx(100 * robust.fraction, rel=1e-12)
-    assert frame["robust_fraction_error_pct"].iloc[0] == pytest.approx(100 * robust.error, rel=1e-12)
-    assert 0 < robust.error and abs(robust.fraction - 0.0064) <= robust.error + 1e-9
+    assert frame["robust_fraction_pct"].iloc[0] == pytest.approx(100 * plausible.fraction, rel=1e-12)
+    assert frame["robust_fraction_error_pct"].iloc[0] == pytest.approx(100 * plausible.error, rel=1e-12)
+    assert 0 < plausible.error and abs(plausible.fraction - 0.0064) <= plausible.error + 1e-9
     exact = evaluate_set(surrogates, SQUARE, ("y1", "y2"), targets, 0.1, 41)
     assert frame["strict_fraction_error_pct"].iloc[0] == pytest.approx(100 * exact.fraction_error, rel=1e-12)
     assert frame["method"].iloc[0] == EXACT_METHOD
     # an exact strict set handed in is the one reported (here marked by a fraction of its own)
     marked = replace(exact, fraction=0.02)
-    given = unc.robust_identifiability_frame(surrogates, SQUARE, scenarios, targets, 41, z=2.0,
+    given = unc.plausible_identifiability_frame(surrogates, SQUARE, scenarios, targets, 41, z=2.0,
                                              sigma={"y1": 0.02, "y2": 0.02}, strict_sets={"both": marked})
     assert_allclose(given["strict_fraction_pct"], 2.0, rtol=1e-12)
     # a grid set on the same grid is not: the exact set is computed
     grid = unc.admissible_set(surrogates, SQUARE, ("y1", "y2"), targets, 0.1, 41)
     assert grid.exact is None
-    regridded = unc.robust_identifiability_frame(surrogates, SQUARE, scenarios, targets, 41, z=2.0,
+    regridded = unc.plausible_identifiability_frame(surrogates, SQUARE, scenarios, targets, 41, z=2.0,
                                                  sigma={"y1": 0.02, "y2": 0.02}, strict_sets={"both": grid})
     assert_allclose(regridded["strict_fraction_pct"], 100 * exact.fraction, rtol=1e-12)
     assert (regridded["method"] == EXACT_METHOD).all()

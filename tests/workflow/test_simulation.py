@@ -528,8 +528,8 @@ def test_a_wave_after_a_box_is_judged_on_omega_with_every_run_so_the_box_cuts_no
         verdict, width = factor_verdict(sets.at[factor, "lower"], sets.at[factor, "upper"], 0.0, 1.0,
                                         at_bound=sets.at[factor, "at_bound"])
         assert verdict == "bounded" and width == pytest.approx(2 * outer, abs=0.02)  # of Omega's range
-    robust = result.parquet["robust"].set_index("factor")
-    assert robust["robust_fraction_pct"].iloc[0] == pytest.approx(annulus_pct, rel=0.1)
+    plausible = result.parquet["plausible"].set_index("factor")
+    assert plausible["robust_fraction_pct"].iloc[0] == pytest.approx(annulus_pct, rel=0.1)
 
 
 def _evidence(**changes):

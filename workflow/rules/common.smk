@@ -77,7 +77,7 @@ SUMMARY_TABLE_FILES = {
     "surrogate_fit": "surrogate_fit",
     "identifiability": "identifiability",
     "transcription": "transcription_check",
-    "robust": "robust_identifiability",
+    "plausible": "robust_identifiability",
     "sweep": "tolerance_sweep",
     "information_gain": "information_gain",
     "ranking": "observable_ranking",
@@ -190,7 +190,7 @@ SUMMARY_INPUTS = {
     "statistics": "fits/{material}_statistics.parquet",
     "scenarios": "scenarios/{material}.parquet",
     "transcription": "validated/{material}_transcription.parquet",
-    "robust": "uncertainty/{material}_robust.parquet",
+    "plausible": "uncertainty/{material}_robust.parquet",
     "sweep": "uncertainty/{material}_sweep.parquet",
     "information_gain": "uncertainty/{material}_information_gain.parquet",
     "ranking": "uncertainty/{material}_ranking.parquet",
@@ -319,7 +319,7 @@ def cancel_scheduler_timers():
 def story_inputs():
     out = dict(
         identifiability=f"{RESULTS}/tables/identifiability.csv",
-        robust=f"{RESULTS}/tables/robust_identifiability.csv",
+        plausible=f"{RESULTS}/tables/robust_identifiability.csv",
         ranking=f"{RESULTS}/tables/observable_ranking.csv",
         tables=[f"{RESULTS}/validated/{m}.parquet" for m in MATERIALS],
         criticism=[f"{RESULTS}/criticism/{m}.json" for m in MATERIALS],

@@ -2,7 +2,7 @@ rule next_wave:
     input:
         tables=expand(f"{RESULTS}/validated/{{material}}.parquet", material=next_wave_materials()),
         fits=expand(f"{RESULTS}/fits/{{material}}.parquet", material=next_wave_materials()),
-        robust=expand(f"{RESULTS}/uncertainty/{{material}}_robust.parquet", material=next_wave_materials()),
+        plausible=expand(f"{RESULTS}/uncertainty/{{material}}_robust.parquet", material=next_wave_materials()),
         findings=expand(f"{RESULTS}/criticism/{{material}}_findings.parquet", material=next_wave_materials()),
     output:
         domain=f"{RESULTS}/tables/next_domain.csv",

@@ -116,7 +116,7 @@ checkpoint propose_wave:
         data=f"{RESULTS}/waves/{{wave}}/data/{{material}}_analysed.csv",
         tables=f"{RESULTS}/waves/{{wave}}/validated/{{material}}.parquet",
         fits=f"{RESULTS}/waves/{{wave}}/fits/{{material}}.parquet",
-        robust=f"{RESULTS}/waves/{{wave}}/uncertainty/{{material}}_robust.parquet",
+        plausible=f"{RESULTS}/waves/{{wave}}/uncertainty/{{material}}_robust.parquet",
         findings=f"{RESULTS}/waves/{{wave}}/criticism/{{material}}_findings.parquet",
         statistics=f"{RESULTS}/waves/{{wave}}/fits/{{material}}_statistics.parquet",
         criticism=f"{RESULTS}/waves/{{wave}}/criticism/{{material}}.json",

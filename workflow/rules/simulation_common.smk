@@ -119,7 +119,7 @@ def wave_history_inputs(wildcards):
             "domains": [proposal_files(m, k - 1)["domain"] for k in waves if k > 1],
             "tables": [f"{RESULTS}/waves/{k}/data/{m}.csv" for k in waves],
             "analysed": [f"{RESULTS}/waves/{k}/data/{m}_analysed.csv" for k in waves],
-            "robust": [f"{RESULTS}/waves/{k}/uncertainty/{m}_robust.parquet" for k in waves],
+            "plausible": [f"{RESULTS}/waves/{k}/uncertainty/{m}_robust.parquet" for k in waves],
             "statistics": [f"{RESULTS}/waves/{k}/fits/{m}_statistics.parquet" for k in waves],
             **({"decision": proposal_files(m, last)["decision"]}
                if (config["materials"][m].get("waves") or {}).get("next_runs") else {})}

@@ -1,4 +1,4 @@
-"""Robust (plausible) admissibility, history-matching style.
+"""Plausible admissibility, history-matching style.
 
 x is plausibly admissible when, for every observable k,
 ``|yhat_k(x) - y_k*| <= z sqrt(se_mean_k(x)^2 + sigma_k^2 + delta_k^2)``, with ``se_mean`` the
@@ -31,12 +31,12 @@ if TYPE_CHECKING:
 
 
 #: Column contracts of the tables this module feeds (the pipeline prepends ``material``).
-ROBUST_COLUMNS = ["scenario", "observables", "tolerance", "z", "factor", "strict_fraction_pct",
+PLAUSIBLE_COLUMNS = ["scenario", "observables", "tolerance", "z", "factor", "strict_fraction_pct",
                   "robust_fraction_pct", "strict_lower", "strict_upper", "strict_width",
                   "robust_lower", "robust_upper", "robust_width"]
 
 
-def robust_admissible_set(surrogates: dict[str, Surrogate], domain: Domain, observables,
+def plausible_admissible_set(surrogates: dict[str, Surrogate], domain: Domain, observables,
                           targets: dict[str, float], tolerance: float, n: int, *, z: float = 2.0,
                           sigma: dict[str, float] | None = None, predictive: bool = False,
                           subdivisions: int | None = None) -> AdmissibleSet:
@@ -97,7 +97,7 @@ def summarise_set(surrogates: dict[str, Surrogate], domain: Domain, observables,
     if aset is None:
         aset = (admissible_set(surrogates, domain, observables, targets, tolerance, n,
                                grid_predictions=grid_predictions) if z == 0 else
-                robust_admissible_set(surrogates, domain, observables, targets, tolerance, n, z=z, sigma=sigma))
+                plausible_admissible_set(surrogates, domain, observables, targets, tolerance, n, z=z, sigma=sigma))
     lower, upper = aset.lower, aset.upper
     if polish:
         lower, upper = polish_spans(surrogates, domain, observables, targets, tolerance, aset, z=z, sigma=sigma)
@@ -109,7 +109,7 @@ def summarise_set(surrogates: dict[str, Surrogate], domain: Domain, observables,
     return SetSummary(aset.fraction, error, lower, upper, f"grid {n}^{domain.dim} with boundary refinement")
 
 
-def robust_identifiability_frame(surrogates: dict[str, Surrogate], domain: Domain, scenarios: dict,
+def plausible_identifiability_frame(surrogates: dict[str, Surrogate], domain: Domain, scenarios: dict,
                                  targets: dict[str, float], n: int, *, z: float = 2.0,
                                  sigma: dict[str, float] | None = None, polish: bool = True,
                                  strict_sets: dict[str, AdmissibleSet] | None = None,
@@ -130,14 +130,14 @@ def robust_identifiability_frame(surrogates: dict[str, Surrogate], domain: Domai
         if given is not None and given.exact is None and given.n_nodes != n ** domain.dim:
             given = None  # a grid set on another grid: recompute so that both sets share one grid
         strict = summarise_set(surrogates, domain, observables, targets, tolerance, n, grid_set=given, **common)
-        robust = summarise_set(surrogates, domain, observables, targets, tolerance, n, z=z, sigma=sigma, **common)
+        plausible = summarise_set(surrogates, domain, observables, targets, tolerance, n, z=z, sigma=sigma, **common)
         frames.append(pd.DataFrame({
             "scenario": name, "observables": join_observables(observables), "tolerance": float(tolerance),
             "z": float(z), "factor": list(domain.factors),
-            "strict_fraction_pct": 100.0 * strict.fraction, "robust_fraction_pct": 100.0 * robust.fraction,
+            "strict_fraction_pct": 100.0 * strict.fraction, "robust_fraction_pct": 100.0 * plausible.fraction,
             "strict_lower": strict.lower, "strict_upper": strict.upper, "strict_width": strict.width,
-            "robust_lower": robust.lower, "robust_upper": robust.upper, "robust_width": robust.width,
-            "strict_fraction_error_pct": 100.0 * strict.error, "robust_fraction_error_pct": 100.0 * robust.error,
+            "robust_lower": plausible.lower, "robust_upper": plausible.upper, "robust_width": plausible.width,
+            "strict_fraction_error_pct": 100.0 * strict.error, "robust_fraction_error_pct": 100.0 * plausible.error,
             "method": strict.method,
         }))
     return pd.concat(frames, ignore_index=True)
