@@ -15,6 +15,11 @@ factors (custom designs) with CPU seconds and the job process's peak resident me
     python benchmarks/scaling.py --grid --runs 13 200 2000 10000 --grid-factors 2 4 6
     python benchmarks/scaling.py --quick                # 2, 4, 6 factors; 13, 1000 runs; one rep
     python benchmarks/scaling.py --one 6 ccd            # one case, JSON (used by the table; or --one 2 1000)
+
+Measured on the shared two-core machine (load 8-11, so wall times are inflated; CPU is the figure to read),
+2,000 runs x 2 factors, one material job: 55.9 CPU s before the round became linear (and with OpenBLAS
+threads, which the workflow never runs with), 18.1 after it with threads, 11.0 on one BLAS thread as the
+workflow runs (peak 545 MB).  The full grid was not measured after this change.
 """
 
 from __future__ import annotations
@@ -136,6 +141,7 @@ def run_one(k: int, runs: int | None) -> dict:
 def measure(k: int, runs: int | None, reps: int) -> dict:
     args = [sys.executable, __file__, "--one", str(k), "ccd" if runs is None else str(runs)]
     env = dict(os.environ, PYTHONPATH=str(REPO) + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    env.setdefault("OPENBLAS_NUM_THREADS", "1")  # as the workflow runs every job (workflow/rules/common.smk)
     rows = []
     for _ in range(reps):
         done = subprocess.run(args, env=env, capture_output=True, text=True)

@@ -63,13 +63,21 @@ def _own_places(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     non-zero digit (0 where it carries more than 12 significant digits)."""
     exponents = np.floor(np.log10(np.abs(values)))
     own = np.zeros(values.shape)
-    for i, v in enumerate(values):
-        for digits in range(1, 13):
-            scaled = v * 10.0 ** (digits - 1 - exponents[i])
-            if abs(scaled - round(scaled)) <= 1e-12 * max(1.0, abs(scaled)):  # what reading the digits leaves
-                own[i] = 10.0 ** (exponents[i] - digits + 1)
-                break
+    open_ = np.ones(values.shape, dtype=bool)  # values whose last digit is not found yet
+    for digits in range(1, 13):  # all values at once, a digit at a time (a table of 10,000 runs: 120,000 steps)
+        with np.errstate(over="ignore", invalid="ignore"):  # digits past a value's own overflow near 1e-300
+            scaled = values * _powers_of_ten(digits - 1 - exponents)
+            found = open_ & (np.abs(scaled - np.round(scaled)) <= 1e-12 * np.maximum(1.0, np.abs(scaled)))
+        own[found] = _powers_of_ten(exponents[found] - digits + 1)  # what reading the digits leaves
+        open_ &= ~found
     return exponents, own
+
+
+def _powers_of_ten(exponents: np.ndarray) -> np.ndarray:
+    """10 ** each of ``exponents`` (whole numbers), each power taken once as a scalar: numpy's power over an
+    array may differ from the scalar one in the last bit (1e-05 against 9.999999999999999e-06)."""
+    distinct, index = np.unique(exponents, return_inverse=True)
+    return np.array([10.0 ** e for e in distinct], dtype=float)[index.reshape(np.shape(exponents))]
 
 
 #: A factor value shows at least this many significant digits before its print is read as a rounding.

@@ -98,7 +98,11 @@ def added_variable_stats(e: np.ndarray, u: np.ndarray, df2: int):
 
 def _added_variable_stats_many(e: np.ndarray, u: np.ndarray, df2: int) -> np.ndarray:
     """F (C, B) for adding each unit column of u (n, C) to residuals e (n, B)."""
-    proj = np.einsum("ic,ib->cb", u, e)
+    return _f_of_projection(np.einsum("ic,ib->cb", u, e), e, df2)
+
+
+def _f_of_projection(proj: np.ndarray, e: np.ndarray, df2: int) -> np.ndarray:
+    """F (C, B) for adding unit directions whose projections on residuals e (n, B) are proj (C, B)."""
     sse = np.sum(e * e, axis=0)[None, :]
     with np.errstate(divide="ignore", invalid="ignore"):
         return proj ** 2 * df2 / np.maximum(sse - proj ** 2, 1e-300 * np.maximum(sse, 1e-300))
@@ -107,6 +111,18 @@ def _added_variable_stats_many(e: np.ndarray, u: np.ndarray, df2: int) -> np.nda
 #: Change-points whose step columns are held at once: the columns are n long and there are about n
 #: change-points, so all of them at once would be an n x n matrix (800 MB at 10,000 runs).
 STEP_CHUNK = 256
+
+#: Above this many runs a round costs a fixed number of passes over the runs: the step test's projections come
+#: from cumulative sums in run order (:func:`step_projections`), lack of fit's pure error from group sums, and
+#: the two members whose null is not a cheap function of the error vector (unequal scatter: a weighted refit per
+#: variance slope and null draw; Box-Cox: a parametric bootstrap) take their asymptotic p-values, the F form of
+#: the likelihood ratio, and join the family as independent uniforms, as Box-Cox's bootstrap p always did.  At
+#: this size the F form and the simulated null agree (tests/criticism/test_large_studies.py); on fewer runs the
+#: small-sample null is simulated as before.
+ASYMPTOTIC_RUNS = 256
+
+#: Cells (runs x null draws) of the step test's cumulative sums held at once.
+STEP_CELLS = 2 ** 22
 
 
 def step_direction_chunks(m: Model, q: np.ndarray, size: int | None = None):
@@ -128,6 +144,43 @@ def step_direction_chunks(m: Model, q: np.ndarray, size: int | None = None):
             starts, cols = [], []
     if cols:
         yield starts, np.column_stack(cols)
+
+
+def step_projections(m: Model, q: np.ndarray, e: np.ndarray) -> tuple[list[int], np.ndarray]:
+    """Change-points in run order and the projections (C, B) of residual columns e (n, B) on their unit step
+    columns: :func:`step_direction_chunks`' change-points and numbers from cumulative sums in run order, O(n B)
+    instead of a residualised column per change-point (n^2 B).
+
+    The step column of change-point c is sw (1[run >= run_c] - f_c), f_c the share of runs at or after it; on
+    the orthonormal basis q of the weighted model, its residual r_c has u_c = r_c / |r_c| with
+    |r_c|^2 = |col_c|^2 - |q'col_c|^2 and u_c'e = (col_c'e - (q'col_c)'(q'e)) / |r_c|, and every part of col_c
+    is a sum over the runs from c on in run order."""
+    kept = np.flatnonzero(m.keep)
+    n = len(kept)
+    order = np.argsort(m.data.runs[kept].astype(float), kind="stable")  # positions among the kept runs
+    labels = m.data.runs[kept].astype(float)[order]
+    candidates = np.arange(STEP_MIN_RUNS, n - STEP_MIN_RUNS + 1)
+    if not len(candidates):
+        return [], np.zeros((0, e.shape[1]))
+    first = np.searchsorted(labels, labels[candidates], side="left")  # tied labels step together
+    sw = m.sw[order]
+
+    def suffix(v):  # sums over sorted positions s.. n-1, for s = 0..n (reverse cumulative sum, small tails exact)
+        out = np.zeros((n + 1,) + v.shape[1:])
+        out[:n] = np.cumsum(v[::-1], axis=0)[::-1]
+        return out[first]
+
+    share = (n - first) / n  # the step column's mean over the kept runs, as Model.step_column subtracts
+    sw_after, sw2_after = suffix(sw), suffix(sw * sw)
+    q_after, q_sw = suffix(sw[:, None] * q[order]), q.T @ m.sw
+    col_norm2 = sw2_after * (1 - 2 * share) + share ** 2 * float(sw @ sw)
+    q_col = q_after - share[:, None] * q_sw[None, :]
+    r_norm2 = np.maximum(col_norm2 - np.sum(q_col * q_col, axis=1), 0.0)
+    keep = np.sqrt(r_norm2) > 1e-6 * np.maximum(np.sqrt(col_norm2), 1e-300)  # not a block boundary
+    e_sorted = e[order]
+    col_e = suffix(sw[:, None] * e_sorted)[keep] - share[keep, None] * (sw @ e_sorted)[None, :]
+    proj = (col_e - q_col[keep] @ (q.T @ e)) / np.sqrt(r_norm2[keep])[:, None]
+    return [int(kept[order[c]]) for c in candidates[keep]], proj
 
 
 def step_starts(m: Model, q: np.ndarray) -> list[int]:
@@ -234,11 +287,26 @@ def _lr_f_logp(lr, df: int, n: int):
     return f_logp((df - 1) * np.expm1(lr / n), df - 1)
 
 
+def _between_groups_ss(group: np.ndarray, n_groups: int, large: bool):
+    """e (n, B) -> the sum of squares of e's replicate-group means (B,), sum_g (sum_{i in g} e_i)^2 / n_g: by
+    an indicator matrix (n, groups) on small tables, by group sums on large ones (that matrix is n x n when
+    few runs repeat)."""
+    counts = np.bincount(group, minlength=n_groups).astype(float)
+    if large:
+        order = np.argsort(group, kind="stable")
+        bounds = np.concatenate([[0], np.cumsum(counts[:-1])]).astype(int)
+        return lambda e: np.sum(np.add.reduceat(e[order], bounds, axis=0) ** 2 / counts[:, None], axis=0)
+    onehot = np.zeros((len(group), n_groups))
+    onehot[np.arange(len(group)), group] = 1.0
+    onehot /= np.sqrt(counts)
+    return lambda e: np.sum((onehot.T @ e) ** 2, axis=0)
+
+
 class Round:
     """One round of the catalogue on the current model: observed statistics and joint null."""
 
     def __init__(self, data: Data, model: Model, n_null: int, rng: np.random.Generator):
-        self.data, self.model = data, model
+        self.data, self.model, self.rng = data, model, rng
         self.hypotheses: list[Hypothesis] = []
         self.classes: list[TermClass] = []
         m = model
@@ -311,15 +379,18 @@ class Round:
         change-points (at least STEP_MIN_RUNS runs each side); nominal p Bonferroni over the change-points
         (ranking only: the family test uses the simulated joint null of the maximum)."""
         df = m.df_resid
-        starts, f_obs, f_null = [], [], None
-        for chunk, directions in step_direction_chunks(m, q):
-            starts += chunk
-            f_obs.append(_added_variable_stats_many(e_obs, directions, df - 1)[:, 0])
-            chunk_null = _added_variable_stats_many(e_null, directions, df - 1).max(axis=0)
-            f_null = chunk_null if f_null is None else np.maximum(f_null, chunk_null)
+        if len(m.y) > ASYMPTOTIC_RUNS:
+            starts, f_obs, f_null = self._step_by_sums(m, q, e_obs, e_null)
+        else:
+            starts, f_obs, f_null = [], [], None
+            for chunk, directions in step_direction_chunks(m, q):
+                starts += chunk
+                f_obs.append(_added_variable_stats_many(e_obs, directions, df - 1)[:, 0])
+                chunk_null = _added_variable_stats_many(e_null, directions, df - 1).max(axis=0)
+                f_null = chunk_null if f_null is None else np.maximum(f_null, chunk_null)
+            f_obs = np.concatenate(f_obs) if f_obs else f_obs
         if not starts:
             return
-        f_obs = np.concatenate(f_obs)
         best = int(np.argmax(f_obs))
         n_points = len(starts)
         h = Hypothesis("step", starts[best], [], float(f_obs[best]),
@@ -327,6 +398,19 @@ class Round:
                        info={"change_points": n_points})
         h.null_logp = np.minimum(0.0, math.log(n_points) + f_logp(f_null, df - 1))
         self.hypotheses.append(h)
+
+    @staticmethod
+    def _step_by_sums(m: Model, q: np.ndarray, e_obs: np.ndarray, e_null: np.ndarray):
+        """The step test's change-points, observed F (C,) and each null draw's largest F (B,) from
+        :func:`step_projections`, the null draws a block of columns at a time."""
+        df2 = m.df_resid - 1
+        starts, proj = step_projections(m, q, e_obs)
+        f_obs = _f_of_projection(proj, e_obs, df2)[:, 0]
+        width = max(1, STEP_CELLS // max(len(m.y), 1))
+        f_null = np.concatenate([_f_of_projection(step_projections(m, q, e_null[:, j:j + width])[1],
+                                                  e_null[:, j:j + width], df2).max(axis=0, initial=-np.inf)
+                                 for j in range(0, e_null.shape[1], width)])
+        return starts, f_obs, f_null
 
     def _outlier(self, m: Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         """The run with the largest externally studentised residual."""
@@ -345,7 +429,10 @@ class Round:
         for name, v in self.covariates().items():
             lr = float(heteroscedasticity_lr(e_obs, m.x, v)[0])
             h = Hypothesis("heteroscedasticity", name, [], lr, float(_lr_f_logp(lr, df, n)))
-            h.null_logp = _lr_f_logp(heteroscedasticity_lr(e_null, m.x, v), df, n)
+            if n > ASYMPTOTIC_RUNS:  # the F form's p is the test's; it joins the family as an independent uniform
+                h.null_logp = np.log(self.rng.uniform(size=e_null.shape[1]))
+            else:
+                h.null_logp = _lr_f_logp(heteroscedasticity_lr(e_null, m.x, v), df, n)
             self.hypotheses.append(h)
 
     def _response_transform(self, m: Model, q: np.ndarray, n_null: int, rng: np.random.Generator) -> None:
@@ -353,10 +440,14 @@ class Round:
         joined to the family as an independent uniform (conservative under positive dependence)."""
         df, n = m.df_resid, len(m.y)
         lr_obs = float(self._boxcox_lr(m.y[:, None], q)[0])
-        p_boot, n_used = self._boxcox_bootstrap(m, q, lr_obs, n_null, rng)
-        h = Hypothesis("response_transform", None, [], lr_obs, math.log(p_boot), info={"bootstrap_draws": n_used})
+        strength = float(_lr_f_logp(lr_obs, df, n))
+        if n > ASYMPTOTIC_RUNS:  # the F form of the likelihood ratio is its p-value
+            h = Hypothesis("response_transform", None, [], lr_obs, strength, info={"bootstrap_draws": 0})
+        else:
+            p_boot, n_used = self._boxcox_bootstrap(m, q, lr_obs, n_null, rng)
+            h = Hypothesis("response_transform", None, [], lr_obs, math.log(p_boot), info={"bootstrap_draws": n_used})
         # ranked against the other causes by the F form of the likelihood ratio
-        h.strength = float(_lr_f_logp(lr_obs, df, n))
+        h.strength = strength
         h.null_logp = np.log(rng.uniform(size=n_null))
         self.hypotheses.append(h)
 
@@ -371,12 +462,10 @@ class Round:
             return
         if pure_error_ss(m.y, group) <= round_off_floor(m.y) ** 2 * df_pe:
             return  # replicates identical to round-off or print: lack of fit is undefined, as in the ANOVA
-        onehot = np.zeros((len(group), n_groups))
-        onehot[np.arange(len(group)), group] = 1.0
-        onehot /= np.sqrt(onehot.sum(axis=0))
+        between = _between_groups_ss(group, n_groups, large=len(group) > ASYMPTOTIC_RUNS)
 
         def f_stat(e):
-            ss_pe = np.sum(e * e, axis=0) - np.sum((onehot.T @ e) ** 2, axis=0)
+            ss_pe = np.sum(e * e, axis=0) - between(e)
             ss_lof = np.sum(e * e, axis=0) - ss_pe
             with np.errstate(divide="ignore", invalid="ignore"):
                 return (ss_lof / df_lof) / np.maximum(ss_pe / df_pe, 1e-300 * np.sum(e * e, axis=0) + 1e-300)
