@@ -401,6 +401,11 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_level1_known_answers.py::test_a_slipped_factor_value_is_moved_and_the_loo_"
                   "errors_are_the_refits", "-knot level2 and not residual_figure and not 3f"],
     },
+    "demid/criticism/step_changes.py": {
+        "functions": None,
+        "tests": ["tests/criticism/test_linear_memory.py", "tests/criticism/test_large_studies.py",
+                  "tests/criticism/test_catalogue_known_answers.py"],
+    },
     "demid/transcription/printed.py": {
         "functions": None,
         "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_printed_properties.py",

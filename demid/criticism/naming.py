@@ -17,7 +17,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..design import LEVERAGE_UNPREDICTABLE, term_name
-from .catalogue import CAUSES, MISFIT_TESTS, STEP_CHUNK, step_direction_chunks, step_starts
+from .catalogue import CAUSES, MISFIT_TESTS
+from .step_changes import STEP_CHUNK, step_direction_chunks, step_starts
 from .discrimination import (AMBIGUOUS_AICC, CONFIRM_AICC, CONFIRM_PURPOSE, PURPOSE, candidate_kind,
                              candidate_label, close_candidates, discriminating_runs)
 from .extensions import RUN_ORDER_CAUSES, catalogue_entry, detail_json, extend_for, step_price

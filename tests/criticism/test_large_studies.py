@@ -11,7 +11,8 @@ import pandas as pd
 import pytest
 
 from demid.criticism import catalogue
-from demid.criticism.catalogue import Round, _between_groups_ss, step_projections
+from demid.criticism.catalogue import Round, _between_groups_ss
+from demid.criticism.step_changes import step_projections
 from demid.criticism.level1 import prepare_data
 from demid.criticism.models import Model, ModelForm
 from demid.precision import _own_places

@@ -9,8 +9,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from demid.criticism import catalogue
-from demid.criticism.catalogue import Round, step_direction_chunks, step_starts
+from demid.criticism import catalogue, step_changes
+from demid.criticism.catalogue import Round
+from demid.criticism.step_changes import step_direction_chunks, step_starts
 from demid.criticism.level1 import prepare_data
 from demid.criticism.models import Model, ModelForm, orthonormal_basis, residualize
 
@@ -56,7 +57,7 @@ def test_the_chunks_give_the_statistics_of_all_change_points_at_once(monkeypatch
     assert starts == step_starts(model, q) and directions.shape[1] == len(starts)
     f_obs = catalogue._added_variable_stats_many(model.resid_w[:, None], directions, model.df_resid - 1)[:, 0]
     assert whole.detail == starts[int(np.argmax(f_obs))] and whole.statistic == pytest.approx(f_obs.max(), rel=1e-12)
-    monkeypatch.setattr(catalogue, "STEP_CHUNK", 7)
+    monkeypatch.setattr(step_changes, "STEP_CHUNK", 7)
     chunked, _, _, _ = _step_hypothesis(60)
     assert chunked.detail == whole.detail and chunked.info == whole.info
     assert chunked.statistic == pytest.approx(whole.statistic, rel=1e-12)
@@ -70,7 +71,7 @@ def test_rival_steps_on_many_runs_have_the_aicc_of_their_fitted_models():
 
     from demid.criticism.naming import _step_aiccs
 
-    n = catalogue.STEP_CHUNK + 40
+    n = step_changes.STEP_CHUNK + 40
     data, _ = prepare_data(_random_table(n, seed=3), ["a", "b"], "y", 1.0, (), None)
     base = Model(data, ModelForm())
     found = list(_step_aiccs(data, base))
