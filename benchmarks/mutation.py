@@ -39,6 +39,24 @@ break-the-ridge advice without its information gain; curve_bend's clear-of-the-b
 check_blocks without its float conversion (perhaps equivalent: its callers pass floats); ccd_blocks's 2 -> 1.
 No test has been written against them: the next round's held-out draw needs a new seed.
 
+Third held-out draw (seed 902_611, written down before the third round's tests; ``--held-out --held-out-only
+--per-module 1`` over all 70 rows, leaving out every draw tests were written against, SEEN_DRAWS; run in three
+parts on the code of that round's end): **48 of 68 killed, 70.6 %** (two rows drew no mutant), against 93-100 %
+in-sample for the same round.  Survivors: sampling/residuals plausibility_fields float(band) -> band;
+sampling/stored stored_strict_sets float(fraction) -> fraction; sampling/evaluate exact_set_on_domain
+float(reference[f]); criticism/level2 _best_point > -> >= at the tolerance; uncertainty/ranking _met_together's
+slack divided; uncertainty/material the notes without the uninformative line; transcription/engine
+evaluate_designs max -> min(n, p); wave_value's 14 evaluation points -> 13; criticism/one_run
+_weakest_by_identity's -0.5 g -> g; sampling/sobol's first draw index; surrogate.py's block test < 2 -> <= 2;
+transcription/printed _cell_texts without its text test; criticism/searches' shared-bias envelope 1 -> 2;
+boundary_runs set_probability's band divided by |target|; surrogate_choice used_q2 without float();
+uncertainty/posterior without the normalisation of the likelihood; paper rounds_to's slack 1 + 1e-9 -> 1 - 1e-9;
+transcription/check _cell_repairs' - levels -> + levels; tolerance observable_band without float(); design_check
+_text_place without float().  Six of the 20 drop a float() around a value that may already be a float (perhaps
+equivalent; 48/62 = 77 % if all six are); the rest change numbers a user reads.  Tests aimed at one draw catch
+about 70-80 % of the next (seed 16-18 draws: 81, 75, 93 %; this draw: 71 %): the goal of 90 % needs tests that
+check whole outputs of every module against independent computations, not more tests per survivor.
+
 The module -> tests table below is by file path: when a module moves, update its
 row (path, functions, tests) and nothing else.
 
@@ -1449,13 +1467,13 @@ def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]
 #: its mutants are drawn apart from the in-sample draw (the default ``--seed``, against which tests were written
 #: run by run), and no test may be written against them.  Once its survivors have been read and tests added for
 #: them, its score is in-sample too: write down a new seed here, unused, before the next round.
-HELD_OUT_SEED = 902_611  # the third round's; 704_913's 18 mutants were read and tested (in-sample now)
+HELD_OUT_SEED = 318_557  # the next round's; 902_611's draw was scored and read (in SEEN_DRAWS now)
 
 
 #: Draws that tests were written against, run by run (seed, mutants per module): never part of a held-out draw.
 #: The in-sample rounds used seed 14 with up to 20 per module, seeds 15-18 with up to 5 (the third round: each
 #: draw's survivors were read and tested), and the second held-out draw (704_913, 3 per module) was read and tested.
-SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3"]
+SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1"]
 
 
 def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:
