@@ -26,7 +26,7 @@ def table_check(report: ReportContext, m: str) -> list:
         last = waves[-1]
         text = (f"**Table check.** {last['simulated']} runs simulated in {len(waves)} wave(s), "
                 f"{last['failed']} of them failed; the last wave's analysis takes its table's "
-                f"{info['n_runs']} runs ({types}) over the whole search range, every factor value "
+                f"{info['n_runs']} runs over the whole search range, every factor value "
                 "inside the search bounds (section *Waves*).")
     if info["warnings"]:
         text += "\n\n" + "\n".join(f"- ⚠ {w}" for w in info["warnings"])
