@@ -19,7 +19,21 @@ factors (custom designs) with CPU seconds and the job process's peak resident me
 Measured on the shared two-core machine (load 8-11, so wall times are inflated; CPU is the figure to read),
 2,000 runs x 2 factors, one material job: 55.9 CPU s before the round became linear (and with OpenBLAS
 threads, which the workflow never runs with), 18.1 after it with threads, 11.0 on one BLAS thread as the
-workflow runs (peak 545 MB).  The full grid was not measured after this change.
+workflow runs (peak 545 MB).
+
+The grid after it (``--grid``; one material job; CPU s and the job's peak resident memory; 13/200/2,000 rows on a
+machine at load ~2, the 10,000-row cases beside a CI run):
+
+    runs   2 factors        4 factors        6 factors
+    13     5.9 s  363 MB    (13 runs cannot determine a quadratic in 4 or 6 factors)
+    200    7.2 s  363 MB    12.3 s  417 MB   19.3 s  427 MB
+    2000   9.4 s  574 MB    15.2 s  528 MB   25.9 s  622 MB
+    10000  54 s  1274 MB    158 s  1389 MB   refused: the typo screen flags one cell of the generated table
+                                             ("11.685914 looks like 11.865914") - at 10,000 rows x 3 responses
+                                             chance alone makes one cell look like a swapped-digit slip
+
+The whole pipeline (``snakemake -c2`` on ``write_study``'s 2-factor study, /usr/bin/time): 2,000 rows 14.9 s wall,
+17.2 CPU s, 555 MB; 10,000 rows 39.4 s wall, 42.7 CPU s, 1.3 GB.
 """
 
 from __future__ import annotations
