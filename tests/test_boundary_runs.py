@@ -139,3 +139,25 @@ def test_a_set_a_refocused_box_cuts_gets_runs_in_the_cut_part_and_is_not_cut():
     estimate = JudgedScenario(spec, spec.scenarios[0], surrogates, 2.0).contains(GRID, plausible=False)
     assert (estimate & cut).sum() >= 0.9 * cut.sum()
     assert (estimate ^ truth).sum() <= 0.3 * truth.sum()
+
+
+@pytest.mark.parametrize("target, tolerance", [(13.0, 0.02), (11.5, 0.05), (-13.0, 0.02)])
+def test_the_set_probability_is_the_normal_mass_inside_the_band_around_the_target(target, tolerance):
+    """P(x in the strict set) for one observable is the normal probability of |y - y*| <= ε|y*| with y around the
+    surrogate's prediction and its prediction standard error (written out here with scipy's normal), for targets
+    of either sign and other tolerances; inflating the error flattens it toward the same mass of a wider normal."""
+    from scipy.stats import norm
+
+    from demid.boundary_runs import set_probability
+    from demid.scenario import judged_scenarios
+
+    sign = np.sign(target)
+    table, spec, surrogates, _ = _study(lambda x: sign * _linear(x), target=target, tolerance=tolerance)
+    judged = judged_scenarios(spec, surrogates, z=2.0)[spec.scenarios[0].name]
+    points = GRID[::997]
+    mean, se = surrogates["y"].predict(points), surrogates["y"].se_prediction(points)
+    band = tolerance * abs(target)
+    for inflation in (1.0, 3.0):
+        sd = inflation * se
+        expected = norm.cdf((target + band - mean) / sd) - norm.cdf((target - band - mean) / sd)
+        np.testing.assert_allclose(set_probability(judged, points, inflation), expected, rtol=1e-9, atol=1e-12)
