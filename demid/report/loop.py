@@ -63,11 +63,9 @@ def next_wave(report: ReportContext, m: str) -> list:
     runs = report.csv("next_runs.csv")
     if runs is None or not reasons.is_file() or not len(runs[runs["material"] == m]):
         return []
-    import json
-
     from ..story import NEXT_WAVE_KINDS, StudyAdvice
 
-    reason = json.loads(reasons.read_text(encoding="utf-8")).get(m, "")
+    reason = report.json(reasons).get(m, "")
     advice = " ".join(StudyAdvice.from_frame(report.csv("advice.csv")).texts(m, NEXT_WAVE_KINDS))
     sub = runs[runs["material"] == m].dropna(axis=1, how="all")
     spec = report.specs()[m]

@@ -16,9 +16,7 @@ def table_check(report: ReportContext, m: str) -> list:
     summary = report.root / "validated" / f"{m}.json"
     if not summary.is_file():
         return []
-    import json
-
-    info = json.loads(summary.read_text(encoding="utf-8"))
+    info = report.json(summary)
     types = ", ".join(f"{v} {k}" for k, v in info["point_types"].items())
     text = f"**Table check.** {info['n_runs']} runs ({types}); every factor value sits on a level of the declared design and inside the search bounds."
     waves = report.json(report.root / "waves" / f"summary_{m}.json").get("waves")
@@ -62,11 +60,9 @@ def pareto(report: ReportContext, m: str) -> list:
             f"predicted {said.get(par['minimise'], par['minimise'])}.")
     crit_path = report.root / "criticism" / f"{m}.json"
     if crit_path.is_file():
-        import json
-
         from ..story.verdicts import unpredictive_responses
 
-        level1 = json.loads(crit_path.read_text(encoding="utf-8")).get("level1") or {}
+        level1 = report.json(crit_path).get("level1") or {}
         bad = [r for r in dict.fromkeys((par["error_of"], par["minimise"])) if r in unpredictive_responses(level1)]
         if bad:
             text += (f" ⚠ It relies on the surrogate of {', '.join(said.get(r, r) for r in bad)}, which "

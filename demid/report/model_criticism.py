@@ -101,9 +101,7 @@ def criticism(report: ReportContext, m: str) -> list:
     summary = report.root / "criticism" / f"{m}.json"
     if not summary.is_file():
         return []
-    import json
-
-    info = json.loads(summary.read_text(encoding="utf-8"))
+    info = report.json(summary)
     lines = ["### What the model gets wrong", "",
              "**Level 1 — surrogate against the simulation runs.** Each quadratic is tested against a fixed "
              "catalogue of causes (a missing cubic or mixed term, a response transform, an outlying run, "

@@ -45,9 +45,7 @@ def uncertainty(report: ReportContext, m: str) -> list:
     summary = report.root / "uncertainty" / f"{m}.json"
     if not summary.is_file():
         return []
-    import json
-
-    info = json.loads(summary.read_text(encoding="utf-8"))
+    info = report.json(summary)
     spec = report.specs()[m]
     parts = [report.md("### Beyond deterministic admissibility")]
     plausible = report.csv("robust_identifiability.csv")

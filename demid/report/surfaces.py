@@ -32,8 +32,6 @@ def coefficients_shown(coef: pd.DataFrame) -> pd.DataFrame:
 
 def response_surfaces(report: ReportContext, m: str) -> list:
     """Per response: equation (coded, actual), block ANOVA, coefficients, canonical analysis."""
-    import json
-
     from ..surrogate import coding_from_frame
     from .rsm import canonical_text, equation, stored_surfaces, term_symbol
 
@@ -44,7 +42,7 @@ def response_surfaces(report: ReportContext, m: str) -> list:
     spec = report.specs()[m]
     letters = {f: chr(ord("A") + i) for i, f in enumerate(spec.factor_names)}
     fit_json = report.root / "fits" / f"{m}.json"
-    canonical = json.loads(fit_json.read_text(encoding="utf-8")) if fit_json.is_file() else {}
+    canonical = report.json(fit_json)
     lines = ["### Response-surface models", "", f"A {term('ridge', 'ridge')} in a canonical analysis is a "
              "direction along which the response hardly changes.", ""]
     fits = read_parquet(fits)
