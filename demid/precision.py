@@ -244,6 +244,18 @@ def p_text(p: float) -> str:
     return f"< {SMALLEST_P:g}" if p < SMALLEST_P else f"{p:.2g}"
 
 
+def q2_text(q2: float) -> str:
+    """A Q² (or R²) to two decimals, with as many more as it takes not to print a value below 1 as "1.00"
+    (0.9966 → "0.997": a perfect prediction is a claim the runs do not make); "undefined" when not finite."""
+    if q2 is None or not np.isfinite(q2):
+        return "undefined"
+    for places in range(2, 7):
+        text = f"{q2:.{places}f}"
+        if q2 >= 1 or float(text) < 1:
+            return text
+    return "> 0.999999"
+
+
 def percent_text(fraction: float, digits: int = 3) -> str:
     """A relative difference (a fraction) as a percentage to ``digits`` significant digits; "0 %" for none,
     "< 0.01 %" for a trace, "more than 10×" past :data:`FAR_RATIO` (a percentage of five digits says nothing

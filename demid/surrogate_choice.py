@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 
 from .kriging import KIND, QUADRATIC, KrigingSurrogate, quadratic_trend
+from .precision import q2_text
 
 #: Kriging is used only when its leave-one-out squared error (PRESS) is at most this share of the quadratic's,
 #: i.e. 1 - Q²_kriging <= CHOICE_PRESS_RATIO (1 - Q²_quadratic): a tie keeps the paper's model.  On a truly
@@ -114,15 +115,12 @@ def used_q2(row) -> float:
 
 def choice_text(response_label: str, row) -> str:
     """One response's choice in words, e.g. "θ by kriging (Q² 0.81 against the quadratic's 0.42)"."""
-    def q2(v):
-        return f"{v:.2f}" if np.isfinite(v) else "undefined"
-
     if getattr(row, "surrogate", QUADRATIC) != KIND:
         if "q2_kriging" in getattr(row, "_fields", ()) and np.isfinite(row.q2_kriging):
-            return (f"{response_label} by the quadratic (Q² {q2(float(row.q2))}; kriging's {q2(row.q2_kriging)} "
+            return (f"{response_label} by the quadratic (Q² {q2_text(float(row.q2))}; kriging's {q2_text(row.q2_kriging)} "
                     f"does not cut the leave-one-out error to {CHOICE_PRESS_RATIO:g} of the quadratic's)")
-        return f"{response_label} by the quadratic (Q² {q2(float(row.q2))})"
-    return f"{response_label} by kriging (Q² {q2(row.q2_kriging)} against the quadratic's {q2(float(row.q2))})"
+        return f"{response_label} by the quadratic (Q² {q2_text(float(row.q2))})"
+    return f"{response_label} by kriging (Q² {q2_text(row.q2_kriging)} against the quadratic's {q2_text(float(row.q2))})"
 
 
 def surrogate_record(row) -> dict:

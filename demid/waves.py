@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from .precision import q2_text
 from .simulation import reserved_file
 from .spec import MaterialSpec
 
@@ -130,7 +131,7 @@ def surrogate_limits(surrogates: dict) -> list[str]:
             out.append(f"the surrogate of {response} is not checked on left-out runs (Q² undefined: a run alone "
                        "fixes it)")
         elif q2 < STOP_Q2:
-            out.append(f"the surrogate of {response} does not predict well enough (Q² = {q2:.2f} < {STOP_Q2:g})")
+            out.append(f"the surrogate of {response} does not predict well enough (Q² = {q2_text(q2)} < {STOP_Q2:g})")
         if lof_p is not None and np.isfinite(lof_p) and lof_p <= LACK_OF_FIT_ALPHA:
             out.append(f"the surrogate of {response} misfits the replicated runs (lack of fit p = {lof_p:.2g})")
     return out
@@ -303,7 +304,8 @@ def box_share(spec: MaterialSpec, domain: pd.DataFrame | None) -> float:
 
 
 HISTORY_COLUMNS = ["material", "wave", "runs_simulated", "runs_analysed", "scenario", "feasible_fraction_of_omega_pct",
-                   "factor", "lower", "upper", "width", "box_lower", "box_upper", "box_share_of_omega_pct"]
+                   "factor", "lower", "upper", "width", "box_lower", "box_upper", "box_share_of_omega_pct",
+                   "plausible_fraction_of_omega_pct", "plausible_lower", "plausible_upper"]
 
 
 def wave_history(spec: MaterialSpec, waves: list[dict]) -> pd.DataFrame:
@@ -313,22 +315,34 @@ def wave_history(spec: MaterialSpec, waves: list[dict]) -> pd.DataFrame:
     Omega; Omega itself for wave 1).
 
     ``waves``: per wave in order, ``scenarios`` (its scenarios frame), ``domain`` (its box, None for
-    wave 1), ``simulated`` (runs simulated up to it, failed ones included) and ``analysed`` (runs it analysed).
+    wave 1), ``simulated`` (runs simulated up to it, failed ones included), ``analysed`` (runs it analysed) and,
+    optionally, ``plausible`` (its plausible-identifiability frame: the plausible share of Omega and interval per
+    scenario and factor, the numbers the report's Waves table prints; NaN without it).
     """
     rows = []
     for number, wave in enumerate(waves, start=1):
         share = box_share(spec, wave["domain"])
         box = ({f.name: (f.lower, f.upper) for f in spec.factors} if wave["domain"] is None else
                {r.factor: (float(r.lower), float(r.upper)) for r in wave["domain"].itertuples()})
-        frame = wave["scenarios"]
-        for row in frame.itertuples():
+        plausible = _plausible_by_set(wave.get("plausible"))
+        for row in wave["scenarios"].itertuples():
+            pct, lower, upper = plausible.get((row.scenario, row.factor), (np.nan, np.nan, np.nan))
             rows.append({"material": spec.name, "wave": number, "runs_simulated": int(wave["simulated"]),
                          "runs_analysed": int(wave["analysed"]), "scenario": row.scenario,
                          "feasible_fraction_of_omega_pct": float(row.feasible_fraction_pct),
                          "factor": row.factor, "lower": float(row.lower), "upper": float(row.upper),
                          "width": float(row.width), "box_lower": box[row.factor][0],
-                         "box_upper": box[row.factor][1], "box_share_of_omega_pct": 100 * share})
+                         "box_upper": box[row.factor][1], "box_share_of_omega_pct": 100 * share,
+                         "plausible_fraction_of_omega_pct": pct, "plausible_lower": lower, "plausible_upper": upper})
     return pd.DataFrame(rows, columns=HISTORY_COLUMNS)
+
+
+def _plausible_by_set(frame: pd.DataFrame | None) -> dict:
+    """(scenario, factor) -> (plausible share of Omega in %, plausible lower, upper) of a plausible frame."""
+    if frame is None or not len(frame):
+        return {}
+    return {(r.scenario, r.factor): (float(r.robust_fraction_pct), float(r.robust_lower), float(r.robust_upper))
+            for r in frame.itertuples()}
 
 
 def wave_summary(spec: MaterialSpec, waves: list[dict], decision: dict | None) -> dict:

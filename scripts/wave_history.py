@@ -17,14 +17,15 @@ inp, out, spec = snakemake.input, snakemake.output, snakemake.params.spec  # noq
 domains = [None] + [pd.read_csv(path) for path in inp.domains]
 tables = [pd.read_csv(t) for t in inp.tables]
 analysed = [pd.read_csv(a) for a in inp.analysed]
-waves = [{"scenarios": read_parquet(s), "domain": d, "simulated": len(t), "analysed": len(a)}
-         for s, d, t, a in zip(inp.scenarios, domains, tables, analysed)]
+plausible = [read_parquet(r) for r in inp.plausible]
+waves = [{"scenarios": read_parquet(s), "domain": d, "simulated": len(t), "analysed": len(a), "plausible": r}
+         for s, d, t, a, r in zip(inp.scenarios, domains, tables, analysed, plausible)]
 history = wave_history(spec, waves)
 write_csv(history, out.table)
-save_figure(waves_figure(history, spec), out.figure)
+save_figure(waves_figure(history, spec, runs=tables[-1]), out.figure)
 decision = json.loads(Path(inp.decision).read_text(encoding="utf-8")) if "decision" in inp.keys() else None
-summary = wave_summary(spec, [{"table": t, "analysed": a, "domain": d, "plausible": read_parquet(r),
+summary = wave_summary(spec, [{"table": t, "analysed": a, "domain": d, "plausible": r,
                                "statistics": read_parquet(s)}
-                              for t, a, d, r, s in zip(tables, analysed, domains, inp.plausible, inp.statistics)],
+                              for t, a, d, r, s in zip(tables, analysed, domains, plausible, inp.statistics)],
                        decision)
 write_json(summary, out.summary)

@@ -101,3 +101,28 @@ def test_a_proposed_runs_coordinate_is_written_to_a_thousandth_of_its_range(lowe
     place = 10.0 ** math.floor(math.log10(1e-3 * (upper - lower)))  # the range as the caller gives it
     assert abs(_number(text) - value) <= place / 2 * (1 + 1e-9) + 1e-12 * abs(value)
     assert _decimals(text) == max(0, -round(math.log10(place))) or _number(text) == 0
+
+
+@SETTINGS
+@given(st.floats(-5.0, 1.0))
+def test_a_q2_below_one_never_prints_as_one_and_is_its_value_rounded(q2):
+    """Q² to two decimals, or as many more as keep a value below 1 from reading "1.00" (0.9966 is not a perfect
+    prediction); the text read back is the value rounded to the decimals it shows."""
+    from demid.precision import q2_text
+
+    text = q2_text(q2)
+    places = _decimals(text)
+    assert places >= 2
+    assert _number(text) == pytest.approx(round(q2, places), abs=10.0 ** -(places + 3))
+    if q2 < 1:
+        assert _number(text) < 1 or text.startswith(">")
+    if places > 2:  # more decimals only where two would read as 1
+        assert round(q2, 2) >= 1 and q2 < 1
+
+
+@pytest.mark.parametrize("q2, text", [(0.9966, "0.997"), (0.994, "0.99"), (0.99949, "0.999"), (0.99951, "0.9995"), (1.0, "1.00"),
+                                      (-0.304, "-0.30"), (0.42, "0.42"), (float("nan"), "undefined")])
+def test_q2_texts_of_known_values(q2, text):
+    from demid.precision import q2_text
+
+    assert q2_text(q2) == text

@@ -19,6 +19,7 @@ import numpy as np
 from scipy import optimize, stats
 
 from .. import run_purposes
+from ..precision import q2_text
 from .catalogue import family_weights
 from .models import json_number, run_label, short_number
 from .one_run import Deletion, worst_deletion
@@ -405,7 +406,7 @@ def _verdict(data: Data, fit: SurrogateFit, findings: list, unexplained: dict | 
         why = ("" if not (findings or unexplained) else
                f" Criticism: {'; '.join(f'{f.cause} ({f.detail})' for f in findings) or 'misfit unexplained'}.")
         detail["message"] = (f"{r}: does not predict — the quadratic predicts left-out runs worse than their mean "
-                             f"(Q² = {st.q2:.2f}; leave-one-out error {plain_number(loo)} against a residual RMSE of "
+                             f"(Q² = {q2_text(st.q2)}; leave-one-out error {plain_number(loo)} against a residual RMSE of "
                              f"{plain_number(st.rmse)}). Do not use this surrogate to decide admissibility; scenarios "
                              f"that "
                              f"use {r} inherit its error.{why}")

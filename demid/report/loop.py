@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 
 import pandas as pd
 
+from ..precision import q2_text
 from .markdown import keys_labelled, markdown_table
 
 if TYPE_CHECKING:
@@ -27,8 +28,7 @@ def waves(report: ReportContext, m: str) -> list:
     for w in summary["waves"]:
         row = {"wave": w["wave"], "runs simulated": w["simulated"], "failed": w["failed"],
                "analysed": w["analysed"], "surrogate": w["surrogate"],
-               "Q²": ", ".join(f"{spec.response_labels.get(r, r)} " + (f"{q:.2f}" if q is not None else
-                                                                        "undefined")
+               "Q²": ", ".join(f"{spec.response_labels.get(r, r)} " + q2_text(q)
                                for r, q in w["q2"].items()),
                "plausible % of Ω": w["plausible_fraction_of_omega_pct"]}
         for f in spec.factors:
@@ -52,8 +52,10 @@ def waves(report: ReportContext, m: str) -> list:
         lines += ["", f"**Why the loop stopped after wave {last['wave']}:** {stop_line}"]
     parts = [report.md("\n".join(lines))]
     parts.append(report.image(report.root / "figures" / f"waves_{m}.png",
-                              f"Feasible fraction of Ω against the runs simulated, and each factor's admissible "
-                              f"interval per wave over the wave's box, of {report.label(m)}"))
+                              f"The plausible share of Ω (solid: the table's; dashed: strict) against the runs "
+                              f"simulated, and per factor each wave's plausible interval (thick; strict: thin) beside "
+                              f"the runs that wave simulated (dots), over the last wave's plausible interval (band), "
+                              f"of {report.label(m)}"))
     return parts
 
 

@@ -13,6 +13,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from ..precision import q2_text
+
 MODEL_EXTENSION_COLUMNS = ["material", "extends", "added_factors", "best_error_before", "best_error_after",
                            "feasible_fraction_before_pct", "feasible_fraction_after_pct", "scenario",
                            "surrogate_q2_before", "surrogate_q2_after"]
@@ -86,7 +88,7 @@ def extension_sentence(row: dict, labels: dict[str, str], factor_labels: dict[st
 
     def share(pct, q2):
         text = "empty" if pct <= 0 else f"{pct:.3g} % of Ω"
-        return text + (f" (surrogate Q² = {float(q2):.2f} < {STOP_Q2:g})" if weak(q2) else "")
+        return text + (f" (surrogate Q² = {q2_text(float(q2))} < {STOP_Q2:g})" if weak(q2) else "")
 
     grow = ("grows" if row["feasible_fraction_after_pct"] > row["feasible_fraction_before_pct"] else
             "does not grow")

@@ -292,6 +292,50 @@ def test_wave_history_gives_each_wave_fraction_of_omega_and_the_box_its_runs_wer
     assert "feasible_fraction_pct" not in history  # a fraction of which base: the column names say it
     assert list(history["box_lower"]) == [0.1, 1.0, 0.5, 10.0] and list(history["box_upper"]) == [0.9, 100.0] * 2
     assert list(history["box_share_of_omega_pct"]) == pytest.approx([100.0, 100.0, 25.0, 25.0])
+    assert history["plausible_fraction_of_omega_pct"].isna().all()  # no plausible frames given: nothing made up
+
+
+def test_wave_history_carries_the_plausible_share_and_intervals_the_waves_table_prints():
+    """The figure plots the plausible share of Omega the report's Waves table prints (wave_summary), per scenario
+    and factor from each wave's plausible frame, beside the strict numbers; both scenarios of a wave kept apart."""
+    from demid.plots.waves import waves_figure
+    from demid.waves import wave_history, wave_summary
+
+    spec = MaterialSpec.from_material("m", _checked({"m": _material(_command())})["materials"]["m"])
+    sets = pd.DataFrame({"scenario": ["both", "both", "one", "one"], "feasible_fraction_pct": [8.0, 8.0, 20.0, 20.0],
+                         "factor": ["a", "b"] * 2, "lower": [0.6, 2.0, 0.3, 1.5], "upper": [0.7, 3.0, 0.8, 3.5],
+                         "width": [0.1, 1.0, 0.5, 2.0]})
+    waves, frames = [], []
+    for k, (pct_both, pct_one) in enumerate(((11.5, 31.0), (9.25, 27.0)), start=1):
+        plausible = pd.DataFrame({"scenario": ["both", "both", "one", "one"], "factor": ["a", "b"] * 2,
+                                  "robust_fraction_pct": [pct_both, pct_both, pct_one, pct_one],
+                                  "robust_lower": [0.55 + k / 100, 1.8, 0.25, 1.2],
+                                  "robust_upper": [0.75, 3.2 - k / 10, 0.85, 3.8]})
+        waves.append({"scenarios": sets, "domain": None, "simulated": 11 * k, "analysed": 11 * k,
+                      "plausible": plausible})
+        table = pd.DataFrame({"run": range(1, 11 * k + 1), "status": "ok"})
+        frames.append({"table": table, "analysed": table, "domain": None, "plausible": plausible,
+                       "statistics": pd.DataFrame({"response": ["y1"], "q2": [0.9]})})
+    history = wave_history(spec, waves)
+    summary = wave_summary(spec, frames, None)
+    for k, wave in enumerate(summary["waves"], start=1):
+        rows = history[(history["wave"] == k) & (history["scenario"] == wave["scenario"])].set_index("factor")
+        assert rows["plausible_fraction_of_omega_pct"].tolist() == [wave["plausible_fraction_of_omega_pct"]] * 2
+        for f, (lo, hi) in wave["plausible"].items():
+            assert (rows.at[f, "plausible_lower"], rows.at[f, "plausible_upper"]) == (lo, hi)
+    one = history[(history["scenario"] == "one") & (history["factor"] == "b")]
+    assert one["plausible_fraction_of_omega_pct"].tolist() == [31.0, 27.0]
+    assert one["plausible_upper"].tolist() == pytest.approx([3.8, 3.8])
+    runs = pd.DataFrame({"wave": [1] * 11 + [2] * 11, "a": np.linspace(0.1, 0.9, 22), "b": 2.0,
+                         "status": ["ok"] * 21 + ["failed"]})
+    fig = waves_figure(history, spec, runs=runs)
+    solid = [line for line in fig.axes[0].get_lines() if line.get_linestyle() == "-"]
+    assert sorted(tuple(line.get_ydata()) for line in solid) == [(11.5, 9.25), (31.0, 27.0)]
+    assert fig.axes[0].get_ylim()[0] == 0
+    from matplotlib.collections import PathCollection
+
+    dots = [c for c in fig.axes[1].collections if isinstance(c, PathCollection)]
+    assert sorted(len(c.get_offsets()) for c in dots) == [1, 21]  # every run drawn, the failed one apart
 
 
 # ------------------------------------------------------------------------------------ the workflow
