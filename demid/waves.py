@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 
 from .precision import q2_text
+from .story.words import counted
 from .simulation import reserved_file
 from .spec import MaterialSpec
 
@@ -196,7 +197,7 @@ def stop_decision(value: dict | None, evidence: WaveEvidence) -> dict:
     from .wave_value import STOP_CONTRACTION
 
     spent = evidence.wave >= evidence.max_waves
-    budget = f"the budget of {evidence.max_waves} wave(s) is spent"
+    budget = f"the budget of {counted(evidence.max_waves, 'wave')} is spent"
     limits = surrogate_limits(evidence.surrogates)
     change = measured_change(evidence)
     if limits:

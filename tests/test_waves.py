@@ -110,7 +110,7 @@ def test_stop_decision_follows_the_stop_rule_and_quotes_its_numbers(wave, max_wa
     assert (decision["stop"], decision["action"]) == (stop, action), decision["reason"]
     reason = decision["reason"]
     if action == "recalibrate" or (action == "next_runs" and wave >= max_waves):
-        assert f"the budget of {max_waves} wave(s) is spent" in reason
+        assert f"the budget of {max_waves} wave{'s' if max_waves != 1 else ''} is spent" in reason
     else:
         assert "budget" not in reason
     change = measured_change(ev)
@@ -154,7 +154,7 @@ def test_a_misfitting_surrogate_asks_for_the_next_runs_and_counts_the_criticisms
     plain = stop_decision(None, _evidence(surrogates=bad, proposed=12, criticism_runs=0))
     assert "the next wave's 12 proposed runs add runs" in plain["reason"] and "of them" not in plain["reason"]
     spent = stop_decision(None, _evidence(surrogates=bad, wave=3, max_waves=3, proposed=12))
-    assert spent["action"] == "recalibrate" and "the budget of 3 wave(s) is spent" in spent["reason"]
+    assert spent["action"] == "recalibrate" and "the budget of 3 waves is spent" in spent["reason"]
     not_yet = stop_decision(None, _evidence(surrogates=bad, wave=2, max_waves=3, proposed=12))
     assert not_yet == {"stop": False, "action": "next_runs", "reason": not_yet["reason"]}
 

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 import pandas as pd
 
 from ..precision import q2_text
+from ..story.words import counted
 from .markdown import keys_labelled, markdown_table
 
 if TYPE_CHECKING:
@@ -39,7 +40,7 @@ def waves(report: ReportContext, m: str) -> list:
     used = ", ".join(dict.fromkeys(f"*{scenarios.get(w['scenario'], w['scenario'])}*" for w in summary["waves"]))
     last = summary["waves"][-1]
     lines = ["### Waves", "",
-             f"demid simulated {last['simulated']} runs in {len(summary['waves'])} wave(s) ({last['failed']} "
+             f"demid simulated {last['simulated']} runs in {counted(len(summary['waves']), 'wave')} ({last['failed']} "
              f"failed); wave 1 is the declared design, each later wave the runs the one before proposed. Per "
              f"wave: the runs simulated up to it, the failed ones among them, the runs its analysis used, its "
              f"surrogate and the surrogate's leave-one-out Q², and the plausible set of {used} as a share of the "

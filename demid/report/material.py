@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from ..story.words import counted
 from .markdown import keys_labelled, markdown_table, short_number
 
 if TYPE_CHECKING:
@@ -22,7 +23,7 @@ def table_check(report: ReportContext, m: str) -> list:
     waves = report.json(report.root / "waves" / f"summary_{m}.json").get("waves")
     if waves:  # a simulated material: every run demid simulated counts, not only the last wave's
         last = waves[-1]
-        text = (f"**Table check.** {last['simulated']} runs simulated in {len(waves)} wave(s), "
+        text = (f"**Table check.** {last['simulated']} runs simulated in {counted(len(waves), 'wave')}, "
                 f"{last['failed']} of them failed; the last wave's analysis takes its table's "
                 f"{info['n_runs']} runs over the whole search range, every factor value "
                 "inside the search bounds (section *Waves*).")

@@ -336,10 +336,10 @@ def test_a_simulated_study_tells_its_waves_and_why_the_loop_stopped(tmp_path):
                 "scenarios": {"s": {"observables": ["y"], "tolerance": 0.02, "label": "Y alone"}}}
     sections = ReportSections(str(tmp_path), {"materials": {"m": material}})
     text = visible_text("".join(part.data for part in sections.waves("m")))
-    assert "Waves" in text and "demid simulated 25 runs in 3 wave(s) (2 failed)" in text
+    assert "Waves" in text and "demid simulated 25 runs in 3 waves (2 failed)" in text
     assert "Why the loop stopped after wave 3: " + stop_row["text"].iloc[0] in text
     cells = re.sub(r"\s+", " ", text)
     assert "3 25 2 20 quadratic" in cells and "0.97 1.44 0.3–0.55 0.1–0.9" in cells
     assert "waves_m" in text  # the waves figure (absent here: named as missing)
     told = visible_text("".join(part.data for part in sections.material("m")[:2]))
-    assert "25 runs simulated in 3 wave(s), 2 of them failed" in told and "table's 20 runs over the whole search range" in told and "other)" not in told
+    assert "25 runs simulated in 3 waves, 2 of them failed" in told and "table's 20 runs over the whole search range" in told and "other)" not in told

@@ -617,10 +617,10 @@ def test_waves_stop_on_the_measured_change_the_budget_or_the_model_never_on_a_mi
         "reason"]
     # ... unless the budget is spent: then the advice is to recalibrate, not to take the set as the answer
     spent = stop_decision(small, _evidence(wave=4, surrogates={"y1": {"q2": 0.2, "lof_p": 0.5}}))
-    assert spent["stop"] is True and spent["action"] == "recalibrate" and "budget of 4 wave(s)" in spent["reason"]
+    assert spent["stop"] is True and spent["action"] == "recalibrate" and "budget of 4 waves" in spent["reason"]
     # the model, not the surrogate, is the limit: stop
     model = stop_decision(big, _evidence(model_limit=True))
     assert model["stop"] is True and "the model, not the surrogate, is the limit" in model["reason"]
     # the budget spent on a set still moving: the loop ends, the advice is another wave
     last = stop_decision(big, _evidence(wave=4))
-    assert last["stop"] is True and last["action"] == "next_runs" and "budget of 4 wave(s) is spent" in last["reason"]
+    assert last["stop"] is True and last["action"] == "next_runs" and "budget of 4 waves is spent" in last["reason"]
