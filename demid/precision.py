@@ -244,6 +244,11 @@ def p_text(p: float) -> str:
     return f"< {SMALLEST_P:g}" if p < SMALLEST_P else f"{p:.2g}"
 
 
+def counted(n: int, noun: str) -> str:
+    """"1 wave", "3 waves": a count with its noun in the number it takes (regular plurals only)."""
+    return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
+
+
 def q2_text(q2: float) -> str:
     """A Q² (or R²) to two decimals, with as many more as it takes not to print a value below 1 as "1.00"
     (0.9966 → "0.997": a perfect prediction is a claim the runs do not make); "undefined" when not finite."""

@@ -18,8 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from .precision import q2_text
-from .story.words import counted
+from .precision import counted, q2_text
 from .simulation import reserved_file
 from .spec import MaterialSpec
 

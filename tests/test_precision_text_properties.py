@@ -130,6 +130,6 @@ def test_q2_texts_of_known_values(q2, text):
 
 @pytest.mark.parametrize("n, text", [(1, "1 wave"), (2, "2 waves"), (0, "0 waves"), (11, "11 waves")])
 def test_a_count_takes_its_noun_in_the_number_it_needs(n, text):
-    from demid.story.words import counted
+    from demid.precision import counted
 
     assert counted(n, "wave") == text

@@ -7,8 +7,7 @@ from typing import TYPE_CHECKING
 
 import pandas as pd
 
-from ..precision import q2_text
-from ..story.words import counted
+from ..precision import counted, q2_text
 from .markdown import keys_labelled, markdown_table
 
 if TYPE_CHECKING:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ..story.words import counted
+from ..precision import counted
 from .markdown import keys_labelled, markdown_table, short_number
 
 if TYPE_CHECKING:

@@ -19,11 +19,6 @@ def unit_text(unit: str) -> str:
     return re.sub(r"\^\{?(-?[0-9.]+)\}?", lambda m: m.group(1).translate(_SUPERSCRIPT), unit)
 
 
-def counted(n: int, noun: str) -> str:
-    """"1 wave", "3 waves": a count with its noun in the number it takes (regular plurals only)."""
-    return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
-
-
 def natural_key(name: str) -> list:
     """Sort key that reads digits as numbers: d5, d10, d15 (not d10, d15, d5)."""
     return [int(part) if part.isdigit() else part for part in re.split(r"(\d+)", str(name))]
