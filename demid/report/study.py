@@ -135,12 +135,13 @@ def paper_comparison(report: ReportContext) -> list:
             f"numbers are reproduced within their tolerance.")
     off = table[passed & ~printed]
     if len(off):
-        text += (f" `printed_agrees` is False on {len(off)} of them: the reproduction lies within the stated "
+        text += (f" On {len(off)} of them (`printed_agrees` no) the reproduction lies within the stated "
                  "tolerance but does not round to every digit the paper printed (a table rebuilt from published "
                  "summaries, or transcribed from rounded values, meets a tolerance without matching the last "
                  "printed digit): " + "; ".join(f"{report.speak(row.quantity, row.material)} "
                                                 f"({report.label(row.material)}): printed {row.published:g}, "
-                                                f"reproduced {row.reproduced:.6g}" for row in off.itertuples())
+                                                f"reproduced {beyond_printed(row.published, row.reproduced)}"
+                                                for row in off.itertuples())
                  + ".")
     shown = table.copy()
     # a difference at floating-point round-off of the value is no difference (1.4e-14 of 100)
@@ -150,5 +151,17 @@ def paper_comparison(report: ReportContext) -> list:
     shown.loc[known, "quantity"] = [report.speak(q, m) for q, m in zip(shown.loc[known, "quantity"],
                                                                        shown.loc[known, "material"])]
     shown.loc[known, "material"] = shown.loc[known, "material"].map(report.label)
+    for column in ("pass", "printed_agrees"):  # the CSV's booleans read as words
+        shown[column] = shown[column].astype(str).str.lower().map({"true": "yes", "false": "no"}).fillna("–")
     return [report.md(text + "\n\n" + markdown_table(shown))]
+
+
+def beyond_printed(published: float, reproduced: float) -> str:
+    """The reproduction to two decimals more than the published value prints (0.017 → "0.01705", 0.1127 →
+    "0.112784"): enough to see why it does not round to the printed digits, not more."""
+    printed = f"{published:g}"
+    if "e" in printed:
+        return f"{reproduced:.6g}"
+    decimals = len(printed.partition(".")[2])
+    return f"{reproduced:.{decimals + 2}f}"
 

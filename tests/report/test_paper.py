@@ -165,3 +165,17 @@ def test_a_scenario_sets_unresolved_factor_and_a_published_zero_bound_get_their_
     bound = table.loc["lower bound x (≳), a"]
     assert bound["published"] == 0.0 and bound["reproduced"] == pytest.approx(0.1)
     assert bound["abs_diff"] == pytest.approx(0.1) and np.isnan(bound["rel_diff"])
+
+
+@pytest.mark.parametrize("published, reproduced, text", [(0.017, 0.0170518, "0.01705"), (0.1127, 0.1127841, "0.112784"),
+                                                         (6.4, 6.40022, "6.400"), (-87.3, -87.3219, "-87.322"),
+                                                         (7579.0, 7579.02, "7579.02"), (1e-06, 1.047e-06, "1.047e-06")])
+def test_a_reproduction_that_misses_a_printed_digit_shows_two_decimals_beyond_it(published, reproduced, text):
+    """The appendix quotes a reproduction that does not round to the printed digits to two decimals more than
+    the paper printed: the digit that differs and one beside it, not the float's every digit."""
+    from demid.report.study import beyond_printed
+
+    assert beyond_printed(published, reproduced) == text
+    if "e" not in text:  # the text rounds back to the value at its own decimals
+        decimals = len(text.partition(".")[2])
+        assert float(text) == round(reproduced, decimals)
