@@ -171,6 +171,31 @@ def test_inside_domain_keeps_the_runs_in_the_box_up_to_a_relative_tolerance():
     assert inside_domain(table, None) is table
 
 
+@given(k=st.integers(1, 4), seed=st.integers(0, 10_000), rel_tol=st.sampled_from([0.0, 1e-9, 1e-3]))
+@settings(max_examples=40, deadline=None, derandomize=True)
+def test_inside_domain_keeps_runs_on_the_box_and_within_its_tolerance_and_drops_the_others(k, seed, rel_tol):
+    """Runs on the box's faces (as placed), within the tolerance of them or beyond it, in 1-4 factors of
+    different scales and signs: a run is kept exactly when each factor lies in [lower - tol, upper + tol]."""
+    rng = np.random.default_rng(seed)
+    names = [f"f{i}" for i in range(k)]
+    lower = rng.uniform(-50.0, 50.0, k) * 10.0 ** rng.integers(-3, 3, k)
+    upper = lower + rng.uniform(0.1, 10.0, k) * np.abs(lower).clip(1e-3)
+    tol = rel_tol * (upper - lower)
+    # each run's factor at a face, at a face's tolerance, just past it, or inside
+    where = rng.integers(0, 7, size=(12, k))
+    inner = lower + rng.uniform(0.0, 1.0, (12, k)) * (upper - lower)
+    edges = [lower, upper, lower - tol, upper + tol, np.nextafter(lower - tol, -np.inf),
+             np.nextafter(upper + tol, np.inf)]
+    values = np.where(where == 6, inner, np.choose(np.minimum(where, 5), [np.broadcast_to(e, (12, k)) for e in edges]))
+    table = pd.DataFrame(values, columns=names)
+    table.insert(0, "run", np.arange(1, 13))
+    domain = pd.DataFrame({"factor": names, "lower": lower, "upper": upper})
+    expected = [run for run, row in zip(table["run"], values)
+                if all(lower[j] - tol[j] <= row[j] <= upper[j] + tol[j] for j in range(k))]
+    kept = inside_domain(table, domain, rel_tol=rel_tol)
+    assert list(kept["run"]) == expected and list(kept.index) == list(range(len(expected)))
+
+
 @pytest.mark.parametrize("first_run", [1, 12, 40])
 def test_next_wave_runs_number_on_from_the_first_free_run(first_run):
     proposals = pd.DataFrame({"b": [3, 4, 5], "purpose": ["fill"] * 3, "a": [0.1, 0.2, 0.3]}, index=[7, 2, 9])

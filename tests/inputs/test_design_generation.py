@@ -241,3 +241,26 @@ def test_blocked_runs_keep_the_seeded_random_order_within_each_block(k, blocks):
     expected = [i for b in range(1, blocks + 1) for i in permutation if sheet.blocks[i] == b]
     assert list(sheet.order) == expected
     assert np.allclose(sheet.coded, ccd_points(k, sheet.alpha, 6))
+
+
+@pytest.mark.parametrize("kind", ["refused", "other_centre"])
+def test_a_sheet_whose_levels_the_pipeline_would_not_recover_is_refused_naming_the_centre_runs(monkeypatch, kind):
+    """The sheet is checked the way the pipeline checks a table: when that check refuses it, or codes it about
+    another centre, the command stops with one line naming --center-runs instead of writing the sheet."""
+    import dataclasses
+
+    import demid.design_check as design_check
+
+    real = design_check.check_design
+
+    def check(table, factors, design, src, config_key, *args, **kwargs):
+        if kind == "refused":
+            raise InputError("sheet: not a design")
+        coding, coded = real(table, factors, design, src, config_key, *args, **kwargs)
+        return dataclasses.replace(coding, center=np.asarray(coding.center) + 1e-3), coded
+
+    factors = [FactorRange("a", 0.0, 1.0), FactorRange("b", 10.0, 20.0)]
+    assert generate_sheet("ccd", factors, center_runs=3).center_runs == 3
+    monkeypatch.setattr(design_check, "check_design", check)
+    with pytest.raises(InputError, match="^--center-runs 3: the pipeline would not recover this design's levels"):
+        generate_sheet("ccd", factors, center_runs=3)
