@@ -131,6 +131,30 @@ def test_a_factor_value_typed_as_another_level_names_both_runs_the_empty_point_a
     assert sorted(err.value.run) == sorted([int(table.loc[i, "run"]), int(table.loc[other, "run"])])
 
 
+@pytest.mark.parametrize("k, slips", [(2, 2), (3, 2), (3, 3)])
+def test_several_factor_values_typed_as_another_level_are_each_a_slip_the_first_named(k, slips):
+    """Several factorial runs whose last factor is typed at the opposite level (each lands on another corner, the
+    corner beside it empty): as many repeats as empty points, each a slip; the first is named with its two runs
+    and the value that restores it."""
+    table, names = _ccd_table(k, 1.5, 3)
+    coded = (table[names].to_numpy() - _CENTRE[:k]) / _HALF[:k]
+    factorial = np.flatnonzero(np.all(np.abs(np.abs(coded) - 1) < 1e-9, axis=1) & (coded[:, -1] > 0))[:slips]
+    pairs, restores = [], {}
+    for i in factorial:
+        other = np.flatnonzero(np.all(np.abs(coded[:, :-1] - coded[i, :-1]) < 1e-9, axis=1)
+                               & (np.abs(coded[:, -1] + 1) < 1e-9))[0]
+        restores[frozenset({int(table.loc[i, "run"]), int(table.loc[other, "run"])})] = table.loc[i, names[-1]]
+        table.loc[i, names[-1]] = table.loc[other, names[-1]]
+    with pytest.raises(InputError) as err:
+        check_design(table, names, {"type": "ccd", "alpha": 1.5, "center_runs": 3}, "t.csv", "materials.m")
+    text = str(err.value)
+    assert "both are the point" in text and "which a CCD runs once" in text
+    named = frozenset(err.value.run)
+    assert named in restores, text
+    said = re.search(rf"in one of them {names[-1]} is likely ([-\d.e+]+), typed as another level", text)
+    assert said and float(said.group(1)) == pytest.approx(restores[named], rel=1e-6), text
+
+
 @pytest.mark.parametrize("k, drop", [(2, 1), (3, 1), (3, 4)])
 def test_an_incomplete_three_level_factorial_counts_its_missing_points(k, drop):
     coded = factorial_points(k, 2)
