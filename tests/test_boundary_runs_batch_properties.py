@@ -41,3 +41,34 @@ def test_each_pick_is_the_largest_score_times_its_space_filling_factor(k, seed, 
     if gap < 1e-6:  # a near tie: the rule allows either pick
         return
     assert greedy_batch(score, candidates, existing, count, length) == expected
+
+
+def test_a_quarter_of_the_runs_explore_by_default_and_the_count_given_otherwise():
+    """The kinds of a wave's runs: round(count / 4) explore by default, the rest are placed on the boundary;
+    an explicit ``explore`` is kept (up to the count); the runs are distinct points of the search range."""
+    from demid.boundary_runs import EXPLORE_SHARE, boundary_runs
+    from demid.scenario import JudgedScenario
+    from demid.spec import MaterialSpec
+    from demid.surrogate import fit_response
+    from tests.helpers import make_ccd_table
+
+    table = make_ccd_table(lambda x: {"y": 10 + 4 * x[:, 0] + 2 * x[:, 1]}, [0.0, 0.0], [1.0, 1.0], noise=0.05,
+                           seed=4).rename(columns={"x1": "a", "x2": "b"})
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "custom"},
+        "factors": {"a": {"lower": 0.0, "upper": 1.0}, "b": {"lower": 0.0, "upper": 1.0}},
+        "responses": {"y": {"target": 13.0}}, "scenarios": {"s": {"observables": ["y"], "tolerance": 0.02}}},
+        grid_points=41)
+    judged = JudgedScenario(spec, spec.scenarios[0], {"y": fit_response(table, ["a", "b"], "y").surrogate()}, 2.0)
+    earlier = table[["a", "b"]].to_numpy(dtype=float)
+    assert EXPLORE_SHARE == 0.25
+    for count in (1, 2, 3, 5, 6, 9, 12):
+        runs, kinds = boundary_runs(judged, earlier, count)
+        explore = int(round(count / 4))
+        assert kinds == ["boundary"] * (count - explore) + ["explore"] * explore
+        assert runs.shape == (count, 2) and len({tuple(r) for r in runs}) == count
+        assert np.all((runs >= 0.0) & (runs <= 1.0))
+    runs, kinds = boundary_runs(judged, earlier, 5, explore=7)
+    assert kinds == ["explore"] * 5
+    runs, kinds = boundary_runs(judged, earlier, 6, explore=2)
+    assert kinds == ["boundary"] * 4 + ["explore"] * 2

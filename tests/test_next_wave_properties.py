@@ -36,3 +36,33 @@ def test_default_refocus_is_the_scenario_with_most_observables(scenarios):
     tightest = min(scenarios[name]["tolerance"] for name in tied)
     assert scenarios[chosen]["tolerance"] == tightest
     assert chosen == next(name for name in tied if scenarios[name]["tolerance"] == tightest)
+
+
+@given(k=st.integers(1, 4), seed=st.integers(0, 10_000), log_mask=st.integers(0, 15))
+@settings(max_examples=20, deadline=None, derandomize=True)
+def test_the_box_points_are_the_boxs_grid_in_actual_units(k, seed, log_mask):
+    """A box anywhere in a search range of any sign and scale (log factors in log10 units): its points are the
+    grid of levels -1, -0.5, 0, 0.5, 1 (three levels above three factors) mapped onto [lo, hi], every level
+    combination once, in the grid's order."""
+    import itertools
+
+    import numpy as np
+
+    from demid.next_wave import box_points
+    from demid.sampling.domain import Domain
+
+    rng = np.random.default_rng(seed)
+    log = tuple(bool(log_mask >> i & 1) for i in range(k))
+    lo_s = rng.uniform(-3.0, 3.0, k)
+    hi_s = lo_s + rng.uniform(0.5, 4.0, k)
+    domain = Domain(tuple(f"f{i}" for i in range(k)), tuple(np.where(log, 10.0 ** lo_s, lo_s)),
+                    tuple(np.where(log, 10.0 ** hi_s, hi_s)), log)
+    a, b = rng.uniform(0.0, 0.5, k), rng.uniform(0.5, 1.0, k)
+    lo, hi = lo_s + a * (hi_s - lo_s), lo_s + b * (hi_s - lo_s)
+    levels = (0.0, 0.25, 0.5, 0.75, 1.0) if k <= 3 else (0.0, 0.5, 1.0)
+    expected = np.array([[lo[i] + t * (hi[i] - lo[i]) for i, t in enumerate(c)]
+                         for c in itertools.product(levels, repeat=k)])
+    expected = np.where(log, 10.0 ** expected, expected)
+    points = box_points(domain, lo, hi)
+    assert points.shape == expected.shape
+    assert np.allclose(points, expected, rtol=1e-12, atol=0.0)

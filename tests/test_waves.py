@@ -255,6 +255,20 @@ def test_next_runs_count_must_determine_a_quadratic_with_one_degree_of_freedom_t
             and f"at least {needed}" in str(err.value))
 
 
+
+@pytest.mark.parametrize("scenario, known", [("s", True), ("t", True), ("nope", False)])
+def test_next_runs_may_name_a_scenario_of_the_material_and_no_other(scenario, known):
+    config = _simulated(2, 7)
+    material = config["materials"]["m"]
+    material["scenarios"]["t"] = {"observables": ["y"], "tolerance": 0.1}
+    material["waves"]["next_runs"]["scenario"] = scenario
+    if known:
+        check_simulated(config)
+        return
+    with pytest.raises(InputError) as err:
+        check_simulated(config)
+    assert "waves.next_runs.scenario: unknown scenario 'nope' (known: s, t)" in str(err.value)
+
 # ------------------------------------------------------------------------------------------ the summary
 def _wave(runs: int, failed: int | None, plausible: float, statistics: pd.DataFrame, domain=None) -> dict:
     table = pd.DataFrame({"run": range(1, runs + 1)})

@@ -70,3 +70,21 @@ def test_an_extension_sentence_quotes_the_rows_numbers_and_the_directions_they_m
     assert (caveat is not None) == (_weak(q2_before) or _weak(q2_after))
     if caveat:
         assert f"below {STOP_Q2:g}" in caveat
+
+
+def test_a_sets_q2_is_its_weakest_surrogates_and_unknown_when_one_is_missing():
+    """The Q² a share is read off: the lowest of the scenario's observables' surrogates, NaN when one of them
+    has no row in the fit table (a set is only as predictive as its weakest surrogate, and one not judged is
+    not judged well)."""
+    import numpy as np
+    import pandas as pd
+
+    from demid.story.extensions import _lowest_q2
+
+    fit = pd.DataFrame({"material": ["m", "m", "m", "other"], "response": ["a", "b", "c", "d"],
+                        "q2": [0.9, 0.4, 0.7, -1.0]})
+    assert _lowest_q2(fit, "m", ["a", "b"]) == 0.4
+    assert _lowest_q2(fit, "m", ["a", "c"]) == 0.7
+    assert np.isnan(_lowest_q2(fit, "m", ["a", "d"]))      # d is another material's
+    assert np.isnan(_lowest_q2(fit, "m", ["e"]))
+    assert np.isnan(_lowest_q2(None, "m", ["a"]))
