@@ -1159,6 +1159,16 @@ EQUIVALENT: dict[str, str] = {
     "demid/surrogate_choice.py::kriging_fits::1 => 0#0":
         "quadratic_trend of no rows has the same number of columns as of one row (checked for 1-4 factors): "
         "only the column count is read",
+    # --- design_check's numpy scalars
+    "demid/design_check.py::_round_to_scale::float(np.max(np.abs(x))) => np.max(np.abs(x))#0":
+        _NUMPY_FLOAT + " (scale only enters isfinite, a comparison with 0 and log10)",
+    "demid/design_check.py::_level_coding::float(np.abs(coded[on]).max()) => np.abs(coded[on]).max()#0":
+        _NUMPY_FLOAT + " (round() of it is the same number, one entry of a key only compared)",
+    "demid/design_check.py::_ccd_alpha_of_table::float(np.mean(ratios)) => np.mean(ratios)#0":
+        _NUMPY_FLOAT + " (the alpha shown only enters comparisons, arithmetic, :.6g and a probe design's alpha, "
+        "which axial_distances reads as a float array)",
+    "demid/design_check.py::_level_tolerance::float(np.max(quantum, initial=0.0)) => np.max(quantum, initial=0.0)#0":
+        _NUMPY_FLOAT + " (it only fills a float array through np.full)",
     # --- float() around one operand of a product or quotient whose other operand is a float
     "demid/tolerance.py::observable_band::float(response.tolerance_abs) => response.tolerance_abs#0":
         "every caller divides the band by a float (band_scale, relative_tolerances, own_band_basis, "
