@@ -1156,6 +1156,20 @@ EQUIVALENT: dict[str, str] = {
         "a label is never empty (MaterialSpec fills an absent one with the key): the extra entries map a key to "
         "itself, and a key matched in place of a labelled one would start inside a word, which the look-behind "
         "forbids",
+    "demid/story/advice.py::StudyAdvice.from_frame::frame is None or not len(frame) => frame is None#0":
+        "an empty frame has no rows: the comprehension over its rows gives the same empty advice",
+    "demid/blocks.py::block_effects::float(s) => s#0":
+        _NUMPY_FLOAT + " (no caller in the package reads the standard error: cli.py writes the effects only)",
+    "demid/uncertainty/ranking.py::rank_observable_sets::1 => 0#4":
+        "the smaller sets then include the single observables, whose own reachability is reachable[o], which the "
+        "first clause requires already",
+    "demid/uncertainty/material.py::_notes::2 => 3#0":
+        "the default is never read: analyse_material merges the caller's sizes over recommended_sizes, which "
+        "gives posterior_points above three factors, and below four factors the points are not printed",
+    "demid/story/measurements.py::measurement_order::1 - f_new / base_frac < 0.0005 => "
+    "1 - f_new / base_frac <= 0.0005#0":
+        "near the threshold f_new / base_frac lies in [0.5, 1), where 1 - r is exact (Sterbenz) and a multiple of "
+        "2^-53, which the double nearest 0.0005 is not: the shrink never equals it",
     "demid/surrogate_choice.py::kriging_fits::1 => 0#0":
         "quadratic_trend of no rows has the same number of columns as of one row (checked for 1-4 factors): "
         "only the column count is read",
@@ -1243,6 +1257,8 @@ SETTINGS: dict[str, str] = {
         "whether the sweep's spans are polished by a local search or read off the grid or Sobol sample (the "
         "strict sets of polynomials in up to three factors, the pipeline's, are exact either way)",
     "demid/uncertainty/sweep.py::tolerance_sweep::0 => -1#0":
+        "the default scramble seed of the sweep's Sobol points above three factors (the pipeline passes its own)",
+    "demid/uncertainty/sweep.py::tolerance_sweep::0 => 1#0":
         "the default scramble seed of the sweep's Sobol points above three factors (the pipeline passes its own)",
     "demid/uncertainty/sweep.py::tolerance_sweep::2 ** 14 => 2 * 14#0":
         "the default number of scrambled Sobol points (more than three factors); the pipeline passes its own",

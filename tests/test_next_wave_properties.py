@@ -66,3 +66,38 @@ def test_the_box_points_are_the_boxs_grid_in_actual_units(k, seed, log_mask):
     points = box_points(domain, lo, hi)
     assert points.shape == expected.shape
     assert np.allclose(points, expected, rtol=1e-12, atol=0.0)
+
+
+@given(offset=st.sampled_from([0.0, -250.0, 1000.0, 2.5e5]), width=st.sampled_from([1e-3, 0.05, 1.0, 300.0]),
+       side=st.sampled_from(["lower", "upper", "none"]))
+@settings(max_examples=30, deadline=None, derandomize=True)
+def test_the_box_reason_names_a_factor_only_where_the_box_narrows_its_range(offset, width, side):
+    """A box equal to the current range keeps it, whatever the factor's scale and distance from zero (a narrow
+    range far from zero included); a box 1 % in from one end names that factor with its new bounds."""
+    import re
+
+    import numpy as np
+
+    from demid.next_wave import _box_reason
+
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "custom"},
+        "factors": {"t": {"lower": offset, "upper": offset + width}, "b": {"lower": 0.0, "upper": 1.0}},
+        "responses": {"y": {"target": 1.0}}, "scenarios": {"s": {"observables": ["y"], "tolerance": 0.05}},
+        "next_runs": {"count": 9, "scenario": "", "margin": 0.1}})
+    lo, hi = (np.array(v, dtype=float) for v in spec.domain.search_bounds())
+    if side == "lower":
+        lo[0] += 0.01 * width
+    elif side == "upper":
+        hi[0] -= 0.01 * width
+    text = _box_reason(spec, spec.scenarios[0], lo, hi, lo, hi, False)
+    if side == "none":
+        assert text == ("The plausible set of scenario 's' (y) reaches (within the margin) every edge of the "
+                        "current range, so the range is kept")
+    else:
+        said = re.fullmatch(r"Refocused on the plausible set of scenario 's' \(y\) with a margin of 0\.1 of the "
+                            r"range: t (\S+)–(\S+)", text)
+        assert said, text
+        assert [float(said[1]), float(said[2])] == [float(f"{lo[0]:.4g}"), float(f"{hi[0]:.4g}")]
+    assert _box_reason(spec, spec.scenarios[0], lo, hi, lo, hi, True) == \
+        "Scenario 's' (y) has no plausible point, so the current range is kept"
