@@ -710,7 +710,8 @@ TABLE: dict[str, dict] = {
     "demid/story/advice.py": {
         "functions": None,
         "tests": ["tests/story/test_advice_wording.py", "tests/story/test_advice_properties.py", "tests/story/test_story.py",
-                  "tests/story/test_advice_order_properties.py", "tests/test_physical_limits.py", "tests/report/test_report_reads.py", "tests/report/test_report_text.py",
+                  "tests/story/test_advice_order_properties.py", "tests/story/test_recalibrate_properties.py",
+                  "tests/test_physical_limits.py", "tests/report/test_report_reads.py", "tests/report/test_report_text.py",
                   _NOT_WORKFLOW],
     },
     "demid/criticism/one_run.py": {
