@@ -635,7 +635,7 @@ TABLE: dict[str, dict] = {
     "demid/tolerance.py": {
         "functions": None,
         "tests": ["tests/test_tolerance.py", "tests/criticism/test_level2_sign_properties.py", "tests/test_scenario.py",
-                  "tests/criticism/test_level2_own_tolerance.py"],
+                  "tests/criticism/test_level2_own_tolerance.py", "tests/test_judged_scenario_properties.py"],
     },
     "demid/formulas.py": {
         "functions": None,
@@ -759,7 +759,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/scenario.py": {
         "functions": None,
-        "tests": ["tests/test_scenario.py", "tests/test_tolerance.py",
+        "tests": ["tests/test_scenario.py", "tests/test_tolerance.py", "tests/test_judged_scenario_properties.py",
                   "tests/uncertainty/test_own_tolerance_posteriors.py",
                   "tests/uncertainty/test_uncertainty.py::test_measurement_sigma_sources",
                   "tests/uncertainty/test_uncertainty.py::"
@@ -1201,6 +1201,10 @@ EQUIVALENT: dict[str, str] = {
     "1 - f_new / base_frac <= 0.0005#0":
         "near the threshold f_new / base_frac lies in [0.5, 1), where 1 - r is exact (Sterbenz) and a multiple of "
         "2^-53, which the double nearest 0.0005 is not: the shrink never equals it",
+    "demid/story/advice.py::_recalibrate::level2 and (not level2.get('feasible', True)) => "
+    "not level2.get('feasible', True)#0":
+        "the one caller passes criticism.get('level2') or {}: an empty dict's get gives True, so the guard only "
+        "states the intent",
     "demid/surrogate_choice.py::kriging_fits::1 => 0#0":
         "quadratic_trend of no rows has the same number of columns as of one row (checked for 1-4 factors): "
         "only the column count is read",
