@@ -1205,6 +1205,9 @@ EQUIVALENT: dict[str, str] = {
     "not level2.get('feasible', True)#0":
         "the one caller passes criticism.get('level2') or {}: an empty dict's get gives True, so the guard only "
         "states the intent",
+    "demid/uncertainty/ranking.py::rank_observable_sets::pd.Series([reachable_set[s] for s in subsets], "
+    "index=frame.index) => pd.Series([reachable_set[s] for s in subsets])#0":
+        "frame is built from a list of rows, so its index is the RangeIndex the Series gets by default",
     "demid/surrogate_choice.py::kriging_fits::1 => 0#0":
         "quadratic_trend of no rows has the same number of columns as of one row (checked for 1-4 factors): "
         "only the column count is read",
@@ -1298,6 +1301,9 @@ SETTINGS: dict[str, str] = {
     "demid/uncertainty/sweep.py::tolerance_sweep::2 ** 14 => 2 * 14#0":
         "the default number of scrambled Sobol points (more than three factors); the pipeline passes its own",
     "demid/uncertainty/ranking.py::rank_observable_sets::16 => 15#0":
+        "the default number of Sobol points of the posteriors above three factors when none are passed (2^16); "
+        "the pipeline passes its posteriors and its own count",
+    "demid/uncertainty/ranking.py::rank_observable_sets::16 => 17#0":
         "the default number of Sobol points of the posteriors above three factors when none are passed (2^16); "
         "the pipeline passes its posteriors and its own count",
 }
