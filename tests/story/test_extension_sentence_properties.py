@@ -88,3 +88,17 @@ def test_a_sets_q2_is_its_weakest_surrogates_and_unknown_when_one_is_missing():
     assert np.isnan(_lowest_q2(fit, "m", ["a", "d"]))      # d is another material's
     assert np.isnan(_lowest_q2(fit, "m", ["e"]))
     assert np.isnan(_lowest_q2(None, "m", ["a"]))
+
+
+def test_a_best_error_is_level_twos_and_unknown_without_it():
+    """The best error read off a material's criticism: level 2's best_max_error as a float, NaN when the material
+    has no criticism, no level 2 or no best error (never a number made up)."""
+    import numpy as np
+
+    from demid.story.extensions import _best_error
+
+    assert _best_error({"level2": {"best_max_error": 0.237}}) == 0.237
+    assert _best_error({"level2": {"best_max_error": 1}}) == 1.0 and isinstance(
+        _best_error({"level2": {"best_max_error": 1}}), float)
+    for criticism in (None, {}, {"level2": None}, {"level2": {}}, {"level2": {"best_max_error": None}}):
+        assert np.isnan(_best_error(criticism))
