@@ -72,3 +72,46 @@ def test_a_quarter_of_the_runs_explore_by_default_and_the_count_given_otherwise(
     assert kinds == ["explore"] * 5
     runs, kinds = boundary_runs(judged, earlier, 6, explore=2)
     assert kinds == ["boundary"] * 4 + ["explore"] * 2
+
+
+def test_the_omega_waves_reason_counts_each_kind_of_run_it_placed():
+    """A wave placed over the whole search range: every count its reason quotes (runs deciding between causes,
+    on the boundary, exploring, separating aliased terms) is the number of runs of that purpose in the wave, for
+    counts 8-12 with and without deciding runs and aliased terms."""
+    import json
+    import re
+
+    import pandas as pd
+
+    from demid.next_wave import PURPOSE_DECIDE, plan_next_wave
+    from demid.spec import MaterialSpec
+    from tests.test_boundary_runs import _linear, _study
+
+    table, spec, surrogates, plausible = _study(_linear)
+    separated = 0
+    for count, deciding, aliased in [(8, 0, False), (9, 2, True), (10, 0, True), (12, 1, False), (11, 3, True)]:
+        spec = MaterialSpec.from_material("m", {**spec.material_config(),
+                                                "next_runs": {"count": count, "scenario": "", "margin": 0.1}})
+        rows = [{"response": "y", "cause": "ambiguous", "detail": "outlier (3);step (9)", "aliases": "",
+                 "discriminating_runs": json.dumps([{"a": 0.2, "b": 0.7, "purpose": PURPOSE_DECIDE}] * deciding)}]
+        if aliased:
+            rows.append({"response": "y", "cause": "missing_term", "aliases": "a^3;a:b^2", "detail": "",
+                         "discriminating_runs": "[]"})
+        wave = plan_next_wave("m", table, surrogates, spec, plausible, pd.DataFrame(rows), z=2.0,
+                              analysed_over_omega=True)
+        purposes = wave.runs["purpose"].tolist()
+        assert len(purposes) == count
+        said = {"decide": re.search(r"; first (\d+) run\(s\) to decide between causes", wave.reason),
+                "boundary": re.search(r"; (\d+) where the classification of the set is most uncertain", wave.reason),
+                "explore": re.search(r", (\d+) where the surrogate is least certain", wave.reason),
+                "separate": re.search(r", (\d+) to separate aliased terms the criticism found", wave.reason)}
+        counted = {"decide": purposes.count(PURPOSE_DECIDE),
+                   "boundary": sum("classification of the set is most uncertain" in p for p in purposes),
+                   "explore": sum("surrogate is least certain" in p for p in purposes),
+                   "separate": sum(p.startswith("separate aliased terms") for p in purposes)}
+        for kind, match in said.items():
+            assert (int(match[1]) if match else 0) == counted[kind], (kind, wave.reason)
+        assert counted["decide"] == deciding and sum(counted.values()) == count
+        assert counted["separate"] <= int(aliased)
+        separated += counted["separate"]
+    assert separated >= 1  # a separating run was placed (where the count leaves room for it)
