@@ -1210,6 +1210,10 @@ EQUIVALENT: dict[str, str] = {
         "frame is built from a list of rows, so its index is the RangeIndex the Series gets by default",
     "demid/wave_value.py::expected_contraction::float(after.mean()) => after.mean()#0":
         _NUMPY_FLOAT + " (phi_after enters arithmetic, :.3g text and JSON through io._clean)",
+    "demid/wave_runs.py::design_count::lo + hi => hi#0":
+        "the earlier runs are then shifted by lo / 2 in coded units: the full quadratics in shifted coordinates "
+        "are the same space, so the model matrix's rank is the same (its singular values are either of the order "
+        "of max|m| or round-off, as full_rank's tolerance entry says)",
     "demid/surrogate_choice.py::kriging_fits::1 => 0#0":
         "quadratic_trend of no rows has the same number of columns as of one row (checked for 1-4 factors): "
         "only the column count is read",
@@ -1281,6 +1285,9 @@ SETTINGS: dict[str, str] = {
         "fixed seed gives an equally stratified, equally deterministic sample",
     "demid/uncertainty/ranking.py::_met_together::500 => 499#0":
         "L-BFGS-B's iteration cap in the search for a point meeting every target: it converges in far fewer",
+    "demid/wave_runs.py::d_optimal_augment::9 => 8#0":
+        "the decimals the log prediction variance is rounded to before equal ones go to the farthest candidate "
+        "(9 or 8: both far above round-off, far below a difference between grid points' variances)",
     "demid/combinations/axes.py::band_curve::12 => 13#0":
         "the decimals a coordinate is rounded to before grid columns are told apart (12 or 13: both far above the "
         "round-off of grid coordinates, far below a grid step)",

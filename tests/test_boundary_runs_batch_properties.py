@@ -115,3 +115,24 @@ def test_the_omega_waves_reason_counts_each_kind_of_run_it_placed():
         assert counted["separate"] <= int(aliased)
         separated += counted["separate"]
     assert separated >= 1  # a separating run was placed (where the count leaves room for it)
+
+
+def test_the_candidate_grid_over_omega_has_its_documented_size_and_spans_the_search_range():
+    """41 nodes per axis up to two factors, else the k-th root of 4096 (at least 5): 16 in three factors, 8 in
+    four, 5 from five on; each axis from the search range's lower to its upper end (log10 for a log factor)."""
+    import itertools
+
+    from demid.boundary_runs import omega_candidates
+    from demid.scenario import JudgedScenario
+    from demid.spec import MaterialSpec
+
+    for k, n in [(1, 41), (2, 41), (3, 16), (4, 8), (5, 5)]:
+        factors = {f"f{i}": ({"lower": 1e-3, "upper": 10.0, "scale": "log"} if i == 0 else
+                             {"lower": -2.0 - i, "upper": 5.0 * i + 1.0}) for i in range(k)}
+        spec = MaterialSpec.from_material("m", {
+            "data": "x.csv", "design": {"type": "custom"}, "factors": factors, "responses": {"y": {"target": 1.0}},
+            "scenarios": {"s": {"observables": ["y"], "tolerance": 0.05}}})
+        judged = JudgedScenario(spec, spec.scenarios[0], {}, 2.0)
+        lo, hi = spec.domain.search_bounds()
+        expected = np.array(list(itertools.product(*[np.linspace(a, b, n) for a, b in zip(lo, hi)])))
+        assert np.array_equal(omega_candidates(judged), expected)
