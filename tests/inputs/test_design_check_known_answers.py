@@ -139,7 +139,7 @@ def test_several_factor_values_typed_as_another_level_are_each_a_slip_the_first_
     table, names = _ccd_table(k, 1.5, 3)
     coded = (table[names].to_numpy() - _CENTRE[:k]) / _HALF[:k]
     factorial = np.flatnonzero(np.all(np.abs(np.abs(coded) - 1) < 1e-9, axis=1) & (coded[:, -1] > 0))[:slips]
-    pairs, restores = [], {}
+    restores = {}
     for i in factorial:
         other = np.flatnonzero(np.all(np.abs(coded[:, :-1] - coded[i, :-1]) < 1e-9, axis=1)
                                & (np.abs(coded[:, -1] + 1) < 1e-9))[0]
