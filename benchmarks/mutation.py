@@ -1222,6 +1222,20 @@ EQUIVALENT: dict[str, str] = {
         "the earlier runs are then shifted by lo / 2 in coded units: the full quadratics in shifted coordinates "
         "are the same space, so the model matrix's rank is the same (its singular values are either of the order "
         "of max|m| or round-off, as full_rank's tolerance entry says)",
+    "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#1":
+        _NUMPY_FLOAT + " (the coded centre is written to combinations/{material}.json through io._clean)",
+    "demid/combinations/axes.py::linear_statement::float(np.linalg.norm(a)) => np.linalg.norm(a)#0":
+        _NUMPY_FLOAT + " (scale only enters a comparison, a sign change and divisions)",
+    "demid/design_inference.py::infer_design::1 => 2#4":
+        "np.clip(..., -2, 1): the runs reach this line only when every axial distance is 1, so no coded value "
+        "rounds below -1",
+    "demid/uncertainty/sweep.py::tolerance_sweep::observables = tuple(observables) => pass#0":
+        "summarise_set turns the observables into a tuple itself, and join_observables joins any sequence",
+    "demid/story/verdicts.py::_limit_ends::np.isfinite(lower) and np.isfinite(upper) => np.isfinite(upper)#0":
+        "an interval's ends are NaN together (an empty set, or a row missing from one table), never one alone",
+    "demid/story/measurements.py::measurement_order::2 => 1#0":
+        "a fraction never equals an observable's name, so the test reduces to by_frac[1] < f_new, which only an "
+        "option other than best can meet (best's own fraction is f_new)",
     "demid/surrogate_choice.py::kriging_fits::1 => 0#0":
         "quadratic_trend of no rows has the same number of columns as of one row (checked for 1-4 factors): "
         "only the column count is read",
