@@ -51,3 +51,54 @@ def test_block_standard_errors_are_those_of_the_contrasts(seed, blocks):
     sampled = np.column_stack([draws, -draws.sum(axis=1)]).std(axis=0)
     for j, label in enumerate(levels):
         assert effects[label][1] == pytest.approx(sampled[j], rel=0.03)
+
+
+def _effect_columns(labels: list[str], order: list[str]) -> np.ndarray:
+    """Effect coding written out: one column per block but the last, +1 in it, -1 in the last block."""
+    return np.array([[1.0 if lab == lv else -1.0 if lab == order[-1] else 0.0 for lv in order[:-1]]
+                     for lab in labels])
+
+
+@given(seed=st.integers(0, 10_000), k=st.sampled_from([2, 3]), blocks=st.integers(2, 3),
+       orthogonal_blocks=st.booleans(), centres=st.integers(1, 6))
+@settings(max_examples=25, deadline=None, derandomize=True)
+def test_check_blocks_reports_counts_estimability_and_the_largest_correlation_of_a_block_with_a_term(
+        seed, k, blocks, orthogonal_blocks, centres):
+    """A CCD in blocks (the rotatable orthogonal blocking, or labels drawn at random): the blocks in order of
+    first appearance, their runs and centre runs counted, the block terms' estimability by the rank of the
+    model matrix with them, and the largest |Pearson correlation| of an effect-coded block column with a
+    model term (numpy's corrcoef; 0 for a constant column), orthogonal below 0.01, quoted in the note."""
+    from demid.blocks import ORTHOGONAL_CORRELATION, ccd_blocks, check_blocks
+    from demid.design import ccd_points, model_matrix, quadratic_terms
+
+    rng = np.random.default_rng(seed)
+    coded = ccd_points(k, None, centres)
+    number = ccd_blocks(coded, blocks) if orthogonal_blocks else rng.integers(1, blocks + 1, len(coded))
+    order = rng.permutation(len(coded))
+    coded, labels = coded[order], [f"day {n}" for n in np.asarray(number)[order]]
+    model = model_matrix(coded, quadratic_terms(k))
+    found = check_blocks(coded, labels, model)
+
+    levels = list(dict.fromkeys(labels))
+    assert list(found.levels) == levels
+    centre = np.all(coded == 0, axis=1)
+    assert found.runs == {lv: labels.count(lv) for lv in levels}
+    assert found.centre_runs == {lv: int(sum(c for lab, c in zip(labels, centre) if lab == lv)) for lv in levels}
+    b = _effect_columns(labels, levels)
+    estimable = np.linalg.matrix_rank(np.column_stack([model, b])) == model.shape[1] + b.shape[1]
+    assert (not found.problems) == estimable
+    worst = 0.0
+    for term in model[:, 1:].T:
+        for column in b.T:
+            if np.ptp(term) > 0 and np.ptp(column) > 0:
+                worst = max(worst, abs(np.corrcoef(term, column)[0, 1]))
+    assert found.max_correlation == pytest.approx(worst, abs=1e-12)
+    assert found.orthogonal == (worst < ORTHOGONAL_CORRELATION)
+    no_centre = [lv for lv in levels if found.centre_runs[lv] == 0]
+    assert any(n.startswith(f"block(s) {', '.join(no_centre)} have no centre run") for n in found.notes) == \
+        bool(no_centre)
+    if not found.orthogonal:
+        quoted = [n for n in found.notes if n.startswith("blocking is not orthogonal")]
+        assert quoted and f"model term {worst:.3f})" in quoted[0]
+    else:
+        assert any(n.startswith("blocking is orthogonal") for n in found.notes)

@@ -389,3 +389,29 @@ def test_a_simulated_wave_makes_the_criticism_runs_outside_the_box_too():
     assert len(simulated.runs) == 9 and simulated.runs["purpose"].tolist()[:2] == [PURPOSE_DECIDE] * 2
     assert simulated.runs[["a", "b"]].to_numpy()[:2].tolist() == [[0.95, 0.05]] * 2
     assert "left out" not in simulated.reason
+
+
+def test_a_failed_run_is_no_run_of_the_next_waves_plan():
+    """Runs that failed (status failed, no response) are no earlier runs: the plan of a table with failed runs in
+    the next box is the plan of the table without them."""
+    from demid.next_wave import plan_waves
+    from demid.surrogate import surrogates_from_frame, surrogates_to_frame
+
+    table, surrogates, spec, plausible = _annulus_material()
+    failed = pd.DataFrame({"run": [101, 102, 103], "a": [0.3, 0.35, 0.25], "b": [0.6, 0.5, 0.7], "y": np.nan,
+                           "status": "failed"})
+    with_failed = pd.concat([table, failed], ignore_index=True)
+    fits = surrogates_to_frame(fit_material(table, spec))
+    surrogates = surrogates_from_frame(fits, spec.factor_names)  # the surrogates as the plan reads them
+
+    def plan(t):
+        frames = {"tables": {"m": t}, "fits": {"m": fits}, "plausible": {"m": plausible}, "findings": {"m": None}}
+        return plan_waves({"m": spec}, frames, z=2.0)["m"]
+
+    alone, beside = plan(table), plan(with_failed)
+    pd.testing.assert_frame_equal(beside.runs, alone.runs)
+    pd.testing.assert_frame_equal(beside.domain, alone.domain)
+    assert beside.reason == alone.reason
+    # the same points as runs that succeeded would be earlier runs of the box: the plan would differ
+    assert not plan_next_wave("m", with_failed.assign(status="ok"), surrogates, spec, plausible, z=2.0).runs.equals(
+        alone.runs)

@@ -174,3 +174,20 @@ def test_new_runs_shrink_the_means_error_by_the_bayesian_update_of_a_diagonal_co
     updated = np.linalg.inv(np.linalg.inv(cov) + f_new.T @ f_new / 0.8)
     assert np.allclose(found, np.sqrt(np.einsum("ij,jk,ik->i", f, updated, f)), rtol=1e-9)
     assert np.all(found < surrogate.se_mean(points))
+
+
+@pytest.mark.parametrize("resid_var", [0.0, 0.4])
+def test_a_surrogate_without_coefficient_uncertainty_keeps_its_error_whatever_the_new_runs(resid_var):
+    """No covariance (an exact surrogate) or no residual variance: the update has no information to add to, and
+    the mean's error stays the surrogate's own (zero), not the error of a fit to the new runs alone."""
+    from demid.design import quadratic_terms
+    from demid.surrogate import Surrogate
+    from demid.wave_value import _updated_se
+
+    terms = quadratic_terms(2)
+    zero = np.zeros((len(terms), len(terms)))
+    sur = Surrogate("y", ["a", "b"], terms, np.arange(1.0, len(terms) + 1.0), zero, resid_var, 5)
+    points = np.random.default_rng(1).uniform(0.0, 1.0, (30, 2))
+    new_runs = np.random.default_rng(2).uniform(0.0, 1.0, (9, 2))
+    assert np.array_equal(_updated_se(sur, points, new_runs), sur.se_mean(points))
+    assert not np.any(sur.se_mean(points))

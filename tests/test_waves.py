@@ -171,6 +171,31 @@ def test_inside_domain_keeps_the_runs_in_the_box_up_to_a_relative_tolerance():
     assert inside_domain(table, None) is table
 
 
+@given(k=st.integers(1, 4), seed=st.integers(0, 10_000), rel_tol=st.sampled_from([0.0, 1e-9, 1e-3]))
+@settings(max_examples=40, deadline=None, derandomize=True)
+def test_inside_domain_keeps_runs_on_the_box_and_within_its_tolerance_and_drops_the_others(k, seed, rel_tol):
+    """Runs on the box's faces (as placed), within the tolerance of them or beyond it, in 1-4 factors of
+    different scales and signs: a run is kept exactly when each factor lies in [lower - tol, upper + tol]."""
+    rng = np.random.default_rng(seed)
+    names = [f"f{i}" for i in range(k)]
+    lower = rng.uniform(-50.0, 50.0, k) * 10.0 ** rng.integers(-3, 3, k)
+    upper = lower + rng.uniform(0.1, 10.0, k) * np.abs(lower).clip(1e-3)
+    tol = rel_tol * (upper - lower)
+    # each run's factor at a face, at a face's tolerance, just past it, or inside
+    where = rng.integers(0, 7, size=(12, k))
+    inner = lower + rng.uniform(0.0, 1.0, (12, k)) * (upper - lower)
+    edges = [lower, upper, lower - tol, upper + tol, np.nextafter(lower - tol, -np.inf),
+             np.nextafter(upper + tol, np.inf)]
+    values = np.where(where == 6, inner, np.choose(np.minimum(where, 5), [np.broadcast_to(e, (12, k)) for e in edges]))
+    table = pd.DataFrame(values, columns=names)
+    table.insert(0, "run", np.arange(1, 13))
+    domain = pd.DataFrame({"factor": names, "lower": lower, "upper": upper})
+    expected = [run for run, row in zip(table["run"], values)
+                if all(lower[j] - tol[j] <= row[j] <= upper[j] + tol[j] for j in range(k))]
+    kept = inside_domain(table, domain, rel_tol=rel_tol)
+    assert list(kept["run"]) == expected and list(kept.index) == list(range(len(expected)))
+
+
 @pytest.mark.parametrize("first_run", [1, 12, 40])
 def test_next_wave_runs_number_on_from_the_first_free_run(first_run):
     proposals = pd.DataFrame({"b": [3, 4, 5], "purpose": ["fill"] * 3, "a": [0.1, 0.2, 0.3]}, index=[7, 2, 9])
@@ -229,6 +254,63 @@ def test_next_runs_count_must_determine_a_quadratic_with_one_degree_of_freedom_t
     assert (f"waves.next_runs.count: {needed - 1} runs cannot determine a quadratic in {k} factors" in str(err.value)
             and f"at least {needed}" in str(err.value))
 
+
+
+@pytest.mark.parametrize("scenario, known", [("s", True), ("t", True), ("nope", False)])
+def test_next_runs_may_name_a_scenario_of_the_material_and_no_other(scenario, known):
+    config = _simulated(2, 7)
+    material = config["materials"]["m"]
+    material["scenarios"]["t"] = {"observables": ["y"], "tolerance": 0.1}
+    material["waves"]["next_runs"]["scenario"] = scenario
+    if known:
+        check_simulated(config)
+        return
+    with pytest.raises(InputError) as err:
+        check_simulated(config)
+    assert "waves.next_runs.scenario: unknown scenario 'nope' (known: s, t)" in str(err.value)
+
+
+def _refusal(edit) -> str:
+    config = _simulated(2, 7, max_waves=3)
+    edit(config["materials"]["m"])
+    with pytest.raises(InputError) as err:
+        check_simulated(config)
+    return str(err.value)
+
+
+def test_each_simulated_material_refusal_names_its_key():
+    """Every cross-reference check_simulated makes, one line naming the config key (a valid config passes)."""
+    check_simulated(_simulated(2, 7, max_waves=3))
+
+    def no_simulation(m):
+        del m["simulation"]
+
+    def clash(m):
+        m["responses"]["seed"] = {"target": 1.0}
+
+    def own_file(m):
+        m["simulation"]["responses_file"] = "log.txt"
+
+    def custom(m):
+        m["design"] = {"type": "custom"}
+
+    def old_next_runs(m):
+        m["next_runs"] = {"count": 9}
+
+    def no_next_runs(m):
+        del m["waves"]["next_runs"]
+
+    assert "config key materials.m.waves: waves need simulation" in _refusal(no_simulation)
+    assert "config key materials.m: 'seed' names the simulated table's wave column" in _refusal(clash)
+    assert "config key materials.m.simulation.responses_file: 'log.txt' is demid's own file" in _refusal(own_file)
+    assert "config key materials.m.design.type: the first wave of a simulated material is its design" in \
+        _refusal(custom)
+    assert "config key materials.m.next_runs: with waves, each wave's next runs are waves.next_runs" in \
+        _refusal(old_next_runs)
+    assert "config key materials.m.waves: max 3 needs next_runs" in _refusal(no_next_runs)
+    one = _simulated(2, 7, max_waves=1)
+    del one["materials"]["m"]["waves"]["next_runs"]
+    check_simulated(one)  # a single wave needs no next runs
 
 # ------------------------------------------------------------------------------------------ the summary
 def _wave(runs: int, failed: int | None, plausible: float, statistics: pd.DataFrame, domain=None) -> dict:
@@ -304,3 +386,49 @@ def test_a_waves_material_entry_is_the_table_over_omega_and_after_a_box_a_custom
     assert later["design"] == {"type": "custom"} and "published" not in later["responses"]["y"]
     assert "confirmed_values" not in later
     assert material["responses"]["y"]["published"] == {"r2": 0.9} and "waves" in material  # the input is kept
+
+
+
+@given(waves=st.integers(1, 3), seed=st.integers(0, 10_000), log_b=st.booleans())
+@settings(max_examples=10, deadline=None, derandomize=True)
+def test_the_wave_history_reads_each_waves_sets_runs_and_box(waves, seed, log_b):
+    """Per wave, scenario and factor: the set's fraction and span as the wave's scenarios table gives them, the
+    runs simulated and analysed, the box the wave's runs were placed in (Ω for wave 1) and its share of Ω in
+    search units (log10 for a log factor)."""
+    from demid.waves import HISTORY_COLUMNS, wave_history
+
+    rng = np.random.default_rng(seed)
+    material = {"data": "x.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 3},
+                "factors": {"a": {"lower": -2.0, "upper": 6.0},
+                            "b": {"lower": 0.1, "upper": 100.0, **({"scale": "log"} if log_b else {})}},
+                "responses": {"y": {"target": 5.0}, "z": {"target": -3.0}},
+                "scenarios": {"s": {"observables": ["y"], "tolerance": 0.05},
+                              "t": {"observables": ["y", "z"], "tolerance": 0.1}}}
+    spec = MaterialSpec.from_material("m", material)
+    given_waves, expected = [], []
+    for number in range(1, waves + 1):
+        scenarios = pd.DataFrame([{"scenario": sc, "factor": f, "feasible_fraction_pct": frac,
+                                   "lower": lo, "upper": lo + w, "width": w}
+                                  for sc, frac in (("s", rng.uniform(0, 50)), ("t", rng.uniform(0, 50)))
+                                  for f, lo, w in (("a", rng.uniform(-2, 2), rng.uniform(0, 4)),
+                                                   ("b", rng.uniform(0.1, 1), rng.uniform(0, 99)))])
+        if number == 1:
+            domain, box, share = None, {"a": (-2.0, 6.0), "b": (0.1, 100.0)}, 1.0
+        else:
+            a0, b0 = rng.uniform(-2, 2), rng.uniform(0.1, 10)
+            box = {"a": (a0, a0 + rng.uniform(0.5, 4)), "b": (b0, b0 * rng.uniform(1.5, 9))}
+            domain = pd.DataFrame([{"factor": f, "lower": lo, "upper": hi} for f, (lo, hi) in box.items()])
+            share_b = (np.log10(box["b"][1] / box["b"][0]) / 3.0 if log_b else
+                       (box["b"][1] - box["b"][0]) / 99.9)
+            share = (box["a"][1] - box["a"][0]) / 8.0 * share_b
+        simulated, analysed = 11 + 9 * (number - 1), 11 + rng.integers(0, 9 * number)
+        given_waves.append({"scenarios": scenarios, "domain": domain, "simulated": simulated, "analysed": analysed})
+        for row in scenarios.itertuples():
+            expected.append(["m", number, simulated, analysed, row.scenario, row.feasible_fraction_pct, row.factor,
+                             row.lower, row.upper, row.width, box[row.factor][0], box[row.factor][1], 100 * share])
+    history = wave_history(spec, given_waves)
+    assert list(history.columns) == HISTORY_COLUMNS
+    assert len(history) == len(expected)
+    for got, want in zip(history.itertuples(index=False), expected):
+        assert list(got[:5]) == want[:5] and got[6] == want[6]
+        assert np.allclose([got[5], *got[7:]], [want[5], *want[7:]], rtol=1e-12, atol=0.0)

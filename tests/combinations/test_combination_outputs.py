@@ -392,3 +392,20 @@ def test_a_materials_identified_band_gets_the_break_the_ridge_advice_of_the_obse
     assert line.startswith("*band* identifies a combination and leaves its complement free: across changes most "
                            "along the set (its gradient lies 90° off the identified direction)")
     assert found.to_frame()["a"].abs().round(3).tolist() == [0.707, 0.707]
+
+
+@pytest.mark.parametrize("extent", [1.0, 2.0, 0.5])
+def test_a_direction_is_identified_up_to_ten_per_cent_of_its_extent_and_free_from_ninety(extent):
+    """The per-factor verdicts' thresholds, boundaries included: a width of exactly 10 % of the box's extent
+    along a direction is identified, exactly 90 % free; a hair either side is not."""
+    from demid.combinations.axes import PrincipalAxes
+
+    fractions = np.array([0.05, 0.10, np.nextafter(0.10, 1.0), 0.5, np.nextafter(0.90, 0.0), 0.90, 1.2])
+    axes = PrincipalAxes(tuple(f"f{i}" for i in range(len(fractions))), np.zeros(len(fractions)),
+                         np.eye(len(fractions)), fractions * extent, np.full(len(fractions), extent), 50)
+    assert list(axes.width_fraction) == list(fractions)  # a power of two: the division is exact
+    assert list(axes.identified) == [True, True, False, False, False, False, False]
+    assert list(axes.free) == [False, False, False, False, False, True, True]
+    frame = axes.to_frame()
+    assert list(frame["width_fraction_of_range"]) == list(fractions)
+    assert list(frame["width_coded"]) == list(fractions * extent) and list(frame["direction"]) == list(range(1, 8))

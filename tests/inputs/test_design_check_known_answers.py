@@ -131,6 +131,50 @@ def test_a_factor_value_typed_as_another_level_names_both_runs_the_empty_point_a
     assert sorted(err.value.run) == sorted([int(table.loc[i, "run"]), int(table.loc[other, "run"])])
 
 
+@pytest.mark.parametrize("k, slips", [(2, 2), (3, 2), (3, 3)])
+def test_several_factor_values_typed_as_another_level_are_each_a_slip_the_first_named(k, slips):
+    """Several factorial runs whose last factor is typed at the opposite level (each lands on another corner, the
+    corner beside it empty): as many repeats as empty points, each a slip; the first is named with its two runs
+    and the value that restores it."""
+    table, names = _ccd_table(k, 1.5, 3)
+    coded = (table[names].to_numpy() - _CENTRE[:k]) / _HALF[:k]
+    factorial = np.flatnonzero(np.all(np.abs(np.abs(coded) - 1) < 1e-9, axis=1) & (coded[:, -1] > 0))[:slips]
+    restores = {}
+    for i in factorial:
+        other = np.flatnonzero(np.all(np.abs(coded[:, :-1] - coded[i, :-1]) < 1e-9, axis=1)
+                               & (np.abs(coded[:, -1] + 1) < 1e-9))[0]
+        restores[frozenset({int(table.loc[i, "run"]), int(table.loc[other, "run"])})] = table.loc[i, names[-1]]
+        table.loc[i, names[-1]] = table.loc[other, names[-1]]
+    with pytest.raises(InputError) as err:
+        check_design(table, names, {"type": "ccd", "alpha": 1.5, "center_runs": 3}, "t.csv", "materials.m")
+    text = str(err.value)
+    assert "both are the point" in text and "which a CCD runs once" in text
+    named = frozenset(err.value.run)
+    assert named in restores, text
+    said = re.search(rf"in one of them {names[-1]} is likely ([-\d.e+]+), typed as another level", text)
+    assert said and float(said.group(1)) == pytest.approx(restores[named], rel=1e-6), text
+
+
+@pytest.mark.parametrize("k", [2, 3])
+def test_a_run_moved_onto_a_corner_far_from_its_point_names_the_repeat_and_the_point_without_a_run(k):
+    """An axial run moved onto a factorial corner (two coordinates change: no typed-level slip): both runs on
+    the corner are named, and the axial point left without a run is shown and said to have none."""
+    table, names = _ccd_table(k, 1.5, 3)
+    coded = (table[names].to_numpy() - _CENTRE[:k]) / _HALF[:k]
+    axial = int(np.flatnonzero(np.abs(coded[:, 0] - 1.5) < 1e-9)[0])
+    corner = int(np.flatnonzero(np.all(np.abs(coded - 1) < 1e-9, axis=1))[0])
+    table.loc[axial, names] = table.loc[corner, names].to_numpy()
+    with pytest.raises(InputError) as err:
+        check_design(table, names, {"type": "ccd", "alpha": 1.5, "center_runs": 3}, "t.csv", "materials.m")
+    text = str(err.value)
+    assert "both are the point" in text and "which a CCD runs once; the design's point (" in text
+    assert text.endswith(") has no run") and "typed as another level" not in text, text
+    repeated, empty = _points_said(text, names)
+    assert [repeated[n] for n in names] == pytest.approx(list(_CENTRE[:k] + _HALF[:k]))
+    assert [empty[n] for n in names] == pytest.approx([_CENTRE[0] + 1.5 * _HALF[0], *_CENTRE[1:k]])
+    assert sorted(err.value.run) == sorted([axial + 1, corner + 1])
+
+
 @pytest.mark.parametrize("k, drop", [(2, 1), (3, 1), (3, 4)])
 def test_an_incomplete_three_level_factorial_counts_its_missing_points(k, drop):
     coded = factorial_points(k, 2)

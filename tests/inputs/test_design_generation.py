@@ -241,3 +241,62 @@ def test_blocked_runs_keep_the_seeded_random_order_within_each_block(k, blocks):
     expected = [i for b in range(1, blocks + 1) for i in permutation if sheet.blocks[i] == b]
     assert list(sheet.order) == expected
     assert np.allclose(sheet.coded, ccd_points(k, sheet.alpha, 6))
+
+
+@pytest.mark.parametrize("kind", ["refused", "other_centre"])
+def test_a_sheet_whose_levels_the_pipeline_would_not_recover_is_refused_naming_the_centre_runs(monkeypatch, kind):
+    """The sheet is checked the way the pipeline checks a table: when that check refuses it, or codes it about
+    another centre, the command stops with one line naming --center-runs instead of writing the sheet."""
+    import dataclasses
+
+    import demid.design_check as design_check
+
+    real = design_check.check_design
+
+    def check(table, factors, design, src, config_key, *args, **kwargs):
+        if kind == "refused":
+            raise InputError("sheet: not a design")
+        coding, coded = real(table, factors, design, src, config_key, *args, **kwargs)
+        return dataclasses.replace(coding, center=np.asarray(coding.center) + 1e-3), coded
+
+    factors = [FactorRange("a", 0.0, 1.0), FactorRange("b", 10.0, 20.0)]
+    assert generate_sheet("ccd", factors, center_runs=3).center_runs == 3
+    monkeypatch.setattr(design_check, "check_design", check)
+    with pytest.raises(InputError, match="^--center-runs 3: the pipeline would not recover this design's levels"):
+        generate_sheet("ccd", factors, center_runs=3)
+
+
+def test_a_sheets_whole_output_over_designs_ranges_and_seeds():
+    """Every design type, 2-4 factors (Box-Behnken 3-4), 1-4 centre runs, ranges of either sign and any scale,
+    three alphas: the runs numbered 1..n, std_order a permutation naming each run's textbook point, each
+    factor value the point mapped onto its range (the CCD's axial points on the range's ends), the design
+    config and the material config as written out here."""
+    from demid.design import box_behnken_points, ccd_points, rotatable_alpha
+
+    rng = np.random.default_rng(17)
+    cases = [(t, k, c, a) for t in ("ccd", "box_behnken", "factorial") for k in (2, 3, 4) for c in (1, 2, 4)
+             for a in (["rotatable", "face", "1.5"] if t == "ccd" else ["rotatable"]) if t != "box_behnken" or k > 2]
+    for design_type, k, centres, alpha_text in cases:
+        low = rng.uniform(-5.0, 5.0, k) * 10.0 ** rng.integers(-3, 4, k)
+        high = low + rng.uniform(0.1, 3.0, k) * np.abs(low).clip(1e-3)
+        factors = [FactorRange(f"x{i}", float(lo), float(hi)) for i, (lo, hi) in enumerate(zip(low, high))]
+        sheet = generate_sheet(design_type, factors, center_runs=centres, alpha=alpha_text,
+                               seed=int(rng.integers(0, 1000)))
+        alpha = {"rotatable": rotatable_alpha(k), "face": 1.0}.get(alpha_text, 1.5)
+        textbook = (ccd_points(k, alpha, centres) if design_type == "ccd" else box_behnken_points(k, centres)
+                    if design_type == "box_behnken" else np.vstack(
+                        [np.array(list(product((-1.0, 0.0, 1.0), repeat=k)))[:, ::-1], np.zeros((centres - 1, k))]))
+        outer = alpha if design_type == "ccd" else 1.0
+        frame = sheet.to_frame()
+        assert list(frame["run"]) == list(range(1, len(textbook) + 1))
+        assert sorted(frame["std_order"]) == list(range(1, len(textbook) + 1))
+        expected = (low + high) / 2 + textbook[frame["std_order"].to_numpy() - 1] * (high - low) / (2 * outer)
+        assert np.allclose(frame[[f"x{i}" for i in range(k)]].to_numpy(), expected, rtol=1e-11, atol=0.0)
+        values = frame[[f"x{i}" for i in range(k)]].to_numpy()
+        assert np.allclose(values.min(axis=0), low, rtol=1e-11) and np.allclose(values.max(axis=0), high, rtol=1e-11)
+        config = {"type": design_type, "center_runs": centres, **({"alpha": float(f"{alpha:.12g}")}
+                                                                 if design_type == "ccd" else {})}
+        assert sheet.design_config() == config
+        assert sheet.material_config("t.csv", ["y"]) == {
+            "data": "t.csv", "design": config, "responses": {"y": {}},
+            "factors": {f"x{i}": {"lower": float(lo), "upper": float(hi)} for i, (lo, hi) in enumerate(zip(low, high))}}

@@ -99,3 +99,33 @@ def test_a_fourth_level_within_the_level_tolerance_of_a_factorial_level_is_no_ax
     beyond = np.vstack([factorial_points(2, 3), [(1.3, 0.0)]])  # 0.3 beyond: an axial level
     table, names, logs = _table(beyond, 11, 0)
     assert infer_design(table, names, "t.csv", logs).alpha[0] == pytest.approx(1.3)
+
+
+def _two_level_points(k: int, centres: int) -> np.ndarray:
+    corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * k, indexing="ij")).reshape(k, -1).T
+    return np.vstack([corners, np.zeros((centres, k))])
+
+
+_FAMILIES = {"two_level": (_two_level_points, (2, 3, 4)), "box_behnken": (box_behnken_points, (3, 4)),
+             "factorial": (factorial_points, (2, 3))}
+
+
+@given(family=st.sampled_from(sorted(_FAMILIES)), which_k=st.integers(0, 2), centres=st.integers(1, 3),
+       beyond=st.booleans(), seed=st.integers(0, 10_000))
+@settings(max_examples=40, deadline=None, derandomize=True)
+def test_a_family_missing_runs_is_kept_up_to_one_point_in_ten_and_no_further(family, which_k, centres, beyond, seed):
+    """Failed runs left out of a table: a family is kept while at most one point in ten of it (at least one)
+    has no run, and the table is custom one missing point later."""
+    make, ks = _FAMILIES[family]
+    k = ks[which_k % len(ks)]
+    coded = make(k, centres)
+    off_centre = np.flatnonzero(np.any(coded != 0, axis=1))
+    allowed = max(1, len(off_centre) // 10)
+    rng = np.random.default_rng(seed)
+    missing = rng.choice(off_centre, allowed + int(beyond), replace=False)
+    table, names, logs = _table(np.delete(coded, missing, axis=0), seed, 0)
+    found = infer_design(table, names, "t.csv", logs)
+    if beyond:
+        assert found.family == "custom"
+    else:
+        assert (found.family, found.center_runs) == (family, centres)

@@ -134,3 +134,18 @@ def test_a_material_extending_one_not_in_the_study_gives_no_row():
     specs = {"ext": MaterialSpec.from_material("ext", EXTENDED)}
     table = model_extensions(specs, {"ext": "base"}, {"ext": {}}, _identifiability([("ext", "aor", 10.0)]))
     assert table.empty and list(table.columns) == MODEL_EXTENSION_COLUMNS
+
+
+def test_rows_follow_the_scenarios_config_order_not_their_names():
+    """Two scenarios both materials have, configured as 'zeta' then 'alpha': the table's rows (and so the
+    report's sentences) come in that order, each with its own fractions."""
+    scenarios = {"zeta": {"observables": ["theta"], "tolerance": 0.04}, "alpha": {"observables": ["theta"],
+                                                                                  "tolerance": 0.1}}
+    specs = {"base": MaterialSpec.from_material("base", {**BASE, "scenarios": scenarios}),
+             "ext": MaterialSpec.from_material("ext", {**EXTENDED, "scenarios": scenarios})}
+    ident = _identifiability([("base", "zeta", 1.0), ("base", "alpha", 20.0), ("ext", "zeta", 3.0),
+                              ("ext", "alpha", 40.0)])
+    table = model_extensions(specs, {"ext": "base"}, {}, ident)
+    assert table["scenario"].tolist() == ["zeta", "alpha"]
+    assert table["feasible_fraction_before_pct"].tolist() == [1.0, 20.0]
+    assert table["feasible_fraction_after_pct"].tolist() == [3.0, 40.0]

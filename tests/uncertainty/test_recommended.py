@@ -126,3 +126,28 @@ def test_the_analysis_sizes_are_odd_grids_up_to_three_factors_and_balanced_sobol
         n = sizes[key]
         assert n >= 2 ** 14 and n & (n - 1) == 0, (key, n)
     assert sizes["posterior_points"] >= sizes["plausible"] and 20 <= sizes["posterior"] <= 200  # histogram bins
+
+
+@pytest.mark.parametrize("k", [1, 2, 3, 4, 5])
+def test_the_notes_give_the_sizes_the_analysis_used_in_its_words_for_grid_and_sobol(k):
+    """The sizes note: grid points per axis up to three factors, scrambled Sobol points (with the posterior's
+    points and bins) above; the numbers are recommended_sizes' (or the caller's, merged over them)."""
+    from demid.scenario import JudgedScenario, reference_scenario
+    from demid.uncertainty.material import _notes, recommended_sizes
+
+    factors = {f"f{i}": {"lower": 0.0, "upper": 1.0} for i in range(k)}
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "custom"}, "factors": factors, "responses": {"y": {"target": 2.0}},
+        "scenarios": {"s": {"observables": ["y"], "tolerance": 0.05}}})
+    reference = JudgedScenario(spec, reference_scenario(spec, ["y"]), {}, 2.0)
+    sizes = recommended_sizes(k)
+    notes = _notes(spec, reference, sizes, {}, (), {})
+    if k <= 3:
+        expected = (f"Plausible sets on {sizes['plausible']} grid points per axis, sweeps on {sizes['sweep']}, "
+                    f"posteriors on {sizes['posterior']} grid points per axis.")
+    else:
+        expected = (f"Plausible sets on {2 ** 16} scrambled Sobol points, sweeps on {2 ** 14}, posteriors on "
+                    f"{2 ** 16} scrambled Sobol points (51 histogram bins).")
+    assert notes[2] == expected
+    assert notes[0].startswith("Plausible sets: z = 2; y: ") and notes[1].startswith("Posteriors and ranking at "
+                                                                                      "tolerance 0.05: y: ")
