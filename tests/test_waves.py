@@ -425,10 +425,11 @@ def test_the_wave_history_reads_each_waves_sets_runs_and_box(waves, seed, log_b)
         given_waves.append({"scenarios": scenarios, "domain": domain, "simulated": simulated, "analysed": analysed})
         for row in scenarios.itertuples():
             expected.append(["m", number, simulated, analysed, row.scenario, row.feasible_fraction_pct, row.factor,
-                             row.lower, row.upper, row.width, box[row.factor][0], box[row.factor][1], 100 * share])
+                             row.lower, row.upper, row.width, box[row.factor][0], box[row.factor][1], 100 * share,
+                             np.nan, np.nan, np.nan])  # no plausible frames given: none made up
     history = wave_history(spec, given_waves)
     assert list(history.columns) == HISTORY_COLUMNS
     assert len(history) == len(expected)
     for got, want in zip(history.itertuples(index=False), expected):
         assert list(got[:5]) == want[:5] and got[6] == want[6]
-        assert np.allclose([got[5], *got[7:]], [want[5], *want[7:]], rtol=1e-12, atol=0.0)
+        assert np.allclose([got[5], *got[7:]], [want[5], *want[7:]], rtol=1e-12, atol=0.0, equal_nan=True)
