@@ -186,6 +186,32 @@ def studentised_residuals(coded: np.ndarray, y: np.ndarray, terms) -> dict[str, 
     return {"leverage": leverage, "residual": residual, "student_resid": student}
 
 
+#: From this many residual degrees of freedom on, the screen lets the scatter vary with the response's level
+#: (below it a variance trend is too poorly estimated to be worth the extra freedom).
+LOCAL_SCALE_MIN_DF = 100
+
+
+def local_scale(fitted: np.ndarray, residual: np.ndarray, leverage: np.ndarray) -> np.ndarray:
+    """Per run, the residual standard deviation at the run's level relative to the table's pooled one (1 where
+    the scatter is the same everywhere).
+
+    Simulated responses often scatter in proportion to their level (a relative seed-to-seed noise), and with
+    thousands of runs the pooled scale then makes the top of the range look like outliers by the dozen: a
+    studentised residual of 4.9 at 10,000 runs is 4.2 of the run's own scatter.  Harvey's multiplicative model
+    log sigma_i^2 = a + b * fitted_i, fitted by least squares on log e_i^2 / (1 - h_i) (a planted slip moves
+    a log-scale fit very little), rescaled so that the squared residuals over the variance function average 1.
+    """
+    raw = residual ** 2 / np.clip(1 - leverage, 1e-12, None)
+    positive = raw > 0
+    if positive.sum() < 3 or np.ptp(fitted[positive]) == 0:
+        return np.ones_like(residual)
+    design = np.column_stack([np.ones(positive.sum()), fitted[positive]])
+    coef, *_ = np.linalg.lstsq(design, np.log(raw[positive]), rcond=None)
+    variance = np.exp(coef[0] + coef[1] * fitted)
+    variance *= np.mean(raw / variance)
+    return np.sqrt(variance / np.mean(raw))
+
+
 def likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame | None = None, *,
                  family_alpha: float = 0.05, kinds=("transposition", "decimal_shift", "sign_lost")) -> list[dict]:
     """Response cells that look mistyped even without published statistics.
@@ -194,7 +220,9 @@ def likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame | None = N
     Bonferroni correction over the runs (family-wise ``family_alpha``) *and* a digit
     swap, misplaced decimal point or lost sign of the printed cell lands within three
     leave-one-out standard errors of the prediction from the other runs.  Both
-    conditions together keep this silent on clean tables.
+    conditions together keep this silent on clean tables.  With :data:`LOCAL_SCALE_MIN_DF` residual degrees
+    of freedom or more, residual and prediction error are measured against the scatter at the run's level
+    (:func:`local_scale`), so that a scatter growing with the response does not read as slips.
     """
     from ..design import model_units, quadratic_terms
 
@@ -212,13 +240,16 @@ def likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame | None = N
         observed = sub[response].to_numpy(dtype=float)
         coded = validated.coding.to_coded(model_units(sub[factors].to_numpy(dtype=float), factors, log_factors))
         infl = studentised_residuals(coded, observed, terms)
+        if df >= LOCAL_SCALE_MIN_DF:  # the leave-one-out scale below then follows (residual / student)
+            infl["student_resid"] = infl["student_resid"] / local_scale(observed - infl["residual"],
+                                                                        infl["residual"], infl["leverage"])
         runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, n + 1)
         pvals = two_sided_t_p(infl["student_resid"], df) * n
         for i in np.flatnonzero(pvals < family_alpha):
             h, residual, student = infl["leverage"][i], infl["residual"][i], infl["student_resid"][i]
             loo_pred = observed[i] - residual / (1 - h)
             s_loo = abs(residual / student) / np.sqrt(1 - h) if student else 0.0
-            se = s_loo * np.sqrt(1 + h / (1 - h))  # prediction error of the run from the others
+            se = s_loo * np.sqrt(1 + h / (1 - h))  # prediction error of the run from the others (at its level)
             run = runs[i]
             if printed is not None:
                 text = printed.loc[table["run"].to_numpy() == run, response].iloc[0]
