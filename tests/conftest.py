@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import fcntl
 import shutil
+import sys
 
 import pytest
 
@@ -87,3 +88,12 @@ def demo_copy(demo_run, tmp_path_factory):
     root = tmp_path_factory.mktemp("demo_copy") / "study"
     shutil.copytree(demo_run, root, symlinks=True)
     return root
+
+
+@pytest.fixture(autouse=True)
+def _figures_closed():
+    """Every test leaves no figure open: pyplot keeps them, and the 21st open figure warns (an error here)."""
+    yield
+    pyplot = sys.modules.get("matplotlib.pyplot")
+    if pyplot is not None:
+        pyplot.close("all")

@@ -239,8 +239,15 @@ def test_the_choice_is_rebuilt_for_the_next_wave_and_tells_the_stop_rule_its_q2(
     row = next(choice.statistics.itertuples())
     evidence = surrogate_evidence(row)
     assert evidence["q2"] == pytest.approx(row.q2_kriging) and np.isnan(evidence["lof_p"])
-    assert choice_text("θ", row) == (f"θ by kriging (Q² {row.q2_kriging:.2f} against the quadratic's "
-                                     f"{row.q2_quadratic:.2f})")
+    import re
+
+    text = choice_text("θ", row)
+    printed = re.fullmatch(r"θ by kriging \(Q² (-?[0-9.]+) against the quadratic's (-?[0-9.]+)\)", text)
+    assert printed, text
+    for shown, q2 in zip(printed.groups(), (row.q2_kriging, row.q2_quadratic)):
+        places = len(shown.partition(".")[2])  # each Q² read back is its value at the places it shows,
+        assert places >= 2 and float(shown) == pytest.approx(round(q2, places))
+        assert q2 >= 1 or float(shown) < 1  # and one below 1 never reads as a perfect 1.00
 
 
 def test_a_wave_analysed_with_the_choice_judges_its_sets_by_kriging_and_criticises_the_quadratic(tmp_path):

@@ -289,6 +289,9 @@ def test_the_waves_figure_counts_runs_in_integers():
     fig = waves_figure(pd.DataFrame(rows), spec)
     fig.canvas.draw()
     ticks = fig.axes[0].get_xticks()
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
     assert len(ticks) and np.allclose(ticks, np.round(ticks))
 
 

@@ -336,6 +336,9 @@ def test_wave_history_carries_the_plausible_share_and_intervals_the_waves_table_
 
     dots = [c for c in fig.axes[1].collections if isinstance(c, PathCollection)]
     assert sorted(len(c.get_offsets()) for c in dots) == [1, 21]  # every run drawn, the failed one apart
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
 
 
 # ------------------------------------------------------------------------------------ the workflow
