@@ -28,9 +28,11 @@ machine at load ~2, the 10,000-row cases beside a CI run):
     13     5.9 s  363 MB    (13 runs cannot determine a quadratic in 4 or 6 factors)
     200    7.2 s  363 MB    12.3 s  417 MB   19.3 s  427 MB
     2000   9.4 s  574 MB    15.2 s  528 MB   25.9 s  622 MB
-    10000  54 s  1274 MB    158 s  1389 MB   refused: the typo screen flags one cell of the generated table
-                                             ("11.685914 looks like 11.865914") - at 10,000 rows x 3 responses
-                                             chance alone makes one cell look like a swapped-digit slip
+    10000  54 s  1274 MB    158 s  1389 MB   103 s  1853 MB (beside a CI run and a mutation run)
+
+10,000 x 6 was refused until the typo screen measured residuals against the scatter at each run's level: the
+generated responses scatter in proportion to their level, and against the pooled scale one cell of the top of the
+range passed the Bonferroni bound over 10,000 runs ("11.685914 looks like 11.865914", 4.2 of its own scatter).
 
 The whole pipeline (``snakemake -c2`` on ``write_study``'s 2-factor study, /usr/bin/time): 2,000 rows 14.9 s wall,
 17.2 CPU s, 555 MB; 10,000 rows 39.4 s wall, 42.7 CPU s, 1.3 GB.
