@@ -396,6 +396,7 @@ TABLE: dict[str, dict] = {
     "demid/surrogate.py": {
         "functions": None,
         "tests": ["tests/test_surrogate.py", "tests/test_surrogate_properties.py", "tests/test_statistics_known_answers.py",
+                  "tests/test_fit_statistics_whole.py",
                   "tests/test_core_contracts.py"],
     },
     "demid/precision.py": {
@@ -595,7 +596,7 @@ TABLE: dict[str, dict] = {
     "demid/fit_statistics.py": {
         "functions": None,
         "tests": ["tests/test_surrogate.py", "tests/test_statistics_known_answers.py", "tests/inputs/test_one_replicate_rule.py",
-                  "tests/test_fit_statistics.py", "tests/test_core_contracts.py"],
+                  "tests/test_fit_statistics.py", "tests/test_fit_statistics_whole.py", "tests/test_core_contracts.py"],
     },
     "demid/design.py": {
         "functions": None,
