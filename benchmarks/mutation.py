@@ -615,7 +615,7 @@ TABLE: dict[str, dict] = {
     "demid/canonical.py": {
         "functions": None,
         "tests": ["tests/combinations/test_canonical.py", "tests/combinations/test_canonical_published.py",
-                  "tests/combinations/test_canonical_properties.py"],
+                  "tests/combinations/test_canonical_properties.py", "tests/combinations/test_canonical_planar.py"],
     },
     "demid/wave_value.py": {
         "functions": None,
