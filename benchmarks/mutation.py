@@ -561,7 +561,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/paper.py": {
         "functions": None,
-        "tests": ["tests/report/test_paper.py"],
+        "tests": ["tests/report/test_paper.py", "tests/report/test_paper_tolerance_rows.py"],
     },
     "demid/transcription/engine.py": {
         "functions": None,
