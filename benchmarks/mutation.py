@@ -588,7 +588,7 @@ TABLE: dict[str, dict] = {
     "demid/estimability.py": {
         "functions": None,
         "tests": ["tests/test_core_contracts.py::test_a_quadratic_in_two_factors_needs_seven_usable_runs",
-                  "tests/inputs/test_estimability.py", *[f"tests/inputs/test_stranger_tables.py::{name}" for name in (
+                  "tests/inputs/test_estimability.py", "tests/inputs/test_estimability_star.py", *[f"tests/inputs/test_stranger_tables.py::{name}" for name in (
                       "test_ccd_whose_centre_runs_all_failed_is_refused", "test_criticize_refuses_a_factor_at_two_levels",
                       "test_criticize_and_fit_refuse_a_saturated_fit", "test_criticize_refuses_a_rank_deficient_fit",
                       "test_a_two_level_factorial_with_centre_runs_is_told_why_its_squares_cannot_be_fitted")]],
