@@ -150,7 +150,7 @@ def polish_front(surrogates: dict, domain, factors: list[str], error_of: str, ta
 
 def front_intervals(front: pd.DataFrame, factors: list[str], max_error: float) -> pd.DataFrame:
     """Per factor, the range over front points with error below ``max_error``."""
-    below = front[front["error"] <= max_error]
+    below = front[front["error"] < max_error]
     return pd.DataFrame([{"factor": f, "lower": below[f].min() if len(below) else np.nan,
                           "upper": below[f].max() if len(below) else np.nan, "n_points": int(len(below))}
                          for f in factors])
