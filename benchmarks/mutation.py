@@ -428,6 +428,7 @@ TABLE: dict[str, dict] = {
     "demid/transcription/printed.py": {
         "functions": None,
         "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_printed_properties.py",
+                  "tests/transcription/test_precision_elsewhere.py",
                   "tests/inputs/test_stranger_tables.py::test_an_impossible_published_statistic_is_refused",
                   "tests/inputs/test_stranger_tables.py::test_possible_published_statistics_pass"],
     },
@@ -746,6 +747,11 @@ TABLE: dict[str, dict] = {
 # changes within the function), printed by this script for every surviving mutant.
 _NUMPY_FLOAT = "np.float64 is a float subclass: the value and every later use are the same"
 EQUIVALENT: dict[str, str] = {
+    # --- estimability (seed 24)
+    "demid/estimability.py::require_estimable::int(np.sum(singular > 1e-08 * singular[0])) => "
+    "np.sum(singular > 1e-08 * singular[0])#0":
+        "the rank, a numpy int without int(): compared with p, used as a slice start and printed in the message "
+        "('rank 5') exactly as the Python int",
     # --- admissibility
     "demid/sampling/domain.py::Domain.sobol::0 => 1#0":
         "the default scramble seed: any fixed seed gives an equally stratified, equally deterministic sample",
