@@ -15,7 +15,8 @@ import pandas as pd
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from demid.io import as_stored, content_digest, read_parquet, to_json_text, write_csv, write_json, write_parquet
+from demid.io import (as_stored, content_digest, read_parquet, round_significant, to_json_text, write_csv, write_json,
+                     write_parquet)
 
 # each example overwrites the same files in tmp_path, so sharing the fixture across examples is harmless
 SETTINGS = settings(max_examples=10, deadline=None, derandomize=True,
@@ -69,6 +70,13 @@ def test_csv_cells_are_six_significant_digits_and_parquet_keeps_every_value(valu
     expected = [f"{cell(x)},{c},{name},{cell(s)}" for x, c, name, s in
                 zip(frame["x"], frame["count"], frame["name"], frame["scale"])]
     assert lines[1:-1] == expected
+
+    # the rounded copy the CSV is written from: float columns stay floats, each value the 6-digit one
+    rounded = round_significant(frame)
+    for column in ("x", "scale"):
+        assert rounded[column].dtype == np.float64
+        np.testing.assert_array_equal(rounded[column].to_numpy(), [float(f"{v:.6g}") for v in frame[column]])
+    pd.testing.assert_frame_equal(rounded[["count", "name"]], frame[["count", "name"]])
 
     write_parquet(frame, tmp_path / "t.parquet")
     back = read_parquet(tmp_path / "t.parquet")
