@@ -536,7 +536,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/kriging.py": {
         "functions": None,
-        "tests": ["tests/test_kriging.py"],
+        "tests": ["tests/test_kriging.py", "tests/test_kriging_constant.py"],
     },
     "demid/surrogate_choice.py": {
         "functions": None,
