@@ -8,6 +8,7 @@ table shows up, so nothing is recomputed) and equal a fresh evaluation bit for b
 from __future__ import annotations
 
 import numpy as np
+import pandas as pd
 import pytest
 
 from demid.admissibility import evaluate_scenarios
@@ -80,3 +81,27 @@ def test_a_table_without_state_or_for_another_tolerance_gives_no_stored_set(mate
     other = frame.copy()
     other.loc[other["scenario"] == "both", "tolerance"] = 0.05
     assert set(stored_strict_sets(other, judged_scenarios(spec, surrogates, 2.0))) == {"y1_only"}
+
+
+def test_rebuilt_sets_table_rows_are_the_stored_sets_every_column(material):
+    """Every column the identifiability table shows for a set (fraction, spans, best error, fraction error,
+    at-bound) as the admissibility step evaluated it; the grid's node counts are not stored (NaN and 0)."""
+    spec, surrogates, frame, sets = material
+    stored = stored_strict_sets(frame, judged_scenarios(spec, surrogates, 2.0), reference=True)
+    for scen in spec.scenarios:
+        got, evaluated = stored[scen.name], sets[scen.name]
+        node_columns = ["node_fraction_pct", "n_admissible_nodes"]
+        pd.testing.assert_frame_equal(got.to_frame().drop(columns=node_columns),
+                                      evaluated.to_frame().drop(columns=node_columns), check_exact=True)
+        assert np.isnan(got.node_fraction) and (got.n_nodes, got.n_admissible_nodes, got.n_refined_cells) == (0, 0, 0)
+        for name in ("observables", "tolerance", "factors", "best_error", "empty"):
+            assert getattr(got, name) == getattr(evaluated, name), name
+
+
+def test_a_stored_set_of_zero_fraction_is_empty(material):
+    """An empty strict set stays empty when rebuilt: the later steps' 'no admissible parameters' reads it."""
+    spec, surrogates, frame, _ = material
+    planted = frame.copy()
+    planted.loc[planted["scenario"] == "both", "exact_fraction"] = 0.0
+    got = stored_strict_sets(planted, judged_scenarios(spec, surrogates, 2.0))
+    assert got["both"].empty and not got["y1_only"].empty
