@@ -212,6 +212,17 @@ def local_scale(fitted: np.ndarray, residual: np.ndarray, leverage: np.ndarray) 
     return np.sqrt(variance / np.mean(raw))
 
 
+def _screen_residuals(coded: np.ndarray, observed: np.ndarray, terms, df: int) -> dict[str, np.ndarray]:
+    """The studentised residuals the screen judges: against the scatter at each run's level from
+    :data:`LOCAL_SCALE_MIN_DF` residual degrees of freedom on (the leave-one-out scale the screen derives as
+    residual / student then follows the level too)."""
+    infl = studentised_residuals(coded, observed, terms)
+    if df >= LOCAL_SCALE_MIN_DF:
+        infl["student_resid"] = infl["student_resid"] / local_scale(observed - infl["residual"], infl["residual"],
+                                                                    infl["leverage"])
+    return infl
+
+
 def likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame | None = None, *,
                  family_alpha: float = 0.05, kinds=("transposition", "decimal_shift", "sign_lost")) -> list[dict]:
     """Response cells that look mistyped even without published statistics.
@@ -239,10 +250,7 @@ def likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame | None = N
             continue
         observed = sub[response].to_numpy(dtype=float)
         coded = validated.coding.to_coded(model_units(sub[factors].to_numpy(dtype=float), factors, log_factors))
-        infl = studentised_residuals(coded, observed, terms)
-        if df >= LOCAL_SCALE_MIN_DF:  # the leave-one-out scale below then follows (residual / student)
-            infl["student_resid"] = infl["student_resid"] / local_scale(observed - infl["residual"],
-                                                                        infl["residual"], infl["leverage"])
+        infl = _screen_residuals(coded, observed, terms, df)
         runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, n + 1)
         pvals = two_sided_t_p(infl["student_resid"], df) * n
         for i in np.flatnonzero(pvals < family_alpha):
