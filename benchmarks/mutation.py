@@ -57,6 +57,21 @@ equivalent; 48/62 = 77 % if all six are); the rest change numbers a user reads. 
 about 70-80 % of the next (seed 16-18 draws: 81, 75, 93 %; this draw: 71 %): the goal of 90 % needs tests that
 check whole outputs of every module against independent computations, not more tests per survivor.
 
+Fourth held-out draw (seed 318_557, written down before the fourth round's tests and never run until they were
+written; ``--held-out --held-out-only --per-module 1`` over all 71 rows, leaving out SEEN_DRAWS; run in two halves;
+31 mutants on the code of 1dccbb8, then, after a test of the round's start failed unmutated and stopped both halves
+at kriging and surrogate_choice, the other 37 on ca45397 with the rest of the round's tests, none written against
+this draw): **53 of 68 killed, 77.9 %** (25/31 and 28/37; three rows drew no mutant), against 96-100 % in-sample for
+the round's own draws and 80 % pooled over its unseen in-sample draws (seeds 21-25).  Survivors:
+sampling/stored stored_strict_sets 0 -> 1; precision value_text 10 -> 11; criticism/level1 _finding's ambiguity
+sentence dropped; criticism/searches spread_starts 0 -> -1; criticism/extensions extend_for without int();
+criticism/level2 _best_point `unmoved and movable` -> `movable`; surrogate_choice kriging_fits trend + 2 -> trend;
+uncertainty/posterior _weighted_quantiles without the half weight; paper rounds_to False -> True; design_check
+_level_coding + -> -; criticism/reach saturation_advice 1 -> 2; kriging resid_var without float(); uncertainty/material
+sc.label != sc.name -> ==; data far_target_warnings <= hi -> < hi; design_generation _check_counts 1 -> 2.  Two drop a
+conversion (int, float) around a value that is perhaps already of that type (53/66 = 80 % if both are equivalent).
+No test has been written against them; the next held-out draw needs a new seed.
+
 Fourth round, the uncertainty, story, combinations, design, wave and loop modules (28 rows; new in-sample draws,
 seeds 21, 22 and 23 with ``--per-module 2`` and 21 and 22 again with 4, each run before any test was aimed at it, on the
 tests of the round so far; "with lists": survivors that reading showed equivalent or a search setting left out of the score):
@@ -1657,7 +1672,7 @@ def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]
 #: its mutants are drawn apart from the in-sample draw (the default ``--seed``, against which tests were written
 #: run by run), and no test may be written against them.  Once its survivors have been read and tests added for
 #: them, its score is in-sample too: write down a new seed here, unused, before the next round.
-HELD_OUT_SEED = 318_557  # the next round's; 902_611's draw was scored and read (in SEEN_DRAWS now)
+HELD_OUT_SEED = 540_073  # the next round's; 318_557's draw was scored and read (in SEEN_DRAWS now)
 
 
 #: Draws that tests were written against, run by run (seed, mutants per module): never part of a held-out draw.
@@ -1665,7 +1680,7 @@ HELD_OUT_SEED = 318_557  # the next round's; 902_611's draw was scored and read 
 #: draw's survivors were read and tested), the second and third held-out draws (704_913, 3 per module; 902_611, 1)
 #: were read and tested, and so were the fourth round's draws (seeds 21-22 with 4 per module, 23 with 2, 24 with 2,
 #: 25 with 1).
-SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1"]
+SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1"]
 
 
 def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:

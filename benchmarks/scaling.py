@@ -34,8 +34,9 @@ machine at load ~2, the 10,000-row cases beside a CI run):
 generated responses scatter in proportion to their level, and against the pooled scale one cell of the top of the
 range passed the Bonferroni bound over 10,000 runs ("11.685914 looks like 11.865914", 4.2 of its own scatter).
 
-The whole pipeline (``snakemake -c2`` on ``write_study``'s 2-factor study, /usr/bin/time): 2,000 rows 14.9 s wall,
-17.2 CPU s, 555 MB; 10,000 rows 39.4 s wall, 42.7 CPU s, 1.3 GB.
+The whole pipeline (``snakemake -c2`` on ``write_study``'s 2-factor study, /usr/bin/time, one BLAS thread, idle
+machine): 2,000 rows 14.5 s wall, 16.6 CPU s, 586 MB; 10,000 rows 37.5 s wall, 40.6 CPU s, 1.3 GB (with the typo
+screen's local scale; before it 14.9 s / 39.4 s).
 """
 
 from __future__ import annotations
