@@ -16,7 +16,10 @@ from .formulas import f_tail
 def pure_error_ss(y, groups) -> float:
     """Sum of squares of the responses about their replicate-group means (pure error)."""
     y, groups = np.asarray(y, dtype=float), np.asarray(groups)
-    return float(sum(np.sum((y[groups == g] - y[groups == g].mean()) ** 2) for g in np.unique(groups)))
+    # each group's runs in table order, groups in sorted order: one sort, not a pass over the runs per group
+    order = np.argsort(groups, kind="stable")
+    bounds = np.flatnonzero(groups[order][1:] != groups[order][:-1]) + 1
+    return float(sum(np.sum((seg - seg.mean()) ** 2) for seg in np.split(y[order], bounds)))
 
 
 # --------------------------------------------------------------------------- results

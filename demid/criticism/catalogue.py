@@ -86,10 +86,11 @@ def f_logp(f, df2):
         return stats.f.logsf(np.maximum(f, 0.0), 1, df2)
 
 
-def added_variable_stats(e: np.ndarray, u: np.ndarray, df2: int):
-    """F for adding unit direction u (already orthogonal to the model) to residuals e (n, B)."""
+def added_variable_stats(e: np.ndarray, u: np.ndarray, df2: int, sse: np.ndarray | None = None):
+    """F for adding unit direction u (already orthogonal to the model) to residuals e (n, B); ``sse``: the
+    columns' sums of squares, when the caller has them (the same e for many directions)."""
     proj = np.einsum("i,ib->b", u, e)
-    sse = np.sum(e * e, axis=0)
+    sse = np.sum(e * e, axis=0) if sse is None else sse
     with np.errstate(divide="ignore", invalid="ignore"):
         return proj ** 2 * df2 / np.maximum(sse - proj ** 2, 1e-300 * np.maximum(sse, 1e-300))
 
@@ -126,6 +127,18 @@ def _outlier_stats(e: np.ndarray, hat: np.ndarray, df: int):
         t = e / np.sqrt(np.maximum(s2, 1e-300) * (1 - h))
     t[~ok] = 0.0
     return t
+
+
+#: Cells (runs x null draws) of the outlier statistics held at once: each of its temporaries stays small
+#: enough to be reused instead of mapped afresh (at 10,000 runs x 2,000 draws a whole temporary is 160 MB).
+OUTLIER_CELLS = 2 ** 20
+
+
+def _outlier_null_max(e: np.ndarray, hat: np.ndarray, df: int) -> np.ndarray:
+    """Largest |t| (B,) of each column of e (n, B), a block of columns at a time (the same numbers)."""
+    width = max(1, OUTLIER_CELLS // max(len(e), 1))
+    return np.concatenate([np.max(np.abs(_outlier_stats(e[:, j:j + width], hat, df)), axis=0)
+                           for j in range(0, e.shape[1], width)])
 
 
 def _outlier_logp(tmax, n, df):
@@ -281,13 +294,14 @@ class Round:
         extra = m.x[:, len(m.mean_terms):]  # blocks, drift, step: the model beyond its polynomial
         candidates = [t for t in cubic_terms(len(data.factors)) if t not in m.spec.extra_terms]
         self.classes = term_classes(m.coded, m.mean_terms, candidates, extra, m.w)
+        sse_null = np.sum(e_null * e_null, axis=0)  # shared by every class's null
         for c in self.classes:
             names = [term_name(t, data.factors) for t in c.terms]
             if c.direction is None:
                 continue
             f_obs = float(added_variable_stats(e_obs, c.direction, df - 1)[0])
             h = Hypothesis("missing_term", c, names, f_obs, float(f_logp(f_obs, df - 1)))
-            h.null_logp = f_logp(added_variable_stats(e_null, c.direction, df - 1), df - 1)
+            h.null_logp = f_logp(added_variable_stats(e_null, c.direction, df - 1, sse_null), df - 1)
             self.hypotheses.append(h)
 
     def _drift(self, m: Model, q: np.ndarray, e_obs: np.ndarray, e_null: np.ndarray) -> None:
@@ -347,7 +361,7 @@ class Round:
         i = int(np.argmax(np.abs(t_obs)))
         h = Hypothesis("outlier", int(np.flatnonzero(m.keep)[i]), [], float(t_obs[i]),
                        float(_outlier_logp(abs(t_obs[i]), n, df)))
-        h.null_logp = _outlier_logp(np.max(np.abs(_outlier_stats(e_null, m.hat, df)), axis=0), n, df)
+        h.null_logp = _outlier_logp(_outlier_null_max(e_null, m.hat, df), n, df)
         self.hypotheses.append(h)
 
     def _heteroscedasticity(self, m: Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
@@ -393,10 +407,11 @@ class Round:
         between = _between_groups_ss(group, n_groups, large=len(group) > ASYMPTOTIC_RUNS)
 
         def f_stat(e):
-            ss_pe = np.sum(e * e, axis=0) - between(e)
-            ss_lof = np.sum(e * e, axis=0) - ss_pe
+            ss = np.sum(e * e, axis=0)
+            ss_pe = ss - between(e)
+            ss_lof = ss - ss_pe
             with np.errstate(divide="ignore", invalid="ignore"):
-                return (ss_lof / df_lof) / np.maximum(ss_pe / df_pe, 1e-300 * np.sum(e * e, axis=0) + 1e-300)
+                return (ss_lof / df_lof) / np.maximum(ss_pe / df_pe, 1e-300 * ss + 1e-300)
 
         f_obs = float(f_stat(e_obs)[0])
         h = Hypothesis("lack_of_fit", None, [], f_obs, float(stats.f.logsf(f_obs, df_lof, df_pe)),

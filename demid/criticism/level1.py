@@ -117,8 +117,9 @@ class CriticismResult:
         if self.residuals is None:
             return []
         cols = ["run", "observed", "fitted", "residual", "loo_residual", "student_resid", "leverage"]
-        return [{c: (run_label(row[c]) if c == "run" else json_number(row[c])) for c in cols}
-                for _, row in self.residuals[cols].iterrows()]
+        # the rows as iterrows gives them (one common dtype per row), without a Series per run
+        return [{c: (run_label(v) if c == "run" else json_number(v)) for c, v in zip(cols, row)}
+                for row in self.residuals[cols].values]
 
     def dumps(self) -> str:
         return json.dumps(self.to_json(), indent=2, allow_nan=False)

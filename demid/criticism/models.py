@@ -23,7 +23,7 @@ if TYPE_CHECKING:
 
 
 __all__ = [
-    "TRANSFORM_NAMES", "Data", "ExtendedSurrogate", "Model", "ModelForm", "aicc_of", "boxcox",
+    "TRANSFORM_NAMES", "Data", "ExtendedSurrogate", "Model", "ModelForm", "aicc_of", "aicc_of_many", "boxcox",
     "gaussian_loglik", "infer_axial_distance", "inv_boxcox", "json_number", "leverages", "orthonormal_basis", "residualize",
     "run_label", "short_number", "transform_name",
 ]
@@ -105,6 +105,14 @@ def aicc_of(llf: float, nobs: int, k: int) -> float:
     from statsmodels.tools.eval_measures import aicc as _sm_aicc
 
     return float(_sm_aicc(llf, nobs, k)) if nobs - k - 1 > 0 else float("nan")
+
+
+def aicc_of_many(llf: np.ndarray, nobs: int, k: int) -> np.ndarray:
+    """:func:`aicc_of` of each log-likelihood in ``llf`` (the same statsmodels formula, one array)."""
+    from statsmodels.tools.eval_measures import aicc as _sm_aicc
+
+    llf = np.asarray(llf, dtype=float)
+    return np.asarray(_sm_aicc(llf, nobs, k), dtype=float) if nobs - k - 1 > 0 else np.full(llf.shape, np.nan)
 
 
 def json_number(x) -> float | None:

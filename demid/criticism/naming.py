@@ -18,12 +18,12 @@ import numpy as np
 
 from ..design import LEVERAGE_UNPREDICTABLE, term_name
 from .catalogue import CAUSES, MISFIT_TESTS
-from .step_changes import STEP_CHUNK, step_direction_chunks, step_starts
+from .step_changes import STEP_CHUNK, step_projections, step_starts
 from .discrimination import (AMBIGUOUS_AICC, CONFIRM_AICC, CONFIRM_PURPOSE, PURPOSE, candidate_kind,
                              candidate_label, close_candidates, discriminating_runs)
 from .extensions import RUN_ORDER_CAUSES, catalogue_entry, detail_json, extend_for, step_price
 from .messages import corner_only_runs
-from .models import (Data, Model, aicc_of, gaussian_loglik, json_number, orthonormal_basis, run_label,
+from .models import (Data, Model, aicc_of_many, gaussian_loglik, json_number, orthonormal_basis, run_label,
                      transform_name)
 from .slips import slip_candidates
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, other_reading_of_the_run, rests_on_one_run,
@@ -255,18 +255,19 @@ def _step_aiccs(data: Data, base_model: Model):
     """(change-point, AICc) of the base model with a step at each change-point in run order.  On up to
     STEP_CHUNK runs each is fitted; on more, a fit per change-point would cost runs squared, and the residual
     sum of squares comes from the base fit: SSR = SSR_base - (u'e)^2, u the step column residualised on the
-    model and normalised, e the base residuals (the same AICc to round-off)."""
+    model and normalised, e the base residuals (the same AICc to round-off), the projections u'e from running
+    sums in run order (:func:`step_projections`: one pass over the runs, not one per change-point)."""
     q = orthonormal_basis(base_model.xw)
     if len(base_model.y) <= STEP_CHUNK:
         for start in step_starts(base_model, q):
             yield start, Model(data, replace(base_model.spec, step=start)).aicc
         return
-    n_params = base_model.n_params + 1  # the step's coefficient
-    for starts, directions in step_direction_chunks(base_model, q):
-        ssr = base_model.ssr - (directions.T @ base_model.resid_w) ** 2
-        for start, step_ssr in zip(starts, ssr):
-            loglik = gaussian_loglik(float(step_ssr), data.n) + 0.5 * float(np.sum(np.log(base_model.w)))
-            yield start, aicc_of(loglik, data.n, n_params)
+    starts, proj = step_projections(base_model, q, base_model.resid_w[:, None])
+    ssr = base_model.ssr - proj[:, 0] ** 2
+    log_weights = 0.5 * float(np.sum(np.log(base_model.w)))
+    loglik = gaussian_loglik(ssr, data.n) + log_weights
+    aicc = aicc_of_many(loglik, data.n, base_model.n_params + 1)  # the step's coefficient
+    yield from zip(starts, (float(a) for a in aicc))
 
 
 def _alias_scatter_covariates(entries: list[dict]) -> None:

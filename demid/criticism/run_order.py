@@ -155,8 +155,14 @@ def _standard_keys(v: np.ndarray):
 def _ranks(key: np.ndarray, run_rank: np.ndarray) -> np.ndarray:
     """Ranks of the rows of ``key`` in lexicographic order (first column primary); replicates of a
     point (equal keys) in run order, as a table in standard order lists them."""
-    _, inverse = np.unique(np.column_stack([key, run_rank]), axis=0, return_inverse=True)
-    return inverse.ravel().astype(float)
+    rows = np.column_stack([key, run_rank])
+    order = np.lexsort(rows.T[::-1])  # first column primary
+    ordered = rows[order]
+    new_row = np.ones(len(rows), dtype=bool)  # equal rows share a rank
+    new_row[1:] = np.any(ordered[1:] != ordered[:-1], axis=1)
+    ranks = np.empty(len(rows))
+    ranks[order] = np.cumsum(new_row) - 1
+    return ranks
 
 
 def _rank_correlation(a: np.ndarray, b: np.ndarray) -> float:

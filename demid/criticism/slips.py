@@ -26,6 +26,8 @@ _SLIP_PRIOR = {1: 0.5, 2: 0.25, 3: 0.25}
 # A slip is only judged where the runs can predict: moved values beyond this multiple of the design's
 # reach (its largest coded level) would be quadratic extrapolation, which fits a wild run by chance.
 _SLIP_REACH = 2.0
+#: Cells (candidates x columns of responses) of the slip ratios held at once.
+SLIP_CELLS = 2 ** 16
 
 
 # =========================================================================== factor-level slips
@@ -40,23 +42,22 @@ class SlipCandidate:
 
 
 def slip_candidates(data: Data, m: Model) -> list[SlipCandidate]:
-    """Every kept run x factor x decimal slip whose value differs from the recorded one."""
+    """Every kept run x factor x decimal slip whose value differs from the recorded one (in that order: run,
+    then factor, then slip), all runs at once: a slip moves one coordinate, whose coded value is its own
+    (coded = (actual - centre) / unit, coordinate by coordinate)."""
     model_units = data.coding.to_actual(m.coded)
     reach = _SLIP_REACH * float(np.max(np.abs(data.coded)))
-    out = []
-    for pos, row in enumerate(np.flatnonzero(m.keep)):
-        for j, name in enumerate(data.factors):
-            v = model_units[pos, j]
-            for k in _SLIP_POWERS:
-                moved = v + k if name in data.log_factors else v * 10.0 ** k
-                if moved == v or not np.isfinite(moved):
-                    continue
-                point = model_units[pos].copy()
-                point[j] = moved
-                coded = float(data.coding.to_coded(point[None, :])[0, j])
-                if abs(coded) <= reach:
-                    out.append(SlipCandidate(int(row), j, k, coded))
-    return out
+    on_log = np.array([name in data.log_factors for name in data.factors])[None, :, None]
+    shifts = np.array(_SLIP_POWERS, dtype=float)
+    scales = np.array([10.0 ** k for k in _SLIP_POWERS])
+    recorded = model_units[:, :, None]
+    with np.errstate(over="ignore", invalid="ignore"):
+        moved = np.where(on_log, recorded + shifts, recorded * scales)  # (runs, factors, slips)
+        coded = (moved - np.array(data.coding.center)[None, :, None]) / np.array(data.coding.unit)[None, :, None]
+        judged = (moved != recorded) & np.isfinite(moved) & (np.abs(coded) <= reach)
+    kept = np.flatnonzero(m.keep)
+    return [SlipCandidate(int(kept[pos]), int(j), _SLIP_POWERS[k], float(coded[pos, j, k]))
+            for pos, j, k in zip(*np.nonzero(judged))]
 
 
 def moved_rows(m: Model, cands: list[SlipCandidate]) -> np.ndarray:
@@ -70,18 +71,20 @@ def moved_rows(m: Model, cands: list[SlipCandidate]) -> np.ndarray:
 
 
 def slip_ratios(m: Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Per column of y (n, B): max over candidates of SSE / SSE(run moved), and the arg max.
+    """Per column of y (n, B): max over candidates of SSE / SSE(run moved), and the arg max (the first
+    candidate, in the list's order, that reaches it).
 
     Moving run i changes one row of the model matrix; with the fit without run i (beta_(i),
     A_(i) = (X_(i)'X_(i))^-1), SSE(moved) = SSE_(i) + (y_i - x' beta_(i))^2 / (1 + x' A_(i) x').
     The fit without run i comes from the full fit (A = (X'X)^-1, beta, residuals e, leverage h_i) by
     the leave-one-out identities A_(i) = A + A x_i x_i' A / (1 - h_i), beta_(i) = beta - A x_i e_i / (1 - h_i),
     SSE_(i) = SSE - e_i^2 / (1 - h_i): one fit in all, not one per run (n fits of n runs: quadratic in
-    the number of runs).
+    the number of runs), and the candidates taken SLIP_CELLS / B at a time, not one run at a time.
     """
     x = m.x
     rows = moved_rows(m, cands)
     pos_of = {int(r): i for i, r in enumerate(np.flatnonzero(m.keep))}
+    run_pos = np.array([pos_of[c.row] for c in cands], dtype=int)
     q = orthonormal_basis(x)
     a = np.linalg.pinv(x.T @ x)
     beta = a @ (x.T @ y)
@@ -89,28 +92,31 @@ def slip_ratios(m: Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[np
     sse0 = np.sum(residualize(q, y) ** 2, axis=0)
     best = np.zeros(y.shape[1])
     arg = np.zeros(y.shape[1], dtype=int)
-    by_run: dict[int, list[int]] = {}
-    for k, c in enumerate(cands):
-        by_run.setdefault(pos_of[c.row], []).append(k)
-    for i, ks in by_run.items():
-        if m.hat[i] >= LEVERAGE_UNPREDICTABLE:
-            continue
-        ax = a @ x[i]
-        h_i = float(x[i] @ ax)
-        sse_without = np.maximum(sse0 - resid[i] ** 2 / (1.0 - h_i), 0.0)
-        r = rows[ks]
-        rax = r @ ax
-        g = np.einsum("kp,pq,kq->k", r, a, r) + rax ** 2 / (1.0 - h_i)
-        e_moved = y[i][None, :] - r @ beta + np.outer(rax, resid[i] / (1.0 - h_i))
-        sse_moved = sse_without[None, :] + e_moved ** 2 / (1.0 + g)[:, None]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ratio = sse0[None, :] / np.maximum(sse_moved, 1e-300 * np.maximum(sse0[None, :], 1e-300))
+    judged = np.flatnonzero(m.hat[run_pos] < LEVERAGE_UNPREDICTABLE)
+    width = max(1, SLIP_CELLS // max(y.shape[1], 1))
+    for ks in (judged[s:s + width] for s in range(0, len(judged), width)):
+        ratio = _moved_ratios(x[run_pos[ks]], rows[ks], a, beta, y[run_pos[ks]], resid[run_pos[ks]], sse0)
         top = np.argmax(ratio, axis=0)
         val = ratio[top, np.arange(y.shape[1])]
         better = val > best
         best = np.where(better, val, best)
-        arg = np.where(better, np.asarray(ks)[top], arg)
+        arg = np.where(better, ks[top], arg)
     return best, arg
+
+
+def _moved_ratios(xi, r, a, beta, yi, ei, sse0) -> np.ndarray:
+    """SSE / SSE(run moved) (K, B) of K candidates: their runs' model rows xi, moved rows r, responses yi and
+    residuals ei (K, B) (NaN, which no finite response gives, as no improvement)."""
+    ax = xi @ a.T
+    h = np.einsum("kp,kp->k", xi, ax)[:, None]
+    sse_without = np.maximum(sse0[None, :] - ei ** 2 / (1.0 - h), 0.0)
+    rax = np.einsum("kp,kp->k", r, ax)[:, None]
+    g = np.einsum("kp,pq,kq->k", r, a, r)[:, None] + rax ** 2 / (1.0 - h)
+    e_moved = yi - r @ beta + rax * (ei / (1.0 - h))
+    sse_moved = sse_without + e_moved ** 2 / (1.0 + g)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = sse0[None, :] / np.maximum(sse_moved, 1e-300 * np.maximum(sse0[None, :], 1e-300))
+    return np.where(np.isnan(ratio), -np.inf, ratio)
 
 
 def slip_fit(m: Model, same_run: list[SlipCandidate], n_factors: int) -> tuple[SlipCandidate, dict]:

@@ -1,0 +1,71 @@
+"""What makes the material job linear in the runs gives the numbers the direct computations give: each
+replacement against the computation it replaced, written out here, over generated inputs (ties, -0.0, -inf,
+string group labels, column blocks that split the null draws); to the bit where the order of the sums is kept."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from demid.criticism import catalogue
+from demid.criticism.catalogue import _outlier_null_max, _outlier_stats, added_variable_stats
+from demid.criticism.run_order import _ranks
+from demid.fit_statistics import pure_error_ss
+
+
+def _ranks_by_unique(key, run_rank):
+    _, inverse = np.unique(np.column_stack([key, run_rank]), axis=0, return_inverse=True)
+    return inverse.ravel().astype(float)
+
+
+def _pure_error_by_group(y, groups):
+    y, groups = np.asarray(y, dtype=float), np.asarray(groups)
+    return float(sum(np.sum((y[groups == g] - y[groups == g].mean()) ** 2) for g in np.unique(groups)))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_lexicographic_ranks_are_uniques(seed):
+    rng = np.random.default_rng(seed)
+    for _ in range(200):
+        n, c = int(rng.integers(1, 40)), int(rng.integers(1, 6))
+        key = rng.integers(-2, 3, (n, c)).astype(float)
+        key[rng.random((n, c)) < 0.1] = -0.0
+        key[rng.random((n, c)) < 0.05] = -np.inf
+        run_rank = (rng.integers(0, max(1, n // 2), n) if seed % 2 else rng.permutation(n)).astype(float)
+        np.testing.assert_array_equal(_ranks(key, run_rank), _ranks_by_unique(key, run_rank))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_pure_error_is_the_sum_over_groups_to_the_bit(seed):
+    rng = np.random.default_rng(seed)
+    for _ in range(200):
+        n = int(rng.integers(1, 60))
+        y = rng.normal(size=n) * 10.0 ** int(rng.integers(-3, 4)) + rng.normal() * 100
+        groups = rng.integers(0, max(1, n // 3), n)
+        if seed % 2:
+            groups = np.array([f"g{g}" for g in groups])
+        assert pure_error_ss(y, groups) == _pure_error_by_group(y, groups)
+
+
+@pytest.mark.parametrize("cells", [1, 37, 10 ** 6])
+def test_outlier_null_maximum_by_column_blocks_is_the_whole_arrays(cells, monkeypatch):
+    rng = np.random.default_rng(cells)
+    e = rng.standard_normal((30, 23))
+    hat = rng.uniform(0.05, 0.6, 30)
+    hat[4] = 0.9999  # a run the others cannot predict: left out of the maximum
+    monkeypatch.setattr(catalogue, "OUTLIER_CELLS", cells)
+    expected = np.max(np.abs(_outlier_stats(e, hat, 20)), axis=0)
+    # a block of one column sums its squares in another order than numpy sums a wider block: the last bit
+    np.testing.assert_allclose(_outlier_null_max(e, hat, 20), expected, rtol=1e-13)
+    assert np.all(expected > 0) and np.argmax(_outlier_null_max(e, hat, 20)) == np.argmax(expected)
+
+
+def test_added_variable_f_with_the_callers_sums_of_squares_is_the_same():
+    rng = np.random.default_rng(3)
+    e = rng.standard_normal((25, 9))
+    u = rng.standard_normal(25)
+    u /= np.linalg.norm(u)
+    direct = added_variable_stats(e, u, 18)
+    np.testing.assert_array_equal(added_variable_stats(e, u, 18, np.sum(e * e, axis=0)), direct)
+    proj = e.T @ u
+    np.testing.assert_allclose(direct, proj ** 2 * 18 / (np.sum(e * e, axis=0) - proj ** 2), rtol=1e-12)
