@@ -160,13 +160,26 @@ def heteroscedasticity_lr(e: np.ndarray, x: np.ndarray, covariate: np.ndarray) -
     prof = np.empty((len(GAMMA_GRID), e.shape[1]))
     for i, g in enumerate(GAMMA_GRID):
         sw = np.exp(-0.5 * g * covariate)
-        q = orthonormal_basis(x * sw[:, None])
-        ew = e * sw[:, None]
-        r = residualize(q, ew)
+        sse = _weighted_sse(x * sw[:, None], e * sw[:, None])
         with np.errstate(divide="ignore"):
-            prof[i] = -0.5 * n * np.log(np.sum(r * r, axis=0) / n) + float(np.sum(np.log(sw)))
+            prof[i] = -0.5 * n * np.log(sse / n) + float(np.sum(np.log(sw)))
     zero = int(np.argmin(np.abs(GAMMA_GRID)))
     return 2.0 * (prof.max(axis=0) - prof[zero])
+
+
+def _weighted_sse(xw: np.ndarray, ew: np.ndarray) -> np.ndarray:
+    """Residual sums of squares (B,) of the columns of ew (n, B) on the column space of xw (n, p).
+
+    Up to ASYMPTOTIC_RUNS runs through an orthonormal basis (rank-revealing SVD); beyond, the least-squares
+    coefficients from the p x p normal equations (minimum norm where columns are aliased) and the residuals
+    formed from them: one pass over the runs instead of an n x p decomposition per weighting (the same sums
+    to round-off, tests/criticism/test_linear_time_equivalents.py)."""
+    if len(xw) <= ASYMPTOTIC_RUNS:
+        r = residualize(orthonormal_basis(xw), ew)
+        return np.sum(r * r, axis=0)
+    coef = np.linalg.lstsq(xw.T @ xw, xw.T @ ew, rcond=None)[0]
+    r = ew - xw @ coef
+    return np.sum(r * r, axis=0)
 
 
 def boxcox_profile(y: np.ndarray, q: np.ndarray, lams: np.ndarray) -> np.ndarray:

@@ -259,8 +259,9 @@ class Model:
         self.beta = np.asarray(self.results.params, dtype=float)
         self.fitted_z = x @ self.beta
         self.resid_w = (self.z - self.fitted_z) * self.sw
-        self.hat = leverages(self.xw)
-        self.rank = int(orthonormal_basis(self.xw).shape[1])
+        basis = orthonormal_basis(self.xw)  # one decomposition for the leverages and the rank
+        self.hat = np.sum(basis * basis, axis=1)
+        self.rank = int(basis.shape[1])
         self.df_resid = len(self.y) - self.rank
         self.ssr = float(self.resid_w @ self.resid_w)
 

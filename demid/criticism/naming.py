@@ -25,7 +25,7 @@ from .extensions import RUN_ORDER_CAUSES, catalogue_entry, detail_json, extend_f
 from .messages import corner_only_runs
 from .models import (Data, Model, aicc_of_many, gaussian_loglik, json_number, orthonormal_basis, run_label,
                      transform_name)
-from .slips import slip_candidates
+from .slips import count_slip_candidates
 from .verdict import (RESIDUAL_MISFIT_LEVEL, SLIP_BAYES_FACTOR, other_reading_of_the_run, rests_on_one_run,
                       strongest_rival, unexplained_evidence)
 
@@ -295,5 +295,5 @@ def _choices(rnd) -> dict[str, int]:
     step = [h for h in rnd.hypotheses if h.cause == "step"]
     if step:
         out["step"] = int(step[0].info.get("change_points", 1))
-    out["factor_level"] = max(len(slip_candidates(rnd.data, rnd.model)), 1)
+    out["factor_level"] = max(count_slip_candidates(rnd.data, rnd.model), 1)
     return out

@@ -43,8 +43,22 @@ class SlipCandidate:
 
 def slip_candidates(data: Data, m: Model) -> list[SlipCandidate]:
     """Every kept run x factor x decimal slip whose value differs from the recorded one (in that order: run,
-    then factor, then slip), all runs at once: a slip moves one coordinate, whose coded value is its own
-    (coded = (actual - centre) / unit, coordinate by coordinate)."""
+    then factor, then slip)."""
+    coded, judged = _slipped_levels(data, m)
+    kept = np.flatnonzero(m.keep)
+    return [SlipCandidate(int(kept[pos]), int(j), _SLIP_POWERS[k], float(coded[pos, j, k]))
+            for pos, j, k in zip(*np.nonzero(judged))]
+
+
+def count_slip_candidates(data: Data, m: Model) -> int:
+    """len(slip_candidates(data, m)), without building them."""
+    return int(np.count_nonzero(_slipped_levels(data, m)[1]))
+
+
+def _slipped_levels(data: Data, m: Model) -> tuple[np.ndarray, np.ndarray]:
+    """The coded value of every run x factor x slip (runs, factors, slips) and whether it is a candidate (a
+    different, finite value within the design's reach), all runs at once: a slip moves one coordinate, whose
+    coded value is its own (coded = (actual - centre) / unit, coordinate by coordinate)."""
     model_units = data.coding.to_actual(m.coded)
     reach = _SLIP_REACH * float(np.max(np.abs(data.coded)))
     on_log = np.array([name in data.log_factors for name in data.factors])[None, :, None]
@@ -55,36 +69,44 @@ def slip_candidates(data: Data, m: Model) -> list[SlipCandidate]:
         moved = np.where(on_log, recorded + shifts, recorded * scales)  # (runs, factors, slips)
         coded = (moved - np.array(data.coding.center)[None, :, None]) / np.array(data.coding.unit)[None, :, None]
         judged = (moved != recorded) & np.isfinite(moved) & (np.abs(coded) <= reach)
-    kept = np.flatnonzero(m.keep)
-    return [SlipCandidate(int(kept[pos]), int(j), _SLIP_POWERS[k], float(coded[pos, j, k]))
-            for pos, j, k in zip(*np.nonzero(judged))]
+    return coded, judged
 
 
 def moved_rows(m: Model, cands: list[SlipCandidate]) -> np.ndarray:
     """Model-matrix rows (K, p) of the candidates (run-order column unchanged)."""
-    pos = {int(r): i for i, r in enumerate(np.flatnonzero(m.keep))}
-    coded = np.array([m.coded[pos[c.row]] for c in cands])
+    pos = _positions(m, cands)
+    coded = m.coded[pos]  # a copy: fancy indexing
     coded[np.arange(len(cands)), [c.factor for c in cands]] = [c.coded for c in cands]
     rows = model_matrix(coded, m.mean_terms)
-    beyond = m.x[[pos[c.row] for c in cands], len(m.mean_terms):]  # blocks, drift, step: unchanged
+    beyond = m.x[pos, len(m.mean_terms):]  # blocks, drift, step: unchanged
     return np.column_stack([rows, beyond]) if beyond.shape[1] else rows
+
+
+def _positions(m: Model, cands: list[SlipCandidate]) -> np.ndarray:
+    """Each candidate's run as a position among the model's kept runs."""
+    kept = np.flatnonzero(m.keep)
+    lookup = np.full(len(m.keep), -1)
+    lookup[kept] = np.arange(len(kept))
+    return lookup[np.fromiter((c.row for c in cands), dtype=int, count=len(cands))]
 
 
 def slip_ratios(m: Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per column of y (n, B): max over candidates of SSE / SSE(run moved), and the arg max (the first
     candidate, in the list's order, that reaches it).
 
-    Moving run i changes one row of the model matrix; with the fit without run i (beta_(i),
-    A_(i) = (X_(i)'X_(i))^-1), SSE(moved) = SSE_(i) + (y_i - x' beta_(i))^2 / (1 + x' A_(i) x').
+    Moving run i changes one row of the model matrix, x_i to r = x_i + d (d nonzero only in the terms of the
+    slipped factor); with the fit without run i (beta_(i), A_(i) = (X_(i)'X_(i))^-1),
+    SSE(moved) = SSE_(i) + (y_i - r' beta_(i))^2 / (1 + r' A_(i) r).
     The fit without run i comes from the full fit (A = (X'X)^-1, beta, residuals e, leverage h_i) by
     the leave-one-out identities A_(i) = A + A x_i x_i' A / (1 - h_i), beta_(i) = beta - A x_i e_i / (1 - h_i),
-    SSE_(i) = SSE - e_i^2 / (1 - h_i): one fit in all, not one per run (n fits of n runs: quadratic in
-    the number of runs), and the candidates taken SLIP_CELLS / B at a time, not one run at a time.
+    SSE_(i) = SSE - e_i^2 / (1 - h_i), so y_i - r' beta_(i) = e_i - d' beta + r' A x_i e_i / (1 - h_i): one fit
+    in all, not one per run (n fits of n runs: quadratic in the number of runs), and the candidates taken
+    SLIP_CELLS / B at a time.
     """
     x = m.x
     rows = moved_rows(m, cands)
-    pos_of = {int(r): i for i, r in enumerate(np.flatnonzero(m.keep))}
-    run_pos = np.array([pos_of[c.row] for c in cands], dtype=int)
+    run_pos = _positions(m, cands)
+    factor = np.fromiter((c.factor for c in cands), dtype=int, count=len(cands))
     q = orthonormal_basis(x)
     a = np.linalg.pinv(x.T @ x)
     beta = a @ (x.T @ y)
@@ -95,7 +117,9 @@ def slip_ratios(m: Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[np
     judged = np.flatnonzero(m.hat[run_pos] < LEVERAGE_UNPREDICTABLE)
     width = max(1, SLIP_CELLS // max(y.shape[1], 1))
     for ks in (judged[s:s + width] for s in range(0, len(judged), width)):
-        ratio = _moved_ratios(x[run_pos[ks]], rows[ks], a, beta, y[run_pos[ks]], resid[run_pos[ks]], sse0)
+        i = run_pos[ks]
+        d_beta = _changed_fit(rows[ks] - x[i], factor[ks], beta)
+        ratio = _moved_ratios(x[i], rows[ks], a, d_beta, resid[i], sse0)
         top = np.argmax(ratio, axis=0)
         val = ratio[top, np.arange(y.shape[1])]
         better = val > best
@@ -104,15 +128,28 @@ def slip_ratios(m: Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[np
     return best, arg
 
 
-def _moved_ratios(xi, r, a, beta, yi, ei, sse0) -> np.ndarray:
-    """SSE / SSE(run moved) (K, B) of K candidates: their runs' model rows xi, moved rows r, responses yi and
-    residuals ei (K, B) (NaN, which no finite response gives, as no improvement)."""
+def _changed_fit(d: np.ndarray, factor: np.ndarray, beta: np.ndarray) -> np.ndarray:
+    """d' beta (K, B) for row changes d (K, p), each nonzero only in the terms of its candidate's factor:
+    per factor over those columns (a quarter of them with six factors, not every one)."""
+    out = np.zeros((len(d), beta.shape[1]))
+    for j in np.unique(factor):
+        rows = factor == j
+        cols = np.flatnonzero(np.any(d[rows] != 0, axis=0))
+        if len(cols):
+            out[rows] = d[np.ix_(rows, cols)] @ beta[cols]
+    return out
+
+
+def _moved_ratios(xi, r, a, d_beta, ei, sse0) -> np.ndarray:
+    """SSE / SSE(run moved) (K, B) of K candidates: their runs' model rows xi, moved rows r, the change of
+    the fit d' beta and the runs' residuals ei (K, B) (NaN, which no finite response gives, as no
+    improvement)."""
     ax = xi @ a.T
     h = np.einsum("kp,kp->k", xi, ax)[:, None]
     sse_without = np.maximum(sse0[None, :] - ei ** 2 / (1.0 - h), 0.0)
     rax = np.einsum("kp,kp->k", r, ax)[:, None]
     g = np.einsum("kp,pq,kq->k", r, a, r)[:, None] + rax ** 2 / (1.0 - h)
-    e_moved = yi - r @ beta + rax * (ei / (1.0 - h))
+    e_moved = ei - d_beta + rax * (ei / (1.0 - h))
     sse_moved = sse_without + e_moved ** 2 / (1.0 + g)
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = sse0[None, :] / np.maximum(sse_moved, 1e-300 * np.maximum(sse0[None, :], 1e-300))

@@ -69,3 +69,32 @@ def test_added_variable_f_with_the_callers_sums_of_squares_is_the_same():
     np.testing.assert_array_equal(added_variable_stats(e, u, 18, np.sum(e * e, axis=0)), direct)
     proj = e.T @ u
     np.testing.assert_allclose(direct, proj ** 2 * 18 / (np.sum(e * e, axis=0) - proj ** 2), rtol=1e-12)
+
+
+@pytest.mark.parametrize("seed,n,p,aliased", [(0, 300, 6, False), (1, 1200, 15, True), (2, 4000, 28, False)])
+def test_weighted_sums_of_squares_from_normal_equations_are_the_decompositions(seed, n, p, aliased):
+    """Above ASYMPTOTIC_RUNS the unequal-scatter test fits each weighting from p x p normal equations: the
+    residual sums of squares and the likelihood ratio are those of the orthonormal basis (SVD), for
+    responses fitted to R^2 ~ 0.9999 and residual columns, with an aliased column too."""
+    from demid.criticism.catalogue import _weighted_sse, heteroscedasticity_lr
+    from demid.criticism.models import orthonormal_basis, residualize
+
+    rng = np.random.default_rng(seed)
+    x = np.column_stack([np.ones(n), rng.uniform(-1, 1, (n, p - 1))])
+    if aliased:
+        x[:, -1] = x[:, 1] - x[:, 2]  # a column the others make: rank p - 1
+    y = x @ rng.uniform(-5, 5, p) + 0.01 * rng.standard_normal(n)
+    e = residualize(orthonormal_basis(x), rng.standard_normal((n, 3)))
+    covariate = rng.uniform(-1, 1, n)
+    sw = np.exp(-0.5 * 1.3 * covariate)
+    for cols in (y[:, None], e):
+        r = residualize(orthonormal_basis(x * sw[:, None]), cols * sw[:, None])
+        np.testing.assert_allclose(_weighted_sse(x * sw[:, None], cols * sw[:, None]), np.sum(r * r, axis=0),
+                                   rtol=1e-8)
+    lr = heteroscedasticity_lr(e, x, covariate)
+    monkey = catalogue.ASYMPTOTIC_RUNS
+    try:
+        catalogue.ASYMPTOTIC_RUNS = 10 ** 9  # the decomposition for every size
+        np.testing.assert_allclose(lr, heteroscedasticity_lr(e, x, covariate), rtol=1e-7, atol=1e-9)
+    finally:
+        catalogue.ASYMPTOTIC_RUNS = monkey

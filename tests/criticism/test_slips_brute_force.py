@@ -98,3 +98,11 @@ def test_each_columns_best_slip_is_the_refits(seed, k, n, log_first, cells, monk
     for b in range(y.shape[1]):
         reached = np.flatnonzero(brute[:, b] >= brute[:, b].max() * (1 - 1e-9))
         assert arg[b] in reached, (b, arg[b], reached)
+
+
+@pytest.mark.parametrize("seed,k,n,log_first", [(7, 2, 24, False), (8, 3, 40, True)])
+def test_the_count_is_the_lists_length(seed, k, n, log_first):
+    from demid.criticism.slips import count_slip_candidates
+
+    data, m = _model(seed, k, n, log_first)
+    assert count_slip_candidates(data, m) == len(_candidates_by_loop(data, m)) > 0
