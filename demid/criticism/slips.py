@@ -28,6 +28,9 @@ _SLIP_PRIOR = {1: 0.5, 2: 0.25, 3: 0.25}
 _SLIP_REACH = 2.0
 #: Cells (candidates x columns of responses) of the slip ratios held at once.
 SLIP_CELLS = 2 ** 16
+#: ... but at least this many candidates at once (with 2,000 null draws: 4 MB a temporary), so that the
+#: arithmetic, not the loop, sets the cost.
+SLIP_MIN_CANDIDATES = 256
 
 
 # =========================================================================== factor-level slips
@@ -115,7 +118,7 @@ def slip_ratios(m: Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[np
     best = np.zeros(y.shape[1])
     arg = np.zeros(y.shape[1], dtype=int)
     judged = np.flatnonzero(m.hat[run_pos] < LEVERAGE_UNPREDICTABLE)
-    width = max(1, SLIP_CELLS // max(y.shape[1], 1))
+    width = max(SLIP_MIN_CANDIDATES, SLIP_CELLS // max(y.shape[1], 1))
     for ks in (judged[s:s + width] for s in range(0, len(judged), width)):
         i = run_pos[ks]
         d_beta = _changed_fit(rows[ks] - x[i], factor[ks], beta)
