@@ -17,6 +17,10 @@ if TYPE_CHECKING:
     from ..surrogate import SurrogateFit
 
 
+#: Above this many runs a panel's points are drawn into the SVG as one image.
+RASTER_RUNS = 2000
+
+
 # =========================================================================== figure
 def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], title: str, units: dict | None = None):
     """Residual diagnostics, one row per response: vs fitted, vs run order, normal QQ.
@@ -58,7 +62,8 @@ def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], ti
                   (runs.astype(float), resid, "run order [–]", f"residual{unit}"),
                   (qq_x, stud, "normal quantile [–]", "ext. studentised residual [–]")]
         for ax, (x, y, xl, yl) in zip(row, panels):
-            ax.scatter(x, y, s=18, color="0.25", zorder=3)
+            # thousands of runs: one image in the SVG, not a vector marker per run (the PNG is the same)
+            ax.scatter(x, y, s=18, color="0.25", zorder=3, rasterized=len(x) > RASTER_RUNS)
             ax.set_xlabel(xl)
             ax.set_ylabel(yl)
             ax.grid(alpha=0.3)

@@ -645,3 +645,20 @@ def test_a_proposed_run_on_a_bound_reads_the_bound():
     point = data.point_dict(np.array([-1.41421, 1.41421]))
     assert point == {"p": 0.0, "q": 30.0} and str(point["p"]) == "0.0"
     assert data.point_dict(np.array([0.5, -0.25])) == {"p": 0.677, "q": 18.23}  # inside: 4 digits of the range
+
+
+@pytest.mark.parametrize("n_runs", [40, 2600])
+def test_residual_figure_draws_thousands_of_runs_as_one_image_in_the_svg(n_runs, monkeypatch):
+    """Every run is drawn (no subsample); above RASTER_RUNS a panel's points are one image in the SVG."""
+    from demid.plots import criticism as plots
+
+    monkeypatch.setattr(plots, "RASTER_RUNS", 1000)
+    rng = np.random.default_rng(n_runs)
+    u = rng.uniform(-1, 1, (n_runs, 2))
+    table = pd.DataFrame({"run": np.arange(1, n_runs + 1), FACTORS[2][0]: u[:, 0], FACTORS[2][1]: u[:, 1],
+                          "y": 10 + u[:, 0] + 0.5 * u[:, 1] ** 2 + 0.05 * rng.standard_normal(n_runs)})
+    fit = fit_response(table, FACTORS[2], "y", alpha=1.0)
+    fig = plots.residual_figure([fit], [], "study")
+    points = [ax.collections[0] for ax in fig.axes]
+    assert all(len(c.get_offsets()) == n_runs for c in points)
+    assert all(c.get_rasterized() is (n_runs > 1000) for c in points)
