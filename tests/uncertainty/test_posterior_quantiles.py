@@ -121,3 +121,17 @@ def test_a_set_above_three_factors_reports_the_half_width_of_its_fractions_confi
                             polish=False)
     assert found.fraction == direct.fraction and direct.ci_upper > direct.ci_lower
     assert found.error == pytest.approx((direct.ci_upper - direct.ci_lower) / 2, rel=1e-12)
+
+
+@pytest.mark.parametrize("n", [1, 2, 5, 40])
+def test_weighted_quantiles_of_equal_weights_are_the_midpoint_quantiles(n):
+    """Equal weights put the k-th smallest of n values at probability (k - 1/2)/n (Hazen's plotting position,
+    numpy's method="hazen"), for any common weight, ties and unsorted input included."""
+    from demid.uncertainty.posterior import _weighted_quantiles
+
+    rng = np.random.default_rng(n)
+    values = np.round(rng.normal(size=n), 1)
+    probs = [0.0, 0.025, 0.1, 0.5, 0.9, 0.975, 1.0]
+    for weight in (1.0, 3e-7):
+        got = _weighted_quantiles(values, np.full(n, weight), probs)
+        np.testing.assert_allclose(got, np.quantile(values, probs, method="hazen"), rtol=0, atol=1e-12)

@@ -418,9 +418,11 @@ def test_analyse_material_two_factors(mortar_like):
         {"d5": {"target": targets["d5"], "sigma": 0.5}, "d10": {"target": targets["d10"]},
          "d15": {"target": targets["d15"], "sigma_rel": 0.004, "label": "d_15"}},
         {"d15_only": {"observables": ["d15"], "tolerance": 0.02},
-         "full_sequence": {"observables": ["d5", "d10", "d15"], "tolerance": 0.02}})
+         "full_sequence": {"observables": ["d5", "d10", "d15"], "tolerance": 0.02, "label": "all three sizes"}})
     result = unc.analyse_material(surrogates, cfg, tolerances=[0.01, 0.05],
                                   sizes={"plausible": 61, "sweep": 41, "posterior": 61})
+    # the legend texts: the configured label of each labelled scenario, none for a scenario named by its key
+    assert result.scenario_labels == {"full_sequence": "all three sizes"}
     assert list(result.plausible.columns[:13]) == unc.PLAUSIBLE_COLUMNS and len(result.plausible) == 4
     assert set(result.sweep["tolerance"]) == {0.01, 0.02, 0.05}
     assert len(result.ranking) == 7 and len(result.information_gain) == 14
