@@ -1,0 +1,110 @@
+"""Reported numbers at their boundaries: the printed form of a value (``value_text``), a reproduced number
+rounding to a published one (``rounds_to``, ``printed_decimals``), the run sheet's accepted counts and a far
+target's one-keystroke repair at the simulated range's ends; each against a rule written out in the test."""
+from decimal import Decimal
+
+import numpy as np
+import pandas as pd
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from demid.data import far_target_warnings
+from demid.design_generation import _check_counts
+from demid.errors import InputError
+from demid.paper import printed_decimals, rounds_to
+from demid.precision import MAX_DIGITS, UNCERTAINTY_DIGITS, ZERO, value_text
+
+_FAST = settings(max_examples=60, derandomize=True, deadline=None)
+
+
+def _place(x: float, digits: int) -> Decimal:
+    """The power of ten of ``x``'s last kept digit once rounded to ``digits`` significant ones (by Decimal)."""
+    rounded = Decimal(f"{abs(x):.{digits - 1}e}")
+    return Decimal(1).scaleb(rounded.adjusted() - digits + 1)
+
+
+@_FAST
+@given(mantissa=st.floats(1.0, 9.99), exponent=st.integers(-7, 8), sign=st.sampled_from([-1.0, 1.0]),
+       u_mantissa=st.floats(1.0, 9.99), u_shift=st.integers(-6, 3))
+def test_value_text_is_the_value_at_the_uncertaintys_place_in_fixed_form_between_1e_4_and_1e6(
+        mantissa, exponent, sign, u_mantissa, u_shift):
+    value = sign * mantissa * 10.0 ** exponent
+    uncertainty = u_mantissa * 10.0 ** (exponent + u_shift)
+    place = max(_place(uncertainty, UNCERTAINTY_DIGITS), _place(value, MAX_DIGITS))
+    text = value_text(value, uncertainty)
+    if Decimal(abs(value)) < place / 2:
+        assert text == ZERO
+        return
+    assert text != ZERO
+    number = float(text.replace("−", "-"))
+    assert np.sign(number) == sign
+    exponential = not (1e-4 <= abs(value) < 10.0 ** (MAX_DIGITS + 2))
+    assert ("e" in text) == exponential, (value, uncertainty, text)
+    if exponential:
+        kept = int(text.replace("−", "-").split("e")[0].replace("-", "").replace(".", "").lstrip("0") or "0")
+        assert abs(number - value) <= float(place) / 2 * (1 + 1e-9) or len(str(kept)) == 1
+    else:
+        decimals = len(text.split(".")[1]) if "." in text else 0
+        assert decimals == max(0, -place.adjusted()), (value, uncertainty, text)
+        assert abs(number - value) <= float(place) / 2 * (1 + 1e-9)
+
+
+@pytest.mark.parametrize("value, uncertainty, expected", [
+    (1.5e6, 1e3, "1.5e+06"), (999_000.0, 1e3, "999000"), (5e4, 10.0, "50000"), (-2.5e6, 1e4, "−2.5e+06"),
+    (1.2e-4, 1e-5, "0.000120"), (9.5e-5, 1e-6, "9.5e-05"), (0.4, 10.0, ZERO), (0.6, 10.0, "1"),
+])
+def test_value_text_known_answers_at_the_fixed_forms_ends(value, uncertainty, expected):
+    assert value_text(value, uncertainty) == expected
+
+
+@_FAST
+@given(published=st.integers(-99_999, 99_999), decimals=st.integers(0, 4),
+       units=st.sampled_from([0.0, 0.25, 0.49, 0.51, 0.75, 1.0, 2.0]), sign=st.sampled_from([-1, 1]))
+def test_rounds_to_is_within_half_a_unit_of_the_last_printed_digit(published, decimals, units, sign):
+    text = f"{Decimal(published).scaleb(-decimals):.{decimals}f}"
+    assert printed_decimals(text) == decimals
+    unit = 10.0 ** -decimals
+    reproduced = float(text) + sign * units * unit
+    assert rounds_to(reproduced, text, decimals) is (units <= 0.5)
+    assert rounds_to(reproduced, float(text), decimals) is (units <= 0.5)
+
+
+def test_rounds_to_on_the_half_unit_exactly_and_off_the_finite_numbers():
+    # 0.5 and 1.5 are exact in binary: the half unit itself rounds to the published digit
+    assert rounds_to(1.5, "1", 0) and rounds_to(0.5, "1", 0) and rounds_to(1.25, "1.2", 1)
+    assert not rounds_to(1.5 + 1e-6, "1", 0) and not rounds_to(0.5 - 1e-6, "1", 0)
+    for bad in (np.nan, np.inf, -np.inf):
+        assert rounds_to(bad, "1", 0) is False
+
+
+@pytest.mark.parametrize("text, decimals", [
+    ("3.980", 3), ("0.0397", 4), ("12", 0), ("-4.5", 1), ("1.5e-05", 6), ("2E-3", 3), ("7.25e2", 0), (0.0397, 4),
+])
+def test_printed_decimals_of_quoted_and_exponent_forms(text, decimals):
+    assert printed_decimals(text) == decimals
+
+
+@pytest.mark.parametrize("design_type, n_factors, center_runs, accepted", [
+    ("ccd", 1, 1, True), ("ccd", 6, 1, True), ("ccd", 7, 1, False), ("ccd", 0, 1, False),
+    ("ccd", 2, 0, False), ("ccd", 2, 1, True), ("factorial", 2, 1, True), ("factorial", 2, 0, False),
+    ("box_behnken", 3, 1, True), ("box_behnken", 5, 1, True), ("box_behnken", 2, 1, False),
+    ("box_behnken", 6, 1, False), ("ccd", 3, -1, False),
+])
+def test_run_sheet_counts_accepted_exactly_at_their_bounds(design_type, n_factors, center_runs, accepted):
+    if accepted:
+        _check_counts(design_type, n_factors, center_runs)
+    else:
+        with pytest.raises(InputError):
+            _check_counts(design_type, n_factors, center_runs)
+
+
+@pytest.mark.parametrize("column", [[20.0, 23.0, 26.4], [26.4, 28.0, 30.0]])
+def test_a_far_targets_decimal_shift_onto_either_end_of_the_runs_is_named(column):
+    # 264 is far beyond both columns; its decimal shift 26.4 is exactly the highest (first) or lowest (second)
+    # simulated value: still among the simulated values, so the slip is named, not a unit change
+    table = pd.DataFrame({"y": column})
+    (warning,) = far_target_warnings(table, {"y": 264.0}, "runs.csv")
+    assert "looks like 26.4 with" in warning and "another unit" not in warning
+    (moved,) = far_target_warnings(pd.DataFrame({"y": [c + (0.01 if c == 26.4 and c == max(column) else 0)
+                                                      for c in column]}), {"y": 264.0}, "runs.csv")
+    assert "looks like 26.4 with" in moved
