@@ -108,3 +108,42 @@ def test_a_far_targets_decimal_shift_onto_either_end_of_the_runs_is_named(column
     (moved,) = far_target_warnings(pd.DataFrame({"y": [c + (0.01 if c == 26.4 and c == max(column) else 0)
                                                       for c in column]}), {"y": 264.0}, "runs.csv")
     assert "looks like 26.4 with" in moved
+
+
+@pytest.mark.parametrize("side", ["upper", "lower"])
+@pytest.mark.parametrize("runs_range, refused", [(100.0, False), (20.0, True)])
+def test_a_bound_a_swap_away_from_the_runs_extreme_is_refused_only_beyond_a_tenth_of_their_range(
+        side, runs_range, refused):
+    # the bound 21 (-21 below) is the runs' extreme 12 (-12) with two digits swapped, 9 beyond it: a slip when the
+    # runs span 20 (margin 2), a bound rounded outwards when they span 100 (margin 10)
+    from demid.data import check_bound_slips
+    from demid.spec import Factor
+
+    sign = 1.0 if side == "upper" else -1.0
+    extreme = 12.0 * sign
+    runs = np.array([extreme, extreme - sign * runs_range])
+    bound, other = 21.0 * sign, float(runs.min() if side == "upper" else runs.max()) - sign * 1000
+    lower, upper = (other, bound) if side == "upper" else (bound, other)
+    factor = Factor(name="x", lower=lower, upper=upper, log=False, label="x", unit="")
+    table = pd.DataFrame({"x": runs})
+    if refused:
+        with pytest.raises(InputError, match=f"{side}: {bound:g} lies beyond the runs.*looks like {extreme:g}"):
+            check_bound_slips(table, "m", (factor,), "runs.csv")
+    else:
+        check_bound_slips(table, "m", (factor,), "runs.csv")
+
+
+def test_published_scenario_sets_without_a_search_domain_compare_their_fraction_and_bounds():
+    # a paper that gives a scenario's set (fraction, one bound) but no search ranges: nothing is unresolved,
+    # so no range is needed, and each number is compared with the reproduced table's own
+    from demid.paper import paper_comparison
+
+    fit = pd.DataFrame({"material": ["m"], "response": ["y"], "r2": [0.95], "rmse": [2.0]})
+    ident = pd.DataFrame({"material": ["m"] * 2, "scenario": ["a"] * 2, "observables": ["y"] * 2,
+                          "tolerance": [0.02] * 2, "feasible_fraction_pct": [12.5] * 2, "factor": ["x", "z"],
+                          "lower": [0.1, 3.0], "upper": [0.9, 7.0], "width": [0.8, 4.0]})
+    published = {"scenario_sets": {"m": {"a": {"feasible_fraction_pct": 12.49, "upper": {"z": 7.02}}}}}
+    table = paper_comparison(published, fit, ident, {}).set_index("quantity")
+    assert list(table.index) == ["feasible fraction [%] a", "upper bound z (≲), a"]
+    assert table["reproduced"].tolist() == [12.5, 7.0]
+    assert table["published"].tolist() == [12.49, 7.02]
