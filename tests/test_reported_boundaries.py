@@ -147,3 +147,40 @@ def test_published_scenario_sets_without_a_search_domain_compare_their_fraction_
     assert list(table.index) == ["feasible fraction [%] a", "upper bound z (≲), a"]
     assert table["reproduced"].tolist() == [12.5, 7.0]
     assert table["published"].tolist() == [12.49, 7.02]
+
+
+@_FAST
+@given(centre=st.floats(-1e3, 1e3).filter(lambda c: abs(c) > 1e-3), unit=st.floats(0.01, 50.0),
+       alpha=st.sampled_from([None, 1.414, 2.0]), with_centre=st.booleans(), with_axial=st.booleans())
+def test_level_coding_recovers_the_centre_and_unit_of_a_design_with_or_without_its_centre_run(
+        centre, unit, alpha, with_centre, with_axial):
+    from demid.design_check import _level_coding
+
+    levels = np.array([-1.0, 0.0, 1.0] if alpha is None else [-alpha, -1.0, 0.0, 1.0, alpha])
+    used = [-1.0, 1.0] + ([0.0] if with_centre else []) + ([-alpha, alpha] if alpha and with_axial else [])
+    values = np.array(sorted(centre + unit * np.array(used)))
+    found = _level_coding(values, np.ones(len(values), dtype=int), levels)
+    assert found == (pytest.approx(centre, rel=1e-9, abs=1e-9 * unit), pytest.approx(unit, rel=1e-9))
+
+
+def _spread_reference(order, grid, starts):
+    taken = []
+    for node in order:
+        if len(taken) == starts:
+            break
+        if all(np.max(np.abs(grid[node] - grid[t])) > 0.1 for t in taken):
+            taken.append(node)
+    return taken
+
+
+@_FAST
+@given(seed=st.integers(0, 10_000), n=st.integers(1, 40), k=st.integers(1, 4), starts=st.integers(1, 6))
+def test_spread_starts_takes_the_best_ranked_node_first_then_the_next_far_enough_ones(seed, n, k, starts):
+    from demid.criticism.searches import spread_starts
+
+    rng = np.random.default_rng(seed)
+    grid = rng.random((n, k))
+    order = rng.permutation(n)
+    picks = spread_starts(order, grid, starts)
+    assert [int(p) for p in picks] == [int(p) for p in _spread_reference(order, grid, starts)]
+    assert picks[0] == order[0]
