@@ -184,3 +184,15 @@ def test_spread_starts_takes_the_best_ranked_node_first_then_the_next_far_enough
     picks = spread_starts(order, grid, starts)
     assert [int(p) for p in picks] == [int(p) for p in _spread_reference(order, grid, starts)]
     assert picks[0] == order[0]
+
+
+@_FAST
+@given(mantissa=st.floats(1.0, 9.99), exponent=st.integers(-7, 8), sign=st.sampled_from([-1.0, 1.0]))
+def test_rough_text_is_one_significant_digit_in_fixed_form_between_1e_4_and_1e6(mantissa, exponent, sign):
+    from demid.precision import rough_text
+
+    value = sign * mantissa * 10.0 ** exponent
+    text = rough_text(value)
+    one_digit = float(f"{value:.0e}")
+    assert float(text.replace("−", "-")) == pytest.approx(one_digit, rel=1e-12)
+    assert ("e" in text) == (not 1e-4 <= abs(value) < 1e6), (value, text)
