@@ -855,6 +855,11 @@ EQUIVALENT: dict[str, str] = {
     "demid/kriging.py::KrigingSurrogate.resid_var::float((abs(self.gain) * self.y_scale) ** 2 * self.system.sigma2 * self.nugget) => (abs(self.gain) * self.y_scale) ** 2 * self.system.sigma2 * self.nugget#0":
         "the same value as a numpy scalar at most (a float subclass): its readers add it in numpy "
         "(se_prediction) or take float() of it (tolerance.rescaled, wave_value); no one writes or prints it",
+    # --- searches (seed 26)
+    "demid/criticism/searches.py::_shared_bias_envelope::i + 1 => 1#0":
+        "j from 1 instead of i + 1 adds the pair (i, i), meeting at 0, and pairs (i, j) with j < i already taken "
+        "as (j, i): the same meeting height bit for bit (products and sums commute exactly), which the strict "
+        "`meet > value` leaves unchanged",
     # --- paper (seed 27)
     "demid/paper.py::paper_comparison::float(sel['tolerance'].iloc[0]) => sel['tolerance'].iloc[0]#0":
         "_Rows.add takes float() of every reproduced number (_num) before it is compared or stored",
