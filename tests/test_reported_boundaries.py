@@ -196,3 +196,11 @@ def test_rough_text_is_one_significant_digit_in_fixed_form_between_1e_4_and_1e6(
     one_digit = float(f"{value:.0e}")
     assert float(text.replace("−", "-")) == pytest.approx(one_digit, rel=1e-12)
     assert ("e" in text) == (not 1e-4 <= abs(value) < 1e6), (value, text)
+
+
+@pytest.mark.parametrize("value, expected", [(6e5, "600000"), (-9.4e5, "−900000"), (2e6, "2e+06"), (1.23e-4, "0.0001"),
+                                             (9e-5, "9e-05"), (12.34, "10")])
+def test_rough_text_known_answers_at_the_fixed_forms_ends(value, expected):
+    from demid.precision import rough_text
+
+    assert rough_text(value) == expected
