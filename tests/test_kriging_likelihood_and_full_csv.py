@@ -53,3 +53,15 @@ def test_a_full_precision_csv_reads_back_as_the_frame_written(tmp_path):
     assert list(back.columns) == list(frame.columns)
     pd.testing.assert_frame_equal(back, frame, check_exact=True)
     assert path.read_text().splitlines()[0] == "a,b,name"
+
+
+def test_copy_files_writes_atomic_byte_copies_and_the_log_into_an_existing_folder(tmp_path):
+    from demid.io import copy_files
+
+    source = tmp_path / "a b.csv"
+    source.write_bytes(b"x,y\n1,2\n")
+    (tmp_path / "out").mkdir()
+    destination, log = tmp_path / "out" / "copy.csv", tmp_path / "out" / "copied.txt"
+    copy_files({source: destination}, log)
+    assert destination.read_bytes() == source.read_bytes()
+    assert log.read_text(encoding="utf-8") == f"{source} -> {destination}\n"
