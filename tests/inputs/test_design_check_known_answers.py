@@ -260,3 +260,20 @@ def test_axial_levels_unequally_far_from_the_centre_show_no_axial_distance(low, 
         table.loc[np.isclose(coded, -1.5), name] = _CENTRE[i] + low * _HALF[i]
         table.loc[np.isclose(coded, 1.5), name] = _CENTRE[i] + high * _HALF[i]
     assert _ccd_alpha_of_table(table, names) is None
+
+
+@pytest.mark.parametrize("k, moved", [(2, 2), (3, 2), (3, 3)])
+def test_several_runs_moved_onto_one_corner_count_the_points_left_without_a_run(k, moved):
+    """``moved`` axial runs moved onto one factorial corner: the corner is run moved + 1 times, and the message
+    names the first empty point and counts the others ("and N more")."""
+    table, names = _ccd_table(k, 1.5, 3)
+    coded = (table[names].to_numpy() - _CENTRE[:k]) / _HALF[:k]
+    axial = np.flatnonzero(np.abs(np.abs(coded).max(axis=1) - 1.5) < 1e-9)[:moved]
+    corner = int(np.flatnonzero(np.all(np.abs(coded - 1) < 1e-9, axis=1))[0])
+    for row in axial:
+        table.loc[int(row), names] = table.loc[corner, names].to_numpy()
+    with pytest.raises(InputError) as err:
+        check_design(table, names, {"type": "ccd", "alpha": 1.5, "center_runs": 3}, "t.csv", "materials.m")
+    text = str(err.value)
+    assert f"all {moved + 1} are the point" in text, text
+    assert text.endswith(f") and {moved - 1} more has no run"), text
