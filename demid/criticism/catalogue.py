@@ -160,14 +160,14 @@ def heteroscedasticity_lr(e: np.ndarray, x: np.ndarray, covariate: np.ndarray) -
     prof = np.empty((len(GAMMA_GRID), e.shape[1]))
     for i, g in enumerate(GAMMA_GRID):
         sw = np.exp(-0.5 * g * covariate)
-        sse = _weighted_sse(x * sw[:, None], e * sw[:, None])
+        sse = weighted_sse(x * sw[:, None], e * sw[:, None])
         with np.errstate(divide="ignore"):
             prof[i] = -0.5 * n * np.log(sse / n) + float(np.sum(np.log(sw)))
     zero = int(np.argmin(np.abs(GAMMA_GRID)))
     return 2.0 * (prof.max(axis=0) - prof[zero])
 
 
-def _weighted_sse(xw: np.ndarray, ew: np.ndarray) -> np.ndarray:
+def weighted_sse(xw: np.ndarray, ew: np.ndarray) -> np.ndarray:
     """Residual sums of squares (B,) of the columns of ew (n, B) on the column space of xw (n, p).
 
     Up to ASYMPTOTIC_RUNS runs through an orthonormal basis (rank-revealing SVD); beyond, the least-squares

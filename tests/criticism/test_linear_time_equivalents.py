@@ -76,7 +76,7 @@ def test_weighted_sums_of_squares_from_normal_equations_are_the_decompositions(s
     """Above ASYMPTOTIC_RUNS the unequal-scatter test fits each weighting from p x p normal equations: the
     residual sums of squares and the likelihood ratio are those of the orthonormal basis (SVD), for
     responses fitted to R^2 ~ 0.9999 and residual columns, with an aliased column too."""
-    from demid.criticism.catalogue import _weighted_sse, heteroscedasticity_lr
+    from demid.criticism.catalogue import heteroscedasticity_lr, weighted_sse
     from demid.criticism.models import orthonormal_basis, residualize
 
     rng = np.random.default_rng(seed)
@@ -89,7 +89,7 @@ def test_weighted_sums_of_squares_from_normal_equations_are_the_decompositions(s
     sw = np.exp(-0.5 * 1.3 * covariate)
     for cols in (y[:, None], e):
         r = residualize(orthonormal_basis(x * sw[:, None]), cols * sw[:, None])
-        np.testing.assert_allclose(_weighted_sse(x * sw[:, None], cols * sw[:, None]), np.sum(r * r, axis=0),
+        np.testing.assert_allclose(weighted_sse(x * sw[:, None], cols * sw[:, None]), np.sum(r * r, axis=0),
                                    rtol=1e-8)
     lr = heteroscedasticity_lr(e, x, covariate)
     monkey = catalogue.ASYMPTOTIC_RUNS
