@@ -7,6 +7,10 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import stats
 
+#: Above this many runs a panel's points are drawn as an image in the SVG (every point still drawn; the PNG is
+#: an image anyway): thousands of vector markers made the figure most of a large study's criticism time.
+RASTER_RUNS = 2000
+
 #: What a row's first panel says when no cause is named: the verdict, never "no finding" beside a misfit.
 _NO_CAUSE = {"adequate": "no finding (within the tests' power)",
              "unexplained": "misfit unexplained: no cause singled out",
@@ -58,7 +62,7 @@ def residual_figure(fits: list[SurrogateFit], results: list[CriticismResult], ti
                   (runs.astype(float), resid, "run order [–]", f"residual{unit}"),
                   (qq_x, stud, "normal quantile [–]", "ext. studentised residual [–]")]
         for ax, (x, y, xl, yl) in zip(row, panels):
-            ax.scatter(x, y, s=18, color="0.25", zorder=3)
+            ax.scatter(x, y, s=18, color="0.25", zorder=3, rasterized=len(x) > RASTER_RUNS)
             ax.set_xlabel(xl)
             ax.set_ylabel(yl)
             ax.grid(alpha=0.3)
