@@ -536,8 +536,14 @@ TABLE: dict[str, dict] = {
         # 2-factor ones at four times the cost
         "tests": ["tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_criticism.py",
                   "tests/criticism/test_models_properties.py", "tests/test_core_contracts.py",
+                  "tests/criticism/test_linear_time_equivalents.py",
                   "tests/criticism/test_level1_known_answers.py::test_a_slipped_factor_value_is_moved_and_the_loo_"
                   "errors_are_the_refits", "-knot level2 and not residual_figure and not 3f"],
+    },
+    "demid/criticism/outliers.py": {
+        "functions": None,
+        "tests": ["tests/criticism/test_linear_time_equivalents.py", "tests/criticism/test_catalogue_known_answers.py",
+                  "tests/criticism/test_criticism.py", "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/step_changes.py": {
         "functions": None,
@@ -600,7 +606,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/slips.py": {
         "functions": None,
-        "tests": _NAMING_TESTS,
+        "tests": _NAMING_TESTS + ["tests/criticism/test_slips_brute_force.py"],
     },
     "demid/criticism/verdict.py": {
         "functions": None,
@@ -720,7 +726,8 @@ TABLE: dict[str, dict] = {
     "demid/fit_statistics.py": {
         "functions": None,
         "tests": ["tests/test_surrogate.py", "tests/test_statistics_known_answers.py", "tests/inputs/test_one_replicate_rule.py",
-                  "tests/test_fit_statistics.py", "tests/test_fit_statistics_whole.py", "tests/test_core_contracts.py"],
+                  "tests/test_fit_statistics.py", "tests/test_fit_statistics_whole.py", "tests/test_core_contracts.py",
+                  "tests/criticism/test_linear_time_equivalents.py"],
     },
     "demid/design.py": {
         "functions": None,

@@ -21,22 +21,39 @@ Measured on the shared two-core machine (load 8-11, so wall times are inflated; 
 threads, which the workflow never runs with), 18.1 after it with threads, 11.0 on one BLAS thread as the
 workflow runs (peak 545 MB).
 
-The grid after it (``--grid``; one material job; CPU s and the job's peak resident memory; 13/200/2,000 rows on a
-machine at load ~2, the 10,000-row cases beside a CI run):
+Earlier rounds (one material job, CPU s, 10,000 runs): 2 / 4 / 6 factors 54 / 158 / 103 s before the criticism
+became linear in the runs (slips for all runs at once, running sums, one decomposition per model).  This round:
+the slip search worked in place, unequal scatter's gamma searched without a model per step above 256 runs, the
+residual figure's points an image in the SVG above 2,000 runs.
+
+The grid (``--grid``; one material job; CPU s and the job's peak resident memory; load 12-13 on the two cores,
+so wall times are inflated and CPU is the figure to read):
 
     runs   2 factors        4 factors        6 factors
     13     5.9 s  363 MB    (13 runs cannot determine a quadratic in 4 or 6 factors)
-    200    7.2 s  363 MB    12.3 s  417 MB   19.3 s  427 MB
-    2000   9.4 s  574 MB    15.2 s  528 MB   25.9 s  622 MB
-    10000  54 s  1274 MB    158 s  1389 MB   103 s  1853 MB (beside a CI run and a mutation run)
+    200    7.3 s  364 MB    12.3 s  418 MB   19.5 s  428 MB
+    2000   8.2 s  514 MB    12.4 s  497 MB   20.8 s  591 MB
+    10000  20.7 s 1119 MB   33.9 s 1250 MB   48.2 s 1605 MB
+
+Most of 200 and 2,000 runs at 6 factors is not the runs' (the Sobol evaluation of the sets, the figures).
 
 10,000 x 6 was refused until the typo screen measured residuals against the scatter at each run's level: the
 generated responses scatter in proportion to their level, and against the pooled scale one cell of the top of the
 range passed the Bonferroni bound over 10,000 runs ("11.685914 looks like 11.865914", 4.2 of its own scatter).
 
-The whole pipeline (``snakemake -c2`` on ``write_study``'s 2-factor study, /usr/bin/time, one BLAS thread, idle
-machine): 2,000 rows 14.5 s wall, 16.6 CPU s, 586 MB; 10,000 rows 37.5 s wall, 40.6 CPU s, 1.3 GB (with the typo
-screen's local scale; before it 14.9 s / 39.4 s).
+The whole pipeline (``snakemake -c2`` on ``write_study``'s studies, /usr/bin/time, one BLAS thread), measured at
+load 9-13 on the two cores: wall is inflated by the load; CPU (user + system) is what an idle machine's wall
+comes close to (on an idle machine, 2,000 x 2 took 14.5 s wall for 16.6 CPU s, 10,000 x 2 37.5 s for 40.6).
+
+    factors   2,000 rows: wall  CPU    peak      10,000 rows: wall  CPU    peak
+    2         17.7 s  16.9 s   0.5 GB         30.5 s  28.9 s   1.1 GB
+    3         34.1 s  26.3 s   1.3 GB         60.3 s  44.2 s   1.3 GB
+    4         32.3 s  21.0 s   0.5 GB         62.4 s  40.7 s   1.3 GB
+    6         47.2 s  30.2 s   0.6 GB         88.2 s  56.3 s   1.7 GB
+
+Before this round (the previous merge, one run at load ~3), 10,000 x 6 took 68.4 CPU s, 70 s wall.  2,000 rows
+stay above 15 s from 3 factors on: their cost is the fixed part (a 3-factor grid evaluation of the sets, the
+Sobol evaluation and figures with more factors), not the runs.
 """
 
 from __future__ import annotations

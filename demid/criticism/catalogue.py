@@ -15,11 +15,12 @@ import numpy as np
 from scipy import stats
 
 from ..blocks import pure_error_groups
-from ..design import LEVERAGE_UNPREDICTABLE, cubic_terms, term_name
+from ..design import cubic_terms, term_name
 from ..fit_statistics import pure_error_ss
 from ..precision import round_off_floor, round_off_only
 from .aliasing import term_classes
 from .models import orthonormal_basis, residualize
+from .outliers import outlier_logp, outlier_null_max, outlier_stats
 from .slips import slip_candidates, slip_fit, slip_ratios
 from .step_changes import STEP_CELLS, step_direction_chunks, step_projections
 
@@ -117,34 +118,6 @@ def _f_of_projection(proj: np.ndarray, e: np.ndarray, df2: int) -> np.ndarray:
 ASYMPTOTIC_RUNS = 256
 
 
-def _outlier_stats(e: np.ndarray, hat: np.ndarray, df: int):
-    """Externally studentised residuals t (n, B) of residuals e (n, B)."""
-    ok = hat < LEVERAGE_UNPREDICTABLE  # the others cannot tell such a run's value (rounded levels suffice)
-    h = np.where(ok, hat, 0.0)[:, None]
-    sse = np.sum(e * e, axis=0)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        s2 = (sse - e ** 2 / (1 - h)) / (df - 1)
-        t = e / np.sqrt(np.maximum(s2, 1e-300) * (1 - h))
-    t[~ok] = 0.0
-    return t
-
-
-#: Cells (runs x null draws) of the outlier statistics held at once: each of its temporaries stays small
-#: enough to be reused instead of mapped afresh (at 10,000 runs x 2,000 draws a whole temporary is 160 MB).
-OUTLIER_CELLS = 2 ** 20
-
-
-def _outlier_null_max(e: np.ndarray, hat: np.ndarray, df: int) -> np.ndarray:
-    """Largest |t| (B,) of each column of e (n, B), a block of columns at a time (the same numbers)."""
-    width = max(1, OUTLIER_CELLS // max(len(e), 1))
-    return np.concatenate([np.max(np.abs(_outlier_stats(e[:, j:j + width], hat, df)), axis=0)
-                           for j in range(0, e.shape[1], width)])
-
-
-def _outlier_logp(tmax, n, df):
-    return np.minimum(0.0, np.log(2.0 * n) + stats.t.logsf(tmax, df - 1))
-
-
 GAMMA_GRID = np.linspace(-GAMMA_BOUND, GAMMA_BOUND, 21)
 
 
@@ -160,14 +133,14 @@ def heteroscedasticity_lr(e: np.ndarray, x: np.ndarray, covariate: np.ndarray) -
     prof = np.empty((len(GAMMA_GRID), e.shape[1]))
     for i, g in enumerate(GAMMA_GRID):
         sw = np.exp(-0.5 * g * covariate)
-        sse = _weighted_sse(x * sw[:, None], e * sw[:, None])
+        sse = weighted_sse(x * sw[:, None], e * sw[:, None])
         with np.errstate(divide="ignore"):
             prof[i] = -0.5 * n * np.log(sse / n) + float(np.sum(np.log(sw)))
     zero = int(np.argmin(np.abs(GAMMA_GRID)))
     return 2.0 * (prof.max(axis=0) - prof[zero])
 
 
-def _weighted_sse(xw: np.ndarray, ew: np.ndarray) -> np.ndarray:
+def weighted_sse(xw: np.ndarray, ew: np.ndarray) -> np.ndarray:
     """Residual sums of squares (B,) of the columns of ew (n, B) on the column space of xw (n, p).
 
     Up to ASYMPTOTIC_RUNS runs through an orthonormal basis (rank-revealing SVD); beyond, the least-squares
@@ -370,11 +343,11 @@ class Round:
     def _outlier(self, m: Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:
         """The run with the largest externally studentised residual."""
         df, n = m.df_resid, len(m.y)
-        t_obs = _outlier_stats(e_obs, m.hat, df)[:, 0]
+        t_obs = outlier_stats(e_obs, m.hat, df)[:, 0]
         i = int(np.argmax(np.abs(t_obs)))
         h = Hypothesis("outlier", int(np.flatnonzero(m.keep)[i]), [], float(t_obs[i]),
-                       float(_outlier_logp(abs(t_obs[i]), n, df)))
-        h.null_logp = _outlier_logp(_outlier_null_max(e_null, m.hat, df), n, df)
+                       float(outlier_logp(abs(t_obs[i]), n, df)))
+        h.null_logp = outlier_logp(outlier_null_max(e_null, m.hat, df), n, df)
         self.hypotheses.append(h)
 
     def _heteroscedasticity(self, m: Model, e_obs: np.ndarray, e_null: np.ndarray) -> None:

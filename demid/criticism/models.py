@@ -309,10 +309,16 @@ class Model:
     @property
     def loglik(self) -> float:
         """Gaussian log-likelihood of all n original observations (mean-shift for excluded runs)."""
-        ll = gaussian_loglik(self.ssr, self.data.n) + 0.5 * float(np.sum(np.log(self.w)))
+        return self.loglik_with(self.ssr, self.w, self.spec.weight_gamma)
+
+    def loglik_with(self, ssr: float, w: np.ndarray, gamma: float) -> float:
+        """:attr:`loglik` of this model's form with weights ``w`` (kept runs) from ``gamma`` and the fit's
+        weighted residual sum of squares ``ssr`` (:func:`demid.criticism.extensions.extend_for` searches the
+        weights' gamma without a model per step)."""
+        ll = gaussian_loglik(ssr, self.data.n) + 0.5 * float(np.sum(np.log(w)))
         if self.spec.weight_on is not None and self.spec.dropped:
             v = np.asarray(self.spec.weight_values, dtype=float)[~self.keep]
-            ll += 0.5 * float(np.sum(-self.spec.weight_gamma * v))
+            ll += 0.5 * float(np.sum(-gamma * v))
         if self.spec.lam is not None:
             ll += (self.spec.lam - 1.0) * float(np.sum(np.log(self.data.y)))
         return float(ll)

@@ -13,7 +13,7 @@ import numpy as np
 from scipy import stats
 
 from ..design import LEVERAGE_UNPREDICTABLE, model_matrix
-from .models import orthonormal_basis, residualize
+from .models import orthonormal_basis
 
 if TYPE_CHECKING:
     from .models import Data, Model
@@ -113,50 +113,67 @@ def slip_ratios(m: Model, cands: list[SlipCandidate], y: np.ndarray) -> tuple[np
     q = orthonormal_basis(x)
     a = np.linalg.pinv(x.T @ x)
     beta = a @ (x.T @ y)
-    resid = y - x @ beta
-    sse0 = np.sum(residualize(q, y) ** 2, axis=0)
+    # y - x beta from the orthonormal basis, by BLAS: (n, B) products, far larger than residualize's
+    resid = y - q @ (q.T @ y)
+    sse0 = np.sum(resid ** 2, axis=0)
+    # a moved SSE below this is read as this (sse0 / 0 would be no number)
+    sse_floor = 1e-300 * np.maximum(sse0, 1e-300)
     best = np.zeros(y.shape[1])
     arg = np.zeros(y.shape[1], dtype=int)
     judged = np.flatnonzero(m.hat[run_pos] < LEVERAGE_UNPREDICTABLE)
+    terms_of = _slipped_terms(rows - x[run_pos], factor)
     width = max(SLIP_MIN_CANDIDATES, SLIP_CELLS // max(y.shape[1], 1))
+    columns = np.arange(y.shape[1])
     for ks in (judged[s:s + width] for s in range(0, len(judged), width)):
         i = run_pos[ks]
-        d_beta = _changed_fit(rows[ks] - x[i], factor[ks], beta)
-        ratio = _moved_ratios(x[i], rows[ks], a, d_beta, resid[i], sse0)
-        top = np.argmax(ratio, axis=0)
-        val = ratio[top, np.arange(y.shape[1])]
+        d_beta = _changed_fit(rows[ks] - x[i], factor[ks], beta, terms_of)
+        sse_moved = _moved_sse(x[i], rows[ks], a, d_beta, resid[i], sse0)
+        np.maximum(sse_moved, sse_floor, out=sse_moved)
+        np.copyto(sse_moved, np.inf, where=np.isnan(sse_moved))  # no number: no improvement
+        top = np.argmin(sse_moved, axis=0)  # the largest ratio sse0 / sse_moved, the first candidate on a tie
+        val = sse0 / sse_moved[top, columns]
         better = val > best
         best = np.where(better, val, best)
         arg = np.where(better, ks[top], arg)
     return best, arg
 
 
-def _changed_fit(d: np.ndarray, factor: np.ndarray, beta: np.ndarray) -> np.ndarray:
-    """d' beta (K, B) for row changes d (K, p), each nonzero only in the terms of its candidate's factor:
-    per factor over those columns (a quarter of them with six factors, not every one)."""
+def _slipped_terms(d: np.ndarray, factor: np.ndarray) -> dict[int, np.ndarray]:
+    """factor -> the model-matrix columns its slips change (d, the candidates' row changes (K, p)): the
+    terms of that factor, a quarter of them with six factors."""
+    return {int(j): np.flatnonzero(np.any(d[factor == j] != 0, axis=0)) for j in np.unique(factor)}
+
+
+def _changed_fit(d: np.ndarray, factor: np.ndarray, beta: np.ndarray, terms_of: dict) -> np.ndarray:
+    """d' beta (K, B) for row changes d (K, p), each nonzero only in the terms of its candidate's factor
+    (``terms_of``, :func:`_slipped_terms`): per factor over those columns, not every one."""
     out = np.zeros((len(d), beta.shape[1]))
     for j in np.unique(factor):
-        rows = factor == j
-        cols = np.flatnonzero(np.any(d[rows] != 0, axis=0))
+        rows, cols = factor == j, terms_of[int(j)]
         if len(cols):
-            out[rows] = d[np.ix_(rows, cols)] @ beta[cols]
+            out[rows] = d[rows][:, cols] @ beta[cols]
     return out
 
 
-def _moved_ratios(xi, r, a, d_beta, ei, sse0) -> np.ndarray:
-    """SSE / SSE(run moved) (K, B) of K candidates: their runs' model rows xi, moved rows r, the change of
-    the fit d' beta and the runs' residuals ei (K, B) (NaN, which no finite response gives, as no
-    improvement)."""
+def _moved_sse(xi, r, a, d_beta, ei, sse0) -> np.ndarray:
+    """SSE with the run moved (K, B) of K candidates: their runs' model rows xi, moved rows r, the change of
+    the fit d' beta and the runs' residuals ei (K, B).  ``d_beta`` and ``ei`` are overwritten: the (K, B)
+    arrays are most of the job's slip search, so each step works in place instead of making a new one."""
     ax = xi @ a.T
-    h = np.einsum("kp,kp->k", xi, ax)[:, None]
-    sse_without = np.maximum(sse0[None, :] - ei ** 2 / (1.0 - h), 0.0)
+    c1 = (1.0 / (1.0 - np.einsum("kp,kp->k", xi, ax)))[:, None]  # 1 / (1 - h)
     rax = np.einsum("kp,kp->k", r, ax)[:, None]
-    g = np.einsum("kp,pq,kq->k", r, a, r)[:, None] + rax ** 2 / (1.0 - h)
-    e_moved = ei - d_beta + rax * (ei / (1.0 - h))
-    sse_moved = sse_without + e_moved ** 2 / (1.0 + g)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        ratio = sse0[None, :] / np.maximum(sse_moved, 1e-300 * np.maximum(sse0[None, :], 1e-300))
-    return np.where(np.isnan(ratio), -np.inf, ratio)
+    g = np.einsum("kp,kp->k", r @ a, r)[:, None] + rax ** 2 * c1
+    scaled = ei * c1  # e / (1 - h)
+    e_moved = np.subtract(ei, d_beta, out=d_beta)
+    e_moved += np.multiply(scaled, rax, out=scaled)  # e - d' beta + r'A x e / (1 - h)
+    sse_without = np.multiply(ei, ei, out=ei)
+    sse_without *= c1
+    np.subtract(sse0[None, :], sse_without, out=sse_without)
+    np.maximum(sse_without, 0.0, out=sse_without)
+    e_moved *= e_moved
+    e_moved *= 1.0 / (1.0 + g)
+    sse_without += e_moved
+    return sse_without
 
 
 def slip_fit(m: Model, same_run: list[SlipCandidate], n_factors: int) -> tuple[SlipCandidate, dict]:

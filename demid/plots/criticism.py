@@ -7,6 +7,10 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import stats
 
+#: Above this many runs a panel's points are drawn as an image in the SVG (every point still drawn; the PNG is
+#: an image anyway): thousands of vector markers made the figure most of a large study's criticism time.
+RASTER_RUNS = 2000
+
 #: What a row's first panel says when no cause is named: the verdict, never "no finding" beside a misfit.
 _NO_CAUSE = {"adequate": "no finding (within the tests' power)",
              "unexplained": "misfit unexplained: no cause singled out",
@@ -15,10 +19,6 @@ _NO_CAUSE = {"adequate": "no finding (within the tests' power)",
 if TYPE_CHECKING:
     from ..criticism.level1 import CriticismResult
     from ..surrogate import SurrogateFit
-
-
-#: Above this many runs a panel's points are drawn into the SVG as one image.
-RASTER_RUNS = 2000
 
 
 # =========================================================================== figure

@@ -8,7 +8,9 @@ import numpy as np
 import pytest
 
 from demid.criticism import catalogue
-from demid.criticism.catalogue import _outlier_null_max, _outlier_stats, added_variable_stats
+from demid.criticism import outliers
+from demid.criticism.catalogue import added_variable_stats
+from demid.criticism.outliers import outlier_null_max, outlier_stats
 from demid.criticism.run_order import _ranks
 from demid.fit_statistics import pure_error_ss
 
@@ -53,11 +55,11 @@ def test_outlier_null_maximum_by_column_blocks_is_the_whole_arrays(cells, monkey
     e = rng.standard_normal((30, 23))
     hat = rng.uniform(0.05, 0.6, 30)
     hat[4] = 0.9999  # a run the others cannot predict: left out of the maximum
-    monkeypatch.setattr(catalogue, "OUTLIER_CELLS", cells)
-    expected = np.max(np.abs(_outlier_stats(e, hat, 20)), axis=0)
+    monkeypatch.setattr(outliers, "OUTLIER_CELLS", cells)
+    expected = np.max(np.abs(outlier_stats(e, hat, 20)), axis=0)
     # a block of one column sums its squares in another order than numpy sums a wider block: the last bit
-    np.testing.assert_allclose(_outlier_null_max(e, hat, 20), expected, rtol=1e-13)
-    assert np.all(expected > 0) and np.argmax(_outlier_null_max(e, hat, 20)) == np.argmax(expected)
+    np.testing.assert_allclose(outlier_null_max(e, hat, 20), expected, rtol=1e-13)
+    assert np.all(expected > 0) and np.argmax(outlier_null_max(e, hat, 20)) == np.argmax(expected)
 
 
 def test_added_variable_f_with_the_callers_sums_of_squares_is_the_same():
@@ -76,7 +78,7 @@ def test_weighted_sums_of_squares_from_normal_equations_are_the_decompositions(s
     """Above ASYMPTOTIC_RUNS the unequal-scatter test fits each weighting from p x p normal equations: the
     residual sums of squares and the likelihood ratio are those of the orthonormal basis (SVD), for
     responses fitted to R^2 ~ 0.9999 and residual columns, with an aliased column too."""
-    from demid.criticism.catalogue import _weighted_sse, heteroscedasticity_lr
+    from demid.criticism.catalogue import heteroscedasticity_lr, weighted_sse
     from demid.criticism.models import orthonormal_basis, residualize
 
     rng = np.random.default_rng(seed)
@@ -89,7 +91,7 @@ def test_weighted_sums_of_squares_from_normal_equations_are_the_decompositions(s
     sw = np.exp(-0.5 * 1.3 * covariate)
     for cols in (y[:, None], e):
         r = residualize(orthonormal_basis(x * sw[:, None]), cols * sw[:, None])
-        np.testing.assert_allclose(_weighted_sse(x * sw[:, None], cols * sw[:, None]), np.sum(r * r, axis=0),
+        np.testing.assert_allclose(weighted_sse(x * sw[:, None], cols * sw[:, None]), np.sum(r * r, axis=0),
                                    rtol=1e-8)
     lr = heteroscedasticity_lr(e, x, covariate)
     monkey = catalogue.ASYMPTOTIC_RUNS
