@@ -16,6 +16,8 @@ from .formulas import f_tail
 def pure_error_ss(y, groups) -> float:
     """Sum of squares of the responses about their replicate-group means (pure error)."""
     y, groups = np.asarray(y, dtype=float), np.asarray(groups)
+    if not np.all(np.isfinite(y)):
+        return float("nan")  # as a sum over every group would give
     # each group's runs in table order, groups in sorted order: one sort, not a pass over the runs per group
     order = np.argsort(groups, kind="stable")
     bounds = np.flatnonzero(groups[order][1:] != groups[order][:-1]) + 1

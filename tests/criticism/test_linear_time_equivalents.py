@@ -100,3 +100,14 @@ def test_weighted_sums_of_squares_from_normal_equations_are_the_decompositions(s
         np.testing.assert_allclose(lr, heteroscedasticity_lr(e, x, covariate), rtol=1e-7, atol=1e-9)
     finally:
         catalogue.ASYMPTOTIC_RUNS = monkey
+
+
+def test_pure_error_of_a_table_with_a_missing_or_infinite_response_is_undefined():
+    rng = np.random.default_rng(0)
+    y, groups = rng.normal(size=20), np.array([0, 0] + list(range(1, 19)))
+    for bad in (np.nan, np.inf):
+        for at in (0, 7):  # in a replicated group and in a run without replicates
+            z = y.copy()
+            z[at] = bad
+            with np.errstate(invalid="ignore"):
+                assert np.isnan(pure_error_ss(z, groups)) and np.isnan(_pure_error_by_group(z, groups))
