@@ -189,10 +189,10 @@ def stop_decision(value: dict | None, evidence: WaveEvidence) -> dict:
 
     They never stop on a surrogate that misfits or does not predict (:func:`surrogate_limits`), unless the
     budget is spent (then: ``recalibrate``).  They stop when the criticism finds the model itself is the limit,
-    when the budget is spent, or when the measured change of the plausible share of Omega between the last two
+    when the budget is spent, when the measured change of the plausible share of Omega between the last two
     waves is within :data:`~demid.wave_value.STOP_CONTRACTION` (the smallest change the loop counts as
-    progress).  A predicted shrink (``value``: :func:`demid.wave_value.expected_contraction`) below that is
-    quoted, never a reason to stop: the first design has no measured change yet, so the loop goes on."""
+    progress), or when the proposed runs are expected to shrink the set by less than that
+    (``value``: :func:`demid.wave_value.expected_contraction`)."""
     from .wave_value import STOP_CONTRACTION
 
     spent = evidence.wave >= evidence.max_waves
@@ -218,24 +218,19 @@ def stop_decision(value: dict | None, evidence: WaveEvidence) -> dict:
         return {"stop": True, "action": "stop", "reason": (
             f"{_change_text(evidence, change)}: within the {100 * STOP_CONTRACTION:g} % change the loop needs to "
             "count a wave as progress, so a further wave of this kind is not expected to buy anything measurable")}
-    # A prediction alone never stops the loop: after the first design the predicted shrink rests on the very
-    # surrogate the next wave tests (benchmarks/loop_vs_lhs.py: stopping on it cost the crossing studies their lead).
+    if change is None and value and value.get("stop"):  # a prediction only where no change is measured yet
+        return {"stop": True, "action": "stop", "reason": (
+            f"the {value['count']} proposed runs are expected to shrink the plausible set of '{value['scenario']}' "
+            f"by only {100 * value['expected_contraction']:.1f} % ({value['plausible_fraction_pct']:.3g} % → "
+            f"{value['expected_fraction_pct']:.3g} % of the wave's range): its width is set by the measurement "
+            "band, not by the surrogate")}
     moving = (f"{_change_text(evidence, change)}: the set still moves" if change is not None else
-              "the first wave's set has nothing to compare with yet" + _predicted_text(value))
+              "the first wave's set has nothing to compare with yet")
     if spent:
         return {"stop": True, "action": "next_runs", "reason": (
             f"{budget} while {moving}; raise waves.max to simulate the {evidence.proposed} proposed runs")}
     return {"stop": False, "action": "next_runs", "reason": (
         f"the waves go on: {moving}; the next wave simulates the {evidence.proposed} proposed runs")}
-
-
-def _predicted_text(value: dict | None) -> str:
-    """The proposed runs' predicted shrink where it is small, as a clause: predicted, not measured."""
-    if not value or not value.get("stop"):
-        return ""
-    return (f" (the {value['count']} proposed runs are expected to shrink the plausible set of '{value['scenario']}' "
-            f"by only {100 * value['expected_contraction']:.1f} %, a prediction of the surrogate the next wave "
-            "tests; the loop stops on a measured change)")
 
 
 #: Names a simulated material's factors and responses cannot take: its table's ``wave`` column and
