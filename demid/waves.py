@@ -195,6 +195,10 @@ def band_fixes_boundary(surrogates: dict) -> bool:
     return bool(shares) and all(s is not None and np.isfinite(s) and s <= BAND_FIXED_SHARE for s in shares)
 
 
+def _largest(surrogates: dict) -> float:
+    return max(st["loo_band"] for st in surrogates.values())
+
+
 def _largest_share(surrogates: dict) -> str:
     shares = [st.get("loo_band") for st in surrogates.values()]
     known = [s for s in shares if s is not None and np.isfinite(s)]
@@ -264,20 +268,26 @@ def stop_decision(value: dict | None, evidence: WaveEvidence) -> dict:
         return {"stop": True, "action": "stop", "reason": (
             "the criticism finds no parameter set meets every target: the model, not the surrogate, is the limit, "
             "and more runs of it cannot change that")}
-    if change is not None and abs(change) <= STOP_CONTRACTION:
+    band_fixed = band_fixes_boundary(evidence.surrogates)
+    settled = change is not None and abs(change) <= STOP_CONTRACTION
+    if settled and band_fixed:
         return {"stop": True, "action": "stop", "reason": (
             f"{_change_text(evidence, change)}: within the {100 * STOP_CONTRACTION:g} % change the loop needs to "
-            "count a wave as progress, so a further wave of this kind is not expected to buy anything measurable")}
+            f"count a wave as progress, and the surrogates' leave-one-out error is at most "
+            f"{_largest(evidence.surrogates):.2f} of the tolerance band's half-width, so the band fixes the set's "
+            "boundary and a further wave of this kind is not expected to buy anything measurable")}
     predicted_small = change is None and bool(value and value.get("stop"))
-    if predicted_small and band_fixes_boundary(evidence.surrogates):  # no change measured yet: the prediction
-        largest = max(st["loo_band"] for st in evidence.surrogates.values())
+    if predicted_small and band_fixed:  # no change measured yet: the prediction
         return {"stop": True, "action": "stop", "reason": (
             f"the {value['count']} proposed runs are expected to shrink the plausible set of '{value['scenario']}' "
             f"by only {100 * value['expected_contraction']:.1f} % ({value['plausible_fraction_pct']:.3g} % → "
             f"{value['expected_fraction_pct']:.3g} % of the wave's range) and the surrogates' leave-one-out error "
-            f"is at most {largest:.2f} of the tolerance band's half-width: the band, not the surrogate, fixes the "
-            "set's boundary, so more runs are not expected to change the set by more than its own uncertainty")}
-    if change is not None:
+            f"is at most {_largest(evidence.surrogates):.2f} of the tolerance band's half-width: the band, not the "
+            "surrogate, fixes the set's boundary, so more runs are not expected to change the set by more than its "
+            "own uncertainty")}
+    if settled:
+        moving = f"{_change_text(evidence, change)}, but {_largest_share(evidence.surrogates)}"
+    elif change is not None:
         moving = f"{_change_text(evidence, change)}: the set still moves"
     elif predicted_small:
         moving = (f"the proposed runs are expected to shrink the set by only "

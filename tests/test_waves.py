@@ -27,7 +27,8 @@ _NUMBER = r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?"
 
 def _evidence(**changes) -> WaveEvidence:
     base = dict(wave=2, max_waves=4, plausible_pct=1.55, previous_pct=1.40,
-                surrogates={"y1": {"q2": 0.97, "lof_p": 0.40}}, model_limit=False, proposed=9, criticism_runs=0)
+                surrogates={"y1": {"q2": 0.97, "lof_p": 0.40, "loo_band": 0.1}}, model_limit=False, proposed=9,
+                criticism_runs=0)
     return WaveEvidence(**{**base, **changes})
 
 
@@ -82,10 +83,10 @@ def _expected(value, ev: WaveEvidence) -> tuple[bool, str]:
     if ev.model_limit:
         return True, "stop"
     change = None if ev.previous_pct is None or ev.previous_pct <= 0 else ev.plausible_pct / ev.previous_pct - 1
-    if change is not None and abs(change) <= 0.10:
-        return True, "stop"
     band_fixed = all(s.get("loo_band") is not None and math.isfinite(s["loo_band"]) and s["loo_band"] <= 0.25
                      for s in ev.surrogates.values())
+    if change is not None and abs(change) <= 0.10 and band_fixed:
+        return True, "stop"
     if change is None and value and value["stop"] and band_fixed:
         return True, "stop"
     return (True, "next_runs") if spent else (False, "next_runs")
@@ -171,6 +172,20 @@ def test_after_the_first_design_a_predicted_shrink_stops_only_where_the_band_fix
             assert f"up to {max(known):.2f} of the tolerance band's half-width" in decision["reason"]
         else:
             assert "is not known" in decision["reason"]
+
+
+def test_a_settled_share_stops_only_where_the_band_fixes_the_boundary():
+    """A plausible share that moved by less than 10 % between two waves stops the waves only when the
+    surrogates' leave-one-out error is small against the band: a share can stay while the boundary, uncertain by
+    a good part of the band, still moves."""
+    fixed = stop_decision(None, _evidence(previous_pct=2.0, plausible_pct=1.9))
+    assert fixed["stop"] is True and "at most 0.10 of the tolerance band's half-width" in fixed["reason"]
+    loose = {"y1": {"q2": 0.97, "lof_p": 0.40, "loo_band": 0.1}, "y2": {"q2": 0.9, "lof_p": 0.3, "loo_band": 0.6}}
+    going = stop_decision(None, _evidence(previous_pct=2.0, plausible_pct=1.9, surrogates=loose))
+    assert (going["stop"], going["action"]) == (False, "next_runs")
+    assert "(-5.0 %), but the surrogates' leave-one-out error is up to 0.60" in going["reason"]
+    last = stop_decision(None, _evidence(wave=4, previous_pct=2.0, plausible_pct=1.9, surrogates=loose))
+    assert (last["stop"], last["action"]) == (True, "next_runs") and "budget of 4 waves is spent" in last["reason"]
 
 
 def test_a_misfitting_surrogate_asks_for_the_next_runs_and_counts_the_criticisms():

@@ -583,7 +583,8 @@ def _evidence(**changes):
     from demid.waves import WaveEvidence
 
     base = dict(wave=2, max_waves=4, plausible_pct=1.55, previous_pct=1.40,
-                surrogates={"y1": {"q2": 0.97, "lof_p": 0.40}, "y2": {"q2": 0.93, "lof_p": 0.60}},
+                surrogates={"y1": {"q2": 0.97, "lof_p": 0.40, "loo_band": 0.1},
+                            "y2": {"q2": 0.93, "lof_p": 0.60, "loo_band": 0.2}},
                 model_limit=False, proposed=9, criticism_runs=0)
     return WaveEvidence(**{**base, **changes})
 
