@@ -46,139 +46,20 @@ Run:  python benchmarks/loop_vs_lhs.py [--seeds 10] [--seed-start 0] [--quick] [
 RESULTS (default invocation, 60 studies; medians of the set error, loop/LHS the ratio of the medians, wins
 the studies where the loop's set error is lower; "runs" the median runs the loop simulated)
 
-Before the budget and Omega changes (the criticism's runs on top of ``count``; wave k analysed over wave
-k-1's box with the runs inside it):
+Earlier rounds (median set error of the loop, loop/LHS; LHS analysed as a user's table throughout: saturating
+0.648, periodic 1.958, step 0.809, crossing 0.246, corner 0.299, ridge 1.000, all 0.809):
 
-    simulator      CCD   loop    LHS random  loop/LHS  wins vs LHS vs random  cover loop   LHS   runs
-    saturating   0.582  0.324  0.648  0.659      0.50      7/10      8/10           0.84  0.65     31
-    periodic     1.794  0.936  1.958  1.609      0.48      9/10      8/10           0.65  0.02     35
-    step         0.777  0.803  0.809  0.745      0.99      3/10      3/10           0.61  0.47     24
-    crossing     0.467  0.461  0.246  0.232      1.87      3/10      5/10           0.80  0.88     31
-    corner       0.685  0.292  0.299  0.290      0.97      5/10      6/10           0.89  0.91     26
-    ridge        1.089  1.227  1.000  1.131      1.23      1/10      3/10           0.03  0.08     31
-    all          0.999  0.561  0.809  0.747      0.69     28/60     33/60           0.73  0.51     31
-    worse than its own first wave in 18/60; over budget in 18/60 (up to 39 runs, a further wave of 17)
-    by noise level 0.2 / 0.4 / 0.6 / 0.8 / 1 band: loop 0.34 / 0.54 / 0.51 / 0.77 / 0.80,
-    LHS 0.62 / 0.62 / 0.67 / 0.81 / 1.00, random 0.86 / 0.67 / 0.63 / 0.70 / 0.89
+* the criticism's runs on top of ``count``, wave k analysed over wave k-1's box: 0.561 (0.69 x), but over budget
+  in 18/60 (up to 39 runs) and worse than its own first wave in 18/60;
+* ``count`` a hard budget, still over the box: 0.708 (0.88 x), worse than the first wave in 21/60;
+* every wave over Omega with every run (the quadratic): 0.670 (0.83 x), the loop stopping early in 35/60;
+  kriging on the same runs 0.501 against LHS's 0.624, and with every wave run 0.522 (0.65 x): the stop rule
+  cost as much as the surrogate;
+* never stopping on a surrogate that misfits or does not predict: 0.545 (0.67 x), a median 31 of 31 runs;
+* the surrogate chosen by measurement (quadratic or universal kriging, :mod:`demid.surrogate_choice`): 0.457
+  (0.57 x), worse than the first wave in 12/60; LHS's runs with the same choice 0.580.
 
-``count`` a hard budget per wave (the criticism's runs inside it), still analysed over the box:
-
-    saturating   0.582  0.453  0.648  0.659      0.70      6/10      8/10           0.74  0.65     31
-    periodic     1.794  1.000  1.958  1.609      0.51      7/10      7/10           0.71  0.02     31
-    step         0.777  0.865  0.809  0.745      1.07      3/10      3/10           0.57  0.47     22
-    crossing     0.467  0.499  0.246  0.232      2.03      2/10      4/10           0.77  0.88     31
-    corner       0.685  0.300  0.299  0.290      1.00      5/10      6/10           0.89  0.91     26
-    ridge        1.089  1.197  1.000  1.131      1.20      1/10      3/10           0.03  0.08     31
-    all          0.999  0.708  0.809  0.747      0.88     24/60     31/60           0.69  0.51     31
-    worse than its own first wave in 21/60; over budget in 0/60
-    by noise level: loop 0.57 / 0.54 / 0.51 / 0.82 / 0.91
-
-And every wave analysed with every run over Omega (the stop rule before the one below; the same numbers since a simulated wave
-also makes the criticism's runs outside the box: none of these studies had one):
-
-    saturating   0.582  0.359  0.648  0.659      0.55      7/10      9/10           0.77  0.65     22
-    periodic     1.794  1.811  1.958  1.609      0.92      4/10      4/10           0.34  0.02     31
-    step         0.777  0.864  0.809  0.745      1.07      3/10      3/10           0.54  0.47     22
-    crossing     0.467  0.243  0.246  0.232      0.99      4/10      6/10           0.84  0.88     22
-    corner       0.685  0.431  0.299  0.290      1.44      3/10      2/10           0.99  0.91     22
-    ridge        1.089  1.227  1.000  1.131      1.23      1/10      3/10           0.03  0.08     31
-    all          0.999  0.670  0.809  0.747      0.83     22/60     27/60           0.69  0.51     22
-    worse than its own first wave in 21/60; stopped early in 35/60 (20/60 over the box); over budget in 0/60
-    by noise level: loop 0.59 / 0.61 / 0.62 / 0.70 / 0.86
-
-Kriging on the same runs (a diagnostic of the benchmark before the loop had kriging: a quadratic trend with a
-Gaussian-process residual fitted to each method's runs over Omega, strict set as above; median set error,
-loop/LHS, loop's wins against LHS):
-
-    saturating loop 0.357  LHS 0.596  random 0.378   0.60   8/10
-    periodic   loop 0.494  LHS 0.819  random 0.851   0.60   9/10
-    step       loop 0.645  LHS 0.617  random 0.531   1.05   5/10
-    crossing   loop 0.336  LHS 0.500  random 0.578   0.67   8/10
-    corner     loop 0.497  LHS 0.337  random 0.263   1.47   3/10
-    ridge      loop 1.067  LHS 0.912  random 0.829   1.17   3/10
-    all        loop 0.501  LHS 0.624  random 0.596   0.80  36/60
-
-With every wave run (``--full-budget``, ``waves.stop_early: false``; the quadratic as above, then kriging on
-the same runs):
-
-    saturating   0.582  0.338  0.648  0.659      0.52      8/10      9/10           0.79  0.65     31
-    periodic     1.794  1.811  1.958  1.609      0.92      4/10      4/10           0.34  0.02     31
-    step         0.777  0.764  0.809  0.745      0.94      4/10      5/10           0.61  0.47     31
-    crossing     0.467  0.211  0.246  0.232      0.86      6/10      5/10           0.88  0.88     31
-    corner       0.685  0.300  0.299  0.290      1.00      4/10      4/10           1.00  0.91     31
-    ridge        1.089  1.227  1.000  1.131      1.23      1/10      4/10           0.03  0.08     31
-    all          0.999  0.522  0.809  0.747      0.65     27/60     31/60           0.73  0.51     31
-    worse than its own first wave in 18/60; over budget in 0/60
-    kriging: saturating 0.354 (LHS 0.596), periodic 0.494 (0.819), step 0.678 (0.617), crossing 0.253
-    (0.500, 10/10 wins), corner 0.238 (0.337), ridge 1.067 (0.912); all 0.459 against 0.624 (0.74, 40/60 wins)
-
-What it says: the part of the earlier lead that came from runs beyond the budget is gone (0.561 -> 0.708
-at equal budget).  Judged on Omega with every run, the one global quadratic gains where the box cut the set
-(crossing 0.50 -> 0.24, saturating 0.45 -> 0.36) and loses where a box-local quadratic followed what the
-global one cannot (periodic 1.00 -> 1.81, corner 0.30 -> 0.43); the loop stops earlier (35 of 60 studies).
-Nowhere is the goal met (loop <= 0.5 x LHS overall, <= 0.8 x on each simulator): the step and the ridge
-defeat every quadratic (the ridge's set is missed by all three designs), and the runs need a surrogate that
-follows a response the quadratic cannot, judged over Omega.  Kriging on the same runs shows how much: the
-loop's runs give 0.50 (periodic 1.81 -> 0.49), LHS's 0.62; the corner target stays behind, where the loop
-stopped after 13 or 22 runs (the median study simulates 22 of its 31 runs).  The stop rule costs as much
-as the surrogate: with every wave run the loop's median is 0.52 (0.65 x LHS), 0.46 with kriging (0.74 x
-kriging on LHS's runs, the corner now ahead); the step and the ridge remain where no surrogate here helps.
-
-The current code: the waves stop on evidence (:func:`demid.waves.stop_decision`: never while a surrogate misfits
-or does not predict, else on the measured change of the plausible share of Omega, the budget or a model that is
-the limit), every wave over Omega with every run (default invocation, 10 seeds, 959 s on a loaded machine):
-
-    saturating   0.582  0.302  0.648  0.659      0.47      8/10      9/10           0.78  0.65     31
-    periodic     1.794  1.778  1.958  1.609      0.91      4/10      5/10           0.29  0.02     31
-    step         0.777  0.790  0.809  0.745      0.98      4/10      4/10           0.58  0.47     31
-    crossing     0.467  0.241  0.246  0.232      0.98      5/10      6/10           0.87  0.88     31
-    corner       0.685  0.307  0.299  0.290      1.03      4/10      4/10           0.99  0.91     31
-    ridge        1.089  1.073  1.000  1.131      1.07      1/10      4/10           0.00  0.08     31
-    all          0.999  0.545  0.809  0.747      0.67     26/60     32/60           0.70  0.51     31
-    worse than its own first wave in 19/60; stop advised in 10/60; over budget in 0/60
-
-The quadratics misfit or do not predict in most of these studies, so the loop now spends its whole budget
-(median 31 of 31 runs) and comes close to the every-wave numbers above (0.67 x LHS); the goal (0.5 x overall,
-0.8 x on each) is still not met.
-
-With the surrogate chosen by measurement (the current code: from wave 2 on, each response's sets judged by the
-quadratic or universal kriging, :mod:`demid.surrogate_choice`, kriging where its leave-one-out error is at most
-half the quadratic's; the default 60 studies, run as seeds 0-3 and 4-9 side by side, 1896 s + 1651 s on a loaded
-machine).  "LHS" and "random" are the designs analysed as a user's single table (the quadratic); "LHS choice" the
-same LHS runs with the loop's choice:
-
-    simulator      CCD   loop    LHS random  loop/LHS  wins vs LHS vs random  cover loop   LHS   runs
-    saturating   0.582  0.266  0.648  0.659      0.41      8/10      9/10           0.82  0.65     31
-    periodic     1.794  0.681  1.958  1.609      0.35      8/10      8/10           0.57  0.02     31
-    step         0.777  0.710  0.809  0.745      0.88      7/10      6/10           0.65  0.47     31
-    crossing     0.467  0.242  0.246  0.232      0.98      5/10      6/10           0.87  0.88     31
-    corner       0.685  0.307  0.299  0.290      1.03      4/10      4/10           0.99  0.91     31
-    ridge        1.089  1.067  1.000  1.131      1.07      4/10      6/10           0.18  0.08     31
-    all          0.999  0.457  0.809  0.747      0.57     36/60     39/60           0.79  0.51     31
-    worse than its own first wave in 12/60; stop advised in 13/60; over budget in 0/60
-    by noise level 0.2 / 0.4 / 0.6 / 0.8 / 1 band: loop 0.30 / 0.30 / 0.50 / 0.43 / 0.84,
-    LHS 0.62 / 0.62 / 0.67 / 0.81 / 1.00
-    kriging judged the last wave's set of 30 of the 60 studies
-
-    the same runs with the choice   LHS choice  random choice  loop/LHS choice  loop's wins  cover LHS choice
-    saturating                           0.648          0.631             0.41         8/10              0.68
-    periodic                             0.865          0.930             0.79         5/10              0.47
-    step                                 0.580          0.534             1.22         5/10              0.66
-    crossing                             0.246          0.232             0.98         5/10              0.88
-    corner                               0.299          0.273             1.03         4/10              0.90
-    ridge                                0.865          0.934             1.23         2/10              0.52
-    all                                  0.580          0.591             0.79        29/60              0.68
-
-What it says: the choice cuts the loop's median set error 0.545 -> 0.457 (0.67 -> 0.57 x LHS analysed as a
-user's table), most on the periodic response (1.78 -> 0.68) and the saturating one (0.30 -> 0.27), and the loop
-is worse than its own first wave in 12 studies instead of 19.  Much of that is the surrogate, not the runs: LHS's
-runs with the same choice give 0.580 (periodic 1.96 -> 0.87, step 0.81 -> 0.58), and against that the loop is
-0.79 x overall, ahead on saturating and periodic responses, level on crossing bands and the corner target, behind
-on the step and the ridge.  The goal (0.5 x LHS overall, 0.8 x on each simulator) is not met: where the runs go
-(a quadratic D-optimal design in the refocused box) is now the larger part of what is left.  The choice by Q² is
-not the choice by set error in every study (saturating seed 2: LHS's quadratic 0.23, its kriging 0.75).
-
-The current code: the surrogate chosen by measurement AND the runs placed over Omega where they decide the set
+The previous round: the surrogate chosen by measurement AND the runs placed over Omega where they decide the set
 (:mod:`demid.boundary_runs`: three quarters where the strict classification is most likely wrong, spread apart,
 a quarter exploring where the set could still be; the criticism's runs first; all inside ``count``).  Default
 invocation, 60 studies, 864 s on a loaded machine:
@@ -216,6 +97,36 @@ the strict classification of a noisy surrogate does where the band is thin.  LHS
 seed-to-seed scatter.  With every wave run (``--full-budget``, the same seeds) the loop is 0.206, 0.79 x LHS
 (9/16 wins, coverage 0.92, false inside 0.115): on crossing it is the runs the stop rule leaves unspent that cost the
 loop its lead, more than where it places them.
+
+The current code: the stop rule asks the band to fix the set's boundary before any stop on a settled or predicted
+change (:func:`demid.waves.stop_decision`: every surrogate's leave-one-out RMS error at most
+:data:`demid.waves.BAND_FIXED_SHARE` = 0.25 of its tolerance band's half-width; after the first design a small
+predicted shrink alone no longer stops the waves).  Default invocation, 60 studies, run per simulator side by side
+(step's rows read from its printed lines, so its coverage is the previous round's, the same runs):
+
+    simulator      CCD   loop    LHS random  loop/LHS  wins vs LHS vs random  cover loop   LHS   runs
+    saturating   0.582  0.303  0.648  0.659      0.47      8/10      9/10           0.83  0.65     31
+    periodic     1.794  0.587  1.958  1.609      0.30     10/10      9/10           0.75  0.02     31
+    step         0.777  0.411  0.808  0.745      0.51     10/10         -           0.78  0.47     31
+    crossing     0.467  0.244  0.246  0.232      0.99      8/10      5/10           0.88  0.88     31
+    corner       0.685  0.191  0.299  0.290      0.64      8/10      8/10           0.99  0.91     31
+    ridge        1.089  0.909  1.000  1.131      0.91      6/10      6/10           0.65  0.08     31
+    all          0.999  0.393  0.808      -      0.49     50/60         -          ~0.84     -     31
+    worse than its own first wave in 8/60 (crossing 3, ridge 3, saturating 1, corner 1); stop advised in 1 of the
+    50 with a CSV; over budget in 0/60; set error split (50 studies without step) missed 0.157, false inside 0.190
+
+Held out (``--simulators crossing,corner,ridge --seeds 3 --seed-start 100``, 9 studies): crossing 0.158 against
+LHS 0.128 (1.24 x, 1/3 wins), corner 0.155 / 0.262 (0.59 x, 3/3), ridge 0.870 / 1.042 (0.84 x, 3/3); all 0.209 /
+0.393 (0.53 x, 7/9), coverage 0.93 (LHS 0.79), every study 31 runs.
+
+What it says: only the studies the old rule stopped early change (the new rule only adds a condition to each
+stop), and all but one of them (22 runs: its band fixed the boundary) now spend the whole budget.  The corner target gains most (0.252 -> 0.191, 0.84 -> 0.64 x LHS:
+goal met), the crossing bands a little (0.260 -> 0.244, 1.05 -> 0.99 x, 8/10 wins; on 3 held-out seeds still
+behind LHS); overall 0.406 -> 0.393 (0.49 x).  Not met: crossing (0.99 x) and ridge (0.91 x, unchanged: its
+studies never stopped) against 0.8 x each, median coverage (~0.84 against 0.90), and the loop is worse than its
+first wave in 8 of 60 studies (6 before: some studies that stopped after the CCD now go on and end worse).  The
+surrogate choice by classification, the scoring of the plausible set and anisotropic kriging for the ridge are
+not tried yet.
 """
 
 from __future__ import annotations

@@ -102,6 +102,12 @@ def next_wave_runs(proposals: pd.DataFrame, factors, first_run: int) -> pd.DataF
 STOP_Q2 = 0.5
 #: A lack-of-fit p-value at or below this says the surrogate misfits the replicated runs.
 LACK_OF_FIT_ALPHA = 0.05
+#: After the first design (no change measured yet) the waves stop on a predicted shrink only when each
+#: observable's leave-one-out prediction error is at most this share of its tolerance band's half-width: then
+#: the set's boundary lies within a quarter of the band of where it is drawn, so the band, not the surrogate,
+#: fixes it and more runs cannot move it by much.  A larger error (noise or a surrogate still learning the
+#: response) moves the boundary by a good part of the band, which the next wave's runs can still correct.
+BAND_FIXED_SHARE = 0.25
 
 
 @dataclass(frozen=True)
@@ -116,7 +122,7 @@ class WaveEvidence:
     max_waves: int
     plausible_pct: float
     previous_pct: float | None
-    surrogates: dict  # response -> {"q2": float, "lof_p": float}
+    surrogates: dict  # response -> {"q2": float, "lof_p": float, "loo_band": float}
     model_limit: bool
     proposed: int
     criticism_runs: int
@@ -151,14 +157,55 @@ def _change_text(evidence: WaveEvidence, change: float) -> str:
             f"({100 * change:+.1f} %)")
 
 
-def surrogate_evidence(row) -> dict:
-    """One response's Q² and lack-of-fit p-value for the stop rule, of the surrogate its sets use (a fit
-    statistics row): kriging has no lack-of-fit test (its nugget is the scatter it fits), so only its Q²."""
+def loo_error(row) -> float:
+    """The root-mean-square leave-one-out prediction error of the surrogate a response's sets use (a fit
+    statistics row): the quadratic's sqrt(PRESS / n); kriging's from its Q² on the same runs' total sum of
+    squares (SST = PRESS / (1 - Q²) of the quadratic).  NaN where undefined."""
+    from .kriging import KIND
+    from .surrogate_choice import used_q2
+
+    n, press = float(getattr(row, "n_runs", np.nan)), float(getattr(row, "press", np.nan))
+    if not (n > 0 and np.isfinite(press)):
+        return float("nan")
+    if getattr(row, "surrogate", None) != KIND:
+        return math.sqrt(max(press, 0.0) / n)
+    q2_quadratic = float(row.q2)
+    if not (np.isfinite(q2_quadratic) and q2_quadratic < 1.0):
+        return float("nan")
+    sst = press / (1.0 - q2_quadratic)
+    return math.sqrt(max(1.0 - used_q2(row), 0.0) * sst / n)
+
+
+def surrogate_evidence(row, band: float = float("nan")) -> dict:
+    """One response's Q², lack-of-fit p-value and leave-one-out error in units of its tolerance band's
+    half-width ``band`` (``loo_band``) for the stop rule, of the surrogate its sets use (a fit statistics row):
+    kriging has no lack-of-fit test (its nugget is the scatter it fits), so only its Q²."""
     from .kriging import KIND
     from .surrogate_choice import used_q2
 
     lof_p = float("nan") if getattr(row, "surrogate", None) == KIND else float(row.lof_p)
-    return {"q2": used_q2(row), "lof_p": lof_p}
+    loo_band = loo_error(row) / band if band > 0 else float("nan")
+    return {"q2": used_q2(row), "lof_p": lof_p, "loo_band": loo_band}
+
+
+def band_fixes_boundary(surrogates: dict) -> bool:
+    """Whether every response's leave-one-out error is at most :data:`BAND_FIXED_SHARE` of its band (unknown:
+    no)."""
+    shares = [st.get("loo_band") for st in surrogates.values()]
+    return bool(shares) and all(s is not None and np.isfinite(s) and s <= BAND_FIXED_SHARE for s in shares)
+
+
+def _largest(surrogates: dict) -> float:
+    return max(st["loo_band"] for st in surrogates.values())
+
+
+def _largest_share(surrogates: dict) -> str:
+    shares = [st.get("loo_band") for st in surrogates.values()]
+    known = [s for s in shares if s is not None and np.isfinite(s)]
+    if len(known) < len(shares) or not known:
+        return "the surrogates' leave-one-out error against the tolerance band is not known"
+    return (f"the surrogates' leave-one-out error is up to {max(known):.2f} of the tolerance band's half-width "
+            f"(more than {BAND_FIXED_SHARE:g}), so the next wave's runs can still move the set's boundary")
 
 
 def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, plausible: pd.DataFrame,
@@ -168,14 +215,18 @@ def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, pl
     ``runs``, and the previous wave's decision (``previous``, None for wave 1)."""
     from .next_wave import refocus_scenario
     from .run_purposes import CONFIRM, DECIDE
+    from .tolerance import observable_band
 
     analysed = wave_spec(spec, "", domain) if domain is not None else spec
     scenario = refocus_scenario(analysed)
     rows = plausible[plausible["scenario"] == scenario]
     plausible = float(rows["robust_fraction_pct"].iloc[0]) if len(rows) else 0.0  # a share of Omega already
     observables = next(sc.observables for sc in analysed.scenarios if sc.name == scenario)
+    tolerance = next(sc.tolerance for sc in analysed.scenarios if sc.name == scenario)
     by_response = {row.response: row for row in statistics.itertuples()}
-    surrogates = {r: surrogate_evidence(by_response[r]) for r in observables if r in by_response}
+    surrogates = {r: surrogate_evidence(by_response[r], observable_band(analysed.response(r), analysed.targets[r],
+                                                                        tolerance))
+                  for r in observables if r in by_response}
     level2 = criticism.get("level2") or {}
     return WaveEvidence(wave=wave, max_waves=waves_max(spec), plausible_pct=plausible,
                         previous_pct=None if previous is None else previous.get("plausible_fraction_of_omega_pct"),
@@ -191,8 +242,11 @@ def stop_decision(value: dict | None, evidence: WaveEvidence) -> dict:
     budget is spent (then: ``recalibrate``).  They stop when the criticism finds the model itself is the limit,
     when the budget is spent, when the measured change of the plausible share of Omega between the last two
     waves is within :data:`~demid.wave_value.STOP_CONTRACTION` (the smallest change the loop counts as
-    progress), or when the proposed runs are expected to shrink the set by less than that
-    (``value``: :func:`demid.wave_value.expected_contraction`)."""
+    progress), or, with no change measured yet (after the first design), when the proposed runs are expected to
+    shrink the set by less than that (``value``: :func:`demid.wave_value.expected_contraction`) AND each
+    surrogate's leave-one-out error is small against the tolerance band (:func:`band_fixes_boundary`): only then
+    does the band, not the surrogate, fix the set's boundary, so the next wave's expected change is small against
+    the set's own uncertainty."""
     from .wave_value import STOP_CONTRACTION
 
     spent = evidence.wave >= evidence.max_waves
@@ -214,18 +268,32 @@ def stop_decision(value: dict | None, evidence: WaveEvidence) -> dict:
         return {"stop": True, "action": "stop", "reason": (
             "the criticism finds no parameter set meets every target: the model, not the surrogate, is the limit, "
             "and more runs of it cannot change that")}
-    if change is not None and abs(change) <= STOP_CONTRACTION:
+    band_fixed = band_fixes_boundary(evidence.surrogates)
+    settled = change is not None and abs(change) <= STOP_CONTRACTION
+    if settled and band_fixed:
         return {"stop": True, "action": "stop", "reason": (
             f"{_change_text(evidence, change)}: within the {100 * STOP_CONTRACTION:g} % change the loop needs to "
-            "count a wave as progress, so a further wave of this kind is not expected to buy anything measurable")}
-    if change is None and value and value.get("stop"):  # a prediction only where no change is measured yet
+            f"count a wave as progress, and the surrogates' leave-one-out error is at most "
+            f"{_largest(evidence.surrogates):.2f} of the tolerance band's half-width, so the band fixes the set's "
+            "boundary and a further wave of this kind is not expected to buy anything measurable")}
+    predicted_small = change is None and bool(value and value.get("stop"))
+    if predicted_small and band_fixed:  # no change measured yet: the prediction
         return {"stop": True, "action": "stop", "reason": (
             f"the {value['count']} proposed runs are expected to shrink the plausible set of '{value['scenario']}' "
             f"by only {100 * value['expected_contraction']:.1f} % ({value['plausible_fraction_pct']:.3g} % → "
-            f"{value['expected_fraction_pct']:.3g} % of the wave's range): its width is set by the measurement "
-            "band, not by the surrogate")}
-    moving = (f"{_change_text(evidence, change)}: the set still moves" if change is not None else
-              "the first wave's set has nothing to compare with yet")
+            f"{value['expected_fraction_pct']:.3g} % of the wave's range) and the surrogates' leave-one-out error "
+            f"is at most {_largest(evidence.surrogates):.2f} of the tolerance band's half-width: the band, not the "
+            "surrogate, fixes the set's boundary, so more runs are not expected to change the set by more than its "
+            "own uncertainty")}
+    if settled:
+        moving = f"{_change_text(evidence, change)}, but {_largest_share(evidence.surrogates)}"
+    elif change is not None:
+        moving = f"{_change_text(evidence, change)}: the set still moves"
+    elif predicted_small:
+        moving = (f"the proposed runs are expected to shrink the set by only "
+                  f"{100 * value['expected_contraction']:.1f} %, but {_largest_share(evidence.surrogates)}")
+    else:
+        moving = "the first wave's set has nothing to compare with yet"
     if spent:
         return {"stop": True, "action": "next_runs", "reason": (
             f"{budget} while {moving}; raise waves.max to simulate the {evidence.proposed} proposed runs")}

@@ -227,6 +227,29 @@ def test_a_quadratic_response_keeps_the_quadratic(seed, tmp_path):
     assert choice.surrogates["y"] is quadratic["y"]
 
 
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_the_stop_rules_leave_one_out_error_is_the_used_surrogates_own(seed, tmp_path):
+    """The stop rule's leave-one-out error of a response (demid.waves.loo_error, read from the stored statistics)
+    is the root mean square of the leave-one-out residuals of the surrogate its sets use, computed here from the
+    surrogate itself: kriging's on a saturating response, the quadratic's where it is kept."""
+    from demid.kriging import QUADRATIC
+    from demid.waves import loo_error, surrogate_evidence
+
+    _, _, _, choice = _choice(_saturating, seed, tmp_path)
+    row = next(choice.statistics.itertuples())
+    used = choice.surrogates["y"]
+    expected = float(np.sqrt(np.mean(used.loo_residuals ** 2)))
+    assert loo_error(row) == pytest.approx(expected, rel=1e-9)
+    table = _wave_table(_saturating, seed)  # the quadratic's leave-one-out residuals e / (1 - h) by hand
+    a, b, y = (table[c].to_numpy(dtype=float) for c in ("a", "b", "y"))
+    x = np.column_stack([np.ones_like(a), a, b, a * a, a * b, b * b])
+    hat = x @ np.linalg.pinv(x)
+    loo = (y - hat @ y) / (1.0 - np.diag(hat))
+    assert loo_error(row._replace(surrogate=QUADRATIC)) == pytest.approx(float(np.sqrt(np.mean(loo ** 2))), rel=1e-6)
+    assert surrogate_evidence(row, 2 * expected)["loo_band"] == pytest.approx(0.5, rel=1e-9)
+    assert np.isnan(surrogate_evidence(row)["loo_band"])
+
+
 def test_the_choice_is_rebuilt_for_the_next_wave_and_tells_the_stop_rule_its_q2(tmp_path):
     from demid.surrogate_choice import choice_text, chosen_surrogates
     from demid.waves import surrogate_evidence

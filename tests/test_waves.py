@@ -18,7 +18,7 @@ from demid.config import check_semantics, validate_schema
 from demid.errors import InputError
 from demid.spec import MaterialSpec
 from demid.wave_value import STOP_CONTRACTION
-from demid.waves import (LACK_OF_FIT_ALPHA, STOP_Q2, WaveEvidence, box_share, check_simulated, inside_domain,
+from demid.waves import (BAND_FIXED_SHARE, LACK_OF_FIT_ALPHA, STOP_Q2, WaveEvidence, box_share, check_simulated, inside_domain,
                          measured_change, next_wave_runs, stop_decision, stops_early, surrogate_limits, wave_evidence,
                          wave_material, wave_summary, waves_max)
 
@@ -27,7 +27,8 @@ _NUMBER = r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?"
 
 def _evidence(**changes) -> WaveEvidence:
     base = dict(wave=2, max_waves=4, plausible_pct=1.55, previous_pct=1.40,
-                surrogates={"y1": {"q2": 0.97, "lof_p": 0.40}}, model_limit=False, proposed=9, criticism_runs=0)
+                surrogates={"y1": {"q2": 0.97, "lof_p": 0.40, "loo_band": 0.1}}, model_limit=False, proposed=9,
+                criticism_runs=0)
     return WaveEvidence(**{**base, **changes})
 
 
@@ -82,15 +83,18 @@ def _expected(value, ev: WaveEvidence) -> tuple[bool, str]:
     if ev.model_limit:
         return True, "stop"
     change = None if ev.previous_pct is None or ev.previous_pct <= 0 else ev.plausible_pct / ev.previous_pct - 1
-    if change is not None and abs(change) <= 0.10:
+    band_fixed = all(s.get("loo_band") is not None and math.isfinite(s["loo_band"]) and s["loo_band"] <= 0.25
+                     for s in ev.surrogates.values())
+    if change is not None and abs(change) <= 0.10 and band_fixed:
         return True, "stop"
-    if change is None and value and value["stop"]:
+    if change is None and value and value["stop"] and band_fixed:
         return True, "stop"
     return (True, "next_runs") if spent else (False, "next_runs")
 
 
 _surrogate = st.fixed_dictionaries({"q2": st.sampled_from([0.97, 0.62, 0.5, 0.49, float("nan")]),
-                                    "lof_p": st.sampled_from([0.8, 0.051, 0.05, 0.003, float("nan")])})
+                                    "lof_p": st.sampled_from([0.8, 0.051, 0.05, 0.003, float("nan")]),
+                                    "loo_band": st.sampled_from([0.05, 0.25, 0.26, 0.9, float("nan")])})
 
 
 @given(wave=st.integers(1, 5), max_waves=st.integers(1, 5), previous=st.sampled_from([None, 0.0, 1.0, 2.5, 40.0]),
@@ -137,7 +141,9 @@ def test_stop_decision_reads_the_change_threshold_on_both_sides_and_for_a_shrink
 
 
 def test_a_predicted_shrink_is_quoted_as_its_numbers():
-    decision = stop_decision(_value(0.04, True), _evidence(wave=1, previous_pct=None))
+    fixed = {"y1": {"q2": 0.97, "lof_p": 0.40, "loo_band": 0.12}}
+    decision = stop_decision(_value(0.04, True), _evidence(wave=1, previous_pct=None, surrogates=fixed))
+    assert "leave-one-out error is at most 0.12 of the tolerance band's half-width" in decision["reason"]
     quoted = re.search(rf"the (\d+) proposed runs are expected to shrink the plausible set of 'both' by only "
                        rf"({_NUMBER}) % \(({_NUMBER}) % → ({_NUMBER}) %", decision["reason"])
     assert quoted, decision["reason"]
@@ -145,6 +151,41 @@ def test_a_predicted_shrink_is_quoted_as_its_numbers():
     assert float(quoted[3]) == pytest.approx(9.3) and float(quoted[4]) == pytest.approx(9.3 * 0.96, rel=1e-3)
     # a measured change decides over a prediction: the same prediction after a moving wave goes on
     assert stop_decision(_value(0.04, True), _evidence(previous_pct=1.0, plausible_pct=2.0))["stop"] is False
+
+
+@pytest.mark.parametrize("shares, stops", [((0.1,), True), ((BAND_FIXED_SHARE,), True), ((0.1, 0.2), True),
+                                           ((0.26,), False), ((0.1, 0.7), False), ((float("nan"),), False),
+                                           ((None,), False)])
+def test_after_the_first_design_a_predicted_shrink_stops_only_where_the_band_fixes_the_boundary(shares, stops):
+    """After the first design nothing is measured yet: a small predicted shrink stops the waves only when every
+    surrogate's leave-one-out error is small against the tolerance band; otherwise the stop line says how large
+    it is and the next wave runs."""
+    assert BAND_FIXED_SHARE == 0.25
+    surrogates = {f"y{i}": {"q2": 0.95, "lof_p": 0.5, **({} if s is None else {"loo_band": s})}
+                  for i, s in enumerate(shares)}
+    decision = stop_decision(_value(0.04, True), _evidence(wave=1, previous_pct=None, surrogates=surrogates))
+    assert (decision["stop"], decision["action"]) == ((True, "stop") if stops else (False, "next_runs"))
+    if not stops:
+        assert "expected to shrink the set by only 4.0 %, but" in decision["reason"]
+        known = [s for s in shares if s is not None and math.isfinite(s)]
+        if len(known) == len(shares):
+            assert f"up to {max(known):.2f} of the tolerance band's half-width" in decision["reason"]
+        else:
+            assert "is not known" in decision["reason"]
+
+
+def test_a_settled_share_stops_only_where_the_band_fixes_the_boundary():
+    """A plausible share that moved by less than 10 % between two waves stops the waves only when the
+    surrogates' leave-one-out error is small against the band: a share can stay while the boundary, uncertain by
+    a good part of the band, still moves."""
+    fixed = stop_decision(None, _evidence(previous_pct=2.0, plausible_pct=1.9))
+    assert fixed["stop"] is True and "at most 0.10 of the tolerance band's half-width" in fixed["reason"]
+    loose = {"y1": {"q2": 0.97, "lof_p": 0.40, "loo_band": 0.1}, "y2": {"q2": 0.9, "lof_p": 0.3, "loo_band": 0.6}}
+    going = stop_decision(None, _evidence(previous_pct=2.0, plausible_pct=1.9, surrogates=loose))
+    assert (going["stop"], going["action"]) == (False, "next_runs")
+    assert "(-5.0 %), but the surrogates' leave-one-out error is up to 0.60" in going["reason"]
+    last = stop_decision(None, _evidence(wave=4, previous_pct=2.0, plausible_pct=1.9, surrogates=loose))
+    assert (last["stop"], last["action"]) == (True, "next_runs") and "budget of 4 waves is spent" in last["reason"]
 
 
 def test_a_misfitting_surrogate_asks_for_the_next_runs_and_counts_the_criticisms():
@@ -360,13 +401,16 @@ def test_wave_evidence_reads_the_refocus_scenarios_share_its_surrogates_and_the_
     spec = _two_scenario_spec()
     plausible = pd.DataFrame({"scenario": ["one", "one", "two", "two"], "factor": ["a", "b"] * 2,
                            "robust_fraction_pct": [40.0, 40.0, 6.25, 6.25]})
-    statistics = pd.DataFrame({"response": ["y3", "y2", "y1"], "q2": [0.1, 0.8, 0.95], "lof_p": [0.5, 0.01, 0.3]})
+    statistics = pd.DataFrame({"response": ["y3", "y2", "y1"], "q2": [0.1, 0.8, 0.95], "lof_p": [0.5, 0.01, 0.3],
+                               "n_runs": [13, 13, 13], "press": [1.0, 13 * 0.35 ** 2, 13 * 0.05 ** 2]})
     runs = pd.DataFrame({"a": np.arange(7) / 10, "purpose": [CONFIRM, "fill", DECIDE, DECIDE, "fill", "x", CONFIRM]})
     criticism = {"level2": {"feasible": feasible}} if feasible is not None else {}
     ev = wave_evidence(spec, 2, None, plausible, statistics, criticism, previous, runs)
     assert (ev.wave, ev.max_waves, ev.plausible_pct) == (2, 3, 6.25)  # the scenario with the most observables
     assert ev.previous_pct == (None if previous is None else previous.get("plausible_fraction_of_omega_pct"))
-    assert ev.surrogates == {"y1": {"q2": 0.95, "lof_p": 0.3}, "y2": {"q2": 0.8, "lof_p": 0.01}}
+    # the leave-one-out error sqrt(PRESS / n) against the band 0.05 x |target|: y1 0.05 / 0.25, y2 0.35 / 0.35
+    assert ev.surrogates == {"y1": {"q2": 0.95, "lof_p": 0.3, "loo_band": pytest.approx(0.2)},
+                             "y2": {"q2": 0.8, "lof_p": 0.01, "loo_band": pytest.approx(1.0)}}
     assert ev.model_limit is (feasible is False)
     assert (ev.proposed, ev.criticism_runs) == (7, 4)
     none = wave_evidence(spec, 1, None, plausible[plausible["scenario"] == "one"], statistics, {}, None, runs.iloc[0:0])

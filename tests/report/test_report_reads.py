@@ -317,7 +317,7 @@ def test_a_simulated_study_tells_its_waves_and_why_the_loop_stopped(tmp_path):
     waves = [_wave_frames(1, 11, 1, 10, 1.40, (0.2, 0.7), 0.91), _wave_frames(2, 18, 1, 15, 1.55, (0.25, 0.6), 0.95),
              _wave_frames(3, 25, 2, 20, 1.44, (0.3, 0.55), 0.97)]
     decision = stop_decision(None, WaveEvidence(wave=3, max_waves=5, plausible_pct=1.44, previous_pct=1.55,
-                                                surrogates={"y": {"q2": 0.97, "lof_p": 0.4}}, model_limit=False,
+                                                surrogates={"y": {"q2": 0.97, "lof_p": 0.4, "loo_band": 0.1}}, model_limit=False,
                                                 proposed=7, criticism_runs=0))
     summary = wave_summary(spec, waves, decision)
     assert [w["simulated"] for w in summary["waves"]] == [11, 18, 25] and summary["waves"][2]["failed"] == 2

@@ -583,7 +583,8 @@ def _evidence(**changes):
     from demid.waves import WaveEvidence
 
     base = dict(wave=2, max_waves=4, plausible_pct=1.55, previous_pct=1.40,
-                surrogates={"y1": {"q2": 0.97, "lof_p": 0.40}, "y2": {"q2": 0.93, "lof_p": 0.60}},
+                surrogates={"y1": {"q2": 0.97, "lof_p": 0.40, "loo_band": 0.1},
+                            "y2": {"q2": 0.93, "lof_p": 0.60, "loo_band": 0.2}},
                 model_limit=False, proposed=9, criticism_runs=0)
     return WaveEvidence(**{**base, **changes})
 
@@ -605,8 +606,12 @@ def test_waves_stop_on_the_measured_change_the_budget_or_the_model_never_on_a_mi
     # 1.55 -> 1.44 %: -7.1 %, within noise: stop though each wave predicted a 35 % shrink
     flat = stop_decision(big, _evidence(wave=3, plausible_pct=1.44, previous_pct=1.55))
     assert flat["stop"] is True and flat["action"] == "stop" and "(-7.1 %): within the 10 % change" in flat["reason"]
-    # wave 1 has no measured change: the prediction decides
-    assert stop_decision(small, _evidence(wave=1, previous_pct=None))["stop"] is True
+    # wave 1 has no measured change: the prediction decides where the band fixes the boundary (each surrogate's
+    # leave-one-out error small against the tolerance band), not where the surrogate's error is a good part of it
+    fixed = {"y1": {"q2": 0.97, "lof_p": 0.40, "loo_band": 0.1}, "y2": {"q2": 0.93, "lof_p": 0.60, "loo_band": 0.2}}
+    assert stop_decision(small, _evidence(wave=1, previous_pct=None, surrogates=fixed))["stop"] is True
+    loose = {**fixed, "y2": {**fixed["y2"], "loo_band": 0.6}}
+    assert stop_decision(small, _evidence(wave=1, previous_pct=None, surrogates=loose))["stop"] is False
     first = stop_decision(big, _evidence(wave=1, previous_pct=None))
     assert first["stop"] is False and "nothing to compare with" in first["reason"]
     # a misfitting surrogate (lack of fit p = 0.019) or one below the stated Q² never stops the loop
