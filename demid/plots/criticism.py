@@ -7,9 +7,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import stats
 
-#: Above this many runs a panel's points are drawn as an image in the SVG (every point still drawn; the PNG is
-#: an image anyway): thousands of vector markers made the figure most of a large study's criticism time.
-RASTER_RUNS = 2000
+from .layout import RASTER_ABOVE_POINTS as RASTER_RUNS  # a module global, read at draw time
 
 #: What a row's first panel says when no cause is named: the verdict, never "no finding" beside a misfit.
 _NO_CAUSE = {"adequate": "no finding (within the tests' power)",

@@ -11,6 +11,11 @@ import math
 #: (9–10 pt, legends 8 pt) keeps its size in print.  Panels wrap into rows instead of shrinking.
 PAGE_WIDTH_IN = 7.2
 
+#: Markers of one artist above which it is drawn as an image inside the SVG (the PNG is the same either way):
+#: a vector marker per run makes a 10,000-run figure's SVG several MB and seconds to write.  Every point is
+#: still drawn; tables of a CCD's size stay vector.
+RASTER_ABOVE_POINTS = 2000
+
 
 def panel_grid(n_panels: int, panel_width: float, panel_height: float, max_width: float = PAGE_WIDTH_IN
                ) -> tuple[int, int, tuple[float, float]]:

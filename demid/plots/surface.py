@@ -9,7 +9,7 @@ import pandas as pd
 
 from ..sampling import Domain
 from .labels import axis_label, tex_label, tex_unit
-from .layout import panel_grid
+from .layout import RASTER_ABOVE_POINTS, panel_grid
 from .style import plt, styled, _axis_scale
 
 if TYPE_CHECKING:
@@ -48,7 +48,7 @@ def surface_figure(domain: Domain, spec: MaterialSpec, grid: pd.DataFrame, n: in
             pts = domain.to_search(table[names[:2]].to_numpy())
             # not clipped: runs on the bounds of the search range are drawn whole
             ax.plot(pts[:, 0], pts[:, 1], "o", ms=3.5, mfc="w", mec="k", mew=0.6, ls="none",
-                    label="design runs", clip_on=False, zorder=5)
+                    label="design runs", clip_on=False, zorder=5, rasterized=len(pts) > RASTER_ABOVE_POINTS)
         ax.set_xlabel(axis_label(spec.factor(names[0])))
         ax.set_ylabel(axis_label(spec.factor(names[1])))
         missed = target is not None and not (z.min() < target < z.max())
