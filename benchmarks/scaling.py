@@ -41,19 +41,19 @@ Most of 200 and 2,000 runs at 6 factors is not the runs' (the Sobol evaluation o
 generated responses scatter in proportion to their level, and against the pooled scale one cell of the top of the
 range passed the Bonferroni bound over 10,000 runs ("11.685914 looks like 11.865914", 4.2 of its own scatter).
 
-The whole pipeline (``snakemake -c2`` on ``write_study``'s studies, /usr/bin/time, one BLAS thread), measured at
-load 9-13 on the two cores: wall is inflated by the load; CPU (user + system) is what an idle machine's wall
-comes close to (on an idle machine, 2,000 x 2 took 14.5 s wall for 16.6 CPU s, 10,000 x 2 37.5 s for 40.6).
+The whole pipeline (``snakemake -c2`` on ``write_study``'s studies, /usr/bin/time, one BLAS thread), the final
+code of the round, measured one after another at load 1-2 on the two cores (an otherwise idle machine):
 
     factors   2,000 rows: wall  CPU    peak      10,000 rows: wall  CPU    peak
-    2         17.7 s  16.9 s   0.5 GB         30.5 s  28.9 s   1.1 GB
-    3         34.1 s  26.3 s   1.3 GB         60.3 s  44.2 s   1.3 GB
-    4         32.3 s  21.0 s   0.5 GB         62.4 s  40.7 s   1.3 GB
-    6         47.2 s  30.2 s   0.6 GB         88.2 s  56.3 s   1.7 GB
+    2         12.8 s  14.9 s   0.5 GB         23.6 s  26.0 s   1.1 GB
+    3         21.8 s  24.2 s   1.3 GB         37.7 s  40.6 s   1.3 GB
+    4         16.5 s  19.9 s   0.5 GB         33.9 s  37.5 s   1.3 GB
+    6         23.7 s  28.1 s   0.6 GB         47.2 s  51.8 s   1.6 GB
 
-Before this round (the previous merge, one run at load ~3), 10,000 x 6 took 68.4 CPU s, 70 s wall.  2,000 rows
-stay above 15 s from 3 factors on: their cost is the fixed part (a 3-factor grid evaluation of the sets, the
-Sobol evaluation and figures with more factors), not the runs.
+Before the round, 10,000 rows of 3 factors took 61.0 s and of 6 factors about 78 s (the material job alone 103
+CPU s); 10,000 x 4's material job alone 158 CPU s.  2,000 rows stay above 15 s from 3 factors on: their cost is
+the fixed part (a 3-factor grid evaluation of the sets, the Sobol evaluation and figures of up to fifteen factor
+pairs with more factors), not the runs.
 """
 
 from __future__ import annotations
