@@ -26,14 +26,14 @@ became linear in the runs (slips for all runs at once, running sums, one decompo
 the slip search worked in place, unequal scatter's gamma searched without a model per step above 256 runs, the
 residual figure's points an image in the SVG above 2,000 runs.
 
-The grid (``--grid``; one material job; CPU s and the job's peak resident memory; load 12-13 on the two cores,
-so wall times are inflated and CPU is the figure to read):
+The grid (``--grid``; one material job; CPU s and the job's peak resident memory; the round's final code at load 1
+on the two cores):
 
     runs   2 factors        4 factors        6 factors
-    13     5.9 s  363 MB    (13 runs cannot determine a quadratic in 4 or 6 factors)
-    200    7.3 s  364 MB    12.3 s  418 MB   19.5 s  428 MB
-    2000   8.2 s  514 MB    12.4 s  497 MB   20.8 s  591 MB
-    10000  20.7 s 1119 MB   33.9 s 1250 MB   48.2 s 1605 MB
+    13     5.6 s  363 MB    (13 runs cannot determine a quadratic in 4 or 6 factors: refused with the column)
+    200    7.1 s  364 MB    11.6 s  416 MB   18.8 s  429 MB
+    2000   8.0 s  543 MB    11.8 s  497 MB   20.0 s  585 MB
+    10000  18.7 s 1118 MB   31.1 s 1252 MB   46.8 s 1607 MB
 
 Most of 200 and 2,000 runs at 6 factors is not the runs' (the Sobol evaluation of the sets, the figures).
 
