@@ -630,7 +630,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/uncertainty/ranking.py": {
         "functions": None,
-        "tests": ["tests/uncertainty/test_ranking.py", "tests/uncertainty/test_met_together_properties.py",
+        "tests": ["tests/uncertainty/test_ranking.py", "tests/uncertainty/test_ranking_whole.py",
+                  "tests/uncertainty/test_met_together_properties.py",
                   "tests/test_reported_numbers.py::test_ranking_reports_gain_fraction_and_contraction_in_closed_form",
                   "tests/test_reported_numbers.py::test_measurement_order_quotes_the_gains_and_fractions_of_the_ranking",
                   "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_unreachable_targets.py"],
