@@ -288,9 +288,10 @@ def _analyse(make_spec, table: pd.DataFrame, folder: Path, name: str, choose_sur
                                choose_surrogate=choose_surrogate)
 
 
-def _estimate(study: Study, spec, result, statistics: pd.DataFrame | None = None) -> np.ndarray:
+def _estimate(study: Study, spec, result, statistics: pd.DataFrame | None = None, plausible: bool = False) -> np.ndarray:
     """The analysis' strict set of the scenario on the common grid, inside the box it covers, by the surrogates
-    its sets used (the choice stored in its statistics; ``statistics`` replaces them)."""
+    its sets used (the choice stored in its statistics; ``statistics`` replaces them); ``plausible``: its
+    plausible set instead (the strict band widened by the surrogates' prediction uncertainty, ``robust_z``)."""
     from demid.io import as_stored
     from demid.surrogate import surrogates_from_frame
     from demid.surrogate_choice import chosen_surrogates
@@ -299,6 +300,10 @@ def _estimate(study: Study, spec, result, statistics: pd.DataFrame | None = None
     quadratic = surrogates_from_frame(as_stored(result.parquet["fits"]), spec.factor_names)
     statistics = as_stored(result.parquet["statistics"]) if statistics is None else statistics
     surrogates = chosen_surrogates(as_stored(result.parquet["table"]), spec, quadratic, statistics)
+    if plausible:
+        from demid.scenario import judged_scenarios
+
+        return judged_scenarios(spec, surrogates, Z)["all"].contains(study.grid, plausible=True)
     judged = scenario_surrogates(surrogates, spec, TOLERANCE)
     lo, hi = np.array([f.lower for f in spec.factors]), np.array([f.upper for f in spec.factors])
     in_box = np.all((study.grid >= lo - 1e-9 * (hi - lo)) & (study.grid <= hi + 1e-9 * (hi - lo)), axis=1)
@@ -330,6 +335,7 @@ def run_loop(study: Study, folder: Path) -> dict:
         wspec, result = _analyse(lambda path: wave_spec(spec, path, domain), analysed, folder, f"wave{wave}",
                                  choose_surrogate=domain is not None)  # as scripts/analyse_wave.py
         scores.append(study.score(_estimate(study, wspec, result)))
+        plausible_score = study.score(_estimate(study, wspec, result, plausible=True))
         if wave == WAVES:
             break
         frames = {name: {"m": as_stored(result.parquet[name])}
@@ -355,7 +361,8 @@ def run_loop(study: Study, folder: Path) -> dict:
         table = pd.concat([table, _table(points, study.simulate(points, rng), int(new["run"].iloc[0]), wave + 1)],
                           ignore_index=True)
     return {"first_err": scores[0][0], "first_cover": scores[0][1], "loop_err": scores[-1][0],
-            "loop_cover": scores[-1][1], "waves": len(scores), "runs": len(table), "largest_wave": largest_wave,
+            "loop_cover": scores[-1][1], "loop_plausible_err": plausible_score[0],
+            "loop_plausible_cover": plausible_score[1], "waves": len(scores), "runs": len(table), "largest_wave": largest_wave,
             "stopped": bool(stop), "kriging_used": _kriging_used(result), "table": table}
 
 
@@ -388,11 +395,13 @@ def run_design(study: Study, points: np.ndarray, folder: Path, name: str, stream
     table = _table(points, study.simulate(points, rng))
     spec, result = _analyse(make_spec, table, folder, name)
     err, cover = study.score(_estimate(study, spec, result))
+    plausible_err, plausible_cover = study.score(_estimate(study, spec, result, plausible=True))
     statistics = as_stored(result.parquet["statistics"])
     quadratic = surrogates_from_frame(as_stored(result.parquet["fits"]), spec.factor_names)
     choice = choose_surrogates(as_stored(result.parquet["table"]), spec, quadratic, statistics)
     choice_err, choice_cover = study.score(_estimate(study, spec, result, choice.statistics))
-    return {"err": err, "cover": cover, "choice_err": choice_err, "choice_cover": choice_cover}
+    return {"err": err, "cover": cover, "plausible_err": plausible_err, "plausible_cover": plausible_cover,
+            "choice_err": choice_err, "choice_cover": choice_cover}
 
 
 def run_case(name: str, sim, seed: int, level: float, grid: int) -> dict:
@@ -451,6 +460,11 @@ def summarise(frame: pd.DataFrame) -> str:
         f"{name} loop {(1 - sub.loop_cover).median():.3f}/{(sub.loop_err - 1 + sub.loop_cover).median():.3f} "
         f"LHS {(1 - sub.lhs_cover).median():.3f}/{(sub.lhs_err - 1 + sub.lhs_cover).median():.3f}"
         for name, sub in groups))
+    lines.append("the plausible sets (the band widened by the surrogates' prediction uncertainty), medians of "
+                 "set error / coverage: " + "; ".join(
+                     f"{name} loop {sub.loop_plausible_err.median():.3f}/{sub.loop_plausible_cover.median():.2f} "
+                     f"LHS {sub.lhs_plausible_err.median():.3f}/{sub.lhs_plausible_cover.median():.2f}"
+                     for name, sub in groups))
     lines.append(f"kriging judged the loop's last set of {int((frame.kriging_used > 0).sum())}/{len(frame)} studies")
     over = frame[(frame.runs > BUDGET) | (frame.largest_wave > COUNT)]
     worse = frame[frame.loop_err > frame.first_err]
