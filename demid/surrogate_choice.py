@@ -28,12 +28,14 @@ from .precision import q2_text
 #: 0.03-0.21 (tests/test_kriging.py's responses, 6 seeds each).  A margin on the unexplained share rather than on
 #: Q² itself: a quadratic with Q² 0.99 can still miss by a tolerance band that kriging meets.
 CHOICE_PRESS_RATIO = 0.5
-#: A quadratic whose leave-one-out Q² is below this misfits visibly (it leaves a tenth of the variation between
-#: runs unexplained): then kriging judges the sets on a smaller gain, :data:`MISFIT_PRESS_RATIO`.  Measured on
-#: the loop benchmark's six simulators (31-run Latin hypercubes and random designs, 10 seeds, the set error of each
-#: response's band): the half margin alone kept the quadratic on a ridge with Q² 0.3-0.5 against kriging's 0.6-0.7
-#: (median set error 0.94 against 0.78 with kriging); this rule picks kriging there and on the step, and keeps the
-#: quadratic on the near-quadratic crossing bands, where kriging's set error was half as large again (0.26 vs 0.17).
+#: Where the quadratic misfits, kriging judges the sets on a smaller gain, :data:`MISFIT_PRESS_RATIO`.  Misfit is
+#: measured against the runs' own scatter where replicates give one (lack of fit against pure error, p at most
+#: :data:`MISFIT_P`), else by a leave-one-out Q² below :data:`QUADRATIC_ADEQUATE_Q2` (a tenth of the variation
+#: between runs left unexplained).  Measured on benchmarks/loop_vs_lhs.py: the half margin alone kept the quadratic
+#: on a ridge with Q² 0.3-0.5 against kriging's 0.6-0.7 (set errors 3.5 against 1.2-1.4); a Q² below 0.9 alone as
+#: the sign of misfit also took kriging on near-quadratic crossing bands whose Q² fell below 0.9 through noise of
+#: a band (set error 0.19 -> 0.40): scatter, not misfit, which the lack-of-fit test tells apart.
+MISFIT_P = 0.05
 QUADRATIC_ADEQUATE_Q2 = 0.9
 MISFIT_PRESS_RATIO = 0.8
 #: Above this many runs kriging is not fitted (its cost grows as the cube of the runs); the quadratic is kept.
@@ -76,32 +78,42 @@ def fit_kriging(table: pd.DataFrame, spec, response: str, hyperparameters: str |
     return KrigingSurrogate.fit(response, spec.factor_names, x, y, lower, upper, spec.log_factors)
 
 
-def prefers_kriging(q2_quadratic: float, q2_kriging: float) -> bool:
+def prefers_kriging(q2_quadratic: float, q2_kriging: float, lof_p: float = float("nan")) -> bool:
     """Kriging judges the sets when its Q² is defined and its unexplained share 1 - Q² is at most
-    :data:`CHOICE_PRESS_RATIO` of the quadratic's, or below :data:`MISFIT_PRESS_RATIO` of it where the quadratic
-    misfits (Q² < :data:`QUADRATIC_ADEQUATE_Q2`), or the quadratic's Q² is undefined (a run alone fixes it)."""
+    :data:`CHOICE_PRESS_RATIO` of the quadratic's, or at most :data:`MISFIT_PRESS_RATIO` of it where the quadratic
+    misfits (:func:`quadratic_misfits`), or the quadratic's Q² is undefined (a run alone fixes it)."""
     if not np.isfinite(q2_kriging):
         return False
     if not np.isfinite(q2_quadratic):
         return True
-    return (1.0 - q2_kriging) <= required_ratio(q2_quadratic) * (1.0 - q2_quadratic)
+    return (1.0 - q2_kriging) <= required_ratio(q2_quadratic, lof_p) * (1.0 - q2_quadratic)
 
 
-def required_ratio(q2_quadratic: float) -> float:
+def quadratic_misfits(q2_quadratic: float, lof_p: float = float("nan")) -> bool:
+    """Whether the quadratic misfits: lack of fit against pure error at p <= :data:`MISFIT_P` where replicates
+    give the test, else a leave-one-out Q² below :data:`QUADRATIC_ADEQUATE_Q2`."""
+    if np.isfinite(lof_p):
+        return lof_p <= MISFIT_P
+    return q2_quadratic < QUADRATIC_ADEQUATE_Q2
+
+
+def required_ratio(q2_quadratic: float, lof_p: float = float("nan")) -> float:
     """The share of the quadratic's leave-one-out error kriging must come within to judge the sets."""
-    return MISFIT_PRESS_RATIO if q2_quadratic < QUADRATIC_ADEQUATE_Q2 else CHOICE_PRESS_RATIO
+    return MISFIT_PRESS_RATIO if quadratic_misfits(q2_quadratic, lof_p) else CHOICE_PRESS_RATIO
 
 
 def choose_surrogates(table: pd.DataFrame, spec, quadratic: dict, statistics: pd.DataFrame) -> SurrogateChoice:
     """Per response of ``spec``, the quadratic (``quadratic``: its surrogates, ``statistics``: its fit
     statistics with ``q2``) or kriging, whichever predicts left-out runs better by the margin of :func:`prefers_kriging`."""
     q2_quadratic = dict(zip(statistics["response"], statistics["q2"].astype(float)))
+    lof_p = dict(zip(statistics["response"], statistics["lof_p"].astype(float))) if "lof_p" in statistics else {}
     chosen, rows = dict(quadratic), []
     for response in statistics["response"]:
         x, _ = response_runs(table, spec.factor_names, response)
         kriging = fit_kriging(table, spec, response) if kriging_fits(len(x), spec) else None
         q2_k = kriging.q2 if kriging is not None else float("nan")
-        use = KIND if kriging is not None and prefers_kriging(q2_quadratic[response], q2_k) else QUADRATIC
+        use = KIND if kriging is not None and prefers_kriging(q2_quadratic[response], q2_k,
+                                                                         lof_p.get(response, float("nan"))) else QUADRATIC
         if use == KIND:
             chosen[response] = kriging
         rows.append({"surrogate": use, "q2_quadratic": q2_quadratic[response], "q2_kriging": q2_k,
@@ -134,7 +146,8 @@ def choice_text(response_label: str, row) -> str:
     if getattr(row, "surrogate", QUADRATIC) != KIND:
         if "q2_kriging" in getattr(row, "_fields", ()) and np.isfinite(row.q2_kriging):
             return (f"{response_label} by the quadratic (Q² {q2_text(float(row.q2))}; kriging's {q2_text(row.q2_kriging)} "
-                    f"does not cut the leave-one-out error to {required_ratio(float(row.q2)):g} of the quadratic's)")
+                    f"does not cut the leave-one-out error to "
+                    f"{required_ratio(float(row.q2), float(getattr(row, 'lof_p', float('nan')))):g} of the quadratic's)")
         return f"{response_label} by the quadratic (Q² {q2_text(float(row.q2))})"
     return f"{response_label} by kriging (Q² {q2_text(row.q2_kriging)} against the quadratic's {q2_text(float(row.q2))})"
 

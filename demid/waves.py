@@ -115,7 +115,9 @@ class WaveEvidence:
     """What one wave's analysis says about stopping: its number and the budget (``waves.max``), the plausible
     share of Omega of the refocus scenario now and after the previous wave (None for wave 1), each response of
     that scenario's Q² and lack-of-fit p-value, whether the criticism finds no parameter set meets every target
-    (the model, not the surrogate, is the limit), and how many of the proposed runs are the criticism's
+    and the plausible set is empty too (the model, not the surrogate, is the limit: level 2 searches the
+    quadratic, and where the surrogate that judges the sets, kriging or the quadratic with its uncertainty,
+    still leaves a plausible region, more runs can change the answer), and how many of the proposed runs are the criticism's
     replicates and deciding runs."""
 
     wave: int
@@ -230,7 +232,8 @@ def wave_evidence(spec: MaterialSpec, wave: int, domain: pd.DataFrame | None, pl
     level2 = criticism.get("level2") or {}
     return WaveEvidence(wave=wave, max_waves=waves_max(spec), plausible_pct=plausible,
                         previous_pct=None if previous is None else previous.get("plausible_fraction_of_omega_pct"),
-                        surrogates=surrogates, model_limit=level2.get("feasible") is False, proposed=len(runs),
+                        surrogates=surrogates, model_limit=level2.get("feasible") is False and plausible <= 0.0,
+                        proposed=len(runs),
                         criticism_runs=int(runs["purpose"].isin([CONFIRM, DECIDE]).sum()) if len(runs) else 0)
 
 

@@ -411,7 +411,10 @@ def test_wave_evidence_reads_the_refocus_scenarios_share_its_surrogates_and_the_
     # the leave-one-out error sqrt(PRESS / n) against the band 0.05 x |target|: y1 0.05 / 0.25, y2 0.35 / 0.35
     assert ev.surrogates == {"y1": {"q2": 0.95, "lof_p": 0.3, "loo_band": pytest.approx(0.2)},
                              "y2": {"q2": 0.8, "lof_p": 0.01, "loo_band": pytest.approx(1.0)}}
-    assert ev.model_limit is (feasible is False)
+    # level 2's "no parameter set meets every target" stops the waves only where the plausible set is empty too
+    assert ev.model_limit is False
+    empty = plausible.assign(robust_fraction_pct=[40.0, 40.0, 0.0, 0.0])
+    assert wave_evidence(spec, 2, None, empty, statistics, criticism, previous, runs).model_limit is (feasible is False)
     assert (ev.proposed, ev.criticism_runs) == (7, 4)
     none = wave_evidence(spec, 1, None, plausible[plausible["scenario"] == "one"], statistics, {}, None, runs.iloc[0:0])
     assert (none.plausible_pct, none.proposed, none.criticism_runs) == (0.0, 0, 0)  # the refocus set has no row
