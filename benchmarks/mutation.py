@@ -500,12 +500,13 @@ TABLE: dict[str, dict] = {
     },
     "demid/sampling/stored.py": {
         "functions": None,
-        "tests": ["tests/sampling/test_stored_sets.py"],
+        "tests": ["tests/sampling/test_stored_sets.py",
+                  "tests/sampling/test_sobol_whole.py::test_the_state_frame_of_no_sets_has_the_columns_and_types_of_a_filled_one"],
     },
     "demid/sampling/sobol.py": {
         "functions": ["sobol_admissible_set", "_extreme_points", "sobol_fraction"],
         "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/sampling/test_admissibility.py",
-                  "tests/sampling/test_sobol_properties.py",
+                  "tests/sampling/test_sobol_properties.py", "tests/sampling/test_sobol_whole.py",
                   "tests/test_core_contracts.py"],
     },
     "demid/sampling/polish.py": {
@@ -521,7 +522,8 @@ TABLE: dict[str, dict] = {
     "demid/precision.py": {
         "functions": None,
         "tests": ["tests/test_precision.py", "tests/test_precision_text_properties.py", "tests/inputs/test_factor_round_off.py",
-                  "tests/test_surrogate.py", "tests/criticism/test_noise_free.py", "tests/test_reported_boundaries.py"],
+                  "tests/test_surrogate.py", "tests/criticism/test_noise_free.py", "tests/test_reported_boundaries.py",
+                  "tests/test_precision_whole.py"],
     },
     "demid/criticism/models.py": {
         "functions": None,
