@@ -500,7 +500,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/sampling/stored.py": {
         "functions": None,
-        "tests": ["tests/sampling/test_stored_sets.py",
+        "tests": ["tests/sampling/test_stored_sets.py", "tests/sampling/test_stored_sets_whole.py",
                   "tests/sampling/test_sobol_whole.py::test_the_state_frame_of_no_sets_has_the_columns_and_types_of_a_filled_one"],
     },
     "demid/sampling/sobol.py": {
