@@ -736,6 +736,7 @@ TABLE: dict[str, dict] = {
     "demid/design.py": {
         "functions": None,
         "tests": ["tests/inputs/test_design.py", "tests/inputs/test_data.py", "tests/test_core_contracts.py",
+                  "tests/inputs/test_design_whole.py",
                   "tests/inputs/test_stranger_tables.py::test_valid_designs_validate_and_are_coded_by_their_geometry"],
     },
     "demid/tolerance.py": {
@@ -1417,6 +1418,35 @@ EQUIVALENT: dict[str, str] = {
     "demid/scenario.py::own_band_basis::float(z) => z#1": _ARITH_FLOAT,
     "demid/scenario.py::own_band_basis::float(tolerance) => tolerance#0": _ARITH_FLOAT,
     "demid/scenario.py::JudgedScenario.likelihood_sd::float(target) => target#0": _ARITH_FLOAT,
+    # --- the sixth round's draws (seeds 28, 29): sampling, input, transcription and report modules
+    "demid/sampling/grid.py::fraction_with_error::0 => -1#0":
+        "z is 0 or a positive number of standard deviations: 'z > -1' only adds z == 0, where the fields are the "
+        "surrogates themselves and the grid predictions passed are predict_grid of those surrogates on the same "
+        "odd n (its one caller's, as the docstring requires): predicted again, the same numbers",
+    "demid/sampling/stored.py::stored_strict_sets::0 => -1#3":
+        "frame.iloc[-1:0] is empty like frame.iloc[0:0]",
+    "demid/sampling/stored.py::stored_strict_sets::0 => -1#5":
+        "set_state_frame writes a scenario's method on every one of its factor rows: the first and the last agree",
+    "demid/sampling/stored.py::stored_strict_sets::0 => -1#9":
+        "the scenarios table writes a scenario's tolerance on every one of its factor rows: the first and the "
+        "last agree",
+    "demid/sampling/stored.py::stored_strict_sets::0 => -1#7":
+        "set_state_frame writes a scenario's exact fraction error on every one of its factor rows: the first "
+        "and the last agree",
+    "demid/sampling/stored.py::stored_strict_sets::0 => -1#10":
+        "set_state_frame writes a scenario's reference distance on every one of its factor rows: the first and "
+        "the last agree",
+    "demid/sampling/polish.py::_polish::0 => -1#0":
+        "domain.to_actual of one point returns one row: its first and last are the same",
+    "demid/sampling/polish.py::_polish::0 => -1#1":
+        "domain.to_actual of one point returns one row: its first and last are the same",
+    "demid/transcription/check.py::_rank_repairs::0 => -1#0":
+        "every block is _add_coefficients(_statistics(...)) with the same coefficient names (evaluate_designs "
+        "and TableDesign.evaluate alike): the first and the last block have the same keys",
+    "demid/io.py::save_figures::2 => 1#0":
+        "one figure saved in a forked child (its whole share) while the parent runs ``also`` and waits, instead "
+        "of in this process: the same save_figure writes the same bytes to the same path, and ``also`` runs "
+        "in this process either way",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
@@ -1486,6 +1516,10 @@ SETTINGS: dict[str, str] = {
     "demid/uncertainty/ranking.py::rank_observable_sets::16 => 17#0":
         "the default number of Sobol points of the posteriors above three factors when none are passed (2^16); "
         "the pipeline passes its posteriors and its own count",
+    "demid/sampling/quadrature.py::zoom_min::17 => 16#0":
+        "the points each zoom round samples its bracket at (every caller takes the default): 16 shrink the "
+        "bracket by 2/15 a round instead of 1/8, and after 11 rounds the minimiser is still placed to about "
+        "1e-10 of the first bracket",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
