@@ -189,3 +189,45 @@ def test_axial_distances_the_table_cannot_tell_apart_on_and_past_each_threshold(
         assert text.startswith("puts the factorial levels")
         shown, most = _numbers(text.replace("1/", ""))[:2]
         assert shown == pytest.approx(float(f"{alpha:g}")) and most == high
+
+
+def _ccd_table(k: int, alpha: float, centres: int):
+    import pandas as pd
+
+    centre, half = np.array([0.5, 6.0, -20.0, 1500.0])[:k], np.array([0.2, 2.5, 4.0, 250.0])[:k]
+    names = [f"x{i + 1}" for i in range(k)]
+    coded = ccd_points(k, alpha, centres)
+    table = pd.DataFrame({"run": np.arange(1, len(coded) + 1),
+                          **{n: centre[i] + coded[:, i] * half[i] for i, n in enumerate(names)}})
+    return table, names, coded, centre, half
+
+
+@pytest.mark.parametrize("k", [2, 3, 4])
+@pytest.mark.parametrize("kind, which", [("factorial", 0), ("factorial", -1), ("axial", 0), ("axial", -1),
+                                         ("centre", 0), ("centre", -1)])
+def test_a_run_of_any_kind_typed_onto_no_point_names_the_one_value_that_restores_it(k, kind, which):
+    """One cell of a CCD's run typed as another level, making a point of no kind: the design is short of one
+    point of that run's kind (factorial 2^k, axial 2k, centres as declared), and the one value restoring it
+    is named with that kind, in actual units."""
+    from demid.design_check import check_design
+    from demid.errors import InputError
+
+    alpha = 1.5
+    table, names, coded, centre, half = _ccd_table(k, alpha, 3)
+    rows = {"factorial": range(2 ** k), "axial": range(2 ** k, 3 * k + 2 ** k - k),
+            "centre": range(2 ** k + 2 * k, len(coded))}[kind]
+    i = list(rows)[which]
+    if kind == "axial":
+        column = 0 if coded[i, 0] == 0 else 1  # a zero coordinate typed as the factorial level +1
+        typed = 1.0
+    else:  # a factorial run's first level typed as the centre; a centre run's as the factorial +1
+        column, typed = 0, (0.0 if kind == "factorial" else 1.0)
+    true_value = table.loc[i, names[column]]
+    table.loc[i, names[column]] = centre[column] + typed * half[column]
+    with pytest.raises(InputError) as err:
+        check_design(table, names, {"type": "ccd", "alpha": alpha, "center_runs": 3}, "t.csv", "materials.m")
+    text = str(err.value)
+    said = re.search(rf"with {names[column]} = ([-\d.e+]+) it would be the {kind} run the design is short of", text)
+    assert said, text
+    assert float(said.group(1)) == pytest.approx(true_value, rel=1e-6, abs=1e-9)
+    assert err.value.run == i + 1
