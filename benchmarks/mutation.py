@@ -694,7 +694,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/paper.py": {
         "functions": None,
-        "tests": ["tests/report/test_paper.py", "tests/report/test_paper_tolerance_rows.py", "tests/test_reported_boundaries.py"],
+        "tests": ["tests/report/test_paper.py", "tests/report/test_paper_tolerance_rows.py", "tests/test_reported_boundaries.py",
+                  "tests/report/test_paper_rules_whole.py"],
     },
     "demid/transcription/engine.py": {
         "functions": None,
