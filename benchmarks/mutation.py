@@ -1445,6 +1445,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/transcription/check.py::_rank_repairs::0 => -1#0":
         "every block is _add_coefficients(_statistics(...)) with the same coefficient names (evaluate_designs "
         "and TableDesign.evaluate alike): the first and the last block have the same keys",
+    "demid/pareto.py::front_intervals::int(len(below)) => len(below)#0": "len() returns an int already",
+    "demid/paper.py::_scenario_set_rows::float(low) => low#0":
+        "float(high) - low is the same float for an int or a float low (a YAML bound of either type)",
     "demid/io.py::save_figures::2 => 1#0":
         "one figure saved in a forked child (its whole share) while the parent runs ``also`` and waits, instead "
         "of in this process: the same save_figure writes the same bytes to the same path, and ``also`` runs "
