@@ -699,7 +699,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/transcription/engine.py": {
         "functions": None,
-        "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_repair_levels_whole.py"],
+        "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_repair_levels_whole.py",
+                  "tests/transcription/test_engine_whole.py"],
     },
     "demid/transcription/check.py": {
         "functions": None,
