@@ -516,7 +516,7 @@ TABLE: dict[str, dict] = {
     "demid/surrogate.py": {
         "functions": None,
         "tests": ["tests/test_surrogate.py", "tests/test_surrogate_properties.py", "tests/test_statistics_known_answers.py",
-                  "tests/test_fit_statistics_whole.py",
+                  "tests/test_fit_statistics_whole.py", "tests/test_surrogate_whole.py",
                   "tests/test_core_contracts.py"],
     },
     "demid/precision.py": {
