@@ -476,7 +476,7 @@ TABLE: dict[str, dict] = {
     "demid/sampling/domain.py": {
         "functions": None,
         "tests": ["tests/sampling/test_set_estimators.py", "tests/sampling/test_admissibility.py", "tests/test_core_contracts.py",
-                  "tests/sampling/test_domain_properties.py",
+                  "tests/sampling/test_domain_properties.py", "tests/sampling/test_domain_whole.py",
                   "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_edges.py::test_at_bound_of_closed_form_exact_sets",
                   "tests/criticism/test_edges.py::test_at_bound_tolerance_is_relative_to_the_range_and_in_log_units"],
     },
