@@ -516,14 +516,14 @@ TABLE: dict[str, dict] = {
     "demid/surrogate.py": {
         "functions": None,
         "tests": ["tests/test_surrogate.py", "tests/test_surrogate_properties.py", "tests/test_statistics_known_answers.py",
-                  "tests/test_fit_statistics_whole.py", "tests/test_surrogate_whole.py",
+                  "tests/test_fit_statistics_whole.py", "tests/test_surrogate_whole.py", "tests/test_blocks_properties.py",
                   "tests/test_core_contracts.py"],
     },
     "demid/precision.py": {
         "functions": None,
         "tests": ["tests/test_precision.py", "tests/test_precision_text_properties.py", "tests/inputs/test_factor_round_off.py",
                   "tests/test_surrogate.py", "tests/criticism/test_noise_free.py", "tests/test_reported_boundaries.py",
-                  "tests/test_precision_whole.py"],
+                  "tests/test_precision_whole.py", "tests/test_surrogate_properties.py"],
     },
     "demid/criticism/models.py": {
         "functions": None,
@@ -574,6 +574,7 @@ TABLE: dict[str, dict] = {
     "demid/sampling/evaluate.py": {
         "functions": None,
         "tests": ["tests/sampling/test_evaluate_known_answers.py", "tests/sampling/test_exact_sets.py",
+                  "tests/sampling/test_exact_error_properties.py", "tests/sampling/test_quadrature_error_estimate.py",
                   "tests/test_reported_numbers.py", "tests/criticism/test_unreachable_targets.py",
                   "tests/sampling/test_set_estimators.py", "tests/test_core_contracts.py"],
     },
