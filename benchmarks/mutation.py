@@ -575,6 +575,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/sampling/test_evaluate_known_answers.py", "tests/sampling/test_exact_sets.py",
                   "tests/sampling/test_exact_error_properties.py", "tests/sampling/test_quadrature_error_estimate.py",
+                  "tests/sampling/test_evaluate_set_whole.py",
                   "tests/test_reported_numbers.py", "tests/criticism/test_unreachable_targets.py",
                   "tests/sampling/test_set_estimators.py", "tests/test_core_contracts.py"],
     },
