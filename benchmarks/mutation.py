@@ -1454,6 +1454,10 @@ EQUIVALENT: dict[str, str] = {
         "every block is _add_coefficients(_statistics(...)) with the same coefficient names (evaluate_designs "
         "and TableDesign.evaluate alike): the first and the last block have the same keys",
     "demid/pareto.py::front_intervals::int(len(below)) => len(below)#0": "len() returns an int already",
+    "demid/sampling/stored.py::stored_strict_sets::float(rows['tolerance'].iloc[0]) => rows['tolerance'].iloc[0]#0":
+        _NUMPY_FLOAT + " (the scenarios table's float tolerance column, compared with float(scen.tolerance))",
+    "demid/sampling/sobol.py::sobol_fraction::observables = tuple(observables) => pass#0":
+        "both callers pass a tuple already (sobol_admissible_set and plausible's set summary make one first)",
     "demid/paper.py::_scenario_set_rows::float(low) => low#0":
         "float(high) - low is the same float for an int or a float low (a YAML bound of either type)",
     "demid/io.py::save_figures::2 => 1#0":

@@ -113,6 +113,7 @@ def test_the_sobol_set_repeats_its_fraction_and_counts_its_own_sample_in_the_eva
     np.testing.assert_array_equal(aset.upper, est.upper)
     assert (aset.method, aset.tolerance, aset.factors, aset.observables) == (
         "scrambled Sobol", 0.2, domain.factors, tuple(observables))
+    assert aset.n_refined_cells == 0 and aset.n_nodes == sample_size  # no grid cells: nothing refined
 
 
 def test_the_state_frame_of_no_sets_has_the_columns_and_types_of_a_filled_one():
