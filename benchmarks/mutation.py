@@ -1457,6 +1457,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/pareto.py::front_intervals::int(len(below)) => len(below)#0": "len() returns an int already",
     "demid/sampling/stored.py::stored_strict_sets::float(rows['tolerance'].iloc[0]) => rows['tolerance'].iloc[0]#0":
         _NUMPY_FLOAT + " (the scenarios table's float tolerance column, compared with float(scen.tolerance))",
+    "demid/surrogate.py::SurrogateFit.term_block_ss::float(np.sum((y - x[:, keep] @ beta) ** 2)) => "
+    "np.sum((y - x[:, keep] @ beta) ** 2)#0": _NUMPY_FLOAT + " (the reduced fit's residual sum of squares)",
     "demid/sampling/sobol.py::sobol_fraction::observables = tuple(observables) => pass#0":
         "both callers pass a tuple already (sobol_admissible_set and plausible's set summary make one first)",
     "demid/paper.py::_scenario_set_rows::float(low) => low#0":
