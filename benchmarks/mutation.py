@@ -761,7 +761,8 @@ TABLE: dict[str, dict] = {
     "demid/canonical.py": {
         "functions": None,
         "tests": ["tests/combinations/test_canonical.py", "tests/combinations/test_canonical_published.py",
-                  "tests/combinations/test_canonical_properties.py", "tests/combinations/test_canonical_planar.py"],
+                  "tests/combinations/test_canonical_properties.py", "tests/combinations/test_canonical_planar.py",
+                  "tests/combinations/test_canonical_whole.py"],
     },
     "demid/wave_value.py": {
         "functions": None,
