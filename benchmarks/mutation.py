@@ -842,7 +842,7 @@ TABLE: dict[str, dict] = {
     "demid/design_inference.py": {
         "functions": None,
         "tests": ["tests/inputs/test_design_inference_properties.py", "tests/inputs/test_design_inference.py",
-                  "tests/inputs/test_design_generation.py"],
+                  "tests/inputs/test_design_generation.py", "tests/inputs/test_inferred_design_whole.py"],
     },
     "demid/design_generation.py": {
         "functions": None,
