@@ -102,3 +102,35 @@ def test_a_value_below_half_its_place_is_zero_and_a_negative_one_keeps_its_sign(
     assert value_text(0.0051, 0.1) == "0.01"
     assert value_text(0.0, 0.5) == ZERO
     assert value_text(0.0) == "0" and value_text(0.0, 0.0) == "0"
+
+
+# ---- the round-off floor: the residual size below which a fit is exact to the table's printed precision
+from demid.precision import ROUND_OFF, printed_place, printed_quantum, round_off_floor, round_off_only  # noqa: E402
+
+
+@given(decimals=st.integers(0, 4), n=st.integers(3, 15), seed=st.integers(0, 10_000),
+       with_factors=st.booleans(), scale=st.sampled_from([1.0, 1e4]))
+@settings(max_examples=30, deadline=None, derandomize=True)
+def test_the_round_off_floor_is_the_larger_of_working_precision_and_the_print(decimals, n, seed, with_factors, scale):
+    import numpy as np
+
+    rng = np.random.default_rng(seed)
+    y = np.round(rng.uniform(1, 9, n) * scale, decimals)
+    y[0] = round(float(y[0]) + 10.0 ** -decimals * 0.3, decimals) + 10.0 ** -decimals  # a value at the last place
+    factor_sd = rng.uniform(0, 0.01, n) if with_factors else None
+    quantum = printed_quantum(y)
+    variance = quantum ** 2 / 12 + (factor_sd ** 2 if with_factors else 0.0)
+    want = max(ROUND_OFF * np.max(np.abs(y)), np.sqrt(1.5 * np.mean(variance)))
+    floor = round_off_floor(y, factor_sd)
+    assert floor == pytest.approx(want, rel=1e-12)
+    below = np.full(n, floor)  # residuals of root mean square exactly the floor: round-off; a little more: not
+    assert round_off_only(below, y, factor_sd)
+    assert not round_off_only(below * 1.001, y, factor_sd)
+    assert not round_off_only([], y, factor_sd)
+    assert round_off_floor([]) == 0.0
+
+
+@pytest.mark.parametrize("cells, place", [(["0.900000", "1.5"], 1e-6), (["83", "12"], 1.0), (["1.5e-3"], 1e-4),
+                                          (["1.2E+3"], 100.0), (["1.2E+3", "7"], 1.0), (["x", "", "−2.25"], 0.01), (["a", "b"], 0.0)])
+def test_a_column_s_printed_place_is_its_finest_printed_digit(cells, place):
+    assert printed_place(cells) == pytest.approx(place, rel=1e-12) if place else printed_place(cells) == 0.0
