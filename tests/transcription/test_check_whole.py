@@ -53,11 +53,14 @@ def _printed(stats, decimals):
 
 
 def _transposed(text):
-    """The first adjacent pair of different digits swapped (a transposition slip)."""
+    """The first adjacent pair of different digits swapped (a transposition slip) that reads as a printed number."""
     digits = [i for i, ch in enumerate(text) if ch.isdigit()]
     for i in digits:
         if i + 1 in digits and text[i] != text[i + 1]:
-            return text[:i] + text[i + 1] + text[i] + text[i + 2:]
+            swapped = text[:i] + text[i + 1] + text[i] + text[i + 2:]
+            bare = swapped.lstrip("-")
+            if not (bare[0] == "0" and bare[1:2].isdigit()):  # no table prints 07.16
+                return swapped
     return None
 
 
