@@ -732,7 +732,8 @@ TABLE: dict[str, dict] = {
     "demid/estimability.py": {
         "functions": None,
         "tests": ["tests/test_core_contracts.py::test_a_quadratic_in_two_factors_needs_seven_usable_runs",
-                  "tests/inputs/test_estimability.py", "tests/inputs/test_estimability_star.py", *[f"tests/inputs/test_stranger_tables.py::{name}" for name in (
+                  "tests/inputs/test_estimability.py", "tests/inputs/test_estimability_star.py",
+                  "tests/inputs/test_estimability_sphere_whole.py", *[f"tests/inputs/test_stranger_tables.py::{name}" for name in (
                       "test_ccd_whose_centre_runs_all_failed_is_refused", "test_criticize_refuses_a_factor_at_two_levels",
                       "test_criticize_and_fit_refuse_a_saturated_fit", "test_criticize_refuses_a_rank_deficient_fit",
                       "test_a_two_level_factorial_with_centre_runs_is_told_why_its_squares_cannot_be_fitted")]],
@@ -1460,6 +1461,10 @@ EQUIVALENT: dict[str, str] = {
         _NUMPY_FLOAT + " (the scenarios table's float tolerance column, compared with float(scen.tolerance))",
     "demid/surrogate.py::SurrogateFit.term_block_ss::float(np.sum((y - x[:, keep] @ beta) ** 2)) => "
     "np.sum((y - x[:, keep] @ beta) ** 2)#0": _NUMPY_FLOAT + " (the reduced fit's residual sum of squares)",
+    "demid/design_inference.py::infer_design::1 + 1e-09 => 1#0":
+        "a factor's alpha is exactly 1.0 (three levels), above 1 + 2 LEVEL_TOLERANCE (four levels) or, for five "
+        "levels, the outer over the inner gap, which exceeds 1 by at least 1 % of the range over the inner gap "
+        "(levels closer than _SAME_LEVEL = 0.5 % of the range are merged): none lies in (1, 1 + 1e-9]",
     "demid/sampling/sobol.py::sobol_fraction::observables = tuple(observables) => pass#0":
         "both callers pass a tuple already (sobol_admissible_set and plausible's set summary make one first)",
     "demid/paper.py::_scenario_set_rows::float(low) => low#0":
