@@ -1465,6 +1465,9 @@ EQUIVALENT: dict[str, str] = {
         "a factor's alpha is exactly 1.0 (three levels), above 1 + 2 LEVEL_TOLERANCE (four levels) or, for five "
         "levels, the outer over the inner gap, which exceeds 1 by at least 1 % of the range over the inner gap "
         "(levels closer than _SAME_LEVEL = 0.5 % of the range are merged): none lies in (1, 1 + 1e-9]",
+    "demid/canonical.py::canonical_analysis::np.all(np.isfinite(x)) => np.any(np.isfinite(x))#0":
+        "the points tested are all NaN (a singular B's stationary point) or all finite (any eigenvalue kept is "
+        "above 1e-12 of the largest), and a NaN coordinate fails the box comparisons that follow anyway",
     "demid/sampling/sobol.py::sobol_fraction::observables = tuple(observables) => pass#0":
         "both callers pass a tuple already (sobol_admissible_set and plausible's set summary make one first)",
     "demid/paper.py::_scenario_set_rows::float(low) => low#0":
