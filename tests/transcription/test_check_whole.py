@@ -111,3 +111,27 @@ def test_the_verdict_before_and_after_a_transposed_cell(seed, k, sign, decimals,
         best = result.suspects[0]
         assert best.kind == "transposition" and best.restores == 4
         assert f"run {row + 1}, column 'y' reads {slipped_text} where {found_text} restores all 4" in result.message
+
+
+@given(seed=st.integers(0, 10_000), k=st.integers(2, 3), sign=st.sampled_from([-1.0, 1.0]),
+       statistic=st.sampled_from(["r2", "adj_r2", "rmse"]))
+@settings(max_examples=6, deadline=None, derandomize=True)
+def test_a_transposed_printed_statistic_is_named_as_the_slip_not_the_table(seed, k, sign, statistic):
+    """Every statistic but one reproduced, and two digits of that one's print swapped: the check says the slip is
+    in the printed statistic, quoting its print and the value it looks like, and counts the others."""
+    table, names, coding, alpha = _table(seed, k, sign)
+    stats = _statistics(coding.to_coded(table[names].to_numpy()), table["y"].to_numpy())
+    published = _printed(stats, 3)
+    right = published[statistic]
+    wrong = _transposed(right)
+    if wrong is None or float(wrong) == float(right) or abs(float(wrong) - stats[statistic]) <= 0.0005:
+        return
+    published[statistic] = wrong
+    result = check_transcription(table, names, "y", published, alpha=alpha)
+    assert not result.consistent and [n for n, ok in result.agrees.items() if not ok] == [statistic]
+    slip = result.printed_slip
+    assert slip is not None, result.message
+    assert (slip["statistic"], slip["printed"]) == (statistic, wrong)
+    assert abs(float(slip["looks_like"]) - stats[statistic]) <= 0.0005 * (1 + 1e-6)
+    assert f"the table reproduces 3 of 4 published statistics of 'y'; the printed {statistic}, {wrong}, looks like " \
+           f"{slip['looks_like']}" in result.message
