@@ -111,7 +111,8 @@ from demid.precision import ROUND_OFF, printed_place, printed_quantum, round_off
 @given(decimals=st.integers(0, 4), n=st.integers(3, 15), seed=st.integers(0, 10_000),
        with_factors=st.booleans(), scale=st.sampled_from([1.0, 1e4]))
 @settings(max_examples=30, deadline=None, derandomize=True)
-def test_the_round_off_floor_is_the_larger_of_working_precision_and_the_print(decimals, n, seed, with_factors, scale):
+def test_the_round_off_floor_is_the_larger_of_working_precision_and_the_print(decimals, n, seed, with_factors,
+                                                                               scale):
     import numpy as np
 
     rng = np.random.default_rng(seed)
@@ -123,14 +124,15 @@ def test_the_round_off_floor_is_the_larger_of_working_precision_and_the_print(de
     want = max(ROUND_OFF * np.max(np.abs(y)), np.sqrt(1.5 * np.mean(variance)))
     floor = round_off_floor(y, factor_sd)
     assert floor == pytest.approx(want, rel=1e-12)
-    below = np.full(n, floor)  # residuals of root mean square exactly the floor: round-off; a little more: not
-    assert round_off_only(below, y, factor_sd)
-    assert not round_off_only(below * 1.001, y, factor_sd)
+    at = np.full(n, floor)  # residuals of root mean square the floor (to its last bit): round-off; a little more: not
+    assert round_off_only(at * (1 - 1e-12), y, factor_sd)
+    assert not round_off_only(at * 1.001, y, factor_sd)
     assert not round_off_only([], y, factor_sd)
     assert round_off_floor([]) == 0.0
 
 
 @pytest.mark.parametrize("cells, place", [(["0.900000", "1.5"], 1e-6), (["83", "12"], 1.0), (["1.5e-3"], 1e-4),
-                                          (["1.2E+3"], 100.0), (["1.2E+3", "7"], 1.0), (["x", "", "−2.25"], 0.01), (["a", "b"], 0.0)])
+                                          (["1.2E+3"], 100.0), (["1.2E+3", "7"], 1.0), (["x", "", "−2.25"], 0.01),
+                                          (["a", "b"], 0.0)])
 def test_a_column_s_printed_place_is_its_finest_printed_digit(cells, place):
     assert printed_place(cells) == pytest.approx(place, rel=1e-12) if place else printed_place(cells) == 0.0
