@@ -893,7 +893,9 @@ TABLE: dict[str, dict] = {
                           "test_ccd_whose_centre_runs_all_failed_is_refused",
                           "test_failed_run_with_a_value_left_in_its_cell_is_an_error")],
                   "tests/test_reported_boundaries.py::test_level_coding_recovers_the_centre_and_unit_of_a_design_with_or_without_its_centre_run",
-                  "tests/inputs/test_design_whole.py::test_a_run_of_any_kind_typed_onto_no_point_names_the_one_value_that_restores_it"],
+                  "tests/inputs/test_design_whole.py::test_a_run_of_any_kind_typed_onto_no_point_names_the_one_value_that_restores_it",
+                  "tests/inputs/test_design_whole.py::"
+                  "test_values_off_the_value_their_level_usually_reads_are_each_named_with_both_numbers"],
     },
     "demid/criticism/discrimination.py": {
         "functions": None,

@@ -231,3 +231,41 @@ def test_a_run_of_any_kind_typed_onto_no_point_names_the_one_value_that_restores
     assert said, text
     assert float(said.group(1)) == pytest.approx(true_value, rel=1e-6, abs=1e-9)
     assert err.value.run == i + 1
+
+
+@given(seed=st.integers(0, 10_000), k=st.integers(1, 3), odd=st.integers(0, 3), tie=st.booleans())
+@settings(max_examples=25, deadline=None, derandomize=True)
+def test_values_off_the_value_their_level_usually_reads_are_each_named_with_both_numbers(seed, k, odd, tie):
+    """Per factor and level, the value most runs at it read (strictly most: a tie names nothing) and every run
+    that reads another value, with both numbers and the count; a level held by one run has nothing to compare."""
+    import pandas as pd
+
+    from demid.design_check import odd_level_values
+
+    rng = np.random.default_rng(seed)
+    levels = np.array([-1.0, 0.0, 1.0])
+    snapped = rng.choice(levels, size=(12, k))
+    snapped[:6, 0] = 0.0  # six runs at the centre of the first factor
+    values = 5.0 + 2.0 * snapped
+    off = rng.choice(6, size=min(odd, 2), replace=False) if not tie else np.arange(3)
+    values[off, 0] += 0.0003 * (1 + np.arange(len(off)) % 2)
+    if tie:  # three read 5.0003 or 5.0006, three 5.0: a tie between 5.0 and no single other value
+        values[off, 0] = 5.0003
+    table = pd.DataFrame({"run": np.arange(101, 113), **{f"x{j}": values[:, j] for j in range(k)}})
+    got = odd_level_values(table, [f"x{j}" for j in range(k)], snapped, "t.csv")
+    want = []
+    for j in range(k):
+        for level in np.unique(snapped[:, j]):
+            rows = np.flatnonzero(snapped[:, j] == level)
+            distinct, counts = np.unique(values[rows, j], return_counts=True)
+            if len(distinct) < 2 or counts.max() < 2 or (counts == counts.max()).sum() > 1:
+                continue
+            usual = distinct[np.argmax(counts)]
+            want += [(101 + i, f"x{j}", values[i, j], int(counts.max()), usual) for i in rows
+                     if values[i, j] != usual]
+    said = [re.match(r"t\.csv, run (\d+), column '(\w+)': (\S+), where the other (\d+) runs at this level read "
+                     r"(\S+) \(fitted as recorded; a typo\?\)$", text).groups() for text in got]
+    assert [(int(r), c, float(v), int(n), float(u)) for r, c, v, n, u in said] == [
+        (r, c, pytest.approx(v, rel=1e-9), n, pytest.approx(u, rel=1e-9)) for r, c, v, n, u in want]
+    if tie:
+        assert not any("column 'x0'" in text and ", where the other 3 runs" in text for text in got)
