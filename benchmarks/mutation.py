@@ -184,7 +184,9 @@ function of demid.design, a CCD run of any kind typed onto no point, an inferred
 one-sphere refusal (tests/inputs/*_whole.py); a paper row on and past each tolerance, a canonical analysis, the
 file writers (tests/report/test_paper_rules_whole.py, tests/combinations/test_canonical_whole.py,
 tests/test_io_whole.py).  The 25 files hold 363 tests and take 32 s together on two cores (pytest-xdist, a
-machine loaded by other runs); 17 s one after another, each file under 3 s but the stored sets' (3.6 s).
+machine loaded by other runs); 17 s one after another, each file under 3 s but the stored sets' (3.6 s).  Thirteen
+conversions of stored.py and sobol.py (float() of a numpy float, int() of an int) are listed as equivalent without
+having been drawn.
 
 The module -> tests table below is by file path: when a module moves, update its
 row (path, functions, tests) and nothing else.
@@ -1503,6 +1505,34 @@ EQUIVALENT: dict[str, str] = {
     "demid/canonical.py::canonical_analysis::np.all(np.isfinite(x)) => np.any(np.isfinite(x))#0":
         "the points tested are all NaN (a singular B's stationary point) or all finite (any eigenvalue kept is "
         "above 1e-12 of the largest), and a NaN coordinate fails the box comparisons that follow anyway",
+    # the stored sets' and the Sobol estimator's conversions, read without having been drawn
+    "demid/sampling/stored.py::stored_strict_sets::float(rows['exact_fraction'].iloc[0]) => "
+    "rows['exact_fraction'].iloc[0]#0": _NUMPY_FLOAT + " (a float column; its readers take float() or compare it)",
+    "demid/sampling/stored.py::stored_strict_sets::float(rows['exact_fraction_error'].iloc[0]) => "
+    "rows['exact_fraction_error'].iloc[0]#0": _NUMPY_FLOAT + " (a float column; its readers take float())",
+    "demid/sampling/stored.py::stored_strict_sets::float(rows['reference_distance'].iloc[0]) => "
+    "rows['reference_distance'].iloc[0]#0": _NUMPY_FLOAT + " (a float column)",
+    "demid/sampling/stored.py::stored_strict_sets::float(scen.tolerance) => scen.tolerance#0":
+        "compared with != to a float: an int or a float tolerance of the same value compares the same",
+    "demid/sampling/stored.py::stored_strict_sets::float(exact.fraction) => exact.fraction#0":
+        _NUMPY_FLOAT + " (the stored fraction, a float or a numpy float)",
+    "demid/sampling/stored.py::stored_strict_sets::float(exact.fraction_error) => exact.fraction_error#0":
+        _NUMPY_FLOAT + " (the stored error, a float or a numpy float)",
+    "demid/sampling/sobol.py::sobol_admissible_set::int(np.argmin(worst)) => np.argmin(worst)#0":
+        "a numpy integer indexes the arrays exactly as the int does (its one use)",
+    "demid/sampling/sobol.py::sobol_admissible_set::int(mask.size) => mask.size#0":
+        "ndarray.size is a Python int already",
+    "demid/sampling/sobol.py::sobol_admissible_set::float(worst[best]) => worst[best]#0": _NUMPY_FLOAT,
+    "demid/sampling/sobol.py::sobol_fraction::float(tolerance) => tolerance#0":
+        "eps is compared with residuals and scaled by floats (the fields convert it again): an int or a float "
+        "tolerance of the same value gives the same numbers",
+    "demid/sampling/sobol.py::sobol_fraction::float(means.std(ddof=1) / np.sqrt(replicates)) => "
+    "means.std(ddof=1) / np.sqrt(replicates)#0": _NUMPY_FLOAT,
+    "demid/sampling/sobol.py::sobol_fraction::float(stats.t.ppf(0.5 + confidence / 2, replicates - 1)) => "
+    "stats.t.ppf(0.5 + confidence / 2, replicates - 1)#0": _NUMPY_FLOAT + " (times se, then float() again)",
+    "demid/sampling/sobol.py::sobol_fraction::int(round(np.log2(max(n_points / replicates, 2)))) => "
+    "round(np.log2(max(n_points / replicates, 2)))#0":
+        "round() of a numpy float without digits returns a Python int already (numpy 2)",
     "demid/sampling/sobol.py::sobol_fraction::observables = tuple(observables) => pass#0":
         "both callers pass a tuple already (sobol_admissible_set and plausible's set summary make one first)",
     "demid/paper.py::_scenario_set_rows::float(low) => low#0":
