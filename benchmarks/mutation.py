@@ -184,9 +184,10 @@ function of demid.design, a CCD run of any kind typed onto no point, an inferred
 one-sphere refusal (tests/inputs/*_whole.py); a paper row on and past each tolerance, a canonical analysis, the
 file writers (tests/report/test_paper_rules_whole.py, tests/combinations/test_canonical_whole.py,
 tests/test_io_whole.py).  The 25 files hold 363 tests and take 32 s together on two cores (pytest-xdist, a
-machine loaded by other runs); 17 s one after another, each file under 3 s but the stored sets' (3.6 s).  Thirteen
-conversions of stored.py and sobol.py (float() of a numpy float, int() of an int) are listed as equivalent without
-having been drawn.
+machine loaded by other runs); 17 s one after another, each file under 3 s but the stored sets' (3.6 s).  Thirty-one
+conversions of stored, sobol, residuals, polish, fit_statistics, paper, io, estimability and pareto (float() of a
+numpy float, int() of an int, float() of a number only added, multiplied or compared) are listed as equivalent
+without having been drawn, each read with its callers.
 
 The module -> tests table below is by file path: when a module moves, update its
 row (path, functions, tests) and nothing else.
@@ -1533,6 +1534,50 @@ EQUIVALENT: dict[str, str] = {
     "demid/sampling/sobol.py::sobol_fraction::int(round(np.log2(max(n_points / replicates, 2)))) => "
     "round(np.log2(max(n_points / replicates, 2)))#0":
         "round() of a numpy float without digits returns a Python int already (numpy 2)",
+    # conversions of small modules, read without having been drawn
+    "demid/sampling/residuals.py::PlausibilityField.measurement_sd::float(self.sigma) => self.sigma#0":
+        "the sd is only squared and added to float squares: an int or a float sigma of the same value gives the "
+        "same uncertainty",
+    "demid/sampling/residuals.py::plausibility_fields::float(targets[o]) => targets[o]#0":
+        "the target enters differences and products with float predictions and abs(): an int or a float target "
+        "of the same value gives the same field",
+    "demid/sampling/residuals.py::plausibility_fields::float(tolerance) => tolerance#0":
+        "the tolerance only multiplies floats (the band, the measurement sd)",
+    "demid/sampling/residuals.py::plausibility_fields::float(z) => z#0":
+        "z is compared with 0 and multiplies floats: an int or a float z of the same value gives the same field",
+    "demid/sampling/residuals.py::plausibility_fields::float(band.discrepancy) => band.discrepancy#0":
+        "the discrepancy sd is only squared and added to float squares",
+    "demid/sampling/residuals.py::plausibility_fields::float(band) => band#0":
+        "the sigma is converted again by measurement_sd (float(self.sigma)) before any use",
+    "demid/fit_statistics.py::LackOfFitAnova._f::float(f) => f#0":
+        _NUMPY_FLOAT + " (a quotient of floats or numpy floats)",
+    "demid/fit_statistics.py::LackOfFitAnova._f::float(f_tail(f, df_a, df_b)) => f_tail(f, df_a, df_b)#0":
+        _NUMPY_FLOAT + " (f_tail of scalars returns a numpy float)",
+    "demid/paper.py::_fraction::float(sel['feasible_fraction_pct'].iloc[0]) => "
+    "sel['feasible_fraction_pct'].iloc[0]#0":
+        _NUMPY_FLOAT + " (a float column; _Rows.add converts it with float() again)",
+    "demid/paper.py::_column::float(sel.loc[factor, column]) => sel.loc[factor, column]#0":
+        _NUMPY_FLOAT + " (a float column; _Rows.add converts it with float() again)",
+    "demid/paper.py::_scenario_set_rows::float(high) => high#0":
+        "high - float(low) is the same float for an int or a float high (a YAML bound of either type)",
+    "demid/paper.py::paper_comparison::float(summary.loc[factor, end]) => summary.loc[factor, end]#0":
+        _NUMPY_FLOAT + " (the Pareto intervals' float columns; _Rows.add converts it with float() again)",
+    "demid/io.py::save_figures::float(np.prod(fig.get_size_inches())) => np.prod(fig.get_size_inches())#0":
+        _NUMPY_FLOAT + " (the areas are only summed and compared)",
+    "demid/io.py::save_figures::float(np.prod(item[1].get_size_inches())) => np.prod(item[1].get_size_inches())#0":
+        _NUMPY_FLOAT + " (a sort key)",
+    "demid/estimability.py::require_estimable::int(np.sum(point_types == 'center')) => "
+    "np.sum(point_types == 'center')#0":
+        "a numpy integer tests true and prints in the message exactly as the int does",
+    "demid/sampling/polish.py::start_points::int(round(aset.n_nodes ** (1.0 / d))) => "
+    "round(aset.n_nodes ** (1.0 / d))#0": "round() of a Python float without digits returns an int already",
+    "demid/sampling/polish.py::polish_spans::float(tolerance) => tolerance#0":
+        "eps is compared with residuals and scaled by floats (the fields convert it again): an int or a float "
+        "tolerance of the same value gives the same spans",
+    "demid/pareto.py::polish_front::float(surrogates[name].predict(domain.from_unit(u))[0]) => "
+    "surrogates[name].predict(domain.from_unit(u))[0]#0":
+        _NUMPY_FLOAT + " (the optimiser's objective and constraints)",
+    "demid/pareto.py::polish_front::float(own.max()) => own.max()#0": _NUMPY_FLOAT + " (one argument of max())",
     "demid/sampling/sobol.py::sobol_fraction::observables = tuple(observables) => pass#0":
         "both callers pass a tuple already (sobol_admissible_set and plausible's set summary make one first)",
     "demid/paper.py::_scenario_set_rows::float(low) => low#0":
