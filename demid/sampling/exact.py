@@ -203,8 +203,8 @@ class ExactSet:
         if self.reference is None:
             return np.nan, np.full(self.dim, np.nan)
         ref = (np.asarray(self.reference, dtype=float) - self.lower) / (self.upper - self.lower)
-        worst = self._worst_residual(ref)
-        if worst <= self.tolerance:
+        # a reference meeting the targets outside the search box is not in the set: its distance is to the box's part
+        if self._worst_residual(ref) <= self.tolerance and np.all((ref >= 0.0) & (ref <= 1.0)):
             return 0.0, ref
         shape = self._shape
         if self.dim == 1:
