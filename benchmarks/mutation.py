@@ -677,7 +677,8 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/uncertainty/test_uncertainty.py", "tests/sampling/test_set_estimators.py",
                   "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py",
                   "tests/uncertainty/test_posterior_quantiles.py",
-                  "tests/uncertainty/test_strict_grid_summary_properties.py"],
+                  "tests/uncertainty/test_strict_grid_summary_properties.py",
+                  "tests/uncertainty/test_sweep_plausible_whole.py"],
     },
     "demid/uncertainty/recommended.py": {
         "functions": None,
@@ -803,11 +804,13 @@ TABLE: dict[str, dict] = {
     "demid/combinations/axes.py": {
         "functions": None,
         "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py",
+                  "tests/combinations/test_combination_material_whole.py",
                   "tests/combinations/test_combination_outputs.py", "tests/story/test_verdicts.py"],
     },
     "demid/combinations/material.py": {
         "functions": None,
         "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py",
+                  "tests/combinations/test_combination_material_whole.py",
                   "tests/combinations/test_combination_outputs.py", "tests/report/test_advice_source.py"],
     },
     "demid/story/advice.py": {
@@ -860,11 +863,12 @@ TABLE: dict[str, dict] = {
     },
     "demid/uncertainty/sweep.py": {
         "functions": None,
-        "tests": ["tests/uncertainty/test_uncertainty.py", "-ksweep"],
+        "tests": ["tests/uncertainty/test_uncertainty.py", "tests/uncertainty/test_sweep_plausible_whole.py", "-ksweep"],
     },
     "demid/scenario.py": {
         "functions": None,
         "tests": ["tests/test_scenario.py", "tests/test_tolerance.py", "tests/test_judged_scenario_properties.py",
+                  "tests/test_scenario_whole.py",
                   "tests/uncertainty/test_own_tolerance_posteriors.py",
                   "tests/uncertainty/test_uncertainty.py::test_measurement_sigma_sources",
                   "tests/uncertainty/test_uncertainty.py::"
