@@ -1418,6 +1418,23 @@ EQUIVALENT: dict[str, str] = {
     "demid/scenario.py::own_band_basis::float(z) => z#1": _ARITH_FLOAT,
     "demid/scenario.py::own_band_basis::float(tolerance) => tolerance#0": _ARITH_FLOAT,
     "demid/scenario.py::JudgedScenario.likelihood_sd::float(target) => target#0": _ARITH_FLOAT,
+    # --- sixth round, seeds 28 and 29 (uncertainty, story, combinations, scenario, loop modules)
+    "demid/uncertainty/plausible.py::summarise_set::observables = tuple(observables) => pass#0":
+        "every caller passes a tuple (tolerance_sweep and plausible_identifiability_frame convert, the ranking's "
+        "subsets come from itertools.combinations), and every evaluator it calls converts again",
+    "demid/story/measurements.py::measurement_order::float(g) => g#0":
+        _NUMPY_FLOAT + " (the gains come from the ranking's float column; they enter subtraction, np.isfinite, "
+        "sorting and :.2f or rough_text only)",
+    "demid/story/words.py::labelled::not names or not text => not text#0":
+        "with no names both replacement branches are skipped (others and words are empty): the text comes back as "
+        "it went in",
+    "demid/story/advice.py::material_advice::criticism.get('level2') or {} => criticism.get('level2')#0":
+        "a missing or null level2 (None) and an empty one ({}) are both falsy, and every reader guards it "
+        "(`level2 and ...` or `(level2 or {})`) before any .get",
+    "demid/uncertainty/posterior.py::_qmc_posteriors::float(np.sum(w * x[:, i]) / w.sum()) => "
+    "np.sum(w * x[:, i]) / w.sum()#0":
+        "the means list only becomes np.array(means), a float64 array whether its items are floats or np.float64 "
+        "scalars",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
