@@ -688,6 +688,7 @@ TABLE: dict[str, dict] = {
     "demid/uncertainty/material.py": {
         "functions": None,
         "tests": ["tests/uncertainty/test_recommended.py", "tests/uncertainty/test_uncertainty.py",
+                  "tests/uncertainty/test_material_whole.py",
                   "tests/uncertainty/test_own_tolerance_posteriors.py", "tests/criticism/test_unreachable_targets.py",
                   "tests/story/test_story.py", _NOT_WORKFLOW],
     },
