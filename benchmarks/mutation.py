@@ -640,6 +640,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_reported_numbers.py::test_next_wave_runs_each_maximise_the_determinant",
                   "tests/test_next_wave.py", "tests/test_next_wave_properties.py", "tests/test_d_optimal_rule.py",
+                  "tests/test_next_wave_whole.py",
                   "tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py"],
     },
     "demid/wave_runs.py": {
@@ -1437,6 +1438,12 @@ EQUIVALENT: dict[str, str] = {
     "np.sum(w * x[:, i]) / w.sum()#0":
         "the means list only becomes np.array(means), a float64 array whether its items are floats or np.float64 "
         "scalars",
+    "demid/kriging.py::KrigingSurrogate.q2::float(np.sum((self.y - self.y.mean()) ** 2)) => "
+    "np.sum((self.y - self.y.mean()) ** 2)#0":
+        _NUMPY_FLOAT + " (sst is compared with 0 and divides a float)",
+    "demid/surrogate_choice.py::surrogate_record::float(v) => v#0":
+        _NUMPY_FLOAT + " (a Q² read from the statistics frame; the record is written as JSON, where a float and an "
+        "np.float64 give the same text)",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
