@@ -1444,6 +1444,11 @@ EQUIVALENT: dict[str, str] = {
     "demid/surrogate_choice.py::surrogate_record::float(v) => v#0":
         _NUMPY_FLOAT + " (a Q² read from the statistics frame; the record is written as JSON, where a float and an "
         "np.float64 give the same text)",
+    "demid/sampling/stored.py::stored_strict_sets::0 => 1#3":
+        "frame.iloc[1:0] is as empty as frame.iloc[0:0] (a slice that starts after it stops): a table without the "
+        "state columns still gives no stored set",
+    "demid/sampling/stored.py::stored_strict_sets::0 => -1#3":
+        "frame.iloc[-1:0] is empty too (from the last row up to the first, stepping forward)",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical

@@ -110,3 +110,15 @@ def test_only_kriging_judged_responses_of_the_criticism_are_marked_with_their_q2
             assert entry[SETS_SURROGATE_KEY] == {"surrogate": KIND, "q2": q2}
         else:
             assert SETS_SURROGATE_KEY not in entry
+
+
+@pytest.mark.parametrize("k", [1, 2, 3, 4])
+def test_kriging_fits_from_three_runs_beyond_its_quadratic_trend_up_to_its_largest_table(k):
+    from types import SimpleNamespace
+
+    from demid.surrogate_choice import KRIGING_MAX_RUNS, kriging_fits
+
+    trend = (k + 1) * (k + 2) // 2  # the full quadratic in k factors
+    spec = SimpleNamespace(dim=k)
+    assert [kriging_fits(n, spec) for n in (trend + 2, trend + 3)] == [False, True]
+    assert [kriging_fits(n, spec) for n in (KRIGING_MAX_RUNS, KRIGING_MAX_RUNS + 1)] == [True, False]
