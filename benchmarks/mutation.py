@@ -793,7 +793,8 @@ TABLE: dict[str, dict] = {
     "demid/story/words.py": {
         "functions": None,
         "tests": ["tests/story/test_advice_wording.py", "tests/story/test_advice_properties.py", "tests/story/test_story.py",
-                  "tests/report/test_report_reads.py", "tests/plots/test_figures_print.py", _NOT_WORKFLOW],
+                  "tests/report/test_report_reads.py", "tests/plots/test_figures_print.py", "tests/story/test_words_whole.py",
+                  _NOT_WORKFLOW],
     },
     "demid/story/extensions.py": {
         "functions": None,
