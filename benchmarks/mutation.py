@@ -803,6 +803,7 @@ TABLE: dict[str, dict] = {
     "demid/blocks.py": {
         "functions": None,
         "tests": ["tests/test_blocks.py", "tests/criticism/test_blocks_steps.py", "tests/test_blocks_properties.py",
+                  "tests/test_blocks_whole.py",
                   "tests/inputs/test_data.py"],
     },
     "demid/combinations/axes.py": {

@@ -133,3 +133,28 @@ def test_plausible_table_is_the_strict_box_beside_the_widened_box(seed, n_obs, z
         assert abs(block["robust_fraction_pct"].iloc[0] - 100 * robust[2]) <= error + 1e-6
         assert (block["strict_fraction_error_pct"] < 1e-3).all() and (block["strict_fraction_error_pct"] >= 0).all()
     assert at == len(frame)
+
+
+def test_the_nominal_row_repeats_a_given_exact_set_and_recomputes_a_grid_set():
+    """An exact strict set handed in is the nominal row as it is (here marked by a fraction of its own); a grid set
+    is not reused (it may lie on another grid): the row is the set computed on the sweep's own grid."""
+    from dataclasses import replace
+
+    from demid.sampling.evaluate import evaluate_set
+    from demid.sampling.grid import admissible_set
+
+    domain = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0))
+    surrogates = {"y": linear(0.0, [1.0, 0.0])}
+    exact = evaluate_set(surrogates, domain, ("y",), {"y": 0.5}, 0.1, 21)
+    marked = replace(exact, fraction=0.02)
+    frame = tolerance_sweep(surrogates, domain, {"s": (["y"], 0.1)}, {"y": 0.5}, [0.2], 21, strict_sets={"s": marked})
+    nominal = frame[frame["tolerance"] == 0.1]
+    np.testing.assert_allclose(nominal["feasible_fraction_pct"], 2.0, rtol=1e-12)
+    # b on a log axis: no polynomial of the search units, so the strict sets are grid sets
+    log_domain = Domain(("a", "b"), (0.0, 1.0), (1.0, 10.0), (False, True))
+    grid = admissible_set(surrogates, log_domain, ("y",), {"y": 0.5}, 0.1, 21)
+    assert grid.exact is None
+    frame = tolerance_sweep(surrogates, log_domain, {"s": (["y"], 0.1)}, {"y": 0.5}, [0.2], 21,
+                            strict_sets={"s": replace(grid, fraction=0.02)})
+    nominal = frame[frame["tolerance"] == 0.1]
+    np.testing.assert_allclose(nominal["feasible_fraction_pct"], 10.0, rtol=1e-6)  # |a - 0.5| <= 0.05, all of b
