@@ -770,7 +770,7 @@ TABLE: dict[str, dict] = {
     "demid/admissibility.py": {
         "functions": None,
         "tests": ["tests/sampling/test_stored_sets.py", "tests/sampling/test_admissibility.py", "tests/story/test_story.py",
-                  _NOT_WORKFLOW],
+                  "tests/sampling/test_admissibility_whole.py", _NOT_WORKFLOW],
     },
     "demid/numbers.py": {
         "functions": None,
