@@ -1446,6 +1446,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/surrogate_choice.py::surrogate_record::float(v) => v#0":
         _NUMPY_FLOAT + " (a Q² read from the statistics frame; the record is written as JSON, where a float and an "
         "np.float64 give the same text)",
+    "demid/story/measurements.py::measurement_order::2 => 3#0":
+        "by_frac[3] (a gain, never equal to a name) != best is always true, but where by_frac is best itself its "
+        "fraction is f_new, so `by_frac[1] < f_new` is false either way",
     "demid/sampling/stored.py::stored_strict_sets::0 => 1#3":
         "frame.iloc[1:0] is as empty as frame.iloc[0:0] (a slice that starts after it stops): a table without the "
         "state columns still gives no stored set",

@@ -122,3 +122,15 @@ def test_kriging_fits_from_three_runs_beyond_its_quadratic_trend_up_to_its_large
     spec = SimpleNamespace(dim=k)
     assert [kriging_fits(n, spec) for n in (trend + 2, trend + 3)] == [False, True]
     assert [kriging_fits(n, spec) for n in (KRIGING_MAX_RUNS, KRIGING_MAX_RUNS + 1)] == [True, False]
+
+
+@given(q2_quadratic=st.sampled_from([-3.0, -1.0, 0.0, 0.5, 0.75]), share=st.sampled_from([0.25, 0.5, 1.0, 2.0]))
+@settings(max_examples=30, deadline=None, derandomize=True)
+def test_kriging_is_preferred_when_its_unexplained_share_is_at_most_half_the_quadratics(q2_quadratic, share):
+    from demid.surrogate_choice import CHOICE_PRESS_RATIO, prefers_kriging
+
+    assert CHOICE_PRESS_RATIO == 0.5
+    # 1 - Q²_kriging = share * 0.5 * (1 - Q²_quadratic), exact in binary for these values: at most half is kriging
+    q2_kriging = 1.0 - share * 0.5 * (1.0 - q2_quadratic)
+    assert prefers_kriging(q2_quadratic, q2_kriging) == (share <= 1.0)
+    assert prefers_kriging(float("nan"), q2_kriging) and not prefers_kriging(q2_quadratic, float("nan"))

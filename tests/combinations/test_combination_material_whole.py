@@ -126,3 +126,20 @@ def test_a_bands_curve_in_the_json_is_in_actual_units_and_inside_the_band(seed, 
         assert np.all(miss <= tolerance * abs(target) + abs(slopes[narrow]) * step[narrow] * 1.01)
     # the width the JSON quotes is the band's own
     assert entry["band_fraction"] == res.band_fraction and entry["identified"] == res.identified
+
+
+def test_a_scenario_without_an_admissible_point_identifies_nothing():
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "custom"},
+        "factors": {"a": {"lower": 0.0, "upper": 1.0}, "b": {"lower": 0.0, "upper": 1.0}},
+        "responses": {"y": {"target": 5.0}},
+        "scenarios": {"far": {"observables": ["y"], "tolerance": 0.02}}}, grid_points=41)
+    surrogate = _linear("y", np.array([1.0, 1.0]), 0.0)  # at most 2 on the square: the target 5 is out of reach
+    strict = {"far": admissible_set({"y": surrogate}, spec.domain, ["y"], {"y": 5.0}, 0.02, 41)}
+    found = material_combinations({"y": surrogate}, spec, Coding(("a", "b"), (0.5, 0.5), (0.5, 0.5)), strict, strict)
+    assert [res.axes for res in found.results] == [None, None]
+    assert not any(res.identified for res in found.results)
+    assert found.in_combination() == {} and found.in_combination("plausible") == {} and found.advice == []
+    entries = found.to_json()["sets"]
+    assert [(e["identified"], e["text"]) for e in entries] == [(False, "no admissible point.")] * 2
+    assert found.to_frame().empty
