@@ -1446,6 +1446,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/surrogate_choice.py::surrogate_record::float(v) => v#0":
         _NUMPY_FLOAT + " (a Q² read from the statistics frame; the record is written as JSON, where a float and an "
         "np.float64 give the same text)",
+    "demid/story/advice.py::_widen::level2 or {} => level2#2":
+        "read only after `misses` is true, which needs a truthy level2: `level2 or {}` is level2 there",
     "demid/story/measurements.py::measurement_order::2 => 3#0":
         "by_frac[3] (a gain, never equal to a name) != best is always true, but where by_frac is best itself its "
         "fraction is f_new, so `by_frac[1] < f_new` is false either way",
