@@ -22,13 +22,14 @@ _COLUMNS = ["scenario", "observables", "tolerance", "feasible_fraction_pct", "fa
 
 @given(seed=st.integers(0, 10_000), dim=st.sampled_from([2, 3]), n_obs=st.integers(1, 3),
        tolerance=st.sampled_from([0.01, 0.08]))
-@settings(max_examples=5, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate])
+@settings(max_examples=8, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate])
 def test_each_scenarios_rows_are_its_clipped_box_and_the_grid_nodes_inside_it(seed, dim, n_obs, tolerance):
-    n_obs = min(n_obs, dim)
+    # three factors: every factor carries an observable (a slab's exact set in three factors takes seconds)
+    n_obs = min(n_obs, dim) if dim == 2 else 3
     domain, surrogates, targets, centres, slopes = _study(seed, dim, n_obs)
     names = list(targets)
     scenarios = {"all": {"observables": names, "tolerance": tolerance}}
-    if n_obs > 1:
+    if n_obs > 1 and dim == 2:
         scenarios["last"] = {"observables": names[-1:], "tolerance": 2 * tolerance}
     spec = MaterialSpec.from_material("m", {
         "data": "x.csv", "design": {"type": "custom"},
