@@ -1446,6 +1446,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/surrogate_choice.py::surrogate_record::float(v) => v#0":
         _NUMPY_FLOAT + " (a Q² read from the statistics frame; the record is written as JSON, where a float and an "
         "np.float64 give the same text)",
+    "demid/blocks.py::block_effects::float(e) => e#0":
+        _NUMPY_FLOAT + " (an effect of the dict block_effects returns: formatted, compared and written to JSON alike)",
     "demid/story/advice.py::_widen::level2 or {} => level2#2":
         "read only after `misses` is true, which needs a truthy level2: `level2 or {}` is level2 there",
     "demid/story/measurements.py::measurement_order::2 => 3#0":
