@@ -61,8 +61,8 @@ def response_runs(table: pd.DataFrame, factors, response: str) -> tuple[np.ndarr
 
 
 def kriging_fits(n_runs: int, spec) -> bool:
-    """Whether there are runs enough (and not too many) for a kriging surrogate: its quadratic trend and two
-    more degrees of freedom, at most :data:`KRIGING_MAX_RUNS`."""
+    """Whether there are runs enough (and not too many) for a kriging surrogate: more than two residual degrees of
+    freedom beyond its quadratic trend (n - p >= 3), at most :data:`KRIGING_MAX_RUNS`."""
     trend = quadratic_trend(np.zeros((1, spec.dim))).shape[1]
     return trend + 2 < n_runs <= KRIGING_MAX_RUNS
 
