@@ -549,7 +549,7 @@ TABLE: dict[str, dict] = {
     "demid/criticism/step_changes.py": {
         "functions": None,
         "tests": ["tests/criticism/test_linear_memory.py", "tests/criticism/test_large_studies.py",
-                  "tests/criticism/test_catalogue_known_answers.py"],
+                  "tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_step_changes_whole.py"],
     },
     "demid/transcription/printed.py": {
         "functions": None,
