@@ -1086,6 +1086,24 @@ EQUIVALENT: dict[str, str] = {
         _NUMPY_FLOAT + " (the observed value of a finding's detail, written to JSON through _clean)",
     "demid/criticism/extensions.py::extend_for::int(np.argmax(prof)) => np.argmax(prof)#0":
         "best only indexes the lambda grid: a numpy integer indexes the same element",
+    "demid/criticism/extensions.py::extend_for::int(np.flatnonzero(np.flatnonzero(model.keep) == i)[0]) => "
+    "np.flatnonzero(np.flatnonzero(model.keep) == i)[0]#0":
+        "pos only indexes model.loo_errors: a numpy integer indexes the same element (pos is neither stored nor "
+        "printed)",
+    "demid/criticism/extensions.py::extend_for::int(np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0]) => "
+    "np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0]#0":
+        "the position only indexes model.coded (then copied): a numpy integer indexes the same row",
+    "demid/criticism/level2.py::_best_point::unmoved and movable => movable#0":
+        "the recomputed error differs from minimax's only when some observable is left out of the search; with "
+        "none unmoved minimax searched every row without a shared bias and returns max_k w_k |e_k| at its point, "
+        "the same expression recomputed (a grid node's errors come from one batched prediction, the recomputed "
+        "ones from one point: at most the last bit, read only by a comparison with the tolerance + 1e-12)",
+    "demid/criticism/level2.py::_best_point::unmoved and movable => unmoved#0":
+        "with every observable unmoved minimax searched every row: the recomputed max_k w_k |e_k| at its point is "
+        "its own value (to the last bit of a batched grid prediction, read only against the tolerance + 1e-12)",
+    "demid/criticism/level2.py::_best_point::unmoved and movable => unmoved or movable#0":
+        "recomputes the error also where minimax searched every row, then the same max_k w_k |e_k| at the same "
+        "point (to the last bit of a batched grid prediction, read only against the tolerance + 1e-12)",
     # --- tolerance
     "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
         "the product with the float abs(float(target)) is a float either way",
