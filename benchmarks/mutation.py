@@ -457,7 +457,8 @@ _NAMING_TESTS = ["tests/criticism/test_criticism.py", "tests/criticism/test_cata
 # the level-2 search's tests
 _LEVEL2_TESTS = ["tests/criticism/test_level2_known_answers.py", "tests/test_reported_numbers.py",
                  "tests/criticism/test_criticism.py", "tests/criticism/test_edges.py",
-                 "tests/criticism/test_unreachable_targets.py", "-klevel2 or edge or reach"]
+                 "tests/criticism/test_unreachable_targets.py", "tests/criticism/test_level2_whole.py",
+                 "-klevel2 or edge or reach"]
 # the transcription check's tests (the CLI ones run the check end to end on a small table)
 _TRANSCRIPTION_TESTS = ["tests/transcription/test_transcription.py",
                         "tests/transcription/test_transcription_printed_inputs.py",
@@ -626,7 +627,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/run_order.py": {
         "functions": None,
-        "tests": ["tests/criticism/test_run_order.py", "tests/test_reported_numbers.py", "tests/criticism/test_criticism.py",
+        "tests": ["tests/criticism/test_run_order.py", "tests/criticism/test_run_order_whole.py",
+                  "tests/test_reported_numbers.py", "tests/criticism/test_criticism.py",
                   "-kdrift or run_order or order"],
     },
     "demid/uncertainty/ranking.py": {

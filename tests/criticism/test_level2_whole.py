@@ -1,0 +1,130 @@
+"""Level 2 (criticism.level2.calibration_check) read whole over generated linear simulations: 1-2 factors on boxes
+away from the origin, 1-4 observables with targets of either sign, own tolerances or none.  With linear responses
+the minimax problems are linear programmes, solved here with scipy's linprog: the best point's largest weighted
+error, feasibility, the error left without each observable and with a shared relative bias; the extensions' table
+(parameters, measurements, spare ones, notes) and every count the message quotes about them."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy import optimize
+
+from demid.criticism.level2 import calibration_check
+from demid.design import quadratic_terms
+from demid.sampling import Domain
+from demid.surrogate import Surrogate
+
+
+def _linear(name: str, factors: list[str], intercept: float, slopes) -> Surrogate:
+    terms = quadratic_terms(len(factors))
+    coef = np.zeros(len(terms))
+    coef[0], coef[1:1 + len(factors)] = intercept, slopes
+    return Surrogate(name, factors, terms, coef, np.zeros((len(terms), len(terms))), 0.0, 7)
+
+
+def _minimax_lp(a: np.ndarray, b: np.ndarray, w: np.ndarray, lo, hi, shared: bool) -> float:
+    """min over x in the box (and a shared bias delta) of max_k w_k |a_k + b_k x - delta|: a linear programme in
+    (x, t, delta)."""
+    k, d = b.shape
+    extra = 1 if shared else 0
+    cost = np.zeros(d + 1 + extra)
+    cost[d] = 1.0
+    rows, rhs = [], []
+    for sign in (1.0, -1.0):
+        for j in range(k):
+            row = np.zeros(d + 1 + extra)
+            row[:d], row[d] = sign * w[j] * b[j], -1.0
+            if shared:
+                row[d + 1] = -sign * w[j]
+            rows.append(row)
+            rhs.append(-sign * w[j] * a[j])
+    bounds = list(zip(lo, hi)) + [(0, None)] + ([(None, None)] if shared else [])
+    res = optimize.linprog(cost, A_ub=np.array(rows), b_ub=np.array(rhs), bounds=bounds, method="highs")
+    assert res.status == 0
+    return float(res.fun)
+
+
+@st.composite
+def _studies(draw):
+    d, k = draw(st.integers(1, 2)), draw(st.integers(1, 4))
+    rng = np.random.default_rng(draw(st.integers(0, 10 ** 6)))
+    factors = ["a", "b"][:d]
+    lo = rng.uniform(-5, 5, d)
+    hi = lo + rng.uniform(0.5, 4, d)
+    names = [f"y{j}" for j in range(k)]
+    slopes = rng.normal(size=(k, d)) * draw(st.sampled_from([1.0, 100.0]))
+    intercepts = rng.normal(size=k) * 5 + 20 * rng.choice([-1, 1], size=k)
+    mid = intercepts + slopes @ ((lo + hi) / 2)
+    targets = mid * rng.uniform(0.8, 1.25, k)  # the sign of the response at mid-box: negative ones too
+    own = draw(st.sampled_from([None, "some"]))
+    tolerances = None if own is None else {names[0]: 0.02, names[-1]: 0.08}
+    return factors, lo, hi, names, slopes, intercepts, targets, tolerances
+
+
+@given(study=_studies(), tolerance=st.sampled_from([0.01, 0.05]))
+@settings(max_examples=14, deadline=None, derandomize=True)
+def test_level_2s_errors_extensions_and_counts_against_linear_programmes(study, tolerance):
+    factors, lo, hi, names, slopes, intercepts, targets, tolerances = study
+    d, k = len(factors), len(names)
+    surrogates = {o: _linear(o, factors, c, g) for o, c, g in zip(names, intercepts, slopes)}
+    domain = Domain(tuple(factors), tuple(lo), tuple(hi), (False,) * d)
+    result = calibration_check(surrogates, domain, dict(zip(names, targets)), tolerance, 11,
+                               tolerances=tolerances)
+    scale = np.abs(targets)
+    a, b = (intercepts - targets) / scale, slopes / scale[:, None]
+    own = np.array([(tolerances or {}).get(o, tolerance) for o in names])
+    w = tolerance / own
+    best = _minimax_lp(a, b, w, lo, hi, shared=False)
+    assert result.best_max_error == pytest.approx(best, rel=1e-5, abs=1e-7)
+    assert result.feasible == (best <= tolerance)
+    x = np.array([result.best_point[f] for f in factors])
+    errors = a + b @ x
+    assert [result.best_errors[o] for o in names] == pytest.approx(errors, rel=1e-9, abs=1e-12)
+    assert result.best_max_error == pytest.approx(float(np.max(w * np.abs(errors))), rel=1e-9)
+    assert result.shared_bias["max_error"] == pytest.approx(_minimax_lp(a, b, w, lo, hi, shared=True),
+                                                            rel=1e-5, abs=1e-7)
+    for j, o in enumerate(result.without):
+        others = [i for i in range(k) if names[i] != o]
+        assert result.without[o] == pytest.approx(_minimax_lp(a[others], b[others], w[others], lo, hi, False),
+                                                  rel=1e-5, abs=1e-7)
+    _check_extensions(result, d, k)
+
+
+def _check_extensions(result, d: int, k: int) -> None:
+    """The extensions' rows: parameters, spare measurements and their notes, and the message's counts."""
+    rows = {row["model"]: row for row in result.extensions}
+    expected = {"simulation as calibrated (no discrepancy)": d, "shared relative bias on all observables": d + 1,
+                "bias on every observable": d + k}
+    if result.bottleneck is not None and result.without:
+        expected[f"bias on {result.bottleneck}"] = d + 1
+    assert {m: row["n_params"] for m, row in rows.items()} == expected
+    errors = {"simulation as calibrated (no discrepancy)": result.best_max_error, "bias on every observable": 0.0,
+              "shared relative bias on all observables": result.shared_bias["max_error"]}
+    if result.bottleneck is not None and result.without:
+        errors[f"bias on {result.bottleneck}"] = result.without[result.bottleneck]
+    assert {m: row["max_error"] for m, row in rows.items()} == pytest.approx(errors, rel=1e-12, abs=1e-15)
+    for row in rows.values():
+        spare = k - row["n_params"]
+        assert (row["n_measurements"], row["spare_measurements"]) == (k, spare)
+        assert row["note"].startswith("testable: %d spare" % spare if spare > 0 else
+                                      "saturated" if spare == 0 else "not identifiable")
+    message = result.message
+    if result.feasible:
+        assert "A shared relative bias" not in message
+        return
+    spare = k - d - 1
+    said = re.search(r"(\d+) spare measurements? remains? to test it\.", message)
+    assert (int(said.group(1)) if said else None) == (spare if spare > 0 else None)
+    assert ("it uses the last spare measurement, so its fit cannot be taken as evidence of a bias" in message) == \
+        (spare == 0)
+    assert ("a shared relative bias on the targets is not identifiable" in message) == (spare < 0)
+    unknowns = re.search(r"A bias on every observable \((\d+) unknowns for (\d+) measurements?\)", message)
+    assert (int(unknowns.group(1)), int(unknowns.group(2))) == (d + k, k)
+    if spare >= 0:
+        quoted = re.search(r"A shared relative bias of ([+-][\d.]+) % on all targets", message)
+        assert float(quoted.group(1)) == pytest.approx(100 * result.shared_bias["delta"], abs=0.005 + 1e-9)
