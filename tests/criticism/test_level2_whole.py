@@ -1,7 +1,8 @@
 """Level 2 (criticism.level2.calibration_check) read whole over generated linear simulations: 1-2 factors on boxes
 away from the origin, 1-4 observables with targets of either sign, own tolerances or none.  With linear responses
 the minimax problems are linear programmes, solved here with scipy's linprog: the best point's largest weighted
-error, feasibility, the error left without each observable and with a shared relative bias; the extensions' table
+error, feasibility, the error left without each observable and the bias it would need, the error left with a
+shared relative bias; the extensions' table
 (parameters, measurements, spare ones, notes) and every count the message quotes about them."""
 
 from __future__ import annotations
@@ -25,6 +26,25 @@ def _linear(name: str, factors: list[str], intercept: float, slopes) -> Surrogat
     coef = np.zeros(len(terms))
     coef[0], coef[1:1 + len(factors)] = intercept, slopes
     return Surrogate(name, factors, terms, coef, np.zeros((len(terms), len(terms))), 0.0, 7)
+
+
+def _smallest_bias_lp(a: np.ndarray, b: np.ndarray, w: np.ndarray, lo, hi, row: int) -> float:
+    """min |a_row + b_row x| over the points x of the box where the other rows' largest weighted |error| is
+    smallest (two linear programmes: that smallest value, then the least |error| of ``row`` under it)."""
+    others = [j for j in range(len(a)) if j != row]
+    best = _minimax_lp(a[others], b[others], w[others], lo, hi, shared=False)
+    d = b.shape[1]
+    rows, rhs = [], []
+    for sign in (1.0, -1.0):
+        for j in others:  # w_j |a_j + b_j x| <= best
+            rows.append(np.concatenate([sign * w[j] * b[j], [0.0]]))
+            rhs.append(best * (1 + 1e-9) + 1e-12 - sign * w[j] * a[j])
+        rows.append(np.concatenate([sign * b[row], [-1.0]]))  # |a_row + b_row x| <= u
+        rhs.append(-sign * a[row])
+    res = optimize.linprog(np.concatenate([np.zeros(d), [1.0]]), A_ub=np.array(rows), b_ub=np.array(rhs),
+                           bounds=list(zip(lo, hi)) + [(0, None)], method="highs")
+    assert res.status == 0
+    return float(res.fun)
 
 
 def _minimax_lp(a: np.ndarray, b: np.ndarray, w: np.ndarray, lo, hi, shared: bool) -> float:
@@ -92,6 +112,8 @@ def test_level_2s_errors_extensions_and_counts_against_linear_programmes(study, 
         others = [i for i in range(k) if names[i] != o]
         assert result.without[o] == pytest.approx(_minimax_lp(a[others], b[others], w[others], lo, hi, False),
                                                   rel=1e-5, abs=1e-7)
+        implied = 0.0 if result.feasible else _smallest_bias_lp(a, b, w, lo, hi, names.index(o))
+        assert abs(result.implied_bias[o]) == pytest.approx(implied, rel=1e-4, abs=1e-6)
     _check_extensions(result, d, k)
 
 
