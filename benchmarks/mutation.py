@@ -537,7 +537,7 @@ TABLE: dict[str, dict] = {
         # 2-factor ones at four times the cost
         "tests": ["tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_criticism.py",
                   "tests/criticism/test_models_properties.py", "tests/test_core_contracts.py",
-                  "tests/criticism/test_linear_time_equivalents.py",
+                  "tests/criticism/test_linear_time_equivalents.py", "tests/criticism/test_catalogue_steps_whole.py",
                   "tests/criticism/test_level1_known_answers.py::test_a_slipped_factor_value_is_moved_and_the_loo_"
                   "errors_are_the_refits", "-knot level2 and not residual_figure and not 3f"],
     },
@@ -550,7 +550,8 @@ TABLE: dict[str, dict] = {
     "demid/criticism/step_changes.py": {
         "functions": None,
         "tests": ["tests/criticism/test_linear_memory.py", "tests/criticism/test_large_studies.py",
-                  "tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_step_changes_whole.py"],
+                  "tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_step_changes_whole.py",
+                  "tests/criticism/test_catalogue_steps_whole.py"],
     },
     "demid/transcription/printed.py": {
         "functions": None,
