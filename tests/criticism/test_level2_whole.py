@@ -87,7 +87,7 @@ def _studies(draw):
 
 
 @given(study=_studies(), tolerance=st.sampled_from([0.01, 0.05]))
-@settings(max_examples=14, deadline=None, derandomize=True)
+@settings(max_examples=10, deadline=None, derandomize=True)
 def test_level_2s_errors_extensions_and_counts_against_linear_programmes(study, tolerance):
     factors, lo, hi, names, slopes, intercepts, targets, tolerances = study
     d, k = len(factors), len(names)
