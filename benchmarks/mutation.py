@@ -1096,6 +1096,15 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/extensions.py::extend_for::int(np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0]) => "
     "np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0]#0":
         "the position only indexes model.coded (then copied): a numpy integer indexes the same row",
+    "demid/criticism/aliasing.py::OneMoreRun.criteria::perp > floor => perp >= floor#0":
+        "differs only where the part of w off the range of S equals the floor to the last bit: floor is positive "
+        "(1e-12 of the columns' squares, at least 1e-300 of it), so a w inside the range (perp 0) gains no rank "
+        "either way",
+    "demid/criticism/naming.py::_deciding_runs::0 => 1#0":
+        "kinds only decide which pairs of models are separated (unequal kinds); the confirming entries are "
+        "close_candidates', one per kind, and an alias's kind (\"alias\", its label) is unique, so every kind "
+        "differs from every other with the first or the second model of an entry taking the cause's kind: the "
+        "same pairs, the same runs",
     "demid/criticism/level2.py::_best_point::unmoved and movable => movable#0":
         "the recomputed error differs from minimax's only when some observable is left out of the search; with "
         "none unmoved minimax searched every row without a shared bias and returns max_k w_k |e_k| at its point, "
