@@ -609,13 +609,14 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/slips.py": {
         "functions": None,
-        "tests": _NAMING_TESTS + ["tests/criticism/test_slips_brute_force.py"],
+        "tests": _NAMING_TESTS + ["tests/criticism/test_slips_brute_force.py", "tests/criticism/test_slips_whole.py"],
     },
     "demid/criticism/verdict.py": {
         "functions": None,
         # the verdict's reported numbers and the fast honest-cause tests (the rate tests repeat them at 20x
         # the cost)
-        "tests": ["tests/test_reported_numbers.py", "tests/criticism/test_lone_runs.py", *[
+        "tests": ["tests/test_reported_numbers.py", "tests/criticism/test_lone_runs.py",
+                  "tests/criticism/test_verdict_whole.py", *[
             f"tests/criticism/test_honest_causes.py::{name}" for name in (
                 "test_misfit_without_a_catalogue_cause_is_unexplained_or_points_at_a_moved_run",
                 "test_noise_only_response_does_not_predict", "test_detectable_departure_has_its_power_by_simulation",
