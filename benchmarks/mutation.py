@@ -1097,6 +1097,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/extensions.py::extend_for::int(np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0]) => "
     "np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0]#0":
         "the position only indexes model.coded (then copied): a numpy integer indexes the same row",
+    "demid/criticism/run_order.py::_ranks::np.cumsum(new_row) - 1 => np.cumsum(new_row)#0":
+        "every rank one higher: the ranks are read only by _rank_correlation, a Pearson correlation (and a ptp "
+        "test), which no shift of one variable changes",
+    "demid/criticism/models.py::Model.__init__::float(np.mean(data.runs[keep].astype(float))) => "
+    "np.mean(data.runs[keep].astype(float))#0":
+        _NUMPY_FLOAT + " (run_center centres the run column and is the extended surrogate's reference run)",
     "demid/criticism/aliasing.py::OneMoreRun.criteria::perp > floor => perp >= floor#0":
         "differs only where the part of w off the range of S equals the floor to the last bit: floor is positive "
         "(1e-12 of the columns' squares, at least 1e-300 of it), so a w inside the range (perp 0) gains no rank "
