@@ -861,7 +861,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/edges.py": {
         "functions": None,
-        "tests": ["tests/criticism/test_edges.py"],
+        "tests": ["tests/criticism/test_edges.py", "tests/criticism/test_edges_whole.py"],
     },
     "demid/uncertainty/sweep.py": {
         "functions": None,
