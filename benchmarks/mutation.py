@@ -1179,8 +1179,8 @@ EQUIVALENT: dict[str, str] = {
         "to six digits either way",
     "demid/criticism/models.py::aicc_of::float('nan') => 'nan'#0":
         "the value is only read through json_number(), which turns 'nan' and nan alike into None",
-    "demid/criticism/catalogue.py::heteroscedasticity_lr::np.sum(r * r, axis=0) / n => np.sum(r * r, axis=0)#0":
-        "shifts every profile log-likelihood by the same 0.5 n log n; the statistic is a difference of two",
+    "demid/criticism/catalogue.py::heteroscedasticity_lr::float(np.sum(np.log(sw))) => np.sum(np.log(sw))#0":
+        _NUMPY_FLOAT + " (added to the profile's row of an array)",
     "demid/criticism/verdict.py::power_caveat::np.isfinite(size) and abs(size) >= 10000.0 => "
     "abs(size) >= 10000.0#0":
         "differs only for an infinite size, where plain_number falls back to short_number as well: both print 'inf'",
