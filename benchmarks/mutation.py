@@ -593,7 +593,9 @@ TABLE: dict[str, dict] = {
         "tests": [*_LEVEL2_TESTS[:-1], "tests/criticism/test_shared_bias_properties.py",
                   "tests/criticism/test_level2_own_tolerance.py", "tests/criticism/test_level2_sign_properties.py",
                   "tests/test_reported_boundaries.py::test_spread_starts_takes_the_best_ranked_node_first_then_the_next_far_enough_ones",
-                  _LEVEL2_TESTS[-1] + " or shared_bias or spread_starts"],
+                  # the hidden bias at 6 tolerances repeats the 4-tolerance case at its cost; the uniqueness it
+                  # adds (the biased observable) is checked against linear programmes in test_level2_whole.py
+                  "-k(level2 or edge or reach or shared_bias or spread_starts) and not spare_measurement[6"],
     },
     "demid/criticism/aliasing.py": {
         "functions": None,

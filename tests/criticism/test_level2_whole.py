@@ -108,12 +108,23 @@ def test_level_2s_errors_extensions_and_counts_against_linear_programmes(study, 
     assert result.best_max_error == pytest.approx(float(np.max(w * np.abs(errors))), rel=1e-9)
     assert result.shared_bias["max_error"] == pytest.approx(_minimax_lp(a, b, w, lo, hi, shared=True),
                                                             rel=1e-5, abs=1e-7)
-    for j, o in enumerate(result.without):
+    without = {}
+    for o in result.without:
         others = [i for i in range(k) if names[i] != o]
-        assert result.without[o] == pytest.approx(_minimax_lp(a[others], b[others], w[others], lo, hi, False),
-                                                  rel=1e-5, abs=1e-7)
+        without[o] = _minimax_lp(a[others], b[others], w[others], lo, hi, False)
+        assert result.without[o] == pytest.approx(without[o], rel=1e-5, abs=1e-7)
         implied = 0.0 if result.feasible else _smallest_bias_lp(a, b, w, lo, hi, names.index(o))
         assert abs(result.implied_bias[o]) == pytest.approx(implied, rel=1e-4, abs=1e-6)
+    assert sorted(result.without) == (sorted(names) if k > 1 else [])
+    if result.feasible:
+        assert (result.bottleneck, result.bias_candidates, result.biased_observable) == (None, [], None)
+    elif without and all(abs(v - tolerance) > 1e-5 * tolerance for v in without.values()):
+        # the observable whose removal leaves the least error (near-ties: the smaller bias), and those whose bias
+        # alone would meet the rest, unique or not
+        assert without[result.bottleneck] <= min(without.values()) + 1e-3 * tolerance
+        candidates = [o for o in names if without[o] <= tolerance]
+        assert result.bias_candidates == candidates
+        assert result.biased_observable == (candidates[0] if len(candidates) == 1 else None)
     _check_extensions(result, d, k)
 
 
