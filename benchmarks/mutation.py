@@ -1181,6 +1181,8 @@ EQUIVALENT: dict[str, str] = {
         "to six digits either way",
     "demid/criticism/models.py::aicc_of::float('nan') => 'nan'#0":
         "the value is only read through json_number(), which turns 'nan' and nan alike into None",
+    "demid/criticism/catalogue.py::Round._lack_of_fit::0 => -1#0":
+        "e_obs is the one column m.resid_w[:, None] (Round.__init__): its first and last statistics are the same",
     "demid/criticism/catalogue.py::heteroscedasticity_lr::float(np.sum(np.log(sw))) => np.sum(np.log(sw))#0":
         _NUMPY_FLOAT + " (added to the profile's row of an array)",
     "demid/criticism/verdict.py::power_caveat::np.isfinite(size) and abs(size) >= 10000.0 => "
