@@ -861,7 +861,8 @@ TABLE: dict[str, dict] = {
     "demid/criticism/discrimination.py": {
         "functions": None,
         "tests": ["tests/criticism/test_discrimination.py", "tests/criticism/test_discrimination_properties.py",
-                  "tests/criticism/test_scatter_covariates.py", "tests/criticism/test_level1_finding_whole.py"],
+                  "tests/criticism/test_scatter_covariates.py", "tests/criticism/test_level1_finding_whole.py",
+                  "tests/criticism/test_discrimination_whole.py"],
     },
     "demid/criticism/reach.py": {
         "functions": None,
