@@ -1113,6 +1113,10 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/models.py::Model.__init__::float(np.mean(data.runs[keep].astype(float))) => "
     "np.mean(data.runs[keep].astype(float))#0":
         _NUMPY_FLOAT + " (run_center centres the run column and is the extended surrogate's reference run)",
+    "demid/criticism/aliasing.py::OneMoreRun.of::v.shape[1] < v.shape[0] => v.shape[1] <= v.shape[0]#0":
+        "with a full-rank base no candidate lies off its row space: `outside` becomes an all-False array instead "
+        "of None, which only makes with_run rebuild the state from an SVD instead of its rank-one update (the "
+        "same matrices to round-off; the choice reads log-determinants within _TIE = 1e-4 as ties)",
     "demid/criticism/aliasing.py::OneMoreRun.criteria::perp > floor => perp >= floor#0":
         "differs only where the part of w off the range of S equals the floor to the last bit: floor is positive "
         "(1e-12 of the columns' squares, at least 1e-300 of it), so a w inside the range (perp 0) gains no rank "
