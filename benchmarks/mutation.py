@@ -1148,6 +1148,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/models.py::Model.__init__::float(np.mean(data.runs[keep].astype(float))) => "
     "np.mean(data.runs[keep].astype(float))#0":
         _NUMPY_FLOAT + " (run_center centres the run column and is the extended surrogate's reference run)",
+    "demid/criticism/level1.py::_finding::float(np.exp(h.logp)) => np.exp(h.logp)#0":
+        _NUMPY_FLOAT + " (h.logp is a float: the finding's nominal p, written to JSON and text as a float)",
     "demid/criticism/aliasing.py::OneMoreRun.of::v.shape[1] < v.shape[0] => v.shape[1] <= v.shape[0]#0":
         "with a full-rank base no candidate lies off its row space: `outside` becomes an all-False array instead "
         "of None, which only makes with_run rebuild the state from an SVD instead of its rank-one update (the "
