@@ -1150,6 +1150,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/models.py::Model.__init__::float(np.mean(data.runs[keep].astype(float))) => "
     "np.mean(data.runs[keep].astype(float))#0":
         _NUMPY_FLOAT + " (run_center centres the run column and is the extended surrogate's reference run)",
+    "demid/criticism/level2.py::_best_point::float(np.max(problem.weights * np.abs(problem.errors(best_s)"
+    "[:, 0]))) => np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0]))#0":
+        _NUMPY_FLOAT + " (best_val is only compared, passed through float() and json_number)",
     "demid/criticism/level1.py::_finding::float(np.exp(h.logp)) => np.exp(h.logp)#0":
         _NUMPY_FLOAT + " (h.logp is a float: the finding's nominal p, written to JSON and text as a float)",
     "demid/criticism/aliasing.py::OneMoreRun.of::v.shape[1] < v.shape[0] => v.shape[1] <= v.shape[0]#0":

@@ -76,3 +76,25 @@ def test_drift_and_a_step_are_the_model_forms_they_add():
     model = Model(data, ModelForm(dropped=(2,)))
     assert extend_for(data, model, Hypothesis("drift", "run")) == (ModelForm(dropped=(2,), drift=True), {})
     assert extend_for(data, model, Hypothesis("step", np.int64(6))) == (ModelForm(dropped=(2,), step=6), {})
+
+
+@pytest.mark.parametrize("covariate", ["a", "fitted"])
+def test_unequal_scatter_on_a_long_table_has_the_gamma_of_the_model_by_model_search(covariate, monkeypatch):
+    """Above ASYMPTOTIC_RUNS runs the weights' gamma is searched from weighted sums of squares alone: the same
+    gamma and spread ratio as the search that fits a model at every step (forced here), and a spread that grows
+    along a (the table's scatter does) read as growing."""
+    from demid.criticism import extensions
+    from demid.criticism.level1 import prepare_data
+    from tests.criticism.test_large_studies import _table
+
+    data, _ = prepare_data(_table(300, 2, "scatter"), ["a", "b"], "y", 1.0, (), None)
+    model = Model(data, ModelForm())
+    h = Hypothesis("heteroscedasticity", covariate)
+    by_sums, info = extend_for(data, model, h)
+    monkeypatch.setattr(extensions, "ASYMPTOTIC_RUNS", 10 ** 9)
+    by_models, info_models = extend_for(data, model, h)
+    assert by_sums.weight_gamma == pytest.approx(by_models.weight_gamma, abs=1e-5)
+    assert info["sd_ratio"] == pytest.approx(info_models["sd_ratio"], rel=1e-5)
+    assert by_sums.weight_values == by_models.weight_values
+    if covariate == "a":
+        assert info["sd_ratio"] > 1.2

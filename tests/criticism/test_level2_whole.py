@@ -161,3 +161,18 @@ def _check_extensions(result, d: int, k: int) -> None:
     if spare >= 0:
         quoted = re.search(r"A shared relative bias of ([+-][\d.]+) % on all targets", message)
         assert float(quoted.group(1)) == pytest.approx(100 * result.shared_bias["delta"], abs=0.005 + 1e-9)
+
+
+def test_a_target_in_another_unit_stops_the_best_points_bounds_from_being_followed():
+    """Two rising responses whose targets lie past the upper bound: the best point sits on it and level 2 advises
+    widening; once either target is flagged implausible (far from every simulated value), where the best point
+    sits says nothing and no widening is advised, whichever of the two it is."""
+    surrogates = {"y0": _linear("y0", ["a"], 10.0, [2.0]), "y1": _linear("y1", ["a"], 5.0, [1.0])}
+    domain = Domain(("a",), (0.0,), (1.0,), (False,))
+    targets = {"y0": 12.4, "y1": 6.2}
+    plain = calibration_check(surrogates, domain, targets, 0.01, 11)
+    assert not plain.feasible and plain.best_point["a"] == pytest.approx(1.0)
+    assert plain.widen == {"a": ["upper"]} and "Widen the range of a" in plain.message
+    for flagged in (("y0",), ("y1",), ("y0", "y1")):
+        result = calibration_check(surrogates, domain, targets, 0.01, 11, implausible=flagged)
+        assert result.widen == {} and "Widen the range" not in result.message and result.reach == []
