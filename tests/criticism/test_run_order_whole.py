@@ -94,3 +94,13 @@ def test_a_design_in_standard_order_is_recognised_and_a_shuffle_of_it_is_not(k, 
     assert (unknown.drift_tested, unknown.reason) == (False, "declared_unknown")
     with pytest.raises(ValueError):
         assess_run_order(shuffled, listed, {}, declared="random")
+
+
+@pytest.mark.parametrize("k, columns", [(3, [2, 0, 1]), (4, [1, 3, 0, 2]), (5, [4, 3, 2, 1, 0])])
+def test_a_standard_order_is_recognised_whichever_factor_the_table_lists_first(k, columns):
+    """Up to four factors every naming of them is tried; beyond, the column order and its reverse."""
+    coded = ccd_points(k, 1.5, 2)
+    count = np.sum(np.abs(coded) > 1e-9, axis=1)
+    listed = coded[np.lexsort((np.arange(len(coded)), -count))][:, columns]
+    runs = np.arange(1, len(listed) + 1, dtype=float)
+    assert standard_order_correlation(runs, listed) == pytest.approx(1.0, abs=1e-12)
