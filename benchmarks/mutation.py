@@ -1154,6 +1154,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/level2.py::_best_point::float(np.max(problem.weights * np.abs(problem.errors(best_s)"
     "[:, 0]))) => np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0]))#0":
         _NUMPY_FLOAT + " (best_val is only compared, passed through float() and json_number)",
+    "demid/criticism/naming.py::_choices::1 => 0#2":
+        "the default of a step's change_points: the catalogue's one step hypothesis (Round._step) always carries "
+        "it",
+    "demid/criticism/naming.py::_choices::1 => 2#2":
+        "the default of a step's change_points: the catalogue's one step hypothesis (Round._step) always carries "
+        "it",
     "demid/criticism/level1.py::_finding::float(np.exp(h.logp)) => np.exp(h.logp)#0":
         _NUMPY_FLOAT + " (h.logp is a float: the finding's nominal p, written to JSON and text as a float)",
     "demid/criticism/aliasing.py::OneMoreRun.of::v.shape[1] < v.shape[0] => v.shape[1] <= v.shape[0]#0":
