@@ -1160,6 +1160,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/naming.py::_choices::1 => 2#2":
         "the default of a step's change_points: the catalogue's one step hypothesis (Round._step) always carries "
         "it",
+    "demid/criticism/searches.py::_shared_bias::float(delta[0]) => delta[0]#0":
+        _NUMPY_FLOAT + " (the shared bias's delta: compared, subtracted and written through json_number)",
     "demid/criticism/level1.py::_finding::float(np.exp(h.logp)) => np.exp(h.logp)#0":
         _NUMPY_FLOAT + " (h.logp is a float: the finding's nominal p, written to JSON and text as a float)",
     "demid/criticism/aliasing.py::OneMoreRun.of::v.shape[1] < v.shape[0] => v.shape[1] <= v.shape[0]#0":
