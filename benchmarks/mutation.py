@@ -1162,6 +1162,11 @@ EQUIVALENT: dict[str, str] = {
         "it",
     "demid/criticism/searches.py::_shared_bias::float(delta[0]) => delta[0]#0":
         _NUMPY_FLOAT + " (the shared bias's delta: compared, subtracted and written through json_number)",
+    "demid/criticism/run_order.py::RunOrder.to_json::float(self.correlation) => self.correlation#0":
+        "the correlation is already a Python float (spearmanr's through float(), or the largest of 0.0 and "
+        "_rank_correlation's floats)",
+    "demid/criticism/reach.py::reach_beyond_bound::float(hi[i] - lo[i]) => hi[i] - lo[i]#0":
+        _NUMPY_FLOAT + " (the range's width only scales t and the slope, each passed through float())",
     "demid/criticism/level1.py::_finding::float(np.exp(h.logp)) => np.exp(h.logp)#0":
         _NUMPY_FLOAT + " (h.logp is a float: the finding's nominal p, written to JSON and text as a float)",
     "demid/criticism/aliasing.py::OneMoreRun.of::v.shape[1] < v.shape[0] => v.shape[1] <= v.shape[0]#0":
