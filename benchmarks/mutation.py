@@ -167,7 +167,7 @@ today's equivalent list):
           run_order one_run discrimination reach edges    12/20 60.0 %   12/16 75.0 %   15/16 93.8 %
 
 Seed 29 pooled: 19/34 (55.9 %) as run, 19/24 (79.2 %) with the lists; ten of its fifteen survivors are
-equivalent (six a float() around a value numpy already gives as a float, a first-or-last of one column, a
+equivalent (seven a float() around a value already a float or numpy's, a first-or-last of one column, a
 count's default no caller leaves out, a test at a full-rank base that only trades a rank-one update for a
 rebuild), four were killed by tests added after it (level 2's implausible targets, the long-table gamma search,
 the long-table step AICc with weights, a standard order of four factors named in another order), one is left:
@@ -182,8 +182,8 @@ extend_for's position without int() and level 2 _best_point `unmoved and movable
 (the second is no shared-bias search: with no unmoved observable minimax searched every row and returned the
 very max_k w_k |e_k| the line recomputes).  Rows: level1 leaves out test_criticism.py's level-2 tests (70 of
 its 130 s); searches the 6-tolerance hidden bias (its 4-tolerance case stays, the biased observable is checked
-against linear programmes); models, catalogue, naming, discrimination, edges and verdict name the fast test files
-that exercise them.  Tests added (tests/criticism/*_whole.py, 1-6 s each), each against a computation written
+against linear programmes); the naming rows the two next-box tests of test_confirming_runs.py (the wave rows run
+them); models, catalogue, naming, discrimination, edges and verdict name the fast test files that exercise them.  Tests added (tests/criticism/*_whole.py, 1-6 s each), each against a computation written
 in the test: a model's summary, round-off on the fit's scale, extended surrogate and later run's row (numpy
 weighted fit); studentised residuals (statsmodels) and the outlier family p (Bonferroni); step projections on
 weighted fits and a 20,000-run table (step columns built one by one), the catalogue's step test from running
@@ -195,7 +195,10 @@ run column's followed response (scipy's Spearman) and standard orders; reach bey
 with every quoted number; the slip that fits a response exactly found first, last or between; the power
 caveat's numbers and a size at ten thousand to the last bit; extrapolation warnings and widen sentences; a new
 run's prediction (statsmodels), the separation of two models' predictions (explicit Mahalanobis and divergence)
-and the target separation's power.
+and the target separation's power; an outlier's predicted value (a refit without it), a transform's lambda-hat,
+interval and lambda used (a Box-Cox profile with numpy), unequal scatter's gamma and a step's AICc on 300-run
+tables (against the model-by-model paths).  Left: a transform's 99 % interval is read only when it changes the
+lambda used, which no generated table does.
 
 The module -> tests table below is by file path: when a module moves, update its
 row (path, functions, tests) and nothing else.
