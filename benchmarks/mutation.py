@@ -175,8 +175,9 @@ OneMoreRun.with_run `outside is not None` -> `is None` (with a base the runs can
 original rebuilds; on four such designs the runs chosen are the same, not shown equivalent).
 
 Seed 28's equivalent survivors: OneMoreRun.criteria's perp >= floor, extend_for's position without int(),
-_deciding_runs' kinds from the first or second model, run_order _ranks' shift by one; the others were killed by
-the tests below (each re-run by hand against the mutated line).  Of the fourth held-out draw's survivors left:
+_deciding_runs' kinds from the first or second model, run_order _ranks' shift by one; the other eleven were
+killed by the tests below, and so were seed 29's four (all fifteen re-run with ``--ids`` at the round's end, the
+rows' own times unmutated then 6-53 s on a quieter machine: level1 17 s, searches 19 s, extensions 21 s).  Of the fourth held-out draw's survivors left:
 level1's ambiguity sentence is killed (its row now names the finding and scatter-covariate tests);
 extend_for's position without int() and level 2 _best_point `unmoved and movable` -> `movable` are equivalent
 (the second is no shared-bias search: with no unmoved observable minimax searched every row and returned the
