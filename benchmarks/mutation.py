@@ -224,6 +224,53 @@ conversions of stored, sobol, residuals, polish, fit_statistics, paper, io, esti
 numpy float, int() of an int, float() of a number only added, multiplied or compared) are listed as equivalent
 without having been drawn, each read with its callers.
 
+Sixth round, the seventeen criticism rows (new in-sample draws, ``--per-module 2``, each run before any test was
+aimed at it: seed 28 on the round's start, seed 29 on seed 28's tests as far as they were written when it
+started; a machine loaded by five other mutation runs, a row's own time unmutated 15-215 s; "with lists":
+today's equivalent list):
+
+    seed  modules                                         as run          with lists     after (survivors re-run)
+    28    all seventeen                                   19/34 55.9 %   19/30 63.3 %   30/30 100 %
+    29    models catalogue outliers step_changes level1
+          level2 searches                                  7/14 50.0 %    7/8  87.5 %    8/8  100 %
+    29    aliasing extensions naming slips verdict
+          run_order one_run discrimination reach edges    12/20 60.0 %   12/16 75.0 %   15/16 93.8 %
+
+Seed 29 pooled: 19/34 (55.9 %) as run, 19/24 (79.2 %) with the lists; ten of its fifteen survivors are
+equivalent (seven a float() around a value already a float or numpy's, a first-or-last of one column, a
+count's default no caller leaves out, a test at a full-rank base that only trades a rank-one update for a
+rebuild), four were killed by tests added after it (level 2's implausible targets, the long-table gamma search,
+the long-table step AICc with weights, a standard order of four factors named in another order), one is left:
+OneMoreRun.with_run `outside is not None` -> `is None` (with a base the runs cannot estimate it updates where the
+original rebuilds; on four such designs the runs chosen are the same, not shown equivalent).
+
+Seed 28's equivalent survivors: OneMoreRun.criteria's perp >= floor, extend_for's position without int(),
+_deciding_runs' kinds from the first or second model, run_order _ranks' shift by one; the other eleven were
+killed by the tests below, and so were seed 29's four (all fifteen re-run with ``--ids`` at the round's end, the
+rows' own times unmutated then 6-53 s on a quieter machine: level1 17 s, searches 19 s, extensions 21 s).  Of the fourth held-out draw's survivors left:
+level1's ambiguity sentence is killed (its row now names the finding and scatter-covariate tests);
+extend_for's position without int() and level 2 _best_point `unmoved and movable` -> `movable` are equivalent
+(the second is no shared-bias search: with no unmoved observable minimax searched every row and returned the
+very max_k w_k |e_k| the line recomputes).  Rows: level1 leaves out test_criticism.py's level-2 tests (70 of
+its 130 s); searches the 6-tolerance hidden bias (its 4-tolerance case stays, the biased observable is checked
+against linear programmes); the naming rows the two next-box tests of test_confirming_runs.py (the wave rows run
+them); models, catalogue, naming, discrimination, edges and verdict name the fast test files that exercise them.  Tests added (tests/criticism/*_whole.py, 1-6 s each), each against a computation written
+in the test: a model's summary, round-off on the fit's scale, extended surrogate and later run's row (numpy
+weighted fit); studentised residuals (statsmodels) and the outlier family p (Bonferroni); step projections on
+weighted fits and a 20,000-run table (step columns built one by one), the catalogue's step test from running
+sums (against the column-by-column path, null draws in blocks of 1, 5 or all); a scatter finding's every number
+and sentence (a WLS profile with statsmodels); level 2 over 1-2 factors and 1-4 observables of either sign
+against scipy's linear programmes (best error, feasibility, the error and bias without each observable, the
+shared bias, bottleneck, candidates, the extensions' table, the message's counts of spare measurements); the
+run column's followed response (scipy's Spearman) and standard orders; reach beyond a bound in closed form
+with every quoted number; the slip that fits a response exactly found first, last or between; the power
+caveat's numbers and a size at ten thousand to the last bit; extrapolation warnings and widen sentences; a new
+run's prediction (statsmodels), the separation of two models' predictions (explicit Mahalanobis and divergence)
+and the target separation's power; an outlier's predicted value (a refit without it), a transform's lambda-hat,
+interval and lambda used (a Box-Cox profile with numpy), unequal scatter's gamma and a step's AICc on 300-run
+tables (against the model-by-model paths).  Left: a transform's 99 % interval is read only when it changes the
+lambda used, which no generated table does.
+
 The module -> tests table below is by file path: when a module moves, update its
 row (path, functions, tests) and nothing else.
 
@@ -519,17 +566,22 @@ _EXACT_SET_TESTS = ["tests/sampling/test_exact_sets.py", "tests/sampling/test_qu
                     "tests/sampling/test_quadrature_whole.py", "tests/sampling/test_exact_polynomial_whole.py",
                     "tests/sampling/test_exact_set_whole.py"]
 # level 1's naming of causes (aliasing, extensions, naming, slips): the criticism's planted effects and its
-# confirming and deciding runs; the level-2, figure and 3-factor tests exercise other modules, and the slowest
-# confirming-runs test repeats an outlier-or-slip case of the faster ones at four times their cost
+# confirming and deciding runs; the level-2, figure and 3-factor tests exercise other modules, the slowest
+# confirming-runs test repeats an outlier-or-slip case of the faster ones at four times their cost, and the two
+# next-box tests (35 of the row's ~200 s on a loaded machine) test the next wave's box, which the wave rows run
 _NAMING_TESTS = ["tests/criticism/test_criticism.py", "tests/criticism/test_catalogue_known_answers.py",
                  "tests/criticism/test_level1_known_answers.py", "tests/criticism/test_confirming_runs.py",
                  "tests/criticism/test_scatter_covariates.py", "tests/criticism/test_linear_memory.py",
                  "tests/criticism/test_term_classes_properties.py", "tests/criticism/test_models_properties.py",
-                 "-knot level2 and not residual_figure and not 3f and not ambiguous_verdicts_slip"]
+                 "tests/criticism/test_level1_finding_whole.py", "tests/criticism/test_scatter_gamma_search.py",
+                 "tests/criticism/test_extensions_whole.py", "tests/criticism/test_naming_steps_whole.py",
+                 "-knot level2 and not residual_figure and not 3f and not ambiguous_verdicts_slip"
+                 " and not next_wave_makes_the_runs and not with_a_next_box"]
 # the level-2 search's tests
 _LEVEL2_TESTS = ["tests/criticism/test_level2_known_answers.py", "tests/test_reported_numbers.py",
                  "tests/criticism/test_criticism.py", "tests/criticism/test_edges.py",
-                 "tests/criticism/test_unreachable_targets.py", "-klevel2 or edge or reach"]
+                 "tests/criticism/test_unreachable_targets.py", "tests/criticism/test_level2_whole.py",
+                 "-klevel2 or edge or reach"]
 # the transcription check's tests (the CLI ones run the check end to end on a small table)
 _TRANSCRIPTION_TESTS = ["tests/transcription/test_transcription.py",
                         "tests/transcription/test_transcription_printed_inputs.py",
@@ -604,6 +656,9 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/test_statistics_known_answers.py", "tests/criticism/test_criticism.py", "tests/test_core_contracts.py",
                   "tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_level1_known_answers.py",
                   "tests/criticism/test_models_properties.py", "tests/criticism/test_linear_memory.py",
+                  "tests/criticism/test_models_whole.py", "tests/criticism/test_step_changes_whole.py",
+                  "tests/criticism/test_slips_brute_force.py", "tests/criticism/test_scatter_gamma_search.py",
+                  "tests/criticism/test_discrimination_properties.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/catalogue.py": {
@@ -612,19 +667,23 @@ TABLE: dict[str, dict] = {
         # 2-factor ones at four times the cost
         "tests": ["tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_criticism.py",
                   "tests/criticism/test_models_properties.py", "tests/test_core_contracts.py",
-                  "tests/criticism/test_linear_time_equivalents.py",
+                  "tests/criticism/test_linear_time_equivalents.py", "tests/criticism/test_catalogue_steps_whole.py",
+                  "tests/criticism/test_scatter_gamma_search.py", "tests/criticism/test_one_run_by_identity.py",
+                  "tests/criticism/test_level1_finding_whole.py",
                   "tests/criticism/test_level1_known_answers.py::test_a_slipped_factor_value_is_moved_and_the_loo_"
                   "errors_are_the_refits", "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/outliers.py": {
         "functions": None,
         "tests": ["tests/criticism/test_linear_time_equivalents.py", "tests/criticism/test_catalogue_known_answers.py",
-                  "tests/criticism/test_criticism.py", "-knot level2 and not residual_figure and not 3f"],
+                  "tests/criticism/test_criticism.py", "tests/criticism/test_outliers_whole.py",
+                  "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/step_changes.py": {
         "functions": None,
         "tests": ["tests/criticism/test_linear_memory.py", "tests/criticism/test_large_studies.py",
-                  "tests/criticism/test_catalogue_known_answers.py"],
+                  "tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_step_changes_whole.py",
+                  "tests/criticism/test_catalogue_steps_whole.py"],
     },
     "demid/transcription/printed.py": {
         "functions": None,
@@ -659,7 +718,7 @@ TABLE: dict[str, dict] = {
                   "tests/test_reported_numbers.py", "tests/criticism/test_lone_runs.py", "tests/criticism/test_noise_free.py",
                   "tests/criticism/test_blocks_steps.py::test_outlier_against_a_batch_gives_ambiguous_and_runs_that_decide",
                   "tests/criticism/test_run_order.py::test_tables_printed_in_another_order_get_no_drift_finding",
-                  "-knot 3f"],
+                  "tests/criticism/test_level1_finding_whole.py", "-knot 3f and not level2"],
     },
     "demid/criticism/level2.py": {
         "functions": None,
@@ -670,7 +729,9 @@ TABLE: dict[str, dict] = {
         "tests": [*_LEVEL2_TESTS[:-1], "tests/criticism/test_shared_bias_properties.py",
                   "tests/criticism/test_level2_own_tolerance.py", "tests/criticism/test_level2_sign_properties.py",
                   "tests/test_reported_boundaries.py::test_spread_starts_takes_the_best_ranked_node_first_then_the_next_far_enough_ones",
-                  _LEVEL2_TESTS[-1] + " or shared_bias or spread_starts"],
+                  # the hidden bias at 6 tolerances repeats the 4-tolerance case at its cost; the uniqueness it
+                  # adds (the biased observable) is checked against linear programmes in test_level2_whole.py
+                  "-k(level2 or edge or reach or shared_bias or spread_starts) and not spare_measurement[6"],
     },
     "demid/criticism/aliasing.py": {
         "functions": None,
@@ -686,13 +747,14 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/slips.py": {
         "functions": None,
-        "tests": _NAMING_TESTS + ["tests/criticism/test_slips_brute_force.py"],
+        "tests": _NAMING_TESTS + ["tests/criticism/test_slips_brute_force.py", "tests/criticism/test_slips_whole.py"],
     },
     "demid/criticism/verdict.py": {
         "functions": None,
         # the verdict's reported numbers and the fast honest-cause tests (the rate tests repeat them at 20x
         # the cost)
-        "tests": ["tests/test_reported_numbers.py", "tests/criticism/test_lone_runs.py", *[
+        "tests": ["tests/test_reported_numbers.py", "tests/criticism/test_lone_runs.py",
+                  "tests/criticism/test_verdict_whole.py", "tests/criticism/test_simulated_runs.py", *[
             f"tests/criticism/test_honest_causes.py::{name}" for name in (
                 "test_misfit_without_a_catalogue_cause_is_unexplained_or_points_at_a_moved_run",
                 "test_noise_only_response_does_not_predict", "test_detectable_departure_has_its_power_by_simulation",
@@ -705,7 +767,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/run_order.py": {
         "functions": None,
-        "tests": ["tests/criticism/test_run_order.py", "tests/test_reported_numbers.py", "tests/criticism/test_criticism.py",
+        "tests": ["tests/criticism/test_run_order.py", "tests/criticism/test_run_order_whole.py",
+                  "tests/test_reported_numbers.py", "tests/criticism/test_criticism.py",
                   "-kdrift or run_order or order"],
     },
     "demid/uncertainty/ranking.py": {
@@ -945,16 +1008,18 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/discrimination.py": {
         "functions": None,
-        "tests": ["tests/criticism/test_discrimination.py", "tests/criticism/test_discrimination_properties.py"],
+        "tests": ["tests/criticism/test_discrimination.py", "tests/criticism/test_discrimination_properties.py",
+                  "tests/criticism/test_scatter_covariates.py", "tests/criticism/test_level1_finding_whole.py",
+                  "tests/criticism/test_discrimination_whole.py"],
     },
     "demid/criticism/reach.py": {
         "functions": None,
         # the heap test reads examples/, which the private tree does not hold
-        "tests": ["tests/criticism/test_reach.py", "-knot heap"],
+        "tests": ["tests/criticism/test_reach.py", "tests/criticism/test_reach_whole.py", "-knot heap"],
     },
     "demid/criticism/edges.py": {
         "functions": None,
-        "tests": ["tests/criticism/test_edges.py"],
+        "tests": ["tests/criticism/test_edges.py", "tests/criticism/test_edges_whole.py", "tests/test_physical_limits.py"],
     },
     "demid/uncertainty/sweep.py": {
         "functions": None,
@@ -1184,6 +1249,61 @@ EQUIVALENT: dict[str, str] = {
         _NUMPY_FLOAT + " (the observed value of a finding's detail, written to JSON through _clean)",
     "demid/criticism/extensions.py::extend_for::int(np.argmax(prof)) => np.argmax(prof)#0":
         "best only indexes the lambda grid: a numpy integer indexes the same element",
+    "demid/criticism/extensions.py::extend_for::int(np.flatnonzero(np.flatnonzero(model.keep) == i)[0]) => "
+    "np.flatnonzero(np.flatnonzero(model.keep) == i)[0]#0":
+        "pos only indexes model.loo_errors: a numpy integer indexes the same element (pos is neither stored nor "
+        "printed)",
+    "demid/criticism/extensions.py::extend_for::int(np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0]) => "
+    "np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0]#0":
+        "the position only indexes model.coded (then copied): a numpy integer indexes the same row",
+    "demid/criticism/run_order.py::_ranks::np.cumsum(new_row) - 1 => np.cumsum(new_row)#0":
+        "every rank one higher: the ranks are read only by _rank_correlation, a Pearson correlation (and a ptp "
+        "test), which no shift of one variable changes",
+    "demid/criticism/models.py::Model.__init__::float(np.mean(data.runs[keep].astype(float))) => "
+    "np.mean(data.runs[keep].astype(float))#0":
+        _NUMPY_FLOAT + " (run_center centres the run column and is the extended surrogate's reference run)",
+    "demid/criticism/level2.py::_best_point::float(np.max(problem.weights * np.abs(problem.errors(best_s)"
+    "[:, 0]))) => np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0]))#0":
+        _NUMPY_FLOAT + " (best_val is only compared, passed through float() and json_number)",
+    "demid/criticism/naming.py::_choices::1 => 0#2":
+        "the default of a step's change_points: the catalogue's one step hypothesis (Round._step) always carries "
+        "it",
+    "demid/criticism/naming.py::_choices::1 => 2#2":
+        "the default of a step's change_points: the catalogue's one step hypothesis (Round._step) always carries "
+        "it",
+    "demid/criticism/searches.py::_shared_bias::float(delta[0]) => delta[0]#0":
+        _NUMPY_FLOAT + " (the shared bias's delta: compared, subtracted and written through json_number)",
+    "demid/criticism/run_order.py::RunOrder.to_json::float(self.correlation) => self.correlation#0":
+        "the correlation is already a Python float (spearmanr's through float(), or the largest of 0.0 and "
+        "_rank_correlation's floats)",
+    "demid/criticism/reach.py::reach_beyond_bound::float(hi[i] - lo[i]) => hi[i] - lo[i]#0":
+        _NUMPY_FLOAT + " (the range's width only scales t and the slope, each passed through float())",
+    "demid/criticism/level1.py::_finding::float(np.exp(h.logp)) => np.exp(h.logp)#0":
+        _NUMPY_FLOAT + " (h.logp is a float: the finding's nominal p, written to JSON and text as a float)",
+    "demid/criticism/aliasing.py::OneMoreRun.of::v.shape[1] < v.shape[0] => v.shape[1] <= v.shape[0]#0":
+        "with a full-rank base no candidate lies off its row space: `outside` becomes an all-False array instead "
+        "of None, which only makes with_run rebuild the state from an SVD instead of its rank-one update (the "
+        "same matrices to round-off; the choice reads log-determinants within _TIE = 1e-4 as ties)",
+    "demid/criticism/aliasing.py::OneMoreRun.criteria::perp > floor => perp >= floor#0":
+        "differs only where the part of w off the range of S equals the floor to the last bit: floor is positive "
+        "(1e-12 of the columns' squares, at least 1e-300 of it), so a w inside the range (perp 0) gains no rank "
+        "either way",
+    "demid/criticism/naming.py::_deciding_runs::0 => 1#0":
+        "kinds only decide which pairs of models are separated (unequal kinds); the confirming entries are "
+        "close_candidates', one per kind, and an alias's kind (\"alias\", its label) is unique, so every kind "
+        "differs from every other with the first or the second model of an entry taking the cause's kind: the "
+        "same pairs, the same runs",
+    "demid/criticism/level2.py::_best_point::unmoved and movable => movable#0":
+        "the recomputed error differs from minimax's only when some observable is left out of the search; with "
+        "none unmoved minimax searched every row without a shared bias and returns max_k w_k |e_k| at its point, "
+        "the same expression recomputed (a grid node's errors come from one batched prediction, the recomputed "
+        "ones from one point: at most the last bit, read only by a comparison with the tolerance + 1e-12)",
+    "demid/criticism/level2.py::_best_point::unmoved and movable => unmoved#0":
+        "with every observable unmoved minimax searched every row: the recomputed max_k w_k |e_k| at its point is "
+        "its own value (to the last bit of a batched grid prediction, read only against the tolerance + 1e-12)",
+    "demid/criticism/level2.py::_best_point::unmoved and movable => unmoved or movable#0":
+        "recomputes the error also where minimax searched every row, then the same max_k w_k |e_k| at the same "
+        "point (to the last bit of a batched grid prediction, read only against the tolerance + 1e-12)",
     # --- tolerance
     "demid/tolerance.py::band_scale::float(tolerance) => tolerance#0":
         "the product with the float abs(float(target)) is a float either way",
@@ -1240,8 +1360,10 @@ EQUIVALENT: dict[str, str] = {
         "to six digits either way",
     "demid/criticism/models.py::aicc_of::float('nan') => 'nan'#0":
         "the value is only read through json_number(), which turns 'nan' and nan alike into None",
-    "demid/criticism/catalogue.py::heteroscedasticity_lr::np.sum(r * r, axis=0) / n => np.sum(r * r, axis=0)#0":
-        "shifts every profile log-likelihood by the same 0.5 n log n; the statistic is a difference of two",
+    "demid/criticism/catalogue.py::Round._lack_of_fit::0 => -1#0":
+        "e_obs is the one column m.resid_w[:, None] (Round.__init__): its first and last statistics are the same",
+    "demid/criticism/catalogue.py::heteroscedasticity_lr::float(np.sum(np.log(sw))) => np.sum(np.log(sw))#0":
+        _NUMPY_FLOAT + " (added to the profile's row of an array)",
     "demid/criticism/verdict.py::power_caveat::np.isfinite(size) and abs(size) >= 10000.0 => "
     "abs(size) >= 10000.0#0":
         "differs only for an infinite size, where plain_number falls back to short_number as well: both print 'inf'",
