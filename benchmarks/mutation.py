@@ -1268,9 +1268,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/naming.py::_choices::1 => 0#2":
         "the default of a step's change_points: the catalogue's one step hypothesis (Round._step) always carries "
         "it",
-    "demid/criticism/naming.py::_choices::1 => 2#2":
-        "the default of a step's change_points: the catalogue's one step hypothesis (Round._step) always carries "
-        "it",
     "demid/criticism/searches.py::_shared_bias::float(delta[0]) => delta[0]#0":
         _NUMPY_FLOAT + " (the shared bias's delta: compared, subtracted and written through json_number)",
     "demid/criticism/run_order.py::RunOrder.to_json::float(self.correlation) => self.correlation#0":
