@@ -174,6 +174,13 @@ crossing 0.207 against LHS 0.282 (0.74 x, 6/10 wins), ridge 0.826 / 1.102 (0.75 
 wave in 4/30, beyond noise in 0/30; every study 31 runs.  So on other seeds crossing and ridge meet 0.8 x and
 corner does not: with ten seeds a simulator's ratio moves by 0.1-0.25 between seed ranges (crossing 0.99 / 0.74,
 ridge 0.83 / 0.75, corner 0.64 / 0.83), and the per-simulator goal is met or missed within that scatter.
+The other three on held-out seeds (``--simulators saturating,periodic,step --seed-start 100 --seeds 10``, 222 s on
+an idle machine): saturating 0.328 / 0.519 (0.63 x, 8/10), periodic 0.660 / 1.770 (0.37 x, 10/10), step 0.305 / 0.758
+(0.40 x, 10/10).  All 60 held-out studies: 0.349 against 0.659 (0.53 x, 49/60 wins), strict coverage 0.81, plausible
+0.95, worse than the first wave in 5/60, beyond noise in 0/60.  Pooled, 20 seeds per simulator (120 studies): loop
+0.355 against LHS 0.723, 0.49 x (102/120 wins); saturating 0.59 x, periodic 0.31, step 0.44, crossing 0.82, corner
+0.64, ridge 0.80; coverage of the strict set 0.81 (per simulator 0.57-0.99), of the plausible set 0.94 (0.89-1.00);
+worse than the first wave in 11/120, beyond noise in 1/120; no study over its budget.
 """
 
 from __future__ import annotations
