@@ -72,6 +72,22 @@ sc.label != sc.name -> ==; data far_target_warnings <= hi -> < hi; design_genera
 conversion (int, float) around a value that is perhaps already of that type (53/66 = 80 % if both are equivalent).
 No test has been written against them; the next held-out draw needs a new seed.
 
+Fifth held-out draw (seed 540_073, written down before the sixth round's tests and never run until they were
+written; ``--held-out --held-out-only --per-module 1`` over all 72 rows, leaving out SEEN_DRAWS, in two halves side
+by side on the code of 25ba620, an otherwise idle machine, 11 minutes): **55 of 67 killed, 82.1 %** (28/33 and
+27/34; two listed equivalent), against 75-83 % as run for the round's own unseen in-sample draws (seeds 28-29;
+criticism rows 56 %) and 100 % after.  Survivors: sampling/grid fraction_with_error's step hi_u - lo_u -> hi_u + lo_u
+(the grid evaluator's fraction error on a range not starting at 0); criticism/catalogue _boxcox_bootstrap's tie slack
+lr_obs - 1e-9 -> + 1e-9; sampling/evaluate start_nodes 5 -> 6; uncertainty/ranking float(tolerance) dropped;
+transcription/engine DesignFit's rank tolerance without s.max(); surrogate predict_all's one-point reshape 1 -> 0;
+criticism/extensions extend_for float(plausible.min()) dropped; transcription/check the default source `or` ->
+`and` (a message without the table it names); waves wave_history int(analysed) dropped; combinations/axes
+principal_axes' empty-set test len == 0 -> == -1 (equivalent: an empty set's weights sum to 0, the same return);
+design_inference _closest_three_level_family 10 -> 9; uncertainty/sweep the stored strict set used when z > 0 too.
+Three drop a conversion around a value perhaps already of that type and one is equivalent as read (55/63 = 87 % if
+all four are).  After this draw was read, tests were written against three of them (below): it is in SEEN_DRAWS now
+and the next round's held-out draw has a new seed.
+
 Fourth round, the uncertainty, story, combinations, design, wave and loop modules (28 rows; new in-sample draws,
 seeds 21, 22 and 23 with ``--per-module 2`` and 21 and 22 again with 4, each run before any test was aimed at it, on the
 tests of the round so far; "with lists": survivors that reading showed equivalent or a search setting left out of the score):
@@ -2135,7 +2151,7 @@ def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]
 #: its mutants are drawn apart from the in-sample draw (the default ``--seed``, against which tests were written
 #: run by run), and no test may be written against them.  Once its survivors have been read and tests added for
 #: them, its score is in-sample too: write down a new seed here, unused, before the next round.
-HELD_OUT_SEED = 540_073  # the next round's; 318_557's draw was scored and read (in SEEN_DRAWS now)
+HELD_OUT_SEED = 613_447  # the next round's; 540_073's draw was scored and read (in SEEN_DRAWS now)
 
 
 #: Draws that tests were written against, run by run (seed, mutants per module): never part of a held-out draw.
@@ -2143,7 +2159,7 @@ HELD_OUT_SEED = 540_073  # the next round's; 318_557's draw was scored and read 
 #: draw's survivors were read and tested), the second and third held-out draws (704_913, 3 per module; 902_611, 1)
 #: were read and tested, and so were the fourth round's draws (seeds 21-22 with 4 per module, 23 with 2, 24 with 2,
 #: 25 with 1).
-SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2"]
+SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1"]
 
 
 def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:
