@@ -85,8 +85,13 @@ criticism/extensions extend_for float(plausible.min()) dropped; transcription/ch
 principal_axes' empty-set test len == 0 -> == -1 (equivalent: an empty set's weights sum to 0, the same return);
 design_inference _closest_three_level_family 10 -> 9; uncertainty/sweep the stored strict set used when z > 0 too.
 Three drop a conversion around a value perhaps already of that type and one is equivalent as read (55/63 = 87 % if
-all four are).  After this draw was read, tests were written against three of them (below): it is in SEEN_DRAWS now
-and the next round's held-out draw has a new seed.
+all four are).  After this draw was read: the grid's step killed by tests/sampling/test_grid_fraction_translation.py (the same
+fraction and error over a range shifted off 0; annuli inside a cell are sub-sampled from the range's start), the
+check's default source by tests/transcription/test_check_source_default.py; principal_axes' empty test, the sweep's
+z == 0 (its one caller sweeps strict sets) and wave_history's int() of a len() listed as equivalent (55/64 = 85.9 %
+with those read).  The draw is in SEEN_DRAWS now and the next round's held-out draw has a new seed.  Found on the way,
+not fixed: on a set that lies inside one or two cells of a coarse grid (an annulus of radius 0.05 on a 9-point grid)
+the grid's error estimate (0.0014) falls short of the true error (0.0084): the nested coarse grid misses it too.
 
 Fourth round, the uncertainty, story, combinations, design, wave and loop modules (28 rows; new in-sample draws,
 seeds 21, 22 and 23 with ``--per-module 2`` and 21 and 22 again with 4, each run before any test was aimed at it, on the
@@ -1795,6 +1800,16 @@ EQUIVALENT: dict[str, str] = {
     "demid/story/measurements.py::measurement_order::2 => 3#0":
         "by_frac[3] (a gain, never equal to a name) != best is always true, but where by_frac is best itself its "
         "fraction is f_new, so `by_frac[1] < f_new` is false either way",
+    # --- the fifth held-out draw's survivors read as equivalent (seed 540_073; in SEEN_DRAWS since)
+    "demid/combinations/axes.py::principal_axes::0 => -1#0":
+        "an empty set's weights (ones(0), or the caller's empty array) sum to 0, so `w.sum() <= 0` returns None "
+        "for it either way",
+    "demid/uncertainty/sweep.py::tolerance_sweep::z == 0 and eps == float(nominal) => eps == float(nominal)#0":
+        "its one caller (uncertainty/material) sweeps the strict sets only (z at its default 0), where the two "
+        "conditions are the same",
+    "demid/waves.py::wave_history::int(wave['analysed']) => wave['analysed']#0":
+        "wave['analysed'] is len(table) wherever a wave is built (scripts/wave_history.py, wave_summary): an int "
+        "already",
     "demid/sampling/stored.py::stored_strict_sets::0 => 1#3":
         "frame.iloc[1:0] is as empty as frame.iloc[0:0] (a slice that starts after it stops): a table without the "
         "state columns still gives no stored set",
