@@ -1040,7 +1040,8 @@ TABLE: dict[str, dict] = {
     "demid/criticism/reach.py": {
         "functions": None,
         # the heap test reads examples/, which the private tree does not hold
-        "tests": ["tests/criticism/test_reach.py", "tests/criticism/test_reach_whole.py", "-knot heap"],
+        "tests": ["tests/criticism/test_reach.py", "tests/criticism/test_reach_whole.py", "tests/criticism/test_reach_straight.py",
+                  "-knot heap"],
     },
     "demid/criticism/edges.py": {
         "functions": None,

@@ -22,6 +22,9 @@ from .models import short_number
 #: the quadratic's extrapolation rests on no run, and a target it reaches there is no evidence the model can.
 WIDEN_LIMIT = 0.5
 _STEP = 0.01  # finite-difference step, fraction of the range
+#: A second difference within this many machine epsilons of the responses' size is round-off (each of the three
+#: predictions carries a few epsilons of relative error).
+_ROUND_OFF = 64 * np.finfo(float).eps
 
 
 @dataclass(frozen=True)
@@ -118,6 +121,10 @@ def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, o
     f_minus, f0, f_plus = predict([-_STEP, 0.0, _STEP])
     g = (f_plus - f_minus) / (2 * _STEP)           # per fraction of the range, outwards
     c = (f_plus - 2 * f0 + f_minus) / _STEP ** 2
+    # a straight response's second difference is round-off, not curvature: taken as curvature, it put a response
+    # moving away from its target "back in its band" some 1e10 ranges beyond the bound
+    if abs(c) <= _ROUND_OFF * max(abs(f_minus), abs(f0), abs(f_plus)) / _STEP ** 2:
+        c = 0.0
     direction = 1.0 if f0 < target else -1.0      # the observable must rise (+1) or fall (-1)
     edge = target - direction * tolerance * abs(target)
     gap = direction * (edge - f0)                  # > 0 while outside the band
