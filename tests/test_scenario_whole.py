@@ -12,11 +12,10 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from demid.design import quadratic_terms
 from demid.scenario import (judged_scenarios, measurement_sigma, measurement_sigmas, own_band_basis,
                             plausible_basis, reference_scenario, scenario_bands, sigma_basis)
 from demid.spec import MaterialSpec
-from demid.surrogate import Surrogate
+from tests.test_judged_scenario_properties import _surrogate
 
 _NUMBER = r"[-+]?\d*\.?\d+(?:e[-+]?\d+)?"
 
@@ -122,15 +121,6 @@ def test_plausible_basis_and_the_own_band_basis_quote_each_source(o, mantissa, t
         assert np.isclose(_numbers(words)[0], 0.043 / z, rtol=1e-5)
     else:
         assert words == sigma_basis(None, tolerance / z, z)
-
-
-def _surrogate(name: str, intercept: float, slopes, se: float) -> Surrogate:
-    terms = quadratic_terms(2)
-    coef = np.zeros(len(terms))
-    coef[:3] = intercept, *slopes
-    cov = np.zeros((len(terms), len(terms)))
-    cov[0, 0] = se ** 2
-    return Surrogate(name, ["a", "b"], terms, coef, cov, 0.0, 5, ())
 
 
 @given(responses=st.lists(_RESPONSE, min_size=1, max_size=3), tolerance=st.sampled_from([0.02, 0.1]),
