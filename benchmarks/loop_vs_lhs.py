@@ -362,18 +362,24 @@ def _estimate(study: Study, spec, result, statistics: pd.DataFrame | None = None
     return estimate
 
 
+def _first_design(study: Study):
+    """The study's material spec, as a user declares it, and the points of its first wave (the 13-run CCD)."""
+    from demid.spec import MaterialSpec
+    from demid.waves import first_wave
+
+    material, grid_points = _checked(_material(study.targets, study.seed))
+    spec = MaterialSpec.from_material("m", material, grid_points=grid_points)
+    return spec, first_wave(spec, int(material["simulation"]["seed"]))[list(FACTORS)].to_numpy(dtype=float)
+
+
 def run_loop(study: Study, folder: Path) -> dict:
     """demid's waves, as workflow/rules/simulation.smk runs them (see the module docstring)."""
     from demid.io import as_stored, write_csv
     from demid.next_wave import plan_waves, tabulate_waves
-    from demid.spec import MaterialSpec
-    from demid.waves import first_wave, next_wave_runs, stop_decision, stops_early, wave_evidence, wave_spec
+    from demid.waves import next_wave_runs, stop_decision, stops_early, wave_evidence, wave_spec
 
-    material, grid_points = _checked(_material(study.targets, study.seed))
-    spec = MaterialSpec.from_material("m", material, grid_points=grid_points)
+    spec, points = _first_design(study)
     rng = np.random.default_rng([study.seed, 1])
-    runs = first_wave(spec, int(material["simulation"]["seed"]))
-    points = runs[list(FACTORS)].to_numpy(dtype=float)
     table = _table(points, study.simulate(points, rng))
     domain, scores, stop, largest_wave, previous = None, [], False, 0, None
     for wave in range(1, WAVES + 1):
@@ -415,12 +421,9 @@ def run_loop(study: Study, folder: Path) -> dict:
 def first_wave_redraws(study: Study, folder: Path, draws: int = 2) -> list[float]:
     """The first wave's set error with the same 13 runs and fresh noise (``draws`` times): the seed-to-seed
     spread of a first wave's answer, the noise a later wave's error is judged against."""
-    from demid.spec import MaterialSpec
-    from demid.waves import first_wave, wave_spec
+    from demid.waves import wave_spec
 
-    material, grid_points = _checked(_material(study.targets, study.seed))
-    spec = MaterialSpec.from_material("m", material, grid_points=grid_points)
-    points = first_wave(spec, int(material["simulation"]["seed"]))[list(FACTORS)].to_numpy(dtype=float)
+    spec, points = _first_design(study)
     errors = []
     for draw in range(draws):
         rng = np.random.default_rng([study.seed, 5, draw])
