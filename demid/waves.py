@@ -21,6 +21,7 @@ import pandas as pd
 from .precision import counted, q2_text
 from .simulation import reserved_file
 from .spec import MaterialSpec
+from .surrogate_choice import MISFIT_P
 
 
 def waves_max(spec: MaterialSpec) -> int:
@@ -100,8 +101,9 @@ def next_wave_runs(proposals: pd.DataFrame, factors, first_run: int) -> pd.DataF
 #: The leave-one-out Q² a surrogate must reach before the waves may stop on its plausible set: below it the
 #: surrogate does not predict the runs it was not fitted to well enough for its set to be the answer.
 STOP_Q2 = 0.5
-#: A lack-of-fit p-value at or below this says the surrogate misfits the replicated runs.
-LACK_OF_FIT_ALPHA = 0.05
+#: A lack-of-fit p-value at or below this says the surrogate misfits the replicated runs: the level at which the
+#: surrogate choice calls the quadratic misfitting, one number for both.
+LACK_OF_FIT_ALPHA = MISFIT_P
 #: After the first design (no change measured yet) the waves stop on a predicted shrink only when each
 #: observable's leave-one-out prediction error is at most this share of its tolerance band's half-width: then
 #: the set's boundary lies within a quarter of the band of where it is drawn, so the band, not the surrogate,
