@@ -864,7 +864,7 @@ TABLE: dict[str, dict] = {
     "demid/paper.py": {
         "functions": None,
         "tests": ["tests/report/test_paper.py", "tests/report/test_paper_tolerance_rows.py", "tests/test_reported_boundaries.py",
-                  "tests/report/test_paper_rules_whole.py"],
+                  "tests/report/test_paper_rules_whole.py", "tests/report/test_paper_comparison_whole.py"],
     },
     "demid/transcription/engine.py": {
         "functions": None,

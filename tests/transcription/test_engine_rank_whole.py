@@ -10,14 +10,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import Phase, given, settings
 from hypothesis import strategies as st
 
 from demid.design import Coding, model_matrix, quadratic_terms
 from demid.transcription.engine import DesignFit, evaluate_designs, lack_of_fit_p
 from tests.transcription.test_engine_whole import _check, _reference
 
-SETTINGS = settings(max_examples=8, deadline=None, derandomize=True)
+SETTINGS = settings(max_examples=8, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate])
 COEFFICIENTS = {"b0": ("coded", 0), "b1": ("coded", 1)}
 
 

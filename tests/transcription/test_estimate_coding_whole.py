@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from hypothesis import assume, given, settings
+from hypothesis import Phase, assume, given, settings
 from hypothesis import strategies as st
 
 from demid.design import nominal_levels
@@ -30,7 +30,7 @@ def _column(rng, nominal, centre, unit, decimals, strays):
                                                              ("factorial", 1.0)]),
        centre=st.sampled_from([-40.0, 0.0, 0.35, 7.0, 2500.0]), unit=st.sampled_from([0.05, 1.0, 12.5]),
        decimals=st.integers(2, 4), strays=st.integers(0, 12))
-@settings(max_examples=30, deadline=None, derandomize=True)
+@settings(max_examples=30, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate])
 def test_up_to_fifteen_distinct_values_the_levels_place_the_coding_above_it_the_mid_range(
         seed, design, centre, unit, decimals, strays):
     assume(unit * 10 ** decimals >= 100)  # the print resolves the levels (a coarser one fits half the unit too)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import Phase, given, settings
 from hypothesis import strategies as st
 
 from demid.transcription.typos import local_scale
@@ -27,7 +27,7 @@ def _harvey(fitted, residual, leverage):
 
 @given(seed=st.integers(0, 10_000), positive=st.integers(3, 30), zeros=st.integers(0, 10),
        level=st.sampled_from([-50.0, 0.0, 3.0, 1e4]), slope=st.sampled_from([0.0, 0.4, -0.3]))
-@settings(max_examples=15, deadline=None, derandomize=True)
+@settings(max_examples=15, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate])
 def test_the_scale_is_fitted_to_the_positive_squared_residuals_and_normalised_over_every_run(seed, positive, zeros,
                                                                                                level, slope):
     rng = np.random.default_rng(seed)
