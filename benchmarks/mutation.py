@@ -1017,7 +1017,8 @@ TABLE: dict[str, dict] = {
     "demid/design_generation.py": {
         "functions": None,
         "tests": ["tests/inputs/test_design_generation.py", "tests/inputs/test_design_check_known_answers.py",
-                  "tests/inputs/test_design_inference_properties.py", "tests/test_reported_boundaries.py"],
+                  "tests/inputs/test_design_inference_properties.py", "tests/test_reported_boundaries.py",
+                  "tests/inputs/test_design_generation_whole.py"],
     },
     "demid/design_check.py": {
         "functions": None,
