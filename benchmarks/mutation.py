@@ -1012,7 +1012,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/inputs/test_design_inference_properties.py", "tests/inputs/test_design_inference.py",
                   "tests/inputs/test_design_generation.py", "tests/inputs/test_inferred_design_whole.py",
-                  "tests/inputs/test_three_level_family_distance.py"],
+                  "tests/inputs/test_three_level_family_distance.py", "tests/inputs/test_inferred_ccd_axial_whole.py"],
     },
     "demid/design_generation.py": {
         "functions": None,
