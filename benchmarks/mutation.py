@@ -723,6 +723,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/transcription/test_transcription.py", "tests/transcription/test_likely_typos.py", "tests/transcription/test_typo_stop.py",
                   "tests/transcription/test_typo_properties.py", "tests/transcription/test_typos_at_scale.py",
                   "tests/transcription/test_typos_whole.py", "tests/transcription/test_local_scale_whole.py",
+                  "tests/transcription/test_other_repairs_text_whole.py",
                   "tests/test_reported_numbers.py", "tests/test_core_contracts.py"],
     },
     "demid/sampling/exact.py": {
