@@ -931,7 +931,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/combinations/test_canonical.py", "tests/combinations/test_canonical_published.py",
                   "tests/combinations/test_canonical_properties.py", "tests/combinations/test_canonical_planar.py",
-                  "tests/combinations/test_canonical_whole.py"],
+                  "tests/combinations/test_canonical_whole.py", "tests/combinations/test_fit_canonical_whole.py"],
     },
     "demid/wave_value.py": {
         "functions": None,
