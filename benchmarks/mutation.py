@@ -1446,6 +1446,14 @@ EQUIVALENT: dict[str, str] = {
         "keys (io.to_json_text) and read back by the report, and cli.run_counts reads the counts in its own order",
     "demid/canonical.py::Canonical.to_json::float(self.threshold) => self.threshold#0":
         "canonical_analysis, the one place a Canonical is built, stores float(threshold) already",
+    # --- the seventh round's draws (seed 31)
+    "demid/design_check.py::check_design::float(design['alpha']) => design['alpha']#0":
+        "design.alpha is a number (the schema's type; an int from YAML's `alpha: 2`, a float from --alpha): its "
+        "difference from the alpha the runs show and its :g text are the float's; an inferred design's tuple of "
+        "alphas never reaches the line (its own refusal is raised first)",
+    "demid/design_check.py::_refuse_misplaced_points::0 => 1#4":
+        "counts holds every point type of the design (_DESIGN_POINTS), the same keys _expected_counts gives: "
+        "the default of counts.get is never read",
     # --- uncertainty
     "demid/story/extensions.py::extension_sentence::abs(row['best_error_after']) => row['best_error_after']#0":
         "best_error_after is level 2's best_max_error, a largest weighted |relative error|: never negative "

@@ -84,3 +84,17 @@ def test_a_star_design_without_factor_names_counts_its_factors_from_one():
     coded = np.vstack([axial, np.zeros((5, k))])
     assert _refusal(coded, None) == ("the quadratic model cannot be estimated (rank 7 of 10 terms): the usable runs "
                                      "cannot tell x1:x2, x1:x3 and x2:x3 apart")
+
+
+@pytest.mark.parametrize("named", [True, False])
+def test_one_square_confounded_with_a_factor_gets_no_two_level_advice(named):
+    """A second factor set to the square of the first (five levels of x1, three of x2): only x2 and x1^2 move
+    together; every factor has three levels or more and one square is involved, so neither reason is added."""
+    x1 = np.repeat([-1.0, -0.5, 0.0, 0.5, 1.0], 2)
+    coded = np.column_stack([x1, x1 ** 2])
+    names = ["a", "b"] if named else None
+    shown = names or ["x1", "x2"]
+    detail = _refusal(coded, names)
+    assert detail == _expected_detail(coded, shown)
+    assert detail == (f"the quadratic model cannot be estimated (rank 5 of 6 terms): the usable runs cannot tell "
+                      f"{shown[1]} and {shown[0]}^2 apart")
