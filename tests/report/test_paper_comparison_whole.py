@@ -203,3 +203,15 @@ def test_every_row_and_field_of_the_comparison(seed, n_materials, n_scenarios, n
         assert row["tolerance"] == text, quantity
         assert bool(row["pass"]) is bool(passes), quantity
         assert bool(row["printed_agrees"]) is bool(printed), quantity
+
+
+@pytest.mark.parametrize("decimals", [0, 1, 3, 6])
+@pytest.mark.parametrize("published", [0.0, "0.0"])
+def test_a_reproduction_at_the_slack_s_edge_still_rounds_to_the_print(decimals, published):
+    """Half a unit of the last printed digit with its slack for binary representation (1 + 1e-9) is inside;
+    the next float beyond is not.  Published 0, so the difference is the reproduced value itself, exactly."""
+    from demid.paper import rounds_to
+
+    edge = 0.5 * 10.0 ** -decimals * (1 + 1e-9)
+    assert rounds_to(edge, published, decimals) and rounds_to(-edge, published, decimals)
+    assert not rounds_to(np.nextafter(edge, 1.0), published, decimals)
