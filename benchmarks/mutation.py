@@ -272,7 +272,7 @@ exact rule, over generated inputs: tests/transcription/test_{engine_rank,estimat
 cell_texts,check_messages,other_repairs_text}_whole.py, tests/inputs/test_{design_generation,estimability_terms,
 inferred_ccd_axial,check_header,design_check_coding}_whole.py, tests/report/test_paper_comparison_whole.py (every
 row and field of the paper comparison), tests/combinations/test_fit_canonical_whole.py (log-scaled factors),
-tests/test_save_figures_io_whole.py, tests/test_pareto_front_inputs_whole.py; 16 files, 266 tests, each file under 3 s
+tests/test_save_figures_io_whole.py, tests/test_pareto_front_inputs_whole.py; 16 files, 263 tests, each file under 3 s
 (23 s one after another on a machine loaded by two mutation runs).  Their hypothesis tests skip shrinking, so a failing mutant is killed in
 seconds.  One bug found by a whole-output test, not by a mutant: a CCD at alpha = 2 (a 4-factor rotatable CCD)
 without one axial run was inferred with its centre on a factorial level (0 centre runs, a wrong coding); the axial
