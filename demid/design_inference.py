@@ -93,9 +93,9 @@ def _factor_placement(column: np.ndarray, table: pd.DataFrame, name: str, src: s
     its axial runs); None otherwise.  One level held by a single run may be a mistyped cell: the levels
     without it are tried too, and the design check then names that cell."""
     levels, counts = _levels(column)
-    tries = [levels] + [np.delete(levels, i) for i in np.flatnonzero(counts == 1)]
-    for lv in tries:
-        found = _placement(lv, column, name, table, src, log_scale)
+    tries = [(levels, counts)] + [(np.delete(levels, i), np.delete(counts, i)) for i in np.flatnonzero(counts == 1)]
+    for lv, runs in tries:
+        found = _placement(lv, runs, column, name, table, src, log_scale)
         if found is not None:
             return found
     return None
@@ -115,8 +115,9 @@ def _levels(column: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return levels, np.array([len(g) for g in groups])
 
 
-def _placement(levels: np.ndarray, column: np.ndarray, name: str, table: pd.DataFrame, src: str,
+def _placement(levels: np.ndarray, counts: np.ndarray, column: np.ndarray, name: str, table: pd.DataFrame, src: str,
                log_scale: bool) -> tuple[float, float, float] | None:
+    """(centre, unit, alpha) of the levels (``counts`` runs each), or None; see :func:`_factor_placement`."""
     n = len(levels)
     if n == 3:
         unit = (levels[2] - levels[0]) / 2
@@ -135,12 +136,17 @@ def _placement(levels: np.ndarray, column: np.ndarray, name: str, table: pd.Data
                              f"the same distance on both sides)", source=src, run=runs, column=name)
         return centre, unit, (levels[4] - levels[0]) / (levels[3] - levels[1])
     if n == 4:  # a CCD whose axial run on one side was left out (failed)
-        for inner, axial in ((levels[:3], levels[3]), (levels[1:], levels[0])):
+        found = []
+        for inner, axial, axial_runs in ((levels[:3], levels[3], counts[3]), (levels[1:], levels[0], counts[0])):
             unit = (inner[2] - inner[0]) / 2
             if _symmetric(inner[0], inner[2], inner[1], unit, column, log_scale):
                 alpha = abs(axial - inner[1]) / unit
                 if alpha > 1 + 2 * LEVEL_TOLERANCE:
-                    return inner[1], unit, alpha
+                    found.append((axial_runs, (inner[1], unit, alpha)))
+        # At alpha = 2 four evenly spaced levels read either way (-2, -1, 0, 1: centre 0 without the +2 run, or
+        # centre -1 without a -3 run): the axial level is the one a single run holds, not a factorial level.
+        if found:
+            return min(found, key=lambda item: item[0])[1]
     return None
 
 
