@@ -825,7 +825,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/kriging.py": {
         "functions": None,
-        "tests": ["tests/test_kriging.py", "tests/test_kriging_constant.py", "tests/test_kriging_likelihood_and_full_csv.py"],
+        "tests": ["tests/test_kriging.py", "tests/test_kriging_constant.py", "tests/test_kriging_likelihood_and_full_csv.py",
+                  "tests/test_kriging_whole.py"],
     },
     "demid/surrogate_choice.py": {
         "functions": None,
