@@ -826,11 +826,12 @@ TABLE: dict[str, dict] = {
     "demid/kriging.py": {
         "functions": None,
         "tests": ["tests/test_kriging.py", "tests/test_kriging_constant.py", "tests/test_kriging_likelihood_and_full_csv.py",
-                  "tests/test_kriging_whole.py"],
+                  "tests/test_kriging_whole.py", "tests/test_surrogate_choice_whole.py"],
     },
     "demid/surrogate_choice.py": {
         "functions": None,
-        "tests": ["tests/test_kriging.py", "tests/test_waves.py", "tests/story/test_verdicts.py", "tests/test_loop_whole.py"],
+        "tests": ["tests/test_kriging.py", "tests/test_waves.py", "tests/story/test_verdicts.py", "tests/test_loop_whole.py",
+                  "tests/test_surrogate_choice_rule.py", "tests/test_surrogate_choice_whole.py"],
     },
     "demid/pareto.py": {
         "functions": None,
