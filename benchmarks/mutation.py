@@ -821,7 +821,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/boundary_runs.py": {
         "functions": None,
-        "tests": ["tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py", "tests/test_loop_whole.py"],
+        "tests": ["tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py", "tests/test_loop_whole.py",
+                  "tests/test_boundary_runs_whole.py"],
     },
     "demid/kriging.py": {
         "functions": None,
@@ -1254,6 +1255,10 @@ EQUIVALENT: dict[str, str] = {
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
     # --- next wave
     "demid/next_wave.py::next_box::0 => -1#0": "to_search of one point returns one row: its first and last agree",
+    "demid/next_wave.py::plan_next_wave::0 => -1#1":
+        "to_actual of one point (the box's lower corner) returns one row: its first and last agree",
+    "demid/next_wave.py::plan_next_wave::0 => -1#2":
+        "to_actual of one point (the box's upper corner) returns one row: its first and last agree",
     "demid/next_wave.py::propose_runs::1 => 2#0":
         "the extra pass of range(count + 2) is reached only when no pass broke; it plans a design of -1 runs, "
         "empty like the last pass's design of 0 runs, so the separating runs are chosen again from the same points",
