@@ -814,7 +814,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_reported_numbers.py::test_next_wave_runs_each_maximise_the_determinant",
                   "tests/test_next_wave.py", "tests/test_d_optimal_rule.py", "tests/criticism/test_simulated_runs.py",
-                  "tests/test_loop_whole.py",
+                  "tests/test_loop_whole.py", "tests/test_wave_runs_whole.py",
                   "tests/criticism/test_discrimination_properties.py",
                   "tests/criticism/test_confirming_runs.py::test_criticism_runs_outside_the_next_box_are_left_out_and_the_reason_says_so",
                   "tests/criticism/test_confirming_runs.py::test_with_a_next_box_the_criticism_chooses_its_runs_inside_it"],
