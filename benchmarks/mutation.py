@@ -938,7 +938,7 @@ TABLE: dict[str, dict] = {
     "demid/waves.py": {
         "functions": None,
         "tests": ["tests/test_waves.py", "tests/report/test_report_reads.py", "tests/test_kriging.py",
-                  _NOT_WORKFLOW, *[
+                  "tests/test_waves_whole.py", _NOT_WORKFLOW, *[
             f"tests/workflow/test_simulation.py::{name}" for name in (
                 "test_first_wave_is_the_design_generator_sheet", "test_simulation_config_errors_name_the_key",
                 "test_wave_history_gives_each_wave_fraction_of_omega_and_the_box_its_runs_were_placed_in",
