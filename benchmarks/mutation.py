@@ -933,7 +933,7 @@ TABLE: dict[str, dict] = {
     "demid/wave_value.py": {
         "functions": None,
         "tests": ["tests/test_wave_value.py", "tests/story/test_story.py", "tests/story/test_advice_properties.py",
-                  "tests/test_waves.py", _NOT_WORKFLOW],
+                  "tests/test_waves.py", "tests/test_wave_value_whole.py", _NOT_WORKFLOW],
     },
     "demid/waves.py": {
         "functions": None,
