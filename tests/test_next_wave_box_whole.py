@@ -15,7 +15,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from demid.next_wave import NextWave, _runs_frame, next_box, planned_box, plausible_points, tabulate_waves
+from demid.next_wave import (NextWave, _runs_frame, next_box, planned_box, plausible_points, refocus_scenario,
+                             tabulate_waves)
 from demid.sampling import Domain
 
 _FAST = settings(max_examples=25, deadline=None, derandomize=True)
@@ -160,3 +161,14 @@ def test_the_long_tables_hold_every_materials_rows_and_the_union_of_their_column
     domain, runs, reasons = tabulate_waves(specs, {})
     assert list(domain.columns) == ["material", "factor", "lower", "upper"] and not len(domain)
     assert list(runs.columns) == ["material", "proposal", "a", "b", "purpose"] and not len(runs) and reasons == {}
+
+
+@pytest.mark.parametrize("named, expected", [(None, "b"), ("", "b"), ("c", "c"), ("a", "a")])
+def test_a_named_refocus_scenario_is_used_and_otherwise_the_most_observables_then_the_smallest_tolerance(named,
+                                                                                                     expected):
+    scenarios = [SimpleNamespace(name="a", observables=["y"], tolerance=0.01),
+                 SimpleNamespace(name="c", observables=["y", "z"], tolerance=0.1),
+                 SimpleNamespace(name="b", observables=["z", "y"], tolerance=0.05)]
+    spec = SimpleNamespace(scenarios=scenarios, next_runs=SimpleNamespace(scenario=named))
+    assert refocus_scenario(spec) == expected
+    assert refocus_scenario(SimpleNamespace(scenarios=scenarios, next_runs=None)) == "b"

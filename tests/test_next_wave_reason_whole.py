@@ -64,3 +64,6 @@ def test_every_count_the_refocused_waves_reason_quotes_is_the_runs_it_proposes(s
         # a quarter of the design runs (without the separating ones) support the whole box
         assert counted["support"] == int(round((count - deciding - counted["separate"]) / 4))
     assert sum(counted.values()) == count - deciding
+    # the wave's value is judged on as many runs as it makes, all aimed at the plausible set; none without a z
+    assert wave.value["count"] == count and wave.value["scenario"] == spec.scenarios[0].name
+    assert plan_next_wave("m", table, surrogates, spec, plausible, pd.DataFrame(rows), z=0.0).value is None
