@@ -168,3 +168,30 @@ def test_the_waves_summary_quotes_each_waves_runs_surrogates_and_refocus_set(see
             numbers = [next(v for v in group if v) for group in quoted]
             expected = ([row.q2_kriging, row.q2] if row.surrogate == KIND else [row.q2, row.q2_kriging])
             assert numbers == [q2_text(v) for v in expected]
+
+
+@pytest.mark.parametrize("k, log_mask, centre", [(2, 0b01, 2), (3, 0b110, 1), (2, 0b11, 3)])
+def test_the_first_wave_is_the_three_level_factorial_over_the_bounds_with_log_factors_in_log10(k, log_mask, centre):
+    from collections import Counter
+
+    from demid.waves import first_wave
+
+    bounds = [(0.02 * (i + 1), 50.0 * (i + 1)) if log_mask >> i & 1 else (-3.0 + i, 4.5 + i) for i in range(k)]
+    factors = {f"f{i}": {"lower": lo, "upper": hi, **({"scale": "log"} if log_mask >> i & 1 else {})}
+               for i, (lo, hi) in enumerate(bounds)}
+    material = {"data": "m.csv", "design": {"type": "factorial", "center_runs": centre}, "factors": factors,
+                "responses": {"y": {"target": 1.0}}, "scenarios": {"s": {"observables": ["y"], "tolerance": 0.05}}}
+    spec = MaterialSpec.from_material("m", validate_schema({"materials": {"m": material}})["materials"]["m"])
+    frame = first_wave(spec, seed=5)
+    runs = 3 ** k - 1 + centre
+    assert list(frame.columns) == ["run", *factors] and frame["run"].tolist() == list(range(1, runs + 1))
+    # each factor at its bounds and middle (a log factor's geometric mean), every combination once, the centre as
+    # often as the centre runs (compared to 8 significant digits: the sheet rounds a log factor's log10 value, so a
+    # bound of 50 comes back as 50.0000000005)
+    levels = [(lo, math.sqrt(lo * hi) if log_mask >> i & 1 else (lo + hi) / 2, hi) for i, (lo, hi) in enumerate(bounds)]
+    grid = np.array(np.meshgrid(*levels, indexing="ij")).reshape(k, -1).T
+    expected = Counter(tuple(float(f"{v:.8g}") for v in row) for row in grid)
+    expected[tuple(float(f"{lv[1]:.8g}") for lv in levels)] += centre - 1
+    got = Counter(tuple(float(f"{v:.8g}") for v in row) for row in frame[list(factors)].to_numpy())
+    assert got == expected
+    assert frame.equals(first_wave(spec, seed=5))
