@@ -1260,6 +1260,14 @@ EQUIVALENT: dict[str, str] = {
         "to_actual of one point (the box's lower corner) returns one row: its first and last agree",
     "demid/next_wave.py::plan_next_wave::0 => -1#2":
         "to_actual of one point (the box's upper corner) returns one row: its first and last agree",
+    "demid/next_wave.py::plan_omega_wave::1 => 2#3":
+        "reshape(-2, k) of the boundary runs is reshape(-1, k): numpy (2.4.6 pinned) infers any negative size",
+    "demid/boundary_runs.py::greedy_batch::np.asarray(score, dtype=float) + NIL_SCORE * max(float(np.max(score, "
+    "initial=0.0)), 1e-300) + 1e-300 => np.asarray(score, dtype=float) + NIL_SCORE * max(float(np.max(score, "
+    "initial=0.0)), 1e-300)#0":
+        "the 1e-300 only adds to a score already floored at NIL_SCORE * max(score, 1e-300) >= 1e-306; it is multiplied "
+        "by a space-filling factor at most d / length (length >= 0.5 / sqrt(n)) or d, against TIE_BREAK * d = 1e-12 d: "
+        "some 280 orders below the same candidate's tie break, and 0 at d = 0, so the 9-decimal values never change",
     "demid/next_wave.py::propose_runs::1 => 2#0":
         "the extra pass of range(count + 2) is reached only when no pass broke; it plans a design of -1 runs, "
         "empty like the last pass's design of 0 runs, so the separating runs are chosen again from the same points",
