@@ -808,7 +808,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/test_reported_numbers.py::test_next_wave_runs_each_maximise_the_determinant",
                   "tests/test_next_wave.py", "tests/test_next_wave_properties.py", "tests/test_d_optimal_rule.py",
                   "tests/test_next_wave_whole.py", "tests/test_next_wave_box_whole.py", "tests/test_omega_wave_whole.py",
-                  "tests/test_next_wave_reason_whole.py",
+                  "tests/test_next_wave_reason_whole.py", "tests/test_propose_runs_whole.py",
                   "tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py"],
     },
     "demid/wave_runs.py": {
