@@ -195,3 +195,27 @@ def test_the_first_wave_is_the_three_level_factorial_over_the_bounds_with_log_fa
     got = Counter(tuple(float(f"{v:.8g}") for v in row) for row in frame[list(factors)].to_numpy())
     assert got == expected
     assert frame.equals(first_wave(spec, seed=5))
+
+
+@pytest.mark.parametrize("criticism, spent", [(0, False), (3, False), (1, True), (5, True)])
+def test_a_surrogate_that_cannot_be_stopped_on_quotes_the_proposed_and_the_criticisms_runs(criticism, spent):
+    bad = {"y": {"q2": 0.3, "lof_p": NAN, "loo_band": 0.1}}
+    evidence = WaveEvidence(wave=3 if spent else 2, max_waves=3, plausible_pct=5.0, previous_pct=5.0, surrogates=bad,
+                            model_limit=False, proposed=11, criticism_runs=criticism)
+    reason = stop_decision(None, evidence)["reason"]
+    clause = re.search(r"the next wave's (\d+) proposed runs(?:, (\d+) of them replicates or runs the criticism asks "
+                       r"for,)? add runs where", reason)
+    assert int(clause[1]) == 11 and (int(clause[2]) if clause[2] else 0) == criticism
+    assert ("the budget of 3 waves is spent" in reason) is spent
+
+
+@pytest.mark.parametrize("shares", [[0.1], [0.25, 0.04], [0.123, 0.2, 0.0]])
+def test_a_settled_stop_quotes_the_largest_leave_one_out_share_and_the_change(shares):
+    surrogates = {f"y{i}": {"q2": 0.9, "lof_p": NAN, "loo_band": s} for i, s in enumerate(shares)}
+    evidence = WaveEvidence(wave=4, max_waves=6, plausible_pct=8.0, previous_pct=7.5, surrogates=surrogates,
+                            model_limit=False, proposed=9, criticism_runs=0)
+    decision = stop_decision(None, evidence)
+    assert decision["stop"] is True and decision["action"] == "stop"
+    quoted = re.search(r"leave-one-out error is at most (\d\.\d\d) of the tolerance band", decision["reason"])
+    assert float(quoted[1]) == round(max(shares), 2)
+    assert "went 7.5 % → 8 % from wave 3 to wave 4 (+6.7 %)" in decision["reason"]
