@@ -30,6 +30,10 @@ def test_every_count_the_refocused_waves_reason_quotes_is_the_runs_it_proposes(s
     wave0 = plan_next_wave("m", table, surrogates, spec, plausible, None, z=2.0)
     box = wave0.domain.set_index("factor").loc[["a", "b"]]
     lo, hi = box["lower"].to_numpy(), box["upper"].to_numpy()
+    # the box: the plausible spans widened by the margin of the unit range on each side, clipped to it
+    spans = plausible[plausible["scenario"] == spec.scenarios[0].name].set_index("factor").loc[["a", "b"]]
+    assert lo == pytest.approx(np.maximum(0.0, spans["robust_lower"].to_numpy() - margin), abs=1e-12)
+    assert hi == pytest.approx(np.minimum(1.0, spans["robust_upper"].to_numpy() + margin), abs=1e-12)
     middle = {f: float((lo[i] + hi[i]) / 2) for i, f in enumerate(("a", "b"))}
     rows = [{"response": "y", "cause": "ambiguous", "detail": "", "aliases": "",
              "discriminating_runs": json.dumps([{**middle, "purpose": PURPOSE_DECIDE}] * deciding)}]
