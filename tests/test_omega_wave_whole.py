@@ -14,14 +14,16 @@ import pandas as pd
 import pytest
 from scipy.stats import norm
 
+from demid.design import model_matrix, quadratic_terms
 from demid.next_wave import PURPOSE_BOUNDARY, PURPOSE_DECIDE, plan_next_wave
 from demid.spec import MaterialSpec
 from demid.wave_value import expected_contraction
 from tests.test_boundary_runs import _linear, _study
 
 
-@pytest.mark.parametrize("sign, count, deciding", [(1.0, 9, 0), (-1.0, 7, 9), (1.0, 12, 2)])
-def test_the_omega_waves_domain_reason_predictions_and_value_are_those_of_its_runs(sign, count, deciding):
+@pytest.mark.parametrize("sign, count, deciding, aliased", [(1.0, 9, 0, True), (-1.0, 7, 9, True), (1.0, 12, 2, False),
+                                                            (-1.0, 10, 1, True)])
+def test_the_omega_waves_domain_reason_predictions_and_value_are_those_of_its_runs(sign, count, deciding, aliased):
     from demid.scenario import JudgedScenario
 
     table, spec, surrogates, plausible = _study(lambda x: sign * _linear(x), target=sign * 13.0)
@@ -29,6 +31,9 @@ def test_the_omega_waves_domain_reason_predictions_and_value_are_those_of_its_ru
                                             "next_runs": {"count": count, "scenario": "", "margin": 0.1}})
     rows = [{"response": "y", "cause": "ambiguous", "detail": "", "aliases": "",
              "discriminating_runs": json.dumps([{"a": 0.25, "b": 0.75, "purpose": PURPOSE_DECIDE}] * deciding)}]
+    if aliased:
+        rows.append({"response": "y", "cause": "missing_term", "aliases": "a^3;a:b^2", "detail": "",
+                     "discriminating_runs": "[]"})
     wave = plan_next_wave("m", table, surrogates, spec, plausible, pd.DataFrame(rows), z=2.0, analysed_over_omega=True)
     runs = wave.runs
     placed = runs[["a", "b"]].to_numpy(dtype=float)
@@ -52,6 +57,20 @@ def test_the_omega_waves_domain_reason_predictions_and_value_are_those_of_its_ru
         assert float(quoted[1]) == pytest.approx(np.max(np.minimum(p, 1 - p)), abs=0.005 + 1e-9)
     else:
         assert quoted[1] == "0.00"
+    # the separating runs: as many as the reason says, after the criticism's, and with the earlier runs they make
+    # a^3 and a:b^2 separately estimable over Omega (here the unit square, coded on [-1, 1])
+    separating = (runs["purpose"] == "separate aliased terms a^3 = a:b^2 (y)").to_numpy()
+    said = re.search(r", (\d+) to separate aliased terms the criticism found", wave.reason)
+    assert (int(said[1]) if said else 0) == int(separating.sum())
+    if separating.any():
+        assert not separating[:made].any()
+        coded = 2.0 * np.vstack([table[["a", "b"]].to_numpy(dtype=float), placed[:made], placed[separating]]) - 1.0
+        terms = quadratic_terms(2) + [(3, 0), (1, 2)]
+        assert np.linalg.matrix_rank(model_matrix(coded, terms)) == len(terms)
+    elif aliased and count > made:
+        coded = 2.0 * np.vstack([table[["a", "b"]].to_numpy(dtype=float), placed[:made]]) - 1.0
+        terms = quadratic_terms(2) + [(3, 0), (1, 2)]
+        assert np.linalg.matrix_rank(model_matrix(coded, terms)) == len(terms)  # nothing left to separate
     judged = JudgedScenario(spec, spec.scenarios[0], surrogates, 2.0)
     value = expected_contraction(judged, placed)
     assert wave.value["count"] == count
