@@ -1295,6 +1295,16 @@ EQUIVALENT: dict[str, str] = {
         "to_actual of one point (the box's lower corner) returns one row: its first and last agree",
     "demid/next_wave.py::plan_next_wave::0 => -1#2":
         "to_actual of one point (the box's upper corner) returns one row: its first and last agree",
+    "demid/wave_runs.py::deciding_runs::float(run[f]) => run[f]#0":
+        "the key of a point in the criticism's JSON runs: an int and a float of the same value compare equal and "
+        "hash alike, so the points are counted the same; the runs' own values are converted where they are kept",
+    "demid/kriging.py::fit_hyperparameters::float(r.fun) => r.fun#0":
+        "the pick's sort key: scipy's minimum is a numpy float (or 0-d array), ordered exactly as its float()",
+    "demid/surrogate_choice.py::surrogate_record::float(row.q2) => row.q2#0":
+        "number() takes float() of a finite value itself; the statistics' q2 is a float column (NaN when undefined), "
+        "never None",
+    "demid/next_wave.py::plan_omega_wave::0 => -1#1":
+        "to_actual of one point (Omega's lower corner) returns one row: its first and last agree",
     "demid/next_wave.py::plan_omega_wave::1 => 2#3":
         "reshape(-2, k) of the boundary runs is reshape(-1, k): numpy (2.4.6 pinned) infers any negative size",
     "demid/boundary_runs.py::greedy_batch::np.asarray(score, dtype=float) + NIL_SCORE * max(float(np.max(score, "

@@ -76,3 +76,20 @@ def test_the_omega_waves_domain_reason_predictions_and_value_are_those_of_its_ru
     assert wave.value["count"] == count
     for key in ("plausible_fraction_pct", "expected_fraction_pct"):
         assert wave.value[key] == pytest.approx(value[key], abs=1e-9)
+
+
+def test_with_too_few_earlier_runs_the_design_keeps_its_share_and_the_criticisms_runs_only_the_rest():
+    """Two earlier runs leave the quadratic four coefficients short: of a wave of 9, 4 are design runs and the
+    criticism's 12 runs get the other 5, the 7 left out counted in the reason; the wave never exceeds its count."""
+    table, spec, surrogates, plausible = _study(_linear)
+    spec = MaterialSpec.from_material("m", {**spec.material_config(),
+                                            "next_runs": {"count": 9, "scenario": "", "margin": 0.1}})
+    findings = pd.DataFrame([{"response": "y", "cause": "ambiguous", "detail": "", "aliases": "",
+                              "discriminating_runs": json.dumps([{"a": 0.25, "b": 0.75, "purpose": PURPOSE_DECIDE}] * 12)}])
+    earlier = table.iloc[[0, 1]]
+    rank = np.linalg.matrix_rank(model_matrix(2.0 * earlier[["a", "b"]].to_numpy(dtype=float) - 1.0, quadratic_terms(2)))
+    assert rank == 2
+    wave = plan_next_wave("m", earlier, surrogates, spec, plausible, findings, z=2.0, analysed_over_omega=True)
+    purposes = wave.runs["purpose"].tolist()
+    assert len(purposes) == 9 and purposes.count(PURPOSE_DECIDE) == 9 - (6 - rank)
+    assert "; 7 more run(s) the criticism proposed do not fit in the wave's 9 runs" in wave.reason
