@@ -1002,6 +1002,7 @@ TABLE: dict[str, dict] = {
     "demid/criticism/one_run.py": {
         "functions": None,
         "tests": ["tests/criticism/test_lone_runs.py", "tests/criticism/test_one_run_by_identity.py",
+                  "tests/criticism/test_one_run_whole.py",
                   *[f"tests/criticism/test_honest_causes.py::{name}" for name in (
             "test_one_run_deletions_match_refits_without_each_run", "test_unequal_scatter_resting_on_one_run_is_not_named",
             "test_large_table_worst_deletion_of_unequal_scatter_equals_every_deletion")]],
