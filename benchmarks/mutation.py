@@ -1314,6 +1314,11 @@ EQUIVALENT: dict[str, str] = {
         "with a full-rank base no candidate lies off its row space: `outside` becomes an all-False array instead "
         "of None, which only makes with_run rebuild the state from an SVD instead of its rank-one update (the "
         "same matrices to round-off; the choice reads log-determinants within _TIE = 1e-4 as ties)",
+    "demid/criticism/catalogue.py::Round._step_by_sums::0 => -1#0":
+        "e_obs is the one column m.resid_w[:, None]: the F of its projections has one column, first and last alike",
+    "demid/criticism/step_changes.py::step_projections::0 => -1#0":
+        "the empty return of a table with no change-point (3 runs or fewer): both callers call it only above "
+        "ASYMPTOTIC_RUNS or STEP_CHUNK runs (256)",
     "demid/criticism/aliasing.py::OneMoreRun.with_run::self.outside is not None => self.outside is None#0":
         "a full-rank base is rebuilt from an SVD instead of updated (the same matrices to round-off); a base the "
         "runs cannot estimate is updated by Sherman-Morrison with its pseudo-inverse, exact for the run chosen, "
