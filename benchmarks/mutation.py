@@ -1848,6 +1848,8 @@ EQUIVALENT: dict[str, str] = {
 SETTINGS: dict[str, str] = {
     "demid/criticism/searches.py::minimax::4 => 3#0":
         "the number of SLSQP starts (the best grid nodes at least 0.1 apart): three reach the same minimax point",
+    "demid/criticism/searches.py::_smallest_bias::np.argsort(score, kind='stable') => np.argsort(score)#0":
+        "which of equally good grid nodes start the bias search (numpy's default sort is deterministic too)",
     "demid/sampling/evaluate.py::start_nodes::21 => 20#0":
         "resolution of the grid the closest-approach search starts from (up to three factors)",
     "demid/sampling/evaluate.py::start_nodes::21 => 22#0":
