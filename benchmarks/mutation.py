@@ -763,7 +763,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/extensions.py": {
         "functions": None,
-        "tests": _NAMING_TESTS,
+        "tests": _NAMING_TESTS + ["tests/criticism/test_extensions_forms_whole.py"],
     },
     "demid/criticism/naming.py": {
         "functions": None,
@@ -1320,6 +1320,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/step_changes.py::step_projections::0 => -1#0":
         "the empty return of a table with no change-point (3 runs or fewer): both callers call it only above "
         "ASYMPTOTIC_RUNS or STEP_CHUNK runs (256)",
+    "demid/criticism/aliasing.py::OneMoreRun.of::0 => -1#1":
+        "singular values are never negative: s[0] > -1 differs from s[0] > 0 only at s[0] == 0, where every "
+        "singular value is 0 and s > s[0] * 1e-10 keeps none of them, as the zeros the original takes",
     "demid/criticism/aliasing.py::OneMoreRun.with_run::self.outside is not None => self.outside is None#0":
         "a full-rank base is rebuilt from an SVD instead of updated (the same matrices to round-off); a base the "
         "runs cannot estimate is updated by Sherman-Morrison with its pseudo-inverse, exact for the run chosen, "
