@@ -767,7 +767,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/naming.py": {
         "functions": None,
-        "tests": _NAMING_TESTS,
+        "tests": _NAMING_TESTS + ["tests/criticism/test_candidates_whole.py"],
     },
     "demid/criticism/slips.py": {
         "functions": None,
@@ -1037,7 +1037,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/criticism/test_discrimination.py", "tests/criticism/test_discrimination_properties.py",
                   "tests/criticism/test_scatter_covariates.py", "tests/criticism/test_level1_finding_whole.py",
-                  "tests/criticism/test_discrimination_whole.py"],
+                  "tests/criticism/test_discrimination_whole.py", "tests/criticism/test_candidates_whole.py"],
     },
     "demid/criticism/reach.py": {
         "functions": None,
