@@ -682,7 +682,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_models_properties.py", "tests/criticism/test_linear_memory.py",
                   "tests/criticism/test_models_whole.py", "tests/criticism/test_step_changes_whole.py",
                   "tests/criticism/test_slips_brute_force.py", "tests/criticism/test_scatter_gamma_search.py",
-                  "tests/criticism/test_discrimination_properties.py",
+                  "tests/criticism/test_discrimination_properties.py", "tests/criticism/test_discrimination_whole.py",
+                  "tests/criticism/test_extensions_forms_whole.py", "tests/criticism/test_one_run_whole.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/catalogue.py": {
@@ -771,7 +772,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/slips.py": {
         "functions": None,
-        "tests": _NAMING_TESTS + ["tests/criticism/test_slips_brute_force.py", "tests/criticism/test_slips_whole.py"],
+        "tests": _NAMING_TESTS + ["tests/criticism/test_slips_brute_force.py", "tests/criticism/test_slips_whole.py",
+                                  "tests/criticism/test_extensions_forms_whole.py"],
     },
     "demid/criticism/verdict.py": {
         "functions": None,
