@@ -695,6 +695,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_linear_time_equivalents.py", "tests/criticism/test_catalogue_steps_whole.py",
                   "tests/criticism/test_scatter_gamma_search.py", "tests/criticism/test_one_run_by_identity.py",
                   "tests/criticism/test_level1_finding_whole.py", "tests/criticism/test_catalogue_boxcox_whole.py",
+                  "tests/criticism/test_lack_of_fit_whole.py",
                   "tests/criticism/test_level1_known_answers.py::test_a_slipped_factor_value_is_moved_and_the_loo_"
                   "errors_are_the_refits", "-knot level2 and not residual_figure and not 3f"],
     },
@@ -1275,6 +1276,10 @@ EQUIVALENT: dict[str, str] = {
         "differs only for a projection equal to the box's end plus the touch tolerance to the last bit",
     "demid/criticism/extensions.py::extend_for::0 => -1#4":
         "data.to_actual of a single coded row returns one row: its first and last rows are the same",
+    "demid/criticism/extensions.py::extend_for::float(inside.min()) => inside.min()#0":
+        _NUMPY_FLOAT + " (the 95 % interval's ends: formatted with :.2f and written to JSON through _clean)",
+    "demid/criticism/extensions.py::extend_for::float(inside.max()) => inside.max()#0":
+        _NUMPY_FLOAT + " (the 95 % interval's ends: formatted with :.2f and written to JSON through _clean)",
     "demid/criticism/extensions.py::extend_for::float(plausible.min()) => plausible.min()#0":
         "lo99 is only compared with the convenient lambdas (lo99 <= v): a numpy float64 compares as the same "
         "double; it is neither stored nor printed (the lambda used is v or round(lam_hat))",
