@@ -769,7 +769,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/naming.py": {
         "functions": None,
-        "tests": _NAMING_TESTS + ["tests/criticism/test_candidates_whole.py"],
+        "tests": _NAMING_TESTS + ["tests/criticism/test_candidates_whole.py", "tests/criticism/test_ambiguity_whole.py"],
     },
     "demid/criticism/slips.py": {
         "functions": None,
@@ -1341,6 +1341,9 @@ EQUIVALENT: dict[str, str] = {
         "differs only where the part of w off the range of S equals the floor to the last bit: floor is positive "
         "(1e-12 of the columns' squares, at least 1e-300 of it), so a w inside the range (perp 0) gains no rank "
         "either way",
+    "demid/criticism/naming.py::_choices::rnd.model.hat < LEVERAGE_UNPREDICTABLE => rnd.model.hat <= "
+    "LEVERAGE_UNPREDICTABLE#0":
+        "differs only for a run whose leverage equals LEVERAGE_UNPREDICTABLE (0.99) to the last bit",
     "demid/criticism/naming.py::_deciding_runs::0 => 1#0":
         "kinds only decide which pairs of models are separated (unequal kinds); the confirming entries are "
         "close_candidates', one per kind, and an alias's kind (\"alias\", its label) is unique, so every kind "
