@@ -1344,6 +1344,13 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/naming.py::_choices::rnd.model.hat < LEVERAGE_UNPREDICTABLE => rnd.model.hat <= "
     "LEVERAGE_UNPREDICTABLE#0":
         "differs only for a run whose leverage equals LEVERAGE_UNPREDICTABLE (0.99) to the last bit",
+    "demid/criticism/run_order.py::standard_order_correlation::0 => -1#0":
+        "run numbers all equal then go on to the loop, where every rank correlation with a constant run rank is 0.0 "
+        "(_rank_correlation's ptp test): the same 0.0 is returned",
+    "demid/criticism/slips.py::slip_ratios::1 => 0#4":
+        "only how many candidates are taken at once (the runs instead of the response columns divide SLIP_CELLS): "
+        "each candidate's moved SSE is its own row's, the largest ratio and its first candidate (argmin's first in "
+        "a block, a strict > across blocks) the same in any blocking",
     "demid/criticism/naming.py::_deciding_runs::0 => 1#0":
         "kinds only decide which pairs of models are separated (unequal kinds); the confirming entries are "
         "close_candidates', one per kind, and an alias's kind (\"alias\", its label) is unique, so every kind "
