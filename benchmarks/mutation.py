@@ -769,7 +769,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/criticism/naming.py": {
         "functions": None,
-        "tests": _NAMING_TESTS + ["tests/criticism/test_candidates_whole.py", "tests/criticism/test_ambiguity_whole.py"],
+        "tests": _NAMING_TESTS + ["tests/criticism/test_candidates_whole.py", "tests/criticism/test_ambiguity_whole.py",
+                                  "tests/criticism/test_residual_misfit_level.py"],
     },
     "demid/criticism/slips.py": {
         "functions": None,
@@ -796,6 +797,7 @@ TABLE: dict[str, dict] = {
     "demid/criticism/run_order.py": {
         "functions": None,
         "tests": ["tests/criticism/test_run_order.py", "tests/criticism/test_run_order_whole.py",
+                  "tests/criticism/test_run_order_span.py",
                   "tests/test_reported_numbers.py", "tests/criticism/test_criticism.py",
                   "-kdrift or run_order or order"],
     },
