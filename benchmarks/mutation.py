@@ -1353,6 +1353,9 @@ EQUIVALENT: dict[str, str] = {
         "only how many candidates are taken at once (the runs instead of the response columns divide SLIP_CELLS): "
         "each candidate's moved SSE is its own row's, the largest ratio and its first candidate (argmin's first in "
         "a block, a strict > across blocks) the same in any blocking",
+    "demid/criticism/edges.py::extrapolation_warnings::float(reference_point[f]) => reference_point[f]#0":
+        "the reference point's values are numbers (the config schema's type: number); model_units (to_search) "
+        "converts the row to float either way",
     "demid/criticism/naming.py::_deciding_runs::0 => 1#0":
         "kinds only decide which pairs of models are separated (unequal kinds); the confirming entries are "
         "close_candidates', one per kind, and an alias's kind (\"alias\", its label) is unique, so every kind "
