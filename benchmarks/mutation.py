@@ -314,8 +314,8 @@ caller reaches, a zero test of singular values, a constant run column, the slips
 (re-run with ``--ids``): seed 30's ambiguity of a candidate not singled out for a rival that is no catalogue cause,
 seed 31's long-table between-groups sum of squares (np.add.reduceat along the wrong axis), the run column of a
 span of exactly 1, a member left at exactly the residual misfit level, and ambiguity without a rival.  Of the
-fifth held-out draw's survivors: catalogue _boxcox_bootstrap's tie slack is killed (re-run with ``--ids``; a response whose best lambda
-is 1 has p = 1, ties at LR = 0 included); extend_for's float() of the 99 % interval's ends and with_run's
+fifth held-out draw's survivors: catalogue _boxcox_bootstrap's tie slack is killed (re-run with ``--ids``; a
+response whose best lambda is 1 has p = 1, ties at LR = 0 included); extend_for's float() of the 99 % interval's ends and with_run's
 `outside is None` are listed as equivalent (the second: the run chosen always lies in the row space, where the
 pseudo-inverse's rank-one update is exact, and the candidates off it never raise the rank either way).  Tests
 added (tests/criticism/, 11 files, 74 tests, 18 s one after another, each file under 3 s), each against a
