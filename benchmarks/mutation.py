@@ -839,7 +839,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/uncertainty/test_posterior_quantiles.py", "tests/uncertainty/test_uncertainty.py",
                   "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py",
-                  "tests/uncertainty/test_qmc_posterior_properties.py"],
+                  "tests/uncertainty/test_qmc_posterior_properties.py", "tests/uncertainty/test_grid_posterior_whole.py",
+                  "tests/uncertainty/test_qmc_posterior_whole.py"],
     },
     "demid/uncertainty/plausible.py": {
         "functions": None,
@@ -944,7 +945,8 @@ TABLE: dict[str, dict] = {
     "demid/admissibility.py": {
         "functions": None,
         "tests": ["tests/sampling/test_stored_sets.py", "tests/sampling/test_admissibility.py", "tests/story/test_story.py",
-                  "tests/sampling/test_admissibility_whole.py", _NOT_WORKFLOW],
+                  "tests/sampling/test_admissibility_whole.py", "tests/sampling/test_stored_sets_whole.py",
+                  "tests/plots/test_sets_figure_zoom.py", _NOT_WORKFLOW],
     },
     "demid/numbers.py": {
         "functions": None,
@@ -955,7 +957,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/story/test_verdicts.py", "tests/story/test_verdict_properties.py", "tests/story/test_story.py",
                   "tests/test_physical_limits.py", "tests/story/test_report_judgements.py",
-                  "tests/combinations/test_combinations.py", "tests/report/test_report_outputs.py", _NOT_WORKFLOW],
+                  "tests/combinations/test_combinations.py", "tests/report/test_report_outputs.py",
+                  "tests/criticism/test_edges.py", _NOT_WORKFLOW],
     },
     "demid/story/measurements.py": {
         "functions": None,
@@ -1060,7 +1063,7 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_uncertainty.py::"
                   "test_measurement_sigma_of_a_negative_target_and_a_response_without_config",
                   "tests/test_wave_value.py", "tests/sampling/test_stored_sets.py", "tests/test_boundary_runs.py",
-                  "tests/test_kriging.py"],
+                  "tests/test_kriging.py", "tests/sampling/test_stored_sets_whole.py", "tests/uncertainty/test_recommended.py"],
     },
     "demid/io.py": {
         "functions": None,
