@@ -958,7 +958,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/story/test_verdicts.py", "tests/story/test_verdict_properties.py", "tests/story/test_story.py",
                   "tests/test_physical_limits.py", "tests/story/test_report_judgements.py",
                   "tests/combinations/test_combinations.py", "tests/report/test_report_outputs.py",
-                  "tests/criticism/test_edges.py", _NOT_WORKFLOW],
+                  "tests/criticism/test_edges.py", "tests/story/test_verdicts_whole.py", _NOT_WORKFLOW],
     },
     "demid/story/measurements.py": {
         "functions": None,
