@@ -916,7 +916,8 @@ TABLE: dict[str, dict] = {
     "demid/tolerance.py": {
         "functions": None,
         "tests": ["tests/test_tolerance.py", "tests/criticism/test_level2_sign_properties.py", "tests/test_scenario.py",
-                  "tests/criticism/test_level2_own_tolerance.py", "tests/test_judged_scenario_properties.py"],
+                  "tests/criticism/test_level2_own_tolerance.py", "tests/test_judged_scenario_properties.py",
+                  "tests/test_tolerance_whole.py"],
     },
     "demid/formulas.py": {
         "functions": None,
