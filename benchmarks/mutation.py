@@ -994,7 +994,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py",
                   "tests/combinations/test_combination_material_whole.py",
-                  "tests/combinations/test_combination_outputs.py", "tests/report/test_advice_source.py"],
+                  "tests/combinations/test_combination_outputs.py", "tests/report/test_advice_source.py",
+                  "tests/combinations/test_break_ridge_whole.py"],
     },
     "demid/story/advice.py": {
         "functions": None,
