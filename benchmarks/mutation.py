@@ -853,7 +853,7 @@ TABLE: dict[str, dict] = {
     "demid/uncertainty/recommended.py": {
         "functions": None,
         "tests": ["tests/uncertainty/test_recommended.py", "tests/uncertainty/test_uncertainty.py", "tests/story/test_story.py",
-                  "tests/story/test_advice_wording.py", _NOT_WORKFLOW],
+                  "tests/story/test_advice_wording.py", "tests/uncertainty/test_recommended_whole.py", _NOT_WORKFLOW],
     },
     "demid/uncertainty/material.py": {
         "functions": None,
