@@ -1001,6 +1001,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/story/test_advice_wording.py", "tests/story/test_advice_properties.py", "tests/story/test_story.py",
                   "tests/story/test_advice_order_properties.py", "tests/story/test_recalibrate_properties.py",
+                  "tests/story/test_advice_whole.py",
                   "tests/test_physical_limits.py", "tests/report/test_report_reads.py", "tests/report/test_report_text.py",
                   _NOT_WORKFLOW],
     },
@@ -1243,6 +1244,16 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/ranking.py::rank_observable_sets::abs(contraction) < 1e-09 => abs(contraction) <= 1e-09#0":
         "differs only for a contraction of exactly 1e-9 %, which becomes 0 instead: both the round-off of an "
         "unchanged set",
+    # --- the uncertainty rows (seventh round, seeds 30 and 31)
+    "demid/uncertainty/ranking.py::rank_observable_sets::False => True#1":
+        "with_error=True for the ranking's fractions: only .fraction is read, and summarise_set's fraction is the "
+        "set's own on every branch (exact, grid, Sobol) whether or not its error is estimated",
+    "demid/uncertainty/plausible.py::plausible_identifiability_frame::2 => 1#0":
+        "the default sobol_points (2 ** 16): its one caller (uncertainty/material.py) always passes the analysis "
+        "size, so the default is never read",
+    "demid/uncertainty/material.py::analyse_material::2 => 1#0":
+        "sizes.get('posterior_points', 2 ** 16): the points are read only above three factors, where "
+        "recommended_sizes always gives posterior_points (a caller's sizes are merged over it)",
     # --- blocks
     "demid/blocks.py::label_text::int(value) => value#0": "str() of a numpy integer prints the same digits",
     "demid/blocks.py::label_text::float(value) => value#0":
