@@ -1248,6 +1248,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/ranking.py::rank_observable_sets::False => True#1":
         "with_error=True for the ranking's fractions: only .fraction is read, and summarise_set's fraction is the "
         "set's own on every branch (exact, grid, Sobol) whether or not its error is estimated",
+    "demid/uncertainty/ranking.py::rank_observable_sets::float(tolerance) => tolerance#0":
+        "its one caller passes spec.reference_tolerance, a scenario's float(c['tolerance']) or the float "
+        "FALLBACK_TOLERANCE: float() of a Python float is the same object's value",
+    "demid/uncertainty/ranking.py::rank_observable_sets::1 => 2#5":
+        "pairs left out of the shortcut `every smaller set reachable`: a set holding a pair that cannot be met "
+        "together has a fraction of 0 and no point that meets it (_met_together), so it is unreachable all the same",
     "demid/uncertainty/plausible.py::plausible_identifiability_frame::2 => 1#0":
         "the default sobol_points (2 ** 16): its one caller (uncertainty/material.py) always passes the analysis "
         "size, so the default is never read",

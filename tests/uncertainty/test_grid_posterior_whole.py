@@ -73,7 +73,7 @@ def _study(rng, k: int, count: int, sign: float, log_mask: int):
 
 
 def _search_loglik(surrogate: Surrogate, terms, u_points: np.ndarray, target, sigma, predictive):
-    m = np.array([[np.prod(row ** np.array(t)) for t in terms] for row in u_points])
+    m = np.prod(u_points[:, None, :] ** np.array(terms, dtype=float)[None], axis=2)  # one column per term
     var = np.einsum("ij,jk,ik->i", m, surrogate.covariance, m) + sigma ** 2
     if predictive:
         var = var + surrogate.resid_var
