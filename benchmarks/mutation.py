@@ -1254,6 +1254,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/ranking.py::rank_observable_sets::1 => 2#5":
         "pairs left out of the shortcut `every smaller set reachable`: a set holding a pair that cannot be met "
         "together has a fraction of 0 and no point that meets it (_met_together), so it is unreachable all the same",
+    "demid/uncertainty/plausible.py::summarise_set::1 => 2#0":
+        "n % 2 == 2 is never true: without the shared grid predictions fraction_with_error predicts the same odd "
+        "grid itself (as for 2 => 1#2), the same numbers at the cost of more predictions",
+    "demid/uncertainty/sweep.py::tolerance_sweep::2 => 1#0":
+        "the default sobol_points (2 ** 14): its one caller (uncertainty/material.py) always passes the sweep's "
+        "size, so the default is never read",
     "demid/uncertainty/plausible.py::plausible_identifiability_frame::2 => 1#0":
         "the default sobol_points (2 ** 16): its one caller (uncertainty/material.py) always passes the analysis "
         "size, so the default is never read",
