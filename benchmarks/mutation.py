@@ -976,7 +976,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/story/extensions.py": {
         "functions": None,
-        "tests": ["tests/story/test_model_extensions.py", "tests/story/test_extension_sentence_properties.py"],
+        "tests": ["tests/story/test_model_extensions.py", "tests/story/test_extension_sentence_properties.py",
+                  "tests/story/test_model_extensions_whole.py"],
     },
     "demid/blocks.py": {
         "functions": None,
