@@ -1236,6 +1236,10 @@ EQUIVALENT: dict[str, str] = {
     # --- verdicts
     "demid/story/words.py::labelled::v and v != k => v != k#0":
         "a label is never empty (MaterialSpec fills an absent one with the key), so 'v and' is always true",
+    "demid/story/words.py::labelled::True => False#0":
+        "the alternation's keys shortest first: keys are identifiers (the schema's ^[A-Za-z][A-Za-z0-9_]*$), so "
+        "where a longer key matches, a shorter key it starts with is followed by a word character, which both "
+        "lookaheads refuse; the regex then tries the longer one, whatever the order",
     "demid/story/words.py::labelled::v and v != k => v or v != k#0":
         "a label is never empty (MaterialSpec fills an absent one with the key): the extra entries map a key to "
         "itself, and replacing a key by itself leaves the text as it was",
