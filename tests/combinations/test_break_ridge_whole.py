@@ -7,6 +7,7 @@ gain is the ranking's number."""
 
 from __future__ import annotations
 
+import functools
 import re
 
 import numpy as np
@@ -31,7 +32,9 @@ class _Linear:
         return np.asarray(points, dtype=float) @ self.weights
 
 
+@functools.cache
 def _band():
+    """The grid nodes of the band and their combinations (computed on first use: a failure is a test's)."""
     axis = np.linspace(0, 1, 201)
     pts = np.stack(np.meshgrid(axis, axis, indexing="ij"), axis=-1).reshape(-1, 2)
     band = pts[np.abs(pts.sum(axis=1) - 1) <= 0.02]
@@ -40,8 +43,6 @@ def _band():
     assert res.identified and res.cut == "none"
     return band, res
 
-
-BAND, RESULT = _band()
 
 
 def _angle(weights):
@@ -73,7 +74,8 @@ def test_the_advice_names_the_steepest_observable_and_quotes_every_angle(seed, c
     gain = float(rng.uniform(0, 5))
     ranking = pd.DataFrame({"observables": [f"{best}+y1", "y1"], "information_gain_bits": [gain, 1.0]}) \
         if with_ranking else None
-    text = break_ridge_advice(RESULT, BAND, surrogates, spec, CODING, ["y1"], ranking)
+    band, result = _band()
+    text = break_ridge_advice(result, band, surrogates, spec, CODING, ["y1"], ranking)
 
     assert text.startswith(f"*Band* identifies a combination and leaves its complement free: {best.upper()} changes "
                            "most along the set"), text
@@ -100,5 +102,6 @@ def test_a_constant_observable_alone_gives_no_advice():
         "design": {"type": "ccd"}, "factors": {"a": {"lower": 0, "upper": 1}, "b": {"lower": 0, "upper": 1}},
         "responses": {"y1": {"target": 1.0}, "flat": {"target": 3.0}},
         "scenarios": {"band": {"observables": ["y1"], "tolerance": 0.02}}})
-    assert break_ridge_advice(RESULT, BAND, {"y1": _Linear([1, 1]), "flat": _Linear([0, 0])}, spec, CODING,
+    band, result = _band()
+    assert break_ridge_advice(result, band, {"y1": _Linear([1, 1]), "flat": _Linear([0, 0])}, spec, CODING,
                               ["y1"]) == ""
