@@ -199,16 +199,18 @@ longer one matches).  Seed 30's three others were killed by tests/uncertainty/te
 information gain's error in bits above three factors), tests/story/test_verdicts_whole.py (a width of exactly 10 %
 is identified) and tests/combinations/test_break_ridge_whole.py (an observable without a gradient is never scored);
 re-run with ``--ids``, 3/3.  Tests added, each checking a function's whole output against a computation written in
-the test or an exact invariant, over generated inputs: grid posteriors of 1-3 factors (marginals, means, intervals
+the test or an exact invariant, over generated or closed-form inputs: grid posteriors of 1-3 factors (marginals, means, intervals
 against an independent PCHIP quantile, information gain and its error, every CSV column) and posteriors above three
 factors on the Sobol points they use; the verdict table, its display, in_combination and the material's answer
 (thresholds at exactly 10 % and 90 %, the half-percent touch, limits, the table's own at_bound); every function of
 demid.tolerance (zero targets, the intercept anywhere, a grid holding some responses); the break-the-ridge angles
 on a straight band; uninformative observables at 99 % and the recommended point's digits against Decimal; a
 material's advice (the observable named and the numbers it quotes, widen items per factor and side, the next
-wave's shrink, the priority order, the CSV round trip); the model-extension table over 2-4 materials.  The eight
-files hold 79 tests and take 21 s one after another on the loaded machine (10 s in the tests themselves, each file
-under 3 s).  Rows now name them, and admissibility and
+wave's shrink, the priority order, the CSV round trip); the model-extension table over 2-4 materials; a material's
+ranking and information-gain tables where every fraction is ε or ε² (strict sets of a looser scenario never stand
+for the reference tolerance's; a set with a far target has neither gain nor its error in any table).  The nine
+files hold 81 tests and take about 22 s one after another on the loaded machine (12 s in the tests themselves,
+each file under 3 s).  Rows now name them, and admissibility and
 scenario the stored sets' whole tests, story/verdicts the edge tests that read factor_verdict.
 
 Fifth round, the sampling, surrogate, precision, criticism, transcription, input and report modules (new in-sample
@@ -829,7 +831,7 @@ TABLE: dict[str, dict] = {
     "demid/uncertainty/ranking.py": {
         "functions": None,
         "tests": ["tests/uncertainty/test_ranking.py", "tests/uncertainty/test_ranking_whole.py",
-                  "tests/uncertainty/test_met_together_properties.py",
+                  "tests/uncertainty/test_met_together_properties.py", "tests/uncertainty/test_material_tables_whole.py",
                   "tests/test_reported_numbers.py::test_ranking_reports_gain_fraction_and_contraction_in_closed_form",
                   "tests/test_reported_numbers.py::test_measurement_order_quotes_the_gains_and_fractions_of_the_ranking",
                   "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_unreachable_targets.py"],
@@ -889,7 +891,7 @@ TABLE: dict[str, dict] = {
     "demid/uncertainty/material.py": {
         "functions": None,
         "tests": ["tests/uncertainty/test_recommended.py", "tests/uncertainty/test_uncertainty.py",
-                  "tests/uncertainty/test_material_whole.py",
+                  "tests/uncertainty/test_material_whole.py", "tests/uncertainty/test_material_tables_whole.py",
                   "tests/uncertainty/test_own_tolerance_posteriors.py", "tests/criticism/test_unreachable_targets.py",
                   "tests/story/test_story.py", _NOT_WORKFLOW],
     },
