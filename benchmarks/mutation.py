@@ -208,9 +208,10 @@ on a straight band; uninformative observables at 99 % and the recommended point'
 material's advice (the observable named and the numbers it quotes, widen items per factor and side, the next
 wave's shrink, the priority order, the CSV round trip); the model-extension table over 2-4 materials; a material's
 ranking and information-gain tables where every fraction is ε or ε² (strict sets of a looser scenario never stand
-for the reference tolerance's; a set with a far target has neither gain nor its error in any table).  The nine
-files hold 81 tests and take about 22 s one after another on the loaded machine (12 s in the tests themselves,
-each file under 3 s).  Rows now name them, and admissibility and
+for the reference tolerance's; a set with a far target has neither gain nor its error in any table); the ranking
+walk's targets out of reach (singular and plural, in the ranking's order) and pairs met only apart (smallest first,
+whatever the row order).  The ten files hold 90 tests and take about 24 s one after another on the loaded machine
+(12 s in the tests themselves, each file under 3 s).  Rows now name them, and admissibility and
 scenario the stored sets' whole tests, story/verdicts the edge tests that read factor_verdict.
 
 Fifth round, the sampling, surrogate, precision, criticism, transcription, input and report modules (new in-sample
@@ -997,6 +998,7 @@ TABLE: dict[str, dict] = {
     "demid/story/measurements.py": {
         "functions": None,
         "tests": ["tests/story/test_measurement_order_properties.py", "tests/uncertainty/test_ranking.py",
+                  "tests/story/test_measurement_discrepancies_whole.py",
                   "tests/story/test_advice_wording.py", "tests/story/test_story.py",
                   "tests/report/test_advice_source.py", "tests/uncertainty/test_uncertainty.py",
                   "tests/test_reported_numbers.py", "tests/criticism/test_unreachable_targets.py", _NOT_WORKFLOW],
