@@ -166,8 +166,7 @@ def test_the_verdict_table_its_display_and_the_answer_follow_the_rule(seed, k, n
                                    "plausible_upper", "verdict", "reason"]
     assert [(r.scenario, r.factor) for r in frame.itertuples()] == list(expected)
     for row in frame.itertuples():
-        sc = spec.scenario(row.scenario) if hasattr(spec, "scenario") else next(
-            s for s in spec.scenarios if s.name == row.scenario)
+        sc = next(s for s in spec.scenarios if s.name == row.scenario)
         (s_verdict, s_width), (p_verdict, p_width), strict, plaus = expected[(row.scenario, row.factor)]
         assert row.material == "m"
         assert (row.strict_lower, row.strict_upper) == pytest.approx(strict, nan_ok=True)
