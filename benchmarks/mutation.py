@@ -182,15 +182,15 @@ listed as equivalent.
 
 Seventh round, the uncertainty, story, combinations, blocks, tolerance, scenario and admissibility modules (17 rows;
 new in-sample draws, ``--per-module 2``, each run before any test was aimed at it: seed 30 on the round's start,
-seed 31 on the first five whole-output files below (posterior, verdicts, tolerance, break-the-ridge, recommended),
-written against no mutant of it; a machine loaded by four other mutation runs):
+seed 31 on the first six whole-output files below (the two posteriors, verdicts, tolerance, break-the-ridge,
+recommended), written against no mutant of it; a machine loaded by four other mutation runs):
 
     seed  rows           as run          with lists     after (survivors re-run)
     30    all 17 rows    25/31 80.6 %    25/28 89.3 %   28/28 100 %
     31    all 17 rows    27/31 87.1 %    27/27 100 %    27/27 100 % (its four survivors all equivalent)
 
-"With lists": survivors read as equivalent, each listed with its reason: three defaults no caller leaves to
-themselves (sobol_points of the plausible table and the sweep, the posterior's points below four factors), two
+"With lists": survivors read as equivalent, each listed with its reason: three defaults no caller relies
+on (sobol_points of the plausible table and the sweep, the posterior's points below four factors), two
 shortcuts that give the same numbers (the ranking's fractions with or without their error; an odd grid's shared
 predictions, recomputed), the ranking's pair shortcut (a set holding a pair that cannot be met together cannot be
 met), the ranking's float() of a tolerance that is always a Python float (the known survivor of the fifth held-out
@@ -199,9 +199,9 @@ longer one matches).  Seed 30's three others were killed by tests/uncertainty/te
 information gain's error in bits above three factors), tests/story/test_verdicts_whole.py (a width of exactly 10 %
 is identified) and tests/combinations/test_break_ridge_whole.py (an observable without a gradient is never scored);
 re-run with ``--ids``, 3/3.  Tests added, each checking a function's whole output against a computation written in
-the test or an exact invariant, over generated or closed-form inputs: grid posteriors of 1-3 factors (marginals, means, intervals
-against an independent PCHIP quantile, information gain and its error, every CSV column) and posteriors above three
-factors on the Sobol points they use; the verdict table, its display, in_combination and the material's answer
+the test or an exact invariant, over generated or closed-form inputs: grid posteriors of 1-3 factors (marginals,
+means, intervals against an independent PCHIP quantile, information gain and its error, every CSV column) and
+posteriors above three factors on the Sobol points they use; the verdict table, its display, in_combination and the material's answer
 (thresholds at exactly 10 % and 90 %, the half-percent touch, limits, the table's own at_bound); every function of
 demid.tolerance (zero targets, the intercept anywhere, a grid holding some responses); the break-the-ridge angles
 on a straight band; uninformative observables at 99 % and the recommended point's digits against Decimal; a
