@@ -201,9 +201,9 @@ is identified) and tests/combinations/test_break_ridge_whole.py (an observable w
 re-run with ``--ids``, 3/3.  Tests added, each checking a function's whole output against a computation written in
 the test or an exact invariant, over generated or closed-form inputs: grid posteriors of 1-3 factors (marginals,
 means, intervals against an independent PCHIP quantile, information gain and its error, every CSV column) and
-posteriors above three factors on the Sobol points they use; the verdict table, its display, in_combination and the material's answer
-(thresholds at exactly 10 % and 90 %, the half-percent touch, limits, the table's own at_bound); every function of
-demid.tolerance (zero targets, the intercept anywhere, a grid holding some responses); the break-the-ridge angles
+posteriors above three factors on the Sobol points they use; the verdict table, its display, in_combination and
+the material's answer (thresholds at exactly 10 % and 90 %, the half-percent touch, limits, the table's own
+at_bound); every function of demid.tolerance (zero targets, the intercept anywhere, a grid holding some responses); the break-the-ridge angles
 on a straight band; uninformative observables at 99 % and the recommended point's digits against Decimal; a
 material's advice (the observable named and the numbers it quotes, widen items per factor and side, the next
 wave's shrink, the priority order, the CSV round trip); the model-extension table over 2-4 materials; a material's
