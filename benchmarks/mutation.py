@@ -201,18 +201,18 @@ is identified) and tests/combinations/test_break_ridge_whole.py (an observable w
 re-run with ``--ids``, 3/3.  Tests added, each checking a function's whole output against a computation written in
 the test or an exact invariant, over generated or closed-form inputs: grid posteriors of 1-3 factors (marginals,
 means, intervals against an independent PCHIP quantile, information gain and its error, every CSV column) and
-posteriors above three factors on the Sobol points they use; the verdict table, its display, in_combination and
-the material's answer (thresholds at exactly 10 % and 90 %, the half-percent touch, limits, the table's own
-at_bound); every function of demid.tolerance (zero targets, the intercept anywhere, a grid holding some responses); the break-the-ridge angles
-on a straight band; uninformative observables at 99 % and the recommended point's digits against Decimal; a
-material's advice (the observable named and the numbers it quotes, widen items per factor and side, the next
-wave's shrink, the priority order, the CSV round trip); the model-extension table over 2-4 materials; a material's
-ranking and information-gain tables where every fraction is ε or ε² (strict sets of a looser scenario never stand
-for the reference tolerance's; a set with a far target has neither gain nor its error in any table); the ranking
-walk's targets out of reach (singular and plural, in the ranking's order) and pairs met only apart (smallest first,
-whatever the row order).  The ten files hold 90 tests and take about 24 s one after another on the loaded machine
-(12 s in the tests themselves, each file under 3 s).  Rows now name them, and admissibility and
-scenario the stored sets' whole tests, story/verdicts the edge tests that read factor_verdict.
+posteriors above three factors on the Sobol points they use; the verdict table, its display, in_combination and the
+material's answer (thresholds at exactly 10 % and 90 %, the half-percent touch, limits, the table's own at_bound);
+every function of demid.tolerance (zero targets, the intercept anywhere, a grid holding some responses); the
+break-the-ridge angles on a straight band; uninformative observables at 99 % and the recommended point's digits
+against Decimal; a material's advice (the observable named and the numbers it quotes, widen items per factor and
+side, the next wave's shrink, the priority order, the CSV round trip); the model-extension table over 2-4 materials;
+a material's ranking and information-gain tables where every fraction is ε or ε² (strict sets of a looser scenario
+never stand for the reference tolerance's; a set with a far target has neither gain nor its error in any table); the
+ranking walk's targets out of reach (singular and plural, in the ranking's order) and pairs met only apart (smallest
+first, whatever the row order).  The ten files hold 90 tests and take about 24 s one after another on the loaded
+machine (12 s in the tests themselves, each file under 3 s).  Rows now name them, and admissibility and scenario the
+stored sets' whole tests, story/verdicts the edge tests that read factor_verdict.
 
 Fifth round, the sampling, surrogate, precision, criticism, transcription, input and report modules (new in-sample
 draws, ``--per-module 2``, each run before any test was aimed at it, on a machine loaded by four other runs; a
