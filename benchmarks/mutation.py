@@ -210,9 +210,10 @@ side, the next wave's shrink, the priority order, the CSV round trip); the model
 a material's ranking and information-gain tables where every fraction is ε or ε² (strict sets of a looser scenario
 never stand for the reference tolerance's; a set with a far target has neither gain nor its error in any table); the
 ranking walk's targets out of reach (singular and plural, in the ranking's order) and pairs met only apart (smallest
-first, whatever the row order).  The ten files hold 90 tests and take about 24 s one after another on the loaded
-machine (12 s in the tests themselves, each file under 3 s).  Rows now name them, and admissibility and scenario the
-stored sets' whole tests, story/verdicts the edge tests that read factor_verdict.
+first, whatever the row order); the block check's JSON (its correlation to six decimals).  The eleven files hold 91
+tests and take about 25 s one after another on the loaded machine (12 s in the tests themselves, each file under 3
+s).  Rows now name them, and admissibility and scenario the stored sets' whole tests, story/verdicts the edge tests
+that read factor_verdict.
 
 Fifth round, the sampling, surrogate, precision, criticism, transcription, input and report modules (new in-sample
 draws, ``--per-module 2``, each run before any test was aimed at it, on a machine loaded by four other runs; a
@@ -1017,7 +1018,7 @@ TABLE: dict[str, dict] = {
     "demid/blocks.py": {
         "functions": None,
         "tests": ["tests/test_blocks.py", "tests/criticism/test_blocks_steps.py", "tests/test_blocks_properties.py",
-                  "tests/test_blocks_whole.py",
+                  "tests/test_blocks_whole.py", "tests/test_blocks_json_whole.py",
                   "tests/inputs/test_data.py"],
     },
     "demid/combinations/axes.py": {
