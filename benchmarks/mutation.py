@@ -211,9 +211,9 @@ a material's ranking and information-gain tables where every fraction is Îµ or Î
 never stand for the reference tolerance's; a set with a far target has neither gain nor its error in any table); the
 ranking walk's targets out of reach (singular and plural, in the ranking's order) and pairs met only apart (smallest
 first, whatever the row order); the block check's JSON (its correlation to six decimals).  The eleven files hold 91
-tests and take about 25 s one after another on the loaded machine (12 s in the tests themselves, each file under 3
-s).  Rows now name them, and admissibility and scenario the stored sets' whole tests, story/verdicts the edge tests
-that read factor_verdict.
+tests and take about 25 seconds one after another on the loaded machine (12 in the tests themselves, each file under
+three seconds).  Rows now name them, and admissibility and scenario the stored sets' whole tests, story/verdicts the
+edge tests that read factor_verdict.
 
 Fifth round, the sampling, surrogate, precision, criticism, transcription, input and report modules (new in-sample
 draws, ``--per-module 2``, each run before any test was aimed at it, on a machine loaded by four other runs; a
