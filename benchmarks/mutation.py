@@ -682,7 +682,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/test_precision.py", "tests/test_precision_text_properties.py", "tests/inputs/test_factor_round_off.py",
                   "tests/test_surrogate.py", "tests/criticism/test_noise_free.py", "tests/test_reported_boundaries.py",
                   "tests/test_precision_whole.py", "tests/test_surrogate_properties.py",
-                  "tests/inputs/test_read_table_whole.py"],
+                  "tests/inputs/test_read_table_whole.py", "tests/test_printed_quantum_whole.py"],
     },
     "demid/criticism/models.py": {
         "functions": None,
@@ -746,7 +746,8 @@ TABLE: dict[str, dict] = {
                   "tests/sampling/test_set_estimators.py", "tests/test_core_contracts.py",
                   "tests/sampling/test_closest_approach_whole.py", "tests/sampling/test_exact_set_whole.py",
                   "tests/sampling/test_grid_set_whole.py", "tests/sampling/test_stored_sets_whole.py",
-                  "tests/test_scenario.py", "tests/uncertainty/test_met_together_properties.py"],
+                  "tests/test_scenario.py", "tests/uncertainty/test_met_together_properties.py",
+                  "tests/sampling/test_closest_approach_basins.py"],
     },
     "demid/criticism/level1.py": {
         "functions": None,
