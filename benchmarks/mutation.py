@@ -1932,6 +1932,9 @@ SETTINGS: dict[str, str] = {
     "demid/sampling/polish.py::polish_spans::3 => 2#0":
         "the number of SLSQP starts per span end (the most extreme admissible nodes): two reach the same ends on "
         "the sets tried",
+    "demid/sampling/evaluate.py::closest_approach::1 - 1e-09 => 1#0":
+        "the margin by which another basin's lowest point must beat the first search's to replace it (a tie to "
+        "round-off keeps the first): the closest approach reported differs by under 1e-9 of itself either way",
 }
 
 # Files and folders copied into the private tree the mutants are written to.

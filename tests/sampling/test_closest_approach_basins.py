@@ -71,3 +71,4 @@ def test_the_closest_approach_is_the_lower_of_two_basins(seed, dim, grid):
     aset = evaluate_set(surrogates, domain, ("y1", "y2"), {"y1": 1.0, "y2": 1.0}, tolerance, 11, grid=grid)
     assert aset.fraction == 0.0
     assert aset.best_error == pytest.approx(want, rel=1e-6, abs=1e-12)
+
