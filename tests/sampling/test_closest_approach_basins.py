@@ -2,8 +2,8 @@
 is the lower basin's, found by brute force (a fine grid, then scipy's bounded search from its best node), not
 the basin of the start grid's best node.
 
-``y1 = 1 + K (a - p)(a - q) + c (b - m)^2`` meets its target 1 on two curves, ``y2 = 1 + s a + r b`` (r >= 0; both
-targets 1) grows along a and b, so the largest relative error has a basin near a = p and one near a = q, the lower
+``y1 = 1 + K (a - p)(a - q) + c (b - m)^2`` meets its target 1 on two curves, ``y2 = 1 + d + s a + r b`` (d, r >= 0;
+both targets 1) grows along a and b, so the largest relative error has a basin near a = p and one near a = q, the lower
 at p; on the start grid the node nearest q may well be the best one (the bottoms lie between nodes)."""
 
 from __future__ import annotations
@@ -19,15 +19,15 @@ from demid.sampling.evaluate import closest_approach, evaluate_set
 from demid.surrogate import Surrogate
 
 
-def _surrogates(dim, p, q, k, s, c, m, r):
+def _surrogates(dim, p, q, k, s, c, m, r, d):
     if dim == 1:
         terms = [(0,), (1,), (2,)]
         y1 = [1 + k * p * q, -k * (p + q), k]
-        y2 = [1.0, s, 0.0]
+        y2 = [1.0 + d, s, 0.0]
     else:
         terms = [(0, 0), (1, 0), (2, 0), (0, 1), (0, 2)]
         y1 = [1 + k * p * q + c * m * m, -k * (p + q), k, -2 * c * m, c]
-        y2 = [1.0, s, 0.0, r, 0.0]
+        y2 = [1.0 + d, s, 0.0, r, 0.0]
     factors = ["a", "b"][:dim]
     cov = np.zeros((len(terms), len(terms)))
     return {name: Surrogate(name, factors, terms, np.array(coef, dtype=float), cov, 0.0, 5)
@@ -60,7 +60,8 @@ def test_the_closest_approach_is_the_lower_of_two_basins(seed, dim, grid):
     p = rng.uniform(0.1, 0.35)
     q = rng.uniform(p + 0.35, 0.9)
     surrogates = _surrogates(dim, p, q, k=rng.uniform(5, 40), s=rng.uniform(0.05, 1.0), c=rng.uniform(0.5, 3),
-                             m=rng.uniform(0.2, 0.8), r=rng.uniform(0.0, 0.05))
+                             m=rng.uniform(0.2, 0.8), r=rng.uniform(0.0, 0.05),
+                             d=rng.choice([0.0, rng.uniform(0.1, 1.0)]))
     domain = Domain(tuple(["a", "b"][:dim]), (0.0,) * dim, (1.0,) * dim)
     want = _brute_force(surrogates, dim)
     value, point = closest_approach(surrogates, domain, ("y1", "y2"), {"y1": 1.0, "y2": 1.0}, None)
