@@ -1845,6 +1845,10 @@ EQUIVALENT: dict[str, str] = {
         "every AdmissibleSet's spans are float64 arrays (grid: to_actual or np.full; Sobol: np.asarray of float "
         "arrays; exact and stored sets: to_numpy(dtype=float)), so copy=False copies nothing and raises nothing; "
         "the arrays are only read: _polish builds new ones, an empty set's are returned unchanged",
+    "demid/precision.py::_own_places::np.abs(scaled - np.round(scaled)) <= 1e-12 * np.maximum(1.0, np.abs(scaled)) "
+    "=> np.abs(scaled - np.round(scaled)) < 1e-12 * np.maximum(1.0, np.abs(scaled))#0":
+        "differs only for a value whose distance from a whole number of its digits is exactly 1e-12 of its size, "
+        "to the last bit (a whole number, distance 0, passes both tests)",
     "demid/sampling/polish.py::start_points::2 => 1#0":
         "polish_spans runs on grid sets only (at most MAX_GRID_DIM = 3 factors; the Sobol path has its own), where "
         "max(16, 2 d) and max(16, 1 * d) are both 16",
