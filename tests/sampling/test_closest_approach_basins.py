@@ -36,7 +36,7 @@ def _surrogates(dim, p, q, k, s, c, m, r, d):
 
 def _brute_force(surrogates, dim):
     """The lowest largest error on a fine grid of the unit box, refined by a bounded search from its best node."""
-    axis = np.linspace(0.0, 1.0, 2001 if dim == 1 else 401)
+    axis = np.linspace(0.0, 1.0, 2001 if dim == 1 else 201)
     nodes = np.stack(np.meshgrid(*[axis] * dim, indexing="ij"), axis=-1).reshape(-1, dim)
 
     def worst(x):
