@@ -323,7 +323,9 @@ off the slicing lines too), two crossing bands' parallelogram (area, spans), bad
 empty breakpoint table, a material without a reference point's stored sets, a column's printed quantum and a
 factor's hidden rounding read off printed strings (tests/sampling/test_closest_approach_whole.py,
 test_ring_distance_whole.py, test_parallelogram_whole.py, test_refusals_and_empty_tables_whole.py,
-test_stored_sets_without_a_point.py, tests/test_printed_quantum_whole.py); about 20 s together, one after
+test_stored_sets_without_a_point.py, tests/test_printed_quantum_whole.py), and the start grid's basins against a
+brute force (tests/sampling/test_basin_nodes_whole.py: 22 of its 23 mutants killed, the 23rd listed as
+equivalent); about 20 s together, one after
 another, on a loaded machine.  Rows now name more fast files (domain: the sampling whole-output tests; grid and
 polish: the polish and sweep tests; sobol: the posterior quantiles; evaluate: the stored sets, scenarios and
 targets met together; surrogate: the replicate rule, judged scenarios, factor round-off and noise-free fits).
@@ -781,7 +783,7 @@ TABLE: dict[str, dict] = {
                   "tests/sampling/test_closest_approach_whole.py", "tests/sampling/test_exact_set_whole.py",
                   "tests/sampling/test_grid_set_whole.py", "tests/sampling/test_stored_sets_whole.py",
                   "tests/test_scenario.py", "tests/uncertainty/test_met_together_properties.py",
-                  "tests/sampling/test_closest_approach_basins.py"],
+                  "tests/sampling/test_closest_approach_basins.py", "tests/sampling/test_basin_nodes_whole.py"],
     },
     "demid/criticism/level1.py": {
         "functions": None,
@@ -1882,6 +1884,9 @@ EQUIVALENT: dict[str, str] = {
     "=> np.abs(scaled - np.round(scaled)) < 1e-12 * np.maximum(1.0, np.abs(scaled))#0":
         "differs only for a value whose distance from a whole number of its digits is exactly 1e-12 of its size, "
         "to the last bit (a whole number, distance 0, passes both tests)",
+    "demid/sampling/evaluate.py::basin_nodes::1 => 2#1":
+        "a wider pad after the last node is never read: the neighbours below and above are the slices 0..n-1 and "
+        "2..n+1 of the padded axis whatever its trailing width beyond one",
     "demid/sampling/polish.py::start_points::2 => 1#0":
         "polish_spans runs on grid sets only (at most MAX_GRID_DIM = 3 factors; the Sobol path has its own), where "
         "max(16, 2 d) and max(16, 1 * d) are both 16",
