@@ -325,7 +325,9 @@ factor's hidden rounding read off printed strings (tests/sampling/test_closest_a
 test_ring_distance_whole.py, test_parallelogram_whole.py, test_refusals_and_empty_tables_whole.py,
 test_stored_sets_without_a_point.py, tests/test_printed_quantum_whole.py), and the start grid's basins against a
 brute force (tests/sampling/test_basin_nodes_whole.py: 22 of its 23 mutants killed, the 23rd listed as
-equivalent); about 20 s together, one after
+equivalent; of every third mutant of the new closest_approach, 17, seven are killed by these tests, five
+listed as equivalent and three as settings; left: the penalty's sign outside the box, the clip's 0 -> -1 and a given
+start dropped); about 20 s together, one after
 another, on a loaded machine.  Rows now name more fast files (domain: the sampling whole-output tests; grid and
 polish: the polish and sweep tests; sobol: the posterior quantiles; evaluate: the stored sets, scenarios and
 targets met together; surrogate: the replicate rule, judged scenarios, factor round-off and noise-free fits).
@@ -1884,6 +1886,14 @@ EQUIVALENT: dict[str, str] = {
     "=> np.abs(scaled - np.round(scaled)) < 1e-12 * np.maximum(1.0, np.abs(scaled))#0":
         "differs only for a value whose distance from a whole number of its digits is exactly 1e-12 of its size, "
         "to the last bit (a whole number, distance 0, passes both tests)",
+    "demid/sampling/evaluate.py::closest_approach::0 => -1#2": "u is one point (the search's or its start u0): worst(u) and from_unit(u) have one entry, first and last",
+    "demid/sampling/evaluate.py::closest_approach::0 => -1#3": "u is one point (the search's or its start u0): worst(u) and from_unit(u) have one entry, first and last",
+    "demid/sampling/evaluate.py::closest_approach::0 => -1#4": "u is one point (the search's or its start u0): worst(u) and from_unit(u) have one entry, first and last",
+    "demid/sampling/evaluate.py::closest_approach::0 => -1#5": "u is one point (the search's or its start u0): worst(u) and from_unit(u) have one entry, first and last",
+    "demid/sampling/evaluate.py::closest_approach::best_point is None or value < best_value * (1 - 1e-09) => "
+    "value < best_value * (1 - 1e-09)#0":
+        "on the first search best_value is inf, and inf * (1 - 1e-9) exceeds every finite value: a polynomial's "
+        "largest relative error at a point of the box is finite, so the first search is kept either way",
     "demid/sampling/evaluate.py::basin_nodes::1 => 2#1":
         "a wider pad after the last node is never read: the neighbours below and above are the slices 0..n-1 and "
         "2..n+1 of the padded axis whatever its trailing width beyond one",
@@ -1977,6 +1987,13 @@ SETTINGS: dict[str, str] = {
     "demid/sampling/evaluate.py::closest_approach::1 - 1e-09 => 1#0":
         "the margin by which another basin's lowest point must beat the first search's to replace it (a tie to "
         "round-off keeps the first): the closest approach reported differs by under 1e-9 of itself either way",
+    "demid/sampling/evaluate.py::closest_approach::1 - 1e-09 => 1 + 1e-09#0":
+        "the margin by which another basin's lowest point must beat the first search's to replace it (a tie to "
+        "round-off keeps the first): the closest approach reported differs by under 1e-9 of itself either way",
+    "demid/sampling/evaluate.py::closest_approach::2000 => 2001#0":
+        "Nelder-Mead's evaluation cap: the searches converge to their tolerances in far fewer",
+    "demid/sampling/evaluate.py::closest_approach::1 => 0#2":
+        "with a given start, how many of the start grid's basins are searched besides it (four instead of three)",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
