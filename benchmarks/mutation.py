@@ -325,9 +325,9 @@ factor's hidden rounding read off printed strings (tests/sampling/test_closest_a
 test_ring_distance_whole.py, test_parallelogram_whole.py, test_refusals_and_empty_tables_whole.py,
 test_stored_sets_without_a_point.py, tests/test_printed_quantum_whole.py), and the start grid's basins against a
 brute force (tests/sampling/test_basin_nodes_whole.py: 22 of its 23 mutants killed, the 23rd listed as
-equivalent; of every third mutant of the new closest_approach, 17, seven are killed by these tests, five
-listed as equivalent and three as settings; left: the penalty's sign outside the box, the clip's 0 -> -1 and a given
-start dropped); about 20 s together, one after
+equivalent; of every third mutant of the new closest_approach, 17, seven are killed by these tests, three
+listed as equivalent (two more indexes of one point with them) and three as settings; left: start_value <= value ->
+<, the penalty's sign outside the box, the clip's 0 -> -1 and a given start dropped); about 20 s together, one after
 another, on a loaded machine.  Rows now name more fast files (domain: the sampling whole-output tests; grid and
 polish: the polish and sweep tests; sobol: the posterior quantiles; evaluate: the stored sets, scenarios and
 targets met together; surrogate: the replicate rule, judged scenarios, factor round-off and noise-free fits).
