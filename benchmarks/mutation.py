@@ -312,10 +312,11 @@ The others were killed by the tests below (re-run with ``--ids``).  evaluate's s
 stay settings, and this is what a user would read differently: with two observables the largest error has a basin
 per way of trading them off, and a local search from the start grid's best node alone ended in that node's basin
 (y1 = 1 + 32 (a - 0.29)(a - 0.82), y2 = 1 + 0.47 a on [0, 1], both targets 1: closest approach 0.1327 from 21
-nodes, 0.3745 from 20).  That showed a bug, fixed: closest_approach now also starts from the best node of each of up to four
-basins of the start grid (CLOSEST_STARTS) and keeps the lowest, so the old code's 0.0756 for y1 = 1 + 22.9 (a -
-0.368)(a - 0.750), y2 = 1 + 0.102 a is 0.0371 (a fine grid: 0.0371) (tests/sampling/test_closest_approach_basins.py, against a brute
-force with scipy's SLSQP, fails on the old code; the demo's outputs are byte-identical).  A basin narrower than the
+nodes, 0.3745 from 20).  That showed a bug, fixed: closest_approach now also starts from the best node of each of
+up to four basins of the start grid (CLOSEST_STARTS) and keeps the lowest, so the old code's 0.0756 for y1 = 1 +
+22.9 (a - 0.368)(a - 0.750), y2 = 1 + 0.102 a is 0.0371, a fine grid's value
+(tests/sampling/test_closest_approach_basins.py, against a brute force with scipy's SLSQP, fails on the old code;
+the demo's outputs are byte-identical).  A basin narrower than the
 start grid's spacing is still missed.  Tests added, each against a closed form or a computation written in the test:
 an unreachable bowl's closest approach and point (1-3 factors and observables, log factors, signs, with and
 without the node mask), a ring's and shell's reference distance and nearest point from every direction (a hair
