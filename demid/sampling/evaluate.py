@@ -68,10 +68,31 @@ def start_nodes(domain: Domain) -> np.ndarray:
     return domain.to_unit(domain.grid(21 if domain.dim <= 3 else 5))
 
 
+#: Local searches of a closest approach: from the given start or the start grid's best node, and from the best node
+#: of each of the grid's other basins up to this many in all (the largest error of several observables has a
+#: basin per way of trading them off, and the best node's basin need not hold the lowest point).
+CLOSEST_STARTS = 4
+
+
+def basin_nodes(values: np.ndarray, per_axis: int, dim: int, count: int) -> np.ndarray:
+    """Indices of the nodes of a ``per_axis``-per-axis grid ('ij' order) no higher than any neighbour along an
+    axis, lowest first (the first of equal values first), at most ``count``: the best node of each basin."""
+    grid = values.reshape((per_axis,) * dim)
+    lowest = np.ones(grid.shape, dtype=bool)
+    for axis in range(dim):
+        pad = [(1, 1) if a == axis else (0, 0) for a in range(dim)]
+        padded = np.pad(grid, pad, constant_values=np.inf)
+        below = np.take(padded, np.arange(per_axis), axis=axis)
+        above = np.take(padded, np.arange(2, per_axis + 2), axis=axis)
+        lowest &= (grid <= below) & (grid <= above)
+    idx = np.flatnonzero(lowest.ravel())
+    return idx[np.argsort(values[idx], kind="stable")][:count]
+
+
 def closest_approach(surrogates: dict, domain: Domain, observables, targets: dict[str, float],
                      start: np.ndarray | None) -> tuple[float, np.ndarray]:
-    """min over the domain of max_k |relative residual| (Nelder-Mead in unit coordinates from
-    ``start``, actual units, or the best node of a small grid)."""
+    """min over the domain of max_k |relative residual| (Nelder-Mead in unit coordinates from ``start``, actual
+    units, or the best node of a small grid, and from the best nodes of the grid's other basins)."""
     from scipy import optimize
 
     obs = tuple(observables)
@@ -79,19 +100,23 @@ def closest_approach(surrogates: dict, domain: Domain, observables, targets: dic
     def worst(u):
         return np.max(np.abs(relative_errors(surrogates, domain, obs, targets, u)), axis=0)
 
-    if start is None:
-        nodes = start_nodes(domain)
-        u0 = nodes[int(np.argmin(worst(nodes)))]
-    else:
-        u0 = domain.to_unit(start)[0]
-    res = optimize.minimize(lambda u: float(worst(u)[0]) + float(np.sum(np.abs(u - np.clip(u, 0, 1)))), u0,
-                            method="Nelder-Mead", options={"xatol": 1e-10, "fatol": 1e-12, "maxfev": 2000})
-    u = np.clip(res.x, 0.0, 1.0)
-    value, point = float(worst(u)[0]), domain.from_unit(u)[0]
-    start_value = float(worst(u0)[0])
-    if start_value <= value:
-        return start_value, domain.from_unit(u0)[0]
-    return value, point
+    nodes = start_nodes(domain)
+    per_axis = int(round(len(nodes) ** (1.0 / domain.dim)))
+    basins = nodes[basin_nodes(worst(nodes), per_axis, domain.dim, CLOSEST_STARTS)]
+    starts = basins if start is None else np.vstack([domain.to_unit(start)[:1], basins[:CLOSEST_STARTS - 1]])
+    best_value, best_point = np.inf, None
+    for u0 in starts:
+        res = optimize.minimize(lambda u: float(worst(u)[0]) + float(np.sum(np.abs(u - np.clip(u, 0, 1)))), u0,
+                                method="Nelder-Mead", options={"xatol": 1e-10, "fatol": 1e-12, "maxfev": 2000})
+        u = np.clip(res.x, 0.0, 1.0)
+        value, point = float(worst(u)[0]), domain.from_unit(u)[0]
+        start_value = float(worst(u0)[0])
+        if start_value <= value:
+            value, point = start_value, domain.from_unit(u0)[0]
+        # another basin's lowest point replaces the first search's only when lower beyond round-off
+        if best_point is None or value < best_value * (1 - 1e-9):
+            best_value, best_point = value, point
+    return best_value, best_point
 
 
 def evaluate_set(surrogates: dict[str, Surrogate], domain: Domain, observables, targets: dict[str, float],
