@@ -96,6 +96,22 @@ search setting like its 5 -> 4, listed in SETTINGS and counted as a survivor).  
 not fixed: on a set that lies inside one or two cells of a coarse grid (an annulus of radius 0.05 on a 9-point grid)
 the grid's error estimate (0.0014) falls short of the true error (0.0084): the nested coarse grid misses it too.
 
+Sixth held-out draw (seed 613_447, written down before the seventh round's tests and never run until they were
+written; ``--held-out --held-out-only --per-module 1`` over all 72 rows, leaving out SEEN_DRAWS, in two halves side
+by side on the code of 1bfc08b, a machine otherwise quiet, about 10 minutes): **51 of 64 killed, 79.7 %** (30/36 and
+21/28; four listed equivalent beforehand), against 71-87 % as run for the round's own unseen in-sample draws (seeds
+30-31: sampling 71-72 %, criticism 77-79 %, inputs 75 %, uncertainty and story 81-87 %, loop 77-82 %) and 100 %
+after.  So the held-out score tracks the as-run score of fresh draws, not the "after" column, and a round of
+whole-output tests per module (about 470 tests) moved neither: 82.1 % and 79.7 % are within one draw's scatter
+(64 mutants: a 95 % interval of about +-10 points).  Survivors: sampling/roots _companion_roots 1 -> 2 (#19);
+sampling/polish _polish's candidates in search units without - lo_u; transcription/printed _adjusted_r2 0 -> 1 (#1);
+criticism/verdict rests_on_one_run without its ``worst is not None``; criticism/one_run _weakest_by_identity 1 -> 0
+(#2); criticism/edges extrapolation_warnings u < -tol -> <=; design_check _level_coding 6 -> 7 (#1); blocks
+ccd_blocks' sign product > 0 -> >= 0; story/words labelled ``not names or not text`` -> ``and``; uncertainty/sweep
+z == 0 -> z != 0; next_wave plan_next_wave BAND_Z_FACTOR != 1 -> == 1; boundary_runs greedy_batch's floor max(.,
+1e-300) -> min; wave_value _updated_se without ``scale <= 0 or``.  The draw is in SEEN_DRAWS now and the next
+round's held-out draw has a new seed.
+
 Fourth round, the uncertainty, story, combinations, design, wave and loop modules (28 rows; new in-sample draws,
 seeds 21, 22 and 23 with ``--per-module 2`` and 21 and 22 again with 4, each run before any test was aimed at it, on the
 tests of the round so far; "with lists": survivors that reading showed equivalent or a search setting left out of the score):
@@ -2569,7 +2585,7 @@ def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]
 #: its mutants are drawn apart from the in-sample draw (the default ``--seed``, against which tests were written
 #: run by run), and no test may be written against them.  Once its survivors have been read and tests added for
 #: them, its score is in-sample too: write down a new seed here, unused, before the next round.
-HELD_OUT_SEED = 613_447  # the next round's; 540_073's draw was scored and read (in SEEN_DRAWS now)
+HELD_OUT_SEED = 702_119  # the next round's; 613_447's draw was scored and read (in SEEN_DRAWS now)
 
 
 #: Draws that tests were written against, run by run (seed, mutants per module): never part of a held-out draw.
@@ -2577,7 +2593,7 @@ HELD_OUT_SEED = 613_447  # the next round's; 540_073's draw was scored and read 
 #: draw's survivors were read and tested), the second and third held-out draws (704_913, 3 per module; 902_611, 1)
 #: were read and tested, and so were the fourth round's draws (seeds 21-22 with 4 per module, 23 with 2, 24 with 2,
 #: 25 with 1).
-SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2"]
+SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1"]
 
 
 def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:
