@@ -869,7 +869,8 @@ TABLE: dict[str, dict] = {
     "demid/sampling/polish.py": {
         "functions": ["start_points", "_polish", "polish_spans"],
         "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/test_core_contracts.py",
-                  "tests/sampling/test_polish_whole.py", "tests/uncertainty/test_sweep_plausible_whole.py"],
+                  "tests/sampling/test_polish_whole.py", "tests/uncertainty/test_sweep_plausible_whole.py",
+                  "tests/sampling/test_polish_two_discs_whole.py"],
     },
     "demid/surrogate.py": {
         "functions": None,
