@@ -1535,6 +1535,9 @@ EQUIVALENT: dict[str, str] = {
         "a numpy integer compares, prints and is written to JSON (io._clean) as the same int",
     "demid/blocks.py::ccd_blocks::np.abs(coded) > _ZERO => np.abs(coded) >= _ZERO#0":
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
+    "demid/blocks.py::ccd_blocks::np.prod(signs[:, i:], axis=1) > 0 => np.prod(signs[:, i:], axis=1) >= 0#0":
+        "signs holds the factorial rows only, every coordinate of which is above _ZERO in size (NaN is not): "
+        "each sign is +1 or -1, so their product (1 for no column) is never 0",
     # --- next wave
     "demid/next_wave.py::next_box::0 => -1#0": "to_search of one point returns one row: its first and last agree",
     "demid/next_wave.py::plan_next_wave::0 => -1#1":
