@@ -1033,7 +1033,8 @@ TABLE: dict[str, dict] = {
                   "tests/test_next_wave.py", "tests/test_next_wave_properties.py", "tests/test_d_optimal_rule.py",
                   "tests/test_next_wave_whole.py", "tests/test_next_wave_box_whole.py", "tests/test_omega_wave_whole.py",
                   "tests/test_next_wave_reason_whole.py", "tests/test_propose_runs_whole.py",
-                  "tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py"],
+                  "tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py",
+                  "tests/test_next_wave_aim_whole.py"],
     },
     "demid/wave_runs.py": {
         "functions": None,
