@@ -1048,7 +1048,8 @@ TABLE: dict[str, dict] = {
     "demid/boundary_runs.py": {
         "functions": None,
         "tests": ["tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py", "tests/test_loop_whole.py",
-                  "tests/test_boundary_runs_whole.py", "tests/test_omega_wave_whole.py"],
+                  "tests/test_boundary_runs_whole.py", "tests/test_omega_wave_whole.py",
+                  "tests/test_boundary_runs_nil_whole.py"],
     },
     "demid/kriging.py": {
         "functions": None,
