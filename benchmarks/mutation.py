@@ -1455,6 +1455,11 @@ EQUIVALENT: dict[str, str] = {
     "demid/wave_value.py::expected_contraction::np.isfinite(contraction) and contraction < STOP_CONTRACTION => "
     "contraction < STOP_CONTRACTION#0":
         "the contraction is NaN (an empty set) or finite: NaN < 0.1 is False as well",
+    "demid/wave_value.py::_updated_se::scale <= 0 or not np.any(cov) => not np.any(cov)#0":
+        "every polynomial surrogate's covariance is its OLS fit's scale times (X'X)^-1 mapped to actual units (the "
+        "tolerance rescaling multiplies both by one factor squared): a zero scale is an all-zero covariance, which "
+        "the remaining test catches, and a scale is never negative (NaN, a saturated fit, passes both tests alike); "
+        "only a rescaled scale underflowing to 0 while a covariance entry does not could part them",
     "demid/design_inference.py::InferredDesign.describe::max(self.alpha) - min(self.alpha) <= 0.001 * max(self.alpha) "
     "=> max(self.alpha) - min(self.alpha) < 0.001 * max(self.alpha)#0":
         "differs only for axial distances whose spread is exactly a thousandth of the largest, to the last bit",
