@@ -112,6 +112,18 @@ z == 0 -> z != 0; next_wave plan_next_wave BAND_Z_FACTOR != 1 -> == 1; boundary_
 1e-300) -> min; wave_value _updated_se without ``scale <= 0 or``.  The draw is in SEEN_DRAWS now and the next
 round's held-out draw has a new seed.
 
+After this draw was read: roots' _companion_roots 1 -> 2 (#19, a derivative with one coefficient too many, which
+fails on a polynomial below its formal degree) killed by tests/sampling/test_companion_roots_whole.py (roots of
+padded polynomials and a one-factor set of a cubic, a quadratic and a line, against numpy's roots); polish's start
+points without - lo_u killed by tests/sampling/test_polish_two_discs_whole.py (two discs in boxes off zero: SLSQP
+then starts in the wrong disc); ccd_blocks' sign product > 0 -> >= 0 listed as equivalent (the factorial rows'
+signs are +-1, their product never 0); plan_next_wave's BAND_Z_FACTOR != 1 -> == 1 killed by
+tests/test_next_wave_aim_whole.py (a wave of one or two design runs, without support runs, still valued on runs
+aimed at the plausible set); greedy_batch's floor max -> min killed by tests/test_boundary_runs_nil_whole.py
+(scores below a millionth of the largest are nil: the runs after the boundary's go to the corners); _updated_se
+without ``scale <= 0 or`` listed as equivalent (a zero OLS scale is an all-zero covariance, which the remaining
+test catches).
+
 Fourth round, the uncertainty, story, combinations, design, wave and loop modules (28 rows; new in-sample draws,
 seeds 21, 22 and 23 with ``--per-module 2`` and 21 and 22 again with 4, each run before any test was aimed at it, on the
 tests of the round so far; "with lists": survivors that reading showed equivalent or a search setting left out of the score):
