@@ -122,7 +122,7 @@ tests/test_next_wave_aim_whole.py (a wave of one or two design runs, without sup
 aimed at the plausible set); greedy_batch's floor max -> min killed by tests/test_boundary_runs_nil_whole.py
 (scores below a millionth of the largest are nil: the runs after the boundary's go to the corners); _updated_se
 without ``scale <= 0 or`` listed as equivalent (a zero OLS scale is an all-zero covariance, which the remaining
-test catches).
+test catches).  The four re-run with ``--ids``: killed, 4/4.
 
 Fourth round, the uncertainty, story, combinations, design, wave and loop modules (28 rows; new in-sample draws,
 seeds 21, 22 and 23 with ``--per-module 2`` and 21 and 22 again with 4, each run before any test was aimed at it, on the
