@@ -2179,6 +2179,12 @@ EQUIVALENT: dict[str, str] = {
         "frame.iloc[1:0] is as empty as frame.iloc[0:0] (a slice that starts after it stops): a table without the "
         "state columns still gives no stored set",
 
+    # --- the sixth held-out draw's survivors read as equivalent (seed 613_447; in SEEN_DRAWS)
+    "demid/criticism/one_run.py::_weakest_by_identity::1 => 0#2":
+        "log(sse / n) is log(sse / (n - 1)) + log((n - 1) / n), the same shift for every run and variance slope, "
+        "which the likelihood ratio (a profile's maximum minus its value at slope 0) cancels: the runs ranked "
+        "differ only where two ratios tie to rounding",
+
     # --- the seventh round's draws (seeds 30 and 31) read as equivalent
     "demid/precision.py::value_text::1 => 0#0":
         "the exponent form's digits are >= 0 already (|value| >= place / 2 puts floor(log10 |value|) at least "
