@@ -2185,6 +2185,9 @@ EQUIVALENT: dict[str, str] = {
         "log(sse / n) is log(sse / (n - 1)) + log((n - 1) / n), the same shift for every run and variance slope, "
         "which the likelihood ratio (a profile's maximum minus its value at slope 0) cancels: the runs ranked "
         "differ only where two ratios tie to rounding",
+    "demid/story/words.py::labelled::not names or not text => not names and (not text)#0":
+        "with no names both replacement branches are skipped, and an empty text (every caller passes a str) gives "
+        "no match to patterns of non-empty keys (the schema's names): the text comes back as it went in either way",
 
     # --- the seventh round's draws (seeds 30 and 31) read as equivalent
     "demid/precision.py::value_text::1 => 0#0":
