@@ -925,7 +925,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_printed_properties.py",
                   "tests/transcription/test_printed_whole.py", "tests/transcription/test_agreement_whole.py",
-                  "tests/transcription/test_cell_texts_whole.py",
+                  "tests/transcription/test_cell_texts_whole.py", "tests/transcription/test_adjusted_r2_whole.py",
                   "tests/transcription/test_precision_elsewhere.py",
                   "tests/inputs/test_stranger_tables.py::test_an_impossible_published_statistic_is_refused",
                   "tests/inputs/test_stranger_tables.py::test_possible_published_statistics_pass"],
