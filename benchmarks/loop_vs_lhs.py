@@ -207,6 +207,11 @@ Tried this round, not kept (each against the same seeds of the code above):
   0.79 x on seeds 100-109 (the ridge's gain above came from the second wave, placed on the quadratic);
 * spacing that tiles the undecided region (P(in set) in 0.25-0.75) with the wave's boundary runs: ridge 0.75 ->
   0.72 x on seeds 100-109, crossing unchanged by construction, saturating unchanged (0.335, seeds 0-9);
+* twice as far apart where the quadratic judges the set and as now where kriging does (seeds 0-9, ridge and periodic
+  also 100-109): crossing 0.99 -> 0.89 x, corner 0.64 -> 0.58, step 0.47 -> 0.44, saturating 0.52 -> 0.53, ridge
+  0.80 -> 0.72 x (20 seeds), but periodic 0.31 -> 0.35 x (20 seeds) with one more study worse than its first wave
+  beyond noise (periodic seed 4: 1.705 against 1.429) and its coverage 0.78 -> 0.72: the best trade tried, still
+  short of 0.8 x on crossing's default seeds, so not kept this round;
 * a fourth kriging start at a correlation length of 0.07 (the ridge's width): identical sets on the ridge (the
   likelihood search already finds the same optimum).
 """
