@@ -85,3 +85,26 @@ def run_demid(*args, cwd=None, env=None) -> subprocess.CompletedProcess:
             os.environ.clear()
             os.environ.update(saved_env)
     return subprocess.CompletedProcess(["demid", *map(str, args)], int(code or 0), out.getvalue(), err.getvalue())
+
+
+def one_response_study(responses, lower, upper, target: float, count: int, margin: float, z: float = 2.0):
+    """A face-centred CCD (3 centre runs) over factors a and b of ``responses`` (a function of the points giving
+    {"y": values}), the material spec judging y against ``target`` at 5 % with ``next_runs`` of ``count`` and
+    ``margin``, its quadratic surrogates and the plausible frame: what plan_next_wave takes."""
+    from demid.spec import MaterialSpec
+    from demid.surrogate import fit_material
+    from demid.uncertainty import plausible_identifiability_frame
+
+    table = make_ccd_table(responses, lower, upper, alpha=1.0, center_runs=3).rename(columns={"x1": "a", "x2": "b"})
+    table["status"] = "ok"
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "ccd", "alpha": 1.0, "center_runs": 3},
+        "factors": {"a": {"lower": float(lower[0]), "upper": float(upper[0])},
+                    "b": {"lower": float(lower[1]), "upper": float(upper[1])}},
+        "responses": {"y": {"target": target}},
+        "scenarios": {"y": {"observables": ["y"], "tolerance": 0.05}},
+        "next_runs": {"count": count, "scenario": "", "margin": margin}})
+    surrogates = {f.response: f.surrogate() for f in fit_material(table, spec)}
+    plausible = plausible_identifiability_frame(surrogates, spec.domain, {"y": (("y",), 0.05)}, {"y": target}, 101,
+                                                z=z)
+    return table, spec, surrogates, plausible

@@ -11,12 +11,9 @@ import pytest
 
 from demid.next_wave import PURPOSE_SUPPORT, plan_next_wave, plausible_points, propose_runs
 from demid.scenario import JudgedScenario
-from demid.spec import MaterialSpec
-from demid.surrogate import fit_material
-from demid.uncertainty import plausible_identifiability_frame
 from demid.wave_value import expected_contraction
 
-from .helpers import make_ccd_table
+from .helpers import one_response_study
 
 
 @pytest.mark.parametrize("count", [1, 2])
@@ -30,18 +27,7 @@ def test_a_wave_without_support_runs_is_valued_on_runs_aimed_at_the_set(count):
     def responses(x):
         return {"y": 4.0 + (((x - centre) / (upper - lower)) ** 2).sum(axis=1) * 8.0 + noise[:len(x)]}
 
-    table = make_ccd_table(responses, lower, upper, alpha=1.0, center_runs=3).rename(columns={"x1": "a", "x2": "b"})
-    table["status"] = "ok"
-    spec = MaterialSpec.from_material("m", {
-        "data": "x.csv", "design": {"type": "ccd", "alpha": 1.0, "center_runs": 3},
-        "factors": {"a": {"lower": float(lower[0]), "upper": float(upper[0])},
-                    "b": {"lower": float(lower[1]), "upper": float(upper[1])}},
-        "responses": {"y": {"target": 5.0}},
-        "scenarios": {"y": {"observables": ["y"], "tolerance": 0.05}},
-        "next_runs": {"count": count, "scenario": "", "margin": 0.3}})
-    surrogates = {f.response: f.surrogate() for f in fit_material(table, spec)}
-    plausible = plausible_identifiability_frame(surrogates, spec.domain, {"y": (("y",), 0.05)}, {"y": 5.0}, 101,
-                                                z=z)
+    table, spec, surrogates, plausible = one_response_study(responses, lower, upper, 5.0, count, 0.3, z)
     wave = plan_next_wave("m", table, surrogates, spec, plausible, z=z)
     assert len(wave.runs) == count and PURPOSE_SUPPORT not in set(wave.runs["purpose"])
 

@@ -8,11 +8,8 @@ import numpy as np
 import pytest
 
 from demid.next_wave import plan_next_wave
-from demid.spec import MaterialSpec
-from demid.surrogate import fit_material
-from demid.uncertainty import plausible_identifiability_frame
 
-from .helpers import make_ccd_table
+from .helpers import one_response_study
 
 
 def _wave(shift: float, count: int):
@@ -22,18 +19,7 @@ def _wave(shift: float, count: int):
     def responses(x):
         return {"y": 4.0 + ((x - centre) ** 2).sum(axis=1)}
 
-    table = make_ccd_table(responses, lower, upper, alpha=1.0, center_runs=3).rename(columns={"x1": "a", "x2": "b"})
-    table["status"] = "ok"
-    spec = MaterialSpec.from_material("m", {
-        "data": "x.csv", "design": {"type": "ccd", "alpha": 1.0, "center_runs": 3},
-        "factors": {"a": {"lower": float(lower[0]), "upper": float(upper[0])},
-                    "b": {"lower": float(lower[1]), "upper": float(upper[1])}},
-        "responses": {"y": {"target": 4.5}},
-        "scenarios": {"y": {"observables": ["y"], "tolerance": 0.05}},
-        "next_runs": {"count": count, "scenario": "", "margin": 0.5}})
-    surrogates = {f.response: f.surrogate() for f in fit_material(table, spec)}
-    plausible = plausible_identifiability_frame(surrogates, spec.domain, {"y": (("y",), 0.05)}, {"y": 4.5}, 101,
-                                                z=2.0)
+    table, spec, surrogates, plausible = one_response_study(responses, lower, upper, 4.5, count, 0.5)
     return plan_next_wave("m", table, surrogates, spec, plausible, z=2.0)
 
 
