@@ -43,17 +43,14 @@ from scipy.stats import qmc
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import loop_vs_lhs as L  # noqa: E402
 
-
-def quadratic_terms(u: np.ndarray) -> np.ndarray:
-    """The full quadratic in two unit-cube factors: 1, u0, u1, u0 u1, u0², u1²."""
-    return np.column_stack([np.ones(len(u)), u[:, 0], u[:, 1], u[:, 0] * u[:, 1], u[:, 0] ** 2, u[:, 1] ** 2])
+from demid.kriging import quadratic_trend  # noqa: E402  the full quadratic in unit-cube factors
 
 
 def expected_error(study: L.Study, points: np.ndarray, draws: int, seed: int) -> float:
     """The median set error over ``draws`` noise draws of ``points``, each fitted by least squares."""
     rng = np.random.default_rng(seed)
-    on_grid = quadratic_terms(L._u(study.grid))
-    solve = np.linalg.pinv(quadratic_terms(L._u(points)))
+    on_grid = quadratic_trend(L._u(study.grid))
+    solve = np.linalg.pinv(quadratic_trend(L._u(points)))
     clean = study.sim(points)
     errors = []
     for _ in range(draws):
