@@ -47,8 +47,16 @@ def first_wave(spec: MaterialSpec, seed: int) -> pd.DataFrame:
     frame = sheet.to_frame().drop(columns="std_order")
     for f in spec.factors:
         if f.log:
-            frame[f.name] = [float(f"{10 ** v:.12g}") for v in frame[f.name]]
+            frame[f.name] = [_from_log10(v, f.lower, f.upper) for v in frame[f.name]]
     return frame
+
+
+def _from_log10(level: float, lower: float, upper: float) -> float:
+    """A log-scale factor's level from its log10 on the sheet, to 12 significant digits.  The sheet holds a bound's
+    log10 to 12 digits, so 10**level misses the bound in the last digits (50 came back as 50.0000000005, outside
+    a bound of 50): a level that close to a declared bound is that bound, so a bound run is simulated on it."""
+    actual = float(f"{10 ** level:.12g}")
+    return next((bound for bound in (lower, upper) if math.isclose(actual, bound, rel_tol=1e-9)), actual)
 
 
 def wave_material(material: dict, data: str, domain: pd.DataFrame | None = None) -> dict:

@@ -186,14 +186,18 @@ def test_the_first_wave_is_the_three_level_factorial_over_the_bounds_with_log_fa
     runs = 3 ** k - 1 + centre
     assert list(frame.columns) == ["run", *factors] and frame["run"].tolist() == list(range(1, runs + 1))
     # each factor at its bounds and middle (a log factor's geometric mean), every combination once, the centre as
-    # often as the centre runs (compared to 8 significant digits: the sheet rounds a log factor's log10 value, so a
-    # bound of 50 comes back as 50.0000000005)
+    # often as the centre runs (the middles compared to 8 significant digits: the sheet rounds a log factor's log10)
     levels = [(lo, math.sqrt(lo * hi) if log_mask >> i & 1 else (lo + hi) / 2, hi) for i, (lo, hi) in enumerate(bounds)]
     grid = np.array(np.meshgrid(*levels, indexing="ij")).reshape(k, -1).T
     expected = Counter(tuple(float(f"{v:.8g}") for v in row) for row in grid)
     expected[tuple(float(f"{lv[1]:.8g}") for lv in levels)] += centre - 1
     got = Counter(tuple(float(f"{v:.8g}") for v in row) for row in frame[list(factors)].to_numpy())
     assert got == expected
+    # a bound run is on the declared bound exactly, log factors too (not 50.0000000005 for 50), never outside it
+    for name, (lo, hi) in zip(factors, bounds):
+        values = frame[name]
+        assert values.min() == lo and values.max() == hi
+        assert int((values == lo).sum()) == int((values == hi).sum()) == 3 ** (k - 1)
     assert frame.equals(first_wave(spec, seed=5))
 
 
