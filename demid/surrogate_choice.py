@@ -145,7 +145,7 @@ def choice_text(response_label: str, row) -> str:
     """One response's choice in words, e.g. "θ by kriging (Q² 0.81 against the quadratic's 0.42)"."""
     if getattr(row, "surrogate", QUADRATIC) != KIND:
         if "q2_kriging" in getattr(row, "_fields", ()) and np.isfinite(row.q2_kriging):
-            return (f"{response_label} by the quadratic (Q² {q2_text(float(row.q2))}; kriging's {q2_text(row.q2_kriging)} "
+            return (f"{response_label} by the quadratic (Q² {q2_text(float(row.q2))}: kriging's {q2_text(row.q2_kriging)} "
                     f"does not cut the leave-one-out error to "
                     f"{required_ratio(float(row.q2), float(getattr(row, 'lof_p', float('nan')))):g} of the quadratic's)")
         return f"{response_label} by the quadratic (Q² {q2_text(float(row.q2))})"

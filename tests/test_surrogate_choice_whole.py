@@ -177,7 +177,7 @@ def test_used_q2_record_and_sentence_quote_the_used_surrogates_numbers(q2, q2_k,
         assert text == f"θ by kriging (Q² {q2_text(q2_k)} against the quadratic's {q2_text(q2)})"
     elif np.isfinite(q2_k):
         misfits = lof_p <= 0.05 if np.isfinite(lof_p) else q2 < 0.9
-        assert text.startswith(f"θ by the quadratic (Q² {q2_text(q2)}; kriging's {q2_text(q2_k)} does not cut")
+        assert text.startswith(f"θ by the quadratic (Q² {q2_text(q2)}: kriging's {q2_text(q2_k)} does not cut")
         assert _numbers(text)[-1] == (0.8 if misfits else 0.5)
     else:
         assert text == f"θ by the quadratic (Q² {q2_text(q2)})"
