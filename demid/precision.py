@@ -284,3 +284,18 @@ def coordinate_text(value: float, lower: float, upper: float) -> str:
         return "–"
     span = abs(upper - lower) or abs(value) or 1.0
     return at_place(value, float(10.0 ** np.floor(np.log10(COORDINATE_RESOLUTION * span))))
+
+
+#: Significant digits of a share of Omega in a "before → after" pair, and the most it takes to tell them apart.
+SHARE_DIGITS, SHARE_DIGITS_MAX = 3, 6
+
+
+def shares_apart(before: float, after: float) -> tuple[str, str]:
+    """Two shares to :data:`SHARE_DIGITS` significant digits, or to as many more (up to :data:`SHARE_DIGITS_MAX`)
+    as make them read apart where they differ: "1.606 % → 1.613 %", not "1.61 % → 1.61 %" beside a +0.4 %
+    change (the loop's stop line and the advice print a wave's shares this way)."""
+    for digits in range(SHARE_DIGITS, SHARE_DIGITS_MAX + 1):
+        texts = f"{before:.{digits}g}", f"{after:.{digits}g}"
+        if texts[0] != texts[1] or before == after:
+            break
+    return texts

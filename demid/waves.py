@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from .precision import counted, q2_text
+from .precision import counted, q2_text, shares_apart
 from .simulation import reserved_file
 from .spec import MaterialSpec
 from .surrogate_choice import MISFIT_P
@@ -164,9 +164,9 @@ def measured_change(evidence: WaveEvidence) -> float | None:
 
 
 def _change_text(evidence: WaveEvidence, change: float) -> str:
-    return (f"the plausible share of the search range went {evidence.previous_pct:.3g} % → "
-            f"{evidence.plausible_pct:.3g} % from wave {evidence.wave - 1} to wave {evidence.wave} "
-            f"({100 * change:+.1f} %)")
+    before, after = shares_apart(evidence.previous_pct, evidence.plausible_pct)
+    return (f"the plausible share of the search range went {before} % → {after} % from wave {evidence.wave - 1} "
+            f"to wave {evidence.wave} ({100 * change:+.1f} %)")
 
 
 def loo_error(row) -> float:
@@ -293,8 +293,9 @@ def stop_decision(value: dict | None, evidence: WaveEvidence) -> dict:
     if predicted_small and band_fixed:  # no change measured yet: the prediction
         return {"stop": True, "action": "stop", "reason": (
             f"the {value['count']} proposed runs are expected to shrink the plausible set of '{value['scenario']}' "
-            f"by only {100 * value['expected_contraction']:.1f} % ({value['plausible_fraction_pct']:.3g} % → "
-            f"{value['expected_fraction_pct']:.3g} % of the wave's range) and the surrogates' leave-one-out error "
+            f"by only {100 * value['expected_contraction']:.1f} % "
+            f"({' % → '.join(shares_apart(value['plausible_fraction_pct'], value['expected_fraction_pct']))} % "
+            f"of the wave's range) and the surrogates' leave-one-out error "
             f"is at most {_largest(evidence.surrogates):.2f} of the tolerance band's half-width: the band, not the "
             "surrogate, fixes the set's boundary, so more runs are not expected to change the set by more than its "
             "own uncertainty")}
