@@ -49,7 +49,7 @@ def waves(report: ReportContext, m: str) -> list:
     decision = summary.get("decision")
     if decision:
         stop_line = next((t for t in told if decision["reason"] in t), decision["reason"])
-        lines += ["", f"**Why the loop stopped after wave {last['wave']}:** {stop_line}"]
+        lines += ["", f"**{decision_heading(decision, last['wave'])}:** {stop_line}"]
     parts = [report.md("\n".join(lines))]
     parts.append(report.image(report.root / "figures" / f"waves_{m}.png",
                               f"The plausible share of Ω (solid: the table's; dashed: strict) against the runs "
@@ -83,3 +83,10 @@ def next_wave(report: ReportContext, m: str) -> list:
                       "earlier runs inside it (`design: {type: custom}`).\n\n"
                       + markdown_table(sub.drop(columns="material")))]
 
+
+def decision_heading(decision: dict, wave: int) -> str:
+    """The words before the last wave's decision: why the loop stopped where its advice is to stop, else (it ended
+    with its budget spent, or at the model's limit, advising more runs or a recalibration) that the line is advice."""
+    if decision.get("action") == "stop":
+        return f"Why the loop stopped after wave {wave}"
+    return f"The loop ended after wave {wave}; what it advises"

@@ -341,6 +341,20 @@ def test_a_simulated_study_tells_its_waves_and_why_the_loop_stopped(tmp_path):
     text = visible_text("".join(part.data for part in sections.waves("m")))
     assert "Waves" in text and "demid simulated 25 runs in 3 waves (2 failed)" in text
     assert "Why the loop stopped after wave 3: " + stop_row["text"].iloc[0] in text
+    # a loop that ended with a reason to go on (its budget spent) does not call its advice a reason to stop
+    going_on = stop_decision(None, WaveEvidence(wave=3, max_waves=3, plausible_pct=1.44, previous_pct=1.80,
+                                                surrogates={"y": {"q2": 0.97, "lof_p": 0.4, "loo_band": 0.37}},
+                                                model_limit=False, proposed=7, criticism_runs=0))
+    assert going_on["action"] == "next_runs"
+    (tmp_path / "waves" / "summary_m.json").write_text(json.dumps(wave_summary(spec, waves, going_on)), encoding="utf-8")
+    advice = StudyAdvice(material_advice(spec, verdicts, wave_decision=going_on)).to_frame()
+    advice.to_csv(tmp_path / "tables" / "advice.csv", index=False)
+    next_row = advice[advice["kind"] == going_on["action"]]
+    assert len(next_row) == 1 and "the budget of 3 waves is spent" in next_row["text"].iloc[0]
+    told_again = visible_text("".join(part.data for part in
+                                      ReportSections(str(tmp_path), {"materials": {"m": material}}).waves("m")))
+    assert "The loop ended after wave 3; what it advises: " + next_row["text"].iloc[0] in told_again
+    assert "Why the loop stopped" not in told_again
     cells = re.sub(r"\s+", " ", text)
     assert "3 25 2 20 quadratic" in cells and "0.97 1.44 0.3–0.55 0.1–0.9" in cells
     assert "waves_m" in text  # the waves figure (absent here: named as missing)
