@@ -814,7 +814,7 @@ _EXACT_SET_TESTS = ["tests/sampling/test_exact_sets.py", "tests/sampling/test_qu
                     "tests/sampling/test_quadrature_whole.py", "tests/sampling/test_exact_polynomial_whole.py",
                     "tests/sampling/test_exact_set_whole.py", "tests/sampling/test_ring_distance_whole.py",
                     "tests/sampling/test_refusals_and_empty_tables_whole.py", "tests/sampling/test_parallelogram_whole.py",
-                    "tests/sampling/test_companion_roots_whole.py"]
+                    "tests/sampling/test_companion_roots_whole.py", "tests/sampling/test_exact_boundaries_whole.py"]
 # level 1's naming of causes (aliasing, extensions, naming, slips): the criticism's planted effects and its
 # confirming and deciding runs; the level-2, figure and 3-factor tests exercise other modules, the slowest
 # confirming-runs test repeats an outlier-or-slip case of the faster ones at four times their cost, and the two
@@ -847,7 +847,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_uncertainty.py::test_plane_band_fraction_matches_sampling",
                   "tests/uncertainty/test_uncertainty.py::test_fraction_with_error_reports_grid_error_and_3d_shell",
                   "tests/uncertainty/test_uncertainty.py::test_polish_spans_thin_set_without_admissible_nodes",
-                  "tests/sampling/test_polish_whole.py", "tests/uncertainty/test_sweep_plausible_whole.py"],
+                  "tests/sampling/test_polish_whole.py", "tests/uncertainty/test_sweep_plausible_whole.py",
+                  "tests/sampling/test_grid_boundaries_whole.py", "tests/sampling/test_evaluate_set_whole.py"],
     },
     "demid/sampling/domain.py": {
         "functions": None,
@@ -894,7 +895,7 @@ TABLE: dict[str, dict] = {
         "functions": ["start_points", "_polish", "polish_spans"],
         "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/test_core_contracts.py",
                   "tests/sampling/test_polish_whole.py", "tests/uncertainty/test_sweep_plausible_whole.py",
-                  "tests/sampling/test_polish_two_discs_whole.py"],
+                  "tests/sampling/test_polish_two_discs_whole.py", "tests/sampling/test_sobol_whole.py"],
     },
     "demid/surrogate.py": {
         "functions": None,
@@ -909,7 +910,8 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/test_precision.py", "tests/test_precision_text_properties.py", "tests/inputs/test_factor_round_off.py",
                   "tests/test_surrogate.py", "tests/criticism/test_noise_free.py", "tests/test_reported_boundaries.py",
                   "tests/test_precision_whole.py", "tests/test_surrogate_properties.py",
-                  "tests/inputs/test_read_table_whole.py", "tests/test_printed_quantum_whole.py"],
+                  "tests/inputs/test_read_table_whole.py", "tests/test_printed_quantum_whole.py",
+                  "tests/test_precision_boundaries_whole.py"],
     },
     "demid/criticism/models.py": {
         "functions": None,
@@ -2258,6 +2260,28 @@ EQUIVALENT: dict[str, str] = {
     "demid/sampling/polish.py::start_points::2 => 1#0":
         "polish_spans runs on grid sets only (at most MAX_GRID_DIM = 3 factors; the Sobol path has its own), where "
         "max(16, 2 d) and max(16, 1 * d) are both 16",
+    "demid/sampling/polish.py::start_points::2 => 3#0":
+        "polish_spans runs on grid sets only (at most MAX_GRID_DIM = 3 factors; the Sobol path has its own), where "
+        "max(16, 2 d) and max(16, 3 d) are both 16",
+    "demid/sampling/domain.py::Domain.at_bound::int(b) => b#0":
+        "b is a numpy bool of an element-wise >=: 2 * b is numpy's integer 0 or 2, and int(a) + 2 * b indexes the "
+        "tuple AT_BOUND as int(b) does",
+    "demid/sampling/sobol.py::sobol_admissible_set::float(tolerance) => tolerance#0":
+        "its one caller, _evaluate_set, is called with a float tolerance (the schema's number or a sweep's float), "
+        "as listed for _evaluate_set's own float(tolerance)",
+    "demid/sampling/roots.py::Lines.cut::1 => 2#6":
+        "np.ones((n, 2)) adds a second edge at 1 to every line: after the sort it closes a piece [1, 1] of zero "
+        "length, never admissible (edges[1:] > edges[:-1] fails), like the edges NaN roots already put at 1; only "
+        "Lines' own length, first, last and nearest read the edges, and none changes",
+    "demid/sampling/exact.py::Polynomial.__post_init__::0 => -1#1":
+        "coef is raveled to one dimension the line before: coef.shape[0] and coef.shape[-1] are the same",
+    "demid/sampling/exact.py::ExactSet._fraction::np.isnan(lo) or hi <= lo => np.isnan(lo) and hi <= lo#0":
+        "a shortcut: Solid.integral over slices from lo to hi with lo NaN (an empty 3-factor set) or hi == lo "
+        "integrates pieces of no length and returns (0, 0), the guard's own answer (checked on an empty set of "
+        "tests/sampling/test_exact_boundaries_whole.py, where the mutant survives)",
+    "demid/pareto.py::polish_front::own < max_error => own <= max_error#0":
+        "a sampled error equal to max_error adds the cap max_error, which the caps already hold (linspace(0, "
+        "max_error)[-1] is max_error exactly) and np.unique keeps once",
     "demid/sampling/grid.py::_refine_span_ends::abs(step[i]) => step[i]#0":
         "step is the grid spacing (hi - lo) / (n - 1) of a search box whose upper bounds exceed its lower ones (the "
         "config refuses others): positive, its own abs()",
