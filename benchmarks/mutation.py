@@ -1188,7 +1188,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/combinations/test_canonical.py", "tests/combinations/test_canonical_published.py",
                   "tests/combinations/test_canonical_properties.py", "tests/combinations/test_canonical_planar.py",
-                  "tests/combinations/test_canonical_whole.py", "tests/combinations/test_fit_canonical_whole.py"],
+                  "tests/combinations/test_canonical_whole.py", "tests/combinations/test_fit_canonical_whole.py",
+                  "tests/combinations/test_canonical_boundaries_whole.py"],
     },
     "demid/wave_value.py": {
         "functions": None,
@@ -2279,6 +2280,10 @@ EQUIVALENT: dict[str, str] = {
         "a shortcut: Solid.integral over slices from lo to hi with lo NaN (an empty 3-factor set) or hi == lo "
         "integrates pieces of no length and returns (0, 0), the guard's own answer (checked on an empty set of "
         "tests/sampling/test_exact_boundaries_whole.py, where the mutant survives)",
+    "demid/canonical.py::canonical_analysis::values < 0 => values <= 0#0":
+        "no caller passes a threshold, and with the default (a tenth of the largest |eigenvalue|) an eigenvalue of 0 "
+        "is below it: a surface with one is a ridge, and the kind of a surface without small eigenvalues is read "
+        "off eigenvalues none of which is 0",
     "demid/pareto.py::polish_front::own < max_error => own <= max_error#0":
         "a sampled error equal to max_error adds the cap max_error, which the caps already hold (linspace(0, "
         "max_error)[-1] is max_error exactly) and np.unique keeps once",
