@@ -192,3 +192,16 @@ def test_the_fraction_with_error_uses_the_odd_grid_and_bounds_the_reference_s_er
     assert est.evaluations >= odd ** 2
     without = fraction_with_error(fields, domain, ["y"], targets, 0.2, n)
     assert math.isnan(without.grid_fraction) and math.isnan(without.grid_error)
+
+
+@pytest.mark.parametrize("dim, n", [(2, 9), (2, 11), (3, 7)])
+def test_the_fraction_with_error_repeats_the_grid_estimator_s_fraction_on_the_same_grid(dim, n):
+    # two crossing bands: cells where both edges pass are sub-sampled; both estimators count the same cells with
+    # the same sub-grid (16 points per axis up to two factors, 4 in three), so the fraction is one number
+    domain = Domain(tuple(f"f{i}" for i in range(dim)), (-1.0,) * dim, (1.0,) * dim)
+    fields = {"y1": Linear(2.0, [1.0, 0.7] + [0.3] * (dim - 2)), "y2": Linear(2.0, [0.6, -1.0] + [0.2] * (dim - 2))}
+    targets = {"y1": 2.1, "y2": 1.9}
+    grid = admissible_set(fields, domain, ["y1", "y2"], targets, 0.15, n)
+    est = fraction_with_error(fields, domain, ["y1", "y2"], targets, 0.15, n)
+    assert est.sampled_cells > 0 and 0 < est.fraction < 1
+    assert est.fraction == grid.fraction
