@@ -889,7 +889,8 @@ TABLE: dict[str, dict] = {
         "functions": ["sobol_admissible_set", "_extreme_points", "sobol_fraction"],
         "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/sampling/test_admissibility.py",
                   "tests/sampling/test_sobol_properties.py", "tests/sampling/test_sobol_whole.py",
-                  "tests/test_core_contracts.py", "tests/uncertainty/test_posterior_quantiles.py"],
+                  "tests/test_core_contracts.py", "tests/uncertainty/test_posterior_quantiles.py",
+                  "tests/sampling/test_sobol_boundaries_whole.py"],
     },
     "demid/sampling/polish.py": {
         "functions": ["start_points", "_polish", "polish_spans"],

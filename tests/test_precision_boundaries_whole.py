@@ -15,7 +15,7 @@ import pytest
 from hypothesis import Phase, given, settings
 from hypothesis import strategies as st
 
-from demid.precision import (ZERO, at_place, counted, factor_print_quantum, p_text, percent_text, place_of,
+from demid.precision import (ZERO, at_place, coordinate_text, counted, factor_print_quantum, p_text, percent_text, place_of,
                              printed_quantum, q2_text, rough_text, round_off_floor, round_off_only, uncertainty_text,
                              value_text)
 
@@ -105,3 +105,18 @@ def test_a_factor_column_of_four_significant_digits_is_rounded_one_of_three_is_n
     np.testing.assert_allclose(factor_print_quantum([0.0757, 0.5]), [1e-4, 0.0], rtol=1e-12)
     # 0.757 beside 0.5: three digits at most, a value a person set
     assert factor_print_quantum([0.757, 0.5]).tolist() == [0.0, 0.0]
+
+
+@pytest.mark.parametrize("value, lower, upper, text", [
+    (0.075736, 0.0757, 0.924, "0.0757"),   # a range under 1: a thousandth of it is 1e-4 to the power of ten below
+    (123.456, 0.0, 100.0, "123.5"),        # a range of exactly 100: its thousandth is 0.1 itself
+    (123.456, 100.0, 0.0, "123.5"),        # bounds either way round
+    (1234.56, 0.0, 1000.0, "1235"),
+    (-12.3456, -20.0, -10.0, "−12.35"),
+    (0.00012345, 0.0001, 0.0002, "0.0001234"),
+    (5.0, 5.0, 5.0, "5.000"),              # no range: a thousandth of the value
+    (0.0, 0.0, 0.0, "0"),                  # no range and no value: a thousandth of 1
+    (float("nan"), 0.0, 1.0, "–"),
+])
+def test_a_coordinate_to_a_thousandth_of_its_range(value, lower, upper, text):
+    assert coordinate_text(value, lower, upper) == text
