@@ -982,7 +982,8 @@ TABLE: dict[str, dict] = {
                   "tests/sampling/test_closest_approach_whole.py", "tests/sampling/test_exact_set_whole.py",
                   "tests/sampling/test_grid_set_whole.py", "tests/sampling/test_stored_sets_whole.py",
                   "tests/test_scenario.py", "tests/uncertainty/test_met_together_properties.py",
-                  "tests/sampling/test_closest_approach_basins.py", "tests/sampling/test_basin_nodes_whole.py"],
+                  "tests/sampling/test_closest_approach_basins.py", "tests/sampling/test_basin_nodes_whole.py",
+                  "tests/sampling/test_evaluate_boundaries_whole.py"],
     },
     "demid/criticism/level1.py": {
         "functions": None,
