@@ -555,7 +555,7 @@ column of one level, the normality test from three runs, a p-value, percentage, 
 text threshold, a residual spread exactly at the round-off floor, a column tied between decimals and significant
 digits.  One bug found that way, fixed: value_text wrote a value of exactly half its place as a bare "0" (it rounds
 to zero there, half to even) instead of "≈ 0"; now it is "≈ 0" (demid/precision.py; place_of's docstring example
-0.093 -> 0.001 corrected too).  Found, not changed: percent_text writes a relative difference from 9.995 to 10
+0.093 -> 0.001 corrected too).  Found, not changed: percent_text writes a relative difference above 9.995 up to 10
 (exactly ten times included) as "1e+03 %", three significant digits of 1000 in Python's 'g' form.
 
 The module -> tests table below is by file path: when a module moves, update its
