@@ -173,7 +173,7 @@ UNPREDICTIVE_DIGITS = 1
 
 
 def place_of(uncertainty: float, digits: int = UNCERTAINTY_DIGITS) -> float:
-    """The power of ten of ``uncertainty``'s ``digits``-th significant digit once rounded to them: 0.01 for
+    """The power of ten of ``uncertainty``'s ``digits``-th significant digit once rounded to them: 0.001 for
     0.093, 1 for 12, 0.01 for 0.0998 (which rounds to 0.10)."""
     rounded = float(f"{abs(uncertainty):.{digits}g}")
     return float(10.0 ** (np.floor(np.log10(rounded)) - digits + 1))
@@ -204,14 +204,15 @@ def uncertainty_text(uncertainty: float) -> str:
 
 def value_text(value: float, uncertainty: float | None = None, max_digits: int = MAX_DIGITS) -> str:
     """``value`` to the digits ``uncertainty`` supports (at most ``max_digits`` significant); :data:`ZERO`
-    where it rounds to zero at that place (the data cannot tell it from zero)."""
+    where it rounds to zero at that place (the data cannot tell it from zero), exactly half the place included:
+    it rounds to even, to zero."""
     if value is None or not np.isfinite(value):
         return "–"
     own = place_of(value, max_digits) if value != 0 else 0.0
     if uncertainty is None or not np.isfinite(uncertainty) or uncertainty <= 0:
         return _minus(f"{value:.{max_digits}g}") if value != 0 else "0"
     place = max(place_of(uncertainty), own)
-    if abs(value) < place / 2:
+    if abs(value) <= place / 2:
         return ZERO
     if abs(value) >= 10 ** (max_digits + 2) or abs(value) < 1e-4:
         digits = max(1, int(np.floor(np.log10(abs(value))) - np.log10(place) + 1))
