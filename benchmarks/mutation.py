@@ -1314,7 +1314,8 @@ TABLE: dict[str, dict] = {
                           "test_a_factor_cell_typed_as_another_runs_level_is_located",
                           "test_a_level_value_that_differs_from_the_other_runs_at_its_level_is_warned_about")],
                   "tests/test_reported_boundaries.py::test_level_coding_recovers_the_centre_and_unit_of_a_design_with_or_without_its_centre_run",
-                  "tests/inputs/test_design_whole.py", "tests/inputs/test_design_check_coding_whole.py"],
+                  "tests/inputs/test_design_whole.py", "tests/inputs/test_design_check_coding_whole.py",
+                  "tests/inputs/test_level_coding_axial_whole.py"],
     },
     "demid/criticism/discrimination.py": {
         "functions": None,
@@ -2036,6 +2037,22 @@ EQUIVALENT: dict[str, str] = {
         "which axial_distances reads as a float array)",
     "demid/design_check.py::_level_tolerance::float(np.max(quantum, initial=0.0)) => np.max(quantum, initial=0.0)#0":
         _NUMPY_FLOAT + " (it only fills a float array through np.full)",
+    # --- conversions of the input modules, read with their callers (eighth round, none drawn)
+    "demid/design_inference.py::_levels::float(np.median(g)) => np.median(g)#0":
+        _NUMPY_FLOAT + " (it only fills the float array np.array builds)",
+    "demid/design_inference.py::_symmetric::float(np.max(printed_quantum(column), initial=0.0)) => "
+    "np.max(printed_quantum(column), initial=0.0)#0":
+        _NUMPY_FLOAT + " (max() of it and the slack is only compared with <=)",
+    "demid/design.py::factor_levels::float(a) => a#0":
+        _NUMPY_FLOAT + " (a is an entry of axial_distances' float array; nominal_levels only compares it and "
+        "puts it in a float array)",
+    "demid/design.py::rotatable_alpha::float((2 ** n_factors) ** 0.25) => (2 ** n_factors) ** 0.25#0":
+        "an int to the power 0.25 is a Python float already",
+    "demid/blocks.py::ccd_blocks::int(factorial.sum()) => factorial.sum()#0":
+        "np.zeros of a numpy integer size is the same array",
+    "demid/blocks.py::check_blocks::float(np.max(np.abs(corr))) => np.max(np.abs(corr))#0":
+        _NUMPY_FLOAT + " (it is compared, printed :.3f and stored as max_correlation, which to_json rounds and "
+        "io's _clean turns into a float; nothing else reads it)",
     # --- float() around one operand of a product or quotient whose other operand is a float
     "demid/tolerance.py::observable_band::float(response.tolerance_abs) => response.tolerance_abs#0":
         "every caller divides the band by a float (band_scale, relative_tolerances, own_band_basis, "
