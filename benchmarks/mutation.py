@@ -2054,6 +2054,11 @@ EQUIVALENT: dict[str, str] = {
     "demid/blocks.py::check_blocks::float(np.max(np.abs(corr))) => np.max(np.abs(corr))#0":
         _NUMPY_FLOAT + " (it is compared, printed :.3f and stored as max_correlation, which to_json rounds and "
         "io's _clean turns into a float; nothing else reads it)",
+    "demid/fit_statistics.py::pure_error_ss::float(sum((np.sum((seg - seg.mean()) ** 2) for seg in np.split(y[order], "
+    "bounds) if len(seg) > 1))) => sum((np.sum((seg - seg.mean()) ** 2) for seg in np.split(y[order], bounds) if "
+    "len(seg) > 1))#0":
+        "a numpy float, or the int 0 without replicated runs: every caller subtracts it from a float, compares it "
+        "or stores it in LackOfFitAnova, whose only output is to_frame's float column (0 reads 0.0 there)",
     # --- float() around one operand of a product or quotient whose other operand is a float
     "demid/tolerance.py::observable_band::float(response.tolerance_abs) => response.tolerance_abs#0":
         "every caller divides the band by a float (band_scale, relative_tolerances, own_band_basis, "
