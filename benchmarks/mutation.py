@@ -952,7 +952,7 @@ TABLE: dict[str, dict] = {
         "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_printed_properties.py",
                   "tests/transcription/test_printed_whole.py", "tests/transcription/test_agreement_whole.py",
                   "tests/transcription/test_cell_texts_whole.py", "tests/transcription/test_adjusted_r2_whole.py",
-                  "tests/transcription/test_precision_elsewhere.py",
+                  "tests/transcription/test_precision_elsewhere.py", "tests/transcription/test_check_messages_whole.py",
                   "tests/inputs/test_stranger_tables.py::test_an_impossible_published_statistic_is_refused",
                   "tests/inputs/test_stranger_tables.py::test_possible_published_statistics_pass"],
     },
@@ -1142,7 +1142,8 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/inputs/test_data.py", "tests/test_core_contracts.py", "tests/inputs/test_stranger_tables.py",
                   "tests/inputs/test_unit_slip_targets.py", "tests/test_reported_boundaries.py",
                   "tests/inputs/test_read_table_whole.py", "tests/inputs/test_targets_whole.py",
-                  "tests/inputs/test_check_header_whole.py", "-knot readme"],
+                  "tests/inputs/test_check_header_whole.py", "tests/inputs/test_design_inference.py",
+                  "tests/inputs/test_design_generation.py", "-knot readme"],
     },
     # parse_number, infer_coding and check_design, once in data.py
     "demid/csv_cells.py": {
@@ -1285,7 +1286,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/inputs/test_design_generation.py", "tests/inputs/test_design_check_known_answers.py",
                   "tests/inputs/test_design_inference_properties.py", "tests/test_reported_boundaries.py",
-                  "tests/inputs/test_design_generation_whole.py"],
+                  "tests/inputs/test_design_generation_whole.py", "tests/inputs/test_design_check_coding_whole.py"],
     },
     "demid/design_check.py": {
         "functions": None,
