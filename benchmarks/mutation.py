@@ -2055,6 +2055,31 @@ EQUIVALENT: dict[str, str] = {
     "demid/blocks.py::check_blocks::float(np.max(np.abs(corr))) => np.max(np.abs(corr))#0":
         _NUMPY_FLOAT + " (it is compared, printed :.3f and stored as max_correlation, which to_json rounds and "
         "io's _clean turns into a float; nothing else reads it)",
+    "demid/design_check.py::_level_coding::int(counts[on].sum()) => counts[on].sum()#0":
+        "a numpy integer in a key tuple that is only compared with > : it orders as the int does",
+    "demid/design_check.py::_level_coding::int(on.sum()) => on.sum()#0":
+        "a numpy integer in a key tuple that is only compared with > : it orders as the int does",
+    "demid/design_check.py::_level_coding::int(counts[axial].sum()) => counts[axial].sum()#0":
+        "a numpy integer in a key tuple that is only compared with > : it orders as the int does",
+    "demid/transcription/engine.py::_estimate_coding::int(np.lexsort((np.arange(len(options)), np.round(spread, 12), "
+    "-hits))[0]) => np.lexsort((np.arange(len(options)), np.round(spread, 12), -hits))[0]#0":
+        "a numpy integer used only as an index",
+    "demid/transcription/engine.py::_estimate_coding::float(column.min()) => column.min()#0":
+        _NUMPY_FLOAT + " (lo only enters the mid-range option, which np.array turns into a float array)",
+    "demid/transcription/engine.py::_estimate_coding::float(column.max()) => column.max()#0":
+        _NUMPY_FLOAT + " (hi only enters the mid-range option, which np.array turns into a float array)",
+    "demid/transcription/engine.py::_estimate_coding::float(centre[best, 0]) => centre[best, 0]#0":
+        _NUMPY_FLOAT + " (its one caller, _design_levels, adds it to a float array)",
+    "demid/transcription/engine.py::_estimate_coding::float(unit[best, 0]) => unit[best, 0]#0":
+        _NUMPY_FLOAT + " (_design_levels multiplies a float array by it and returns its abs(), which "
+        "_cell_repairs only multiplies and adds)",
+    "demid/transcription/check.py::_factor_hypotheses::float(coding.center[j]) => coding.center[j]#0":
+        "a coding's centre is a float (or a numpy float) already; _design_levels only adds it to a float array",
+    "demid/transcription/check.py::_factor_hypotheses::float(np.broadcast_to(np.asarray(alpha, dtype=float), "
+    "(len(factors),))[j]) => np.broadcast_to(np.asarray(alpha, dtype=float), (len(factors),))[j]#0":
+        _NUMPY_FLOAT + " (nominal_levels and _estimate_coding only compare it, put it in an array and divide by it)",
+    "demid/transcription/check.py::_cell_repairs::float(model_values[c]) => model_values[c]#0":
+        _NUMPY_FLOAT + " (its one reader writes it into a float array, z_new[row, j])",
     "demid/fit_statistics.py::pure_error_ss::float(sum((np.sum((seg - seg.mean()) ** 2) for seg in np.split(y[order], "
     "bounds) if len(seg) > 1))) => sum((np.sum((seg - seg.mean()) ** 2) for seg in np.split(y[order], bounds) if "
     "len(seg) > 1))#0":
