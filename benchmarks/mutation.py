@@ -2080,6 +2080,10 @@ EQUIVALENT: dict[str, str] = {
         _NUMPY_FLOAT + " (nominal_levels and _estimate_coding only compare it, put it in an array and divide by it)",
     "demid/transcription/check.py::_cell_repairs::float(model_values[c]) => model_values[c]#0":
         _NUMPY_FLOAT + " (its one reader writes it into a float array, z_new[row, j])",
+    "demid/design_check.py::_text_place::float(table.attrs.get(PRINTED_PLACE, {}).get(column, 0.0)) => "
+    "table.attrs.get(PRINTED_PLACE, {}).get(column, 0.0)#0":
+        "the attribute is written only by data.read_table from precision.printed_place, which returns a float, and "
+        "the default is 0.0: float() of a float is the float",
     "demid/fit_statistics.py::pure_error_ss::float(sum((np.sum((seg - seg.mean()) ** 2) for seg in np.split(y[order], "
     "bounds) if len(seg) > 1))) => sum((np.sum((seg - seg.mean()) ** 2) for seg in np.split(y[order], bounds) if "
     "len(seg) > 1))#0":
