@@ -953,6 +953,7 @@ TABLE: dict[str, dict] = {
                   "tests/transcription/test_printed_whole.py", "tests/transcription/test_agreement_whole.py",
                   "tests/transcription/test_cell_texts_whole.py", "tests/transcription/test_adjusted_r2_whole.py",
                   "tests/transcription/test_precision_elsewhere.py", "tests/transcription/test_check_messages_whole.py",
+                  "tests/transcription/test_parse_printed_float_whole.py",
                   "tests/inputs/test_stranger_tables.py::test_an_impossible_published_statistic_is_refused",
                   "tests/inputs/test_stranger_tables.py::test_possible_published_statistics_pass"],
     },
@@ -961,7 +962,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/transcription/test_transcription.py", "tests/transcription/test_likely_typos.py", "tests/transcription/test_typo_stop.py",
                   "tests/transcription/test_typo_properties.py", "tests/transcription/test_typos_at_scale.py",
                   "tests/transcription/test_typos_whole.py", "tests/transcription/test_local_scale_whole.py",
-                  "tests/transcription/test_other_repairs_text_whole.py",
+                  "tests/transcription/test_other_repairs_text_whole.py", "tests/transcription/test_repair_explains_whole.py",
                   "tests/test_reported_numbers.py", "tests/test_core_contracts.py"],
     },
     "demid/sampling/exact.py": {
