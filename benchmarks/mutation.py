@@ -1127,6 +1127,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_repair_levels_whole.py",
                   "tests/transcription/test_engine_whole.py", "tests/transcription/test_engine_rank_whole.py",
+                  "tests/transcription/test_engine_rank_edge_whole.py",
                   "tests/transcription/test_estimate_coding_whole.py"],
     },
     "demid/transcription/check.py": {
