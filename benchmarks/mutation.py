@@ -1566,10 +1566,6 @@ EQUIVALENT: dict[str, str] = {
         "value is a float or a numpy floating, both of which have is_integer()",
     "demid/blocks.py::check_blocks::np.abs(coded) < _ZERO => np.abs(coded) <= _ZERO#0":
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
-    "demid/blocks.py::check_blocks::int(np.sum(labels == lv)) => np.sum(labels == lv)#0":
-        "a numpy integer compares, prints and is written to JSON (io._clean) as the same int",
-    "demid/blocks.py::check_blocks::int(np.sum((labels == lv) & centre)) => np.sum((labels == lv) & centre)#0":
-        "a numpy integer compares, prints and is written to JSON (io._clean) as the same int",
     "demid/blocks.py::ccd_blocks::np.abs(coded) > _ZERO => np.abs(coded) >= _ZERO#0":
         "differs only for a coded value of exactly 1e-6, a millionth of a factor's half range",
     "demid/blocks.py::ccd_blocks::np.prod(signs[:, i:], axis=1) > 0 => np.prod(signs[:, i:], axis=1) >= 0#0":
@@ -2327,6 +2323,11 @@ EQUIVALENT: dict[str, str] = {
 # mutant is not equivalent.  Left out of the score like an equivalent mutant and listed apart; the score
 # counting them as survivors is printed too.
 SETTINGS: dict[str, str] = {
+    "demid/transcription/check.py::_response_hypotheses::max(1, _CELLS_PER_BLOCK // max(len(y), 1)) => "
+    "min(1, _CELLS_PER_BLOCK // max(len(y), 1))#0":
+        "how many repaired response columns are refitted per batch (memory): each column's statistics are "
+        "products of the design's matrices with that column alone, the same to the last bits of the products' "
+        "summation order (one column a batch is only slower)",
     "demid/criticism/searches.py::minimax::4 => 3#0":
         "the number of SLSQP starts (the best grid nodes at least 0.1 apart): three reach the same minimax point",
     "demid/criticism/searches.py::_smallest_bias::np.argsort(score, kind='stable') => np.argsort(score)#0":
