@@ -2219,6 +2219,8 @@ EQUIVALENT: dict[str, str] = {
         "both callers pass a tuple already (sobol_admissible_set and plausible's set summary make one first)",
     "demid/paper.py::_scenario_set_rows::float(low) => low#0":
         "float(high) - low is the same float for an int or a float low (a YAML bound of either type)",
+    "demid/io.py::save_figures::1 => 2#0":
+        "the child's exit status on an error: the parent reads only whether it is 0, and 2 is not 0 either",
     "demid/io.py::save_figures::2 => 1#0":
         "one figure saved in a forked child (its whole share) while the parent runs ``also`` and waits, instead "
         "of in this process: the same save_figure writes the same bytes to the same path, and ``also`` runs "
