@@ -1134,6 +1134,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_typo_stop.py", "tests/transcription/test_likely_typos.py",
                   "tests/transcription/test_check_whole.py", "tests/transcription/test_check_source_default.py",
+                  "tests/transcription/test_cell_repair_ties_whole.py",
                   "tests/transcription/test_check_messages_whole.py",
                   "tests/test_reconstruct.py", "tests/inputs/test_cli.py::test_check_transcription_cli_finds_planted_slip",
                   "tests/inputs/test_cli.py::test_check_transcription_cli_consistent_exit_0"],
@@ -2078,6 +2079,9 @@ EQUIVALENT: dict[str, str] = {
         _NUMPY_FLOAT + " (nominal_levels and _estimate_coding only compare it, put it in an array and divide by it)",
     "demid/transcription/check.py::_cell_repairs::float(model_values[c]) => model_values[c]#0":
         _NUMPY_FLOAT + " (its one reader writes it into a float array, z_new[row, j])",
+    "demid/transcription/check.py::_cell_repairs::key < per_level[level][0] => key <= per_level[level][0]#0":
+        "the key ends with the repair's value, so two slips of one level tie only with the same value, kind and "
+        "print: the same repair (one text gives one value per kind)",
     "demid/design_check.py::_text_place::float(table.attrs.get(PRINTED_PLACE, {}).get(column, 0.0)) => "
     "table.attrs.get(PRINTED_PLACE, {}).get(column, 0.0)#0":
         "the attribute is written only by data.read_table from precision.printed_place, which returns a float, and "
