@@ -424,10 +424,10 @@ lower (10.13, not 10.12, for 10.14 at a level of 10.125; test_cell_repair_ties_w
 key ends with the value, so the mutant is equivalent now); check's repaired-column batch size (a setting), its
 float() of a model value and save_figures' child status 1 -> 2 (equivalent) are listed.  All ten re-run with
 ``--ids`` (seed 33's seven, seed 32's three design_check mutants, whose first run overlapped an edit of the file):
-AFTER_IDS.  Listed as equivalent without having been drawn, each read with its callers: eighteen conversions of
-design_check, design_inference, design, blocks, the transcription engine and check (numpy integers in compared keys
-or used as an index, numpy floats only compared, added, multiplied or written into float arrays, float() of a
-float); check_blocks' two int() of run counts are no longer listed (BlockCheck.to_json is read by plain json too,
+6 killed (the three tests' and the three design_check mutants), 3 equivalent and 1 setting as listed.  Listed as
+equivalent without having been drawn, each read with its callers: eighteen conversions of design_check,
+design_inference, design, blocks, the transcription engine and check (numpy integers in compared keys or used as an
+index, numpy floats only compared, added, multiplied or written into float arrays, float() of a float); check_blocks' two int() of run counts are no longer listed (BlockCheck.to_json is read by plain json too,
 which refuses a numpy integer: seed 33 killed one).  Rows now name more fast files that exercise them (printed: the
 check's messages; design_generation: the design check's coding; data: the inference and generation tests) and the
 new ones.  One bug found while reading the known survivor of _level_coding, not by a mutant: a declared CCD at
