@@ -407,39 +407,39 @@ on two cores):
     32    all 20 rows    53/59  89.8 %   53/54  98.1 %   54/54 100 %
     33    all 20 rows    50/57  87.7 %   50/54  92.6 %   54/54 100 %
 
-Pooled as run, 103/116 = 88.8 %.  Seed 32's survivors were guards no input reaches and a rounding written twice,
-each taken out of the code (the mutants go with it): data _off_by_a_ratio's sign tests of the target (asked only of
-a target a power of ten brings inside the runs' range, which shares its sign; two survivors), admissibility's
+Pooled as run, 103/116 = 88.8 %.  Seed 32's survivors were guards no input reaches and a rounding written twice, each
+taken out of the code (the mutants go with it): data _off_by_a_ratio's sign tests of the target (asked only of a
+target a power of ten brings inside the runs' range, which shares its sign; two survivors), admissibility's
 ``reference_point or None`` (from_material reads an empty point as None already), fit_statistics to_frame's divisor
 of 1 where df is 0 (the NaN replaced its result); estimability's ``np.round(..., 6)`` of a factor's levels is the
 replicate rule's replicate_keys now, tested with values 3e-7 (its level) and 3e-6 (a level of its own) off
 (tests/inputs/test_estimability_levels_whole.py, fails with 5 decimals); pure_error_ss's float() is listed as
 equivalent.  Seed 33's: printed parse_printed's trim='-' (a published float of 1e16 or more read with a trailing
-point: tests/transcription/test_parse_printed_float_whole.py), typos repair_explains without abs (a repair below
-the prediction: test_repair_explains_whole.py, both sides and the fifth itself), the engine's rank tolerance
-max(n, p) -> min(n, p) (test_engine_rank_edge_whole.py: numpy's matrix_rank on designs whose run sits 1e-15 to
-1e-12 off its level), killed; check _cell_repairs' ``key <`` -> ``<=`` showed two repairs equally near a level
-decided by the order the slips are listed: they now go to the one that changes the printed value least, then the
-lower (10.13, not 10.12, for 10.14 at a level of 10.125; test_cell_repair_ties_whole.py fails on the old code; the
-key ends with the value, so the mutant is equivalent now); check's repaired-column batch size (a setting), its
-float() of a model value and save_figures' child status 1 -> 2 (equivalent) are listed.  All ten re-run with
-``--ids`` (seed 33's seven, seed 32's three design_check mutants, whose first run overlapped an edit of the file):
-6 killed (the three tests' and the three design_check mutants), 3 equivalent and 1 setting as listed.  Listed as
-equivalent without having been drawn, each read with its callers: eighteen conversions of design_check,
-design_inference, design, blocks, the transcription engine and check (numpy integers in compared keys or used as an
-index, numpy floats only compared, added, multiplied or written into float arrays, float() of a float); check_blocks' two int() of run counts are no longer listed (BlockCheck.to_json is read by plain json too,
-which refuses a numpy integer: seed 33 killed one).  Rows now name more fast files that exercise them (printed: the
-check's messages; design_generation: the design check's coding; data: the inference and generation tests) and the
-new ones.  One bug found while reading the known survivor of _level_coding, not by a mutant: a declared CCD at
-alpha = 2 without its low axial run (the values left, -1, 0, 1, 2, read as -2..1 too) was coded with its centre one
-unit off, and the check named its first run as no design point instead of the point left out; ties of the coding
-now go to the placement with the fewest runs on axial levels (demid/design_check.py;
-tests/inputs/test_level_coding_axial_whole.py, 2-4 factors, either side, fails on the old code; the demo's codings
-are unchanged).  The six new files hold 20 tests, 4 s one after another on the loaded machine (the slowest
-2.6 s).  Left: _level_coding's narrowest-placement key rounded to 7 decimals, not 6 (the coding depends only on
-which runs sit on which level, and each placement whose pair is its two extreme values puts them at their nominal
-levels exactly, so only distinct placements tied to 6 decimals in runs, symmetry and width could differ; none was
-found, no proof), and check._cell_repairs' ``gaps <= tolerance`` -> ``<``.
+point: tests/transcription/test_parse_printed_float_whole.py), typos repair_explains without abs (a repair below the
+prediction: test_repair_explains_whole.py, both sides and the fifth itself), the engine's rank tolerance max(n, p) ->
+min(n, p) (test_engine_rank_edge_whole.py: numpy's matrix_rank on designs whose run sits 1e-15 to 1e-12 off its
+level), killed; check _cell_repairs' ``key <`` -> ``<=`` showed two repairs equally near a level decided by the order
+the slips are listed: they now go to the one that changes the printed value least, then the lower (10.13, not 10.12,
+for 10.14 at a level of 10.125; test_cell_repair_ties_whole.py fails on the old code; the key ends with the value, so
+the mutant is equivalent now); check's repaired-column batch size (a setting), its float() of a model value and
+save_figures' child status 1 -> 2 (equivalent) are listed.  All ten re-run with ``--ids`` (seed 33's seven, seed 32's
+three design_check mutants, whose first run overlapped an edit of the file): 6 killed (the three tests' and the three
+design_check mutants), 3 equivalent and 1 setting as listed.  Listed as equivalent without having been drawn, each
+read with its callers: eighteen conversions of design_check, design_inference, design, blocks, the transcription
+engine and check (numpy integers in compared keys or used as an index, numpy floats only compared, added, multiplied
+or written into float arrays, float() of a float); check_blocks' two int() of run counts are no longer listed
+(BlockCheck.to_json is read by plain json too, which refuses a numpy integer: seed 33 killed one).  Rows now name
+more fast files that exercise them (printed: the check's messages; design_generation: the design check's coding;
+data: the inference and generation tests) and the new ones.  One bug found while reading the known survivor of
+_level_coding, not by a mutant: a declared CCD at alpha = 2 without its low axial run (the values left, -1, 0, 1, 2,
+read as -2..1 too) was coded with its centre one unit off, and the check named its first run as no design point
+instead of the point left out; ties of the coding now go to the placement with the fewest runs on axial levels
+(demid/design_check.py; tests/inputs/test_level_coding_axial_whole.py, 2-4 factors, either side, fails on the old
+code; the demo's codings are unchanged).  The six new files hold 20 tests, 4 s one after another on the loaded
+machine (the slowest 2.6 s).  Left: _level_coding's narrowest-placement key rounded to 7 decimals, not 6 (the coding
+depends only on which runs sit on which level, and each placement whose pair is its two extreme values puts them at
+their nominal levels exactly, so only distinct placements tied to 6 decimals in runs, symmetry and width could
+differ; none was found, no proof), and check._cell_repairs' ``gaps <= tolerance`` -> ``<``.
 
 Sixth round, the seventeen criticism rows (new in-sample draws, ``--per-module 2``, each run before any test was
 aimed at it: seed 28 on the round's start, seed 29 on seed 28's tests as far as they were written when it
