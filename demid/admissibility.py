@@ -42,8 +42,9 @@ def evaluate_scenarios(surrogates: dict[str, Surrogate], spec: MaterialSpec, n: 
     judged = judged_scenarios(spec, surrogates, 0.0) if judged is None else judged
     frames, sets = [], {}
     for scen in spec.scenarios:
-        # an observable with its own tolerance is judged by it (demid.scenario)
-        result = judged[scen.name].strict_set(n, grid_predictions, grid=True, reference=spec.reference_point or None)
+        # an observable with its own tolerance is judged by it (demid.scenario); a spec's reference point is
+        # None or a filled dict (MaterialSpec.from_material reads an empty one as None)
+        result = judged[scen.name].strict_set(n, grid_predictions, grid=True, reference=spec.reference_point)
         frame = result.to_frame()
         frame.insert(0, "scenario", scen.name)
         frames.append(frame)

@@ -224,10 +224,12 @@ def _power_of_ten_repair(target: float, lo: float, hi: float) -> tuple[float, fl
 
 
 def _off_by_a_ratio(target: float, lo: float, hi: float) -> bool:
-    """The target shares the runs' sign and lies outside their range by at least :data:`UNIT_SLIP_RATIO`."""
-    if lo > 0 and target > 0:
+    """The target lies outside the runs' range by at least :data:`UNIT_SLIP_RATIO`.  Asked only of a target
+    that a power of ten brings inside the range, so of the runs' sign when the range holds no zero; a range
+    from below zero to above it is no unit slip's."""
+    if lo > 0:
         return target * UNIT_SLIP_RATIO <= lo or target >= hi * UNIT_SLIP_RATIO
-    if hi < 0 and target < 0:
+    if hi < 0:
         return _off_by_a_ratio(-target, -hi, -lo)
     return False
 

@@ -23,7 +23,8 @@ def _level_coding(values: np.ndarray, counts: np.ndarray, levels: np.ndarray,
     """Centre and unit that put the most runs on the nominal ``levels`` (coded units).
 
     Every pair of distinct values is tried against every pair of levels; ties go to the most
-    symmetric placement (lowest and highest level found equally far from the centre), then the narrowest.  A single
+    symmetric placement (lowest and highest level found equally far from the centre), then the narrowest, then
+    the one with the fewest runs on axial levels (beyond +-1).  A single
     mistyped cell sits on no level, so it cannot move the coding; no value is privileged by how
     often it occurs (a 3x3 factorial or a CCD with one centre run is coded like any other).  ``half_place``
     (half the column's printed place, where the text is known) widens ``tol`` per level as the check does
@@ -38,10 +39,14 @@ def _level_coding(values: np.ndarray, counts: np.ndarray, levels: np.ndarray,
             nearest = np.abs(coded[:, None] - levels[None, :]).argmin(axis=1)
             level_tol = _print_tolerance(tol, half_place, unit, levels)
             on = np.abs(coded - levels[nearest]) <= level_tol[nearest]
-            # Last, the narrowest placement: three values of a CCD factor are its factorial levels and the
-            # centre (a CCD has no factor without factorial points), not its axial levels.
+            # Then the narrowest placement: three values of a CCD factor are its factorial levels and the
+            # centre (a CCD has no factor without factorial points), not its axial levels.  Last, the fewest
+            # runs on axial levels: at alpha = 2 a CCD without its low axial run leaves four evenly spaced
+            # values (-1, 0, 1, 2) that also read as -2, -1, 0, 1; its axial level is the one a single run
+            # holds, not the factorial level or the centre.
+            axial = on & (np.abs(levels[nearest]) > 1 + 1e-9)
             key = (int(counts[on].sum()), -round(abs(coded[on].max() + coded[on].min()), 6), int(on.sum()),
-                   -round(float(np.abs(coded[on]).max()), 6))
+                   -round(float(np.abs(coded[on]).max()), 6), -int(counts[axial].sum()))
             if best_key is None or key > best_key:
                 best_key, best = key, (on, levels[nearest])
     if best is None:

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .design import model_matrix, quadratic_terms, term_name
+from .design import model_matrix, quadratic_terms, replicate_keys, term_name
 from .errors import InputError
 
 
@@ -56,7 +56,8 @@ def _confounded_terms(null_space: np.ndarray, terms, coded: np.ndarray, factors:
     factors = factors or [f"x{i + 1}" for i in range(coded.shape[1])]
     names = ["intercept" if sum(t) == 0 else term_name(t, factors) for t in terms]
     involved = [n for n, w in zip(names, np.abs(null_space).max(axis=0)) if w > 1e-6]
-    few = [f for i, f in enumerate(factors) if len(np.unique(np.round(coded[:, i], 6))) < 3]
+    # levels told apart as the replicate rule tells design points apart
+    few = [f for i, f in enumerate(factors) if len(np.unique(replicate_keys(coded[:, i]))) < 3]
     listed = ", ".join(involved[:-1]) + f" and {involved[-1]}" if len(involved) > 1 else involved[0]
     text = f"the usable runs cannot tell {listed} apart"
     if few:

@@ -110,7 +110,8 @@ class LackOfFitAnova:
             ("Total (corrected)", self.ss_total, self.df_total, np.nan, np.nan),
         ]
         df = pd.DataFrame(rows, columns=["source", "sum_sq", "df", "F", "p_value"])
-        df["mean_sq"] = np.where(df["df"] > 0, df["sum_sq"] / df["df"].where(df["df"] > 0, 1), np.nan)
+        # no mean square without degrees of freedom (pandas divides by 0 without a warning; the NaN replaces it)
+        df["mean_sq"] = (df["sum_sq"] / df["df"]).where(df["df"] > 0)
         df.insert(0, "response", self.response)
         df["note"] = np.where(df["source"] == "Lack of fit", self.lof_note, "")
         return df[["response", "source", "df", "sum_sq", "mean_sq", "F", "p_value", "note"]]

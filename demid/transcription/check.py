@@ -327,14 +327,15 @@ def _cell_repairs(text: str, z: np.ndarray, row: int, j: int, nominal: np.ndarra
     ok = gaps <= tolerance[None, :]
     # A cell found off every design level is itself irregular: its repairs come first in ties.
     off_grid = bool(np.all(np.abs(z[row, j] - levels) > tolerance))
-    # One repair per design level: printed like the column, then nearest the level, then kind.
+    # One repair per design level: printed like the column, then nearest the level, then kind, then the one
+    # that changes the printed value least (10.13, not 10.12, for 10.14 at a level of 10.125), then the lower.
     per_level: dict[int, tuple] = {}
     for c, level in zip(*np.nonzero(ok)):
         kind, cand_text, value = slips[c]
         over = _irregularity(text, cand_text, precision)
         if off_grid and over == 0:
             over = -1
-        key = (over, gaps[c, level], _KIND_RANK[kind])
+        key = (over, gaps[c, level], _KIND_RANK[kind], abs(value - float(actual)), value)
         if level not in per_level or key < per_level[level][0]:
             per_level[level] = (key, kind, cand_text, value, float(model_values[c]), over)
     return [entry[1:] for entry in per_level.values()]
