@@ -1256,14 +1256,15 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py",
                   "tests/combinations/test_combination_material_whole.py",
-                  "tests/combinations/test_combination_outputs.py", "tests/story/test_verdicts.py"],
+                  "tests/combinations/test_combination_outputs.py", "tests/story/test_verdicts.py",
+                  "tests/combinations/test_combination_boundaries_whole.py"],
     },
     "demid/combinations/material.py": {
         "functions": None,
         "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py",
                   "tests/combinations/test_combination_material_whole.py",
                   "tests/combinations/test_combination_outputs.py", "tests/report/test_advice_source.py",
-                  "tests/combinations/test_break_ridge_whole.py"],
+                  "tests/combinations/test_break_ridge_whole.py", "tests/combinations/test_combination_boundaries_whole.py"],
     },
     "demid/story/advice.py": {
         "functions": None,
