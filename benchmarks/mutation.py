@@ -1553,6 +1553,28 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/ranking.py::rank_observable_sets::1 => 2#5":
         "pairs left out of the shortcut `every smaller set reachable`: a set holding a pair that cannot be met "
         "together has a fraction of 0 and no point that meets it (_met_together), so it is unreachable all the same",
+    # --- the uncertainty, story, combinations and loop rows (eighth round, seeds 32 and 33)
+    "demid/uncertainty/ranking.py::rank_observable_sets::False => True#0":
+        "polish=True for the ranking's fractions: polishing moves a set's span ends only (polish_spans, the Sobol "
+        "path's _polish), never its fraction, and the ranking reads .fraction alone",
+    "demid/story/verdicts.py::verdict_frame::0 => -1#1":
+        "the strict interval's lower end from the last instead of the first row of a scenario and factor: "
+        "identifiability.csv holds one row per material, scenario and factor (Table 3's contract)",
+    "demid/combinations/axes.py::_orient::0 => -1#1":
+        "np.arange(out.shape[-1]) for np.arange(out.shape[0]): the eigenvectors of a d x d covariance are a square "
+        "matrix, both are d",
+    "demid/combinations/material.py::MaterialCombinations.to_json::float(res.bend) => res.bend#0":
+        "res.bend is curve_bend's float(...) or the dataclass's float('nan'): float() of a Python float",
+    "demid/wave_value.py::_updated_se::scale <= 0 => scale < 0#0":
+        "a zero residual variance makes the coefficients' covariance (resid_var times (X'X)^-1) all zero, which the "
+        "test `not np.any(cov)` beside it catches: the same early return",
+    "demid/next_wave.py::tabulate_waves::True => False#0":
+        "the next-domain table keeps each wave's row index instead of 0..n-1: both of its callers (scripts/"
+        "next_wave.py, propose_wave.py) only write it with write_csv, index=False, whose rounding assigns columns "
+        "by position",
+    "demid/surrogate_choice.py::kriging_fits::1 => 2#1":
+        "the quadratic trend's column count read off a 2-row instead of a 1-row zero matrix: the number of terms "
+        "does not depend on the number of rows",
     "demid/uncertainty/plausible.py::summarise_set::1 => 2#0":
         "n % 2 == 2 is never true: without the shared grid predictions fraction_with_error predicts the same odd "
         "grid itself (as for 2 => 1#2), the same numbers at the cost of more predictions",
@@ -2317,6 +2339,11 @@ SETTINGS: dict[str, str] = {
         "fixed seed gives an equally stratified, equally deterministic sample",
     "demid/uncertainty/ranking.py::_met_together::500 => 499#0":
         "L-BFGS-B's iteration cap in the search for a point meeting every target: it converges in far fewer",
+    "demid/uncertainty/ranking.py::_met_together::500 => 501#0":
+        "L-BFGS-B's iteration cap in the search for a point meeting every target: it converges in far fewer",
+    "demid/uncertainty/sweep.py::tolerance_sweep::2 => 3#0":
+        "the default number of scrambled Sobol points (3^14 for 2^14, more than three factors); analyse_material "
+        "passes its own (sizes['sweep'])",
     "demid/wave_runs.py::d_optimal_augment::9 => 8#0":
         "the decimals the log prediction variance is rounded to before equal ones go to the farthest candidate "
         "(9 or 8: both far above round-off, far below a difference between grid points' variances)",
