@@ -1243,6 +1243,11 @@ TABLE: dict[str, dict] = {
                   "tests/test_waves_whole.py", "tests/inputs/test_estimability.py", "tests/criticism/test_models_whole.py",
                   _NOT_WORKFLOW],
     },
+    # where the recommended point stands: the report's warning of a point on a bound or outside the runs
+    "demid/story/recommended.py": {
+        "functions": None,
+        "tests": ["tests/story/test_point_on_edge_whole.py", "tests/story/test_report_judgements.py"],
+    },
     "demid/story/extensions.py": {
         "functions": None,
         "tests": ["tests/story/test_model_extensions.py", "tests/story/test_extension_sentence_properties.py",
