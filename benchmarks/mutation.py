@@ -1618,6 +1618,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/surrogate_choice.py::kriging_fits::1 => 2#1":
         "the quadratic trend's column count read off a 2-row instead of a 1-row zero matrix: the number of terms "
         "does not depend on the number of rows",
+    "demid/uncertainty/plausible.py::summarise_set::2 => 1#0":
+        "the default Sobol count 1^16 for 2^16 (more than three factors): each of summarise_set's three callers "
+        "(the plausible table, the ranking, the sweep) passes its own sobol_points",
+    "demid/uncertainty/recommended.py::uninformative_observables::float('nan') => 'nan'#0":
+        "the default of a ranking without an information_gain_bits column goes through float(): float('nan') of the "
+        "string is the same NaN",
     "demid/uncertainty/plausible.py::summarise_set::1 => 2#0":
         "n % 2 == 2 is never true: without the shared grid predictions fraction_with_error predicts the same odd "
         "grid itself (as for 2 => 1#2), the same numbers at the cost of more predictions",
