@@ -1624,6 +1624,86 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/recommended.py::uninformative_observables::float('nan') => 'nan'#0":
         "the default of a ranking without an information_gain_bits column goes through float(): float('nan') of the "
         "string is the same NaN",
+    # --- float() and int() around a value already of that kind (numpy scalars), read with their callers: the
+    # uncertainty, story, combinations and loop rows (eighth round, not drawn)
+    'demid/uncertainty/ranking.py::_met_together::float(errors(np.clip(res.x, 0.0, 1.0)).max()) => errors(np.clip(res.x, 0.0, 1.0)).max()#0':
+        _NUMPY_FLOAT + " (the largest error is only compared with the tolerance)",
+    'demid/uncertainty/ranking.py::_met_together::float(np.sum(np.maximum(errors(u)[:, 0] - tolerance, 0.0) ** 2)) => np.sum(np.maximum(errors(u)[:, 0] - tolerance, 0.0) ** 2)#0':
+        "the objective returns numpy's float64 instead of a float: a float subclass, which L-BFGS-B reads the same",
+    'demid/uncertainty/posterior.py::_quantiles::float(roots[np.argmin(np.abs(roots - axis[j]))]) => roots[np.argmin(np.abs(roots - axis[j]))]#0':
+        _NUMPY_FLOAT + " (each quantile is put into an array at once)",
+    'demid/uncertainty/posterior.py::_quantiles::float(np.interp(q, cdf / cdf[-1], axis)) => np.interp(q, cdf / cdf[-1], axis)#0':
+        _NUMPY_FLOAT + " (each quantile is put into an array at once)",
+    'demid/uncertainty/posterior.py::posterior_from_loglik::float(np.prod(hi_u - lo_u)) => np.prod(hi_u - lo_u)#0':
+        _NUMPY_FLOAT + " (the box volume enters a logarithm only)",
+    'demid/uncertainty/posterior.py::posterior_from_loglik::float(np.dot(weights[i], m)) => np.dot(weights[i], m)#0':
+        _NUMPY_FLOAT + " (np.dot of two vectors is a scalar; it divides a marginal)",
+    'demid/uncertainty/posterior.py::_qmc_posteriors::float(np.sum(w * np.log(np.maximum(w, 1e-300) / w.mean())) / w.sum()) => np.sum(w * np.log(np.maximum(w, 1e-300) / w.mean())) / w.sum()#0':
+        _NUMPY_FLOAT + " (np.sum over a vector, divided by another scalar sum)",
+    'demid/uncertainty/posterior.py::_qmc_posteriors::float(np.std(per_rep, ddof=1) / np.sqrt(replicates)) => np.std(per_rep, ddof=1) / np.sqrt(replicates)#0':
+        _NUMPY_FLOAT,
+    'demid/uncertainty/recommended.py::recommended_point::int(np.argmin(values)) => np.argmin(values)#0':
+        "np.argmin's numpy integer indexes the points as an int does",
+    'demid/uncertainty/recommended.py::recommended_point::float(values[best]) => values[best]#0':
+        _NUMPY_FLOAT + " (one element of a float array, written to JSON as the same number)",
+    'demid/uncertainty/recommended.py::digits_for::int(math.floor(math.log10(width))) => math.floor(math.log10(width))#0':
+        "math.floor of a float already returns an int",
+    "demid/story/verdicts.py::verdict_frame::float(strict['lower'].iloc[0]) => strict['lower'].iloc[0]#0":
+        _NUMPY_FLOAT + " (identifiability.csv's bounds are a float column: NaN marks an empty set)",
+    "demid/story/verdicts.py::verdict_frame::float(plaus['robust_lower'].iloc[0]) => plaus['robust_lower'].iloc[0]#0":
+        _NUMPY_FLOAT + " (robust_identifiability.csv's bounds are a float column)",
+    "demid/story/verdicts.py::verdict_frame::float(plaus['robust_upper'].iloc[0]) => plaus['robust_upper'].iloc[0]#0":
+        _NUMPY_FLOAT + " (robust_identifiability.csv's bounds are a float column)",
+    'demid/story/extensions.py::_lowest_q2::float(q2.min()) => q2.min()#0':
+        _NUMPY_FLOAT + " (the minimum of an array built with dtype=float)",
+    'demid/combinations/axes.py::curve_bend::float(np.max(np.abs(offset)) / axes.widths[0]) => np.max(np.abs(offset)) / axes.widths[0]#0':
+        _NUMPY_FLOAT,
+    'demid/combinations/axes.py::LocalThickness.fraction::float(self.fractions[order][np.searchsorted(cum, cum[-1] / 2)]) => self.fractions[order][np.searchsorted(cum, cum[-1] / 2)]#0':
+        _NUMPY_FLOAT + " (one element of a float array)",
+    'demid/combinations/axes.py::local_thickness::float(np.abs(normal) @ ranges) => np.abs(normal) @ ranges#0':
+        _NUMPY_FLOAT + " (the dot product of two vectors is a scalar)",
+    'demid/combinations/material.py::set_combinations::int(np.argmax(spread)) => np.argmax(spread)#0':
+        "np.argmax's numpy integer indexes the factors, and 1 - it the other one, as an int does",
+    'demid/combinations/material.py::set_combinations::float(np.median(local)) => np.median(local)#0':
+        _NUMPY_FLOAT,
+    "demid/combinations/material.py::set_combinations::float((curve['along'].max() - curve['along'].min()) / (hi[wide] - lo[wide])) => (curve['along'].max() - curve['along'].min()) / (hi[wide] - lo[wide])#0":
+        _NUMPY_FLOAT + " (a quotient of numpy scalars)",
+    'demid/combinations/material.py::_cut_side::float(np.sum(np.minimum(normal * lo, normal * hi))) => np.sum(np.minimum(normal * lo, normal * hi))#0':
+        _NUMPY_FLOAT + " (only added to and compared with)",
+    'demid/combinations/material.py::_cut_side::float(np.sum(np.maximum(normal * lo, normal * hi))) => np.sum(np.maximum(normal * lo, normal * hi))#0':
+        _NUMPY_FLOAT + " (only added to and compared with)",
+    'demid/combinations/material.py::_cut_side::int(low) => low#0':
+        "a (numpy) bool in int(low) + 2 * int(high) counts as 0 or 1 either way",
+    'demid/combinations/material.py::_cut_side::int(high) => high#0':
+        "a (numpy) bool in int(low) + 2 * int(high) counts as 0 or 1 either way",
+    'demid/combinations/material.py::MaterialCombinations.to_json::float(res.band_fraction) => res.band_fraction#0':
+        _NUMPY_FLOAT + " (band_fraction is a float or numpy float; JSON writes both alike)",
+    'demid/combinations/material.py::MaterialCombinations.to_json::float(res.band_span) => res.band_span#0':
+        _NUMPY_FLOAT + " (band_span is a float; JSON writes both alike)",
+    'demid/combinations/material.py::break_ridge_advice::float(np.degrees(np.arcsin(np.clip(scores[best], 0, 1)))) => np.degrees(np.arcsin(np.clip(scores[best], 0, 1)))#0':
+        _NUMPY_FLOAT + " (compared and formatted only)",
+    'demid/combinations/material.py::break_ridge_advice::float(np.median(along[ok] / norm[ok])) => np.median(along[ok] / norm[ok])#0':
+        _NUMPY_FLOAT + " (compared and formatted only)",
+    'demid/wave_value.py::expected_contraction::float(now.mean()) => now.mean()#0':
+        _NUMPY_FLOAT + " (the mean of a boolean array, divided and written to JSON as the same number)",
+    'demid/boundary_runs.py::greedy_batch::int(np.argmax(value)) => np.argmax(value)#0':
+        "np.argmax's numpy integer indexes the candidates and the value array as an int does",
+    'demid/boundary_runs.py::greedy_batch::float(np.max(score, initial=0.0)) => np.max(score, initial=0.0)#0':
+        _NUMPY_FLOAT,
+    'demid/boundary_runs.py::boundary_runs::int(round(EXPLORE_SHARE * count)) => round(EXPLORE_SHARE * count)#0':
+        "round() of a float with no digits already returns an int",
+    'demid/wave_runs.py::d_optimal_augment::int(top[np.argmax(np.round(dist[top], 9))]) => top[np.argmax(np.round(dist[top], 9))]#0':
+        "a numpy integer indexes the candidates, the used mask and the distances as an int does",
+    'demid/wave_runs.py::box_support_count::int(round((BOX_SHARE if share is None else share) * count)) => round((BOX_SHARE if share is None else share) * count)#0':
+        "round() of a float with no digits already returns an int",
+    'demid/next_wave.py::plausible_points::int(round(4096 ** (1 / k))) => round(4096 ** (1 / k))#0':
+        "round() of a float with no digits already returns an int",
+    'demid/kriging.py::KrigingSurrogate.y_center::float(np.mean(self.y)) => np.mean(self.y)#0':
+        _NUMPY_FLOAT,
+    'demid/kriging.py::KrigingSurrogate.y_scale::float(np.std(self.y)) => np.std(self.y)#0':
+        _NUMPY_FLOAT + " (a zero standard deviation is falsy either way, so `or 1.0` applies alike)",
+    'demid/waves.py::box_share::float(np.prod((hi - lo) / (omega_hi - omega_lo))) => np.prod((hi - lo) / (omega_hi - omega_lo))#0':
+        _NUMPY_FLOAT + " (times 100 in the history table)",
     "demid/uncertainty/plausible.py::summarise_set::1 => 2#0":
         "n % 2 == 2 is never true: without the shared grid predictions fraction_with_error predicts the same odd "
         "grid itself (as for 2 => 1#2), the same numbers at the cost of more predictions",
