@@ -1156,6 +1156,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/uncertainty/test_recommended.py", "tests/uncertainty/test_uncertainty.py",
                   "tests/uncertainty/test_material_whole.py", "tests/uncertainty/test_material_tables_whole.py",
+                  "tests/uncertainty/test_material_without_scenarios_whole.py",
                   "tests/uncertainty/test_own_tolerance_posteriors.py", "tests/criticism/test_unreachable_targets.py",
                   "tests/story/test_story.py", _NOT_WORKFLOW],
     },
