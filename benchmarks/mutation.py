@@ -1622,6 +1622,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/plausible.py::summarise_set::2 => 1#0":
         "the default Sobol count 1^16 for 2^16 (more than three factors): each of summarise_set's three callers "
         "(the plausible table, the ranking, the sweep) passes its own sobol_points",
+    "demid/uncertainty/sweep.py::tolerance_sweep::z == 0 and uses_grid(domain.dim) => z == 0#0":
+        "the shared grid predictions also made above three factors: summarise_set returns the Sobol estimate there "
+        "before it reads them (more work, the same numbers)",
     "demid/uncertainty/recommended.py::uninformative_observables::float('nan') => 'nan'#0":
         "the default of a ranking without an information_gain_bits column goes through float(): float('nan') of the "
         "string is the same NaN",
