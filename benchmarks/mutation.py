@@ -1625,6 +1625,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/sweep.py::tolerance_sweep::z == 0 and uses_grid(domain.dim) => z == 0#0":
         "the shared grid predictions also made above three factors: summarise_set returns the Sobol estimate there "
         "before it reads them (more work, the same numbers)",
+    "demid/story/recommended.py::point_on_edge_text::hi > lo => hi >= lo#0":
+        "a search range whose upper bound equals its lower one is refused by the config (a factor's lower bound "
+        "must lie below its upper): hi > lo holds for every factor, and hi >= lo picks the same hi - lo",
+    "demid/uncertainty/posterior.py::_kl_bits::p > 0 => p >= 0#0":
+        "a node of zero posterior (its likelihood below exp(-745) of the largest) has a finite ll, so p * (ll - "
+        "log z + log V) is 0 there as the 0.0 np.where gives",
     "demid/uncertainty/recommended.py::uninformative_observables::float('nan') => 'nan'#0":
         "the default of a ranking without an information_gain_bits column goes through float(): float('nan') of the "
         "string is the same NaN",
