@@ -221,15 +221,19 @@ def test_a_band_of_exactly_max_columns_grid_columns_keeps_its_columns(extra):
         assert np.allclose(curve["lower"], lows)
 
 
+@pytest.mark.parametrize("side", ["upper", "lower"])
 @pytest.mark.parametrize("clear_columns", [2, 3])
-def test_the_bend_leaves_out_cut_columns_only_while_three_clear_ones_remain(clear_columns):
+def test_the_bend_leaves_out_cut_columns_only_while_three_clear_ones_remain(clear_columns, side):
     step = 0.01
     n = 5
     along = np.linspace(-0.8, 0.8, n)
     mid = np.array([0.08, 0.02, -0.01, 0.03, 0.0])  # the first column, cut in both cases, strays most
     lower, upper = mid - 0.1, mid + 0.1
     cut = n - clear_columns
-    upper[:cut] = 1.0 - step  # within 1.5 steps of the box's upper across-bound
+    if side == "upper":
+        upper[:cut] = 1.0 - step  # within 1.5 steps of the box's upper across-bound
+    else:
+        lower[:cut] = -1.0 + step  # within 1.5 steps of its lower one
     curve = pd.DataFrame({"along": along, "lower": lower, "mid": mid, "upper": upper})
     axes = _axes(np.eye(2)[:, ::-1], [0.2, 1.5], [2.0, 2.0])  # normal along the second (across) factor
     bend = curve_bend(curve, axes, 0, 1, [-1.0, -1.0], [1.0, 1.0], step)
