@@ -1097,7 +1097,7 @@ TABLE: dict[str, dict] = {
                   "tests/test_next_wave_whole.py", "tests/test_next_wave_box_whole.py", "tests/test_omega_wave_whole.py",
                   "tests/test_next_wave_reason_whole.py", "tests/test_propose_runs_whole.py",
                   "tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py",
-                  "tests/test_next_wave_aim_whole.py"],
+                  "tests/test_next_wave_aim_whole.py", "tests/test_separating_over_omega_whole.py"],
     },
     "demid/wave_runs.py": {
         "functions": None,
