@@ -1633,6 +1633,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/posterior.py::_kl_bits::p > 0 => p >= 0#0":
         "a node of zero posterior (its likelihood below exp(-745) of the largest) has a finite ll, so p * (ll - "
         "log z + log V) is 0 there as the 0.0 np.where gives",
+    "demid/kriging.py::KrigingSurrogate.from_hyperparameters::float(hyper['nugget']) => hyper['nugget']#0":
+        "the text is hyperparameters_json's, which writes float(nugget): JSON writes a float with its point or "
+        "exponent and reads it back as a float",
     "demid/uncertainty/recommended.py::uninformative_observables::float('nan') => 'nan'#0":
         "the default of a ranking without an information_gain_bits column goes through float(): float('nan') of the "
         "string is the same NaN",
