@@ -8,6 +8,7 @@ extrapolation warning when the point lies outside the design runs' hull (a box o
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import Phase, given, settings, strategies as st
 
 from demid.spec import MaterialSpec
@@ -114,3 +115,25 @@ def test_three_factors_kept_on_one_bound_are_named_together_in_config_order():
         "widens: the plausible set may continue beyond it, and the recommended value with it.")
     middle = dict(zip(spec.factor_names, spec.domain.to_actual(lo + 0.5 * (hi - lo))[0]))
     assert point_on_edge_text(spec, middle, np.zeros((0, 4)), verdicts, set()) == ""
+
+
+@pytest.mark.parametrize("past, outside", [(0.5, False), (3.0, True)])
+def test_the_hull_slack_is_a_share_of_each_factors_range_on_ranges_away_from_zero(past, outside):
+    """Runs on the triangle u + v <= 0.8 of the unit square over a = [100, 101], b = [-5, -3] (one range far from
+    zero, one below it): a point past the long side by ``past`` times the slack, in fractions of each range, is covered
+    below the slack and outside above it, and no bound is touched."""
+    from demid.story.recommended import HULL_TOLERANCE
+
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "custom"},
+        "factors": {"a": {"lower": 100.0, "upper": 101.0, "label": "A"}, "b": {"lower": -5.0, "upper": -3.0,
+                                                                                "label": "B"}},
+        "responses": {"y": {"target": 1.0}}, "scenarios": {"s": {"observables": ["y"], "tolerance": 0.05}}},
+        grid_points=11)
+    lo, hi = spec.domain.search_bounds()
+    corners = np.array([[0.1, 0.1], [0.7, 0.1], [0.1, 0.7]])
+    runs = lo + corners * (hi - lo)
+    step = 0.4 + past * HULL_TOLERANCE
+    point = dict(zip(spec.factor_names, lo + np.array([step, step]) * (hi - lo)))
+    text = point_on_edge_text(spec, point, runs, {}, set())
+    assert text == (f"⚠ {_OUTSIDE}" if outside else "")
