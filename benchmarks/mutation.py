@@ -341,7 +341,7 @@ test_posterior_small_grids_whole.py (the gain's error from five odd nodes per ax
 zero width refused by name), tests/story/test_point_on_edge_whole.py (the recommended point's sentence against the
 rule written out: limits, widened and kept bounds with their verdicts, factors named together, the hull warning),
 tests/uncertainty/test_material_without_scenarios_whole.py, tests/story/test_check_target_advice_whole.py,
-test_measurement_order_ties_whole.py and tests/test_separating_over_omega_whole.py; 9 files, 91 tests, about 5 s in
+test_measurement_order_ties_whole.py and tests/test_separating_over_omega_whole.py; 9 files, 93 tests, about 5 s in
 the tests themselves, each file under 2 s.  Listed as equivalent without having been drawn, each read with its
 callers: 39 float() and int() drops around numpy scalars (only compared, formatted, used as an index or written to
 JSON) or around round() and math.floor (already ints), the recommended point's hi > lo (the config refuses a range
