@@ -1325,7 +1325,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/criticism/test_discrimination.py", "tests/criticism/test_discrimination_properties.py",
                   "tests/criticism/test_scatter_covariates.py", "tests/criticism/test_level1_finding_whole.py",
-                  "tests/criticism/test_discrimination_whole.py", "tests/criticism/test_candidates_whole.py"],
+                  "tests/criticism/test_discrimination_whole.py", "tests/criticism/test_candidates_whole.py",
+                  "tests/criticism/test_deciding_runs_greedy_whole.py", "tests/criticism/test_ambiguity_whole.py"],
     },
     "demid/criticism/reach.py": {
         "functions": None,
