@@ -932,7 +932,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_linear_time_equivalents.py", "tests/criticism/test_catalogue_steps_whole.py",
                   "tests/criticism/test_scatter_gamma_search.py", "tests/criticism/test_one_run_by_identity.py",
                   "tests/criticism/test_level1_finding_whole.py", "tests/criticism/test_catalogue_boxcox_whole.py",
-                  "tests/criticism/test_lack_of_fit_whole.py",
+                  "tests/criticism/test_lack_of_fit_whole.py", "tests/criticism/test_catalogue_limits_whole.py",
+                  "tests/criticism/test_one_run_whole.py", "tests/criticism/test_one_run_spare_runs_whole.py",
                   "tests/criticism/test_level1_known_answers.py::test_a_slipped_factor_value_is_moved_and_the_loo_"
                   "errors_are_the_refits", "-knot level2 and not residual_figure and not 3f"],
     },
