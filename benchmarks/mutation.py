@@ -1790,6 +1790,15 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/aliasing.py::_separating_runs_cached::int(ranks[best]) => ranks[best]#0":
         "ranks is an integer array (counts of eigenvalues plus a bool): its numpy integer compares with "
         "len(members) and the next round's ranks exactly as the int, and is never returned",
+    "demid/criticism/slips.py::slip_ratios::max(SLIP_MIN_CANDIDATES, SLIP_CELLS // max(y.shape[1], 1)) => "
+    "min(SLIP_MIN_CANDIDATES, SLIP_CELLS // max(y.shape[1], 1))#0":
+        "how many candidates are taken at once (both operands are at least 1), not what is computed: each block's "
+        "best ratio is merged with `val > best`, which keeps the first candidate on a tie as argmin does within "
+        "a block (tests/criticism/test_slips_whole.py runs blocks of one candidate)",
+    "demid/criticism/run_order.py::assess_run_order::runs = np.asarray(runs, dtype=float) => pass#0":
+        "both callers pass a numpy array of run numbers (Data.runs; a table's run column or np.arange): "
+        "np.isfinite, a mask's indexing, np.ptp, scipy's Spearman rho and standard_order_correlation's own "
+        "conversion read an integer array as they read its float copy",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
