@@ -1796,6 +1796,8 @@ EQUIVALENT: dict[str, str] = {
         "how many candidates are taken at once (both operands are at least 1), not what is computed: each block's "
         "best ratio is merged with `val > best`, which keeps the first candidate on a tie as argmin does within "
         "a block (tests/criticism/test_slips_whole.py runs blocks of one candidate)",
+    "demid/criticism/edges.py::extrapolation_warnings::0 => -1#4":
+        "ref is the one row of the reference point: its first row is its last",
     "demid/criticism/run_order.py::assess_run_order::runs = np.asarray(runs, dtype=float) => pass#0":
         "both callers pass a numpy array of run numbers (Data.runs; a table's run column or np.arange): "
         "np.isfinite, a mask's indexing, np.ptp, scipy's Spearman rho and standard_order_correlation's own "
