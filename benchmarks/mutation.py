@@ -1799,6 +1799,10 @@ EQUIVALENT: dict[str, str] = {
         "a block (tests/criticism/test_slips_whole.py runs blocks of one candidate)",
     "demid/criticism/edges.py::extrapolation_warnings::0 => -1#4":
         "ref is the one row of the reference point: its first row is its last",
+    "demid/criticism/discrimination.py::prediction_parts::1 => 0#1":
+        "max(df_resid, 1) and max(df_resid, 0) differ only for a model without residual degrees of freedom; the "
+        "models compared are candidates with a finite AICc (n - k - 1 > 0, close_candidates) and their aliased "
+        "twins of the same size, which leave at least one",
     "demid/criticism/run_order.py::assess_run_order::runs = np.asarray(runs, dtype=float) => pass#0":
         "both callers pass a numpy array of run numbers (Data.runs; a table's run column or np.arange): "
         "np.isfinite, a mask's indexing, np.ptp, scipy's Spearman rho and standard_order_correlation's own "
