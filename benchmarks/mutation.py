@@ -1803,6 +1803,9 @@ EQUIVALENT: dict[str, str] = {
         "max(df_resid, 1) and max(df_resid, 0) differ only for a model without residual degrees of freedom; the "
         "models compared are candidates with a finite AICc (n - k - 1 > 0, close_candidates) and their aliased "
         "twins of the same size, which leave at least one",
+    "demid/criticism/step_changes.py::step_direction_chunks::int(order[c]) => order[c]#0":
+        "the change-point is only an index into data.runs inside Model.step_column, where a numpy integer indexes "
+        "as the int does (the start recorded is converted on its own line)",
     "demid/criticism/run_order.py::assess_run_order::runs = np.asarray(runs, dtype=float) => pass#0":
         "both callers pass a numpy array of run numbers (Data.runs; a table's run column or np.arange): "
         "np.isfinite, a mask's indexing, np.ptp, scipy's Spearman rho and standard_order_correlation's own "
