@@ -832,7 +832,7 @@ _LEVEL2_TESTS = ["tests/criticism/test_level2_known_answers.py", "tests/test_rep
                  "tests/criticism/test_criticism.py", "tests/criticism/test_edges.py",
                  "tests/criticism/test_unreachable_targets.py", "tests/criticism/test_level2_whole.py",
                  "tests/criticism/test_level2_weighted_text_whole.py", "tests/criticism/test_level2_within_whole.py",
-                 "tests/criticism/test_unmoved_scale_whole.py", "-klevel2 or edge or reach"]
+                 "tests/criticism/test_level2_unmoved_scale_whole.py", "-klevel2 or edge or reach"]
 # the transcription check's tests (the CLI ones run the check end to end on a small table)
 _TRANSCRIPTION_TESTS = ["tests/transcription/test_transcription.py",
                         "tests/transcription/test_transcription_printed_inputs.py",
