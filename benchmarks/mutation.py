@@ -1807,6 +1807,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/step_changes.py::step_direction_chunks::int(order[c]) => order[c]#0":
         "the change-point is only an index into data.runs inside Model.step_column, where a numpy integer indexes "
         "as the int does (the start recorded is converted on its own line)",
+    "demid/criticism/reach.py::saturation_advice::r.slope * (1 if r.side == 'upper' else -1) => "
+    "r.slope / (1 if r.side == 'upper' else -1)#0":
+        "dividing by +1 or -1 is multiplying by it: the same product, whose sign is all the comparison reads",
     "demid/criticism/run_order.py::assess_run_order::runs = np.asarray(runs, dtype=float) => pass#0":
         "both callers pass a numpy array of run numbers (Data.runs; a table's run column or np.arange): "
         "np.isfinite, a mask's indexing, np.ptp, scipy's Spearman rho and standard_order_correlation's own "
