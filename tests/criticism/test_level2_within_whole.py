@@ -35,3 +35,18 @@ def test_a_prediction_exactly_a_tolerance_off_is_within_it_and_a_hair_more_is_no
         assert r.within(errors) == within, errors
         assert r.reference_within == within
     assert _result(scenario, tolerances, None).reference_within is None
+
+
+@pytest.mark.parametrize("target,tolerance", [(7.0, 0.1), (-3.0, 0.2)])
+def test_the_tables_within_columns_read_an_error_exactly_a_tolerance_off_as_within(target, tolerance):
+    e_edge = float(relative_error(np.array(target + tolerance * abs(target)), np.array(target)))
+    e_beyond = e_edge + 1e-9
+    r = _result(tolerance, {"b": 0.3}, {"a": e_edge, "b": 0.3 + 1e-9})
+    r.observables, r.targets = ["a", "b"], {"a": target, "b": 1.0}
+    r.best_values, r.best_errors = {"a": 0.0, "b": 0.0}, {"a": e_beyond, "b": 0.3 + 5e-14}
+    r.reference_values = {"a": 0.0, "b": 0.0}
+    r.bottleneck, r.without, r.implied_bias, r.bias_candidates = None, {}, {}, []
+    frame = r.to_frame()
+    assert list(frame["tolerance"]) == [tolerance, 0.3]
+    assert list(frame["within_tolerance"]) == [False, True]
+    assert list(frame["within_tolerance_reference"]) == [True, False]
