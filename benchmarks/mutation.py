@@ -1045,7 +1045,8 @@ TABLE: dict[str, dict] = {
     "demid/criticism/extensions.py": {
         "functions": None,
         "tests": _NAMING_TESTS + ["tests/criticism/test_extensions_forms_whole.py",
-                                  "tests/criticism/test_transform_far_lambda_whole.py"],
+                                  "tests/criticism/test_transform_far_lambda_whole.py",
+                                  "tests/criticism/test_scatter_fitted_blocks_whole.py"],
     },
     "demid/criticism/naming.py": {
         "functions": None,
