@@ -1051,7 +1051,8 @@ TABLE: dict[str, dict] = {
     "demid/criticism/naming.py": {
         "functions": None,
         "tests": _NAMING_TESTS + ["tests/criticism/test_candidates_whole.py", "tests/criticism/test_ambiguity_whole.py",
-                                  "tests/criticism/test_residual_misfit_level.py", "tests/criticism/test_naming_ties_whole.py"],
+                                  "tests/criticism/test_residual_misfit_level.py", "tests/criticism/test_naming_ties_whole.py",
+                                  "tests/criticism/test_ambiguity_named_first_whole.py"],
     },
     "demid/criticism/slips.py": {
         "functions": None,
