@@ -5,6 +5,8 @@ cause alone."""
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import numpy as np
 import pytest
 
@@ -35,8 +37,9 @@ def test_a_named_cause_decides_the_ambiguity_whatever_a_later_round_left(kind, s
 
 @pytest.mark.parametrize("seed", [1, 5])
 def test_two_close_candidates_of_a_cause_not_singled_out_are_both_reported(seed):
-    """A cubic term not singled out for a rival slip of one run whose extension fits within the ambiguity margin:
-    exactly two candidates, both reported (best first, the second's AICc behind it), with runs to decide."""
+    """A cubic term named, or not singled out for a rival slip of one run, whose rival's extension fits within the
+    ambiguity margin: exactly two candidates, both reported (best first, the second's AICc behind it), with runs to
+    decide -- not the runs that would confirm the named one."""
     from demid.criticism.discrimination import AMBIGUOUS_AICC, close_candidates
     from demid.criticism.naming import candidate_entries
 
@@ -50,8 +53,10 @@ def test_two_close_candidates_of_a_cause_not_singled_out_are_both_reported(seed)
     rival = next(c for c in close if c["cause"] != "missing_term")
     later = {"cause": "missing_term", "detail": "gamma^3",
              "rival": {"cause": rival["cause"], "detail": rival["detail"], "p_nominal": 1e-3}}
-    candidates, runs = ambiguity(data, base, first_round, [], later)
-    assert [(c["cause"], c["detail"]) for c in candidates] == [(c["cause"], c["detail"]) for c in close]
-    assert candidates[0]["delta_aicc"] == 0.0 and 0.0 <= candidates[1]["delta_aicc"] <= AMBIGUOUS_AICC
-    assert candidates[1]["delta_aicc"] == pytest.approx(close[1]["aicc"] - close[0]["aicc"], rel=1e-9)
-    assert runs
+    named = [SimpleNamespace(cause="missing_term", detail="gamma^3")]  # the same cause named instead
+    for findings, not_singled_out in (([], later), (named, None)):
+        candidates, runs = ambiguity(data, base, first_round, findings, not_singled_out)
+        assert [(c["cause"], c["detail"]) for c in candidates] == [(c["cause"], c["detail"]) for c in close]
+        assert candidates[0]["delta_aicc"] == 0.0 and 0.0 <= candidates[1]["delta_aicc"] <= AMBIGUOUS_AICC
+        assert candidates[1]["delta_aicc"] == pytest.approx(close[1]["aicc"] - close[0]["aicc"], rel=1e-9)
+        assert runs
