@@ -496,7 +496,7 @@ update's floor, a summary, two ambiguity branches, two level-2 slacks).  "With l
 equivalent, each listed with its reason: numpy integers where int() was dropped (catalogue's and step_changes'
 change-point, aliasing's rank), the slips' block of candidates, the run column's float copy, the reference
 point's only row, the reach advice's division by +-1, a floor of one residual degree of freedom no compared model
-lacks, outliers' floor of one run.  "After": the twelve other survivors of both draws re-run together with
+lacks, outliers' floor of one run.  "After": the thirteen other survivors of both draws re-run together with
 ``--ids`` (10 killed), then ambiguity's ``len(close) < 2 and findings`` killed by a test added after that run
 (the same edit applied by hand).  Seed 32's four killed: a model's R² of a constant response, an outlier's
 "slipped value fits too" sentence without that reading, the drift-step tie-break's nine decimals, one_run's
