@@ -501,15 +501,14 @@ lacks, outliers' floor of one run.  "After": the thirteen other survivors of bot
 (the same edit applied by hand).  Seed 32's four killed: a model's R² of a constant response, an outlier's
 "slipped value fits too" sentence without that reading, the drift-step tie-break's nine decimals, one_run's
 deleted tests at exactly three residual degrees of freedom.  Seed 33's seven, by tests written after reading it
-(in-sample now): level 2's 1e-12 slack at a
-tolerance and an unmoved observable judged on its error's scale, the separating runs' update of the members' sum
+(in-sample now): level 2's 1e-12 slack at a tolerance and an unmoved observable judged on its error's scale, the separating runs' update of the members' sum
 of squares, the predicted-value covariate's block effects, the ambiguity check with a cause named and with two
 close candidates (named or not singled out), an unexplained misfit's summary.  Left: level1 _rounds' stop rule
 ``df_resid - 1 < 3`` -> ``< 2`` (a further round at exactly two spare residual degrees of freedom) and one_run's
 estimability threshold without run i, ``sqrt(sum c^2 - c_i^2)`` -> ``c_i^3`` (it moves only a term's test at the
 edge of estimability); no table reaching either was built in time.  Tests
 added (tests/criticism/, 19 files, 171 tests, 4 s one after another on a quiet machine, 18 s loaded, each file
-under a second of tests), aimed at the kinds of survivor that kept coming back rather than at single mutants:
+under 1.5 s of tests), aimed at the kinds of survivor that kept coming back rather than at single mutants:
 comparisons met exactly at their threshold (extrapolation warnings exactly 0.1 % from a bound, a slip exactly at
 twice the design's reach, deleted tests at exactly three residual degrees of freedom, lack of fit at one degree of
 freedom of each kind, a cause at exactly OVERWHELMING_P and a deletion at exactly ONE_RUN_P, a member at exactly
