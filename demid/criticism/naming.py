@@ -38,8 +38,9 @@ def name_cause(data: Data, model: Model, rejected: list[Hypothesis]) -> tuple:
     # The rejected cause with the strongest evidence (smallest nominal p-value) is named, except
     # that one wild run can be read as an outlier or as scatter growing towards its corner of the
     # design: between those two (and between variance covariates, often nearly collinear) the
-    # better-fitting one-parameter extension (higher likelihood) decides.  The other rejected
-    # causes are fitted too and listed as alternatives.
+    # better-fitting one-parameter extension (higher likelihood) decides; log-likelihoods equal to nine
+    # decimals are a tie, which the stronger test (listed first) wins.  The other rejected causes are
+    # fitted too and listed as alternatives.
     fitted_alternatives = []
     for cand in rejected:
         cand_spec, cand_info = extend_for(data, model, cand)

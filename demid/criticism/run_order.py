@@ -95,7 +95,8 @@ def assess_run_order(runs, coded: np.ndarray, responses: dict[str, np.ndarray],
 
 
 def _follows_response(runs: np.ndarray, responses: dict[str, np.ndarray]) -> tuple[str, float] | None:
-    """The response whose ranks the run column follows most closely, if |rho| >= the threshold."""
+    """The response whose ranks the run column follows most closely (of equally close ones the first listed), if
+    |rho| >= the threshold."""
     best = None
     for name, y in responses.items():
         y = np.asarray(y, dtype=float)

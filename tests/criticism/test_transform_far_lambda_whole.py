@@ -1,0 +1,39 @@
+"""A Box-Cox transform whose 99 % interval holds no convenient lambda (criticism.extensions.extend_for): responses
+built with lambda 2.7 or -2.6 and little noise, so that neither log, sqrt, inverse nor any of the nice values lies
+inside; the lambda used is then lambda-hat to one decimal.  Lambda-hat, the 95 % interval and the lambda used
+against the profile computed here with numpy (tests/criticism/test_extensions_whole.py's)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy import stats
+
+from demid.criticism.catalogue import LAMBDA_FINE_GRID, NICE_LAMBDAS, Hypothesis
+from demid.criticism.extensions import extend_for
+from demid.criticism.models import TRANSFORM_NAMES, Model, ModelForm
+from demid.design import model_matrix, quadratic_terms
+from tests.criticism.test_extensions_whole import _profile
+from tests.criticism.test_models_properties import _data
+
+
+@pytest.mark.parametrize("power", [2.7, -2.6])
+@pytest.mark.parametrize("seed", [0, 1])
+def test_a_lambda_far_from_every_convenient_value_is_used_to_one_decimal(power, seed):
+    data = _data(seed, 3)
+    rng = np.random.default_rng(seed)
+    eta = 2.0 + 0.6 * data.coded[:, 0] - 0.4 * data.coded[:, 1] + rng.normal(scale=1e-4, size=data.n)
+    data.y = (1 + power * eta / 10) ** (1 / power) * 10
+    model = Model(data, ModelForm())
+    spec, info = extend_for(data, model, Hypothesis("response_transform", "boxcox"))
+    prof = _profile(data.y, model_matrix(data.coded, quadratic_terms(2)))
+    best = int(np.argmax(prof))
+    n, df = data.n, model.df_resid - 1
+    f_ratio = df * np.expm1(2 * (prof[best] - prof) / n)
+    inside = LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.95, 1, df)]
+    plausible = LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.99, 1, df)]
+    assert not [v for v in (*TRANSFORM_NAMES, *NICE_LAMBDAS) if plausible.min() <= v <= plausible.max()]
+    assert info["lambda_hat"] == pytest.approx(LAMBDA_FINE_GRID[best], abs=1e-9)
+    assert info["lambda_ci"] == pytest.approx([inside.min(), inside.max()], abs=1e-9)
+    assert spec.lam == pytest.approx(round(float(LAMBDA_FINE_GRID[best]), 1), abs=1e-12)
+    assert abs(spec.lam - power) <= 0.25
