@@ -65,6 +65,7 @@ def _run_heap(tmp_path, name):
     return json.loads(out.read_text())
 
 
+@pytest.mark.workflow  # a whole DEM simulation (twice), like a workflow run
 def test_small_kratos_heap_is_plausible_and_repeats_exactly(tmp_path):
     pytest.importorskip("KratosMultiphysics.DEMApplication",
                         reason="Kratos DEM not installed (pip install -r requirements-dem.txt)")
