@@ -275,7 +275,10 @@ def percent_text(fraction: float, digits: int = 3) -> str:
         return "0 %"
     if size < 1e-4:
         return "< 0.01 %"
-    return _minus(f"{100 * fraction:.{digits}g} %")
+    text = f"{100 * fraction:.{digits}g}"
+    if "e" in text:  # rounded up to 10**digits % (999.5 % and up): "1000 %", not "1e+03 %"
+        text = f"{100 * fraction:.0f}"
+    return _minus(f"{text} %")
 
 
 def coordinate_text(value: float, lower: float, upper: float) -> str:
