@@ -303,3 +303,8 @@ def shares_apart(before: float, after: float) -> tuple[str, str]:
         if texts[0] != texts[1] or before == after:
             break
     return texts
+
+
+def shares_change_text(before: float, after: float) -> str:
+    """"before % → after %", the two shares read apart (:func:`shares_apart`)."""
+    return " % → ".join(shares_apart(before, after)) + " %"

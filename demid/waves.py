@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from .precision import counted, q2_text, shares_apart
+from .precision import counted, q2_text, shares_change_text
 from .simulation import reserved_file
 from .spec import MaterialSpec
 from .surrogate_choice import MISFIT_P
@@ -164,8 +164,8 @@ def measured_change(evidence: WaveEvidence) -> float | None:
 
 
 def _change_text(evidence: WaveEvidence, change: float) -> str:
-    before, after = shares_apart(evidence.previous_pct, evidence.plausible_pct)
-    return (f"the plausible share of the search range went {before} % → {after} % from wave {evidence.wave - 1} "
+    shares = shares_change_text(evidence.previous_pct, evidence.plausible_pct)
+    return (f"the plausible share of the search range went {shares} from wave {evidence.wave - 1} "
             f"to wave {evidence.wave} ({100 * change:+.1f} %)")
 
 
@@ -294,7 +294,7 @@ def stop_decision(value: dict | None, evidence: WaveEvidence) -> dict:
         return {"stop": True, "action": "stop", "reason": (
             f"the {value['count']} proposed runs are expected to shrink the plausible set of '{value['scenario']}' "
             f"by only {100 * value['expected_contraction']:.1f} % "
-            f"({' % → '.join(shares_apart(value['plausible_fraction_pct'], value['expected_fraction_pct']))} % "
+            f"({shares_change_text(value['plausible_fraction_pct'], value['expected_fraction_pct'])} "
             f"of the wave's range) and the surrogates' leave-one-out error "
             f"is at most {_largest(evidence.surrogates):.2f} of the tolerance band's half-width: the band, not the "
             "surrogate, fixes the set's boundary, so more runs are not expected to change the set by more than its "

@@ -22,7 +22,7 @@ import numpy as np
 import pandas as pd
 
 from ..criticism.reach import Reach, saturation_advice
-from ..precision import rough_text, shares_apart
+from ..precision import rough_text, shares_change_text
 from ..surrogate_choice import sets_do_not_predict
 from .measurements import measurement_order
 from .verdicts import unpredictive_responses
@@ -259,16 +259,17 @@ def _next_wave(spec, value: dict | None, best_observable: str) -> list[AdviceIte
         return []
     label = next((sc.label for sc in spec.scenarios if sc.name == value["scenario"]), value["scenario"])
     shrink = value["expected_contraction"]
+    shares = shares_change_text(value["plausible_fraction_pct"], value["expected_fraction_pct"])
     if value.get("stop"):
         helps = (f"measuring {best_observable}" if best_observable else "a new kind of measurement")
         return [AdviceItem(spec.name, "stop", "", "", "", (
             f"Stop simulating runs of this kind: the {value['count']} proposed runs (tables/next_runs.csv) are "
             f"expected to shrink the plausible set of *{label}* by only {100 * shrink:.1f} % "
-            f"({_shares(value)} of the search range); "
+            f"({shares} of the search range); "
             f"its width is set by the measurement band, not by the surrogate. What would help: {helps}, or a "
             "tighter measurement of the observables already used."))]
     expect = (f"they are expected to shrink the plausible set of *{label}* by about {100 * shrink:.0f} % "
-              f"({_shares(value)} of the search range)"
+              f"({shares} of the search range)"
               if np.isfinite(shrink) else "the plausible set is empty, so their value cannot be estimated")
     return [AdviceItem(spec.name, "next_runs", "", "", "", (
         f"Simulate the {value['count']} proposed runs (tables/next_runs.csv): {expect}."))]
@@ -326,8 +327,3 @@ def material_advice(spec, verdicts: pd.DataFrame, *, ranking: pd.DataFrame | Non
                    + _next_wave(spec, wave_value, ", ".join(_label(spec, o) for o in best.split("+") if o))
                    + _wave_decision(spec, wave_decision)
                    + _measurement_order(spec, ranking, unpredictive))
-
-
-def _shares(value: dict) -> str:
-    """The plausible share now and after the proposed runs, as the loop's stop line prints them."""
-    return " % → ".join(shares_apart(value["plausible_fraction_pct"], value["expected_fraction_pct"])) + " %"
