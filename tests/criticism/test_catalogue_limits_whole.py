@@ -16,6 +16,7 @@ from scipy import stats
 from demid.criticism.catalogue import CAUSES, Hypothesis, Round
 from demid.criticism.level1 import prepare_data
 from demid.criticism.models import Model, ModelForm
+from tests.criticism.test_lack_of_fit_whole import lack_of_fit_by_hand
 
 GRID = [(a, b) for a, b in product((-1.0, 0.0, 1.0), repeat=2)]
 
@@ -54,15 +55,8 @@ def test_lack_of_fit_needs_one_degree_of_freedom_of_each_kind(points, repeats, d
         assert found == []
         return
     (h,) = found
-    sse = float(np.sum((y - x @ np.linalg.lstsq(x, y, rcond=None)[0]) ** 2))
-    _, group = np.unique(np.column_stack([a, b]), axis=0, return_inverse=True)
-    group = group.ravel()
-    means = np.bincount(group, weights=y) / np.bincount(group)
-    sspe = float(np.sum((y - means[group]) ** 2))
-    df_pe = len(y) - group.max() - 1
-    df_lof = len(y) - 6 - df_pe
+    f, df_lof, df_pe = lack_of_fit_by_hand(table)
     assert (df_lof, df_pe) == df and h.info["df"] == [df_lof, df_pe]
-    f = ((sse - sspe) / df_lof) / (sspe / df_pe)
     assert h.statistic == pytest.approx(f, rel=1e-8)
     assert h.logp == pytest.approx(stats.f.logsf(f, df_lof, df_pe), rel=1e-8, abs=1e-12)
 

@@ -14,6 +14,21 @@ from demid.criticism.level1 import prepare_data
 from demid.criticism.models import Model, ModelForm
 
 
+def lack_of_fit_by_hand(table: pd.DataFrame) -> tuple[float, int, int]:
+    """The lack-of-fit F of the full quadratic in columns a, b against y, and its two degrees of freedom (lack of
+    fit, pure error), from least squares and the replicate groups' means written out."""
+    a, b, y = (table[c].to_numpy() for c in ("a", "b", "y"))
+    x = np.column_stack([np.ones_like(a), a, b, a * b, a * a, b * b])
+    sse = float(np.sum((y - x @ np.linalg.lstsq(x, y, rcond=None)[0]) ** 2))
+    _, group = np.unique(np.column_stack([a, b]), axis=0, return_inverse=True)
+    group = group.ravel()
+    means = np.bincount(group, weights=y) / np.bincount(group)
+    sspe = float(np.sum((y - means[group]) ** 2))
+    df_pe = len(y) - group.max() - 1
+    df_lof = len(y) - 6 - df_pe
+    return ((sse - sspe) / df_lof) / (sspe / df_pe), df_lof, df_pe
+
+
 @settings(max_examples=12, deadline=None, derandomize=True)
 @given(n_groups=st.integers(1, 40), n_cols=st.sampled_from([1, 3, 8]), seed=st.integers(0, 999),
        large=st.booleans())
@@ -48,16 +63,7 @@ def test_the_catalogues_lack_of_fit_is_the_classical_anova(points_per_side, repl
     data, _ = prepare_data(table, ["a", "b"], "y", 1.0, (), None)
     model = Model(data, ModelForm())
     h = next(h for h in Round(data, model, 19, np.random.default_rng(0)).hypotheses if h.cause == "lack_of_fit")
-    a, b, y = (table[c].to_numpy() for c in ("a", "b", "y"))
-    x = np.column_stack([np.ones_like(a), a, b, a * b, a * a, b * b])
-    sse = float(np.sum((y - x @ np.linalg.lstsq(x, y, rcond=None)[0]) ** 2))
-    _, group = np.unique(np.column_stack([a, b]), axis=0, return_inverse=True)
-    group = group.ravel()
-    means = np.bincount(group, weights=y) / np.bincount(group)
-    sspe = float(np.sum((y - means[group]) ** 2))
-    df_pe = len(y) - group.max() - 1
-    df_lof = len(y) - 6 - df_pe
-    f = ((sse - sspe) / df_lof) / (sspe / df_pe)
+    f, df_lof, df_pe = lack_of_fit_by_hand(table)
     assert h.statistic == pytest.approx(f, rel=1e-8)
     assert h.logp == pytest.approx(stats.f.logsf(f, df_lof, df_pe), rel=1e-8, abs=1e-12)
     assert h.info["df"] == [df_lof, df_pe]

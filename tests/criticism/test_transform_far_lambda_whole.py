@@ -7,13 +7,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from scipy import stats
 
-from demid.criticism.catalogue import LAMBDA_FINE_GRID, NICE_LAMBDAS, Hypothesis
+from demid.criticism.catalogue import NICE_LAMBDAS, Hypothesis
 from demid.criticism.extensions import extend_for
 from demid.criticism.models import TRANSFORM_NAMES, Model, ModelForm
-from demid.design import model_matrix, quadratic_terms
-from tests.criticism.test_extensions_whole import _profile
+from tests.criticism.test_extensions_whole import _lambda_by_hand
 from tests.criticism.test_models_properties import _data
 
 
@@ -26,14 +24,9 @@ def test_a_lambda_far_from_every_convenient_value_is_used_to_one_decimal(power, 
     data.y = (1 + power * eta / 10) ** (1 / power) * 10
     model = Model(data, ModelForm())
     spec, info = extend_for(data, model, Hypothesis("response_transform", "boxcox"))
-    prof = _profile(data.y, model_matrix(data.coded, quadratic_terms(2)))
-    best = int(np.argmax(prof))
-    n, df = data.n, model.df_resid - 1
-    f_ratio = df * np.expm1(2 * (prof[best] - prof) / n)
-    inside = LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.95, 1, df)]
-    plausible = LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.99, 1, df)]
+    best, inside, plausible = _lambda_by_hand(data, model)
     assert not [v for v in (*TRANSFORM_NAMES, *NICE_LAMBDAS) if plausible.min() <= v <= plausible.max()]
-    assert info["lambda_hat"] == pytest.approx(LAMBDA_FINE_GRID[best], abs=1e-9)
+    assert info["lambda_hat"] == pytest.approx(best, abs=1e-9)
     assert info["lambda_ci"] == pytest.approx([inside.min(), inside.max()], abs=1e-9)
-    assert spec.lam == pytest.approx(round(float(LAMBDA_FINE_GRID[best]), 1), abs=1e-12)
+    assert spec.lam == pytest.approx(round(float(best), 1), abs=1e-12)
     assert abs(spec.lam - power) <= 0.25

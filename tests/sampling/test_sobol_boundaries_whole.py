@@ -14,17 +14,9 @@ from hypothesis import strategies as st
 
 from demid.sampling import Domain
 from demid.sampling.sobol import _extreme_points, sobol_admissible_set, sobol_fraction
+from tests.sampling.test_sobol_whole import Linear
 
 SETTINGS = settings(max_examples=6, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate])
-
-
-class Linear:
-    def __init__(self, coef):
-        self.coef = np.asarray(coef, dtype=float)
-
-    def predict(self, points):
-        x = np.atleast_2d(np.asarray(points, dtype=float))
-        return self.coef[0] + x @ self.coef[1:]
 
 
 @given(seed=st.integers(0, 10_000), k=st.integers(1, 3), sign=st.sampled_from([-1.0, 1.0]))
