@@ -214,6 +214,17 @@ Tried this round, not kept (each against the same seeds of the code above):
   short of 0.8 x on crossing's default seeds, so not kept this round;
 * a fourth kriging start at a correlation length of 0.07 (the ridge's width): identical sets on the ridge (the
   likelihood search already finds the same optimum).
+
+Tried later, not kept: a stepwise-uncertainty-reduction batch for the boundary runs (each pick the candidate that
+removes the most predictive variance where the classification is uncertain: the sum over the candidate grid of
+min(p, 1 - p) times each observable's squared posterior covariance with the pick over its noise-inflated variance,
+the covariance updated after each pick; exploring runs as now).  Where every judged surrogate is kriging: ridge
+0.832 -> 0.820 (seeds 0-9), 0.826 -> 0.870 (100-109, one more study beyond noise), 0.873 -> 0.802 (200-209);
+pooled over 30 seeds 0.857 -> 0.870 (13 better, 7 worse), crossing and corner unchanged (their last sets are mostly
+judged by the quadratic).  For every wave, the quadratic's covariance included: corner 0.64 -> 1.03 x and
+crossing 0.99 -> 1.13 x (a quadratic's covariance is global, so its picks go where a D-optimal design would, away
+from the boundary).  With the placement already at an oracle box's floor under kriging (design_floor.py), a
+better batch criterion has little left to win on these simulators.
 """
 
 from __future__ import annotations
