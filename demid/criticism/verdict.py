@@ -134,9 +134,10 @@ def _entry_text(e: dict) -> str:
 
 
 def strongest_rival(named, hypotheses) -> object | None:
-    """The test of another kind at least as significant as the named cause's, or None when the cause is
-    singled out (see OVERWHELMING_P).  The Box-Cox test's bootstrap p-value is floored at 1/(B+1) and is
-    not compared.  Outliers and slips of one run are one kind: the run's evidence is its strongest test."""
+    """The most significant test of another kind that is strictly more significant than the named cause's (a
+    tie leaves the named cause standing), or None when the cause is singled out (see OVERWHELMING_P).  A named
+    Box-Cox transform has no rival: its bootstrap p-value is floored at 1/(B+1) and is not compared.  Outliers
+    and slips of one run are one kind: the run's evidence is its strongest test."""
     if named.cause == "response_transform":
         return None
     kind = _RIVAL_KIND.get(named.cause, named.cause)
