@@ -1014,7 +1014,7 @@ _EXACT_SET_TESTS = ["tests/sampling/test_exact_sets.py", "tests/sampling/test_qu
                     "tests/sampling/test_exact_set_whole.py", "tests/sampling/test_ring_distance_whole.py",
                     "tests/sampling/test_refusals_and_empty_tables_whole.py", "tests/sampling/test_parallelogram_whole.py",
                     "tests/sampling/test_companion_roots_whole.py", "tests/sampling/test_exact_boundaries_whole.py",
-                    "tests/sampling/test_roots_boundaries_whole.py"]
+                    "tests/sampling/test_roots_boundaries_whole.py", "tests/sampling/test_quadrature_cap_whole.py"]
 # level 1's naming of causes (aliasing, extensions, naming, slips): the criticism's planted effects and its
 # confirming and deciding runs; the level-2, figure and 3-factor tests exercise other modules, the slowest
 # confirming-runs test repeats an outlier-or-slip case of the faster ones at four times their cost, and the two
@@ -2286,6 +2286,8 @@ EQUIVALENT: dict[str, str] = {
         "the sweep of pareto_front, whose order among the kept points is unchanged",
     "demid/pareto.py::polish_front::0 => -1#1":
         "u is one point (Domain.from_unit makes it one row): its prediction has one entry, first and last",
+    "demid/pareto.py::polish_front::0 => -1#2":
+        "u is SLSQP's one point (res.x, 1-d): Domain.from_unit makes it one row (np.atleast_2d), first and last",
     "demid/pareto.py::polish_front::[(0.0, 1.0)] * domain.dim => [(0.0, 1.0)]#0":
         "scipy's L-BFGS-B broadcasts a single (lower, upper) pair to every coordinate (checked with scipy 1.17.1)",
     "demid/uncertainty/plausible.py::plausible_admissible_set::observables = tuple(observables) => pass#0":
