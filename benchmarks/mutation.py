@@ -1105,7 +1105,8 @@ TABLE: dict[str, dict] = {
                   "tests/test_fit_statistics_whole.py", "tests/test_surrogate_whole.py", "tests/test_blocks_properties.py",
                   "tests/test_core_contracts.py", "tests/test_predict_all_shapes.py", "tests/inputs/test_one_replicate_rule.py",
                   "tests/test_judged_scenario_properties.py", "tests/inputs/test_factor_round_off.py",
-                  "tests/criticism/test_noise_free.py", "tests/test_surrogate_boundaries_whole.py"],
+                  "tests/criticism/test_noise_free.py", "tests/test_surrogate_boundaries_whole.py",
+                  "tests/combinations/test_canonical_published.py"],
     },
     "demid/precision.py": {
         "functions": None,
@@ -1113,7 +1114,7 @@ TABLE: dict[str, dict] = {
                   "tests/test_surrogate.py", "tests/criticism/test_noise_free.py", "tests/test_reported_boundaries.py",
                   "tests/test_precision_whole.py", "tests/test_surrogate_properties.py",
                   "tests/inputs/test_read_table_whole.py", "tests/test_printed_quantum_whole.py",
-                  "tests/test_precision_boundaries_whole.py"],
+                  "tests/test_precision_boundaries_whole.py", "tests/test_shares_apart.py"],
     },
     "demid/criticism/models.py": {
         "functions": None,

@@ -60,3 +60,14 @@ def test_a_piece_no_longer_than_1e_15_is_left_out(length, kept):
         assert total[0, 0] == pytest.approx(1e6 * length, rel=1e-12)
     else:
         assert total[0, 0] == 0.0 and error[0] == 0.0
+
+
+@pytest.mark.parametrize("value", [1e-9, -1e-6, 1.0, -3e3, 1e6])
+@pytest.mark.parametrize("length", [1.0, 0.25])
+def test_a_constant_s_error_estimate_is_round_off_whatever_its_scale(value, length):
+    """A constant is integrated exactly by both rules: the estimate is round-off, at least 50 machine epsilons of
+    the integral (QUADPACK's floor) and far below any tolerance, relative to the integral at every scale."""
+    total, error = integrate(lambda o, s: np.full((len(s), 1), value), [0], [0.0], [length], 1, rtol=1e-8)
+    assert total[0, 0] == pytest.approx(value * length, rel=1e-14)
+    floor = 50 * np.finfo(float).eps * abs(total[0, 0])
+    assert floor * (1 - 1e-12) <= error[0] < 1e-11 * abs(total[0, 0])
