@@ -2792,6 +2792,9 @@ SETTINGS: dict[str, str] = {
         "the order of the grid nodes the bias search starts from (the bias enters the ranking at a weight of 1e-5)",
     "demid/sampling/polish.py::start_points::1.0 / d => 1.0#1":
         "the cap on the grid the polishing starts from when no node is admissible (its resolution)",
+    "demid/sampling/polish.py::start_points::1.0 / d => 1.0 * d#1":
+        "the cap on the grid the polishing starts from when no node is admissible (its resolution: about a "
+        "million nodes; without the cap a grid finer than 100 per axis in three factors is searched whole)",
     "demid/sampling/polish.py::start_points::min(n, int(1000000.0 ** (1.0 / d))) => "
     "max(n, int(1000000.0 ** (1.0 / d)))#0":
         "the resolution of the grid the polishing starts from when no node is admissible",
