@@ -1111,7 +1111,8 @@ TABLE: dict[str, dict] = {
                   "tests/test_core_contracts.py", "tests/test_predict_all_shapes.py", "tests/inputs/test_one_replicate_rule.py",
                   "tests/test_judged_scenario_properties.py", "tests/inputs/test_factor_round_off.py",
                   "tests/criticism/test_noise_free.py", "tests/test_surrogate_boundaries_whole.py",
-                  "tests/combinations/test_canonical_published.py", "tests/test_surrogate_anova_whole.py"],
+                  "tests/combinations/test_canonical_published.py", "tests/test_surrogate_anova_whole.py",
+                  "tests/test_influence_refit_limit_whole.py"],
     },
     "demid/precision.py": {
         "functions": None,
@@ -2704,6 +2705,12 @@ EQUIVALENT: dict[str, str] = {
     "np.sum(np.abs(u - np.clip(u, 0, 1)))#0":
         "the penalty is added to a Python float: float + numpy float64 is a numpy float64 of the same value, "
         "which Nelder-Mead reads the same",
+    "demid/sampling/evaluate.py::closest_approach::float(worst(u)[0]) => worst(u)[0]#1":
+        "the search's value becomes a numpy float64 (a float subclass) of the same value: it is only compared, and "
+        "both callers convert it (evaluate's float(best_error)) or compare it (ranking's closest <= tolerance)",
+    "demid/canonical.py::Canonical.to_json::float(self.value) => self.value#0":
+        "Canonical.value is a Python float already: canonical_analysis, its only maker, stores surface(), which "
+        "returns float(), or float('nan')",
     "demid/sampling/evaluate.py::closest_approach::0 => -1#2": "u is one point (the search's or its start u0): worst(u) and from_unit(u) have one entry, first and last",
     "demid/sampling/evaluate.py::closest_approach::0 => -1#3": "u is one point (the search's or its start u0): worst(u) and from_unit(u) have one entry, first and last",
     "demid/sampling/evaluate.py::closest_approach::0 => -1#4": "u is one point (the search's or its start u0): worst(u) and from_unit(u) have one entry, first and last",
