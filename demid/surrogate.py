@@ -222,7 +222,7 @@ class SurrogateFit:
             keep = [i for i, b in enumerate(blocks) if b != block] + beyond
             beta, *_ = np.linalg.lstsq(x[:, keep], y, rcond=None)
             sse_reduced = float(np.sum((y - x[:, keep] @ beta) ** 2))
-            out.append((block, len(blocks) - len(keep), sse_reduced - sse_full))
+            out.append((block, blocks.count(block), sse_reduced - sse_full))  # its own terms, not the blocks'
         return out
 
     def anova_frame(self) -> pd.DataFrame:

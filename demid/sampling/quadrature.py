@@ -36,8 +36,10 @@ def integrate(func, owners, lower, upper, n_owners: int, rtol: float, columns: i
     Piece m covers [lower[m], upper[m]] of owner ``owners[m]``.  Each piece is mapped by
     ``s = s0 + h (1 - cos(pi v)) / 2``, which turns square-root ends (a line grazing a curve)
     into smooth ones, and integrated by Gauss-Kronrod 7-15 in ``v``; pieces are bisected until
-    the QUADPACK error estimate meets ``rtol`` of the owner's integral.  Returns integrals
-    (n_owners, columns) and the summed error estimates of the first column (n_owners,).
+    the QUADPACK error estimate meets ``rtol`` of the owner's integral (or ``atol``), for at most
+    :data:`_MAX_ROUNDS` rounds; a round whose bisection would leave more than :data:`_MAX_PIECES` pieces
+    is the last (exactly :data:`_MAX_PIECES` are still made).  Pieces no longer than 1e-15 are left out.
+    Returns integrals (n_owners, columns) and the summed error estimates of the first column (n_owners,).
     """
     owners = np.asarray(owners, dtype=int)
     lower, upper = np.asarray(lower, dtype=float), np.asarray(upper, dtype=float)
