@@ -2420,8 +2420,8 @@ EQUIVALENT: dict[str, str] = {
     # --- design_check's numpy scalars
     "demid/design_check.py::_round_to_scale::float(np.max(np.abs(x))) => np.max(np.abs(x))#0":
         _NUMPY_FLOAT + " (scale only enters isfinite, a comparison with 0 and log10)",
-    "demid/design_check.py::_level_coding::float(np.abs(coded[on]).max()) => np.abs(coded[on]).max()#0":
-        _NUMPY_FLOAT + " (round() of it is the same number, one entry of a key only compared)",
+    "demid/design_check.py::_level_coding::float(np.abs(placed).max()) => np.abs(placed).max()#0":
+        _NUMPY_FLOAT + " (one entry of a key only compared)",
     "demid/design_check.py::_ccd_alpha_of_table::float(np.mean(ratios)) => np.mean(ratios)#0":
         _NUMPY_FLOAT + " (the alpha shown only enters comparisons, arithmetic, :.6g and a probe design's alpha, "
         "which axial_distances reads as a float array)",
