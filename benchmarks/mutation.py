@@ -2417,6 +2417,17 @@ EQUIVALENT: dict[str, str] = {
     "demid/surrogate_choice.py::kriging_fits::1 => 0#0":
         "quadratic_trend of no rows has the same number of columns as of one row (checked for 1-4 factors): "
         "only the column count is read",
+    # --- ninth round, the input, transcription and report modules (seeds 34 and 35)
+    "demid/transcription/engine.py::DesignFit.__init__::0 => 1#2":
+        "n_groups for a design of no run: check_transcription, DesignFit's one caller, refuses a table without a "
+        "single response value first, so n >= 1 and the branch is never taken",
+    "demid/transcription/typos.py::cell_decimals::int(exponent) => exponent#0":
+        "the isinstance test beside it lets only a Python int through (Decimal's exponent of a finite number); "
+        "int() of it is itself",
+    "demid/blocks.py::check_blocks::1 => 0#2":
+        "model_columns[:, 0:] adds the intercept's column to the correlations: both callers pass "
+        "model_matrix(coded, quadratic_terms(k)), whose first column is all ones, so its centred column is 0, its "
+        "correlations 0/0 -> nan_to_num 0, and the largest |correlation| is the same",
     # --- design_check's numpy scalars
     "demid/design_check.py::_round_to_scale::float(np.max(np.abs(x))) => np.max(np.abs(x))#0":
         _NUMPY_FLOAT + " (scale only enters isfinite, a comparison with 0 and log10)",

@@ -159,6 +159,9 @@ def check_transcription(table: pd.DataFrame, factors: list[str], response: str, 
     need_actual = any(units == "actual" for units, _ in coef_index.values())
     x_actual, y_all, z = _read_cells(table, factors, response, log_factors, source)
     fit_rows = np.isfinite(y_all)
+    if not fit_rows.any():
+        raise InputError(f"no run has a value of '{response}': there is nothing to refit", source=source,
+                         column=response)
     y = y_all[fit_rows]
 
     table_coding = coding if coding is not None else Coding.from_levels(factors, z, alpha)

@@ -14,6 +14,7 @@ import pandas as pd
 import pytest
 
 from tests.transcription.test_check_whole import _statistics, _table, _transposed
+from demid.errors import InputError
 from demid.transcription.check import check_transcription
 
 
@@ -69,3 +70,13 @@ def test_with_only_the_response_printed_the_slipped_response_cell_is_named(seed,
     assert (first.run, first.found_text, first.suggested_text, first.restores) == (row + 1, slipped_text,
                                                                                    found_text, 3)
     assert f"run {row + 1}, column 'y' reads {slipped_text} where {found_text} restores all 3" in result.message
+
+
+def test_a_table_without_a_single_response_value_is_refused_in_one_line_naming_the_column():
+    table, names, coding, alpha = _table(1, 2, 1.0)
+    table["y"] = np.nan
+    with pytest.raises(InputError) as info:
+        check_transcription(table, names, "y", {"r2": "0.95"}, alpha=alpha, source="paper.yaml")
+    text = str(info.value)
+    assert "paper.yaml" in text and "column 'y'" in text and "no run has a value of 'y'" in text
+    assert "\n" not in text
