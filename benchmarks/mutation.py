@@ -1113,7 +1113,7 @@ TABLE: dict[str, dict] = {
                   "tests/test_surrogate.py", "tests/criticism/test_noise_free.py", "tests/test_reported_boundaries.py",
                   "tests/test_precision_whole.py", "tests/test_surrogate_properties.py",
                   "tests/inputs/test_read_table_whole.py", "tests/test_printed_quantum_whole.py",
-                  "tests/test_precision_boundaries_whole.py"],
+                  "tests/test_precision_boundaries_whole.py", "tests/test_shares_apart.py"],
     },
     "demid/criticism/models.py": {
         "functions": None,
@@ -1348,14 +1348,15 @@ TABLE: dict[str, dict] = {
         "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_repair_levels_whole.py",
                   "tests/transcription/test_engine_whole.py", "tests/transcription/test_engine_rank_whole.py",
                   "tests/transcription/test_engine_rank_edge_whole.py",
-                  "tests/transcription/test_estimate_coding_whole.py"],
+                  "tests/transcription/test_estimate_coding_whole.py", "tests/transcription/test_estimate_coding_rule_whole.py",
+                  "tests/transcription/test_check_ranking_whole.py"],
     },
     "demid/transcription/check.py": {
         "functions": None,
         "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_typo_stop.py", "tests/transcription/test_likely_typos.py",
                   "tests/transcription/test_check_whole.py", "tests/transcription/test_check_source_default.py",
                   "tests/transcription/test_cell_repair_ties_whole.py",
-                  "tests/transcription/test_check_messages_whole.py",
+                  "tests/transcription/test_check_messages_whole.py", "tests/transcription/test_check_ranking_whole.py",
                   "tests/test_reconstruct.py", "tests/inputs/test_cli.py::test_check_transcription_cli_finds_planted_slip",
                   "tests/inputs/test_cli.py::test_check_transcription_cli_consistent_exit_0"],
     },
@@ -1394,7 +1395,8 @@ TABLE: dict[str, dict] = {
     "demid/design.py": {
         "functions": None,
         "tests": ["tests/inputs/test_design.py", "tests/inputs/test_data.py", "tests/test_core_contracts.py",
-                  "tests/inputs/test_design_whole.py",
+                  "tests/inputs/test_design_whole.py", "tests/inputs/test_classify_points_whole.py",
+                  "tests/inputs/test_estimability_sphere_whole.py",
                   "tests/inputs/test_stranger_tables.py::test_valid_designs_validate_and_are_coded_by_their_geometry"],
     },
     "demid/tolerance.py": {
@@ -1405,7 +1407,7 @@ TABLE: dict[str, dict] = {
     },
     "demid/formulas.py": {
         "functions": None,
-        "tests": ["tests/test_formulas.py"],
+        "tests": ["tests/test_formulas.py", "tests/criticism/test_level2_within_whole.py"],
     },
     "demid/canonical.py": {
         "functions": None,
@@ -1555,7 +1557,7 @@ TABLE: dict[str, dict] = {
                           "test_a_level_value_that_differs_from_the_other_runs_at_its_level_is_warned_about")],
                   "tests/test_reported_boundaries.py::test_level_coding_recovers_the_centre_and_unit_of_a_design_with_or_without_its_centre_run",
                   "tests/inputs/test_design_whole.py", "tests/inputs/test_design_check_coding_whole.py",
-                  "tests/inputs/test_level_coding_axial_whole.py"],
+                  "tests/inputs/test_level_coding_axial_whole.py", "tests/inputs/test_level_coding_far_from_zero_whole.py"],
     },
     "demid/criticism/discrimination.py": {
         "functions": None,
