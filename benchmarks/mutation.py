@@ -1105,7 +1105,8 @@ TABLE: dict[str, dict] = {
                   "tests/test_fit_statistics_whole.py", "tests/test_surrogate_whole.py", "tests/test_blocks_properties.py",
                   "tests/test_core_contracts.py", "tests/test_predict_all_shapes.py", "tests/inputs/test_one_replicate_rule.py",
                   "tests/test_judged_scenario_properties.py", "tests/inputs/test_factor_round_off.py",
-                  "tests/criticism/test_noise_free.py", "tests/test_surrogate_boundaries_whole.py"],
+                  "tests/criticism/test_noise_free.py", "tests/test_surrogate_boundaries_whole.py",
+                  "tests/test_anova_frame_whole.py"],
     },
     "demid/precision.py": {
         "functions": None,
@@ -1390,7 +1391,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_surrogate.py", "tests/test_statistics_known_answers.py", "tests/inputs/test_one_replicate_rule.py",
                   "tests/test_fit_statistics.py", "tests/test_fit_statistics_whole.py", "tests/test_core_contracts.py",
-                  "tests/criticism/test_linear_time_equivalents.py"],
+                  "tests/criticism/test_linear_time_equivalents.py", "tests/test_anova_frame_whole.py"],
     },
     "demid/design.py": {
         "functions": None,
@@ -2430,6 +2431,8 @@ EQUIVALENT: dict[str, str] = {
         "model_columns[:, 0:] adds the intercept's column to the correlations: both callers pass "
         "model_matrix(coded, quadratic_terms(k)), whose first column is all ones, so its centred column is 0, its "
         "correlations 0/0 -> nan_to_num 0, and the largest |correlation| is the same",
+    "demid/pareto.py::polish_front::0 => -1#2":
+        "domain.from_unit(u) of one point (u is one SLSQP solution) is one row: [0] and [-1] are the same row",
     # --- design_check's numpy scalars
     "demid/design_check.py::_round_to_scale::float(np.max(np.abs(x))) => np.max(np.abs(x))#0":
         _NUMPY_FLOAT + " (scale only enters isfinite, a comparison with 0 and log10)",

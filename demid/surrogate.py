@@ -219,10 +219,11 @@ class SurrogateFit:
         beyond = list(range(len(blocks), x.shape[1]))  # the block terms (demid.blocks): in every reduced fit
         out = []
         for block in dict.fromkeys(b for b in blocks if b != "Intercept"):
+            dropped = [i for i, b in enumerate(blocks) if b == block]
             keep = [i for i, b in enumerate(blocks) if b != block] + beyond
             beta, *_ = np.linalg.lstsq(x[:, keep], y, rcond=None)
             sse_reduced = float(np.sum((y - x[:, keep] @ beta) ** 2))
-            out.append((block, len(blocks) - len(keep), sse_reduced - sse_full))
+            out.append((block, len(dropped), sse_reduced - sse_full))
         return out
 
     def anova_frame(self) -> pd.DataFrame:
