@@ -80,3 +80,16 @@ def test_a_table_without_a_single_response_value_is_refused_in_one_line_naming_t
     text = str(info.value)
     assert "paper.yaml" in text and "column 'y'" in text and "no run has a value of 'y'" in text
     assert "\n" not in text
+
+
+def test_repairs_alike_in_kind_and_fit_are_listed_by_run_then_by_the_columns_place_in_the_table():
+    """Forty leads of a table whose R² and RMSE (two decimals) many one-digit repairs restore: among those of one
+    kind, all restoring both with no misfit left, the lower run comes first, then the column further left (a
+    factor cell of run 6 after the response cells of runs 1-5, before run 6's own)."""
+    slipped, names, alpha, published, *_ = _slipped_factor_cell(26, 2, 2)
+    result = check_transcription(slipped, names, "y", published, alpha=alpha, max_suspects=40)
+    alike = [s for s in result.suspects if s.kind == "digit_substitution"]
+    assert all(s.restores == 2 and s.misfit == 0.0 for s in alike)
+    place = {name: i for i, name in enumerate(slipped.columns)}
+    order = [(s.run, place[s.column]) for s in alike]
+    assert len({s.column for s in alike}) == 2 and order == sorted(order)
