@@ -83,8 +83,8 @@ def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str
     for i, f in enumerate(factors):
         values, counts = np.unique(_round_to_scale(z[:, i], 11), return_counts=True)
         half_place = 0.0 if f in log_factors else 0.5 * _text_place(table, f)
-        found = _level_coding(values, counts, levels[i], half_place=half_place) if len(values) > 1 else None
-        if found is None:
+        found = _level_coding(values, counts, levels[i], half_place=half_place)
+        if found is None:  # one value: no pair of values to place on the levels
             raise InputError(f"the factor takes the single value {values[0]:g} in every run; a {dtype} design "
                              "varies each factor over at least two levels", source=src, column=f)
         centers.append(found[0])

@@ -12,9 +12,11 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
+import pytest
 
 from demid.design import ccd_points
 from demid.design_check import infer_coding
+from demid.errors import InputError
 
 
 def _tables(count: int, seed: int):
@@ -39,3 +41,11 @@ def test_the_axial_level_a_single_run_holds_places_the_coding_whatever_the_round
         place = 10.0 ** (np.floor(np.log10(np.abs(table[names].to_numpy()).max(axis=0))) - 11)
         assert np.all(np.abs(np.array(coding.unit) - unit) <= place), (coding, centre, unit)
         assert np.all(np.abs(np.array(coding.center) - centre) <= place), (coding, centre, unit)
+
+
+def test_a_factor_at_one_value_in_every_run_is_refused_naming_it():
+    table, names, centres, centre, unit = next(_tables(1, 5))
+    table[names[-1]] = 123456.5
+    with pytest.raises(InputError) as info:
+        infer_coding(table, names, {"type": "ccd", "alpha": 2.0, "center_runs": centres}, "t.csv")
+    assert info.value.column == names[-1] and "takes the single value 123456 in every run" in str(info.value)
