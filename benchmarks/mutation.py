@@ -2479,6 +2479,13 @@ EQUIVALENT: dict[str, str] = {
         "domain.from_unit(u) of one point (u is one SLSQP solution) is one row: [0] and [-1] are the same row",
     "demid/transcription/check.py::_printed_slip::0 => -1#3":
         "off[0] -> off[-1] where the test before it in the same `or` chain has made len(off) == 1: the same name",
+    "demid/data.py::implausible_targets::lo <= target <= hi => lo < target <= hi#0":
+        "a target equal to the lowest run goes on to the tests below, which pass it too: it is within one range of "
+        "the runs (not far) and no ratio of UNIT_SLIP_RATIO > 1 off lo (target * ratio > lo; a range across zero "
+        "is never off by a ratio), so it is left out all the same",
+    "demid/data.py::implausible_targets::lo <= target <= hi => lo <= target < hi#0":
+        "a target equal to the highest run is within one range of the runs and not UNIT_SLIP_RATIO beyond hi "
+        "(target < hi * ratio for hi > 0; a range across zero is never off by a ratio): left out all the same",
     # --- design_check's numpy scalars
     "demid/design_check.py::_round_to_scale::float(np.max(np.abs(x))) => np.max(np.abs(x))#0":
         _NUMPY_FLOAT + " (scale only enters isfinite, a comparison with 0 and log10)",
