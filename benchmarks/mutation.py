@@ -1424,7 +1424,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/test_core_contracts.py::test_a_quadratic_in_two_factors_needs_seven_usable_runs",
                   "tests/inputs/test_estimability.py", "tests/inputs/test_estimability_star.py",
                   "tests/inputs/test_estimability_sphere_whole.py", "tests/inputs/test_estimability_terms_whole.py",
-                  "tests/inputs/test_estimability_levels_whole.py",
+                  "tests/inputs/test_estimability_levels_whole.py", "tests/inputs/test_estimability_rank_whole.py",
                   *[f"tests/inputs/test_stranger_tables.py::{name}" for name in (
                       "test_ccd_whose_centre_runs_all_failed_is_refused", "test_criticize_refuses_a_factor_at_two_levels",
                       "test_criticize_and_fit_refuse_a_saturated_fit", "test_criticize_refuses_a_rank_deficient_fit",
