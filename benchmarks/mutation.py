@@ -2486,6 +2486,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/data.py::implausible_targets::lo <= target <= hi => lo <= target < hi#0":
         "a target equal to the highest run is within one range of the runs and not UNIT_SLIP_RATIO beyond hi "
         "(target < hi * ratio for hi > 0; a range across zero is never off by a ratio): left out all the same",
+    "demid/canonical.py::Canonical.to_json::float(self.value) => self.value#0":
+        "value is surface(xs), which returns float(...), or float('nan'): a Python float, its own float()",
     # --- design_check's numpy scalars
     "demid/design_check.py::_round_to_scale::float(np.max(np.abs(x))) => np.max(np.abs(x))#0":
         _NUMPY_FLOAT + " (scale only enters isfinite, a comparison with 0 and log10)",
@@ -2818,6 +2820,10 @@ EQUIVALENT: dict[str, str] = {
 # mutant is not equivalent.  Left out of the score like an equivalent mutant and listed apart; the score
 # counting them as survivors is printed too.
 SETTINGS: dict[str, str] = {
+    "demid/surrogate.py::SurrogateFit._influence_columns::self.n_runs <= LOO_REFIT_MAX_RUNS => self.n_runs < "
+    "LOO_REFIT_MAX_RUNS#0":
+        "a cost switch at exactly 200 runs between statsmodels' refits and the leave-one-out identity, which is "
+        "exact in exact arithmetic: the studentised residuals agree to round-off (about 1e-13), not bit for bit",
     "demid/transcription/check.py::_response_hypotheses::max(1, _CELLS_PER_BLOCK // max(len(y), 1)) => "
     "min(1, _CELLS_PER_BLOCK // max(len(y), 1))#0":
         "how many repaired response columns are refitted per batch (memory): each column's statistics are "
