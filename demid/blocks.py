@@ -20,7 +20,7 @@ BLOCK_COLUMN = "block"
 #: Coded values closer to 0 than this are on a factor's centre level.
 _ZERO = 1e-6
 
-#: Blocking counts as orthogonal when no block column correlates with a model term by more than this: the
+#: Blocking counts as orthogonal when every block column correlates with each model term by less than this: the
 #: levels of printed tables are rounded (alpha 1.414 for sqrt 2 leaves correlations of about 1e-4).
 ORTHOGONAL_CORRELATION = 0.01
 

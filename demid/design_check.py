@@ -44,9 +44,13 @@ def _level_coding(values: np.ndarray, counts: np.ndarray, levels: np.ndarray,
             # runs on axial levels: at alpha = 2 a CCD without its low axial run leaves four evenly spaced
             # values (-1, 0, 1, 2) that also read as -2, -1, 0, 1; its axial level is the one a single run
             # holds, not the factorial level or the centre.
+            # Symmetry and width are read off the nominal levels the runs are placed on, not off the coded
+            # values: those carry the print's and the float's round-off divided by the unit (1e-6 coded for a
+            # factor about 1e5 units from zero with a unit of 1), which would break a tie at random.
+            placed = levels[nearest][on]
             axial = on & (np.abs(levels[nearest]) > 1 + 1e-9)
-            key = (int(counts[on].sum()), -round(abs(coded[on].max() + coded[on].min()), 6), int(on.sum()),
-                   -round(float(np.abs(coded[on]).max()), 6), -int(counts[axial].sum()))
+            key = (int(counts[on].sum()), -abs(placed.max() + placed.min()), int(on.sum()),
+                   -float(np.abs(placed).max()), -int(counts[axial].sum()))
             if best_key is None or key > best_key:
                 best_key, best = key, (on, levels[nearest])
     if best is None:
@@ -79,8 +83,8 @@ def infer_coding(table: pd.DataFrame, factors: list[str], design: dict, src: str
     for i, f in enumerate(factors):
         values, counts = np.unique(_round_to_scale(z[:, i], 11), return_counts=True)
         half_place = 0.0 if f in log_factors else 0.5 * _text_place(table, f)
-        found = _level_coding(values, counts, levels[i], half_place=half_place) if len(values) > 1 else None
-        if found is None:
+        found = _level_coding(values, counts, levels[i], half_place=half_place)
+        if found is None:  # one value: no pair of values to place on the levels
             raise InputError(f"the factor takes the single value {values[0]:g} in every run; a {dtype} design "
                              "varies each factor over at least two levels", source=src, column=f)
         centers.append(found[0])

@@ -16,7 +16,8 @@ def require_estimable(coded: np.ndarray, usable: np.ndarray, point_types: np.nda
 
     Runs that all lie on one sphere about the design centre (a spherical CCD whose centre runs
     failed or were never made) cannot tell the intercept from the squared terms; a fit would
-    return arbitrary coefficients without complaint.
+    return arbitrary coefficients without complaint.  The rank counts the model matrix's singular values
+    above 1e-8 of the largest.
     """
     k = coded.shape[1]
     terms = quadratic_terms(k)

@@ -238,6 +238,9 @@ def _read_cells(table: pd.DataFrame, factors: list[str], response: str, log_fact
     """Factor and response values as numbers, and the factors in model units (log10 for log factors)."""
     x_actual = _numeric(table, factors, source)
     y_all = _numeric(table, [response], source)[:, 0]
+    if not np.isfinite(y_all).any():
+        raise InputError(f"no run has a value of '{response}': there is nothing to refit", source=source,
+                         column=response)
     if not np.all(np.isfinite(x_actual)):
         row, col = np.argwhere(~np.isfinite(x_actual))[0]
         raise InputError("factor value is missing", source=source, run=_runs(table)[row], column=factors[col])

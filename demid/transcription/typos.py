@@ -251,7 +251,7 @@ def likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame | None = N
         observed = sub[response].to_numpy(dtype=float)
         coded = validated.coding.to_coded(model_units(sub[factors].to_numpy(dtype=float), factors, log_factors))
         infl = _screen_residuals(coded, observed, terms, df)
-        runs = sub["run"].to_numpy() if "run" in sub.columns else np.arange(1, n + 1)
+        runs = sub["run"].to_numpy()  # a validated table always has its run column
         pvals = two_sided_t_p(infl["student_resid"], df) * n
         for i in np.flatnonzero(pvals < family_alpha):
             h, residual, student = infl["leverage"][i], infl["residual"][i], infl["student_resid"][i]
