@@ -2533,8 +2533,6 @@ EQUIVALENT: dict[str, str] = {
         "model_columns[:, 0:] adds the intercept's column to the correlations: both callers pass "
         "model_matrix(coded, quadratic_terms(k)), whose first column is all ones, so its centred column is 0, its "
         "correlations 0/0 -> nan_to_num 0, and the largest |correlation| is the same",
-    "demid/pareto.py::polish_front::0 => -1#2":
-        "domain.from_unit(u) of one point (u is one SLSQP solution) is one row: [0] and [-1] are the same row",
     "demid/transcription/check.py::_printed_slip::0 => -1#3":
         "off[0] -> off[-1] where the test before it in the same `or` chain has made len(off) == 1: the same name",
     "demid/data.py::implausible_targets::lo <= target <= hi => lo < target <= hi#0":
@@ -2826,9 +2824,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/sampling/evaluate.py::closest_approach::float(worst(u)[0]) => worst(u)[0]#1":
         "the search's value becomes a numpy float64 (a float subclass) of the same value: it is only compared, and "
         "both callers convert it (evaluate's float(best_error)) or compare it (ranking's closest <= tolerance)",
-    "demid/canonical.py::Canonical.to_json::float(self.value) => self.value#0":
-        "Canonical.value is a Python float already: canonical_analysis, its only maker, stores surface(), which "
-        "returns float(), or float('nan')",
     "demid/sampling/evaluate.py::closest_approach::0 => -1#2": "u is one point (the search's or its start u0): worst(u) and from_unit(u) have one entry, first and last",
     "demid/sampling/evaluate.py::closest_approach::0 => -1#3": "u is one point (the search's or its start u0): worst(u) and from_unit(u) have one entry, first and last",
     "demid/sampling/evaluate.py::closest_approach::0 => -1#4": "u is one point (the search's or its start u0): worst(u) and from_unit(u) have one entry, first and last",
