@@ -1275,7 +1275,8 @@ TABLE: dict[str, dict] = {
                   "tests/test_next_wave_whole.py", "tests/test_next_wave_box_whole.py", "tests/test_omega_wave_whole.py",
                   "tests/test_next_wave_reason_whole.py", "tests/test_propose_runs_whole.py",
                   "tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py",
-                  "tests/test_next_wave_aim_whole.py", "tests/test_separating_over_omega_whole.py"],
+                  "tests/test_next_wave_aim_whole.py", "tests/test_separating_over_omega_whole.py",
+                  "tests/test_next_wave_edge_runs_whole.py"],
     },
     "demid/wave_runs.py": {
         "functions": None,
@@ -1323,7 +1324,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py",
                   "tests/uncertainty/test_posterior_quantiles.py",
                   "tests/uncertainty/test_strict_grid_summary_properties.py",
-                  "tests/uncertainty/test_sweep_plausible_whole.py", "tests/test_boundary_runs.py"],
+                  "tests/uncertainty/test_sweep_plausible_whole.py", "tests/test_boundary_runs.py",
+                  "tests/uncertainty/test_sweep_defaults_whole.py"],
     },
     "demid/uncertainty/recommended.py": {
         "functions": None,
@@ -1577,7 +1579,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/uncertainty/sweep.py": {
         "functions": None,
-        "tests": ["tests/uncertainty/test_uncertainty.py", "tests/uncertainty/test_sweep_plausible_whole.py", "-ksweep"],
+        "tests": ["tests/uncertainty/test_uncertainty.py", "tests/uncertainty/test_sweep_plausible_whole.py",
+                  "tests/uncertainty/test_sweep_defaults_whole.py", "-ksweep"],
     },
     "demid/scenario.py": {
         "functions": None,
@@ -2366,6 +2369,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/sweep.py::tolerance_sweep::True => False#1":
         "the one caller (uncertainty/material._plausible_tables) concatenates the sweeps again with "
         "ignore_index=True: the sweep table's index is reset either way",
+    "demid/story/words.py::labelled::names = {k: v for k, v in names.items() if v and v != k} => pass#0":
+        "a label is never empty (MaterialSpec fills an absent one with the key), so the entries kept are keys "
+        "written as themselves; keys are identifiers, so every match spans a whole word (the look-behind refuses a "
+        "word character before it, both look-aheads one after it) and two keys match the same word only if equal: "
+        "a key replaced by itself leaves the text as it was and takes no match from a labelled key, also when no "
+        "label differs and the early return is skipped",
     "demid/story/words.py::labelled::v and v != k => v#0":
         "a label is never empty (MaterialSpec fills an absent one with the key): the extra entries map a key to "
         "itself, and a key matched in place of a labelled one would start inside a word, which the look-behind "
@@ -2374,9 +2383,9 @@ EQUIVALENT: dict[str, str] = {
         "an empty frame has no rows: the comprehension over its rows gives the same empty advice",
     "demid/blocks.py::block_effects::float(s) => s#0":
         _NUMPY_FLOAT + " (no caller in the package reads the standard error: cli.py writes the effects only)",
-    "demid/uncertainty/ranking.py::rank_observable_sets::1 => 0#4":
-        "the smaller sets then include the single observables, whose own reachability is reachable[o], which the "
-        "first clause requires already",
+    "demid/uncertainty/ranking.py::rank_observable_sets::1 => 0#5":
+        "len(t) > 0: the smaller sets then include the single observables, whose own reachability is "
+        "reachable[o] (len(s) == 1 skips the search), which the first clause requires already",
     "demid/uncertainty/material.py::_notes::2 => 3#0":
         "the default is never read: analyse_material merges the caller's sizes over recommended_sizes, which "
         "gives posterior_points above three factors, and below four factors the points are not printed",

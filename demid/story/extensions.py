@@ -80,15 +80,13 @@ def extension_sentence(row: dict, labels: dict[str, str], factor_labels: dict[st
     before, after = abs(row["best_error_before"]), abs(row["best_error_after"])
     verb = "falls" if after < before else "does not fall" if after == before else "rises"
 
-    def weak(q2) -> bool:  # the report's rows carry "" for a missing Q² (NaN filled)
-        try:
-            return bool(float(q2) < STOP_Q2)
-        except (TypeError, ValueError):
-            return False
+    def weak(q2) -> bool:
+        # a Q² is a number (NaN when unknown), or "" or None in the report's rows (read with NaN filled by "")
+        return isinstance(q2, (int, float)) and q2 < STOP_Q2
 
     def share(pct, q2):
         text = "empty" if pct <= 0 else f"{pct:.3g} % of Ω"
-        return text + (f" (surrogate Q² = {q2_text(float(q2))} < {STOP_Q2:g})" if weak(q2) else "")
+        return text + (f" (surrogate Q² = {q2_text(q2)} < {STOP_Q2:g})" if weak(q2) else "")
 
     grow = ("grows" if row["feasible_fraction_after_pct"] > row["feasible_fraction_before_pct"] else
             "does not grow")
