@@ -1607,6 +1607,10 @@ TABLE: dict[str, dict] = {
 _NUMPY_FLOAT = "np.float64 is a float subclass: the value and every later use are the same"
 _ARITH_FLOAT = ("the other operand of its product or quotient is a float: an int or a float here gives the same "
                 "float (config numbers reach it as Python ints or floats)")
+_POSTERIOR_POINTS_DEFAULT = ("the default Sobol count of the posteriors is never read: analyse_material merges the "
+                              "caller's sizes over recommended_sizes, which gives posterior_points above three "
+                              "factors, and below four factors the posteriors, the ranking's fractions and the notes "
+                              "use grids, not Sobol points")
 EQUIVALENT: dict[str, str] = {
     # --- reach, level 2, kriging (the fourth held-out draw's survivors)
     "demid/criticism/reach.py::saturation_advice::1 => 2#0":
@@ -2304,6 +2308,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/plausible.py::summarise_set::z == 0 and n % 2 == 1 => n % 2 == 1#0":
         "grid predictions only reach summarise_set with z = 0: tolerance_sweep makes them only for strict sets, "
         "and the ranking asks for no error",
+    "demid/uncertainty/plausible.py::summarise_set::z == 0 => z != 0#2":
+        "fraction_with_error predicts the grid itself when z > 0 (shared predictions are the strict set's), and "
+        "given none at z = 0 it predicts the same odd grid: the same fraction and error either way",
     "demid/uncertainty/plausible.py::plausible_identifiability_frame::float(tolerance) => tolerance#0":
         "every caller passes a float tolerance (the schema's number): the column is the same float",
     "demid/surrogate.py::SurrogateFit.fitted_exactly::self.hat_diag >= LEVERAGE_UNPREDICTABLE => "
@@ -2750,6 +2757,24 @@ EQUIVALENT: dict[str, str] = {
     "demid/sampling/grid.py::_refine_span_ends::abs(step[i]) => step[i]#1":
         "step is the grid spacing (hi - lo) / (n - 1) of a search box whose upper bounds exceed its lower ones (the "
         "config refuses others): positive, its own abs()",
+
+    # --- the uncertainty, story, combinations and loop rows (ninth round, seeds 34 and 35)
+    "demid/uncertainty/material.py::analyse_material::2 ** 16 => 2 * 16#0":
+        _POSTERIOR_POINTS_DEFAULT,
+    "demid/uncertainty/material.py::analyse_material::2 => 3#0":
+        _POSTERIOR_POINTS_DEFAULT,
+    "demid/uncertainty/material.py::analyse_material::16 => 17#0":
+        _POSTERIOR_POINTS_DEFAULT,
+    "demid/uncertainty/material.py::analyse_material::16 => 15#0":
+        _POSTERIOR_POINTS_DEFAULT,
+    "demid/uncertainty/material.py::_notes::2 ** 16 => 2 * 16#0":
+        _POSTERIOR_POINTS_DEFAULT,
+    "demid/uncertainty/material.py::_notes::2 => 1#0":
+        _POSTERIOR_POINTS_DEFAULT,
+    "demid/uncertainty/material.py::_notes::16 => 17#0":
+        _POSTERIOR_POINTS_DEFAULT,
+    "demid/uncertainty/material.py::_notes::16 => 15#0":
+        _POSTERIOR_POINTS_DEFAULT,
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
