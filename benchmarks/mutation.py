@@ -1471,7 +1471,8 @@ TABLE: dict[str, dict] = {
     # where the recommended point stands: the report's warning of a point on a bound or outside the runs
     "demid/story/recommended.py": {
         "functions": None,
-        "tests": ["tests/story/test_point_on_edge_whole.py", "tests/story/test_report_judgements.py", "tests/report/test_report_reads.py"],
+        "tests": ["tests/story/test_point_on_edge_whole.py", "tests/story/test_report_judgements.py",
+                  "tests/report/test_report_reads.py::test_a_point_on_a_bound_and_outside_the_runs_says_so_with_the_advice_on_that_bound"],
     },
     "demid/story/extensions.py": {
         "functions": None,
