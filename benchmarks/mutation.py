@@ -1843,7 +1843,7 @@ EQUIVALENT: dict[str, str] = {
         "the objective returns numpy's float64 instead of a float: a float subclass, which L-BFGS-B reads the same",
     'demid/uncertainty/posterior.py::_quantiles::float(roots[np.argmin(np.abs(roots - axis[j]))]) => roots[np.argmin(np.abs(roots - axis[j]))]#0':
         _NUMPY_FLOAT + " (each quantile is put into an array at once)",
-    'demid/uncertainty/posterior.py::_quantiles::float(np.interp(q, cdf / cdf[-1], axis)) => np.interp(q, cdf / cdf[-1], axis)#0':
+    'demid/uncertainty/posterior.py::_quantiles::float(np.interp(q, share, axis)) => np.interp(q, share, axis)#0':
         _NUMPY_FLOAT + " (each quantile is put into an array at once)",
     'demid/uncertainty/posterior.py::posterior_from_loglik::float(np.prod(hi_u - lo_u)) => np.prod(hi_u - lo_u)#0':
         _NUMPY_FLOAT + " (the box volume enters a logarithm only)",
@@ -2286,8 +2286,7 @@ EQUIVALENT: dict[str, str] = {
     "np.dot(weights[i], m * actual)#0":
         "the means list only becomes np.array(means), a float64 array whether its items are floats or np.float64 "
         "scalars",
-    "demid/uncertainty/posterior.py::_quantiles::int(np.clip(np.searchsorted(cdf / cdf[-1], q), 1, len(axis) - 1)) "
-    "=> np.clip(np.searchsorted(cdf / cdf[-1], q), 1, len(axis) - 1)#0":
+    "demid/uncertainty/posterior.py::_quantiles::int(np.searchsorted(share, q)) => np.searchsorted(share, q)#0":
         "j only indexes axis: a numpy integer indexes the same element",
     "demid/pareto.py::_within_front_box::f[s == s.min()].min() => f[s == s.min()].max()#0":
         "a looser pre-filter: the points it keeps besides are dominated by the least-second point and dropped by "
