@@ -2775,6 +2775,25 @@ EQUIVALENT: dict[str, str] = {
         _POSTERIOR_POINTS_DEFAULT,
     "demid/uncertainty/material.py::_notes::16 => 15#0":
         _POSTERIOR_POINTS_DEFAULT,
+    "demid/uncertainty/posterior.py::_kl_bits::float(_weighted_sum(like, weights)) => _weighted_sum(like, weights)#0":
+        "the integral over every axis is a 0-d array: like / z and np.log(z) give the same numbers as for its float",
+    "demid/uncertainty/posterior.py::posterior_from_loglik::float(_weighted_sum(like, weights)) => "
+    "_weighted_sum(like, weights)#0":
+        "the integral over every axis is a 0-d array, read only in like / z: the same array as for its float",
+    "demid/uncertainty/posterior.py::gaussian_loglik::float(sigma) => sigma#0":
+        "σ is a number (a float or numpy float of the likelihood's width): squared and added to an array of "
+        "squared standard errors, the same values",
+    "demid/uncertainty/posterior.py::_qmc_posteriors::int(round(np.log2(max(points / replicates, 16)))) => "
+    "round(np.log2(max(points / replicates, 16)))#0":
+        "round() of a numpy float returns a Python int (numpy 2, the pinned version): int() of an int",
+    "demid/uncertainty/recommended.py::uninformative_observables::float(row['feasible_fraction_pct']) => "
+    "row['feasible_fraction_pct']#0":
+        _NUMPY_FLOAT + " (the ranking's fraction column; compared with 99 and formatted)",
+    "demid/uncertainty/recommended.py::uninformative_observables::float(row.get('information_gain_bits', "
+    "float('nan'))) => row.get('information_gain_bits', float('nan'))#0":
+        _NUMPY_FLOAT + " (the ranking's gain column, or the NaN default; tested for finiteness and formatted)",
+    "demid/wave_value.py::_updated_se::float(surrogate.resid_var) => surrogate.resid_var#0":
+        "the residual variance is a real scalar: compared with 0 and divided by, the same either way",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
