@@ -2794,6 +2794,24 @@ EQUIVALENT: dict[str, str] = {
         _NUMPY_FLOAT + " (the ranking's gain column, or the NaN default; tested for finiteness and formatted)",
     "demid/wave_value.py::_updated_se::float(surrogate.resid_var) => surrogate.resid_var#0":
         "the residual variance is a real scalar: compared with 0 and divided by, the same either way",
+    "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#0":
+        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean, which makes every numpy float a float)",
+    "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#2":
+        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean, which makes every numpy float a float)",
+    "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#3":
+        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean, which makes every numpy float a float)",
+    "demid/combinations/material.py::material_combinations::float(v) => v#0":
+        _NUMPY_FLOAT + " (the equation's coefficients are read only by to_json, written through io._clean)",
+    "demid/combinations/material.py::admitted_points::int(round(aset.mask.size ** (1 / d))) => "
+    "round(aset.mask.size ** (1 / d))#0":
+        "round() of a Python float returns an int already",
+    "demid/combinations/axes.py::linear_statement::int(np.argmax(np.abs(normal))) => np.argmax(np.abs(normal))#0":
+        "a numpy integer indexes the coefficients and labels as an int does (the order list is read only as indexes)",
+    "demid/combinations/axes.py::linear_statement::int(np.argmax(np.abs(normal))) => np.argmax(np.abs(normal))#1":
+        "a numpy integer compares with range()'s ints as an int does",
+    "demid/story/extensions.py::_fractions::float(g['feasible_fraction_pct'].iloc[0]) => "
+    "g['feasible_fraction_pct'].iloc[0]#0":
+        _NUMPY_FLOAT + " (identifiability.csv's fraction column; compared, formatted and written to a float column)",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
