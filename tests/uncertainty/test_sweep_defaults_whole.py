@@ -70,3 +70,18 @@ def test_a_scenarios_observables_may_be_a_one_shot_iterator():
     # both observables bind: the plausible set is narrower than either observable's alone
     alone = plausible_identifiability_frame(surrogates, domain, {"s": (("y",), 0.1)}, targets, 21, polish=False)
     assert as_tuple["robust_fraction_pct"].iloc[0] < alone["robust_fraction_pct"].iloc[0]
+
+
+def test_a_whole_number_z_and_tolerance_are_written_as_floats():
+    """robust_z: 2 and a tolerance of 1 in the config are numbers the schema reads as ints: the table's columns
+    stay float columns (written 2.0 and 1.0 like every other study's), the z's sets those of z = 2.0."""
+    domain = Domain(("a", "b"), (1.0, -2.0), (3.0, 2.0))
+    y = linear(1.0, [2.0, 0.5], 0.01)
+    y.response = "y"
+    as_ints = plausible_identifiability_frame({"y": y}, domain, {"s": (("y",), 1)}, {"y": 5.0}, 21, z=2,
+                                              polish=False)
+    as_floats = plausible_identifiability_frame({"y": y}, domain, {"s": (("y",), 1.0)}, {"y": 5.0}, 21, z=2.0,
+                                                polish=False)
+    assert as_ints["z"].dtype == np.float64 and as_ints["tolerance"].dtype == np.float64
+    pd.testing.assert_frame_equal(as_ints, as_floats)
+    assert as_ints.to_csv(index=False) == as_floats.to_csv(index=False)
