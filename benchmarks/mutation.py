@@ -2812,6 +2812,15 @@ EQUIVALENT: dict[str, str] = {
     "demid/story/extensions.py::_fractions::float(g['feasible_fraction_pct'].iloc[0]) => "
     "g['feasible_fraction_pct'].iloc[0]#0":
         _NUMPY_FLOAT + " (identifiability.csv's fraction column; compared, formatted and written to a float column)",
+    "demid/story/words.py::labelled::1 => 0#0":
+        "group(0) for group(1): the look-behind and the look-ahead match no text, so the whole match is the key the "
+        "group holds",
+    "demid/story/words.py::labelled::1 => 0#1":
+        "group(0) for group(1): the look-behind and the look-ahead match no text, so the whole match is the key the "
+        "group holds",
+    "demid/story/advice.py::_add_observable::ranking is not None and len(ranking) => ranking is not None#0":
+        "an empty ranking (a material without targets: the CSV's columns, no rows) has no set to grow by one "
+        "observable, so the generic line follows as when the block is skipped",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical

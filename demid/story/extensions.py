@@ -32,7 +32,8 @@ def _lowest_q2(surrogate_fit: pd.DataFrame | None, material: str, observables) -
         return np.nan
     rows = surrogate_fit[(surrogate_fit["material"] == material) & surrogate_fit["response"].isin(list(observables))]
     q2 = rows["q2"].to_numpy(dtype=float)
-    return float(q2.min()) if len(q2) and len(set(rows["response"])) == len(set(observables)) else np.nan
+    # every observable needs its row (a scenario has at least one, so no rows at all is NaN too)
+    return float(q2.min()) if len(set(rows["response"])) == len(set(observables)) else np.nan
 
 
 def _best_error(criticism: dict) -> float:
