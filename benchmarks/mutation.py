@@ -1316,7 +1316,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/uncertainty/test_posterior_quantiles.py", "tests/uncertainty/test_uncertainty.py",
                   "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py",
                   "tests/uncertainty/test_qmc_posterior_properties.py", "tests/uncertainty/test_grid_posterior_whole.py",
-                  "tests/uncertainty/test_qmc_posterior_whole.py", "tests/uncertainty/test_posterior_small_grids_whole.py", "tests/uncertainty/test_ranking_whole.py"],
+                  "tests/uncertainty/test_qmc_posterior_whole.py", "tests/uncertainty/test_posterior_small_grids_whole.py", "tests/uncertainty/test_ranking_whole.py", "tests/uncertainty/test_posterior_interval_order_whole.py"],
     },
     "demid/uncertainty/plausible.py": {
         "functions": None,
@@ -2821,6 +2821,10 @@ EQUIVALENT: dict[str, str] = {
     "demid/story/advice.py::_add_observable::ranking is not None and len(ranking) => ranking is not None#0":
         "an empty ranking (a material without targets: the CSV's columns, no rows) has no set to grow by one "
         "observable, so the generic line follows as when the block is skipped",
+    "demid/uncertainty/posterior.py::subset_posteriors::1 => 2#1":
+        "range(1, len + 2): combinations of more observables than there are yield nothing, so no set is added",
+    "demid/uncertainty/ranking.py::rank_observable_sets::1 => 2#3":
+        "range(1, len + 2): combinations of more observables than there are yield nothing, so no set is added",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical

@@ -120,7 +120,8 @@ def _quantiles(axis: np.ndarray, density: np.ndarray, probs) -> np.ndarray:
 
     The CDF at the nodes is the trapezoidal rule with its Euler-Maclaurin end correction
     (``-h^2/12 [f']``), interpolated by the cubic Hermite spline whose slopes are the
-    density itself; both steps are fourth order in the grid step.
+    density itself: fourth order in the grid step where the density vanishes at the range's ends, third where
+    the range cuts it (tests/uncertainty/test_posterior_interval_order_whole.py).
     """
     h = np.diff(axis)
     slope = np.gradient(density, axis)
