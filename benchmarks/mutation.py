@@ -1293,7 +1293,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py", "tests/test_loop_whole.py",
                   "tests/test_boundary_runs_whole.py", "tests/test_omega_wave_whole.py",
-                  "tests/test_boundary_runs_nil_whole.py", "tests/test_omega_candidates_floor_whole.py"],
+                  "tests/test_boundary_runs_nil_whole.py", "tests/test_omega_candidates_floor_whole.py", "tests/test_boundary_runs_scale_whole.py"],
     },
     "demid/kriging.py": {
         "functions": None,
