@@ -2867,6 +2867,9 @@ EQUIVALENT: dict[str, str] = {
         "range(1, len + 2): combinations of more observables than there are yield nothing, so no set is added",
     "demid/uncertainty/ranking.py::rank_observable_sets::1 => 2#3":
         "range(1, len + 2): combinations of more observables than there are yield nothing, so no set is added",
+    "demid/wave_runs.py::criticism_runs_in_box::int(np.sum(~usable)) => np.sum(~usable)#0":
+        "the count left out is only tested for truth and printed in the next box's reason: a numpy integer prints "
+        "the same digits",
     "demid/waves.py::wave_history::float(row.feasible_fraction_pct) => row.feasible_fraction_pct#0":
         _NUMPY_FLOAT + _WAVE_FRAME_COLUMN,
     "demid/waves.py::wave_history::float(row.lower) => row.lower#0":
