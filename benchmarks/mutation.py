@@ -375,12 +375,12 @@ same on ranges starting at 0, the only ones tested) killed by a point past the r
 Ninth round, the uncertainty, story, combinations and loop modules (the eighth round's 20 rows and
 story/recommended; new in-sample draws, ``--per-module 3``, each run before any test was aimed at it: seed 34 in two
 parts, the ranking, next_wave and wave_runs rows on the round's start and the 18 others after the first two files
-below, written against the last held-out draws' survivors, not against seed 34; seed 35 on the tests below but the
-last three, none written against it; one mutation run at a time on a machine shared with three other runs):
+below, written against the last held-out draws' survivors, not against seed 34; seed 35 on the tests of both and of
+seed 34's survivors, none written against it; one mutation run at a time on a machine shared with three other runs):
 
     seed  rows           as run          with lists     after (survivors re-run with ``--ids``)
     34    all 21 rows    53/59 89.8 %    53/55 96.4 %   55/55 100 %
-    35    SEED35_ROW
+    35    all 21 rows    47/55 85.5 %    47/49 95.9 %   49/49 100 %
 
 "With lists": survivors read as equivalent (listed with the reason) or guards that never act, removed from the
 code.  First, the last held-out draws' survivors of these rows (re-run with ``--ids``, with seed 34's): next_wave
@@ -400,17 +400,29 @@ _not_predicting's ``len(names) > 1`` -> ``> 2`` (killed: two surrogates that do 
 tests/story/test_unpredictive_advice_whole.py), two guards that never act removed (_quantiles' clip of the node a
 root is chosen near to 1..n-1: the normalised CDF runs from 0 to 1 and 0 < q < 1; _recalibrate's ``level1 or {}``:
 its one caller passes a dict) and two listed as equivalent (summarise_set's shared predictions at z != 0, which
-fraction_with_error ignores; analyse_material's default posterior_points, never read).  SEED35_TEXT
+fraction_with_error ignores; analyse_material's default posterior_points, never read).  Seed 35's survivors:
+_quantiles' end correction h²/12 -> h²/13 (killed: the credible interval's order of convergence against scipy's
+truncated normal, tests/uncertainty/test_posterior_interval_order_whole.py; the docstring's "fourth order" holds
+where the density vanishes at the range's ends, and says now that it is third where the range cuts it),
+set_probability's floor of the standard error 1e-12 * band -> 1e-12 (killed: an exact surrogate classifies every
+point for certain on responses of size 1e-9 to 1e9, tests/test_boundary_runs_scale_whole.py), _lowest_q2's test
+for no rows removed (a scenario has at least one observable, so the count of responses fails already) and five
+listed as equivalent (the add-observable advice without its test for an empty ranking, labelled's group(0) for
+group(1), subset_posteriors' range(1, len + 2), wave_history's float() of a parquet float column,
+criticism_runs_in_box's int() of a count that is only printed).  Pooled, the two draws no test was aimed at:
+100/114 as run (87.7 %), 100/104 with the lists (96.2 %), about what the eighth round's fresh draws scored (81 %
+as run, 93 % with the lists): most of what survives a fresh draw of these rows now is equivalent as read.
 Rows name more of the fast files that call their module (waves and advice: the shares-apart tests; wave_runs: the
 one-more-run update; posterior: the ranking's whole tests; verdicts: the kriging and combination-boundary tests;
 story/recommended: the one report test of its sentence, not the whole file).  Listed as equivalent without having
-been drawn, each read with its callers: fifteen float() and int() drops (0-d integrals of the posteriors, numpy
+been drawn, each read with its callers: eighteen float() and int() drops (0-d integrals of the posteriors, numpy
 floats only compared, formatted or written through io._clean, numpy indexes, round() of a float already an int) and
-the remaining variants of analyse_material's and _notes' default posterior_points.  Tests added: 7 files, 21 tests,
-about 2.5 s in the tests themselves (7 s with imports, one after another, on the loaded machine), each file under
-1 s.  Found on the way, not changed (sampling/exact.py is another area's): ExactSet.to_actual computes 10 ** z for
-every factor before np.where keeps the linear ones, so a linear factor above about 308 (a modulus in Pa) overflows
-with a RuntimeWarning, which the test suite's warnings-as-errors turns into a failure.
+the remaining variants of analyse_material's and _notes' default posterior_points.  Tests added (also a whole-number
+z and tolerance kept as float columns of the plausible table): 6 files, 20 tests, about 2.5 s in the tests
+themselves (7 s with imports, one after another, on the loaded machine), each file under 1 s.  Found on the way,
+not changed (sampling/exact.py is another area's): ExactSet.to_actual computes 10 ** z for every factor before
+np.where keeps the linear ones, so a linear factor above about 308 (a modulus in Pa) overflows with a
+RuntimeWarning, which the test suite's warnings-as-errors turns into a failure.
 
 Fifth round, the sampling, surrogate, precision, criticism, transcription, input and report modules (new in-sample
 draws, ``--per-module 2``, each run before any test was aimed at it, on a machine loaded by four other runs; a
@@ -1305,7 +1317,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_met_together_properties.py", "tests/uncertainty/test_material_tables_whole.py",
                   "tests/test_reported_numbers.py::test_ranking_reports_gain_fraction_and_contraction_in_closed_form",
                   "tests/test_reported_numbers.py::test_measurement_order_quotes_the_gains_and_fractions_of_the_ranking",
-                  "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_unreachable_targets.py", "tests/uncertainty/test_ranking_stored_sets_whole.py"],
+                  "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_unreachable_targets.py",
+                  "tests/uncertainty/test_ranking_stored_sets_whole.py"],
     },
     "demid/next_wave.py": {
         "functions": None,
@@ -1327,13 +1340,15 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_discrimination_properties.py", "tests/test_propose_runs_whole.py",
                   "tests/criticism/test_aliasing_whole.py",
                   "tests/criticism/test_confirming_runs.py::test_criticism_runs_outside_the_next_box_are_left_out_and_the_reason_says_so",
-                  "tests/criticism/test_confirming_runs.py::test_with_a_next_box_the_criticism_chooses_its_runs_inside_it", "tests/criticism/test_one_more_run_update_whole.py"],
+                  "tests/criticism/test_confirming_runs.py::test_with_a_next_box_the_criticism_chooses_its_runs_inside_it",
+                  "tests/criticism/test_one_more_run_update_whole.py"],
     },
     "demid/boundary_runs.py": {
         "functions": None,
         "tests": ["tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py", "tests/test_loop_whole.py",
                   "tests/test_boundary_runs_whole.py", "tests/test_omega_wave_whole.py",
-                  "tests/test_boundary_runs_nil_whole.py", "tests/test_omega_candidates_floor_whole.py", "tests/test_boundary_runs_scale_whole.py"],
+                  "tests/test_boundary_runs_nil_whole.py", "tests/test_omega_candidates_floor_whole.py",
+                  "tests/test_boundary_runs_scale_whole.py"],
     },
     "demid/kriging.py": {
         "functions": None,
@@ -1356,7 +1371,8 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/uncertainty/test_posterior_quantiles.py", "tests/uncertainty/test_uncertainty.py",
                   "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py",
                   "tests/uncertainty/test_qmc_posterior_properties.py", "tests/uncertainty/test_grid_posterior_whole.py",
-                  "tests/uncertainty/test_qmc_posterior_whole.py", "tests/uncertainty/test_posterior_small_grids_whole.py", "tests/uncertainty/test_ranking_whole.py", "tests/uncertainty/test_posterior_interval_order_whole.py"],
+                  "tests/uncertainty/test_qmc_posterior_whole.py", "tests/uncertainty/test_posterior_small_grids_whole.py",
+                  "tests/uncertainty/test_ranking_whole.py", "tests/uncertainty/test_posterior_interval_order_whole.py"],
     },
     "demid/uncertainty/plausible.py": {
         "functions": None,
@@ -1469,7 +1485,8 @@ TABLE: dict[str, dict] = {
             f"tests/workflow/test_simulation.py::{name}" for name in (
                 "test_first_wave_is_the_design_generator_sheet", "test_simulation_config_errors_name_the_key",
                 "test_wave_history_gives_each_wave_fraction_of_omega_and_the_box_its_runs_were_placed_in",
-                "test_waves_stop_on_the_measured_change_the_budget_or_the_model_never_on_a_misfitting_surrogate")], "tests/test_shares_apart.py"],
+                "test_waves_stop_on_the_measured_change_the_budget_or_the_model_never_on_a_misfitting_surrogate")],
+                  "tests/test_shares_apart.py"],
     },
     "demid/admissibility.py": {
         "functions": None,
@@ -1489,7 +1506,8 @@ TABLE: dict[str, dict] = {
                   "tests/combinations/test_combinations.py", "tests/report/test_report_outputs.py",
                   "tests/criticism/test_edges.py", "tests/story/test_verdicts_whole.py",
                   "tests/combinations/test_combination_material_whole.py", "tests/combinations/test_combinations_properties.py",
-                  "tests/criticism/test_level2_known_answers.py", _NOT_WORKFLOW, "tests/test_kriging.py", "tests/combinations/test_combination_boundaries_whole.py"],
+                  "tests/criticism/test_level2_known_answers.py", _NOT_WORKFLOW,
+                  "tests/test_kriging.py", "tests/combinations/test_combination_boundaries_whole.py"],
     },
     "demid/story/measurements.py": {
         "functions": None,
@@ -1546,7 +1564,8 @@ TABLE: dict[str, dict] = {
                   "tests/story/test_advice_whole.py",
                   "tests/test_physical_limits.py", "tests/report/test_report_reads.py", "tests/report/test_report_text.py",
                   "tests/criticism/test_reach.py", "tests/criticism/test_edges.py", "tests/story/test_check_target_advice_whole.py",
-                  "-knot heap", _NOT_WORKFLOW, "tests/test_shares_apart.py", "tests/test_kriging.py", "tests/story/test_unpredictive_advice_whole.py"],
+                  "-knot heap", _NOT_WORKFLOW,
+                  "tests/test_shares_apart.py", "tests/test_kriging.py", "tests/story/test_unpredictive_advice_whole.py"],
     },
     "demid/criticism/one_run.py": {
         "functions": None,
@@ -2837,11 +2856,11 @@ EQUIVALENT: dict[str, str] = {
     "demid/wave_value.py::_updated_se::float(surrogate.resid_var) => surrogate.resid_var#0":
         "the residual variance is a real scalar: compared with 0 and divided by, the same either way",
     "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#0":
-        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean, which makes every numpy float a float)",
+        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean)",
     "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#2":
-        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean, which makes every numpy float a float)",
+        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean)",
     "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#3":
-        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean, which makes every numpy float a float)",
+        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean)",
     "demid/combinations/material.py::material_combinations::float(v) => v#0":
         _NUMPY_FLOAT + " (the equation's coefficients are read only by to_json, written through io._clean)",
     "demid/combinations/material.py::admitted_points::int(round(aset.mask.size ** (1 / d))) => "
