@@ -127,7 +127,7 @@ def _check_targets(spec, implausible: dict, ranking) -> list[AdviceItem]:
 
 def _recalibrate(spec, level1: dict, level2: dict, checked: set) -> list[AdviceItem]:
     items = []
-    for r, res in (level1 or {}).items():
+    for r, res in level1.items():  # material_advice passes a dict (level 1's, or empty)
         if sets_do_not_predict(res):
             in_sets = any(r in sc.observables for sc in spec.scenarios)
             pareto = spec.pareto is not None and r in (spec.pareto.error_of, spec.pareto.minimise)

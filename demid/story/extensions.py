@@ -32,7 +32,8 @@ def _lowest_q2(surrogate_fit: pd.DataFrame | None, material: str, observables) -
         return np.nan
     rows = surrogate_fit[(surrogate_fit["material"] == material) & surrogate_fit["response"].isin(list(observables))]
     q2 = rows["q2"].to_numpy(dtype=float)
-    return float(q2.min()) if len(q2) and len(set(rows["response"])) == len(set(observables)) else np.nan
+    # every observable needs its row (a scenario has at least one, so no rows at all is NaN too)
+    return float(q2.min()) if len(set(rows["response"])) == len(set(observables)) else np.nan
 
 
 def _best_error(criticism: dict) -> float:
@@ -80,15 +81,13 @@ def extension_sentence(row: dict, labels: dict[str, str], factor_labels: dict[st
     before, after = abs(row["best_error_before"]), abs(row["best_error_after"])
     verb = "falls" if after < before else "does not fall" if after == before else "rises"
 
-    def weak(q2) -> bool:  # the report's rows carry "" for a missing Q² (NaN filled)
-        try:
-            return bool(float(q2) < STOP_Q2)
-        except (TypeError, ValueError):
-            return False
+    def weak(q2) -> bool:
+        # a Q² is a number (NaN when unknown), or "" or None in the report's rows (read with NaN filled by "")
+        return isinstance(q2, (int, float)) and q2 < STOP_Q2
 
     def share(pct, q2):
         text = "empty" if pct <= 0 else f"{pct:.3g} % of Ω"
-        return text + (f" (surrogate Q² = {q2_text(float(q2))} < {STOP_Q2:g})" if weak(q2) else "")
+        return text + (f" (surrogate Q² = {q2_text(q2)} < {STOP_Q2:g})" if weak(q2) else "")
 
     grow = ("grows" if row["feasible_fraction_after_pct"] > row["feasible_fraction_before_pct"] else
             "does not grow")

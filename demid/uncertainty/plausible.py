@@ -119,6 +119,8 @@ def plausible_identifiability_frame(surrogates: dict[str, Surrogate], domain: Do
     ``scenarios``: name -> (observables, tolerance).  ``strict_sets`` (name -> the
     pipeline's strict :class:`AdmissibleSet`) are reused when they were computed on the
     same n-grid.
+    ``observables`` may be any iterable of names, read once.  More than 3 factors: ``sobol_points`` scrambled
+    Sobol points (2^16 unless given, scramble ``seed`` 0).
     Spans are polished to the exact boundary unless ``polish`` is False.  Trailing
     columns give the numerical error of both fractions (percentage points).
     """

@@ -120,7 +120,8 @@ def _quantiles(axis: np.ndarray, density: np.ndarray, probs) -> np.ndarray:
 
     The CDF at the nodes is the trapezoidal rule with its Euler-Maclaurin end correction
     (``-h^2/12 [f']``), interpolated by the cubic Hermite spline whose slopes are the
-    density itself; both steps are fourth order in the grid step.
+    density itself: fourth order in the grid step where the density vanishes at the range's ends, third where
+    the range cuts it (tests/uncertainty/test_posterior_interval_order_whole.py).
     """
     h = np.diff(axis)
     slope = np.gradient(density, axis)
@@ -129,14 +130,16 @@ def _quantiles(axis: np.ndarray, density: np.ndarray, probs) -> np.ndarray:
     cdf = np.maximum.accumulate(np.maximum(cdf, 0.0))
     from scipy import interpolate  # on first use: the uncertainty step's start-up stays light
 
-    spline = interpolate.CubicHermiteSpline(axis, cdf / cdf[-1], density / cdf[-1])
+    share = cdf / cdf[-1]
+    spline = interpolate.CubicHermiteSpline(axis, share, density / cdf[-1])
     out = []
     for q in probs:
         roots = spline.solve(q, extrapolate=False)
         roots = roots[np.isfinite(roots)]
-        j = int(np.clip(np.searchsorted(cdf / cdf[-1], q), 1, len(axis) - 1))
+        # the node where the CDF first reaches q, 1 to n - 1: the CDF runs from 0 to 1 and 0 < q < 1
+        j = int(np.searchsorted(share, q))
         out.append(float(roots[np.argmin(np.abs(roots - axis[j]))]) if len(roots)
-                   else float(np.interp(q, cdf / cdf[-1], axis)))
+                   else float(np.interp(q, share, axis)))
     return np.array(out)
 
 

@@ -39,7 +39,8 @@ def rank_observable_sets(surrogates: dict[str, Surrogate], domain: Domain, obser
     over proper subsets T (the empty set is Omega, Phi = 1) and best_subset (that T), then
     gain_vs_best_subset_bits = IG(S) - max_{T < S} IG(T), n_observables, rank_by_fraction,
     information_gain_error_bits, targets_reachable.  ``strict_sets`` (frozenset of observables ->
-    strict set at ``tolerance``) are reused instead of evaluating those subsets again.
+    strict set at ``tolerance``) are reused instead of evaluating those subsets again where they are exact; a
+    grid set may lie on another grid and is evaluated again, so every fraction of the table shares one grid.
 
     A set whose targets cannot be met anywhere in the domain within ``tolerance`` — one of them alone
     (:func:`reachable_targets`) or all together — has ``targets_reachable`` False and no information gain

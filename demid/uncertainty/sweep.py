@@ -30,7 +30,8 @@ def tolerance_sweep(surrogates: dict[str, Surrogate], domain: Domain, scenarios:
     to ``tolerances``.  Strict sets by default (exact for polynomial surrogates in up to 3
     factors, see :func:`~demid.sampling.evaluate.evaluate_set`), plausible sets when ``z > 0``.  With
     ``with_error`` a trailing ``fraction_error_pct`` column bounds the numerical error of
-    each fraction.  More than 3 factors: scrambled Sobol points instead of the grid.
+    each fraction.  More than 3 factors: ``sobol_points`` scrambled Sobol points (2^14 unless given, scramble
+    ``seed`` 0) instead of the grid, spans read off the sample unless ``polish``.
     ``strict_sets`` (name -> the scenario's strict set at its nominal tolerance) are reused
     for the nominal row, so it repeats Table 3.
     """
