@@ -1148,7 +1148,8 @@ _READ_TABLE_TESTS = [f"tests/inputs/test_stranger_tables.py::{name}" for name in
 # pytest's marker option: whole files whose Snakemake tests the default selection leaves out
 _NOT_WORKFLOW = "-mnot workflow"
 # the exact sets' tests: exact.py and the plane-by-plane integration, root finding and quadrature it is built on
-_EXACT_SET_TESTS = ["tests/sampling/test_exact_sets.py", "tests/sampling/test_quadrature_error_estimate.py",
+_EXACT_SET_TESTS = ["tests/sampling/test_exact_sets.py", "tests/sampling/test_exact_large_linear_factor.py",
+                    "tests/sampling/test_quadrature_error_estimate.py",
                     "tests/sampling/test_exact_error_properties.py", "tests/test_reported_numbers.py",
                     "tests/sampling/test_reference_point.py", "tests/sampling/test_set_estimators.py",
                     "tests/sampling/test_roots_quadrature_properties.py", "tests/test_core_contracts.py",

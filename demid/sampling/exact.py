@@ -137,7 +137,9 @@ class ExactSet:
 
     def to_actual(self, z) -> np.ndarray:
         z = np.array(z, dtype=float)
-        return np.where(np.array(self.log), 10.0 ** z, z)
+        log = np.broadcast_to(np.array(self.log, dtype=bool), z.shape)
+        z[log] = 10.0 ** z[log]  # only the log factors: 10 ** z of a linear factor above ~308 would overflow
+        return z
 
     @cached_property
     def _shape(self):
