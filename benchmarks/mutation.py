@@ -2098,6 +2098,10 @@ EQUIVALENT: dict[str, str] = {
         "best_s is one point, so the values have one column: [:, 0] and [:, -1] are the same",
     "demid/criticism/level2.py::calibration_check::0 => -1#3":
         "best_s is one point, so the errors have one column: [:, 0] and [:, -1] are the same",
+    "demid/criticism/level2.py::_level2_message::1 => 0#1":
+        "len(bias_candidates) > 1 -> > 0 in the branch after `biased_observable is not None`: bottleneck_analysis "
+        "names the biased observable exactly when there is one candidate, so the branch sees 0 or 2+ candidates, "
+        "where > 0 and > 1 agree (no other code builds a Level2Result or changes either field)",
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",
