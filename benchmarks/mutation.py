@@ -1125,6 +1125,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_discrimination_properties.py", "tests/criticism/test_discrimination_whole.py",
                   "tests/criticism/test_extensions_forms_whole.py", "tests/criticism/test_one_run_whole.py",
                   "tests/criticism/test_models_constant_whole.py", "tests/criticism/test_one_run_spare_runs_whole.py",
+                  "tests/criticism/test_models_scales_whole.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/catalogue.py": {
@@ -1138,6 +1139,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_level1_finding_whole.py", "tests/criticism/test_catalogue_boxcox_whole.py",
                   "tests/criticism/test_lack_of_fit_whole.py", "tests/criticism/test_catalogue_limits_whole.py",
                   "tests/criticism/test_one_run_whole.py", "tests/criticism/test_one_run_spare_runs_whole.py",
+                  "tests/criticism/test_catalogue_drift_span_whole.py",
                   "tests/criticism/test_level1_known_answers.py::test_a_slipped_factor_value_is_moved_and_the_loo_"
                   "errors_are_the_refits", "-knot level2 and not residual_figure and not 3f"],
     },
