@@ -1224,7 +1224,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": _NAMING_TESTS + ["tests/criticism/test_extensions_forms_whole.py",
                                   "tests/criticism/test_transform_far_lambda_whole.py",
-                                  "tests/criticism/test_scatter_fitted_blocks_whole.py"],
+                                  "tests/criticism/test_scatter_fitted_blocks_whole.py",
+                                  "tests/criticism/test_extensions_accumulate_whole.py"],
     },
     "demid/criticism/naming.py": {
         "functions": None,
