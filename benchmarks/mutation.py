@@ -1261,6 +1261,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/criticism/test_run_order.py", "tests/criticism/test_run_order_whole.py",
                   "tests/criticism/test_run_order_span.py", "tests/criticism/test_run_order_limits_whole.py",
+                  "tests/criticism/test_run_order_thresholds_whole.py",
                   "tests/test_reported_numbers.py", "tests/criticism/test_criticism.py",
                   "-kdrift or run_order or order"],
     },
