@@ -2120,6 +2120,10 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/outliers.py::outlier_null_max::1 => 2#0":
         "the least block width 1 -> 2 (reached above 2**19 runs): each column's largest |t| is computed from that "
         "column alone, so blocks of one or two columns give the same numbers",
+    "demid/criticism/extensions.py::drift_per_run::float(model.beta[j] / model.run_scale) => model.beta[j] / model.run_scale#0":
+        "an element of the float array beta over a float: " + _NUMPY_FLOAT,
+    "demid/criticism/one_run.py::deleted_logp::0 => -1#1":
+        "residualize(q, column[keep, None]) has one column: [:, 0] and [:, -1] are the same",
     "demid/criticism/level2.py::_level2_message::1 => 0#1":
         "len(bias_candidates) > 1 -> > 0 in the branch after `biased_observable is not None`: bottleneck_analysis "
         "names the biased observable exactly when there is one candidate, so the branch sees 0 or 2+ candidates, "
