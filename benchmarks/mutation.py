@@ -1241,7 +1241,8 @@ TABLE: dict[str, dict] = {
                                   "tests/criticism/test_residual_misfit_level.py", "tests/criticism/test_naming_ties_whole.py",
                                   "tests/criticism/test_ambiguity_named_first_whole.py",
                                   "tests/criticism/test_one_run_weighted_whole.py",
-                                  "tests/criticism/test_level1_close_alternatives_whole.py"],
+                                  "tests/criticism/test_level1_close_alternatives_whole.py",
+                                  "tests/criticism/test_deciding_runs_kinds_whole.py"],
     },
     "demid/criticism/slips.py": {
         "functions": None,
@@ -1582,7 +1583,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_scatter_covariates.py", "tests/criticism/test_level1_finding_whole.py",
                   "tests/criticism/test_discrimination_whole.py", "tests/criticism/test_candidates_whole.py",
                   "tests/criticism/test_deciding_runs_greedy_whole.py", "tests/criticism/test_ambiguity_whole.py",
-                  "tests/criticism/test_verdict_messages_whole.py", "tests/criticism/test_ambiguity_named_first_whole.py"],
+                  "tests/criticism/test_verdict_messages_whole.py", "tests/criticism/test_ambiguity_named_first_whole.py",
+                  "tests/criticism/test_deciding_runs_kinds_whole.py"],
     },
     "demid/criticism/reach.py": {
         "functions": None,
