@@ -2127,6 +2127,10 @@ EQUIVALENT: dict[str, str] = {
         "an element of the float array beta over a float: " + _NUMPY_FLOAT,
     "demid/criticism/one_run.py::deleted_logp::0 => -1#1":
         "residualize(q, column[keep, None]) has one column: [:, 0] and [:, -1] are the same",
+    "demid/criticism/verdict.py::replicate_runs::float(f'{v:.10g}') + 0.0 => float(f'{v:.10g}')#0":
+        "+ 0.0 only turns -0.0 into 0.0, and the run's actual value is never -0.0: to_actual is coded * unit + "
+        "centre (log factors 10 ** that, positive), a sum that is -0.0 only when both terms are, and a factor's "
+        "centre is the middle of its range, lo + hi with lo < hi, which IEEE addition makes +0.0 when it is zero",
     "demid/criticism/level2.py::_level2_message::1 => 0#1":
         "len(bias_candidates) > 1 -> > 0 in the branch after `biased_observable is not None`: bottleneck_analysis "
         "names the biased observable exactly when there is one candidate, so the branch sees 0 or 2+ candidates, "
