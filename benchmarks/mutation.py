@@ -2131,6 +2131,19 @@ EQUIVALENT: dict[str, str] = {
         "+ 0.0 only turns -0.0 into 0.0, and the run's actual value is never -0.0: to_actual is coded * unit + "
         "centre (log factors 10 ** that, positive), a sum that is -0.0 only when both terms are, and a factor's "
         "centre is the middle of its range, lo + hi with lo < hi, which IEEE addition makes +0.0 when it is zero",
+    "demid/criticism/run_order.py::_rank_correlation::float(np.corrcoef(a, b)[0, 1]) => np.corrcoef(a, b)[0, 1]#0":
+        "an element of a float array: " + _NUMPY_FLOAT + " (to_json rounds float() of it)",
+    "demid/criticism/run_order.py::_rank_correlation::0 => 1#0":
+        "np.ptp(a) == 0 -> == 1: a is the run numbers' ranks, called only past standard_order_correlation's n >= 4 "
+        "and non-constant runs, whose average ranks span at least n/2 >= 2 (two tied groups of k and n - k runs "
+        "span n/2): neither test is ever true",
+    "demid/criticism/one_run.py::deleted_logp_by_identity::1 => 0#10":
+        "sse / (n - 1) -> sse / n in the Box-Cox profile without each run: the same constant (n - 1)/2 log((n - 1)/n) "
+        "added at every lambda, which the likelihood ratio (the profile's maximum less its value at lambda 1) "
+        "cancels, to round-off",
+    "demid/criticism/step_changes.py::step_projections::int(kept[order[c]]) => kept[order[c]]#0":
+        "a numpy integer where the int was: a step's change-point is only an index into data.runs (Model.step_column, "
+        "Model.new_run_row) or taken int() of (extend_for, detail_json, _step_aiccs' comparison), never written",
     "demid/criticism/level2.py::_level2_message::1 => 0#1":
         "len(bias_candidates) > 1 -> > 0 in the branch after `biased_observable is not None`: bottleneck_analysis "
         "names the biased observable exactly when there is one candidate, so the branch sees 0 or 2+ candidates, "
