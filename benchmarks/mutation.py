@@ -2151,6 +2151,9 @@ EQUIVALENT: dict[str, str] = {
         "at exactly 256 runs the gamma search reads weighted_loglik (the fit's sum of squares) instead of a Model "
         "per step: the same log-likelihood to round-off (its docstring; tests/criticism/test_scatter_gamma_search.py), "
         "so the same gamma within the search's xatol",
+    "demid/criticism/slips.py::_slipped_terms::int(j) => j#0":
+        "the factor index as a dict key: a numpy integer hashes and compares equal to the int, and _changed_fit "
+        "reads it only in factor == j: the same entries and columns",
     "demid/criticism/level2.py::_level2_message::1 => 0#1":
         "len(bias_candidates) > 1 -> > 0 in the branch after `biased_observable is not None`: bottleneck_analysis "
         "names the biased observable exactly when there is one candidate, so the branch sees 0 or 2+ candidates, "
