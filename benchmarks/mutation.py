@@ -2154,6 +2154,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/slips.py::_slipped_terms::int(j) => j#0":
         "the factor index as a dict key: a numpy integer hashes and compares equal to the int, and _changed_fit "
         "reads it only in factor == j: the same entries and columns",
+    "demid/criticism/aliasing.py::OneMoreRun.criteria::-np.inf => np.inf#0":
+        "the log-determinant given to candidates of rank 0: its one reader, _first_best, compares log-determinants "
+        "only among the candidates of the top rank, and returns None unless that rank exceeds the current one (>= 0)",
     "demid/criticism/level2.py::_level2_message::1 => 0#1":
         "len(bias_candidates) > 1 -> > 0 in the branch after `biased_observable is not None`: bottleneck_analysis "
         "names the biased observable exactly when there is one candidate, so the branch sees 0 or 2+ candidates, "
