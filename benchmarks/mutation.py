@@ -648,7 +648,7 @@ machine shared with three other runs):
 
     seed  rows           as run          with lists     after
     34    all seventeen  35/49 71.4 %   35/45 77.8 %   45/45 100 % (the ten others re-run with ``--ids``: killed)
-    35    all seventeen  35/50 70.0 %   35/42 83.3 %   38/42 90.5 % (three killed, checked by hand)
+    35    all seventeen  35/50 70.0 %   35/42 83.3 %   38/42 90.5 % (three more killed, re-run with ``--ids``)
 
 Pooled as run, 70/99 (70.7 %); with the lists, 70/87 (80.5 %): the fresh draws of the criticism rows still score
 70-80 % as run, the eighth round's 74-82 % within a draw's scatter.  "With lists": survivors read as equivalent,
