@@ -10,7 +10,7 @@ import json
 from dataclasses import replace
 from types import SimpleNamespace
 
-import numpy as np
+import pandas as pd
 import pytest
 
 from demid.criticism import criticize
@@ -43,12 +43,8 @@ def test_the_next_waves_runs_ride_on_the_row_they_serve(clean):
                     discriminating_runs=runs)
     frame = named.to_frame()
     assert list(frame["cause"]) == ["missing_term", "drift"]
-    assert json.loads(frame["discriminating_runs"].iloc[0]) == runs and pd_isna(frame["discriminating_runs"].iloc[1])
+    assert json.loads(frame["discriminating_runs"].iloc[0]) == runs and pd.isna(frame["discriminating_runs"].iloc[1])
     assert "discriminating_runs" not in replace(named, discriminating_runs=[]).to_frame()
-
-
-def pd_isna(v) -> bool:
-    return v is None or (isinstance(v, float) and np.isnan(v))
 
 
 def test_alias_sets_get_separating_runs_only_for_several_terms_or_none_estimable():
