@@ -7,7 +7,6 @@ where a^3 and a:b^2 are aliased on the runs."""
 
 from __future__ import annotations
 
-import numpy as np
 import pytest
 
 from demid.criticism.discrimination import CONFIRM_PURPOSE, PURPOSE, candidate_label, discriminating_runs

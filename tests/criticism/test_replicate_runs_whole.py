@@ -10,7 +10,6 @@ from __future__ import annotations
 from dataclasses import replace
 from types import SimpleNamespace
 
-import numpy as np
 import statsmodels.api as sm
 from hypothesis import given, settings
 from hypothesis import strategies as st
