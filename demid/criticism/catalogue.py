@@ -291,7 +291,8 @@ class Round:
             self.hypotheses.append(h)
 
     def _drift(self, m: Model, q: np.ndarray, e_obs: np.ndarray, e_null: np.ndarray) -> None:
-        """Drift: the run number as an added variable."""
+        """Drift: the run number as an added variable; not tested when the run column lies in the model's span
+        to within 1e-7 of its own norm (what is left is round-off, a direction of noise)."""
         df = m.df_resid
         col = m.run_column(m.keep) * m.sw
         r = residualize(q, col[:, None])[:, 0]

@@ -290,7 +290,8 @@ def _finding(data: Data, response: str, model: Model, h: Hypothesis, spec: Model
              scatter_aliases: list[str] = (), first: bool = True) -> Finding:
     """The finding of one round: the named cause, its gain on the same runs, and its message; ``other_reading``
     of the same run (an outlier for a slip, a slip for an outlier) is listed as its alias, and so are the
-    ``scatter_aliases`` of unequal scatter (the ``first`` finding's confirming runs separate them)."""
+    ``scatter_aliases`` of unequal scatter (the ``first`` finding's confirming runs separate them).  Alternatives
+    less than 2 log-likelihood units below the named cause (not exactly 2) are quoted as almost as likely."""
     if h.cause == "response_transform":
         info["lam"] = spec.lam
     if h.cause == "drift":

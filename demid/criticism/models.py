@@ -361,7 +361,8 @@ class Model:
         s = self.spec
         return {
             "terms": list(self.names),
-            "r2": json_number(1 - sse / sst) if sst > 0 else None,
+            # a constant response has no R²: its mean's round-off (0.1 on 13 runs) leaves sst ~1e-33, not 0
+            "r2": json_number(1 - sse / sst) if np.ptp(y) > 0 else None,
             "rmse": json_number(np.sqrt(sse / len(y))),
             "loo_rmse": json_number(self.loo_rmse_on(self.keep)),
             "aicc": json_number(self.aicc),

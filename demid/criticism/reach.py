@@ -98,7 +98,8 @@ def smallest_positive_root(a: float, b: float, c: float) -> float:
 def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, observable: str,
                        target: float, tolerance: float) -> Reach:
     """How far beyond ``side`` of ``factor`` the surrogate of ``observable`` must be followed, from ``point``
-    (actual units, every factor), to come within ``tolerance`` (relative) of ``target``."""
+    (actual units, every factor), to come within ``tolerance`` (relative) of ``target``.  A response already at its
+    stationary point on the bound (slope 0 there) neither approaches the band nor levels off beyond the bound."""
     factors = list(domain.factors)
     i = factors.index(factor)
     lo, hi = domain.search_bounds()

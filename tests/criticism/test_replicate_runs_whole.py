@@ -1,0 +1,54 @@
+"""The replicates level 1 proposes at runs already made (criticism.verdict.replicate_runs), every field against the
+table and statsmodels: a simulated table's outlier gets two replicates at its own factor values (to ten significant
+digits), to confirm; an unexplained misfit gets one replicate of each of the two runs of largest |externally
+studentised residual| of the quadratic fit (statsmodels' influence, ties to the earlier row), to decide; a typed
+table's outlier, or a named cause other than an outlier, gets none.  2-3 factor CCDs, factors on ranges of any
+sign and scale, run labels in any order."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from types import SimpleNamespace
+
+import statsmodels.api as sm
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from demid import run_purposes
+from demid.criticism.level1 import prepare_data
+from demid.criticism.verdict import OUTLIER_REPLICATES, UNEXPLAINED_REPLICATED_RUNS, replicate_runs
+from demid.design import model_matrix, quadratic_terms
+from tests.generators import FACTORS, ccd_table
+
+
+def _table(seed: int, k: int, offset: float, scale: float):
+    table, _ = ccd_table(seed, k, "outlier", size=6.0)
+    for f in FACTORS[k]:
+        table[f] = offset + scale * table[f]
+    table["run"] = 100 + 7 * table["run"]
+    return table
+
+
+@given(seed=st.integers(0, 500), k=st.integers(2, 3), offset=st.sampled_from([-40.0, 0.0, 3.5]),
+       scale=st.sampled_from([0.001, 1.0, 250.0]), pick=st.integers(0, 100))
+@settings(max_examples=10, deadline=None, derandomize=True)
+def test_replicates_of_an_outlier_and_of_the_worst_runs_of_an_unexplained_misfit(seed, k, offset, scale, pick):
+    table = _table(seed, k, offset, scale)
+    factors = FACTORS[k]
+    data, fit = prepare_data(table, factors, "y", None, ())
+    row = pick % len(table)
+    label = int(table["run"][row])
+    outlier = [SimpleNamespace(cause="outlier", detail=label)]
+    simulated = replace(data, simulated=True)
+    runs = replicate_runs(simulated, fit, outlier, None)
+    point = {f: float(f"{table[f][row]:.10g}") for f in factors}
+    assert runs == [{**point, "purpose": run_purposes.CONFIRM, "replicate_of": label}] * OUTLIER_REPLICATES
+    assert replicate_runs(data, fit, outlier, None) == []  # a typed table: its outlier may be a slip
+    assert replicate_runs(simulated, fit, [SimpleNamespace(cause="drift", detail="run")], None) == []
+    # an unexplained misfit: the runs of largest |externally studentised residual| of the quadratic
+    x = model_matrix(data.coding.to_coded(table[factors].to_numpy()), quadratic_terms(k))
+    student = sm.OLS(table["y"].to_numpy(), x).fit().get_influence().resid_studentized_external
+    worst = sorted(range(len(table)), key=lambda i: (-round(abs(student[i]), 9), i))[:UNEXPLAINED_REPLICATED_RUNS]
+    runs = replicate_runs(data, fit, [], {"message": "misfit"})
+    assert runs == [{**{f: float(f"{table[f][i]:.10g}") for f in factors}, "purpose": run_purposes.DECIDE,
+                     "replicate_of": int(table["run"][i])} for i in worst]
