@@ -3545,7 +3545,7 @@ HELD_OUT_SEED = 864_091  # the next draw; 702_119's and 781_203's were scored (i
 #: draw's survivors were read and tested), the second and third held-out draws (704_913, 3 per module; 902_611, 1)
 #: were read and tested, and so were the fourth round's draws (seeds 21-22 with 4 per module, 23 with 2, 24 with 2,
 #: 25 with 1).
-SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1"]
+SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3"]
 
 
 def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:
