@@ -154,6 +154,20 @@ about 83-94 %), against 81-84 % as run for the eighth round's own unseen in-samp
 draws differ by 15 points, about three times the scatter of the difference of two draws of ~65 mutants (each pins
 the score to about +-7 points at 95 %): the first was a lucky draw, and the pooled 89.5 % is the better estimate.  Both draws are in SEEN_DRAWS; the next held-out seed is written down below.
 
+Ninth held-out draw (seed 864_091, written down before the ninth round's tests and never run until they were
+written and merged; the same command over all 73 rows, leaving out SEEN_DRAWS with seeds 34:3 and 35:3): **57 of 68
+killed, 83.8 %** (29/35 and 28/33; one listed equivalent beforehand).  Survivors: sampling/planes
+``Planes._resultants`` ``k1 + 1`` -> ``1``; sampling/stored ``set_state_frame`` 1 -> 2; criticism/models
+``orthonormal_basis`` 0 -> 1; transcription/typos ``likely_typos``' ``<= 3 * se`` -> ``<`` (a printed value exactly
+three standard errors off); uncertainty/ranking ``rank_observable_sets`` 2 -> 1; next_wave ``plan_next_wave``'s
+design runs ``n_design - n_sep`` -> ``+ n_sep``; canonical ``canonical_analysis`` without ``not common['inside']``;
+story/verdicts ``verdict_frame`` without float() of the robust fraction; combinations/axes ``local_thickness``'s
+stable argsort -> the default; story/advice ``material_advice`` without the ridge's add-observable items;
+design_check ``_ccd_alpha_of_table`` ``spread > 0`` -> ``>= 0``.  The ninth round's own unseen draws scored 70-86 %
+as run per area (seed 35: 83.8-86.0 % outside the criticism rows, 70.0 % on them), and the held-out score tracks
+them.  Pooled over the last three held-out draws: **176 of 201, 87.6 %** (95 % interval about 82-92 %): short of
+90 %.  The draw is in SEEN_DRAWS; the next held-out seed is written down below.
+
 Fourth round, the uncertainty, story, combinations, design, wave and loop modules (28 rows; new in-sample draws,
 seeds 21, 22 and 23 with ``--per-module 2`` and 21 and 22 again with 4, each run before any test was aimed at it, on the
 tests of the round so far; "with lists": survivors that reading showed equivalent or a search setting left out of the score):
@@ -3537,7 +3551,7 @@ def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]
 #: its mutants are drawn apart from the in-sample draw (the default ``--seed``, against which tests were written
 #: run by run), and no test may be written against them.  Once its survivors have been read and tests added for
 #: them, its score is in-sample too: write down a new seed here, unused, before the next round.
-HELD_OUT_SEED = 864_091  # the next draw; 702_119's and 781_203's were scored (in SEEN_DRAWS now)
+HELD_OUT_SEED = 927_443  # the next draw; 702_119's, 781_203's and 864_091's were scored (in SEEN_DRAWS now)
 
 
 #: Draws that tests were written against, run by run (seed, mutants per module): never part of a held-out draw.
@@ -3545,7 +3559,7 @@ HELD_OUT_SEED = 864_091  # the next draw; 702_119's and 781_203's were scored (i
 #: draw's survivors were read and tested), the second and third held-out draws (704_913, 3 per module; 902_611, 1)
 #: were read and tested, and so were the fourth round's draws (seeds 21-22 with 4 per module, 23 with 2, 24 with 2,
 #: 25 with 1).
-SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3"]
+SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3", "864091:1"]
 
 
 def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:
