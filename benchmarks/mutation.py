@@ -1290,7 +1290,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/sampling/test_stored_sets.py", "tests/sampling/test_stored_sets_whole.py",
                   "tests/sampling/test_sobol_whole.py::test_the_state_frame_of_no_sets_has_the_columns_and_types_of_a_filled_one",
-                  "tests/sampling/test_stored_sets_without_a_point.py"],
+                  "tests/sampling/test_stored_sets_without_a_point.py",
+                  "tests/sampling/test_state_frame_of_sampled_sets_whole.py"],
     },
     "demid/sampling/sobol.py": {
         "functions": ["sobol_admissible_set", "_extreme_points", "sobol_fraction"],
@@ -1337,6 +1338,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_models_scales_whole.py", "tests/criticism/test_lack_of_fit_whole.py",
                   "tests/criticism/test_catalogue_boxcox_whole.py", "tests/criticism/test_scatter_fitted_blocks_whole.py",
                   "tests/criticism/test_extensions_accumulate_whole.py", "tests/criticism/test_one_run_weighted_whole.py",
+                  "tests/criticism/test_orthonormal_basis_whole.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/catalogue.py": {
@@ -1649,7 +1651,8 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/combinations/test_canonical.py", "tests/combinations/test_canonical_published.py",
                   "tests/combinations/test_canonical_properties.py", "tests/combinations/test_canonical_planar.py",
                   "tests/combinations/test_canonical_whole.py", "tests/combinations/test_fit_canonical_whole.py",
-                  "tests/combinations/test_canonical_boundaries_whole.py"],
+                  "tests/combinations/test_canonical_boundaries_whole.py",
+                  "tests/combinations/test_canonical_steep_stationary_ridge_whole.py"],
     },
     "demid/wave_value.py": {
         "functions": None,
