@@ -230,7 +230,7 @@ def likely_typos(validated, spec: MaterialSpec, printed: pd.DataFrame | None = N
     A run is flagged when its externally studentised residual is extreme after a
     Bonferroni correction over the runs (family-wise ``family_alpha``) *and* a digit
     swap, misplaced decimal point or lost sign of the printed cell lands within three
-    leave-one-out standard errors of the prediction from the other runs.  Both
+    leave-one-out standard errors of the prediction from the other runs (three exactly included).  Both
     conditions together keep this silent on clean tables.  With :data:`LOCAL_SCALE_MIN_DF` residual degrees
     of freedom or more, residual and prediction error are measured against the scatter at the run's level
     (:func:`local_scale`), so that a scatter growing with the response does not read as slips.
