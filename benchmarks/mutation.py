@@ -3156,6 +3156,17 @@ EQUIVALENT: dict[str, str] = {
         _NUMPY_FLOAT + _WAVE_FRAME_COLUMN,
     "demid/waves.py::wave_history::float(row.width) => row.width#0":
         _NUMPY_FLOAT + _WAVE_FRAME_COLUMN,
+    # --- the ninth held-out draw's survivors (sampling, criticism, transcription, canonical, design_check)
+    "demid/sampling/planes.py::Planes._resultants::k1 + 1 => 1#0":
+        "only adds cut points (the range keeps every pair k1 < k2): the pairs k2 < k1 again, and each "
+        "observable's curves with themselves, whose resultants vanish where t's leading coefficient does or "
+        "are round-off whose roots fall anywhere; every piece between cut points is judged at its midpoint, so "
+        "the feasible intervals are the same, the spans agree to 1e-15 and the areas, integrated over finer "
+        "pieces, within the quadrature's noise (under 2e-12 over 30 random batches of 2-4 observables)",
+    "demid/design_check.py::_ccd_alpha_of_table::spread > 0 => spread >= 0#0":
+        "spread is the last minus the first of three or five distinct sorted values (np.unique): the difference "
+        "of two distinct floats is never 0 (subnormals; +-0 merge), inf when it overflows or an end is "
+        "infinite, and NaN only with a NaN among them, which both comparisons read as False",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
@@ -3275,17 +3286,6 @@ SETTINGS: dict[str, str] = {
         "Nelder-Mead's evaluation cap: the searches converge to their tolerances in far fewer",
     "demid/sampling/evaluate.py::closest_approach::1 => 0#2":
         "with a given start, how many of the start grid's basins are searched besides it (four instead of three)",
-    # --- the ninth held-out draw's survivors (sampling, criticism, transcription, canonical, design_check)
-    "demid/sampling/planes.py::Planes._resultants::k1 + 1 => 1#0":
-        "only adds cut points (the range keeps every pair k1 < k2): the pairs k2 < k1 again, and each "
-        "observable's curves with themselves, whose resultants vanish where t's leading coefficient does or "
-        "are round-off whose roots fall anywhere; every piece between cut points is judged at its midpoint, so "
-        "the feasible intervals are the same, the spans agree to 1e-15 and the areas, integrated over finer "
-        "pieces, within the quadrature's noise (under 2e-12 over 30 random batches of 2-4 observables)",
-    "demid/design_check.py::_ccd_alpha_of_table::spread > 0 => spread >= 0#0":
-        "spread is the last minus the first of three or five distinct sorted values (np.unique): the difference "
-        "of two distinct floats is never 0 (subnormals; +-0 merge), inf when it overflows or an end is "
-        "infinite, and NaN only with a NaN among them, which both comparisons read as False",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
