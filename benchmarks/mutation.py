@@ -1746,7 +1746,8 @@ TABLE: dict[str, dict] = {
                   "tests/test_physical_limits.py", "tests/report/test_report_reads.py", "tests/report/test_report_text.py",
                   "tests/criticism/test_reach.py", "tests/criticism/test_edges.py", "tests/story/test_check_target_advice_whole.py",
                   "-knot heap", _NOT_WORKFLOW,
-                  "tests/test_shares_apart.py", "tests/test_kriging.py", "tests/story/test_unpredictive_advice_whole.py"],
+                  "tests/test_shares_apart.py", "tests/test_kriging.py", "tests/story/test_unpredictive_advice_whole.py",
+                  "tests/story/test_ridge_advice_rows_whole.py"],
     },
     "demid/criticism/one_run.py": {
         "functions": None,
