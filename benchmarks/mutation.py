@@ -3155,6 +3155,14 @@ EQUIVALENT: dict[str, str] = {
         _NUMPY_FLOAT + _WAVE_FRAME_COLUMN,
     "demid/waves.py::wave_history::float(row.width) => row.width#0":
         _NUMPY_FLOAT + _WAVE_FRAME_COLUMN,
+    # --- the ninth held-out draw's survivors (ranking, next_wave, verdicts, axes, advice)
+    "demid/story/verdicts.py::verdict_frame::float(plaus['robust_fraction_pct'].iloc[0]) => "
+    "plaus['robust_fraction_pct'].iloc[0]#0":
+        "the plausible fraction is only compared with 0, never written: its one source, "
+        "plausible_identifiability_frame, writes 100.0 * fraction (a float column), which study_story reads back "
+        "from robust_identifiability.csv with read_csv as float64; a float64 or a float equals 0 exactly when its "
+        "float() does (NaN neither way), so the bounds set to NaN and every written column, plausible_lower and "
+        "plausible_upper float() of their own cells, are the same, dtypes included",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
