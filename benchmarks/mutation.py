@@ -2467,6 +2467,13 @@ EQUIVALENT: dict[str, str] = {
         "both callers pass a numpy array of run numbers (Data.runs; a table's run column or np.arange): "
         "np.isfinite, a mask's indexing, np.ptp, scipy's Spearman rho and standard_order_correlation's own "
         "conversion read an integer array as they read its float copy",
+    # --- criticism, the tenth round (naming, slips, verdict, run_order, one_run, discrimination, reach, edges)
+    "demid/criticism/discrimination.py::joint_separation::total[:, np.arange(delta.shape[1]), "
+    "np.arange(delta.shape[1])] += 1e-300 => pass#0":
+        "the diagonals of S_a and S_b are variances (noise plus a quadratic form of a covariance), so S_a + S_b "
+        "has a diagonal entry below 1e-300 only where both have a zero row (a run with no noise and no "
+        "dependence on the parameters); spread_separation then solves S_a, singular, and raises the same "
+        "LinAlgError with or without the 1e-300 (the mutant raises one line earlier)",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
