@@ -2470,10 +2470,11 @@ EQUIVALENT: dict[str, str] = {
     # --- criticism, the tenth round (naming, slips, verdict, run_order, one_run, discrimination, reach, edges)
     "demid/criticism/discrimination.py::joint_separation::total[:, np.arange(delta.shape[1]), "
     "np.arange(delta.shape[1])] += 1e-300 => pass#0":
-        "the diagonals of S_a and S_b are variances (noise plus a quadratic form of a covariance), so S_a + S_b "
-        "has a diagonal entry below 1e-300 only where both have a zero row (a run with no noise and no "
-        "dependence on the parameters); spread_separation then solves S_a, singular, and raises the same "
-        "LinAlgError with or without the 1e-300 (the mutant raises one line earlier)",
+        "the diagonals of S_a and S_b are variances (noise plus a quadratic form of a covariance, both scaled "
+        "by a residual mean square, never subnormal), so 1e-300 changes S_a + S_b only where a diagonal entry "
+        "is 0, i.e. both have a zero row (a run with no noise and no dependence on the parameters); "
+        "spread_separation then solves S_a, singular, and raises the same LinAlgError with or without the "
+        "1e-300 (the mutant raises one line earlier)",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
