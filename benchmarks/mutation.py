@@ -1454,7 +1454,8 @@ TABLE: dict[str, dict] = {
                                   "tests/criticism/test_ambiguity_named_first_whole.py",
                                   "tests/criticism/test_one_run_weighted_whole.py",
                                   "tests/criticism/test_level1_close_alternatives_whole.py",
-                                  "tests/criticism/test_deciding_runs_kinds_whole.py"],
+                                  "tests/criticism/test_deciding_runs_kinds_whole.py",
+                                  "tests/criticism/test_naming_slip_allowance_whole.py"],
     },
     "demid/criticism/slips.py": {
         "functions": None,
