@@ -1455,7 +1455,8 @@ TABLE: dict[str, dict] = {
                                   "tests/criticism/test_one_run_weighted_whole.py",
                                   "tests/criticism/test_level1_close_alternatives_whole.py",
                                   "tests/criticism/test_deciding_runs_kinds_whole.py",
-                                  "tests/criticism/test_naming_slip_allowance_whole.py"],
+                                  "tests/criticism/test_naming_slip_allowance_whole.py",
+                                  "tests/criticism/test_naming_honest_causes_whole.py"],
     },
     "demid/criticism/slips.py": {
         "functions": None,
