@@ -2482,6 +2482,11 @@ EQUIVALENT: dict[str, str] = {
         "the rows compared carry the run's rank beside the key, and run numbers are distinct (data.py refuses a "
         "repeated run number; without a run column the rows are numbered), so no two rows are equal and every "
         "row starts a new rank either way",
+    "demid/criticism/slips.py::slip_fit::float((m.z[pos] - x[pos] @ beta) / (s * math.sqrt(1.0 + x[pos] @ a @ "
+    "x[pos]))) => (m.z[pos] - x[pos] @ beta) / (s * math.sqrt(1.0 + x[pos] @ a @ x[pos]))#0":
+        "a numpy float64 (a scalar of a 1-D response minus a dot product, over a float): a float subclass, which "
+        "the slip's message formats, abs() reads and the findings' JSON (json.dumps, io._clean) writes as the "
+        "float itself",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
