@@ -1501,7 +1501,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_verdict_messages_whole.py", "tests/criticism/test_one_run_weighted_whole.py",
                   "tests/criticism/test_finding_readings_whole.py", "tests/criticism/test_verdict_limits_whole.py",
                   "tests/criticism/test_residual_misfit_level.py", "tests/criticism/test_replicate_runs_whole.py",
-                  "tests/criticism/test_verdict_box_grid_whole.py", *[
+                  "tests/criticism/test_verdict_box_grid_whole.py", "tests/criticism/test_naming_honest_causes_whole.py", *[
             f"tests/criticism/test_honest_causes.py::{name}" for name in (
                 "test_misfit_without_a_catalogue_cause_is_unexplained_or_points_at_a_moved_run",
                 "test_noise_only_response_does_not_predict", "test_detectable_departure_has_its_power_by_simulation",
