@@ -1490,7 +1490,8 @@ TABLE: dict[str, dict] = {
         "tests": _NAMING_TESTS + ["tests/criticism/test_slips_brute_force.py", "tests/criticism/test_slips_whole.py",
                                   "tests/criticism/test_extensions_forms_whole.py", "tests/criticism/test_slip_fit_whole.py",
                                   "tests/criticism/test_slip_candidates_whole.py",
-                                  "tests/criticism/test_extensions_accumulate_whole.py"],
+                                  "tests/criticism/test_extensions_accumulate_whole.py",
+                                  "tests/criticism/test_slips_unit_change_whole.py"],
     },
     "demid/criticism/verdict.py": {
         "functions": None,
