@@ -2516,6 +2516,10 @@ EQUIVALENT: dict[str, str] = {
         "a numpy float64 (a scalar of a 1-D response minus a dot product, over a float): a float subclass, which "
         "the slip's message formats, abs() reads and the findings' JSON (json.dumps, io._clean) writes as the "
         "float itself",
+    "demid/criticism/reach.py::reach_beyond_bound::float(turn) => turn#0":
+        "turn is -rate / bend of numpy floats or np.inf: a float or a numpy float64 (a float subclass), which "
+        "levels_off's np.isfinite, saturation_advice's comparison, to_json's isinstance(v, float) test and the "
+        "JSON writer read as the same float",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
