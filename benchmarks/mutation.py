@@ -814,16 +814,30 @@ another mutation run and a benchmark):
 
     seed  rows        as run          with lists     after
     36    all eight   20/24 83.3 %   20/23 87.0 %   22/23 95.7 % (re-run with ``--ids``)
-    SEED37_ROW
+    37    all eight   16/24 66.7 %   16/22 72.7 %   20/22 90.9 % (re-run with ``--ids``)
 
 "With lists": seed 36's _ranks without its new-row test (run numbers are distinct, so no two rows of key and run
-rank are equal); SEED37_LISTS  Killed after (re-run with ``--ids``): verdict_of's box-grid sentence given to
+rank are equal); seed 37's float() of slip_fit's recorded t and of reach's levelling-off extension (numpy floats,
+read as floats everywhere).  Seed 37 as run is the lowest of the criticism rows' fresh draws so far: the fifth
+draw in a row at 67-84 %.  Killed after (re-run with ``--ids``): verdict_of's box-grid sentence given to
 replicates (tests/criticism/test_verdict_box_grid_whole.py: replicates of an unexplained misfit or of a simulated
 outlier are never said to be on the next box's grid, confirming runs are; the verdict's Q², RMSE and leave-one-out
 error against statsmodels), deleted_logp's estimability threshold made absolute
 (tests/criticism/test_one_run_estimability_whole.py: a cubic told from the quadratic only by a run 1 + delta, its
 remainder without the far run between 1e-7 and 1e-7 times the column's norm; every entry against statsmodels' F
-test).  SEED37_AFTER  Left: extrapolation_warnings' ``hi > lo`` -> ``>=`` (it differs only for a factor whose
+test).  Seed 37's four, by tests written after reading it: honest_causes' candidate quoted after a cause was
+named and the unexplained message without its candidate sentence (tests/criticism/test_naming_honest_causes_whole.py:
+the whole return, a residual test exactly at the stricter level, the candidate's sentence parsed back; the
+verdict row names it too), _slipped_terms' ``!= 0`` -> ``!= 1`` (tests/criticism/test_slips_unit_change_whole.py: a
+centre run slipped x10 onto coded 1 changes its linear and squared terms by exactly 1; every SSE ratio against a
+refit), the deleted runs' fitted-value covariate taken as the response
+(tests/criticism/test_one_run_fitted_covariate_whole.py: statsmodels' refit without each run).  Left: seed 37's
+_scatter_covariate without its block columns (a blocked table whose scatter follows the fitted values; not built
+in time) and reach_beyond_bound's round-off floor of the curvature taken from the smallest prediction, not the
+largest; reading that one showed a bug, not fixed: the floor is relative to the predictions, but their round-off is
+relative to the surrogate's terms, so a straight response that is 0 at the bound (y = 1.1 (x - 1011) on 1003 to
+1011) gets a curvature of -2e-9 from round-off and, moving away from a target of -4, a quadratic extension of 7.7e9
+ranges (the "back in its band some 1e10 ranges beyond the bound" the floor was written against).  Left: extrapolation_warnings' ``hi > lo`` -> ``>=`` (it differs only for a factor whose
 search range has equal ends, which config refuses, or a log factor whose ends share a log10 to the last bit; the
 warning either way says nothing true of such a range, so no test asserts one).  Of the ninth round's left survivors in
 these rows: name_cause's slip allowance ``max(others) - 1`` -> ``+ 1`` is killed
@@ -831,7 +845,7 @@ these rows: name_cause's slip allowance ``max(others) - 1`` -> ``+ 1`` is killed
 parameters, exactly -1, just below, between -1 and +1, the Bayes factor exactly at its threshold, 1-3 others
 whose raw and adjusted orders differ, the whole return), joint_separation's 1e-300 on the diagonal is listed as
 equivalent (a zero there is a zero row of both covariances, on which spread_separation raises either way).
-Tests added: 4 files, 122 tests, each file's tests under 0.5 s (about 8 s in one process with imports on the loaded
+Tests added: 7 files, 128 tests, each file's tests under 1 s (about 9 s in one process with imports on the loaded
 machine).  Rows name the new files.
 
 Seventh round, the sampling, surrogate and precision rows (13 rows; new in-sample draws, ``--per-module 2``, each
