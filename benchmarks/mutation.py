@@ -845,7 +845,7 @@ these rows: name_cause's slip allowance ``max(others) - 1`` -> ``+ 1`` is killed
 parameters, exactly -1, just below, between -1 and +1, the Bayes factor exactly at its threshold, 1-3 others
 whose raw and adjusted orders differ, the whole return), joint_separation's 1e-300 on the diagonal is listed as
 equivalent (a zero there is a zero row of both covariances, on which spread_separation raises either way).
-Tests added: 7 files, 128 tests, each file's tests under 1 s (about 9 s in one process with imports on the loaded
+Tests added: 6 files, 128 tests, each file's tests under 1 s (about 8 s in one process with imports on the loaded
 machine).  Rows name the new files.
 
 Seventh round, the sampling, surrogate and precision rows (13 rows; new in-sample draws, ``--per-module 2``, each
