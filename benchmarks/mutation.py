@@ -842,7 +842,7 @@ ranges (the "back in its band some 1e10 ranges beyond the bound" the floor was w
 seed 36's extrapolation_warnings ``hi > lo`` -> ``>=`` (it differs only for a factor whose search range has equal
 ends, which config refuses, or a log factor whose ends share a log10 to the last bit; the warning either way says
 nothing true of such a range, so no test asserts one).  Of the ninth round's left survivors in
-these rows: name_cause's slip allowance ``max(others) - 1`` -> ``+ 1`` is killed
+these rows: name_cause's slip allowance ``max(others) - 1`` -> ``+ 1`` is killed (re-run with ``--ids``)
 (tests/criticism/test_naming_slip_allowance_whole.py: the slip's margin to the best other extension, adjusted for
 parameters, exactly -1, just below, between -1 and +1, the Bayes factor exactly at its threshold, 1-3 others
 whose raw and adjusted orders differ, the whole return), joint_separation's 1e-300 on the diagonal is listed as
