@@ -809,8 +809,8 @@ studentised residuals).  Rows name them, and more of the fast whole-output files
 
 Tenth round, eight criticism rows (naming, slips, verdict, run_order, one_run, discrimination, reach, edges; new
 in-sample draws, ``--per-module 3``, each run before any test was aimed at it: seed 36 on the round's start, seed 37
-on seed 36's tests and the ninth round's left survivors' tests, none written against it; a machine shared with
-another mutation run and a benchmark):
+on the first of seed 36's tests (the verdict's box grid, the slip allowance), none written against it; a machine
+shared with another mutation run and a benchmark):
 
     seed  rows        as run          with lists     after
     36    all eight   20/24 83.3 %   20/23 87.0 %   22/23 95.7 % (re-run with ``--ids``)
