@@ -168,6 +168,17 @@ as run per area (seed 35: 83.8-86.0 % outside the criticism rows, 70.0 % on them
 them.  Pooled over the last three held-out draws: **176 of 201, 87.6 %** (95 % interval about 82-92 %): short of
 90 %.  The draw is in SEEN_DRAWS; the next held-out seed is written down below.
 
+Tenth held-out draw (seed 927_443, written down after the ninth was scored and before any test of the ninth's
+survivors was written; run on the code with those tests merged, while the tenth round's criticism tests were being
+written elsewhere, so none is in it; the same command): **58 of 67 killed, 86.6 %** (29/34 and 29/33; two listed
+equivalent beforehand).  Survivors: sampling/sobol ``sobol_fraction`` 3 -> 4; sampling/polish ``start_points``
+``max(16, 2 * d)`` -> ``min``; criticism/run_order ``RunOrder.to_json`` without ``or None``; uncertainty/ranking
+``rank_observable_sets``' ``fraction_n or n`` -> ``n``; uncertainty/posterior ``_quantiles`` 0 -> -1;
+transcription/check ``check_transcription`` False -> True; data ``ValidatedTable.summary`` without int();
+blocks ``ccd_blocks`` 1 -> 0; scenario ``JudgedScenario.contains`` ``<= 1 + MEMBERSHIP_SLACK`` -> ``<``.
+**Pooled over the last four held-out draws: 234 of 268, 87.3 %** (95 % interval about 83-91 %).  The draw is in
+SEEN_DRAWS; the next held-out seed is written down below.
+
 Fourth round, the uncertainty, story, combinations, design, wave and loop modules (28 rows; new in-sample draws,
 seeds 21, 22 and 23 with ``--per-module 2`` and 21 and 22 again with 4, each run before any test was aimed at it, on the
 tests of the round so far; "with lists": survivors that reading showed equivalent or a search setting left out of the score):
@@ -3647,7 +3658,7 @@ def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]
 #: its mutants are drawn apart from the in-sample draw (the default ``--seed``, against which tests were written
 #: run by run), and no test may be written against them.  Once its survivors have been read and tests added for
 #: them, its score is in-sample too: write down a new seed here, unused, before the next round.
-HELD_OUT_SEED = 927_443  # the next draw; 702_119's, 781_203's and 864_091's were scored (in SEEN_DRAWS now)
+HELD_OUT_SEED = 415_867  # the next draw; 702_119's, 781_203's, 864_091's and 927_443's were scored (in SEEN_DRAWS)
 
 
 #: Draws that tests were written against, run by run (seed, mutants per module): never part of a held-out draw.
@@ -3655,7 +3666,7 @@ HELD_OUT_SEED = 927_443  # the next draw; 702_119's, 781_203's and 864_091's wer
 #: draw's survivors were read and tested), the second and third held-out draws (704_913, 3 per module; 902_611, 1)
 #: were read and tested, and so were the fourth round's draws (seeds 21-22 with 4 per module, 23 with 2, 24 with 2,
 #: 25 with 1).
-SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3", "864091:1"]
+SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3", "864091:1", "36:3", "37:3", "927443:1"]
 
 
 def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:
