@@ -1369,7 +1369,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/criticism/test_linear_memory.py", "tests/criticism/test_large_studies.py",
                   "tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_step_changes_whole.py",
-                  "tests/criticism/test_catalogue_steps_whole.py"],
+                  "tests/criticism/test_catalogue_steps_whole.py", "tests/criticism/test_step_columns_tiny_weights_whole.py"],
     },
     "demid/transcription/printed.py": {
         "functions": None,
@@ -2399,6 +2399,11 @@ EQUIVALENT: dict[str, str] = {
         "len(bias_candidates) > 1 -> > 0 in the branch after `biased_observable is not None`: bottleneck_analysis "
         "names the biased observable exactly when there is one candidate, so the branch sees 0 or 2+ candidates, "
         "where > 0 and > 1 agree (no other code builds a Level2Result or changes either field)",
+    # --- tenth round, seeds 36 and 37: models, catalogue, outliers, step_changes, level1, level2, searches,
+    # aliasing, extensions
+    "demid/criticism/step_changes.py::step_projections::1 => 2#5":
+        "suffix()'s table of n + 2 rows instead of n + 1: it is read only at ``first``, the first sorted position "
+        "of a change-point's label, at most n - STEP_MIN_RUNS, so the extra zero row is never read",
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",
