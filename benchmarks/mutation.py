@@ -1235,6 +1235,7 @@ _LEVEL2_TESTS = ["tests/criticism/test_level2_known_answers.py", "tests/test_rep
                  "tests/criticism/test_unreachable_targets.py", "tests/criticism/test_level2_whole.py",
                  "tests/criticism/test_level2_weighted_text_whole.py", "tests/criticism/test_level2_within_whole.py",
                  "tests/criticism/test_level2_unmoved_scale_whole.py", "tests/criticism/test_level2_frame_agrees_whole.py",
+                 "tests/criticism/test_level2_best_point_slack_whole.py", "tests/criticism/test_level2_missed_sign_whole.py",
                  "-klevel2 or edge or reach"]
 # the transcription check's tests (the CLI ones run the check end to end on a small table)
 _TRANSCRIPTION_TESTS = ["tests/transcription/test_transcription.py",
