@@ -1419,7 +1419,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_unexplained_summary_whole.py",
                   "tests/criticism/test_level1_close_alternatives_whole.py", "tests/criticism/test_models_constant_whole.py",
                   "tests/criticism/test_one_run_whole.py", "tests/criticism/test_residual_misfit_level.py",
-                  "tests/criticism/test_level1_frame_runs_whole.py", "-knot 3f and not level2"],
+                  "tests/criticism/test_level1_frame_runs_whole.py", "tests/criticism/test_level1_second_finding_whole.py",
+                  "-knot 3f and not level2"],
     },
     "demid/criticism/level2.py": {
         "functions": None,
