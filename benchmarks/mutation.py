@@ -1441,6 +1441,8 @@ TABLE: dict[str, dict] = {
         "tests": _NAMING_TESTS + ["tests/criticism/test_aliasing_whole.py",
                                   "tests/criticism/test_one_more_run_update_whole.py",
                                   "tests/criticism/test_one_more_run_scale_whole.py",
+                                  "tests/criticism/test_level1_frame_runs_whole.py",
+                                  "tests/criticism/test_extensions_accumulate_whole.py",
                                   "tests/criticism/test_one_run_whole.py", "tests/criticism/test_one_run_spare_runs_whole.py"],
     },
     "demid/criticism/extensions.py": {
