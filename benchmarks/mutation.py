@@ -2408,6 +2408,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/step_changes.py::step_projections::1 => 2#5":
         "suffix()'s table of n + 2 rows instead of n + 1: it is read only at ``first``, the first sorted position "
         "of a change-point's label, at most n - STEP_MIN_RUNS, so the extra zero row is never read",
+    "demid/criticism/extensions.py::extend_for::abs(lam - 1.0) < 1e-09 => abs(lam - 1.0) <= 1e-09#0":
+        "the lambda tested is log, sqrt or inverse (0, 0.5, -1), one of NICE_LAMBDAS or round(lambda_hat, 1) of a "
+        "grid lambda: 1.0 itself or at least about 0.1 from it, never exactly 1e-9 away",
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",
