@@ -2411,6 +2411,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/extensions.py::extend_for::abs(lam - 1.0) < 1e-09 => abs(lam - 1.0) <= 1e-09#0":
         "the lambda tested is log, sqrt or inverse (0, 0.5, -1), one of NICE_LAMBDAS or round(lambda_hat, 1) of a "
         "grid lambda: 1.0 itself or at least about 0.1 from it, never exactly 1e-9 away",
+    "demid/criticism/models.py::Model.n_params::int(self.spec.step is not None) => self.spec.step is not None#0":
+        "an int less a bool is the same int (True counts 1): n_params' value and type are unchanged",
+    "demid/criticism/models.py::Model.loglik_with::self.spec.weight_on is not None and self.spec.dropped => "
+    "self.spec.weight_on is not None#0":
+        "without excluded runs the added term is 0.5 * sum(-gamma * v) over an empty selection, 0.0: the same "
+        "log-likelihood",
     # --- surrogate
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65535#0": "chunk size of a vectorised loop",
     "demid/surrogate.py::Surrogate.se_mean::65536 => 65537#0": "chunk size of a vectorised loop",
