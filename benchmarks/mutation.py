@@ -1930,6 +1930,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_scenario.py", "tests/test_tolerance.py", "tests/test_judged_scenario_properties.py",
                   "tests/test_scenario_whole.py",
+                  "tests/test_membership_edge_whole.py",
                   "tests/uncertainty/test_own_tolerance_posteriors.py",
                   "tests/uncertainty/test_uncertainty.py::test_measurement_sigma_sources",
                   "tests/uncertainty/test_uncertainty.py::"
