@@ -1686,6 +1686,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_typo_stop.py", "tests/transcription/test_likely_typos.py",
                   "tests/transcription/test_check_whole.py", "tests/transcription/test_check_source_default.py",
+                  "tests/transcription/test_check_no_repair_whole.py",
                   "tests/transcription/test_cell_repair_ties_whole.py",
                   "tests/transcription/test_check_messages_whole.py", "tests/transcription/test_check_ranking_whole.py",
                   "tests/test_reconstruct.py", "tests/inputs/test_cli.py::test_check_transcription_cli_finds_planted_slip",
