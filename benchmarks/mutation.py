@@ -3309,6 +3309,17 @@ EQUIVALENT: dict[str, str] = {
         "from robust_identifiability.csv with read_csv as float64; a float64 or a float equals 0 exactly when its "
         "float() does (NaN neither way), so the bounds set to NaN and every written column, plausible_lower and "
         "plausible_upper float() of their own cells, are the same, dtypes included",
+    # --- the tenth held-out draw's survivors (scenario, check, blocks, data)
+    "demid/blocks.py::ccd_blocks::1 => 0#1":
+        "factorial_blocks == 0 for == 1: n_blocks < 2 has returned, so factorial_blocks is never 0 and the "
+        "mutant always takes the halving branch; with one factorial block that branch runs range(int(log2(1))), "
+        "no pass, leaving code all 0, and writes 1 + 0 % 1 = 1 to every factorial point, as the skipped branch "
+        "does (no factorial points: both write nothing); with two or more both take it, and a non-integer or "
+        "NaN n_blocks equals neither 0 nor 1, so both run the same code and raise alike",
+    "demid/data.py::ValidatedTable.summary::int(len(self.table)) => len(self.table)#0":
+        "len() always returns an exact Python int (built from the __len__ result's Py_ssize_t, whatever int "
+        "subclass __len__ gives), and int() of an exact int is that int: n_runs is the same value and type, "
+        "and an object without a length raises the same TypeError before int() is reached",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
