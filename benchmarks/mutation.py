@@ -1577,6 +1577,7 @@ TABLE: dict[str, dict] = {
     "demid/criticism/run_order.py": {
         "functions": None,
         "tests": ["tests/criticism/test_run_order.py", "tests/criticism/test_run_order_whole.py",
+                  "tests/criticism/test_run_order_json_whole.py",
                   "tests/criticism/test_run_order_span.py", "tests/criticism/test_run_order_limits_whole.py",
                   "tests/criticism/test_run_order_thresholds_whole.py",
                   "tests/test_reported_numbers.py", "tests/criticism/test_criticism.py",
@@ -1585,6 +1586,7 @@ TABLE: dict[str, dict] = {
     "demid/uncertainty/ranking.py": {
         "functions": None,
         "tests": ["tests/uncertainty/test_ranking.py", "tests/uncertainty/test_ranking_whole.py",
+                  "tests/uncertainty/test_ranking_fraction_grid_whole.py",
                   "tests/uncertainty/test_met_together_properties.py", "tests/uncertainty/test_material_tables_whole.py",
                   "tests/test_reported_numbers.py::test_ranking_reports_gain_fraction_and_contraction_in_closed_form",
                   "tests/test_reported_numbers.py::test_measurement_order_quotes_the_gains_and_fractions_of_the_ranking",
