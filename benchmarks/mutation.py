@@ -1644,6 +1644,7 @@ TABLE: dict[str, dict] = {
     "demid/uncertainty/posterior.py": {
         "functions": None,
         "tests": ["tests/uncertainty/test_posterior_quantiles.py", "tests/uncertainty/test_uncertainty.py",
+                  "tests/uncertainty/test_posterior_interval_tilted_whole.py",
                   "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py",
                   "tests/uncertainty/test_qmc_posterior_properties.py", "tests/uncertainty/test_grid_posterior_whole.py",
                   "tests/uncertainty/test_qmc_posterior_whole.py", "tests/uncertainty/test_posterior_small_grids_whole.py",
