@@ -41,6 +41,25 @@ def _problem(errors, weights):
     return problem, grid_s, problem.errors(grid_s)
 
 
+def _tolerance(worst, where):
+    """A tolerance at ``worst``, 5e-13 inside it, the one whose + 1e-12 slack is exactly ``worst``
+    (``at_slack``), or one step below that (``past``)."""
+    if where == "at":
+        return worst
+    if where == "inside":
+        return worst - 5e-13
+    tol = worst - 1e-12
+    for _ in range(64):
+        if tol + 1e-12 == worst:
+            break
+        tol = np.nextafter(tol, np.inf if tol + 1e-12 < worst else -np.inf)
+    assert tol + 1e-12 == worst
+    if where == "past":
+        tol = np.nextafter(tol, -np.inf)
+        assert tol + 1e-12 < worst
+    return tol
+
+
 def _left(grid_err, weights, i):
     """The largest weighted |error| of the others, the same at every node."""
     others = [j for j in range(len(grid_err)) if j != i]
@@ -59,17 +78,7 @@ def test_the_candidates_at_the_tolerance_and_its_slack(errors, weights, where):
     names = problem.observables
     left = {o: _left(grid_err, weights, i) for i, o in enumerate(names)}
     low = min(left.values())
-    tol = {"at": low, "inside": low - 5e-13}[where] if where in ("at", "inside") else None
-    if tol is None:  # the tolerance whose + 1e-12 is exactly the least error left, and one step above that
-        tol = low - 1e-12
-        for _ in range(64):
-            if tol + 1e-12 == low:
-                break
-            tol = np.nextafter(tol, np.inf if tol + 1e-12 < low else -np.inf)
-        assert tol + 1e-12 == low
-        if where == "past":
-            tol = np.nextafter(tol, -np.inf)
-            assert tol + 1e-12 < low
+    tol = _tolerance(low, where)
     without, implied, bottleneck, candidates, biased = bottleneck_analysis(problem, grid_s, grid_err, tol, False)
     assert without == pytest.approx(left, rel=0, abs=0)
     assert implied == pytest.approx({o: float(grid_err[i, 0]) for i, o in enumerate(names)}, rel=1e-9, abs=1e-12)

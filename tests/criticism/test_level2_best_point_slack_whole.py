@@ -9,24 +9,10 @@ import numpy as np
 import pytest
 
 from demid.criticism.level2 import _best_point
-from tests.criticism.test_bottleneck_slack_whole import _problem
+from tests.criticism.test_bottleneck_slack_whole import _problem, _tolerance
 
 CASES = [([0.1, -0.2, 0.4], [1.0, 1.0, 1.0]), ([-0.05, 0.3, -0.6, 0.15], [1.0, 0.5, 2.0, 1.0]),
          ([0.25, -0.35], [1.0, 1.0]), ([-0.3], [1.0])]
-
-
-def _tolerance(worst, where):
-    if where == "at":
-        return worst
-    if where == "inside":
-        return worst - 5e-13
-    tol = worst - 1e-12
-    for _ in range(64):
-        if tol + 1e-12 == worst:
-            break
-        tol = np.nextafter(tol, np.inf if tol + 1e-12 < worst else -np.inf)
-    assert tol + 1e-12 == worst
-    return tol if where == "at_slack" else np.nextafter(tol, -np.inf)
 
 
 @pytest.mark.parametrize("errors,weights", CASES)
