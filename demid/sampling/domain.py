@@ -50,6 +50,15 @@ def sides_at_limit(bounds: tuple, limits: tuple) -> list[str]:
             if limit is not None and beyond * (limit - bound) >= -slack]
 
 
+def search_to_actual(z, log) -> np.ndarray:
+    """Search units (log10 for a log-scale factor) to actual units, a copy; ``log`` flags the factors (the last
+    axis).  Only the log factors are raised: 10 ** z of a linear factor above about 308 would overflow."""
+    z = np.array(z, dtype=float)
+    flags = np.broadcast_to(np.array(log, dtype=bool), z.shape)
+    z[flags] = 10.0 ** z[flags]
+    return z
+
+
 @dataclass(frozen=True)
 class Domain:
     """The search domain Omega: a box in search units (actual, or log10 for log factors)."""
@@ -101,11 +110,7 @@ class Domain:
         return tuple(AT_BOUND[int(a) + 2 * int(b)] for a, b in zip(low, high))
 
     def to_actual(self, u: np.ndarray) -> np.ndarray:
-        u = np.array(u, dtype=float, copy=True, ndmin=2)
-        for i, lg in enumerate(self.log):
-            if lg:
-                u[:, i] = 10.0 ** u[:, i]
-        return u
+        return search_to_actual(np.atleast_2d(np.asarray(u, dtype=float)), self.log)
 
     def to_search(self, x: np.ndarray) -> np.ndarray:
         return model_units(x, self.factors, [f for f, lg in zip(self.factors, self.log) if lg])

@@ -44,6 +44,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
+from .domain import search_to_actual
 from .planes import Planes, Solid
 from .roots import Lines, horner, line_coefficients
 
@@ -136,10 +137,7 @@ class ExactSet:
         return self.lower + (self.upper - self.lower) * np.asarray(u, dtype=float)
 
     def to_actual(self, z) -> np.ndarray:
-        z = np.array(z, dtype=float)
-        log = np.broadcast_to(np.array(self.log, dtype=bool), z.shape)
-        z[log] = 10.0 ** z[log]  # only the log factors: 10 ** z of a linear factor above ~308 would overflow
-        return z
+        return search_to_actual(z, self.log)
 
     @cached_property
     def _shape(self):
