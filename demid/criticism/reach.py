@@ -16,14 +16,15 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from ..design import model_matrix
 from .models import short_number
 
 #: Largest extension (fraction of the search range beyond the bound) worth advising as "widen": further out
 #: the quadratic's extrapolation rests on no run, and a target it reaches there is no evidence the model can.
 WIDEN_LIMIT = 0.5
 _STEP = 0.01  # finite-difference step, fraction of the range
-#: A second difference within this many machine epsilons of the responses' size is round-off (each of the three
-#: predictions carries a few epsilons of relative error).
+#: A second difference within this many machine epsilons of the predictions' terms is round-off (each of the three
+#: predictions carries a few epsilons of the size of the terms it sums).
 _ROUND_OFF = 64 * np.finfo(float).eps
 
 
@@ -95,6 +96,17 @@ def smallest_positive_root(a: float, b: float, c: float) -> float:
     return min(positive) if positive else np.inf
 
 
+def terms_size(surrogate, points) -> np.ndarray:
+    """Per point (actual units), the size a prediction's round-off is relative to: for a polynomial surrogate the
+    sum of its terms' absolute values (y = 1.1 (x - 1011) is 0 at x = 1011, summed from terms of 1112), otherwise
+    the prediction's own size."""
+    from ..surrogate import Surrogate  # here: the reading jobs import this module and never fit
+
+    if isinstance(surrogate, Surrogate):
+        return np.abs(model_matrix(surrogate.model_units(points), surrogate.terms)) @ np.abs(surrogate.coefficients)
+    return np.abs(np.asarray(surrogate.predict(points), dtype=float))
+
+
 def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, observable: str,
                        target: float, tolerance: float) -> Reach:
     """How far beyond ``side`` of ``factor`` the surrogate of ``observable`` must be followed, from ``point``
@@ -119,12 +131,13 @@ def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, o
     def factor_value(t):
         return float(domain.to_actual(along([t]))[0, i]) if np.isfinite(t) else np.nan
 
-    f_minus, f0, f_plus = predict([-_STEP, 0.0, _STEP])
+    steps = [-_STEP, 0.0, _STEP]
+    f_minus, f0, f_plus = predict(steps)
     g = (f_plus - f_minus) / (2 * _STEP)           # per fraction of the range, outwards
     c = (f_plus - 2 * f0 + f_minus) / _STEP ** 2
     # a straight response's second difference is round-off, not curvature: taken as curvature, it put a response
     # moving away from its target "back in its band" some 1e10 ranges beyond the bound
-    if abs(c) <= _ROUND_OFF * max(abs(f_minus), abs(f0), abs(f_plus)) / _STEP ** 2:
+    if abs(c) <= _ROUND_OFF * float(np.max(terms_size(surrogate, domain.to_actual(along(steps))))) / _STEP ** 2:
         c = 0.0
     direction = 1.0 if f0 < target else -1.0      # the observable must rise (+1) or fall (-1)
     edge = target - direction * tolerance * abs(target)
