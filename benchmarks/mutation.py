@@ -1925,7 +1925,8 @@ TABLE: dict[str, dict] = {
     "demid/criticism/edges.py": {
         "functions": None,
         "tests": ["tests/criticism/test_edges.py", "tests/criticism/test_edges_whole.py", "tests/test_physical_limits.py",
-                  "tests/criticism/test_reference_beyond_bounds_whole.py", "tests/criticism/test_edges_limits_whole.py"],
+                  "tests/criticism/test_reference_beyond_bounds_whole.py", "tests/criticism/test_edges_limits_whole.py",
+                  "tests/criticism/test_edges_span_whole.py"],
     },
     "demid/uncertainty/sweep.py": {
         "functions": None,
