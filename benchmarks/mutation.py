@@ -1913,7 +1913,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_deciding_runs_greedy_whole.py", "tests/criticism/test_ambiguity_whole.py",
                   "tests/criticism/test_verdict_messages_whole.py", "tests/criticism/test_ambiguity_named_first_whole.py",
                   "tests/criticism/test_deciding_runs_kinds_whole.py",
-                  "tests/criticism/test_prediction_fitted_scatter_blocks_whole.py"],
+                  "tests/criticism/test_prediction_fitted_scatter_blocks_whole.py",
+                  "tests/criticism/test_close_candidates_whole.py"],
     },
     "demid/criticism/reach.py": {
         "functions": None,
