@@ -1857,6 +1857,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_one_run_weighted_whole.py", "tests/criticism/test_verdict_messages_whole.py",
                   "tests/criticism/test_verdict_limits_whole.py", "tests/criticism/test_one_run_estimability_whole.py",
                   "tests/criticism/test_one_run_fitted_covariate_whole.py",
+                  "tests/criticism/test_one_run_identity_threshold_whole.py",
                   *[f"tests/criticism/test_honest_causes.py::{name}" for name in (
             "test_one_run_deletions_match_refits_without_each_run", "test_unequal_scatter_resting_on_one_run_is_not_named",
             "test_large_table_worst_deletion_of_unequal_scatter_equals_every_deletion")]],
@@ -2357,8 +2358,8 @@ EQUIVALENT: dict[str, str] = {
     "np.flatnonzero(np.flatnonzero(model.keep) == c.row)[0]#0":
         "the position only indexes model.coded (then copied): a numpy integer indexes the same row",
     "demid/criticism/run_order.py::_ranks::np.cumsum(new_row) - 1 => np.cumsum(new_row)#0":
-        "every rank one higher: the ranks are read only by _rank_correlation, a Pearson correlation (and a ptp "
-        "test), which no shift of one variable changes",
+        "every rank one higher: the ranks are read only by _rank_correlation, a Pearson correlation, which no "
+        "shift of one variable changes",
     "demid/criticism/models.py::Model.__init__::float(np.mean(data.runs[keep].astype(float))) => "
     "np.mean(data.runs[keep].astype(float))#0":
         _NUMPY_FLOAT + " (run_center centres the run column and is the extended surrogate's reference run)",
@@ -2403,9 +2404,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/naming.py::_choices::rnd.model.hat < LEVERAGE_UNPREDICTABLE => rnd.model.hat <= "
     "LEVERAGE_UNPREDICTABLE#0":
         "differs only for a run whose leverage equals LEVERAGE_UNPREDICTABLE (0.99) to the last bit",
-    "demid/criticism/run_order.py::standard_order_correlation::0 => -1#0":
-        "run numbers all equal then go on to the loop, where every rank correlation with a constant run rank is 0.0 "
-        "(_rank_correlation's ptp test): the same 0.0 is returned",
     "demid/criticism/slips.py::slip_ratios::1 => 0#4":
         "only how many candidates are taken at once (the runs instead of the response columns divide SLIP_CELLS): "
         "each candidate's moved SSE is its own row's, the largest ratio and its first candidate (argmin's first in "
@@ -2473,10 +2471,6 @@ EQUIVALENT: dict[str, str] = {
         "centre is the middle of its range, lo + hi with lo < hi, which IEEE addition makes +0.0 when it is zero",
     "demid/criticism/run_order.py::_rank_correlation::float(np.corrcoef(a, b)[0, 1]) => np.corrcoef(a, b)[0, 1]#0":
         "an element of a float array: " + _NUMPY_FLOAT + " (to_json rounds float() of it)",
-    "demid/criticism/run_order.py::_rank_correlation::0 => 1#0":
-        "np.ptp(a) == 0 -> == 1: a is the run numbers' ranks, called only past standard_order_correlation's n >= 4 "
-        "and non-constant runs, whose average ranks span at least n/2 >= 2 (two tied groups of k and n - k runs "
-        "span n/2): neither test is ever true",
     "demid/criticism/one_run.py::deleted_logp_by_identity::1 => 0#10":
         "sse / (n - 1) -> sse / n in the Box-Cox profile without each run: the same constant (n - 1)/2 log((n - 1)/n) "
         "added at every lambda, which the likelihood ratio (the profile's maximum less its value at lambda 1) "
@@ -2544,12 +2538,6 @@ EQUIVALENT: dict[str, str] = {
         "e_obs is the one column m.resid_w[:, None] (Round.__init__): its first and last statistics are the same",
     "demid/criticism/catalogue.py::heteroscedasticity_lr::float(np.sum(np.log(sw))) => np.sum(np.log(sw))#0":
         _NUMPY_FLOAT + " (added to the profile's row of an array)",
-    "demid/criticism/verdict.py::power_caveat::np.isfinite(size) and abs(size) >= 10000.0 => "
-    "abs(size) >= 10000.0#0":
-        "differs only for an infinite size, where plain_number falls back to short_number as well: both print 'inf'",
-    "demid/criticism/run_order.py::_rank_correlation::0 => 1#1":
-        "b is a ranking of the runs (a permutation of their ranks), whose range is the number of runs less one: "
-        "neither 0 nor 1 for the seven or more runs a quadratic needs",
     "demid/criticism/run_order.py::_follows_response::0 => -1#0":
         "a constant response has no rank correlation: scipy's Spearman rho is NaN, which fails the threshold, "
         "so the response is skipped either way",
@@ -2605,6 +2593,15 @@ EQUIVALENT: dict[str, str] = {
         "turn is -rate / bend of numpy floats or np.inf: a float or a numpy float64 (a float subclass), which "
         "levels_off's np.isfinite, saturation_advice's comparison, to_json's isinstance(v, float) test and the "
         "JSON writer read as the same float",
+    # --- criticism, the eleventh round (seeds 38 and 39): naming, slips, verdict, run_order, one_run,
+    # discrimination, reach, edges
+    "demid/criticism/one_run.py::deleted_logp_by_identity::0 => -1#10":
+        "rc[:, 0] -> rc[:, -1] in the added variable's projection: rc is the residualised column[:, None], one "
+        "column, so its first column is its last",
+    "demid/criticism/slips.py::slip_fit::0 => -1#2":
+        "the first -> the last of one run's slips (or of the run's position among the kept runs): slip_fit's one "
+        "caller (catalogue.Round) passes the candidates of one row, and kept run indices are distinct, so one "
+        "position matches",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
