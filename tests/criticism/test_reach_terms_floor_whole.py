@@ -11,8 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from demid.criticism.reach import reach_beyond_bound, saturation_finding
-terms_size = None
+from demid.criticism.reach import reach_beyond_bound, saturation_finding, terms_size
 from demid.sampling.domain import Domain
 from demid.surrogate import Surrogate
 
