@@ -85,7 +85,8 @@ class Reach:
 
 
 def smallest_positive_root(a: float, b: float, c: float) -> float:
-    """Smallest t > 0 with a t² + b t + c = 0 (inf when none)."""
+    """Smallest t > 0 with a t² + b t + c = 0 (inf when none; a root at 0 is none, a double root is one).  A
+    quadratic coefficient below 1e-12 of the others' (and of 1) is round-off: the line b t + c gives the root."""
     if abs(a) < 1e-12 * max(abs(b), abs(c), 1.0):
         return -c / b if b and -c / b > 0 else np.inf
     disc = b * b - 4 * a * c
@@ -147,14 +148,14 @@ def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, o
     quadratic = smallest_positive_root(bend / 2, rate, -gap)
     turn = -rate / bend if rate > 0 and bend < 0 else np.inf
     level = f0 + g * turn + c * turn ** 2 / 2 if np.isfinite(turn) else np.nan
-    room = domain.room_beyond(factor, side)
+    room = domain.room_beyond(factor, side)  # >= 0, and quadratic > 0: a range ending at its limit is never widened
     return Reach(factor=factor, side=side, observable=observable, value=float(f0), target=float(target),
                  band_edge=float(edge), slope=float(outward * g / width), curvature=float(c),
                  straight_extension=float(max(straight, 0.0)), quadratic_extension=float(max(quadratic, 0.0)),
                  levels_off_extension=float(turn), levels_off_value=float(level),
                  straight_factor_value=factor_value(straight), quadratic_factor_value=factor_value(quadratic),
                  levels_off_factor_value=factor_value(turn),
-                 widen=bool(quadratic <= min(WIDEN_LIMIT, room) and room > 0.0), log=bool(domain.log[i]),
+                 widen=bool(quadratic <= min(WIDEN_LIMIT, room)), log=bool(domain.log[i]),
                  limit_extension=room, limit_value=factor_value(room))
 
 
