@@ -2366,9 +2366,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/level2.py::_best_point::float(np.max(problem.weights * np.abs(problem.errors(best_s)"
     "[:, 0]))) => np.max(problem.weights * np.abs(problem.errors(best_s)[:, 0]))#0":
         _NUMPY_FLOAT + " (best_val is only compared, passed through float() and json_number)",
-    "demid/criticism/naming.py::_choices::1 => 0#2":
-        "the default of a step's change_points: the catalogue's one step hypothesis (Round._step) always carries "
-        "it",
     "demid/criticism/searches.py::_shared_bias::float(delta[0]) => delta[0]#0":
         _NUMPY_FLOAT + " (the shared bias's delta: compared, subtracted and written through json_number)",
     "demid/criticism/run_order.py::RunOrder.to_json::float(self.correlation) => self.correlation#0":
@@ -2527,8 +2524,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/models.py::inv_boxcox::700 => 701#1": "overflow clip of exp(): differs only beyond e^700",
     "demid/criticism/models.py::infer_axial_distance::float(np.max(col)) => np.max(col)#0":
         _NUMPY_FLOAT + " (col is a float array; hi is only compared and used in arithmetic)",
-    "demid/criticism/naming.py::_choices::1 => 2#2":
-        "the default is never read: every step hypothesis carries its change_points (catalogue.Round._step)",
     "demid/criticism/models.py::infer_axial_distance::1 - 1e-06 => 1#0":
         "differs only for inner levels within 1e-6 of the ends (a face-centred design): alpha = 1 / |inner| is 1 "
         "to six digits either way",
