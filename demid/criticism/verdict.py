@@ -353,8 +353,7 @@ def replicate_runs(data: Data, fit: SurrogateFit, findings: list, unexplained: d
     if data.simulated and findings and findings[0].cause == "outlier":  # the cause the proposed runs serve
         return [at(findings[0].detail, run_purposes.CONFIRM) for _ in range(OUTLIER_REPLICATES)]
     if unexplained:
-        frame = fit.influence()
-        frame = frame[frame["run"].map(lambda r: run_label(r) in position)]
+        frame = fit.influence()  # the same runs as data's: prepare_data reads both from the table's finite rows
         worst = frame.reindex(frame["student_resid"].abs().sort_values(ascending=False, kind="stable").index)
         return [at(run, run_purposes.DECIDE) for run in worst["run"].head(UNEXPLAINED_REPLICATED_RUNS)]
     return []
