@@ -924,8 +924,8 @@ through (a log factor whose bounds share their log10 to the last bit: tests/crit
 Other guards no input reaches went with them: reach's ``room > 0.0`` in widen (the quadratic's extension is
 positive), close_candidates' ``e is anchor`` (its own difference is 0), _choices' change_points default.  Tests
 added (tests/criticism/test_{reach_terms_floor,edges_span,close_candidates,one_run_identity_threshold,reach_roots,
-reach_units}_whole.py: 6 files, 45 tests, about 2 s of tests and 12 s in one process with imports on the loaded
-machine, each file's tests under 1.2 s).  Rows name them.
+reach_units,replicate_message}_whole.py: 7 files, 46 tests, about 1.3 s of tests and 6 s in one process with imports
+on the loaded machine, each file's tests under 1.2 s).  Rows name them.
 
 Seventh round, the sampling, surrogate and precision rows (13 rows; new in-sample draws, ``--per-module 2``, each
 run before any test was aimed at it: seed 30 on the round's start, seed 31 on seed 30's tests and the first rows
@@ -1601,7 +1601,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_verdict_messages_whole.py", "tests/criticism/test_one_run_weighted_whole.py",
                   "tests/criticism/test_finding_readings_whole.py", "tests/criticism/test_verdict_limits_whole.py",
                   "tests/criticism/test_residual_misfit_level.py", "tests/criticism/test_replicate_runs_whole.py",
-                  "tests/criticism/test_verdict_box_grid_whole.py", "tests/criticism/test_naming_honest_causes_whole.py", *[
+                  "tests/criticism/test_verdict_box_grid_whole.py", "tests/criticism/test_naming_honest_causes_whole.py",
+                  "tests/criticism/test_replicate_message_whole.py", *[
             f"tests/criticism/test_honest_causes.py::{name}" for name in (
                 "test_misfit_without_a_catalogue_cause_is_unexplained_or_points_at_a_moved_run",
                 "test_noise_only_response_does_not_predict", "test_detectable_departure_has_its_power_by_simulation",
