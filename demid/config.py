@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
+
 from .design import unreadable_alpha
 from .errors import InputError
 # The schema half (load, defaults, hints) is demid.schema; load_yaml and validate_schema are still imported from here.
@@ -186,6 +188,11 @@ def _check_table_and_bounds(key: str, mat: dict, base_dir: Path, source: str) ->
                              f"upper ({fac['upper']})", source=source)
         if fac.get("scale") == "log" and fac["lower"] <= 0:
             raise InputError(f"config key {key}.factors.{fname}: a log-scale factor needs lower > 0", source=source)
+        if fac.get("scale") == "log" and not np.log10(float(fac["lower"])) < np.log10(float(fac["upper"])):
+            # searched in log10: bounds that share it to the last bit give a range of no width
+            raise InputError(f"config key {key}.factors.{fname}: lower ({fac['lower']}) and upper ({fac['upper']}) "
+                             f"have the same log10 to machine precision; a log-scale range needs them apart",
+                             source=source)
         if path is None:  # a table's material: checked with its table, after the bounds' slips (data.py)
             _check_limits(f"{key}.factors.{fname}", fac, source)
 

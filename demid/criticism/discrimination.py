@@ -115,7 +115,7 @@ def close_candidates(entries: list[dict], named: tuple | None = None, margin: fl
         if kind in kinds:
             continue
         kinds.add(kind)
-        if e is anchor or e["aicc"] - anchor["aicc"] <= margin:
+        if e["aicc"] - anchor["aicc"] <= margin:  # the anchor too: its own difference is 0
             out.append(e)
     if named is not None and anchor not in out:  # another entry of its kind was better: the named one leads
         out = [anchor] + [e for e in out if candidate_kind(e["cause"], e["detail"])

@@ -76,12 +76,13 @@ def extrapolation_warnings(domain: Domain, runs: np.ndarray | None, reference_po
 
     ``runs`` are the design runs in actual units (rows, factor columns in ``domain`` order).  The
     region the runs cover is their range per factor and, for the reference point, their convex hull
-    (in search units: log10 for log factors).
+    (in search units: log10 for log factors).  Every search range has a width (config refuses equal ends, and a
+    log factor's ends of one log10).
     """
     if runs is None or not len(runs):
         return []
     lo, hi = domain.search_bounds()
-    span = np.where(hi > lo, hi - lo, 1.0)
+    span = hi - lo
     z = (domain.to_search(np.asarray(runs, dtype=float)) - lo) / span
     z_lo, z_hi = z.min(axis=0), z.max(axis=0)
     tol = 1e-3

@@ -295,6 +295,7 @@ def _choices(rnd) -> dict[str, int]:
     out["outlier"] = int(np.sum(rnd.model.hat < LEVERAGE_UNPREDICTABLE))
     step = [h for h in rnd.hypotheses if h.cause == "step"]
     if step:
-        out["step"] = int(step[0].info.get("change_points", 1))
-    out["factor_level"] = max(count_slip_candidates(rnd.data, rnd.model), 1)
+        out["step"] = int(step[0].info["change_points"])  # the catalogue's step test records them (Round._step)
+    # read only for a slip hypothesis, which the round tests only when it has a candidate: never 0 when read
+    out["factor_level"] = count_slip_candidates(rnd.data, rnd.model)
     return out

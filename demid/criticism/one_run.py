@@ -102,7 +102,8 @@ def deleted_logp_by_identity(data: Data, model: Model, h: Hypothesis, y: np.ndar
         proj2 = (rc[:, 0] @ e - rc * e / lever) ** 2 / np.maximum(u2, 1e-300)
         with np.errstate(divide="ignore", invalid="ignore"):
             stat = proj2 * (df - 1) / np.maximum(sse - proj2, 1e-300 * np.maximum(sse, 1e-300))
-        estimable = np.sqrt(np.maximum(u2, 0.0)) > 1e-7 * np.sqrt(float(column[:, 0] @ column[:, 0]) - column ** 2)
+        # relative to the whole column, as deleted_logp's refits: the two agree on every run
+        estimable = np.sqrt(np.maximum(u2, 0.0)) > 1e-7 * np.linalg.norm(column)
         out = np.where(estimable, f_logp(stat, df - 1), 0.0)
     if len(near_one):
         out[near_one] = deleted_logp(data, model, h, y, near_one)[near_one]

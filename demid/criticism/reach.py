@@ -16,14 +16,15 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from ..design import model_matrix
 from .models import short_number
 
 #: Largest extension (fraction of the search range beyond the bound) worth advising as "widen": further out
 #: the quadratic's extrapolation rests on no run, and a target it reaches there is no evidence the model can.
 WIDEN_LIMIT = 0.5
 _STEP = 0.01  # finite-difference step, fraction of the range
-#: A second difference within this many machine epsilons of the responses' size is round-off (each of the three
-#: predictions carries a few epsilons of relative error).
+#: A second difference within this many machine epsilons of the predictions' terms is round-off (each of the three
+#: predictions carries a few epsilons of the size of the terms it sums).
 _ROUND_OFF = 64 * np.finfo(float).eps
 
 
@@ -84,7 +85,8 @@ class Reach:
 
 
 def smallest_positive_root(a: float, b: float, c: float) -> float:
-    """Smallest t > 0 with a t² + b t + c = 0 (inf when none)."""
+    """Smallest t > 0 with a t² + b t + c = 0 (inf when none; a root at 0 is none, a double root is one).  A
+    quadratic coefficient below 1e-12 of the others' (and of 1) is round-off: the line b t + c gives the root."""
     if abs(a) < 1e-12 * max(abs(b), abs(c), 1.0):
         return -c / b if b and -c / b > 0 else np.inf
     disc = b * b - 4 * a * c
@@ -93,6 +95,17 @@ def smallest_positive_root(a: float, b: float, c: float) -> float:
     roots = [(-b - np.sqrt(disc)) / (2 * a), (-b + np.sqrt(disc)) / (2 * a)]
     positive = [t for t in roots if t > 1e-12]
     return min(positive) if positive else np.inf
+
+
+def terms_size(surrogate, points) -> np.ndarray:
+    """Per point (actual units), the size a prediction's round-off is relative to: for a polynomial surrogate the
+    sum of its terms' absolute values (y = 1.1 (x - 1011) is 0 at x = 1011, summed from terms of 1112), otherwise
+    the prediction's own size."""
+    from ..surrogate import Surrogate  # here: the reading jobs import this module and never fit
+
+    if isinstance(surrogate, Surrogate):
+        return np.abs(model_matrix(surrogate.model_units(points), surrogate.terms)) @ np.abs(surrogate.coefficients)
+    return np.abs(np.asarray(surrogate.predict(points), dtype=float))
 
 
 def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, observable: str,
@@ -119,12 +132,13 @@ def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, o
     def factor_value(t):
         return float(domain.to_actual(along([t]))[0, i]) if np.isfinite(t) else np.nan
 
-    f_minus, f0, f_plus = predict([-_STEP, 0.0, _STEP])
+    steps = [-_STEP, 0.0, _STEP]
+    f_minus, f0, f_plus = predict(steps)
     g = (f_plus - f_minus) / (2 * _STEP)           # per fraction of the range, outwards
     c = (f_plus - 2 * f0 + f_minus) / _STEP ** 2
     # a straight response's second difference is round-off, not curvature: taken as curvature, it put a response
     # moving away from its target "back in its band" some 1e10 ranges beyond the bound
-    if abs(c) <= _ROUND_OFF * max(abs(f_minus), abs(f0), abs(f_plus)) / _STEP ** 2:
+    if abs(c) <= _ROUND_OFF * float(np.max(terms_size(surrogate, domain.to_actual(along(steps))))) / _STEP ** 2:
         c = 0.0
     direction = 1.0 if f0 < target else -1.0      # the observable must rise (+1) or fall (-1)
     edge = target - direction * tolerance * abs(target)
@@ -134,14 +148,14 @@ def reach_beyond_bound(surrogate, domain, factor: str, side: str, point: dict, o
     quadratic = smallest_positive_root(bend / 2, rate, -gap)
     turn = -rate / bend if rate > 0 and bend < 0 else np.inf
     level = f0 + g * turn + c * turn ** 2 / 2 if np.isfinite(turn) else np.nan
-    room = domain.room_beyond(factor, side)
+    room = domain.room_beyond(factor, side)  # >= 0, and quadratic > 0: a range ending at its limit is never widened
     return Reach(factor=factor, side=side, observable=observable, value=float(f0), target=float(target),
                  band_edge=float(edge), slope=float(outward * g / width), curvature=float(c),
                  straight_extension=float(max(straight, 0.0)), quadratic_extension=float(max(quadratic, 0.0)),
                  levels_off_extension=float(turn), levels_off_value=float(level),
                  straight_factor_value=factor_value(straight), quadratic_factor_value=factor_value(quadratic),
                  levels_off_factor_value=factor_value(turn),
-                 widen=bool(quadratic <= min(WIDEN_LIMIT, room) and room > 0.0), log=bool(domain.log[i]),
+                 widen=bool(quadratic <= min(WIDEN_LIMIT, room)), log=bool(domain.log[i]),
                  limit_extension=room, limit_value=factor_value(room))
 
 

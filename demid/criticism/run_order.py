@@ -167,6 +167,7 @@ def _ranks(key: np.ndarray, run_rank: np.ndarray) -> np.ndarray:
 
 
 def _rank_correlation(a: np.ndarray, b: np.ndarray) -> float:
-    if np.ptp(a) == 0 or np.ptp(b) == 0:
-        return 0.0
+    """Pearson correlation of two rankings of the same runs, neither constant: ``a`` the run numbers' ranks (not
+    all equal: standard_order_correlation returns 0.0 first), ``b`` a ranking by key and run rank, whose last
+    column breaks every tie between runs of different rank."""
     return float(np.corrcoef(a, b)[0, 1])

@@ -280,7 +280,8 @@ def power_caveat(response: str, n_runs: int, df_resid: int, n_tests: int, family
                 "message": f"{response}: adequate as far as can be told, but with {n_runs} runs too few spare "
                            f"runs remain to test the quadratic at all."}
     size = k * resid_std if np.isfinite(resid_std) else float("nan")
-    size_text = plain_number(size) if np.isfinite(size) and abs(size) >= 1e4 else short_number(size, 3)
+    # size >= 0 (a standard deviation times k), or nan, which short_number writes
+    size_text = plain_number(size) if size >= 1e4 else short_number(size, 3)
     return {"detectable_sd": k, "detectable": json_number(size), "power": POWER,
             "message": f"{response}: adequate — none of the {n_tests} tests fired at the family-wise "
                        f"{100 * family_alpha:g} % level. With {n_runs} runs the tests find a departure of about "
@@ -352,8 +353,7 @@ def replicate_runs(data: Data, fit: SurrogateFit, findings: list, unexplained: d
     if data.simulated and findings and findings[0].cause == "outlier":  # the cause the proposed runs serve
         return [at(findings[0].detail, run_purposes.CONFIRM) for _ in range(OUTLIER_REPLICATES)]
     if unexplained:
-        frame = fit.influence()
-        frame = frame[frame["run"].map(lambda r: run_label(r) in position)]
+        frame = fit.influence()  # the same runs as data's: prepare_data reads both from the table's finite rows
         worst = frame.reindex(frame["student_resid"].abs().sort_values(ascending=False, kind="stable").index)
         return [at(run, run_purposes.DECIDE) for run in worst["run"].head(UNEXPLAINED_REPLICATED_RUNS)]
     return []
