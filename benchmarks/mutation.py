@@ -1441,6 +1441,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_verdict_limits_whole.py", "tests/criticism/test_naming_ties_whole.py",
                   "tests/criticism/test_transform_far_lambda_whole.py", "tests/criticism/test_scatter_fitted_blocks_whole.py",
                   "tests/criticism/test_stepdown_whole.py", "tests/criticism/test_catalogue_round_off_whole.py",
+                  "tests/criticism/test_boxcox_bootstrap_whole.py",
                   "tests/criticism/test_level1_known_answers.py::test_a_slipped_factor_value_is_moved_and_the_loo_"
                   "errors_are_the_refits", "-knot level2 and not residual_figure and not 3f"],
     },
