@@ -86,3 +86,19 @@ def test_findings_stop_at_max_findings_and_the_gain_and_summary_are_the_refits(m
         assert int(said.group(3)) == round(100 * (loo_ext / loo_base - 1))
     else:
         assert result.summary.startswith("y: the runs show misfit that no catalogued cause accounts for.")
+
+
+@pytest.mark.parametrize("max_findings", [0, 2])
+def test_a_run_order_not_performed_adds_its_sentence_after_the_summary(max_findings):
+    """The findings' sentence (or the unexplained misfit's), one space, then why drift was not tested; the same
+    findings as in performed order (two outliers are no run-order cause)."""
+    table = _two_outliers(2)
+    performed = criticize(table, ["a", "b"], "y", n_null=199, max_findings=max_findings)
+    unknown = criticize(table, ["a", "b"], "y", n_null=199, max_findings=max_findings, run_order="unknown")
+    message = unknown.run_order.message
+    assert message.startswith("Drift was not tested: the run order is declared unknown")
+    assert [f.detail for f in unknown.findings] == [f.detail for f in performed.findings]
+    head = unknown.summary[:-len(message) - 1]
+    assert unknown.summary == head + " " + message
+    assert head.endswith(".") and not head.endswith(" ") and head.startswith("y: ")
+    assert performed.summary == performed.summary.strip() and message not in performed.summary
