@@ -1536,7 +1536,9 @@ TABLE: dict[str, dict] = {
         "tests": _NAMING_TESTS + ["tests/criticism/test_extensions_forms_whole.py",
                                   "tests/criticism/test_transform_far_lambda_whole.py",
                                   "tests/criticism/test_scatter_fitted_blocks_whole.py",
-                                  "tests/criticism/test_extensions_accumulate_whole.py"],
+                                  "tests/criticism/test_extensions_accumulate_whole.py",
+                                  "tests/criticism/test_extensions_lambda_edge_whole.py",
+                                  "tests/criticism/test_level1_spare_runs_whole.py"],
     },
     "demid/criticism/naming.py": {
         "functions": None,
