@@ -1442,6 +1442,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_verdict_limits_whole.py", "tests/criticism/test_naming_ties_whole.py",
                   "tests/criticism/test_transform_far_lambda_whole.py", "tests/criticism/test_scatter_fitted_blocks_whole.py",
                   "tests/criticism/test_stepdown_whole.py", "tests/criticism/test_catalogue_round_off_whole.py",
+                  "tests/criticism/test_level1_too_few_runs_whole.py", "tests/criticism/test_level1_spare_runs_whole.py",
                   "tests/criticism/test_boxcox_bootstrap_whole.py",
                   "tests/criticism/test_level1_known_answers.py::test_a_slipped_factor_value_is_moved_and_the_loo_"
                   "errors_are_the_refits", "-knot level2 and not residual_figure and not 3f"],
@@ -1506,7 +1507,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_level1_close_alternatives_whole.py", "tests/criticism/test_models_constant_whole.py",
                   "tests/criticism/test_one_run_whole.py", "tests/criticism/test_residual_misfit_level.py",
                   "tests/criticism/test_level1_frame_runs_whole.py", "tests/criticism/test_level1_second_finding_whole.py",
-                  "tests/criticism/test_level1_spare_runs_whole.py", "-knot 3f and not level2"],
+                  "tests/criticism/test_level1_spare_runs_whole.py", "tests/criticism/test_level1_too_few_runs_whole.py",
+                  "tests/criticism/test_point_dict_whole.py", "-knot 3f and not level2"],
     },
     "demid/criticism/level2.py": {
         "functions": None,
