@@ -3378,6 +3378,11 @@ SETTINGS: dict[str, str] = {
     "np.abs(grid_err[row]) => np.max(w[:, None] * np.abs(grid_err[others]), axis=0) - _BIAS_WEIGHT * "
     "np.abs(grid_err[row])#0":
         "the order of the grid nodes the bias search starts from (the bias enters the ranking at a weight of 1e-5)",
+    "demid/criticism/searches.py::_smallest_bias::np.max(w * np.abs(e0[others])) => np.min(w * np.abs(e0[others]))#0":
+        "the slack t each bias search starts from (the others' largest weighted error at its start node, or their "
+        "smallest: the start is then infeasible and SLSQP restores the constraints; the same for one other)",
+    "demid/criticism/searches.py::_smallest_bias::300 => 301#0":
+        "SLSQP's iteration cap in the bias search: it converges in far fewer",
     "demid/sampling/polish.py::start_points::1.0 / d => 1.0#1":
         "the cap on the grid the polishing starts from when no node is admissible (its resolution)",
     "demid/sampling/polish.py::start_points::1.0 / d => 1.0 * d#1":
