@@ -1508,7 +1508,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_one_run_whole.py", "tests/criticism/test_residual_misfit_level.py",
                   "tests/criticism/test_level1_frame_runs_whole.py", "tests/criticism/test_level1_second_finding_whole.py",
                   "tests/criticism/test_level1_spare_runs_whole.py", "tests/criticism/test_level1_too_few_runs_whole.py",
-                  "tests/criticism/test_point_dict_whole.py", "-knot 3f and not level2"],
+                  "tests/criticism/test_point_dict_whole.py", "tests/criticism/test_runs_json_whole.py",
+                  "-knot 3f and not level2"],
     },
     "demid/criticism/level2.py": {
         "functions": None,
