@@ -3382,6 +3382,12 @@ SETTINGS: dict[str, str] = {
     "demid/criticism/searches.py::_smallest_bias::np.max(w * np.abs(e0[others])) => np.min(w * np.abs(e0[others]))#0":
         "the slack t each bias search starts from (the others' largest weighted error at its start node, or their "
         "smallest: the start is then infeasible and SLSQP restores the constraints; the same for one other)",
+    "demid/criticism/searches.py::_smallest_bias::w * np.abs(e0[others]) => np.abs(e0[others])#0":
+        "the slack t each bias search starts from, unweighted (a start above or below the others' weighted errors "
+        "at the start node: SLSQP restores the constraints from either)",
+    "demid/criticism/searches.py::_smallest_bias::w * np.abs(e0[others]) => w#0":
+        "the slack t each bias search starts from, the weights alone (SLSQP restores the constraints from any "
+        "start)",
     "demid/criticism/searches.py::_smallest_bias::300 => 301#0":
         "SLSQP's iteration cap in the bias search: it converges in far fewer",
     "demid/sampling/polish.py::start_points::1.0 / d => 1.0#1":
