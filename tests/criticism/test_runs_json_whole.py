@@ -24,7 +24,8 @@ def test_the_runs_json_is_the_ols_influence_of_the_quadratic(k, decimals):
     table = pd.DataFrame({"run": runs, **{f"f{j}": x[:, j] for j in range(k)}, "y": y})
     result = criticize(table, [f"f{j}" for j in range(k)], "y", n_null=19)
     rows = json.loads(result.dumps())["runs"]
-    cols = [np.ones(len(x)), *x.T, *(x[:, i] * x[:, j] for i, j in itertools.combinations_with_replacement(range(k), 2))]
+    pairs = itertools.combinations_with_replacement(range(k), 2)
+    cols = [np.ones(len(x)), *x.T, *(x[:, i] * x[:, j] for i, j in pairs)]
     ols = sm.OLS(y, np.column_stack(cols)).fit()
     infl = ols.get_influence()
     h = infl.hat_matrix_diag
