@@ -144,7 +144,7 @@ def _first_best(ranks: np.ndarray, logdets: np.ndarray, rank: int) -> int | None
     :data:`_TIE` above the one kept so far (mirror-image candidates tie up to round-off: the first in
     candidate order wins a tie, so a last-bit change of the coding does not flip the suggestion to the
     mirror point)."""
-    top = int(ranks.max()) if len(ranks) else rank
+    top = int(ranks.max())  # one per candidate point: 7^k of them, never none
     if top <= rank:
         return None
     best = None

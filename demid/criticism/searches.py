@@ -63,7 +63,7 @@ def _shared_bias_envelope(err: np.ndarray, weights: np.ndarray) -> tuple[np.ndar
     of their upper envelope is the highest of these pairwise meetings (half the spread when the weights are
     equal)."""
     value = np.zeros(err.shape[1])
-    delta = err[0].astype(float) if len(err) else np.zeros(err.shape[1])
+    delta = err[0].astype(float)  # level 2 has at least one observable (calibration_check refuses none)
     for i in range(len(err)):
         for j in range(i + 1, len(err)):
             wi, wj = weights[i], weights[j]
