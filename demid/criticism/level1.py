@@ -61,8 +61,20 @@ class Finding:
                "delta_aicc": json_number(self.delta_aicc), "compared_runs": self.compared_runs}
         if self.extra_runs:
             out["extra_runs"] = self.extra_runs
-        out.update({k: v for k, v in self.info.items()})
+        out.update({k: _json_value(v) for k, v in self.info.items()})
         return out
+
+
+def _json_value(v):
+    """``v`` for the findings' JSON: a float that is NaN or infinite (a t statistic of runs fitted exactly) as null,
+    inside lists and dicts too, so the document stays valid JSON; integers, strings and None as they are."""
+    if isinstance(v, (float, np.floating)):
+        return json_number(v)
+    if isinstance(v, (list, tuple)):
+        return [_json_value(x) for x in v]
+    if isinstance(v, dict):
+        return {k: _json_value(x) for k, x in v.items()}
+    return v
 
 
 @dataclass
