@@ -1663,7 +1663,8 @@ TABLE: dict[str, dict] = {
     "demid/uncertainty/recommended.py": {
         "functions": None,
         "tests": ["tests/uncertainty/test_recommended.py", "tests/uncertainty/test_uncertainty.py", "tests/story/test_story.py",
-                  "tests/story/test_advice_wording.py", "tests/uncertainty/test_recommended_whole.py", _NOT_WORKFLOW],
+                  "tests/story/test_advice_wording.py", "tests/uncertainty/test_recommended_whole.py",
+                  "tests/uncertainty/test_material_notes_whole.py", _NOT_WORKFLOW],
     },
     "demid/uncertainty/material.py": {
         "functions": None,
@@ -1671,7 +1672,7 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_material_whole.py", "tests/uncertainty/test_material_tables_whole.py",
                   "tests/uncertainty/test_material_without_scenarios_whole.py",
                   "tests/uncertainty/test_own_tolerance_posteriors.py", "tests/criticism/test_unreachable_targets.py",
-                  "tests/story/test_story.py", _NOT_WORKFLOW],
+                  "tests/story/test_story.py", "tests/uncertainty/test_material_notes_whole.py", _NOT_WORKFLOW],
     },
     "demid/paper.py": {
         "functions": None,
