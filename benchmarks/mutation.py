@@ -1649,7 +1649,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_ranking.py", "tests/uncertainty/test_own_tolerance_posteriors.py",
                   "tests/uncertainty/test_qmc_posterior_properties.py", "tests/uncertainty/test_grid_posterior_whole.py",
                   "tests/uncertainty/test_qmc_posterior_whole.py", "tests/uncertainty/test_posterior_small_grids_whole.py",
-                  "tests/uncertainty/test_ranking_whole.py", "tests/uncertainty/test_posterior_interval_order_whole.py"],
+                  "tests/uncertainty/test_ranking_whole.py", "tests/uncertainty/test_posterior_interval_order_whole.py",
+                  "tests/story/test_ridge_advice_rows_whole.py"],
     },
     "demid/uncertainty/plausible.py": {
         "functions": None,
@@ -1838,7 +1839,8 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/combinations/test_combinations.py", "tests/combinations/test_combinations_properties.py",
                   "tests/combinations/test_combination_material_whole.py",
                   "tests/combinations/test_combination_outputs.py", "tests/report/test_advice_source.py",
-                  "tests/combinations/test_break_ridge_whole.py", "tests/combinations/test_combination_boundaries_whole.py"],
+                  "tests/combinations/test_break_ridge_whole.py", "tests/combinations/test_combination_boundaries_whole.py",
+                  "tests/story/test_ridge_advice_rows_whole.py", "tests/combinations/test_local_thickness_cells_whole.py"],
     },
     "demid/story/advice.py": {
         "functions": None,
