@@ -1659,7 +1659,7 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_posterior_quantiles.py",
                   "tests/uncertainty/test_strict_grid_summary_properties.py",
                   "tests/uncertainty/test_sweep_plausible_whole.py", "tests/test_boundary_runs.py",
-                  "tests/uncertainty/test_sweep_defaults_whole.py"],
+                  "tests/uncertainty/test_sweep_defaults_whole.py", "tests/uncertainty/test_plausible_given_sets_whole.py"],
     },
     "demid/uncertainty/recommended.py": {
         "functions": None,
