@@ -1932,7 +1932,8 @@ TABLE: dict[str, dict] = {
     "demid/uncertainty/sweep.py": {
         "functions": None,
         "tests": ["tests/uncertainty/test_uncertainty.py", "tests/uncertainty/test_sweep_plausible_whole.py",
-                  "tests/uncertainty/test_sweep_defaults_whole.py", "-ksweep"],
+                  "tests/uncertainty/test_sweep_defaults_whole.py", "tests/uncertainty/test_sweep_given_sets_whole.py",
+                  "-ksweep"],
     },
     "demid/scenario.py": {
         "functions": None,
@@ -3122,9 +3123,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/combinations/axes.py::principal_axes::0 => -1#0":
         "an empty set's weights (ones(0), or the caller's empty array) sum to 0, so `w.sum() <= 0` returns None "
         "for it either way",
-    "demid/uncertainty/sweep.py::tolerance_sweep::z == 0 and eps == float(nominal) => eps == float(nominal)#0":
-        "its one caller (uncertainty/material) sweeps the strict sets only (z at its default 0), where the two "
-        "conditions are the same",
     "demid/waves.py::wave_history::int(wave['analysed']) => wave['analysed']#0":
         "wave['analysed'] is len(table) wherever a wave is built (scripts/wave_history.py, wave_summary): an int "
         "already",
