@@ -3369,6 +3369,10 @@ SETTINGS: dict[str, str] = {
         "either way)",
     "demid/sampling/planes.py::Solid.distance::33 => 32#0":
         "the number of slices the closest-slice zoom starts from",
+    "demid/sampling/planes.py::Solid.distance::1e-12 * (upper - lower) => 1e-12#0":
+        "the inset of the slices the closest-slice zoom starts from at the span's ends: the span lies in the unit "
+        "box (upper - lower <= 1), so the first and last scanned slices move by under 1e-12, and the zoom refines "
+        "from there",
     "demid/criticism/searches.py::_smallest_bias::np.max(w[:, None] * np.abs(grid_err[others]), axis=0) + _BIAS_WEIGHT * "
     "np.abs(grid_err[row]) => np.max(w[:, None] * np.abs(grid_err[others]), axis=0) - _BIAS_WEIGHT * "
     "np.abs(grid_err[row])#0":
