@@ -1337,7 +1337,10 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_uncertainty.py::test_polish_spans_thin_set_without_admissible_nodes",
                   "tests/sampling/test_polish_whole.py", "tests/uncertainty/test_sweep_plausible_whole.py",
                   "tests/sampling/test_grid_boundaries_whole.py", "tests/sampling/test_evaluate_set_whole.py",
-                  "tests/sampling/test_polish_two_discs_whole.py"],
+                  "tests/sampling/test_polish_two_discs_whole.py", "tests/uncertainty/test_ranking_fraction_grid_whole.py",
+                  "tests/uncertainty/test_ranking_stored_sets_whole.py", "tests/combinations/test_combination_material_whole.py",
+                  "tests/sampling/test_polish_thin_ring_whole.py", "tests/sampling/test_state_frame_of_sampled_sets_whole.py",
+                  "tests/uncertainty/test_plausible_given_sets_whole.py", "tests/uncertainty/test_sweep_given_sets_whole.py"],
     },
     "demid/sampling/domain.py": {
         "functions": None,
