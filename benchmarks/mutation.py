@@ -3413,6 +3413,9 @@ SETTINGS: dict[str, str] = {
         "round-off of grid coordinates, far below a grid step)",
     "demid/uncertainty/material.py::recommended_sizes::14 => 15#0":
         "the number of Sobol points of the sweep above three factors (2^14, a balanced sample either way)",
+    "demid/uncertainty/ranking.py::_met_together::8 => 7#0":
+        "the number of local starts of the search for a point meeting every target (the best seven grid nodes "
+        "instead of eight)",
     "demid/uncertainty/ranking.py::_met_together::8 => 9#0":
         "the number of local starts of the search for a point meeting every target (the best eight grid nodes)",
     "demid/wave_value.py::_evaluation_points::2 => 3#0":
