@@ -1669,7 +1669,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/uncertainty/test_recommended.py", "tests/uncertainty/test_uncertainty.py", "tests/story/test_story.py",
                   "tests/story/test_advice_wording.py", "tests/uncertainty/test_recommended_whole.py",
-                  "tests/uncertainty/test_material_notes_whole.py", _NOT_WORKFLOW],
+                  "tests/uncertainty/test_material_notes_whole.py", "tests/uncertainty/test_recommended_sobol_whole.py",
+                  _NOT_WORKFLOW],
     },
     "demid/uncertainty/material.py": {
         "functions": None,
