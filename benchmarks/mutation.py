@@ -3143,13 +3143,14 @@ EQUIVALENT: dict[str, str] = {
     "demid/story/words.py::labelled::not names or not text => not names and (not text)#0":
         "with no names both replacement branches are skipped, and an empty text (every caller passes a str) gives "
         "no match to patterns of non-empty keys (the schema's names): the text comes back as it went in either way",
+    "demid/uncertainty/sweep.py::tolerance_sweep::z == 0 => z != 0#0":
+        "the shared grid predictions are only an economy: summarise_set reads them only when z == 0 and otherwise "
+        "predicts the same grid itself (predict_all's same matrix times each surrogate's coefficients): the same numbers",
+
     # --- the eleventh round's draws (seeds 38 and 39) read as equivalent
     "demid/uncertainty/material.py::_plausible_tables::True => False#1":
         "the sweep's index is never read: write_parquet resets it and stores none, the sweep figure groups the "
         "rows by scenario and reads them by position (iloc); one group's frame keeps tolerance_sweep's 0..n-1",
-    "demid/uncertainty/sweep.py::tolerance_sweep::z == 0 => z != 0#0":
-        "the shared grid predictions are only an economy: summarise_set reads them only when z == 0 and otherwise "
-        "predicts the same grid itself (predict_all's same matrix times each surrogate's coefficients): the same numbers",
 
     # --- the seventh round's draws (seeds 30 and 31) read as equivalent
     "demid/precision.py::value_text::1 => 0#0":
