@@ -1758,7 +1758,8 @@ TABLE: dict[str, dict] = {
                   "tests/combinations/test_canonical_properties.py", "tests/combinations/test_canonical_planar.py",
                   "tests/combinations/test_canonical_whole.py", "tests/combinations/test_fit_canonical_whole.py",
                   "tests/combinations/test_canonical_boundaries_whole.py",
-                  "tests/combinations/test_canonical_steep_stationary_ridge_whole.py"],
+                  "tests/combinations/test_canonical_steep_stationary_ridge_whole.py",
+                  "tests/combinations/test_canonical_actual_units_whole.py"],
     },
     "demid/wave_value.py": {
         "functions": None,
@@ -1845,7 +1846,8 @@ TABLE: dict[str, dict] = {
                   "tests/combinations/test_combination_material_whole.py",
                   "tests/combinations/test_combination_outputs.py", "tests/report/test_advice_source.py",
                   "tests/combinations/test_break_ridge_whole.py", "tests/combinations/test_combination_boundaries_whole.py",
-                  "tests/story/test_ridge_advice_rows_whole.py", "tests/combinations/test_local_thickness_cells_whole.py"],
+                  "tests/story/test_ridge_advice_rows_whole.py", "tests/combinations/test_local_thickness_cells_whole.py",
+                  "tests/combinations/test_combination_equation_whole.py"],
     },
     "demid/story/advice.py": {
         "functions": None,
