@@ -1411,7 +1411,7 @@ TABLE: dict[str, dict] = {
                   "tests/test_precision_whole.py", "tests/test_surrogate_properties.py",
                   "tests/inputs/test_read_table_whole.py", "tests/test_printed_quantum_whole.py",
                   "tests/test_precision_boundaries_whole.py", "tests/test_shares_apart.py",
-                  "tests/test_precision_round_off_whole.py"],
+                  "tests/test_precision_round_off_whole.py", "tests/test_anova_frame_whole.py", "tests/test_waves_whole.py"],
     },
     "demid/criticism/models.py": {
         "functions": None,
