@@ -3153,6 +3153,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/material.py::_plausible_tables::True => False#1":
         "the sweep's index is never read: write_parquet resets it and stores none, the sweep figure groups the "
         "rows by scenario and reads them by position (iloc); one group's frame keeps tolerance_sweep's 0..n-1",
+    "demid/surrogate.py::fit_frames::True => False#0":
+        "the statistics frame's index is never read: write_parquet resets it and stores none, choose_surrogates "
+        "zips its columns and resets it, mark_criticism iterates its rows",
 
     # --- the seventh round's draws (seeds 30 and 31) read as equivalent
     "demid/precision.py::value_text::1 => 0#0":
