@@ -1,6 +1,6 @@
 """One material's notes (``uncertainty/{material}.json``) sentence by sentence, over studies of two
 observables each linear in its own factor (targets and slopes of either sign, scenarios in either order, a target
-out of reach or not, none, one or both observables flat enough to be uninformative): which observables are called
+out of reach or not, one or both observables flat enough to be uninformative): which observables are called
 uninformative (a single-observable share written out here, 2 ε |t| / |s| of the factor's range, clipped), every
 number their reason quotes parsed back, the out-of-reach sets named, the sizes quoted, every note a sentence."""
 
@@ -10,6 +10,7 @@ import re
 
 import numpy as np
 import pytest
+
 from demid.uncertainty.material import analyse_material
 
 from .test_material_whole import _SIZES, _study
