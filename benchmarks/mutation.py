@@ -3199,6 +3199,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/surrogate.py::fit_frames::True => False#0":
         "the statistics frame's index is never read: write_parquet resets it and stores none, choose_surrogates "
         "zips its columns and resets it, mark_criticism iterates its rows",
+    "demid/sampling/stored.py::stored_strict_sets::float(scen.tolerance) => scen.tolerance#1":
+        "scen is a JudgedScenario, whose tolerance property returns float(scenario.tolerance): a float already",
 
     # --- the seventh round's draws (seeds 30 and 31) read as equivalent
     "demid/precision.py::value_text::1 => 0#0":
@@ -3517,6 +3519,9 @@ SETTINGS: dict[str, str] = {
         "Nelder-Mead's evaluation cap: the searches converge to their tolerances in far fewer",
     "demid/sampling/evaluate.py::closest_approach::1 => 0#2":
         "with a given start, how many of the start grid's basins are searched besides it (four instead of three)",
+    "demid/sampling/polish.py::start_points::16 => 15#0":
+        "how many of the least-violating grid nodes polishing starts from when no node is admissible (15 instead "
+        "of 16; the starts per span end are the most extreme of them)",
     "demid/sampling/evaluate.py::closest_approach::1 => 2#2":
         "with a given start, how many of the start grid's basins are searched besides it (two instead of three)",
     "demid/sampling/evaluate.py::closest_approach::float(worst(u)[0]) + float(np.sum(np.abs(u - np.clip(u, 0, "
