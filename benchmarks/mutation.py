@@ -3208,6 +3208,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/pareto.py::_within_front_box::s < second[head] => s <= second[head]#0":
         "a point whose second objective equals the head's comes after the head in sorted order and is never kept "
         "(pareto_front keeps a point only below the running minimum of the second): the same front",
+    "demid/canonical.py::canonical_analysis::0 => -1#2":
+        "actual_of converts one point (x[None, :]): to_actual returns one row, its first and its last",
 
     # --- the seventh round's draws (seeds 30 and 31) read as equivalent
     "demid/precision.py::value_text::1 => 0#0":
