@@ -1032,7 +1032,7 @@ table's grid too, one on another grid is computed again), the notes' uninformati
 (tests/uncertainty/test_material_notes_whole.py: every note a sentence, the uninformative observables against their
 band's share written out, the quoted share and gain parsed back, the out-of-reach sets named, the sizes quoted),
 zoom_min's bracket i + 1 -> i + 2 (tests/sampling/test_zoom_min_whole.py: 300 minimisers in closed form, at the
-bracket's ends and anywhere, found to 1e-11 of the bracket as its docstring now says; a start tied with a flat bottom
+bracket's ends and anywhere, found to 1e-11 of the range as its docstring now says; a start tied with a flat bottom
 kept: only a strictly smaller value moves it); seed 39's recommended point searched on 2^13 Sobol points, not 2^14
 (tests/uncertainty/test_recommended_sobol_whole.py: the documented 2^14 scrambled points, seed 0, written out with
 scipy, on centres whose best point lies in the sample's second half) and the combination's equation written for the

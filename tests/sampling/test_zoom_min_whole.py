@@ -1,7 +1,8 @@
 """The zooming minimiser (demid.sampling.quadrature.zoom_min) that places the exact sets' nearest points, against
 minimisers known in closed form: many owners at once, minima anywhere in the bracket and at its ends, a kink and
-a smooth bottom; the minimiser to 1e-11 of the bracket (each round keeps two of its sixteen steps), the value the
-function's there, and a start already at a minimum of a flat bottom kept (only a strictly smaller value moves it)."""
+a smooth bottom; the minimiser to 1e-11 of the range the caller sampled first (eight times the first bracket; each
+round keeps two of its sixteen steps), the value the function's there, and a start already at a minimum of a flat
+bottom kept (only a strictly smaller value moves it)."""
 
 from __future__ import annotations
 
@@ -24,7 +25,7 @@ def _first_bracket(func, owners, lower, upper):
 
 @pytest.mark.parametrize("seed", [0, 1])
 @pytest.mark.parametrize("shape", ["kink", "bowl"])
-def test_minimisers_are_found_to_a_hundred_billionth_of_the_bracket(seed, shape):
+def test_minimisers_are_found_to_a_hundred_billionth_of_the_range(seed, shape):
     rng = np.random.default_rng(seed)
     n = 300
     lower = rng.uniform(-5.0, 5.0, n)
