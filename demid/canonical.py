@@ -32,6 +32,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .sampling.domain import search_to_actual
+
 #: rsm's default: eigenvalues below this fraction of the largest |eigenvalue| count as zero.
 DEFAULT_THRESHOLD_FRACTION = 0.1
 
@@ -170,12 +172,8 @@ def fit_canonical(fit, threshold: float | None = None) -> Canonical:
     logs = [f in fit.log_factors for f in fit.factors]
 
     def to_actual(coded):
-        model = np.array(fit.coding.to_actual(coded), dtype=float)
         with np.errstate(over="ignore"):  # a stationary point far outside may overflow 10**: inf says so
-            for i, lg in enumerate(logs):
-                if lg:
-                    model[:, i] = 10.0 ** model[:, i]
-        return model
+            return search_to_actual(fit.coding.to_actual(coded), logs)
 
     return canonical_analysis(b0, b, big_b, region_lower=lo, region_upper=hi, to_actual=to_actual,
                               threshold=threshold)
