@@ -2151,6 +2151,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/story/verdicts.py::verdict_frame::0 => -1#1":
         "the strict interval's lower end from the last instead of the first row of a scenario and factor: "
         "identifiability.csv holds one row per material, scenario and factor (Table 3's contract)",
+    "demid/story/verdicts.py::verdict_frame::0 => -1#6":
+        "the strict set's at_bound from the last instead of the first row of a scenario and factor: "
+        "identifiability.csv holds one row per material, scenario and factor (Table 3's contract)",
     "demid/combinations/axes.py::_orient::0 => -1#1":
         "np.arange(out.shape[-1]) for np.arange(out.shape[0]): the eigenvectors of a d x d covariance are a square "
         "matrix, both are d",
