@@ -3,6 +3,7 @@ keys (as the tests and older results give it), and the words and advice each rea
 
 from __future__ import annotations
 
+import numpy as np
 import pandas as pd
 
 from demid.spec import MaterialSpec
@@ -46,3 +47,19 @@ def test_a_strict_combination_alone_only_adds_its_reason():
         verdicts["reason"].iloc[0] + "; identified in combination with B and C if surrogate and measurements were "
         "exact (the strict set; the plausible set is not narrow along it)")
     assert list(combined["reason"].iloc[1:]) == list(verdicts["reason"].iloc[1:])
+
+
+def test_the_display_shows_an_interval_with_one_end_unknown_as_a_dash():
+    """An interval is printed only with both ends finite: a frame with one end missing (a table cut or edited by
+    hand) shows "–" for it, never "[nan, 0.5]"; its width is NaN as well."""
+    from demid.story.verdicts import verdict_display
+
+    spec = _spec()
+    verdicts = _unresolved_frame(spec)
+    verdicts.loc[0, ["strict_lower", "plausible_lower"]] = float("nan")
+    verdicts.loc[1, ["strict_upper", "plausible_upper"]] = float("nan")
+    shown = verdict_display(verdicts, spec)
+    assert list(shown["strict interval"]) == ["–", "–", "[0.02, 0.98]"]
+    assert list(shown["plausible interval"]) == ["–", "–", "[0.01, 0.99]"]
+    width = shown["plausible width [% of range]"].to_numpy()
+    assert np.isnan(width[:2]).all() and width[2] == 100 * (0.99 - 0.01)
