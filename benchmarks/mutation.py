@@ -2164,6 +2164,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/wave_value.py::_updated_se::scale <= 0 => scale < 0#0":
         "a zero residual variance makes the coefficients' covariance (resid_var times (X'X)^-1) all zero, which the "
         "test `not np.any(cov)` beside it catches: the same early return",
+    "demid/wave_value.py::_updated_se::0 => -1#0":
+        "scale <= -1 for scale <= 0: a residual variance is never negative, and a zero one makes the coefficients' "
+        "covariance all zero, which the test `not np.any(cov)` beside it catches: the same early return",
     "demid/next_wave.py::tabulate_waves::True => False#0":
         "the next-domain table keeps each wave's row index instead of 0..n-1: both of its callers (scripts/"
         "next_wave.py, propose_wave.py) only write it with write_csv, index=False, whose rounding assigns columns "
