@@ -2327,6 +2327,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/next_wave.py::_design::1 => 2#0":
         "reshape(-2, k): numpy takes any negative size as the one unknown dimension, so the shape is the same "
         "(checked with numpy 2.4.6)",
+    "demid/next_wave.py::plan_next_wave::1 => 2#1":
+        "the candidates' reshape(-2, k) for reshape(-1, k): numpy takes any negative size as the one unknown "
+        "dimension, so the shape is the same (checked with numpy 2.4.6)",
     "demid/next_wave.py::propose_runs::1 => 2#2":
         "reshape(-2, k): numpy takes any negative size as the one unknown dimension, so the shape is the same "
         "(checked with numpy 2.4.6)",
