@@ -2327,6 +2327,10 @@ EQUIVALENT: dict[str, str] = {
     "demid/next_wave.py::_design::1 => 2#0":
         "reshape(-2, k): numpy takes any negative size as the one unknown dimension, so the shape is the same "
         "(checked with numpy 2.4.6)",
+    "demid/kriging.py::KrigingSurrogate.hyperparameters_json::json.dumps({'lengths': [float(v) for v in "
+    "self.lengths], 'nugget': float(self.nugget)}, sort_keys=True) => json.dumps({'lengths': [float(v) for v in "
+    "self.lengths], 'nugget': float(self.nugget)})#0":
+        "the dict's two keys are written in sorted order already ('lengths' before 'nugget'): the same text",
     "demid/next_wave.py::plan_next_wave::1 => 2#1":
         "the candidates' reshape(-2, k) for reshape(-1, k): numpy takes any negative size as the one unknown "
         "dimension, so the shape is the same (checked with numpy 2.4.6)",
