@@ -2883,9 +2883,6 @@ EQUIVALENT: dict[str, str] = {
         "quadratic_trend of no rows has the same number of columns as of one row (checked for 1-4 factors): "
         "only the column count is read",
     # --- ninth round, the input, transcription and report modules (seeds 34 and 35)
-    "demid/transcription/engine.py::DesignFit.__init__::0 => 1#2":
-        "n_groups for a design of no run: check_transcription, DesignFit's one caller, refuses a table without a "
-        "single response value first, so n >= 1 and the branch is never taken",
     "demid/transcription/typos.py::cell_decimals::int(exponent) => exponent#0":
         "the isinstance test beside it lets only a Python int through (Decimal's exponent of a finite number); "
         "int() of it is itself",
