@@ -1968,6 +1968,10 @@ _WAVE_FRAME_COLUMN = (" (a float column of the wave's scenarios frame, read from
                       "history's column is float64 either way)")
 EQUIVALENT: dict[str, str] = {
     # --- the eleventh round, seeds 38 and 39 (story, loop and input rows)
+    "demid/scenario.py::JudgedScenario.implausibility::points = np.asarray(points, dtype=float) => pass#0":
+        "every use of the points converts them itself (predict_all and model_units with np.asarray(..., "
+        "dtype=float), kriging's unit with np.array(..., dtype=float, ndmin=2)), and len() of a list of points or "
+        "of their array is the number of points: the same numbers for every input the callers pass",
     "demid/transcription/check.py::_response_hypotheses::1 => 2#1":
         "max(len(y), 2) for max(len(y), 1) changes the batch size only for a table of one fitted run, whose few "
         "dozen hypothesis columns fit in one batch of 2,000,000 or 4,000,000 alike: the same single batch",
