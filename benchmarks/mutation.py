@@ -1968,6 +1968,9 @@ _WAVE_FRAME_COLUMN = (" (a float column of the wave's scenarios frame, read from
                       "history's column is float64 either way)")
 EQUIVALENT: dict[str, str] = {
     # --- the eleventh round, seeds 38 and 39 (story, loop and input rows)
+    "demid/estimability.py::require_estimable::False => True#0":
+        "the SVD with full matrices: the runs are refused above unless n > p, so vt is p x p and the singular "
+        "values are the same either way; only the unused left vectors grow to n x n (memory, not a number)",
     "demid/scenario.py::JudgedScenario.implausibility::points = np.asarray(points, dtype=float) => pass#0":
         "every use of the points converts them itself (predict_all and model_units with np.asarray(..., "
         "dtype=float), kriging's unit with np.array(..., dtype=float, ndmin=2)), and len() of a list of points or "
