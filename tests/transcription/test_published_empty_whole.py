@@ -15,7 +15,7 @@ from demid.transcription.check import check_transcription
 
 def _table() -> pd.DataFrame:
     points = np.array(list(product((-1.0, 0.0, 1.0), repeat=2)) + [(0.0, 0.0)] * 2)
-    y = 3.0 + points[:, 0] - 0.5 * points[:, 1] + 0.25 * points[:, 0] ** 2 + 0.01 * np.arange(len(points)) % 3
+    y = 3.0 + points[:, 0] - 0.5 * points[:, 1] + 0.25 * points[:, 0] ** 2 + 0.01 * (np.arange(len(points)) % 3)
     return pd.DataFrame({"run": range(1, len(points) + 1), "a": points[:, 0], "b": points[:, 1], "y": y})
 
 
