@@ -1,5 +1,5 @@
 """A transcription check given no published statistic at all (an empty mapping, or not a mapping) is refused in
-one line, before any refit: there is nothing to compare the table with."""
+one line, before any refit: there is nothing to compare the table with (decimals alone are no statistic)."""
 
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ def _table() -> pd.DataFrame:
     return pd.DataFrame({"run": range(1, len(points) + 1), "a": points[:, 0], "b": points[:, 1], "y": y})
 
 
-@pytest.mark.parametrize("published", [{}, [], None, [("r2", 0.9)]])
+@pytest.mark.parametrize("published", [{}, {"decimals": {"r2": 3}}, [], None, [("r2", 0.9)]])
 def test_no_published_statistics_are_refused_naming_the_source(published):
     with pytest.raises(InputError) as err:
         check_transcription(_table(), ["a", "b"], "y", published, design_type="factorial", source="paper.yaml")
