@@ -121,11 +121,12 @@ class DesignFit:
         self.x = x
         self.pinv = vt[:rank].T @ (u[:, :rank].T / s[:rank, None])
         self.hat = np.sum(u[:, :rank] ** 2, axis=1)
-        groups = replicate_groups(coded) if n else np.zeros(0, dtype=int)
-        n_groups = int(groups.max()) + 1 if n else 0
+        # at least one run: check_transcription, the one caller, refuses a table without a response value
+        groups = replicate_groups(coded)
+        n_groups = int(groups.max()) + 1
         self.groups = groups
-        self.group_mean = None if n > _PROJECTION_RUNS else np.zeros((0, 0))
-        if 0 < n <= _PROJECTION_RUNS:
+        self.group_mean = None
+        if n <= _PROJECTION_RUNS:
             onehot = np.zeros((n, n_groups))  # runs x groups: as large as n x n without replicates
             onehot[np.arange(n), groups] = 1.0
             self.group_mean = onehot @ (onehot.T / onehot.sum(axis=0)[:, None])

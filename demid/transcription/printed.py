@@ -144,7 +144,7 @@ def _coefficient_key(units: str, name: str) -> str:
 def _parse_published(published: dict, decimals: dict | None, factors: list[str], terms: list[Term],
                      source: str) -> tuple[dict[str, PrintedValue], dict[str, tuple[str, int]]]:
     """Flatten ``published`` into {statistic: PrintedValue}; coefficients map to (units, term index)."""
-    if not isinstance(published, dict) or not published:
+    if not isinstance(published, dict):  # an empty mapping is refused below, with no statistic parsed
         raise InputError("no published statistics given", source=source)
     decimals = dict(decimals or {})
     inline = published.get("decimals")
