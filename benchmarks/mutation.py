@@ -2772,9 +2772,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/reach.py::saturation_advice::r.slope * (1 if r.side == 'upper' else -1) => "
     "r.slope / (1 if r.side == 'upper' else -1)#0":
         "dividing by +1 or -1 is multiplying by it: the same product, whose sign is all the comparison reads",
-    "demid/criticism/outliers.py::outlier_null_max::1 => 0#2":
-        "max(len(e), 1) and max(len(e), 0) differ only for a table without runs, which never reaches the "
-        "catalogue (it refuses fewer runs than the quadratic's terms)",
     "demid/criticism/run_order.py::assess_run_order::runs = np.asarray(runs, dtype=float) => pass#0":
         "both callers pass a numpy array of run numbers (Data.runs; a table's run column or np.arange): "
         "np.isfinite, a mask's indexing, np.ptp, scipy's Spearman rho and standard_order_correlation's own "
