@@ -1894,7 +1894,7 @@ TABLE: dict[str, dict] = {
                   "tests/inputs/test_unit_slip_targets.py", "tests/test_reported_boundaries.py",
                   "tests/inputs/test_read_table_whole.py", "tests/inputs/test_targets_whole.py",
                   "tests/inputs/test_check_header_whole.py", "tests/inputs/test_design_inference.py",
-                  "tests/inputs/test_design_generation.py", "-knot readme"],
+                  "tests/inputs/test_design_generation.py", "tests/inputs/test_run_numbers_whole.py", "-knot readme"],
     },
     # parse_number, infer_coding and check_design, once in data.py
     "demid/csv_cells.py": {
@@ -1959,7 +1959,8 @@ TABLE: dict[str, dict] = {
                 "test_first_wave_is_the_design_generator_sheet", "test_simulation_config_errors_name_the_key",
                 "test_wave_history_gives_each_wave_fraction_of_omega_and_the_box_its_runs_were_placed_in",
                 "test_waves_stop_on_the_measured_change_the_budget_or_the_model_never_on_a_misfitting_surrogate")],
-                  "tests/test_shares_apart.py", "tests/test_loop_stop_edges_whole.py"],
+                  "tests/test_shares_apart.py", "tests/test_loop_stop_edges_whole.py",
+                  "tests/test_wave_history_types_whole.py"],
     },
     "demid/admissibility.py": {
         "functions": None,
@@ -2043,7 +2044,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_reach.py", "tests/criticism/test_edges.py", "tests/story/test_check_target_advice_whole.py",
                   "-knot heap", _NOT_WORKFLOW,
                   "tests/test_shares_apart.py", "tests/test_kriging.py", "tests/story/test_unpredictive_advice_whole.py",
-                  "tests/story/test_ridge_advice_rows_whole.py"],
+                  "tests/story/test_ridge_advice_rows_whole.py", "tests/story/test_level2_partial_whole.py"],
     },
     "demid/criticism/one_run.py": {
         "functions": None,
