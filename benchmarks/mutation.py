@@ -2318,6 +2318,16 @@ EQUIVALENT: dict[str, str] = {
         "None and '' both fail 'not base', and base is read nowhere else before that test",
     "demid/story/verdicts.py::verdict_display::np.isfinite(lo) and np.isfinite(hi) => np.isfinite(lo)#0":
         "an interval's ends are NaN together (an empty set, or a row missing from one table), never one alone",
+    # --- the twelfth round's in-sample draw (seed 40) of the story, loop and input rows
+    "demid/story/words.py::labelled::not names or not text => not names#0":
+        "with names and an empty text (every caller passes a str) both patterns, alternations of non-empty keys, "
+        "find no match in '': the text comes back as it went in either way",
+    "demid/story/extensions.py::model_extensions::not base or base not in specs => base not in specs#0":
+        "base is extends.get(name) or '', and specs is keyed by material names, which the schema requires to "
+        "match ^[A-Za-z][A-Za-z0-9_]*$: '' is never a key, so 'not base' implies 'base not in specs'",
+    "demid/story/measurements.py::measurement_order::by_frac[1] < f_new => by_frac[1] <= f_new#0":
+        "best is options[0] and min() moves off the first option only to a strictly smaller fraction (NaN is "
+        "never smaller), each candidate observable once: where by_frac[2] != best, by_frac[1] < f_new already",
     "demid/tolerance.py::same_tolerances::abs(float(v) - tolerance) <= 1e-12 * tolerance => "
     "abs(float(v) - tolerance) < 1e-12 * tolerance#0":
         "differs only for an own tolerance exactly 1e-12 (relative) from the scenario's, to the last bit",
