@@ -2150,7 +2150,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_core_contracts.py", "tests/test_io_properties.py", "tests/test_kriging_likelihood_and_full_csv.py",
                   "tests/report/test_report_outputs.py::test_figures_drawn_in_two_processes_are_the_bytes_of_one",
-                  "tests/test_io_whole.py", "tests/test_save_figures_io_whole.py", "-kjson or png or parquet or csv or atomic or figures_drawn or io_whole"],
+                  "tests/test_io_whole.py", "tests/test_save_figures_io_whole.py",
+                  "tests/test_csv_line_ends_whole.py", "-kjson or png or parquet or csv or atomic or figures_drawn or io_whole"],
     },
 }
 
