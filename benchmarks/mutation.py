@@ -1634,7 +1634,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/criticism/test_linear_memory.py", "tests/criticism/test_large_studies.py",
                   "tests/criticism/test_catalogue_known_answers.py", "tests/criticism/test_step_changes_whole.py",
-                  "tests/criticism/test_catalogue_steps_whole.py", "tests/criticism/test_step_columns_tiny_weights_whole.py"],
+                  "tests/criticism/test_catalogue_steps_whole.py", "tests/criticism/test_step_columns_tiny_weights_whole.py",
+                  "tests/criticism/test_step_projections_few_runs_whole.py"],
     },
     "demid/transcription/printed.py": {
         "functions": None,
@@ -2816,6 +2817,11 @@ EQUIVALENT: dict[str, str] = {
         "the first -> the last of one run's slips (or of the run's position among the kept runs): slip_fit's one "
         "caller (catalogue.Round) passes the candidates of one row, and kept run indices are distinct, so one "
         "position matches",
+    # --- criticism, the twelfth round (seeds 40 and 41): models, catalogue, outliers, step_changes, level1,
+    # level2, searches, aliasing, extensions
+    "demid/criticism/extensions.py::extend_for::float(lam) => lam#0":
+        "lam is a Python float already: a key of TRANSFORM_NAMES or NICE_LAMBDAS (float literals) or "
+        "round(lambda_hat, 1 or 2) of a Python float, which round() returns as a float",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
