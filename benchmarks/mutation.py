@@ -2827,6 +2827,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/searches.py::minimax::0 => -1#0":
         "evaluate()'s errors[rows, 0] -> errors[rows, -1]: evaluate is called with one point (a grid node, the best "
         "node or the clipped SLSQP point), so errors() has one column, its first and its last",
+    "demid/criticism/searches.py::_smallest_bias::0 => -1#5":
+        "the returned errors(best_s)[row, 0] -> [row, -1]: best_s is one point (a grid node or the clipped SLSQP "
+        "point), so errors() has one column, its first and its last",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
