@@ -1714,7 +1714,8 @@ TABLE: dict[str, dict] = {
                                   "tests/criticism/test_one_more_run_scale_whole.py",
                                   "tests/criticism/test_level1_frame_runs_whole.py",
                                   "tests/criticism/test_extensions_accumulate_whole.py",
-                                  "tests/criticism/test_one_run_whole.py", "tests/criticism/test_one_run_spare_runs_whole.py"],
+                                  "tests/criticism/test_one_run_whole.py", "tests/criticism/test_one_run_spare_runs_whole.py",
+                                  "tests/criticism/test_aliasing_first_best_whole.py"],
     },
     "demid/criticism/extensions.py": {
         "functions": None,
@@ -2830,6 +2831,10 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/searches.py::_smallest_bias::0 => -1#5":
         "the returned errors(best_s)[row, 0] -> [row, -1]: best_s is one point (a grid node or the clipped SLSQP "
         "point), so errors() has one column, its first and its last",
+    "demid/criticism/aliasing.py::_separating_runs_cached::rank < len(members) and len(chosen) < len(members) => "
+    "len(chosen) < len(members)#0":
+        "once the rank is len(members) no candidate can raise it (a rank of the members' block is at most "
+        "len(members)): _first_best returns None and the loop stops with the same runs, one scan later",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
