@@ -2835,6 +2835,10 @@ EQUIVALENT: dict[str, str] = {
     "len(chosen) < len(members)#0":
         "once the rank is len(members) no candidate can raise it (a rank of the members' block is at most "
         "len(members)): _first_best returns None and the loop stops with the same runs, one scan later",
+    "demid/criticism/extensions.py::extend_for::float(data.y[i] - model.loo_errors[pos]) => "
+    "data.y[i] - model.loo_errors[pos]#0":
+        _NUMPY_FLOAT + " (an outlier's prediction by the other runs, from two float arrays: formatted with "
+        "short_number and written to JSON through _clean, as the observed value beside it)",
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
