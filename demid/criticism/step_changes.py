@@ -62,9 +62,7 @@ def step_projections(m: Model, q: np.ndarray, e: np.ndarray) -> tuple[list[int],
     n = len(kept)
     order = np.argsort(m.data.runs[kept].astype(float), kind="stable")  # positions among the kept runs
     labels = m.data.runs[kept].astype(float)[order]
-    candidates = np.arange(STEP_MIN_RUNS, n - STEP_MIN_RUNS + 1)
-    if not len(candidates):
-        return [], np.zeros((0, e.shape[1]))
+    candidates = np.arange(STEP_MIN_RUNS, n - STEP_MIN_RUNS + 1)  # none below 2 STEP_MIN_RUNS runs: (0, B) out
     first = np.searchsorted(labels, labels[candidates], side="left")  # tied labels step together
     sw = m.sw[order]
 
