@@ -1565,7 +1565,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/test_core_contracts.py",
                   "tests/sampling/test_polish_whole.py", "tests/uncertainty/test_sweep_plausible_whole.py",
                   "tests/sampling/test_polish_two_discs_whole.py", "tests/sampling/test_sobol_whole.py",
-                  "tests/sampling/test_polish_thin_ring_whole.py"],
+                  "tests/sampling/test_polish_thin_ring_whole.py", "tests/sampling/test_polish_worst_residual_whole.py"],
     },
     "demid/surrogate.py": {
         "functions": None,
