@@ -1842,7 +1842,7 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_qmc_posterior_properties.py", "tests/uncertainty/test_grid_posterior_whole.py",
                   "tests/uncertainty/test_qmc_posterior_whole.py", "tests/uncertainty/test_posterior_small_grids_whole.py",
                   "tests/uncertainty/test_ranking_whole.py", "tests/uncertainty/test_posterior_interval_order_whole.py",
-                  "tests/story/test_ridge_advice_rows_whole.py"],
+                  "tests/story/test_ridge_advice_rows_whole.py", "tests/uncertainty/test_posterior_flat_observable_whole.py"],
     },
     "demid/uncertainty/plausible.py": {
         "functions": None,
