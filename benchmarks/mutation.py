@@ -2374,6 +2374,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/combinations/axes.py::_orient::0 => -1#1":
         "np.arange(out.shape[-1]) for np.arange(out.shape[0]): the eigenvectors of a d x d covariance are a square "
         "matrix, both are d",
+    "demid/combinations/axes.py::_orient::0 => 1#1":
+        "np.arange(out.shape[1]) for np.arange(out.shape[0]): its one caller hands it the eigenvectors of a d x d "
+        "covariance, a square matrix, so both are d",
     "demid/combinations/material.py::MaterialCombinations.to_json::float(res.bend) => res.bend#0":
         "res.bend is curve_bend's float(...) or the dataclass's float('nan'): float() of a Python float",
     "demid/wave_value.py::_updated_se::scale <= 0 => scale < 0#0":
