@@ -2961,6 +2961,10 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/plausible.py::summarise_set::z == 0 => z != 0#2":
         "fraction_with_error predicts the grid itself when z > 0 (shared predictions are the strict set's), and "
         "given none at z = 0 it predicts the same odd grid: the same fraction and error either way",
+    "demid/uncertainty/plausible.py::summarise_set::0 => 1#3":
+        "z == 1 for z == 0 in the shared-predictions test: at z = 0 fraction_with_error is then given none and "
+        "predicts the same odd grid itself (the same fraction and error), and grid predictions never reach "
+        "summarise_set with z > 0 (tolerance_sweep makes them for strict sets only, the ranking asks for no error)",
     "demid/uncertainty/plausible.py::plausible_identifiability_frame::float(tolerance) => tolerance#0":
         "every caller passes a float tolerance (the schema's number): the column is the same float",
     "demid/surrogate.py::SurrogateFit.fitted_exactly::self.hat_diag >= LEVERAGE_UNPREDICTABLE => "
