@@ -2036,7 +2036,7 @@ TABLE: dict[str, dict] = {
                   "tests/combinations/test_combination_outputs.py", "tests/report/test_advice_source.py",
                   "tests/combinations/test_break_ridge_whole.py", "tests/combinations/test_combination_boundaries_whole.py",
                   "tests/story/test_ridge_advice_rows_whole.py", "tests/combinations/test_local_thickness_cells_whole.py",
-                  "tests/combinations/test_combination_equation_whole.py"],
+                  "tests/combinations/test_combination_equation_whole.py", "tests/combinations/test_gradient_coded_whole.py"],
     },
     "demid/story/advice.py": {
         "functions": None,
