@@ -1173,8 +1173,9 @@ grid and stored sets, the combinations of a material, the thin ring, the sampled
 stored-set ranking), posterior and combinations/material (the ridge advice rows; the local thickness cells),
 precision (the ANOVA frame and the wave history).
 
-Twelfth round, the uncertainty and combinations rows (8 rows; new in-sample draws, ``--per-module 3``: seed 40 run before any test was aimed at it, seed 41 on the tests of
-seed 40's survivors, none written against it; one mutation run at a time on a machine shared with three others):
+Twelfth round, the uncertainty and combinations rows (8 rows; new in-sample draws, ``--per-module 3``: seed 40
+run before any test was aimed at it, seed 41 on the tests of seed 40's survivors, none written against it; one
+mutation run at a time on a machine shared with three others):
 
     seed  rows                                    as run          with lists      after (survivors re-run)
     40    uncertainty/*, combinations/* (8 rows)  17/19  89.5 %   17/18  94.4 %   18/18 100 %
