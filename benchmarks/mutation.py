@@ -1173,13 +1173,16 @@ grid and stored sets, the combinations of a material, the thin ring, the sampled
 stored-set ranking), posterior and combinations/material (the ridge advice rows; the local thickness cells),
 precision (the ANOVA frame and the wave history).
 
-Twelfth round, the uncertainty and combinations rows (8 rows; new in-sample draws, ``--per-module 3``: seed 40
-run before any test was aimed at it, seed 41 on the tests of seed 40's survivors, none written against it; one
-mutation run at a time on a machine shared with three others):
+Twelfth round, the uncertainty and combinations rows (8 rows) and four sampling rows (new in-sample draws,
+``--per-module 3``: seed 40 run before any test was aimed at it, seed 41 on the tests of seed 40's survivors, none
+written against it; the sampling draw on the round's tests and widened rows, none aimed at it; one mutation run at
+a time on a machine shared with three others; no time was left for seed 41 of the sampling rows nor for the other
+sampling, surrogate, precision, pareto and canonical rows):
 
     seed  rows                                    as run          with lists      after (survivors re-run)
     40    uncertainty/*, combinations/* (8 rows)  17/19  89.5 %   17/18  94.4 %   18/18 100 %
     41    uncertainty/*, combinations/* (8 rows)  20/23  87.0 %   20/22  90.9 %   22/22 100 %
+    40    sampling/polish, residuals, stored, sobol 12/12 100 %  12/12 100 %     12/12 100 %
 
 "With lists": seed 40's _orient ``np.arange(out.shape[1])`` for ``shape[0]`` (its one caller passes a square
 eigenvector matrix) and seed 41's summarise_set ``z == 1`` for ``z == 0`` before sharing grid predictions (the
