@@ -1731,7 +1731,8 @@ TABLE: dict[str, dict] = {
                                   "tests/criticism/test_level1_close_alternatives_whole.py",
                                   "tests/criticism/test_deciding_runs_kinds_whole.py",
                                   "tests/criticism/test_naming_slip_allowance_whole.py",
-                                  "tests/criticism/test_naming_honest_causes_whole.py"],
+                                  "tests/criticism/test_naming_honest_causes_whole.py",
+                                  "tests/criticism/test_slips_leverage_edge_whole.py"],
     },
     "demid/criticism/slips.py": {
         "functions": None,
@@ -2622,9 +2623,6 @@ EQUIVALENT: dict[str, str] = {
         "differs only where the part of w off the range of S equals the floor to the last bit: floor is positive "
         "(1e-12 of the columns' squares, at least 1e-300 of it), so a w inside the range (perp 0) gains no rank "
         "either way",
-    "demid/criticism/naming.py::_choices::rnd.model.hat < LEVERAGE_UNPREDICTABLE => rnd.model.hat <= "
-    "LEVERAGE_UNPREDICTABLE#0":
-        "differs only for a run whose leverage equals LEVERAGE_UNPREDICTABLE (0.99) to the last bit",
     "demid/criticism/slips.py::slip_ratios::1 => 0#4":
         "only how many candidates are taken at once (the runs instead of the response columns divide SLIP_CELLS): "
         "each candidate's moved SSE is its own row's, the largest ratio and its first candidate (argmin's first in "

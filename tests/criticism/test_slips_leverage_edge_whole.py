@@ -81,3 +81,17 @@ def test_the_same_run_just_below_the_edge_is_judged_and_chosen():
     top = max(expected.values())
     assert abs(best[0] - top) <= 1e-9 * top
     assert cands[int(arg[0])].row == N_RUNS - 1
+
+
+def test_the_outlier_price_counts_only_the_runs_below_the_unpredictable_leverage():
+    # naming prices an outlier by how many runs it was picked from: the runs the others predict, not the one at
+    # exactly 0.99 (the other runs' leverages from the hat matrix written out)
+    from demid.criticism.catalogue import Round
+    from demid.criticism.naming import _choices
+
+    data, model = _study_at_the_edge()
+    x = model.x
+    hat = np.diag(x @ np.linalg.pinv(x.T @ x) @ x.T)
+    assert np.all(hat[:-1] < LEVERAGE_UNPREDICTABLE - 1e-6)
+    rnd = Round(data, model, 19, np.random.default_rng(0))
+    assert _choices(rnd)["outlier"] == N_RUNS - 1
