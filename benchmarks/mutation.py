@@ -973,6 +973,29 @@ added (tests/criticism/test_{reach_terms_floor,edges_span,close_candidates,one_r
 reach_units,replicate_message}_whole.py: 7 files, 46 tests, about 1.3 s of tests and 6 s in one process with imports
 on the loaded machine, each file's tests under 1.2 s).  Rows name them.
 
+Twelfth round, eight criticism rows (naming, slips, verdict, run_order, one_run, discrimination, reach, edges; new
+in-sample draws, ``--per-module 3``: seed 40 on the round's start, seed 41 on seed 40's tests, none aimed at it;
+a machine shared with three other mutation runs):
+
+    seed  rows                        as run          with lists     after
+    40    all eight                   22/24 91.7 %   22/24 91.7 %   24/24 100 % (two killed, each checked on a
+                                                                   private copy with the mutant applied)
+    41    all eight                   SEED41
+
+Seed 40's two survivors are boundary and screening slips: slip_ratios' ``hat < LEVERAGE_UNPREDICTABLE`` -> ``<=``
+(a run whose leverage is 0.99 to the last bit is reached from the public API: 16 runs, the last run's first
+factor walked ulp by ulp near 2.4356; it is unpredictable there as in Model.predicted, not judged a slip, and
+the slip it would win is checked against least-squares refits:
+tests/criticism/test_slips_leverage_edge_whole.py, which also kills naming _choices' same ``<=`` listed
+equivalent before, now removed: the outlier's price counts 15 runs, not 16), and _weakest_by_identity's
+``argmin(|GAMMA_GRID|)`` -> ``argmax`` (the screen ranked from slope -bound, not equal scatter: with the scatter
+falling as a factor grows it misses the worst run; tests/criticism/test_one_run_screen_whole.py, 240 runs,
+against every deletion refitted).  The eleventh held-out draw's run_order survivor (the early return at
+``1 - 1e-12``) is listed equivalent with the bound on how close to 1 a rank correlation short of a perfect match
+can come.  Rows: slips names tests/criticism/test_factor_level_p_whole.py (the slip member's p-values, through
+slip_ratios).  Tests added: 2 files, 4 tests, about 8 s on the loaded machine (the screen's 240-run refits 5 s
+of it).
+
 Eleventh round, the story, loop and input rows (33 rows: story/verdicts, measurements, words, recommended,
 extensions and advice; wave_value, waves, next_wave, wave_runs, boundary_runs, kriging and surrogate_choice, tests
 only; transcription/*, design_check, design_inference, design_generation, design, blocks, io, data, csv_cells,
