@@ -993,8 +993,8 @@ falling as a factor grows it misses the worst run; tests/criticism/test_one_run_
 against every deletion refitted).  The eleventh held-out draw's run_order survivor (the early return at
 ``1 - 1e-12``) is listed equivalent with the bound on how close to 1 a rank correlation short of a perfect match
 can come.  Rows: slips names tests/criticism/test_factor_level_p_whole.py (the slip member's p-values, through
-slip_ratios).  Tests added: 2 files, 4 tests, about 8 s on the loaded machine (the screen's 240-run refits 5 s
-of it).
+slip_ratios).  Tests added: 2 files, 4 tests, 2.8 s one after another on the loaded machine (the screen's 240-run
+refits 1.9 s of it).
 
 Eleventh round, the story, loop and input rows (33 rows: story/verdicts, measurements, words, recommended,
 extensions and advice; wave_value, waves, next_wave, wave_runs, boundary_runs, kriging and surrogate_choice, tests
