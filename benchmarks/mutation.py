@@ -1794,6 +1794,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_run_order_json_whole.py",
                   "tests/criticism/test_run_order_span.py", "tests/criticism/test_run_order_limits_whole.py",
                   "tests/criticism/test_run_order_thresholds_whole.py",
+                  "tests/criticism/test_run_order_printed_levels_whole.py",
                   "tests/test_reported_numbers.py", "tests/criticism/test_criticism.py",
                   "-kdrift or run_order or order"],
     },
