@@ -978,8 +978,8 @@ in-sample draws, ``--per-module 3``: seed 40 on the round's start, seed 41 on se
 a machine shared with three other mutation runs):
 
     seed  rows                        as run          with lists     after
-    40    all eight                   22/24 91.7 %   22/24 91.7 %   24/24 100 % (two killed, each checked on a
-                                                                   private copy with the mutant applied)
+    40    all eight                   22/24 91.7 %   22/24 91.7 %   24/24 100 % (two killed, re-run with
+                                                                   ``--ids``)
     41    all eight                   22/24 91.7 %   22/24 91.7 %   23/23 100 % (one gone with its code, one
                                                                    killed, re-run with ``--ids``)
 
