@@ -144,7 +144,8 @@ def strongest_rival(named, hypotheses) -> object | None:
     own = min(g.logp for g in hypotheses if _RIVAL_KIND.get(g.cause, g.cause) == kind)
     if own <= math.log(OVERWHELMING_P):
         return None
-    rivals = [g for g in hypotheses if _RIVAL_KIND.get(g.cause, g.cause) != kind and g.logp < own]
+    # tests of the named cause's kind are never below own, their minimum: every test below it is of another kind
+    rivals = [g for g in hypotheses if g.logp < own]
     return min(rivals, key=lambda g: g.logp) if rivals else None
 
 
