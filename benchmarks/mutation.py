@@ -2949,7 +2949,6 @@ EQUIVALENT: dict[str, str] = {
         "the first -> the last of one run's slips (or of the run's position among the kept runs): slip_fit's one "
         "caller (catalogue.Round) passes the candidates of one row, and kept run indices are distinct, so one "
         "position matches",
-<<<<<<< HEAD
     # --- criticism, the twelfth round (seeds 40 and 41): models, catalogue, outliers, step_changes, level1,
     # level2, searches, aliasing, extensions
     "demid/criticism/extensions.py::extend_for::float(lam) => lam#0":
@@ -2969,7 +2968,6 @@ EQUIVALENT: dict[str, str] = {
     "data.y[i] - model.loo_errors[pos]#0":
         _NUMPY_FLOAT + " (an outlier's prediction by the other runs, from two float arrays: formatted with "
         "short_number and written to JSON through _clean, as the observed value beside it)",
-=======
     # --- criticism, the twelfth round (seeds 40 and 41): naming, slips, verdict, run_order, one_run,
     # discrimination, reach, edges
     "demid/criticism/run_order.py::standard_order_correlation::best >= 1.0 - 1e-12 => best > 1.0 - 1e-12#0":
@@ -2979,7 +2977,6 @@ EQUIVALENT: dict[str, str] = {
         "12 / (n^3 - n) (one swap of neighbours), above 1e-12 for every table under 22,000 runs, and a perfect "
         "match computes to 1 within a few ulps, past the threshold either way; even there the reported "
         "correlation is read through the 0.95 threshold, 2 decimals in the message and 6 in the JSON",
->>>>>>> nC2
     # --- transcription
     "demid/transcription/engine.py::_statistics::df_pe > 0 => df_pe >= 0#0":
         "df_pe is 0 only when every replicate group is a single run (both callers: n minus the number of "
