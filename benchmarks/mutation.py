@@ -2302,6 +2302,15 @@ _POSTERIOR_POINTS_DEFAULT = ("the default Sobol count of the posteriors is never
 _WAVE_FRAME_COLUMN = (" (a float column of the wave's scenarios frame, read from its parquet row by row: the "
                       "history's column is float64 either way)")
 EQUIVALENT: dict[str, str] = {
+    # --- the twelfth held-out draw's survivors, read after it was scored
+    "demid/criticism/edges.py::in_hull::[(0, None)] * n => [(0, None)]#0":
+        "scipy's linprog broadcasts one (min, max) pair to every variable (_linprog_util._clean_inputs: a 1 x 2 "
+        "bounds array fills every row): the same problem, the same status",
+    "demid/criticism/step_changes.py::step_direction_chunks::np.argsort(m.data.runs[kept].astype(float), "
+    "kind='stable') => np.argsort(m.data.runs[kept].astype(float))#0":
+        "run numbers are distinct integers below 2^53 (read_table refuses a duplicate or a larger one; a table "
+        "without a run column is numbered 1..n), exact as floats: the sort has no ties, and every correct sort "
+        "returns the one order",
     # --- the eleventh round, seeds 38 and 39 (story, loop and input rows)
     "demid/estimability.py::require_estimable::False => True#0":
         "the SVD with full matrices: the runs are refused above unless n > p, so vt is p x p and the singular "
@@ -3744,6 +3753,9 @@ EQUIVALENT: dict[str, str] = {
 # mutant is not equivalent.  Left out of the score like an equivalent mutant and listed apart; the score
 # counting them as survivors is printed too.
 SETTINGS: dict[str, str] = {
+    "demid/sampling/evaluate.py::closest_approach::2000 => 1999#0":
+        "Nelder-Mead's evaluation cap (maxfev) of the closest-approach search: a search's budget, not a rule of "
+        "the answer (its tolerances xatol 1e-10 and fatol 1e-12 end it first on the tested responses)",
     "demid/surrogate.py::SurrogateFit._influence_columns::self.n_runs <= LOO_REFIT_MAX_RUNS => self.n_runs < "
     "LOO_REFIT_MAX_RUNS#0":
         "a cost switch at exactly 200 runs between statsmodels' refits and the leave-one-out identity, which is "
