@@ -3131,6 +3131,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/paper.py::_fraction::0 => 1#0":
         "identifiability.csv repeats a scenario's fraction on each factor's row, and the paper's materials have "
         "two or three factors: the first and second rows carry the same number",
+    "demid/paper.py::_fraction::0 => -1#0":
+        "identifiability.csv repeats a scenario's fraction on each factor's row: the first and the last row carry "
+        "the same number",
     "demid/uncertainty/plausible.py::summarise_set::z == 0 and n % 2 == 1 => n % 2 == 1#0":
         "grid predictions only reach summarise_set with z = 0: tolerance_sweep makes them only for strict sets, "
         "and the ranking asks for no error",
