@@ -2303,6 +2303,9 @@ _WAVE_FRAME_COLUMN = (" (a float column of the wave's scenarios frame, read from
                       "history's column is float64 either way)")
 EQUIVALENT: dict[str, str] = {
     # --- the twelfth held-out draw's survivors, read after it was scored
+    "demid/data.py::_power_of_ten_repair::float(target) => target#0":
+        "a target is a number of the validated config (int or float; the schema refuses anything else): "
+        "int * float converts the int to float first, so target * 10.0 ** power is the same float",
     "demid/criticism/edges.py::in_hull::[(0, None)] * n => [(0, None)]#0":
         "scipy's linprog broadcasts one (min, max) pair to every variable (_linprog_util._clean_inputs: a 1 x 2 "
         "bounds array fills every row): the same problem, the same status",
