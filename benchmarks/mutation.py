@@ -2075,7 +2075,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/combinations/test_canonical.py", "tests/combinations/test_canonical_published.py",
                   "tests/combinations/test_canonical_properties.py", "tests/combinations/test_canonical_planar.py",
                   "tests/combinations/test_canonical_whole.py", "tests/combinations/test_fit_canonical_whole.py",
-                  "tests/combinations/test_canonical_boundaries_whole.py",
+                  "tests/combinations/test_canonical_boundaries_whole.py", "tests/combinations/test_canonical_box_edge_whole.py",
                   "tests/combinations/test_canonical_steep_stationary_ridge_whole.py",
                   "tests/combinations/test_canonical_actual_units_whole.py"],
     },
