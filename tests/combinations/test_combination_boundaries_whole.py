@@ -282,3 +282,9 @@ def test_of_two_equal_largest_loadings_the_first_factors_is_positive_and_zero_we
         assert axes.directions[0, 0] > 0 and axes.directions[0, 1] > 0
     assert principal_axes(np.ones((3, 2)), [-1, -1], [1, 1], weights=np.zeros(3)) is None
     assert principal_axes(np.zeros((0, 2)), [-1, -1], [1, 1]) is None
+
+
+def test_a_set_without_axes_leaves_no_direction_free():
+    """No axes (an empty set): no free direction at all, in no dimension (not one empty column)."""
+    free = SetCombination("s", "strict", None).free
+    assert free.shape == (0, 0)
