@@ -2304,6 +2304,9 @@ _WAVE_FRAME_COLUMN = (" (a float column of the wave's scenarios frame, read from
                       "history's column is float64 either way)")
 EQUIVALENT: dict[str, str] = {
     # --- the twelfth held-out draw's survivors, read after it was scored
+    "demid/transcription/check.py::_located::float(misfit[c]) => misfit[c]#0":
+        "Suspect.misfit is written nowhere (not in to_dict or to_json, no message reads it) and np.float64 is a "
+        "float subclass of the same value",
     "demid/data.py::_power_of_ten_repair::float(target) => target#0":
         "a target is a number of the validated config (int or float; the schema refuses anything else): "
         "int * float converts the int to float first, so target * 10.0 ** power is the same float",
