@@ -200,7 +200,13 @@ Survivors: criticism/step_changes ``step_direction_chunks``' stable argsort -> t
 ``x >= lo - 1e-09`` -> ``>``; combinations/material ``SetCombination.free`` 0 -> 1 (#1); criticism/edges
 ``in_hull``'s bounds ``[(0, None)] * n`` -> ``[(0, None)]``.  The eleventh draw's 90.9 % was a lucky one: **the
 two draws on this round's code pool to 117 of 133, 88.0 %; the last six to 351 of 401, 87.5 %** (95 % interval
-about 84-91 %).  The draw is in SEEN_DRAWS; the next held-out seed is written down below.
+about 84-91 %).  The draw is in SEEN_DRAWS; the next held-out seed is written down below.  Its survivors, read
+after it (in-sample now): in_hull's one bounds pair, step_direction_chunks' sort of distinct run numbers, paper
+_fraction's last row, _power_of_ten_repair's float(target) and _located's float(misfit) listed equivalent,
+closest_approach's evaluation cap a search setting; canonical's edge tolerance and SetCombination.free without axes
+killed by tests (tests/combinations/test_canonical_box_edge_whole.py, test_combination_boundaries_whole.py); left:
+minimax's initial best value from the second node (#1: its sibling #2 killed by
+tests/criticism/test_level2_minimax_best_node_whole.py) and rank_observable_sets' all -> any.
 
 Fourth round, the uncertainty, story, combinations, design, wave and loop modules (28 rows; new in-sample draws,
 seeds 21, 22 and 23 with ``--per-module 2`` and 21 and 22 again with 4, each run before any test was aimed at it, on the
