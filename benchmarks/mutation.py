@@ -470,7 +470,7 @@ Rows name more of the fast files that call their module (waves and advice: the s
 one-more-run update; posterior: the ranking's whole tests; verdicts: the kriging and combination-boundary tests;
 story/recommended: the one report test of its sentence, not the whole file).  Listed as equivalent without having
 been drawn, each read with its callers: eighteen float() and int() drops (0-d integrals of the posteriors, numpy
-floats only compared, formatted or written through io._clean, numpy indexes, round() of a float already an int) and
+floats only compared, formatted or written through io.json_ready, numpy indexes, round() of a float already an int) and
 the remaining variants of analyse_material's and _notes' default posterior_points.  Tests added (also a whole-number
 z and tolerance kept as float columns of the plausible table): 6 files, 20 tests, about 2.5 s in the tests
 themselves (7 s with imports, one after another, on the loaded machine), each file under 1 s.  Found on the way,
@@ -2399,7 +2399,7 @@ EQUIVALENT: dict[str, str] = {
     "demid/sampling/sobol.py::sobol_admissible_set::float(mask.mean()) => mask.mean()#0":
         _NUMPY_FLOAT + " (node_fraction only enters a float column of to_frame)",
     "demid/sampling/sobol.py::sobol_fraction::float(means.mean()) => means.mean()#0":
-        _NUMPY_FLOAT + " (the fraction enters arithmetic, max/min, float columns and JSON through _clean)",
+        _NUMPY_FLOAT + " (the fraction enters arithmetic, max/min, float columns and JSON through io.json_ready)",
     "demid/sampling/roots.py::real_roots_unit::coef.shape[:-1] + (0,) => coef.shape[:-1] - (0,)#0":
         "the degree-0 branch is never reached: exact_set raises every degree to at least 1 and the edge "
         "polynomials of a plane have the tensor's D+1 >= 2 coefficients",
@@ -2497,7 +2497,7 @@ EQUIVALENT: dict[str, str] = {
     "demid/design_inference.py::_symmetric::unit > 0 => unit >= 0#0":
         "the unit is half the distance between two distinct sorted levels: never 0",
     "demid/waves.py::wave_summary::float(plausible['robust_fraction_pct'].iloc[0]) => "
-    "plausible['robust_fraction_pct'].iloc[0]#0": _NUMPY_FLOAT + " (the summary is written to JSON through io._clean)",
+    "plausible['robust_fraction_pct'].iloc[0]#0": _NUMPY_FLOAT + " (the summary is written to JSON through io.json_ready)",
     "demid/uncertainty/material.py::analyse_material::all((o in surrogates for o in widest.observables)) => "
     "any((o in surrogates for o in widest.observables))#0":
         "every scenario's observables have surrogates by this line (the plausible tables above raise KeyError "
@@ -2730,9 +2730,9 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/extensions.py::extend_for::0 => -1#4":
         "data.to_actual of a single coded row returns one row: its first and last rows are the same",
     "demid/criticism/extensions.py::extend_for::float(inside.min()) => inside.min()#0":
-        _NUMPY_FLOAT + " (the 95 % interval's ends: formatted with :.2f and written to JSON through _clean)",
+        _NUMPY_FLOAT + " (the 95 % interval's ends: formatted with :.2f and written to JSON through io.json_ready)",
     "demid/criticism/extensions.py::extend_for::float(inside.max()) => inside.max()#0":
-        _NUMPY_FLOAT + " (the 95 % interval's ends: formatted with :.2f and written to JSON through _clean)",
+        _NUMPY_FLOAT + " (the 95 % interval's ends: formatted with :.2f and written to JSON through io.json_ready)",
     "demid/criticism/extensions.py::extend_for::float(plausible.min()) => plausible.min()#0":
         "lo99 is only compared with the convenient lambdas (lo99 <= v): a numpy float64 compares as the same "
         "double; it is neither stored nor printed (the lambda used is v or round(lam_hat))",
@@ -2740,7 +2740,7 @@ EQUIVALENT: dict[str, str] = {
         "hi99 is only compared with the convenient lambdas (v <= hi99): a numpy float64 compares as the same "
         "double; it is neither stored nor printed",
     "demid/criticism/extensions.py::extend_for::float(data.y[i]) => data.y[i]#0":
-        _NUMPY_FLOAT + " (the observed value of a finding's detail, written to JSON through _clean)",
+        _NUMPY_FLOAT + " (the observed value of a finding's detail, written to JSON through io.json_ready)",
     "demid/criticism/extensions.py::extend_for::int(np.argmax(prof)) => np.argmax(prof)#0":
         "best only indexes the lambda grid: a numpy integer indexes the same element",
     "demid/criticism/extensions.py::extend_for::int(np.flatnonzero(np.flatnonzero(model.keep) == i)[0]) => "
@@ -2969,7 +2969,7 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/slips.py::slip_fit::float((m.z[pos] - x[pos] @ beta) / (s * math.sqrt(1.0 + x[pos] @ a @ "
     "x[pos]))) => (m.z[pos] - x[pos] @ beta) / (s * math.sqrt(1.0 + x[pos] @ a @ x[pos]))#0":
         "a numpy float64 (a scalar of a 1-D response minus a dot product, over a float): a float subclass, which "
-        "the slip's message formats, abs() reads and the findings' JSON (json.dumps, io._clean) writes as the "
+        "the slip's message formats, abs() reads and the findings' JSON (json.dumps, io.json_ready) writes as the "
         "float itself",
     "demid/criticism/reach.py::reach_beyond_bound::float(turn) => turn#0":
         "turn is -rate / bend of numpy floats or np.inf: a float or a numpy float64 (a float subclass), which "
@@ -3002,7 +3002,7 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/extensions.py::extend_for::float(data.y[i] - model.loo_errors[pos]) => "
     "data.y[i] - model.loo_errors[pos]#0":
         _NUMPY_FLOAT + " (an outlier's prediction by the other runs, from two float arrays: formatted with "
-        "short_number and written to JSON through _clean, as the observed value beside it)",
+        "short_number and written to JSON through io.json_ready, as the observed value beside it)",
     # --- criticism, the twelfth round (seeds 40 and 41): naming, slips, verdict, run_order, one_run,
     # discrimination, reach, edges
     "demid/criticism/run_order.py::standard_order_correlation::best >= 1.0 - 1e-12 => best > 1.0 - 1e-12#0":
@@ -3096,7 +3096,7 @@ EQUIVALENT: dict[str, str] = {
     "float_format=f'%.{CSV_SIGNIFICANT_DIGITS}g', lineterminator='\\n') => round_significant(frame).to_csv(tmp, "
     "index=False, float_format=f'%.{CSV_SIGNIFICANT_DIGITS}g')#0":
         "pandas' default line terminator is os.linesep, '\\n' on the POSIX systems demid runs on",
-    "demid/io.py::_clean::float(obj) => obj#0": _NUMPY_FLOAT,
+    "demid/io.py::json_ready::float(obj) => obj#0": _NUMPY_FLOAT,
     "demid/io.py::content_digest::20 => 21#0": "the size of the blocks the file is read in: the digest is the same",
     "demid/io.py::save_figures::len(items) < 2 or not hasattr(os, 'fork') => not hasattr(os, 'fork')#0":
         "the guard only spares a fork: with fewer than two figures the other process draws the one figure (or "
@@ -3254,13 +3254,13 @@ EQUIVALENT: dict[str, str] = {
     "index=frame.index) => pd.Series([reachable_set[s] for s in subsets])#0":
         "frame is built from a list of rows, so its index is the RangeIndex the Series gets by default",
     "demid/wave_value.py::expected_contraction::float(after.mean()) => after.mean()#0":
-        _NUMPY_FLOAT + " (phi_after enters arithmetic, :.3g text and JSON through io._clean)",
+        _NUMPY_FLOAT + " (phi_after enters arithmetic, :.3g text and JSON through io.json_ready)",
     "demid/wave_runs.py::design_count::lo + hi => hi#0":
         "the earlier runs are then shifted by lo / 2 in coded units: the full quadratics in shifted coordinates "
         "are the same space, so the model matrix's rank is the same (its singular values are either of the order "
         "of max|m| or round-off, as full_rank's tolerance entry says)",
     "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#1":
-        _NUMPY_FLOAT + " (the coded centre is written to combinations/{material}.json through io._clean)",
+        _NUMPY_FLOAT + " (the coded centre is written to combinations/{material}.json through io.json_ready)",
     "demid/combinations/axes.py::linear_statement::float(np.linalg.norm(a)) => np.linalg.norm(a)#0":
         _NUMPY_FLOAT + " (scale only enters a comparison, a sign change and divisions)",
     "demid/design_inference.py::infer_design::1 => 2#4":
@@ -3323,7 +3323,7 @@ EQUIVALENT: dict[str, str] = {
         "np.zeros of a numpy integer size is the same array",
     "demid/blocks.py::check_blocks::float(np.max(np.abs(corr))) => np.max(np.abs(corr))#0":
         _NUMPY_FLOAT + " (it is compared, printed :.3f and stored as max_correlation, which to_json rounds and "
-        "io's _clean turns into a float; nothing else reads it)",
+        "io's json_ready turns into a float; nothing else reads it)",
     "demid/design_check.py::_level_coding::int(counts[on].sum()) => counts[on].sum()#0":
         "a numpy integer in a key tuple that is only compared with > : it orders as the int does",
     "demid/design_check.py::_level_coding::int(on.sum()) => on.sum()#0":
@@ -3682,13 +3682,13 @@ EQUIVALENT: dict[str, str] = {
     "demid/wave_value.py::_updated_se::float(surrogate.resid_var) => surrogate.resid_var#0":
         "the residual variance is a real scalar: compared with 0 and divided by, the same either way",
     "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#0":
-        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean)",
+        _NUMPY_FLOAT + " (written to combinations/{material}.json through io.json_ready)",
     "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#2":
-        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean)",
+        _NUMPY_FLOAT + " (written to combinations/{material}.json through io.json_ready)",
     "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#3":
-        _NUMPY_FLOAT + " (written to combinations/{material}.json through io._clean)",
+        _NUMPY_FLOAT + " (written to combinations/{material}.json through io.json_ready)",
     "demid/combinations/material.py::material_combinations::float(v) => v#0":
-        _NUMPY_FLOAT + " (the equation's coefficients are read only by to_json, written through io._clean)",
+        _NUMPY_FLOAT + " (the equation's coefficients are read only by to_json, written through io.json_ready)",
     "demid/combinations/material.py::admitted_points::int(round(aset.mask.size ** (1 / d))) => "
     "round(aset.mask.size ** (1 / d))#0":
         "round() of a Python float returns an int already",

@@ -94,26 +94,30 @@ def write_full_csv(frame: pd.DataFrame, path: Path | str) -> None:
         frame.to_csv(tmp, index=False, lineterminator="\n")
 
 
-def _clean(obj):
+def json_ready(obj, float_format: str | None = FLOAT_FORMAT):
+    """``obj`` in plain JSON values, at any depth: numpy scalars and arrays as Python ones, keys as strings, NaN
+    or infinity as None (null), every other float through ``float_format`` (None: kept to the last bit)."""
     if isinstance(obj, dict):
-        return {str(k): _clean(v) for k, v in obj.items()}
+        return {str(k): json_ready(v, float_format) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):
-        return [_clean(v) for v in obj]
+        return [json_ready(v, float_format) for v in obj]
     if isinstance(obj, np.ndarray):
-        return [_clean(v) for v in obj.tolist()]
+        return [json_ready(v, float_format) for v in obj.tolist()]
     if isinstance(obj, (np.bool_,)):
         return bool(obj)
     if isinstance(obj, (np.integer,)):
         return int(obj)
     if isinstance(obj, (float, np.floating)):
         value = float(obj)
-        return None if not math.isfinite(value) else float(FLOAT_FORMAT % value)
+        if not math.isfinite(value):
+            return None
+        return value if float_format is None else float(float_format % value)
     return obj
 
 
 def to_json_text(obj) -> str:
     """Sorted keys, NaN as null, floats rounded to 10 significant digits."""
-    return json.dumps(_clean(obj), sort_keys=True, indent=2, ensure_ascii=False) + "\n"
+    return json.dumps(json_ready(obj), sort_keys=True, indent=2, ensure_ascii=False) + "\n"
 
 
 def write_json(obj, path: Path | str) -> None:

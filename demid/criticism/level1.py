@@ -15,6 +15,7 @@ import pandas as pd
 
 from ..blocks import block_columns
 from ..design import Coding, model_units, quadratic_terms, term_name
+from ..io import json_ready
 from ..surrogate import fit_response
 from .aliasing import AliasSet, separating_runs
 from .catalogue import Round
@@ -61,20 +62,8 @@ class Finding:
                "delta_aicc": json_number(self.delta_aicc), "compared_runs": self.compared_runs}
         if self.extra_runs:
             out["extra_runs"] = self.extra_runs
-        out.update({k: _json_value(v) for k, v in self.info.items()})
+        out.update({k: v for k, v in self.info.items()})
         return out
-
-
-def _json_value(v):
-    """``v`` for the findings' JSON: a float that is NaN or infinite (a t statistic of runs fitted exactly) as null,
-    inside lists and dicts too, so the document stays valid JSON; integers, strings and None as they are."""
-    if isinstance(v, (float, np.floating)):
-        return json_number(v)
-    if isinstance(v, (list, tuple)):
-        return [_json_value(x) for x in v]
-    if isinstance(v, dict):
-        return {k: _json_value(x) for k, x in v.items()}
-    return v
 
 
 @dataclass
@@ -134,7 +123,9 @@ class CriticismResult:
                 for row in self.residuals[cols].values]
 
     def dumps(self) -> str:
-        return json.dumps(self.to_json(), indent=2, allow_nan=False)
+        """The JSON document, every number to the last bit; NaN or infinity anywhere in it (a finding's t statistic
+        of runs fitted exactly) as null, as the written file has them (io.json_ready, as write_json)."""
+        return json.dumps(json_ready(self.to_json(), float_format=None), indent=2, allow_nan=False)
 
     def to_frame(self) -> pd.DataFrame:
         """One row per finding (or one ``unexplained`` row); ``verdict`` repeats the response's verdict."""
