@@ -53,6 +53,17 @@ class Planted:
     signal: tuple[float, ...] = ()  # the defect's noise-free shift of the mean, per table row (off-catalogue)
 
 
+def random_domain(rng: np.random.Generator, k: int, log_mask: int, lower=(-1.0, 1.0), width=(0.5, 2.0)):
+    """A search range over factors f0..f{k-1} drawn in search units (log10 for the factors whose bit of
+    ``log_mask`` is set): lower ends uniform in ``lower``, widths uniform in ``width``.  (domain, lo_s, hi_s)."""
+    log = tuple(bool(log_mask >> i & 1) for i in range(k))
+    lo_s = rng.uniform(*lower, k)
+    hi_s = lo_s + rng.uniform(*width, k)
+    domain = Domain(tuple(f"f{i}" for i in range(k)), tuple(np.where(log, 10.0 ** lo_s, lo_s)),
+                    tuple(np.where(log, 10.0 ** hi_s, hi_s)), log)
+    return domain, lo_s, hi_s
+
+
 def design(n_factors: int, alpha: float | None = None, replicates: int = 1
            ) -> tuple[list[str], Coding, np.ndarray, float]:
     """Factor names, coding and coded CCD points (standard order) of the test designs.

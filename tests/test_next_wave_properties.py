@@ -49,14 +49,12 @@ def test_the_box_points_are_the_boxs_grid_in_actual_units(k, seed, log_mask):
     import numpy as np
 
     from demid.next_wave import box_points
-    from demid.sampling.domain import Domain
+
+    from .generators import random_domain
 
     rng = np.random.default_rng(seed)
-    log = tuple(bool(log_mask >> i & 1) for i in range(k))
-    lo_s = rng.uniform(-3.0, 3.0, k)
-    hi_s = lo_s + rng.uniform(0.5, 4.0, k)
-    domain = Domain(tuple(f"f{i}" for i in range(k)), tuple(np.where(log, 10.0 ** lo_s, lo_s)),
-                    tuple(np.where(log, 10.0 ** hi_s, hi_s)), log)
+    domain, lo_s, hi_s = random_domain(rng, k, log_mask, lower=(-3.0, 3.0), width=(0.5, 4.0))
+    log = domain.log
     a, b = rng.uniform(0.0, 0.5, k), rng.uniform(0.5, 1.0, k)
     lo, hi = lo_s + a * (hi_s - lo_s), lo_s + b * (hi_s - lo_s)
     levels = (0.0, 0.25, 0.5, 0.75, 1.0) if k <= 3 else (0.0, 0.5, 1.0)

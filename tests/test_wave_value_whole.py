@@ -12,8 +12,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from demid.sampling import Domain
 from demid.wave_value import expected_contraction
+
+from .generators import random_domain
 
 
 class _Field:
@@ -64,11 +65,7 @@ def _points(domain):
 @settings(max_examples=8, deadline=None, derandomize=True)
 def test_every_field_of_a_waves_value_is_the_count_on_the_evaluation_points(k, log_mask, seed, runs, shrink, radius):
     rng = np.random.default_rng(seed)
-    log = tuple(bool(log_mask >> i & 1) for i in range(k))
-    lower = rng.uniform(-2.0, 1.0, k)
-    upper = lower + rng.uniform(0.5, 3.0, k)
-    domain = Domain(tuple(f"f{i}" for i in range(k)), tuple(np.where(log, 10 ** lower, lower)),
-                    tuple(np.where(log, 10 ** upper, upper)), log)
+    domain, _, _ = random_domain(rng, k, log_mask, lower=(-2.0, 1.0), width=(0.5, 3.0))
     judged, field = _judged(domain, shrink, radius)
     new_runs = rng.uniform(0.0, 1.0, (runs, k))
     points = _points(domain)

@@ -9,7 +9,8 @@ from hypothesis import given, settings, strategies as st
 
 from demid.combinations.material import gradient_coded
 from demid.design import Coding
-from demid.sampling import Domain
+
+from ..generators import random_domain
 
 
 class Smooth:
@@ -39,11 +40,8 @@ class Smooth:
 @settings(max_examples=10, deadline=None, derandomize=True)
 def test_the_coded_gradient_is_the_derivative_per_coded_unit(k, seed, log_mask, unit_scale):
     rng = np.random.default_rng(seed)
-    log = tuple(bool(log_mask >> i & 1) for i in range(k))
-    lo_s = rng.uniform(-1.0, 1.0, k)
-    hi_s = lo_s + rng.uniform(0.5, 2.0, k)
-    domain = Domain(tuple(f"f{i}" for i in range(k)), tuple(np.where(log, 10.0 ** lo_s, lo_s)),
-                    tuple(np.where(log, 10.0 ** hi_s, hi_s)), log)
+    domain, lo_s, hi_s = random_domain(rng, k, log_mask)
+    log = domain.log
     coding = Coding(domain.factors, tuple((lo_s + hi_s) / 2), tuple(unit_scale * (hi_s - lo_s) / 2))
     response = Smooth(rng.uniform(-2.0, 2.0, k), rng.uniform(0.5, 3.0, k), log)
     points = lo_s + rng.uniform(0.0, 1.0, (6, k)) * (hi_s - lo_s)

@@ -9,18 +9,10 @@ from __future__ import annotations
 import numpy as np
 from hypothesis import given, settings, strategies as st
 
-from demid.design import quadratic_terms
-from demid.sampling.domain import Domain
-from demid.surrogate import Surrogate
 from demid.uncertainty.posterior import subset_posteriors
 
-
-def _linear(name: str, k: int, intercept: float, slopes, log_factors) -> Surrogate:
-    terms = quadratic_terms(k)
-    coef = np.zeros(len(terms))
-    coef[0], coef[1:1 + k] = intercept, slopes
-    return Surrogate(name, [f"f{i}" for i in range(k)], terms, coef, np.zeros((len(terms), len(terms))), 0.0, 1,
-                     log_factors)
+from ..generators import random_domain
+from .test_qmc_posterior_whole import _linear
 
 
 @settings(max_examples=6, deadline=None, derandomize=True)
@@ -28,11 +20,8 @@ def _linear(name: str, k: int, intercept: float, slopes, log_factors) -> Surroga
        sign=st.sampled_from([1.0, -1.0]), miss=st.sampled_from([0.0, 3.0, 40.0, 60.0]))
 def test_a_flat_observable_leaves_the_posterior_as_it_is(k, seed, log_mask, sign, miss):
     rng = np.random.default_rng(seed)
-    log = tuple(bool(log_mask >> i & 1) for i in range(k))
-    lo_s = rng.uniform(-2.0, 2.0, k)
-    hi_s = lo_s + rng.uniform(0.5, 2.0, k)
-    factors = tuple(f"f{i}" for i in range(k))
-    domain = Domain(factors, tuple(np.where(log, 10.0 ** lo_s, lo_s)), tuple(np.where(log, 10.0 ** hi_s, hi_s)), log)
+    domain, lo_s, hi_s = random_domain(rng, k, log_mask, lower=(-2.0, 2.0))
+    log, factors = domain.log, domain.factors
     log_factors = tuple(f for f, lg in zip(factors, log) if lg)
     slopes = rng.uniform(0.5, 2.0, k) / (hi_s - lo_s) * rng.choice([-1.0, 1.0], k)
     at = lo_s + rng.uniform(0.3, 0.7, k) * (hi_s - lo_s)
