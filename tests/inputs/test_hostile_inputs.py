@@ -401,6 +401,7 @@ def test_an_unusable_number_in_a_table_is_one_line(tmp_path, cell):
     assert "y1" in _one_error_line(result) and not (tmp_path / "c.json").exists()
 
 
+@pytest.mark.workflow  # runs Snakemake
 def test_an_unusable_number_stops_the_workflow_in_the_material_job(tmp_path):
     """A table's cells are checked once, in the material's job (start-up reads its header only): the run
     stops there with one line naming the cell, and leaves no results behind."""
@@ -466,6 +467,7 @@ def test_a_million_character_cell_is_one_line(tmp_path):
     assert "column 'y1'" in line and "characters left out" in line
 
 
+@pytest.mark.workflow  # runs Snakemake
 def test_valid_csv_with_a_quoted_line_break_and_yaml_merge_keys_are_accepted(tmp_path):
     config = _plain_study(tmp_path)
     data = tmp_path / "data" / "m.csv"
@@ -489,6 +491,7 @@ def test_valid_csv_with_a_quoted_line_break_and_yaml_merge_keys_are_accepted(tmp
     assert _snakemake(tmp_path, "--configfile", str(config)).returncode == 0
 
 
+@pytest.mark.workflow  # runs Snakemake
 def test_a_results_dir_naming_a_file_is_one_line(tmp_path):
     config = _plain_study(tmp_path)
     (tmp_path / "taken").write_text("mine\n", encoding="utf-8")
@@ -529,6 +532,7 @@ def test_a_second_run_in_the_same_folder_names_the_lock(tmp_path):
     assert run_snakemake(tmp_path, config).returncode == 0
 
 
+@pytest.mark.workflow  # runs Snakemake
 @pytest.mark.parametrize("how", ["absolute", "relative", "symlink"])
 def test_a_table_outside_the_study_is_never_echoed(tmp_path, how):
     study = tmp_path / "study"
@@ -569,6 +573,7 @@ def test_a_line_separator_inside_a_cell_does_not_split_its_row(tmp_path):
     assert "1 table(s) valid" in result.stdout
 
 
+@pytest.mark.workflow  # runs Snakemake
 @pytest.mark.parametrize("change, key, named", [
     (lambda mats: mats.update(m_transcription=dict(mats["m"])), "config key materials.m:",
      "'m_transcription' and 'm' both give results/validated/m_transcription.parquet"),
@@ -586,6 +591,7 @@ def test_names_that_make_two_rules_write_one_file_name_the_config_key(tmp_path, 
     assert key in line and named in line, line
 
 
+@pytest.mark.workflow  # runs Snakemake
 def test_two_studies_sharing_one_results_dir_the_second_is_refused(tmp_path):
     from demid.out_path import STUDY_MARKER, claim_results_dir, results_owner_problem
 
