@@ -2261,6 +2261,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/criticism/test_reach.py", "tests/criticism/test_reach_whole.py", "tests/criticism/test_reach_straight.py",
                   "tests/criticism/test_reach_limits_whole.py", "tests/criticism/test_reach_terms_floor_whole.py",
                   "tests/criticism/test_reach_roots_whole.py", "tests/criticism/test_reach_units_whole.py",
+                  "tests/criticism/test_reach_kriging_whole.py",
                   "-knot heap"],
     },
     "demid/criticism/edges.py": {
