@@ -2195,6 +2195,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_one_run_fitted_covariate_whole.py",
                   "tests/criticism/test_one_run_identity_threshold_whole.py",
                   "tests/criticism/test_one_run_screen_whole.py",
+                  "tests/criticism/test_one_run_screen_ranks_whole.py",
                   *[f"tests/criticism/test_honest_causes.py::{name}" for name in (
             "test_one_run_deletions_match_refits_without_each_run", "test_unequal_scatter_resting_on_one_run_is_not_named",
             "test_large_table_worst_deletion_of_unequal_scatter_equals_every_deletion")]],
