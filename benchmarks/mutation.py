@@ -1873,7 +1873,8 @@ TABLE: dict[str, dict] = {
     "demid/criticism/slips.py": {
         "functions": None,
         "tests": _NAMING_TESTS + ["tests/criticism/test_slips_brute_force.py", "tests/criticism/test_slips_whole.py",
-                                  "tests/criticism/test_extensions_forms_whole.py", "tests/criticism/test_slip_fit_whole.py", "tests/criticism/test_slip_fit_subsets_whole.py",
+                                  "tests/criticism/test_extensions_forms_whole.py", "tests/criticism/test_slip_fit_whole.py",
+                                  "tests/criticism/test_slip_fit_subsets_whole.py",
                                   "tests/criticism/test_slip_candidates_whole.py",
                                   "tests/criticism/test_extensions_accumulate_whole.py",
                                   "tests/criticism/test_slips_unit_change_whole.py",
