@@ -2312,6 +2312,23 @@ _POSTERIOR_POINTS_DEFAULT = ("the default Sobol count of the posteriors is never
 _WAVE_FRAME_COLUMN = (" (a float column of the wave's scenarios frame, read from its parquet row by row: the "
                       "history's column is float64 either way)")
 EQUIVALENT: dict[str, str] = {
+    # --- criticism (naming, slips, verdict, run_order, one_run, discrimination, reach, edges), seed 42
+    "demid/criticism/run_order.py::_ranks::1 => 0#0":
+        "every rank one higher: the ranks are read only by _rank_correlation, a Pearson correlation, which no "
+        "shift of one variable changes",
+    "demid/criticism/run_order.py::_ranks::1 => 2#0":
+        "every rank one lower: the ranks are read only by _rank_correlation, a Pearson correlation, which no "
+        "shift of one variable changes",
+    "demid/criticism/verdict.py::power_caveat::float('nan') => 'nan'#0":
+        "power_caveat reaches the size only when detectable_departure is not None, i.e. with at least 3 residual "
+        "degrees of freedom, where resid_std = sqrt(SSE / (n - p)) of finite responses (validation refuses any "
+        "other, and their magnitudes are at most 1e30) is finite: the nan branch is never taken",
+    "demid/criticism/one_run.py::worst_deletion::0 => -1#1":
+        "deleted_logp is given one response column (model.z[:, None]) and returns one column: [:, -1] is [:, 0]",
+    "demid/criticism/reach.py::reach_beyond_bound::float(max(straight, 0.0)) => max(straight, 0.0)#0":
+        "straight is gap / rate of numpy floats or np.inf: max with 0.0 is a float or a numpy float64 (a float "
+        "subclass), which the Reach's properties, to_json's isinstance(v, float) test and the JSON writer read as "
+        "the same float",
     # --- the twelfth held-out draw's survivors, read after it was scored
     "demid/transcription/check.py::_located::float(misfit[c]) => misfit[c]#0":
         "Suspect.misfit is written nowhere (not in to_dict or to_json, no message reads it) and np.float64 is a "
