@@ -1,7 +1,8 @@
 """Hand-written mutants of the criticism's naming, slips, verdict, run-order, one-run, discrimination, reach and edges
 modules: plausible developer bugs that change a number or a decision a user reads.
 
-Written by reading the modules, before any test was written against them.  First run: (to be filled in).
+Written by reading the modules, before any test was written against them.  First run (the held-out score, on the
+tests of mutation.TABLE's rows, none aimed at these mutants): 16 of 16 killed (100.0 %), no survivors.
 """
 from hand_mutants import HandMutant
 
