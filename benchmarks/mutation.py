@@ -2263,7 +2263,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/criticism/test_reach.py", "tests/criticism/test_reach_whole.py", "tests/criticism/test_reach_straight.py",
                   "tests/criticism/test_reach_limits_whole.py", "tests/criticism/test_reach_terms_floor_whole.py",
                   "tests/criticism/test_reach_roots_whole.py", "tests/criticism/test_reach_units_whole.py",
-                  "tests/criticism/test_reach_kriging_whole.py",
+                  "tests/criticism/test_reach_kriging_whole.py", "tests/criticism/test_reach_advice_direction_whole.py",
                   "-knot heap"],
     },
     "demid/criticism/edges.py": {
@@ -2329,6 +2329,11 @@ EQUIVALENT: dict[str, str] = {
         "straight is gap / rate of numpy floats or np.inf: max with 0.0 is a float or a numpy float64 (a float "
         "subclass), which the Reach's properties, to_json's isinstance(v, float) test and the JSON writer read as "
         "the same float",
+    # seed 43
+    "demid/criticism/discrimination.py::candidate_grid::float(np.max(np.linalg.norm(data.coded, axis=1))) => "
+    "np.max(np.linalg.norm(data.coded, axis=1))#0":
+        "reach is only compared with the points' norms: a numpy float64 of the same value adds 1e-9 and compares "
+        "exactly as the float does",
     # --- the twelfth held-out draw's survivors, read after it was scored
     "demid/transcription/check.py::_located::float(misfit[c]) => misfit[c]#0":
         "Suspect.misfit is written nowhere (not in to_dict or to_json, no message reads it) and np.float64 is a "
