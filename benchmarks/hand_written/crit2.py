@@ -3,6 +3,7 @@ modules: plausible developer bugs that change a number or a decision a user read
 
 Written by reading the modules, before any test was written against them.  First run (the held-out score, on the
 tests of mutation.TABLE's rows, none aimed at these mutants): 16 of 16 killed (100.0 %), no survivors.
+Re-run after the tests for the generated draws (seeds 42 and 43) were added: 16 of 16 killed.
 """
 from hand_mutants import HandMutant
 
