@@ -2294,6 +2294,49 @@ TABLE: dict[str, dict] = {
                   "tests/test_io_whole.py", "tests/test_save_figures_io_whole.py",
                   "tests/test_csv_line_ends_whole.py", "-kjson or png or parquet or csv or atomic or figures_drawn or io_whole"],
     },
+    # the modules that put numbers into the sentences and tables a user reads
+    "demid/criticism/messages.py": {
+        "functions": None,
+        "tests": ["tests/criticism/test_level1_finding_whole.py", "tests/criticism/test_level1_close_alternatives_whole.py",
+                  "tests/criticism/test_level2_weighted_text_whole.py",
+                  "tests/criticism/test_level2_reference_sentence_whole.py",
+                  "tests/criticism/test_edges.py::test_summary_lines_carry_best_point_and_extrapolation",
+                  "tests/criticism/test_honest_causes.py::test_a_term_only_the_corner_runs_carry_is_found_by_its_geometry"],
+    },
+    "demid/criticism/material.py": {
+        "functions": None,
+        "tests": ["tests/criticism/test_level2_sign_properties.py", "tests/criticism/test_level2_own_tolerance.py",
+                  "tests/sampling/test_reference_point.py"],
+    },
+    "demid/report/summary.py": {
+        "functions": None,
+        "tests": ["tests/report/test_report_reads.py", "tests/criticism/test_edges.py",
+                  "tests/combinations/test_combinations.py::test_combination_verdicts_and_lines", _NOT_WORKFLOW],
+    },
+    "demid/report/columns.py": {
+        "functions": None,
+        "tests": ["tests/report/test_report_outputs.py", "tests/story/test_model_extensions.py",
+                  "tests/criticism/test_honest_causes.py::test_verdict_column_documented_and_written", _NOT_WORKFLOW],
+    },
+    "demid/report/plausible.py": {
+        "functions": None,
+        "tests": ["tests/story/test_story.py::test_the_ranking_shows_an_uninformative_observables_gain_as_about_zero",
+                  "tests/report/test_report_reads.py", _NOT_WORKFLOW],
+    },
+    "demid/report/loop.py": {
+        "functions": None,
+        "tests": ["tests/report/test_report_reads.py", _NOT_WORKFLOW],
+    },
+    "demid/report/model_criticism.py": {
+        "functions": None,
+        "tests": ["tests/criticism/test_edges.py", "tests/report/test_report_reads.py",
+                  "tests/criticism/test_honest_causes.py::"
+                  "test_report_warns_about_scenarios_using_a_surrogate_that_does_not_predict", _NOT_WORKFLOW],
+    },
+    "demid/published_values.py": {
+        "functions": None,
+        "tests": ["tests/inputs/test_published_values.py"],
+    },
 }
 
 # ----------------------------------------------------------------------------------------------------------
