@@ -174,3 +174,75 @@ def test_corner_only_runs_counts_the_runs_that_carry_a_three_factor_product(seed
     assert corner_only_runs(data, (1, 1, 0)) == 0 and corner_only_runs(data, (2, 1, 0)) == 0
     four = SimpleNamespace(coded=np.hstack([coded, np.ones((n, 1))]), n=n)
     assert corner_only_runs(four, (1, 1, 1, 1)) == 0
+
+
+@pytest.mark.parametrize("lam, scale", [(0.0, "log"), (0.5, "square-root"), (-1.0, "reciprocal"), (0.3, None),
+                                        (0.51, None), (2.0, None)])
+def test_a_transform_finding_names_its_scale_and_quotes_lambda_and_its_interval(lam, scale):
+    rng = np.random.default_rng(int(10 * lam) + 20)
+    lo, hi = sorted(rng.uniform(-2, 2, 2))
+    info = {"lam": lam, "lambda_hat": lam + 0.0123, "lambda_ci": (lo, hi)}
+    text = finding_message(_data([1, 2]), Hypothesis("response_transform", None), info, 3.0, 2.4, 2, [], None)
+    kind = "multiplicatively" if lam <= 0.5 else "non-additively"
+    on = f"on a {scale} scale" if scale else f"after a Box-Cox transform with lambda = {lam:g}"
+    assert text.startswith(f"angle: the response behaves {kind}: the quadratic fits better {on} (Box-Cox lambda = ")
+    m = re.search(r"lambda = (\S+), 95 % interval (\S+) to (\S+)\);", text)
+    assert m and np.allclose([float(v) for v in m.groups()], [lam + 0.0123, lo, hi], atol=0.005 + 1e-12)
+    _check_gain(text, 3.0, 2.4)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_a_slipped_factor_value_quotes_the_run_both_values_and_the_evidence(seed):
+    rng = np.random.default_rng(seed)
+    runs = np.arange(1, 12) * (seed + 1)
+    row = int(rng.integers(0, 11))
+    info = {"factor": "mu", "fitting_value": float(rng.uniform(0.01, 1)), "recorded_value": float(rng.uniform(1, 10)),
+            "slip": "x1e1", "observed": float(rng.uniform(20, 40)), "t_moved": float(rng.normal(0, 1)),
+            "t_recorded": float(rng.normal(0, 8)), "bayes_factor": float(rng.uniform(2, 90))}
+    before, after = 2.0, float(rng.uniform(0.5, 2.5))
+    text = finding_message(_data(runs), Hypothesis("factor_level", SimpleNamespace(row=row)), info, before, after, 11,
+                           [], None)
+    m = re.search(r"run (\d+) fits mu = (\S+) instead of the recorded (\S+) \(x 10\^1: ", text)
+    assert m, text
+    assert int(m.group(1)) == runs[row]
+    assert [float(v) for v in m.groups()[1:]] == pytest.approx([info["fitting_value"], info["recorded_value"]], rel=1e-3)
+    m = re.search(r"observed (\S+), the other runs predict it within (\S+) standard errors at mu = \S+ and (\S+) at "
+                  r"the recorded value \(Bayes factor (\S+) against", text)
+    assert m, text
+    quoted = [float(v) for v in m.groups()]
+    assert quoted == pytest.approx([info["observed"], abs(info["t_moved"]), abs(info["t_recorded"]),
+                                    info["bayes_factor"]], abs=0.05, rel=1e-3)
+    _check_gain(text, before, after)
+
+
+@pytest.mark.parametrize("size, first", [(1.234567, 4), (-0.0123, 7)])
+def test_a_step_in_run_order_quotes_its_size_first_run_and_the_runs_before(size, first):
+    runs = np.array([2, 4, 6, 8, 10, 12, 14, 16])
+    info = {"step_size": size, "runs_before": first}
+    text = finding_message(_data(runs), Hypothesis("step", first), info, 1.0, 0.2, 8, [], None)
+    m = re.search(r"the runs from run (\d+) on are shifted by (\S+) against the (\d+) runs before", text)
+    assert m and int(m.group(1)) == runs[first] and int(m.group(3)) == first
+    assert float(m.group(2)) == pytest.approx(size, rel=1e-3) and m.group(2)[0] == ("+" if size > 0 else "-")
+    _check_gain(text, 1.0, 0.2)
+
+
+def test_own_tolerances_are_listed_each_with_its_percentage():
+    from demid.criticism.messages import level2_tolerance_text
+
+    own = {"d5": 0.02, "rho": 0.0033, "aor": 0.15}
+    listed = "d5 2.00 %, rho 0.33 %, aor 15.0 %"
+    assert level2_tolerance_text(0.02, own) == f"their own tolerances ({listed})"
+    assert level2_tolerance_text(0.02, own, brackets=False) == f"their own tolerances: {listed}"
+    assert level2_tolerance_text(0.05, {"d5": 0.05, "rho": 0.05}) == "5.00 %"
+    assert level2_tolerance_text(0.12, None) == "12.0 %"
+
+
+@pytest.mark.parametrize("ratio", [0.004, 0.005, 0.0051, 0.25, 1.0, 7.77, 31.4])
+def test_the_worst_observables_multiple_of_its_tolerance_is_quoted_to_two_digits_down_to_half_a_percent(ratio):
+    tol = 0.02
+    text = level2_miss_text({"a": ratio * tol, "b": 0.0}, 0.05, {"a": tol, "b": 0.05})
+    if ratio * tol / tol >= 0.005:
+        m = re.fullmatch(r"a by \S+ % \((\S+) times its tolerance of 2.00 %\)", text)
+        assert m and float(m.group(1)) == pytest.approx(ratio, rel=0.03)
+    else:
+        assert text.endswith("(a negligible fraction of its tolerance of 2.00 %)")

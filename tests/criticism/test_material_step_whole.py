@@ -68,7 +68,7 @@ def test_the_reference_points_errors_inside_and_distance(seed):
 
 
 def _dense(planes, tolerances, extended=None):
-    a, b = np.meshgrid(np.linspace(0, 2, 401), np.linspace(1, 3, 401), indexing="ij")
+    a, b = np.meshgrid(np.linspace(0, 2, 301), np.linspace(1, 3, 301), indexing="ij")
     points = np.column_stack([a.ravel(), b.ravel()])
     inside = np.ones(len(points), bool)
     for o, tol in tolerances.items():

@@ -89,3 +89,30 @@ def test_for_materials_keeps_the_studied_materials_and_the_source():
     kept = for_materials(content, ["m"])
     assert kept == {"source": "paper", "provenance": "typed", "targets": {"m": {"y": 1}}, "table3": {},
                     "contractions": [{"material": "m", "value": 1}]}
+
+
+@pytest.mark.parametrize("content, key, words", [
+    ({"targets": {"m": {"yy": 1}}}, "targets.m.yy", "'yy' is not a response of m; did you mean 'y'?"),
+    ({"tolerances": {"m": {"q": 0.1}}}, "tolerances.m.q", "'q' is not a scenario of m (known: s, t)"),
+    ({"intervals": {"m": {"s": {"b": [2, 1]}}}}, "intervals.m.s.b", "[2, 1] has its lower end above its upper end"),
+    ({"search_domain": {"m": {"a": [1, 1]}}}, "search_domain.m.a",
+     "[1, 1] has its lower end at its upper end; a search range needs lower < upper"),
+    ({"scenario_sets": {"m": {"t": {"unresolved": ["a"]}}}}, "scenario_sets.m.t.unresolved",
+     "'a' unresolved over its search range needs search_domain.m.a: [lower, upper]"),
+    ({"contractions": [{"material": "m", "from": "s", "to": "t", "quantity": "fraction", "value": 1},
+                       {"material": "m", "from": "s", "to": "u", "quantity": "fraction", "value": 1}]},
+     "contractions (item 2).to", "'u' is not a scenario of m"),
+    ({"pareto": {"n": {"max_error": 0.1, "intervals": {}}}}, "", ""),
+])
+def test_a_slip_names_its_key_and_what_is_wrong(content, key, words):
+    if not key:  # another study's material: not compared
+        check_published_values(content, MATERIALS, "pub.yaml")
+        return
+    message = _fails(content)
+    assert message.startswith(f"pub.yaml, key {key}: ") and words in message, message
+
+
+def test_a_pareto_entry_needs_a_front_in_the_config():
+    materials = {"m": {**MATERIALS["m"], "pareto": None}}
+    with pytest.raises(InputError, match=r"key pareto\.m: the config computes no Pareto front for m"):
+        check_published_values({"pareto": {"m": {"max_error": 0.1, "intervals": {}}}}, materials, "pub.yaml")

@@ -76,7 +76,8 @@ def test_the_recommended_point_is_quoted_with_its_intervals_and_the_factors_it_d
         lo, hi = np.sort(rng.uniform(0, upper, 2))
         lo, hi = (0.0, upper) if verdicts[i] == "unresolved" else (lo, hi)
         point[f] = float(rng.uniform(lo, hi))
-        rows.append({"material": "m", "scenario": "s", "factor": f, "strict_lower": lo, "strict_upper": hi,
+        strict = (np.nan, np.nan) if seed == 3 else (lo, hi)  # one study whose strict set is empty
+        rows.append({"material": "m", "scenario": "s", "factor": f, "strict_lower": strict[0], "strict_upper": strict[1],
                      "plausible_lower": lo, "plausible_upper": hi, "verdict": verdicts[i], "reason": "why"})
     implausibility = float(rng.uniform(0.05, 0.99))
     _write(tmp_path, "tables/verdicts.csv", pd.DataFrame(rows))
@@ -112,6 +113,18 @@ def test_the_recommended_point_is_quoted_with_its_intervals_and_the_factors_it_d
                 f"{'it' if len(loose) == 1 else 'each'}.").replace("*", "") in text
     else:
         assert "does not pin down" not in text
+    # the answer line: scenario "s" has the most observables
+    identified = [LABELS[i] for i in range(d) if verdicts[i] == "identified"]
+    others = [f"{LABELS[i]} {verdicts[i]}" for i in range(d) if verdicts[i] != "identified"]
+    assert (f"{material_label(material)}, with Both: identified: {', '.join(identified) or 'none'}; not identified: "
+            f"{', '.join(others) or 'none'}.") in text
+    empty = "With every observable of Both no point of the search range is admissible, so there are no admissible " \
+            "intervals."
+    assert (empty in text) == (seed == 3)
+
+
+def material_label(material: dict) -> str:
+    return _spec(material).label
 
 
 def test_with_no_plausible_point_the_summary_names_the_closest_point_and_theobservables(tmp_path):
@@ -350,3 +363,44 @@ def test_level1_lines_give_each_response_its_verdict_or_its_findings_in_config_o
     assert lines == ["Surrogate of Yobs — **ambiguous cause**: two causes.",
                      "Surrogate of Zobs: Zobs: run 4 does not fit. Zobs: a drift.",
                      "Surrogate of Wobs: no defect found — the quadratic fits the simulation runs."]
+
+
+@pytest.mark.parametrize("bad", [(), ("y",), ("z",), ("y", "z")])
+def test_a_surrogate_that_does_not_predict_is_named_in_every_scenario_and_front_that_uses_it(bad):
+    from demid.report.model_criticism import unreliable_surrogate_lines
+
+    material = _material(2)
+    material["pareto"] = {"error_of": "z", "minimise": "z", "max_error": 0.05}
+    spec = _spec(material)
+    level1 = {o: {"verdict": "does_not_predict" if o in bad else "adequate"} for o in ("y", "z")}
+    lines = unreliable_surrogate_lines({"level1": level1}, spec)
+    expected = []
+    for label, observables in (("Both", ["y", "z"]), ("First alone", ["y"])):
+        used = [o for o in observables if o in bad]
+        if used:
+            expected.append(f"⚠ Scenario *{label}* uses {', '.join(o.upper() + 'obs' for o in used)}, whose surrogate "
+                            "does not predict left-out runs (Q² < 0): its admissible set should not be used to decide "
+                            "admissibility.")
+    if "z" in bad:
+        expected.append("⚠ The Pareto front uses Zobs, whose surrogate does not predict left-out runs (Q² < 0): treat "
+                        "the front as indicative only.")
+    assert lines == expected
+
+
+def test_the_criticism_section_tables_the_named_causes_of_its_material_only(tmp_path):
+    from demid.report.model_criticism import criticism
+
+    material = _material(2)
+    _write(tmp_path, "criticism/m.json", {"level1": {"z": {"verdict": "defect", "messages": ["z: a drift."]},
+                                                     "y": {"verdict": "adequate", "messages": []}}})
+    findings = pd.DataFrame({"material": ["m", "m", "other"], "response": ["z", "y", "z"],
+                             "cause": ["drift", "none", "missing_term;outlier"], "detail": ["run order", "", "x"],
+                             "p_value": [0.0123, 1.0, 0.5], "loo_rmse_baseline": [2.5, 1.0, 1.0],
+                             "loo_rmse_extended": [1.25, 1.0, 1.0], "delta_aicc": [-7.5, 0.0, 0.0]})
+    _write(tmp_path, "tables/criticism.csv", findings)
+    text = _text(criticism(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m"))
+    lines = [c.strip() for c in text.split("\n") if c.strip()]
+    assert "Yobs: nothing found by the catalogue tests." in lines and "Zobs: Zobs: a drift." in lines
+    assert text.index("Yobs: nothing found") < text.index("Zobs: Zobs: a drift.")  # the config's order
+    assert "drift" in lines and "run order" in lines and "2.5" in lines and "1.25" in lines and "-7.5" in lines
+    assert "missing term, outlier" not in text and "none" not in lines
