@@ -42,6 +42,14 @@ def _text(parts) -> str:
     return html.unescape(re.sub(r"<[^>]+>", "", "".join(p.data for p in parts)))
 
 
+def _cells(parts) -> list[list[str]]:
+    """The body rows of the tables in rendered report parts, each a list of cell texts."""
+    page = "".join(p.data for p in parts)
+    rows = re.findall(r"<tr>(.*?)</tr>", page, re.S)
+    return [[html.unescape(re.sub(r"<[^>]+>", "", c)).strip() for c in re.findall(r"<td[^>]*>(.*?)</td>", r, re.S)]
+            for r in rows if "<td" in r]
+
+
 def _write(root, rel: str, content) -> None:
     path = root / rel
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -81,9 +89,14 @@ def test_the_recommended_point_is_quoted_with_its_intervals_and_the_factors_it_d
                      "plausible_lower": lo, "plausible_upper": hi, "verdict": verdicts[i], "reason": "why"})
     implausibility = float(rng.uniform(0.05, 0.99))
     _write(tmp_path, "tables/verdicts.csv", pd.DataFrame(rows))
-    _write(tmp_path, "tables/advice.csv", StudyAdvice([]).to_frame())
+    advice = [("widen", "Widen the upper end.", seed % 2 == 0), ("add_observable", "Measure a new kind.", seed % 2 == 1),
+              ("measurement_order", "Measure Y first.", False)]
+    _write(tmp_path, "tables/advice.csv", pd.DataFrame([{"material": "m", "kind": k, "factor": "", "bound": "",
+                                                         "observable": "", "text": t, "decision": d}
+                                                        for k, t, d in advice]))
     _write(tmp_path, "uncertainty/m.json", {"recommended": {"scenario": "s", "plausible": True, "point": point,
-                                                            "implausibility": implausibility}})
+                                                            "implausibility": implausibility},
+                                            "uninformative": {"z": f"its band covers {seed} of its range"}})
     combination = f"a band along {names[-1]} {seed}."  # the combinations step's text, keys written as labels
     _write(tmp_path, "combinations/m.json", {"sets": [{"scenario": "t", "set": "strict", "text": combination}]})
     text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
@@ -118,6 +131,11 @@ def test_the_recommended_point_is_quoted_with_its_intervals_and_the_factors_it_d
     others = [f"{LABELS[i]} {verdicts[i]}" for i in range(d) if verdicts[i] != "identified"]
     assert (f"{material_label(material)}, with Both: identified: {', '.join(identified) or 'none'}; not identified: "
             f"{', '.join(others) or 'none'}.") in text
+    decision, also = ("Widen the upper end.", "Measure a new kind.")[:: 1 if seed % 2 == 0 else -1]
+    lines = text.split("\n")
+    assert f"Next step: {decision}" in text and lines[lines.index("Next step:") + 2] == decision
+    assert lines[lines.index("Also:") + 2] == also and "Measure Y first." not in text
+    assert f"Zobs is an uninformative observable: its band covers {seed} of its range." in text
     empty = "With every observable of Both no point of the search range is admissible, so there are no admissible " \
             "intervals."
     assert (empty in text) == (seed == 3)
@@ -157,9 +175,13 @@ def test_a_curved_band_prints_each_point_as_along_to_mid_with_lowest_and_highest
     curve = {"along": "a", "across": spec.factor_names[-1], "along_actual": list(along), "lower": list(lower),
              "mid": list(mid), "upper": list(upper)}
     entries = [{"scenario": "t", "set": "plausible", "identified": True, "text": "a curved band.", "curve": curve},
-               {"scenario": "s", "set": "strict", "identified": False, "text": "nothing narrow.", "curve": curve}]
-    first, second = combination_lines({"sets": entries}, spec)
-    assert second == "*Both*, strict set: nothing narrow."
+               {"scenario": "s", "set": "strict", "identified": False, "text": "a curved band.", "curve": curve},
+               {"scenario": "s", "set": "plausible", "identified": True, "text": "a straight band.", "curve": curve},
+               {"scenario": "gone", "set": "strict", "identified": True, "text": "a curved band."}]
+    first, second, third, fourth = combination_lines({"sets": entries}, spec)
+    # the curve only where the set is identified and its text tells of a curved band
+    assert (second, third, fourth) == ("*Both*, strict set: a curved band.", "*Both*, plausible set: a straight band.",
+                                       "*gone*, strict set: a curved band.")
     head = f"*First alone*, plausible set: a curved band. Curve (Alpha → {LABELS[len(spec.factor_names) - 1]} mid " \
            "[lowest, highest]): "
     assert first.startswith(head) and first.endswith(".")
@@ -322,9 +344,17 @@ def test_the_next_wave_section_gives_the_reason_the_advice_and_each_run_in_label
     _write(tmp_path, "tables/advice.csv", pd.DataFrame([{"material": "m", "kind": "next_runs", "factor": "",
                                                          "bound": "", "observable": "", "text": "Run the 2 runs.",
                                                          "decision": True}]))
-    text = _text(next_wave(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m"))
+    parts = next_wave(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m")
+    text = _text(parts)
     assert "What to simulate next" in text and "The set is wide in Beta. Run the 2 runs." in text
-    assert all(label in text for label in LABELS[:3]) and "decide" in text and "cover" in text and "other" not in text
+    assert all(label in text for label in LABELS[:3]) and "other" not in text
+    table = _cells(parts)
+    assert len(table) == 2
+    for cells, (_, run) in zip(table, runs[runs["material"] == "m"].iterrows()):
+        assert int(cells[0]) == run["proposal"] and cells[-1] == run["purpose"]
+        for cell, f in zip(cells[1:4], "abc"):  # each coordinate to the precision of its factor's range
+            span = material["factors"][f]["upper"] - material["factors"][f]["lower"]
+            assert abs(float(cell) - run[f]) <= 1e-3 * span
 
 
 @pytest.mark.parametrize("seed", range(3))
@@ -344,14 +374,16 @@ def test_the_waves_table_has_each_waves_counts_q2_and_intervals(tmp_path, seed):
                      "surrogate": "quadratic", "q2": {"y": float(rng.uniform(0.3, 0.99)), "z": float(rng.uniform(-1, 1))},
                      "plausible_fraction_of_omega_pct": float(rng.uniform(0.1, 30)), "plausible": plausible})
     _write(tmp_path, "waves/summary_m.json", {"waves": rows})
-    text = _text(waves(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m"))
-    assert (f"demid simulated {simulated[-1]} runs in {len(rows)} waves ({failed[-1]} failed)") in text
-    cells = [c.strip() for c in re.split(r"\n+", text) if c.strip()]  # the table rendered: a cell per line
-    for row in rows:
-        q2 = ", ".join(f"{o.upper()}obs {q:.2f}" for o, q in row["q2"].items())
-        assert q2 in cells, q2
-        for f, (lo, hi) in row["plausible"].items():
-            assert (f"{lo:.4g}–{hi:.4g}" if lo is not None else "empty") in cells
+    parts = waves(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m")
+    assert (f"demid simulated {simulated[-1]} runs in {len(rows)} waves ({failed[-1]} failed)") in _text(parts)
+    table = _cells(parts)
+    assert len(table) == len(rows)
+    for row, cells in zip(rows, table):
+        counts = [row["wave"], row["simulated"], row["failed"], row["analysed"]]
+        assert [int(c) for c in cells[:4]] == counts and cells[4] == "quadratic"
+        assert cells[5] == ", ".join(f"{o.upper()}obs {q:.2f}" for o, q in row["q2"].items())
+        assert float(cells[6]) == pytest.approx(row["plausible_fraction_of_omega_pct"], rel=5e-3)
+        assert cells[7:] == [f"{lo:.4g}–{hi:.4g}" if lo is not None else "empty" for lo, hi in row["plausible"].values()]
 
 
 def test_level1_lines_give_each_response_its_verdict_or_its_findings_in_config_order():
