@@ -60,7 +60,10 @@ def test_an_outlier_finding_quotes_its_run_values_and_gain(seed, before, after):
     observed, predicted = float(rng.normal(30, 5)), float(rng.normal(30, 5))
     h = Hypothesis("outlier", k, statistic=float(rng.normal(0, 4)))
     info = {"observed": observed, "predicted_without": predicted}
-    text = finding_message(_data(runs), h, info, before, after, 8, [], None)
+    simulated = seed % 2 == 1  # demid's own runs: no transcription error to blame
+    text = finding_message(_data(runs, simulated=simulated), h, info, before, after, 8, [], None)
+    assert ("demid simulated that run itself" in text) == simulated
+    assert ("a transcription or export error is the usual cause" in text) == (not simulated)
     found = re.search(r"run (\S+) does not fit the other runs \(observed (\S+), the other runs predict (\S+), "
                       r"externally studentised residual (\S+)\);", text)
     assert found, text
@@ -246,3 +249,14 @@ def test_the_worst_observables_multiple_of_its_tolerance_is_quoted_to_two_digits
         assert m and float(m.group(1)) == pytest.approx(ratio, rel=0.03)
     else:
         assert text.endswith("(a negligible fraction of its tolerance of 2.00 %)")
+
+
+@pytest.mark.parametrize("term, factors, words", [
+    ((3, 0), ("e", "mu"), "curvature along e"), ((0, 0, 3), ("e", "mu", "k"), "curvature along k"),
+    ((1, 1, 1), ("e", "mu", "k"), "a three-factor interaction of e, mu and k"),
+    ((2, 0, 1), ("e", "mu", "k"), "a change of the e curvature with k"),
+    ((0, 1, 2, 0), ("e", "mu", "k", "g"), "a change of the k curvature with mu")])
+def test_a_missing_term_is_described_by_the_factors_it_holds(term, factors, words):
+    h = Hypothesis("missing_term", SimpleNamespace(terms=[term]), aliases=["T"])
+    text = finding_message(_data([1, 2, 3], factors), h, {}, 1.0, 1.002, 3, [], None)
+    assert text == f"angle: the quadratic misses {words} (term T); adding it leaves the leave-one-out error unchanged."
