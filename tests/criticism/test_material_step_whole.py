@@ -96,3 +96,53 @@ def test_an_extensions_effect_is_each_scenarios_fraction_and_widths_before_and_a
         assert [row["width_before"][f] for f in "ab"] == pytest.approx(width_before, abs=0.03)
         assert [row["width_after"][f] for f in "ab"] == pytest.approx(width_after, abs=0.03)
     assert _identifiability_effect(surrogates, _plane("z", planes["z"][0]), "z", spec, 51)[0]["scenario"] == "both"
+
+
+def _four_factor_material(rng, offset):
+    """y a plane over four factors of different ranges, its target met at the box's centre, and a reference point
+    ``offset`` (units of the ranges) outside the band along the plane's gradient."""
+    lower, upper = np.array([0.0, 1.0, -2.0, 10.0]), np.array([1.0, 3.0, 2.0, 20.0])
+    coef = np.concatenate([[rng.uniform(1, 2)], rng.uniform(0.5, 1.5, 4) * rng.choice([-1, 1], 4) / (upper - lower)])
+    centre = (lower + upper) / 2
+    target = float(coef[0] + coef[1:] @ centre)
+    target = target if abs(target) > 0.5 else target + 2.0 * np.sign(coef[0])
+    coef[0] += target - (coef[0] + coef[1:] @ centre)
+    tol = 0.1
+    g = coef[1:] * (upper - lower)  # the plane's gradient per unit of each range
+    step = (tol * abs(target) / np.linalg.norm(g) + offset) * g / np.linalg.norm(g)
+    reference = dict(zip("abcd", centre + step * (upper - lower)))
+    names = "abcd"
+    spec = MaterialSpec.from_material("m", {
+        "design": {"type": "ccd"}, "factors": {f: {"lower": lo, "upper": hi} for f, lo, hi in zip(names, lower, upper)},
+        "responses": {"y": {"target": target}}, "reference_point": {f: float(v) for f, v in reference.items()},
+        "scenarios": {"y": {"observables": ["y"], "tolerance": tol}}})
+    terms = [(0, 0, 0, 0)] + [tuple(int(i == k) for i in range(4)) for k in range(4)]
+    sur = Surrogate("y", list(names), terms, coef, np.zeros((5, 5)), 0.0, 20)
+    return {"y": sur}, spec, coef, target, lower, upper
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_four_factors_reference_distance_and_fractions_on_sampled_sets(seed):
+    from demid.criticism.material import _effect_points
+
+    rng = np.random.default_rng(seed)
+    offset = 0.1 + 0.1 * seed
+    surrogates, spec, coef, target, lower, upper = _four_factor_material(rng, offset)
+    n = _effect_points(10 ** 6, 4)  # what the criticism step evaluates a 4-factor set on
+    (row,) = reference_point_position(surrogates, spec, n)
+    assert not row["inside"] and row["nearest_admissible"] is not None
+    near = np.array([row["nearest_admissible"][f] for f in "abcd"])
+    assert abs(coef[0] + coef[1:] @ near - target) <= 0.1 * abs(target) + 1e-9  # an admissible point
+    ref = np.array([spec.reference_point[f] for f in "abcd"])
+    assert row["distance_pct_of_range"] == pytest.approx(100 * np.linalg.norm((near - ref) / (upper - lower)))
+    # no closer than the band itself, and within a sampled set's spacing of it
+    assert 100 * offset - 1e-6 <= row["distance_pct_of_range"] <= 100 * offset + 6.0
+    # an extension that tilts the plane: the fraction before and after against 100 000 random points
+    tilted = coef * np.array([1.0, 0.5, 0.5, 2.0, 1.0])
+    tilted[0] += target - (tilted[0] + tilted[1:] @ ((lower + upper) / 2))
+    extended = Surrogate("y", list("abcd"), surrogates["y"].terms, tilted, np.zeros((5, 5)), 0.0, 20)
+    (effect,) = _identifiability_effect(surrogates, extended, "y", spec, n)
+    points = lower + rng.random((100_000, 4)) * (upper - lower)
+    for key, c in (("fraction_pct_before", coef), ("fraction_pct_after", tilted)):
+        share = 100 * np.mean(np.abs(c[0] + points @ c[1:] - target) <= 0.1 * abs(target))
+        assert effect[key] == pytest.approx(share, abs=1.5)

@@ -78,6 +78,9 @@ def test_the_recommended_point_is_quoted_with_its_intervals_and_the_factors_it_d
     spec = _spec(material)
     names = spec.factor_names
     verdicts = [VERDICTS[int(k)] for k in rng.integers(0, 4, d)]
+    if seed >= 4:  # several factors not pinned down, one bounded among them
+        verdicts = ["unresolved"] * d
+        verdicts[1] = "bounded"
     rows, point = [], {}
     for i, f in enumerate(names):
         upper = 1.0 + i
@@ -97,7 +100,7 @@ def test_the_recommended_point_is_quoted_with_its_intervals_and_the_factors_it_d
     _write(tmp_path, "uncertainty/m.json", {"recommended": {"scenario": "s", "plausible": True, "point": point,
                                                             "implausibility": implausibility},
                                             "uninformative": {"z": f"its band covers {seed} of its range"}})
-    combination = f"a band along {names[-1]} {seed}."  # the combinations step's text, keys written as labels
+    combination = f"a band along {names[-1]} {seed}."  # the combinations step's own text, shown as written
     _write(tmp_path, "combinations/m.json", {"sets": [{"scenario": "t", "set": "strict", "text": combination}]})
     text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
     assert f"First alone, strict set: a band along {names[-1]} {seed}." in text
@@ -129,7 +132,7 @@ def test_the_recommended_point_is_quoted_with_its_intervals_and_the_factors_it_d
     # the answer line: scenario "s" has the most observables
     identified = [LABELS[i] for i in range(d) if verdicts[i] == "identified"]
     others = [f"{LABELS[i]} {verdicts[i]}" for i in range(d) if verdicts[i] != "identified"]
-    assert (f"{material_label(material)}, with Both: identified: {', '.join(identified) or 'none'}; not identified: "
+    assert (f"{spec.label}, with Both: identified: {', '.join(identified) or 'none'}; not identified: "
             f"{', '.join(others) or 'none'}.") in text
     decision, also = ("Widen the upper end.", "Measure a new kind.")[:: 1 if seed % 2 == 0 else -1]
     lines = text.split("\n")
@@ -139,10 +142,6 @@ def test_the_recommended_point_is_quoted_with_its_intervals_and_the_factors_it_d
     empty = "With every observable of Both no point of the search range is admissible, so there are no admissible " \
             "intervals."
     assert (empty in text) == (seed == 3)
-
-
-def material_label(material: dict) -> str:
-    return _spec(material).label
 
 
 def test_with_no_plausible_point_the_summary_names_the_closest_point_and_theobservables(tmp_path):
