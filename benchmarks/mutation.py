@@ -2379,6 +2379,13 @@ EQUIVALENT: dict[str, str] = {
     "np.ptp(data.runs.astype(float))#0":
         "np.ptp of a float array is an np.float64 of the same value: the span is the same number and "
         "its '+.3g' text the same",
+    "demid/report/plausible.py::uncertainty::0 => -1#0":
+        "the first scenario's last row instead of its first: robust_identifiability.csv repeats a scenario's strict "
+        "and plausible fractions on each of its factor rows, so the change quoted is the same",
+    "demid/published_values.py::_schema_error::err.validator_value == 'array' and err.schema.get('maxItems') == 2 "
+    "=> err.schema.get('maxItems') == 2#0":
+        "the one schema node with maxItems 2 (an interval) has type: array, so a type error there always has "
+        "validator_value 'array'",
     "demid/report/columns.py::columns_table::next_wave or {} => next_wave#0":
         "_next_wave_rows returns no rows for any falsy argument (``if not next_wave``): None and {} give the same "
         "dictionary",
