@@ -435,3 +435,40 @@ def test_the_criticism_section_tables_the_named_causes_of_its_material_only(tmp_
     assert text.index("Yobs: nothing found") < text.index("Zobs: Zobs: a drift.")  # the config's order
     assert "drift" in lines and "run order" in lines and "2.5" in lines and "1.25" in lines and "-7.5" in lines
     assert "missing term, outlier" not in text and "none" not in lines
+
+
+def test_the_criticism_section_gives_level2_with_its_advice_and_the_run_order_line(tmp_path):
+    from demid.report.model_criticism import criticism
+
+    material = _material(2)
+    run_order = {"drift_tested": False, "message": "the runs carry no run order."}
+    level2 = {"finding": "z misses its target.", "tolerance": 0.02, "best_errors": {"y": 0.01}, "best_max_error": 0.01,
+              "feasible": True}
+    info = {"level1": {"y": {"verdict": "adequate", "messages": []}}, "run_order": run_order, "level2": level2}
+    _write(tmp_path, "criticism/m.json", info)
+    kinds = [("widen", "Widen b."), ("recalibrate", "Refit y."), ("next_runs", "Run more."), ("stop", "Stop.")]
+    _write(tmp_path, "tables/advice.csv", pd.DataFrame([{"material": "m", "kind": k, "factor": "", "bound": "",
+                                                         "observable": "", "text": t, "decision": False}
+                                                        for k, t in kinds]))
+    text = _text(criticism(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m"))
+    assert "Run order: the runs carry no run order." in text
+    # level 2's finding (labelled), then the advice level 2 reads (widen, recalibrate) in the table's order, as the
+    # advice table words it
+    assert "Level 2 — calibrated simulation against the experiment. Zobs misses its target. Widen b. Refit y." in text
+    assert "Run more." not in text and "Stop." not in text
+    assert "Run order: the runs carry no run order." in criticism_lines(info, _spec(material))
+
+
+@pytest.mark.parametrize("x", [0.0, 4.9e-5, 5e-5, 0.000123, -0.0123, 0.0999, 0.09999, 0.1, -0.1, 0.4567, 9.99, 10.5])
+def test_a_percentage_has_two_decimals_below_ten_percent_and_one_above(x):
+    from demid.criticism.messages import percent_text
+    from demid.precision import FAR_RATIO
+    from demid.precision import percent_text as policy
+
+    text = percent_text(x)
+    if abs(x) < 5e-5 or abs(x) > FAR_RATIO:
+        assert text == policy(x)
+        return
+    number = text.removesuffix(" %")
+    places = 2 if abs(x) < 0.1 else 1
+    assert _decimals(number) == places and abs(_number(number) - 100 * x) <= 0.5 * 10 ** -places + 1e-12
