@@ -472,3 +472,24 @@ def test_a_percentage_has_two_decimals_below_ten_percent_and_one_above(x):
     number = text.removesuffix(" %")
     places = 2 if abs(x) < 0.1 else 1
     assert _decimals(number) == places and abs(_number(number) - 100 * x) <= 0.5 * 10 ** -places + 1e-12
+
+
+@pytest.mark.parametrize("corner", [False, True])
+def test_a_recommended_point_beyond_the_design_runs_is_said_to_be_outside_them(tmp_path, corner):
+    from demid.report.summary import summary
+
+    material = _material(2)
+    coded = np.array([[-1, -1], [1, -1], [-1, 1], [1, 1], [-1.41421, 0], [1.41421, 0], [0, -1.41421], [0, 1.41421],
+                      [0, 0]])
+    runs = pd.DataFrame({"a": 0.5 + coded[:, 0] / 2.83, "b": 1.0 + coded[:, 1] / 1.415})  # inside [0, 1] x [0, 2]
+    (tmp_path / "validated").mkdir()
+    runs.to_parquet(tmp_path / "validated" / "m.parquet")
+    point = {"a": 0.97, "b": 1.95} if corner else {"a": 0.5, "b": 1.0}  # past the factorial corner, or the centre
+    rows = [{"material": "m", "scenario": "s", "factor": f, "strict_lower": 0.0, "strict_upper": hi,
+             "plausible_lower": 0.0, "plausible_upper": hi, "verdict": "bounded", "reason": "why"}
+            for f, hi in (("a", 1.0), ("b", 2.0))]
+    _write(tmp_path, "tables/verdicts.csv", pd.DataFrame(rows))
+    _write(tmp_path, "uncertainty/m.json", {"recommended": {"scenario": "s", "plausible": True, "point": point,
+                                                            "implausibility": 0.5}})
+    text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
+    assert ("outside the region the design runs cover" in text) == corner
