@@ -60,6 +60,7 @@ def test_the_reference_points_errors_inside_and_distance(seed):
     (c, t), tol = planes["y"], 0.1
     gap = abs(_predict(c, point)[0] - t) - tol * abs(t)
     slope = np.hypot(c[1] * 2.0, c[2] * 2.0)  # the plane's gradient per unit of each range
+    # the band's nearest point: a step of gap / |g| along the gradient in units of the ranges (both 2 wide)
     foot = point[0] - np.sign(_predict(c, point)[0] - t) * gap / slope ** 2 * np.array([c[1], c[2]]) * 4.0
     if gap > 0 and np.all((foot >= LOWER) & (foot <= UPPER)):
         assert rows["y_alone"]["distance_pct_of_range"] == pytest.approx(100 * gap / slope, rel=1e-3)
