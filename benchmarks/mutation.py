@@ -1578,7 +1578,14 @@ test_four_factors_reference_distance_and_fractions_on_sampled_sets, a plane over
 distance against the band's and the fractions against random points); the summary's list of unresolved factors
 without its last one (killed: two to four unresolved factors); columns_table's ``next_wave or {}``, the uncertainty
 section's first scenario read from its last row and the schema error's array test (equivalent, listed).  After:
-3 of 3 killed (``--ids``).
+3 of 3 killed (``--ids``).  Seed 44 on the same rows, drawn after every test above was committed and before any was
+written against it: **17 of 24 killed, 70.8 %** as run (two then read as equivalent: 17/22 = 77.3 %).  Survivors:
+the outlier's int(h.detail) and the ranking's float() of a gain (equivalent, listed); the residual figure's title
+(criticize_material without its default title: left, the figure's text is not read by a fast test); the summary's
+"How to read it" lead, the uncertainty section's "Strict vs plausible" lead, the criticism section's figures folder
+and the schema error's "[lower, upper]" hint on a list that is no interval (killed after, by checks added to the
+summary, uncertainty and criticism tests and test_a_list_where_a_list_is_due_asks_for_lower_and_upper_only_for_an_
+interval).
 """
 
 from __future__ import annotations
@@ -2394,6 +2401,11 @@ EQUIVALENT: dict[str, str] = {
     "=> err.schema.get('maxItems') == 2#0":
         "the one schema node with maxItems 2 (an interval) has type: array, so a type error there always has "
         "validator_value 'array'",
+    "demid/criticism/messages.py::finding_message::int(h.detail) => h.detail#0":
+        "the catalogue builds an outlier's detail as a Python int (catalogue.py: Hypothesis(\"outlier\", int(...)))",
+    "demid/report/plausible.py::ranking_display::float(ranking.loc[i, 'information_gain_bits']) => "
+    "ranking.loc[i, 'information_gain_bits']#0":
+        "a cell of a float column is an np.float64, a float of the same value: value_text gives the same text",
     "demid/report/columns.py::columns_table::next_wave or {} => next_wave#0":
         "_next_wave_rows returns no rows for any falsy argument (``if not next_wave``): None and {} give the same "
         "dictionary",
@@ -4301,7 +4313,7 @@ HELD_OUT_SEED = 865_173  # the next draw; 702_119's, 781_203's, 864_091's, 927_4
 #: draw's survivors were read and tested), the second and third held-out draws (704_913, 3 per module; 902_611, 1)
 #: were read and tested, and so were the fourth round's draws (seeds 21-22 with 4 per module, 23 with 2, 24 with 2,
 #: 25 with 1).
-SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3", "864091:1", "36:3", "37:3", "927443:1", "38:3", "39:3", "415867:1", "40:3", "41:3", "143881:1", "42:3", "43:3"]
+SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3", "864091:1", "36:3", "37:3", "927443:1", "38:3", "39:3", "415867:1", "40:3", "41:3", "143881:1", "42:3", "43:3", "44:3"]
 
 
 def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:

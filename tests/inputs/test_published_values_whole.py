@@ -116,3 +116,10 @@ def test_a_pareto_entry_needs_a_front_in_the_config():
     materials = {"m": {**MATERIALS["m"], "pareto": None}}
     with pytest.raises(InputError, match=r"key pareto\.m: the config computes no Pareto front for m"):
         check_published_values({"pareto": {"m": {"max_error": 0.1, "intervals": {}}}}, materials, "pub.yaml")
+
+
+def test_a_list_where_a_list_is_due_asks_for_lower_and_upper_only_for_an_interval():
+    assert _fails({"intervals": {"m": {"s": {"a": 0.5}}}}).endswith("key intervals.m.s.a: 0.5 should be a list, "
+                                                                    "[lower, upper]")
+    assert _fails({"contractions": 5}).endswith("key contractions: 5 should be a list")
+    assert _fails({"scenario_sets": {"m": {"s": {"unresolved": "a"}}}}).endswith("'a' should be a list")

@@ -103,6 +103,7 @@ def test_the_recommended_point_is_quoted_with_its_intervals_and_the_factors_it_d
     combination = f"a band along {names[-1]} {seed}."  # the combinations step's own text, shown as written
     _write(tmp_path, "combinations/m.json", {"sets": [{"scenario": "t", "set": "strict", "text": combination}]})
     text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
+    assert "How to read it. Per factor and observable scenario the plausible interval is judged" in text
     assert f"First alone, strict set: a band along {names[-1]} {seed}." in text
     found = re.search(r"Recommended parameter set \(the point of the plausible set of Both with the largest margin "
                       r"to every band, implausibility (\S+)\): (.+?)\.(?: |$)", text, re.M)
@@ -329,6 +330,7 @@ def test_the_uncertainty_section_quotes_the_change_from_first_to_last_scenario_a
     assert ("targets reachable" in text) == (not all(reachable))
     assert "not information." in text or "beyond the best set without it." in text
     assert walk in text and "Yobs" in text and "a note on Yobs" in text
+    assert "Strict vs plausible admissible sets. x is plausible when" in text
 
 
 # --------------------------------------------------------------------------- the simulation loop
@@ -457,6 +459,11 @@ def test_the_criticism_section_gives_level2_with_its_advice_and_the_run_order_li
     assert "Level 2 — calibrated simulation against the experiment. Zobs misses its target. Widen b. Refit y." in text
     assert "Run more." not in text and "Stop." not in text
     assert "Run order: the runs carry no run order." in criticism_lines(info, _spec(material))
+    assert "missing figure residuals_m.png" in text
+    (tmp_path / "figures").mkdir()
+    (tmp_path / "figures" / "residuals_m.png").write_bytes(b"\x89PNG\r\n\x1a\n")  # the figure, once drawn
+    drawn = "".join(p.data for p in criticism(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m"))
+    assert "missing figure" not in drawn and "<img" in drawn
 
 
 @pytest.mark.parametrize("x", [0.0, 4.9e-5, 5e-5, 0.000123, -0.0123, 0.0999, 0.09999, 0.1, -0.1, 0.4567, 9.99, 10.5])
