@@ -10,6 +10,10 @@ the observed value; unequal scatter's factor without 1 / ratio when it shrinks; 
 error, not against its own tolerance; an extension's fraction after read from the set before; the summary's "wide"
 list only for unresolved factors; the data dictionary's at_bound share without the factor 100; the reference point
 judged within/outside against the shared tolerance; a reference point's error printed without its sign.
+
+After the whole-output tests (tests/criticism/test_finding_sentences_whole.py, test_material_step_whole.py,
+tests/report/test_report_sentences_whole.py, test_columns_whole.py, tests/inputs/test_published_values_whole.py):
+16 of 16 killed.
 """
 from hand_mutants import HandMutant
 
