@@ -1,7 +1,10 @@
 """Plausible developer bugs in the input and story modules (tables, printed values, designs, the sentences a
 user reads), each written by reading the module, before any test was written against it.
 
-First run: (not yet run)
+First run (on 410120f, before any test was written against these mutants): 14 of 16 killed, 87.5 %.  Survivors:
+recommended point_on_edge_text's hull judged in actual units (the existing tests' hulls were boxes, which a
+per-factor monotone map keeps boxes); design_inference _levels' median of a level printed two ways taken as the mean
+(no test had a level printed two ways by three or more runs).
 """
 import sys
 from pathlib import Path
