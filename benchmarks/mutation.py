@@ -2035,7 +2035,8 @@ TABLE: dict[str, dict] = {
                   "tests/inputs/test_read_table_whole.py", "tests/inputs/test_targets_whole.py",
                   "tests/inputs/test_check_header_whole.py", "tests/inputs/test_design_inference.py",
                   "tests/inputs/test_design_generation.py", "tests/inputs/test_run_numbers_whole.py",
-                  "tests/inputs/test_read_printed_whole.py", "-knot readme"],
+                  "tests/inputs/test_read_printed_whole.py", "tests/inputs/test_targets_sign_symmetry_whole.py",
+                  "-knot readme"],
     },
     # parse_number, infer_coding and check_design, once in data.py
     "demid/csv_cells.py": {
