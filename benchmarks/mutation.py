@@ -2245,7 +2245,8 @@ TABLE: dict[str, dict] = {
                   "tests/test_reported_boundaries.py::test_level_coding_recovers_the_centre_and_unit_of_a_design_with_or_without_its_centre_run",
                   "tests/inputs/test_design_whole.py", "tests/inputs/test_design_check_coding_whole.py",
                   "tests/inputs/test_level_coding_axial_whole.py", "tests/inputs/test_level_coding_far_from_zero_whole.py",
-                  "tests/inputs/test_design_check_messages_whole.py", "tests/inputs/test_inputs_edges_whole.py"],
+                  "tests/inputs/test_design_check_messages_whole.py", "tests/inputs/test_inputs_edges_whole.py",
+                  "tests/inputs/test_design_points_missing_whole.py"],
     },
     "demid/criticism/discrimination.py": {
         "functions": None,
