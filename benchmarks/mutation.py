@@ -2154,7 +2154,8 @@ TABLE: dict[str, dict] = {
     "demid/story/extensions.py": {
         "functions": None,
         "tests": ["tests/story/test_model_extensions.py", "tests/story/test_extension_sentence_properties.py",
-                  "tests/story/test_model_extensions_whole.py"],
+                  "tests/story/test_model_extensions_whole.py",
+                  "tests/story/test_extension_no_added_factor_whole.py"],
     },
     "demid/blocks.py": {
         "functions": None,
@@ -2320,6 +2321,9 @@ EQUIVALENT: dict[str, str] = {
         "at exactly 256 runs the pure error is summed per design from each replicate group's mean instead of by the "
         "batch's comparison of every pair of runs: the same groups, the same sums (to round-off) and the same "
         "degrees of freedom (n minus the number of groups either way)",
+    "demid/story/recommended.py::point_on_edge_text::0 => -1#1":
+        "the point's search coordinates from the last instead of the first row of a one-row array (the one point "
+        "built just above): the same row",
     "demid/story/verdicts.py::verdict_frame::0 => -1#5":
         "the plausible set's fraction from the last instead of the first row of a scenario and factor: "
         "robust_identifiability.csv holds one row per material, scenario and factor, and verdict_frame is given one "
