@@ -2321,6 +2321,9 @@ EQUIVALENT: dict[str, str] = {
         "at exactly 256 runs the pure error is summed per design from each replicate group's mean instead of by the "
         "batch's comparison of every pair of runs: the same groups, the same sums (to round-off) and the same "
         "degrees of freedom (n minus the number of groups either way)",
+    "demid/design_check.py::_level_coding::1 + 1e-09 => 1#0":
+        "no nominal level's size lies in (1, 1 + 1e-9]: nominal_levels gives -1, 0, 1 alone for an axial distance "
+        "within 1e-9 of 1 and +-alpha otherwise, so a level beyond +-1 by more than 1e-9 is beyond it at all",
     "demid/story/recommended.py::point_on_edge_text::0 => -1#1":
         "the point's search coordinates from the last instead of the first row of a one-row array (the one point "
         "built just above): the same row",
