@@ -5,6 +5,9 @@ First run (on 410120f, before any test was written against these mutants): 14 of
 recommended point_on_edge_text's hull judged in actual units (the existing tests' hulls were boxes, which a
 per-factor monotone map keeps boxes); design_inference _levels' median of a level printed two ways taken as the mean
 (no test had a level printed two ways by three or more runs).
+After: 16 of 16 killed (tests/story/test_point_outside_runs_whole.py: a star of runs whose hull is no box, log and
+linear ranges; tests/inputs/test_level_printed_two_ways_whole.py: one factorial run off its level by a last-digit
+slip leaves every inferred axial distance).
 """
 import sys
 from pathlib import Path
