@@ -1834,6 +1834,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_level2_own_tolerance.py",
                   "tests/criticism/test_spread_starts_limits_whole.py", "tests/criticism/test_bottleneck_slack_whole.py",
                   "tests/criticism/test_level2_minimax_best_node_whole.py",
+                  "tests/criticism/test_level2_minimax_grid_floor_whole.py",
                   "tests/test_reported_boundaries.py::test_spread_starts_takes_the_best_ranked_node_first_then_the_next_far_enough_ones",
                   # the hidden bias at 6 tolerances repeats the 4-tolerance case at its cost; the uniqueness it
                   # adds (the biased observable) is checked against linear programmes in test_level2_whole.py
@@ -1847,7 +1848,8 @@ TABLE: dict[str, dict] = {
                                   "tests/criticism/test_level1_frame_runs_whole.py",
                                   "tests/criticism/test_extensions_accumulate_whole.py",
                                   "tests/criticism/test_one_run_whole.py", "tests/criticism/test_one_run_spare_runs_whole.py",
-                                  "tests/criticism/test_aliasing_first_best_whole.py"],
+                                  "tests/criticism/test_aliasing_first_best_whole.py",
+                                  "tests/criticism/test_one_more_run_units_whole.py"],
     },
     "demid/criticism/extensions.py": {
         "functions": None,
