@@ -1858,7 +1858,8 @@ TABLE: dict[str, dict] = {
                                   "tests/criticism/test_scatter_fitted_blocks_whole.py",
                                   "tests/criticism/test_extensions_accumulate_whole.py",
                                   "tests/criticism/test_extensions_lambda_edge_whole.py",
-                                  "tests/criticism/test_level1_spare_runs_whole.py"],
+                                  "tests/criticism/test_level1_spare_runs_whole.py",
+                                  "tests/criticism/test_extensions_interval_closed_whole.py"],
     },
     "demid/criticism/naming.py": {
         "functions": None,
@@ -3005,6 +3006,21 @@ EQUIVALENT: dict[str, str] = {
     "data.y[i] - model.loo_errors[pos]#0":
         _NUMPY_FLOAT + " (an outlier's prediction by the other runs, from two float arrays: formatted with "
         "short_number and written to JSON through io.json_ready, as the observed value beside it)",
+    # --- criticism, the thirteenth round (seeds 42 and 43): models, catalogue, outliers, step_changes, level1,
+    # level2, searches, aliasing, extensions
+    "demid/criticism/level1.py::_finding::float(data.runs[int(h.detail)]) => data.runs[int(h.detail)]#0":
+        "runs_before compares the float array data.runs.astype(float) with one of its runs: the table's run column "
+        "holds integers below 2^53 (demid.data refuses others) or 1..n, and numpy compares a float64 array with an "
+        "integer scalar after converting it to float64 exactly as float() does",
+    "demid/criticism/level2.py::_best_point::np.max(np.abs(grid_err[i])) => np.min(np.abs(grid_err[i]))#0":
+        "the scale of the 'unmoved' threshold 1e-9 * max(1, |e|): an observable's largest and smallest |error| "
+        "over the grid differ by at most its spread, so the two thresholds differ by at most 1e-9 times the spread "
+        "itself, about 1e-18 |e| where the spread is near the threshold - a window 200 times narrower than the "
+        "round-off (2e-16 |e|) in which errors of that size, and so their spread, are computed",
+    "demid/criticism/level2.py::_level2_message::len(r.bias_candidates) > 1 => len(r.bias_candidates) >= 1#0":
+        "the elif follows 'biased_observable is not None', and bottleneck_analysis sets biased_observable exactly "
+        "when there is one candidate: the branch is reached with 0 or at least 2 candidates, where > 1 and >= 1 "
+        "agree",
     # --- criticism, the twelfth round (seeds 40 and 41): naming, slips, verdict, run_order, one_run,
     # discrimination, reach, edges
     "demid/criticism/run_order.py::standard_order_correlation::best >= 1.0 - 1e-12 => best > 1.0 - 1e-12#0":
