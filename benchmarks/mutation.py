@@ -3020,6 +3020,16 @@ EQUIVALENT: dict[str, str] = {
         "over the grid differ by at most its spread, so the two thresholds differ by at most 1e-9 times the spread "
         "itself, about 1e-18 |e| where the spread is near the threshold - a window 200 times narrower than the "
         "round-off (2e-16 |e|) in which errors of that size, and so their spread, are computed",
+    "demid/criticism/step_changes.py::step_direction_chunks::0 => -1#0":
+        "residualize(q, col[:, None])[:, 0] -> [:, -1]: the step column is passed as the one column of an (n, 1) "
+        "array, so the residual has one column, its first and its last",
+    "demid/criticism/step_changes.py::step_direction_chunks::np.linalg.norm(r) > 1e-06 * max(np.linalg.norm(col), "
+    "1e-300) => np.linalg.norm(r) >= 1e-06 * max(np.linalg.norm(col), 1e-300)#0":
+        "the two differ only where a change-point's residualised step column is 1e-6 of the column's norm to the "
+        "last bit: a step column the model explains (a block boundary) leaves round-off, about 1e-16 of it, and "
+        "one it does not explain leaves a share set by the runs' geometry, a tie with 1e-6 to the last bit no "
+        "table is built to reach; the column never vanishes (the first STEP_MIN_RUNS runs come before every "
+        "change-point), so 0 >= 1e-300 cannot arise either",
     "demid/criticism/level2.py::_level2_message::len(r.bias_candidates) > 1 => len(r.bias_candidates) >= 1#0":
         "the elif follows 'biased_observable is not None', and bottleneck_analysis sets biased_observable exactly "
         "when there is one candidate: the branch is reached with 0 or at least 2 candidates, where > 1 and >= 1 "
@@ -4227,7 +4237,7 @@ HELD_OUT_SEED = 865_173  # the next draw; 702_119's, 781_203's, 864_091's, 927_4
 #: draw's survivors were read and tested), the second and third held-out draws (704_913, 3 per module; 902_611, 1)
 #: were read and tested, and so were the fourth round's draws (seeds 21-22 with 4 per module, 23 with 2, 24 with 2,
 #: 25 with 1).
-SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3", "864091:1", "36:3", "37:3", "927443:1", "38:3", "39:3", "415867:1", "40:3", "41:3", "143881:1"]
+SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3", "864091:1", "36:3", "37:3", "927443:1", "38:3", "39:3", "415867:1", "40:3", "41:3", "143881:1", "42:3", "43:3"]
 
 
 def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:
