@@ -3030,6 +3030,10 @@ EQUIVALENT: dict[str, str] = {
         "one it does not explain leaves a share set by the runs' geometry, a tie with 1e-6 to the last bit no "
         "table is built to reach; the column never vanishes (the first STEP_MIN_RUNS runs come before every "
         "change-point), so 0 >= 1e-300 cannot arise either",
+    "demid/criticism/level2.py::_bounds_and_message::implausible and any((o in implausible for o in observables)) "
+    "=> any((o in implausible for o in observables))#0":
+        "implausible is a tuple (the default () or criticism.material's tuple of implausible_targets): when it is "
+        "empty, no observable is in it and any() is False too",
     "demid/criticism/level2.py::_level2_message::len(r.bias_candidates) > 1 => len(r.bias_candidates) >= 1#0":
         "the elif follows 'biased_observable is not None', and bottleneck_analysis sets biased_observable exactly "
         "when there is one candidate: the branch is reached with 0 or at least 2 candidates, where > 1 and >= 1 "
