@@ -6,8 +6,6 @@ direction already there)."""
 
 from __future__ import annotations
 
-import itertools
-
 import numpy as np
 import pytest
 
