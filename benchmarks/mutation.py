@@ -1920,7 +1920,8 @@ TABLE: dict[str, dict] = {
                   "tests/test_reported_numbers.py::test_measurement_order_quotes_the_gains_and_fractions_of_the_ranking",
                   "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_unreachable_targets.py",
                   "tests/uncertainty/test_ranking_stored_sets_whole.py",
-                  "tests/uncertainty/test_ranking_four_factors_whole.py", "tests/uncertainty/test_ranking_contraction_whole.py"],
+                  "tests/uncertainty/test_ranking_four_factors_whole.py", "tests/uncertainty/test_ranking_contraction_whole.py",
+                  "tests/uncertainty/test_ranking_hair_miss_whole.py"],
     },
     "demid/next_wave.py": {
         "functions": None,
