@@ -2315,6 +2315,8 @@ EQUIVALENT: dict[str, str] = {
     "demid/sampling/roots.py::Lines.cut::1 => 2#1":
         "the roots' reshape(n, -2) is reshape(n, -1): numpy (2.4.6 pinned) takes any negative size as the one "
         "unknown dimension, so the shape is the same for every input",
+    "demid/sampling/polish.py::_polish::sign > 0 => sign >= 0#1":
+        "sign runs over (1.0, -1.0) only: never 0, so sign >= 0 and sign > 0 pick the same span end",
     # --- the twelfth held-out draw's survivors, read after it was scored
     "demid/transcription/check.py::_located::float(misfit[c]) => misfit[c]#0":
         "Suspect.misfit is written nowhere (not in to_dict or to_json, no message reads it) and np.float64 is a "
