@@ -1946,7 +1946,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_confirming_runs.py::test_criticism_runs_outside_the_next_box_are_left_out_and_the_reason_says_so",
                   "tests/criticism/test_confirming_runs.py::test_with_a_next_box_the_criticism_chooses_its_runs_inside_it",
                   "tests/criticism/test_one_more_run_update_whole.py",
-                  "tests/test_next_wave_separating_count_whole.py"],
+                  "tests/test_next_wave_separating_count_whole.py",
+                  "tests/test_wave_design_count_far_runs_whole.py"],
     },
     "demid/boundary_runs.py": {
         "functions": None,
