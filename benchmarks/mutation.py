@@ -1922,7 +1922,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_uncertainty.py", "tests/criticism/test_unreachable_targets.py",
                   "tests/uncertainty/test_ranking_stored_sets_whole.py",
                   "tests/uncertainty/test_ranking_four_factors_whole.py", "tests/uncertainty/test_ranking_contraction_whole.py",
-                  "tests/uncertainty/test_ranking_hair_miss_whole.py"],
+                  "tests/uncertainty/test_ranking_hair_miss_whole.py",
+                  "tests/uncertainty/test_ranking_equal_fractions_whole.py"],
     },
     "demid/next_wave.py": {
         "functions": None,
