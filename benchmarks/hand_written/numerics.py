@@ -2,11 +2,15 @@
 the plausible and swept sets, the Pareto front, the canonical analysis, the principal axes of a set and the
 number formatting every sentence uses.  Each changes a number or a decision a user reads, for some valid input.
 
-First run (held out: written before any test aimed at them): see FIRST_RUN below.
+First run (held out: written before any test aimed at them; on the code and tests of 4ca6908, the suite as it stood
+before this catalogue plus one ranking test written for an earlier survivor): **16 of 16 killed (100 %)**, no
+survivor.  The suite already checked these outputs against independent computations (brute-force fronts, closed-form
+posteriors, rsm's canonical rules, written-out principal axes, shares read apart), so the catalogue stays as a
+regression check.
 """
 from hand_mutants import HandMutant
 
-FIRST_RUN = "not run yet"
+FIRST_RUN = "16 of 16 killed (100 %); no survivor"
 
 MUTANTS = [
     # --- uncertainty/ranking.py
