@@ -1600,7 +1600,7 @@ _EXACT_SET_TESTS = ["tests/sampling/test_exact_sets.py", "tests/sampling/test_ex
                     "tests/sampling/test_roots_boundaries_whole.py", "tests/sampling/test_quadrature_cap_whole.py",
                     "tests/sampling/test_solid_span_across_whole.py", "tests/sampling/test_solid_seed_whole.py",
                     "tests/sampling/test_exact_outer_axis_whole.py", "tests/sampling/test_zoom_min_whole.py",
-                    "tests/sampling/test_quadrature_units_whole.py"]
+                    "tests/sampling/test_quadrature_units_whole.py", "tests/sampling/test_roots_accuracy_whole.py"]
 # level 1's naming of causes (aliasing, extensions, naming, slips): the criticism's planted effects and its
 # confirming and deciding runs; the level-2, figure and 3-factor tests exercise other modules, the slowest
 # confirming-runs test repeats an outlier-or-slip case of the faster ones at four times their cost, and the two
