@@ -2321,6 +2321,10 @@ EQUIVALENT: dict[str, str] = {
         "unknown dimension, so the shape is the same for every input",
     "demid/sampling/polish.py::_polish::sign > 0 => sign >= 0#1":
         "sign runs over (1.0, -1.0) only: never 0, so sign >= 0 and sign > 0 pick the same span end",
+    "demid/uncertainty/recommended.py::recommended_point::1 => 2#0":
+        "contains(points[best:best + 2])[0] is contains(points[best:best + 1])[0]: the membership test is point by "
+        "point (implausibility takes each point's own predictions and half-widths), so a second point changes "
+        "nothing in the first one's answer",
     "demid/canonical.py::_floats::float(v) => v#0":
         "the items of np.asarray(values, dtype=float) are np.float64, a float subclass of the same value: the fit "
         "JSON is written through io.json_ready (float() again) and the report formats them with format specs",
