@@ -208,6 +208,19 @@ killed by tests (tests/combinations/test_canonical_box_edge_whole.py, test_combi
 minimax's initial best value from the second node (#1: its sibling #2 killed by
 tests/criticism/test_level2_minimax_best_node_whole.py) and rank_observable_sets' all -> any.
 
+Thirteenth held-out draw (seed 865_173, written down after the twelfth was scored and never run until the thirteenth
+round's tests were merged: four areas on seeds 42 and 43, the eight sentence and table rows added with seeds 42-44,
+and five hand-written catalogues; ``--held-out --held-out-only --per-module 1`` over all 81 rows, leaving out
+SEEN_DRAWS with 42:3, 43:3 and 44:3; two halves side by side on the quiet machine, 19 minutes): **62 of 72 killed,
+86.1 %** (31/35 and 31/37; four listed equivalent beforehand; 62/76 = 81.6 % counting them).  Survivors:
+criticism/naming ``_choices`` without int() around a count of runs; criticism/verdict ``replicate_runs``' stable sort
+-> the default; design_check ``_refuse_misplaced_points`` 0 -> -1 (#4); published_values ``check_published_values``
+``path + ['factor']`` -> ``['factor']`` (a new row); sampling/domain ``Domain.sobol`` 2 -> 1; transcription/printed
+``_f_ratio`` 0 -> -1 (#2); transcription/check ``_response_hypotheses`` 1 -> 0 (#1); canonical ``_orient`` 1 -> 0;
+criticism/discrimination ``_scatter_covariate``' points / alpha -> * alpha; criticism/edges
+``extrapolation_warnings`` 0 -> -1 (#1).  **The last seven held-out draws pool to 413 of 473, 87.3 %** (95 % interval
+about 84-90 %).  The draw is in SEEN_DRAWS; the next held-out seed is written down below.
+
 Fourth round, the uncertainty, story, combinations, design, wave and loop modules (28 rows; new in-sample draws,
 seeds 21, 22 and 23 with ``--per-module 2`` and 21 and 22 again with 4, each run before any test was aimed at it, on the
 tests of the round so far; "with lists": survivors that reading showed equivalent or a search setting left out of the score):
@@ -4473,7 +4486,7 @@ def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]
 #: its mutants are drawn apart from the in-sample draw (the default ``--seed``, against which tests were written
 #: run by run), and no test may be written against them.  Once its survivors have been read and tests added for
 #: them, its score is in-sample too: write down a new seed here, unused, before the next round.
-HELD_OUT_SEED = 865_173  # the next draw; 702_119's, 781_203's, 864_091's, 927_443's, 415_867's and 143_881's were scored (in SEEN_DRAWS)
+HELD_OUT_SEED = 296_513  # the next draw; 702_119's, 781_203's, 864_091's, 927_443's, 415_867's, 143_881's and 865_173's were scored (in SEEN_DRAWS)
 
 
 #: Draws that tests were written against, run by run (seed, mutants per module): never part of a held-out draw.
@@ -4481,7 +4494,7 @@ HELD_OUT_SEED = 865_173  # the next draw; 702_119's, 781_203's, 864_091's, 927_4
 #: draw's survivors were read and tested), the second and third held-out draws (704_913, 3 per module; 902_611, 1)
 #: were read and tested, and so were the fourth round's draws (seeds 21-22 with 4 per module, 23 with 2, 24 with 2,
 #: 25 with 1).
-SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3", "864091:1", "36:3", "37:3", "927443:1", "38:3", "39:3", "415867:1", "40:3", "41:3", "143881:1", "42:3", "43:3", "44:3"]
+SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3", "864091:1", "36:3", "37:3", "927443:1", "38:3", "39:3", "415867:1", "40:3", "41:3", "143881:1", "42:3", "43:3", "44:3", "865173:1"]
 
 
 def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:
