@@ -1666,6 +1666,17 @@ of its docstring needs a 1001-point reference too slow for the fast tests) and p
 the error ties.  The earlier survivor rank_observable_sets all -> any is killed by
 tests/uncertainty/test_ranking_hair_miss_whole.py.  Hand-written catalogue benchmarks/hand_written/numerics.py:
 16 of 16 at its first run.
+The thirteenth held-out draw's survivors, read after it (transcription, design_check, published_values, domain):
+transcription/printed ``_f_ratio``'s df_b > 0 -> > -1 (a design without replicates, no pure-error degrees of
+freedom: a printed F of zero agreed through its printed sums) is killed by
+tests/transcription/test_lof_f_zero_pure_error_whole.py (no F without replicates; and, for the ss_b > 0 guard
+beside it, the F range of the printed sums over a pure error in (0, half width] when the pure error prints as
+zero; sums by least squares written out, two and three factors); published_values
+``check_published_values``' key of a width contraction's factor without its path is killed by a case added to
+tests/inputs/test_published_values_whole.py (contractions (item 2).factor).  Listed as equivalent:
+design_check ``_refuse_misplaced_points``' counts.get default (every key is present), domain ``Domain.sobol``'s
+max(n, 2) -> max(n, 1) (the outer max(1, ...) gives the same exponent) and transcription/check
+``_response_hypotheses``' max(len(y), 1) -> 0 (_read_cells refuses a response with no value, so len(y) >= 1).
 """
 
 from __future__ import annotations
@@ -1891,6 +1902,7 @@ TABLE: dict[str, dict] = {
         "tests": [*_TRANSCRIPTION_TESTS, "tests/transcription/test_printed_properties.py",
                   "tests/transcription/test_printed_whole.py", "tests/transcription/test_agreement_whole.py",
                   "tests/transcription/test_cell_texts_whole.py", "tests/transcription/test_adjusted_r2_whole.py",
+                  "tests/transcription/test_lof_f_zero_pure_error_whole.py",
                   "tests/transcription/test_precision_elsewhere.py", "tests/transcription/test_check_messages_whole.py",
                   "tests/transcription/test_parse_printed_float_whole.py", "tests/transcription/test_published_empty_whole.py",
                   "tests/inputs/test_stranger_tables.py::test_an_impossible_published_statistic_is_refused",
@@ -2565,6 +2577,17 @@ EQUIVALENT: dict[str, str] = {
     "demid/canonical.py::_floats::float(v) => v#0":
         "the items of np.asarray(values, dtype=float) are np.float64, a float subclass of the same value: the fit "
         "JSON is written through io.json_ready (float() again) and the report formats them with format specs",
+    # --- the thirteenth held-out draw's survivors (transcription, design_check, published_values, domain)
+    "demid/design_check.py::_refuse_misplaced_points::0 => -1#4":
+        "counts has a key for every point type of the declared design and _expected_counts returns the same keys "
+        "(ccd: factorial, axial, center; box_behnken: edge, center; other designs return earlier): the default of "
+        "counts.get is never read",
+    "demid/sampling/domain.py::Domain.sobol::2 => 1#0":
+        "log2(max(n, 1)) is 0 where log2(max(n, 2)) is 1 (n <= 1), and the outer max(1, ...) makes both m = 1: the "
+        "same base-2 exponent, the same points for every n",
+    "demid/transcription/check.py::_response_hypotheses::1 => 0#1":
+        "len(y) counts the runs with a response value, and _read_cells refuses a table with none ('no run has a "
+        "value'): len(y) >= 1, so max(len(y), 0) is max(len(y), 1)",
     # --- the twelfth held-out draw's survivors, read after it was scored
     "demid/transcription/check.py::_located::float(misfit[c]) => misfit[c]#0":
         "Suspect.misfit is written nowhere (not in to_dict or to_json, no message reads it) and np.float64 is a "
