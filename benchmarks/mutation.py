@@ -1677,6 +1677,18 @@ tests/inputs/test_published_values_whole.py (contractions (item 2).factor).  Lis
 design_check ``_refuse_misplaced_points``' counts.get default (every key is present), domain ``Domain.sobol``'s
 max(n, 2) -> max(n, 1) (the outer max(1, ...) gives the same exponent) and transcription/check
 ``_response_hypotheses``' max(len(y), 1) -> 0 (_read_cells refuses a response with no value, so len(y) >= 1).
+
+The thirteenth held-out draw's survivors, read after it (in-sample now; its five naming, verdict, canonical,
+discrimination and edges survivors): _scatter_covariate's factor covariate times the axial distance, not over it,
+killed by tests/criticism/test_prediction_factor_scatter_whole.py (a new run's mean and variance under scatter
+along a factor against statsmodels' WLS with weights written out, axial distances 1.3-2: the scatter is sigma^2 / w
+at every run and grows by the fitted sd ratio across the axial points); replicate_runs' default sort, not the
+stable one, killed by test_runs_tied_in_misfit_are_proposed_in_the_tables_order in
+tests/criticism/test_replicate_runs_whole.py (a counted response of values 0-2 ties runs exactly in |studentised
+residual|, and numpy's vectorised quicksort orders the ties by neither row nor label: the proposal must be the
+residual table's first runs, ties to the earlier row).  Listed equivalent: _choices without int() (read only
+through math.log, the same for np.int64), canonical _orient's range(shape[0]) (its eigenvectors are square) and
+extrapolation_warnings' run_hi from row -1 (to_actual of one point is a one-row array).
 """
 
 from __future__ import annotations
@@ -2398,7 +2410,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_verdict_messages_whole.py", "tests/criticism/test_ambiguity_named_first_whole.py",
                   "tests/criticism/test_deciding_runs_kinds_whole.py",
                   "tests/criticism/test_prediction_fitted_scatter_blocks_whole.py",
-                  "tests/criticism/test_close_candidates_whole.py"],
+                  "tests/criticism/test_close_candidates_whole.py",
+                  "tests/criticism/test_prediction_factor_scatter_whole.py"],
     },
     "demid/criticism/reach.py": {
         "functions": None,
@@ -2603,6 +2616,17 @@ EQUIVALENT: dict[str, str] = {
         "run numbers are distinct integers below 2^53 (read_table refuses a duplicate or a larger one; a table "
         "without a run column is numbered 1..n), exact as floats: the sort has no ties, and every correct sort "
         "returns the one order",
+    # --- the thirteenth held-out draw's survivors, read after it was scored
+    "demid/criticism/naming.py::_choices::int(np.sum(rnd.model.hat < LEVERAGE_UNPREDICTABLE)) => "
+    "np.sum(rnd.model.hat < LEVERAGE_UNPREDICTABLE)#0":
+        "the count is read only as math.log(choices.get(h.cause, 1)) in candidate_entries, and math.log of "
+        "np.int64(n) is math.log(n) (the same float; 0 raises the same ValueError): the same price, AICc and cause",
+    "demid/canonical.py::_orient::1 => 0#0":
+        "range(out.shape[0]) for range(out.shape[1]): its one caller, canonical_analysis, passes the eigenvectors "
+        "of the k x k matrix B from np.linalg.eigh, square, so both loops visit every column",
+    "demid/criticism/edges.py::extrapolation_warnings::0 => -1#1":
+        "run_hi from row -1 instead of row 0 of domain.to_actual(lo + z_hi * span): the argument is one point (a "
+        "1-D vector), which to_actual makes a one-row array (np.atleast_2d), so its first row is its last",
     # --- the eleventh round, seeds 38 and 39 (story, loop and input rows)
     "demid/estimability.py::require_estimable::False => True#0":
         "the SVD with full matrices: the runs are refused above unless n > p, so vt is p x p and the singular "
