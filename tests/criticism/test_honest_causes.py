@@ -53,6 +53,7 @@ def test_slipped_factor_value_is_named_with_run_and_factor():
     assert named >= 6, named
 
 
+@pytest.mark.workflow  # a benchmark-like batch of tables
 def test_slips_flagged_at_least_as_often_as_by_lack_of_fit():
     """Random slips (run and factor drawn by the generator), 2- and 3-factor CCDs: misfit is reported at
     least as often as the classical lack-of-fit test rejects on the same tables."""
@@ -330,6 +331,7 @@ def test_a_cause_is_named_only_when_its_test_is_the_strongest_evidence():
 SPREAD_MISFIT = [(3, "hidden", 20), (3, "plateau", 40), (3, "batch", 6), (2, "hidden", 20), (2, "batch", 10)]
 
 
+@pytest.mark.workflow  # a benchmark-like batch of tables
 def test_misfit_spread_over_several_tests_is_not_given_a_cause():
     """An unrecorded factor, a plateau, a batch of three shifted runs: lack of fit and several catalogue tests
     fire about equally.  Over 12 seeds of each of five such cells (60 tables) a confident cause other than
@@ -418,6 +420,7 @@ def test_unequal_scatter_resting_on_one_run_is_not_named():
         assert (f.cause, f.detail) == ("heteroscedasticity", planted.factor)
 
 
+@pytest.mark.workflow  # a benchmark-like batch of tables
 def test_one_run_rule_gives_fewer_wrong_causes_on_a_batch_of_shifted_runs():
     """Three runs shifted by 10 noise SDs (3-factor CCD, 13 seeds): without the rule unequal scatter is
     named in three tables from one wild run (seeds 507-509); with it they are unexplained, and no table

@@ -85,6 +85,7 @@ def _round(n, seed, kind, exact, monkeypatch, n_null=999):
     return Round(data, Model(data, ModelForm()), n_null, np.random.default_rng(seed + 100))
 
 
+@pytest.mark.workflow  # a benchmark-like batch of tables
 @pytest.mark.parametrize("kind", ["clean", "scatter"])
 def test_asymptotic_and_simulated_nulls_agree_at_300_runs(kind, monkeypatch):
     """Near the decision threshold (either p below 0.15) the F form's p and the simulated one (999 draws) agree
