@@ -298,6 +298,7 @@ def _simulate_after_step(seed: int, k: int, shift: float, runs: list[dict]) -> p
     return new
 
 
+@pytest.mark.workflow  # a benchmark-like batch of tables
 def test_later_replicates_of_the_runs_between_two_change_points_tell_which_side_they_were_on():
     """Two change-points level with each other differ only in the side of the step the runs between them fell
     on, and so in the surface fitted near those runs' points.  A run made there after the table is after the step

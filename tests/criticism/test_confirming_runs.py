@@ -51,6 +51,7 @@ def test_an_outlier_read_as_a_slip_of_the_same_run_is_reported_with_the_outlier_
     assert slips >= 1
 
 
+@pytest.mark.workflow  # a benchmark-like batch of tables
 def test_an_ambiguous_verdicts_slip_of_the_planted_run_lists_the_outlier_as_its_alias():
     """Planted outliers (2 and 3 factors, seeds 0-39): where the verdict is ambiguous and a one-run candidate sits
     at the planted run, it is the outlier or a slip that lists the outlier as its alias (and says so), as a

@@ -90,6 +90,7 @@ def _simulate_drift(seed: int, k: int, size: float, runs: list[dict]) -> pd.Data
     return new
 
 
+@pytest.mark.workflow  # a benchmark-like batch of tables
 def test_a_drift_that_also_fits_a_step_is_ambiguous_and_the_proposed_runs_name_the_drift():
     decided = []
     for k in (2, 3):
