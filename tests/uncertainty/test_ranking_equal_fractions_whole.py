@@ -6,31 +6,18 @@ recomputed by brute force over the subsets, over 1-2 wide observables, target si
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from itertools import combinations
 
 import numpy as np
 import pytest
 
-from demid.sampling.domain import Domain
 from demid.spec import join_observables
-from demid.surrogate import Surrogate
 from demid.uncertainty.posterior import NO_OBSERVABLE
 from demid.uncertainty.ranking import rank_observable_sets
 
-SQUARE = Domain(("a", "b"), (0.0, 0.0), (1.0, 1.0))
+from .test_ranking_whole import SQUARE, _plane, _Posterior
+
 TOLERANCE = 0.1
-
-
-@dataclass
-class _Posterior:
-    information_gain_bits: float
-    information_gain_error_bits: float
-
-
-def _plane(name: str, c) -> Surrogate:
-    return Surrogate(name, ["a", "b"], [(0, 0), (1, 0), (0, 1)], np.asarray(c, dtype=float), np.eye(3) * 1e-6,
-                     0.01, 10)
 
 
 def _study(seed: int, wide: int, sign: float):

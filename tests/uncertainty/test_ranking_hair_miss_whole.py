@@ -7,7 +7,6 @@ reached observables, both ends of the range and both signs of the targets."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from itertools import combinations
 
 import numpy as np
@@ -19,15 +18,11 @@ from demid.surrogate import Surrogate
 from demid.uncertainty.posterior import NO_OBSERVABLE
 from demid.uncertainty.ranking import rank_observable_sets
 
+from .test_ranking_whole import _Posterior
+
 LINE = Domain(("a",), (0.0,), (1.0,))
 TOLERANCE = 0.1
 N = 401  # grid nodes: a fraction is an interval's length to within a few steps
-
-
-@dataclass
-class _Posterior:
-    information_gain_bits: float
-    information_gain_error_bits: float
 
 
 def _line(name: str, c: float, d: float) -> Surrogate:
