@@ -22,7 +22,6 @@ from __future__ import annotations
 import argparse
 import ast
 import importlib.util
-import shutil
 import signal
 import sys
 from dataclasses import dataclass
@@ -93,35 +92,11 @@ def check(mutants: list[HandMutant]) -> list[str]:
 
 def run(mutants: list[HandMutant]) -> list[tuple[HandMutant, str]] | None:
     """Each mutant against its module's tests in a private tree; None when the unmutated tests fail."""
-    tree = mutation.make_tree()
-    results = []
-    try:
-        by_module: dict[str, list[HandMutant]] = {}
-        for mu in mutants:
-            by_module.setdefault(mu.path, []).append(mu)
-        for path, muts in by_module.items():
-            tests = mutation.existing(mutation.TABLE[path]["tests"], tree)
-            status, base_time = mutation.run_tests(tree, tests, timeout=1800)
-            if status != "survived":
-                print(f"{path}: the unmutated tests do not pass ({status}); fix them first", flush=True)
-                return None
-            timeout = max(60.0, 4.0 * base_time)
-            print(f"{path}: {len(muts)} mutants, tests take {base_time:.1f} s unmutated", flush=True)
-            target = tree / path
-            source = (mutation.ROOT / path).read_text(encoding="utf-8")
-            try:
-                for mu in muts:
-                    target.write_text(mu.apply(source), encoding="utf-8")
-                    status, took = mutation.run_tests(tree, tests, timeout)
-                    if status == "survived" and mu.equivalent:
-                        status = "equivalent"
-                    results.append((mu, status))
-                    print(f"  {status:18s} {took:6.1f}s  {mu.id}", flush=True)
-            finally:
-                target.write_text(source, encoding="utf-8")
-    finally:
-        shutil.rmtree(tree, ignore_errors=True)
-    return results
+    by_module: dict[str, list[HandMutant]] = {}
+    for mu in mutants:
+        by_module.setdefault(mu.path, []).append(mu)
+    return mutation.run_mutants(by_module, lambda source, mu: mu.apply(source),
+                                lambda mu: "equivalent" if mu.equivalent else "survived", lambda mu: mu.id)
 
 
 def summarise(name: str, results: list[tuple[HandMutant, str]]) -> str:

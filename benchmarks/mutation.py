@@ -4653,10 +4653,21 @@ def _choose(per_module: dict, args, seed: int, everything: int, exclude=frozense
     return chosen
 
 
-def _run(chosen: dict[str, list[Mutant]]) -> list[tuple[Mutant, str]] | None:
-    """Each mutant against its module's tests in a private tree; None when the unmutated tests fail."""
+def _listed(mu: Mutant) -> str:
+    """The status of a generated mutant that survives: listed equivalent, a search setting, or a survivor."""
+    if mu.id in EQUIVALENT:
+        return "equivalent"
+    return "setting" if mu.id in SETTINGS else "survived"
+
+
+def run_mutants(chosen: dict, mutate, if_survived, label) -> list[tuple[object, str]] | None:
+    """Each mutant against its module's tests in a private tree; None when the unmutated tests fail.
+
+    ``chosen`` maps a module path to its mutants; ``mutate(source, mutant)`` gives the mutated source,
+    ``if_survived(mutant)`` the status of a mutant no test kills, ``label(mutant)`` its printed name.  Shared by the
+    generated draws here and the hand-written catalogues (hand_mutants.py)."""
     tree = make_tree()
-    results: list[tuple[Mutant, str]] = []
+    results: list[tuple[object, str]] = []
     try:
         for m, muts in chosen.items():
             if not muts:
@@ -4673,19 +4684,21 @@ def _run(chosen: dict[str, list[Mutant]]) -> list[tuple[Mutant, str]] | None:
             source = (ROOT / m).read_text(encoding="utf-8")
             try:
                 for mu in muts:
-                    target.write_text(apply(source, mu), encoding="utf-8")
+                    target.write_text(mutate(source, mu), encoding="utf-8")
                     status, took = run_tests(tree, tests, timeout)
-                    if status == "survived" and mu.id in EQUIVALENT:
-                        status = "equivalent"
-                    elif status == "survived" and mu.id in SETTINGS:
-                        status = "setting"
+                    if status == "survived":
+                        status = if_survived(mu)
                     results.append((mu, status))
-                    print(f"  {status:18s} {took:6.1f}s  line {mu.line}: {mu.id}", flush=True)
+                    print(f"  {status:18s} {took:6.1f}s  {label(mu)}", flush=True)
             finally:
                 target.write_text(original, encoding="utf-8")
     finally:
         shutil.rmtree(tree, ignore_errors=True)
     return results
+
+
+def _run(chosen: dict[str, list[Mutant]]) -> list[tuple[Mutant, str]] | None:
+    return run_mutants(chosen, apply, _listed, lambda mu: f"line {mu.line}: {mu.id}")
 
 
 def _summarise(chosen: dict[str, list[Mutant]], results: list[tuple[Mutant, str]], args, total: int) -> str:
