@@ -105,6 +105,8 @@ def test_for_materials_keeps_the_studied_materials_and_the_source():
     ({"contractions": [{"material": "m", "from": "s", "to": "t", "quantity": "fraction", "value": 1},
                        {"material": "m", "from": "s", "to": "t", "quantity": "width", "factor": "bb", "value": 1}]},
      "contractions (item 2).factor", "'bb' is not a factor of m; did you mean 'b'?"),
+    ({"reference_points": {"m": {"a": 0.5, "bb": 2}}}, "reference_points.m.bb",
+     "'bb' is not a factor of m; did you mean 'b'?"),
     ({"pareto": {"n": {"max_error": 0.1, "intervals": {}}}}, "", ""),
 ])
 def test_a_slip_names_its_key_and_what_is_wrong(content, key, words):

@@ -1,0 +1,162 @@
+"""The report's sentences and cells at their edges, read back number by number: a recommended point on a search
+bound with why no widening is advised (its interval's verdict) or that the advice widens it; the reference point
+against a set that is empty, that holds it, or that lies apart, its nearest point named in the config's order
+whatever the order of the stored JSON; the ranking's gain to the digits its numerical error supports; and the
+next-wave columns' units.  Expected values are computed here from the tables written for the test."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from demid.report.columns import columns_table
+from demid.report.context import ReportContext
+from demid.report.model_criticism import _reference_point_lines
+from demid.report.plausible import ranking_display
+
+from .test_report_sentences_whole import LABELS, _material, _number, _text, _write
+
+
+# --------------------------------------------------------------------------- a recommended point on a bound
+@pytest.mark.parametrize("seed", range(4))
+def test_a_recommended_point_on_a_bound_says_whether_it_is_widened_and_else_why_not(tmp_path, seed):
+    from demid.report.summary import summary
+
+    rng = np.random.default_rng(seed)
+    d = 2 + seed % 2
+    material = _material(d)
+    names = list(material["factors"])
+    uppers = {f: material["factors"][f]["upper"] for f in names}
+    on = names[seed % d]  # the factor on a bound
+    side = ("lower", "upper")[seed // 2]
+    verdict = ["unresolved", "bounded", "identified", "bounded"][seed]
+    widened = seed == 3
+    point = {f: float(rng.uniform(0.2, 0.8)) * uppers[f] for f in names}
+    point[on] = 0.0 if side == "lower" else uppers[on]
+    rows = [{"material": "m", "scenario": "s", "factor": f, "strict_lower": 0.0, "strict_upper": uppers[f],
+             "plausible_lower": 0.0, "plausible_upper": uppers[f], "verdict": verdict if f == on else "bounded",
+             "reason": "why"} for f in names]
+    _write(tmp_path, "tables/verdicts.csv", pd.DataFrame(rows))
+    advice = [{"material": "m", "kind": "widen", "factor": on, "bound": side, "observable": "",
+               "text": "Widen it.", "decision": True}] if widened else []
+    _write(tmp_path, "tables/advice.csv", pd.DataFrame(advice, columns=["material", "kind", "factor", "bound",
+                                                                         "observable", "text", "decision"]))
+    _write(tmp_path, "uncertainty/m.json", {"recommended": {"scenario": "s", "plausible": True, "point": point,
+                                                            "implausibility": 0.4}})
+    text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
+    label = LABELS[names.index(on)]
+    if widened:
+        assert f"⚠ {label} lies on its {side} search bound, which the advice below widens" in text
+    else:
+        assert (f"⚠ {label} lies on its {side} search bound; no widening is advised there (the plausible interval is "
+                f"{verdict}: a wider range would not narrow it).") in text
+    assert text.count(" lies on ") == 1  # the other factors lie inside
+
+
+def test_without_verdicts_a_point_on_a_bound_is_told_without_a_reason(tmp_path):
+    from demid.report.summary import summary
+
+    material = _material(2)
+    _write(tmp_path, "uncertainty/m.json", {"recommended": {"scenario": "s", "plausible": True,
+                                                            "point": {"a": 1.0, "b": 1.2}, "implausibility": 0.4}})
+    text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
+    assert "⚠ Alpha lies on its upper search bound; no widening is advised there." in text
+
+
+# --------------------------------------------------------------------------- the reference point's lines
+@pytest.mark.parametrize("seed", range(4))
+def test_the_reference_point_against_an_empty_a_holding_and_a_distant_set(tmp_path, seed):
+    rng = np.random.default_rng(seed)
+    d = 2 + seed % 3
+    material = _material(d)
+    names = list(material["factors"])
+    kinds = ["empty", "inside", "outside"]
+    positions = []
+    for kind in kinds:
+        errors = {o: float(rng.uniform(0.0005, 0.3) * rng.choice([-1, 1])) for o in ("y", "z")}
+        nearest = None if kind == "empty" else {f: float(rng.uniform(0, 3)) for f in sorted(names, reverse=True)}
+        positions.append({"scenario": "s", "inside": kind == "inside", "errors": errors,
+                          "nearest_admissible": nearest,
+                          "distance_pct_of_range": None if kind == "empty" else float(rng.uniform(0.5, 40))})
+    lines = _reference_point_lines(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m", positions)
+    assert len(lines) == 3
+    for line, pos, kind in zip(lines, positions, kinds):
+        m = re.fullmatch(r"- Reference point vs scenario \*Both\*: it (.+) \(errors (.+)\)\.", line)
+        assert m, line
+        for shown, o in zip(m.group(2).split(", "), ("y", "z")):
+            value = re.fullmatch(rf"{o.upper()}obs ([+−]?\S+) %", shown)
+            assert value and _number(value.group(1)) == pytest.approx(100 * pos["errors"][o], rel=0.01), shown
+            assert value.group(1)[0] == ("+" if pos["errors"][o] > 0 else "−")
+        if kind == "empty":
+            assert m.group(1) == "cannot lie in it: the admissible set is empty"
+        elif kind == "inside":
+            assert m.group(1) == "lies inside the admissible set"
+        else:
+            far = re.fullmatch(r"lies outside it, (\S+) % of the search range from the nearest admissible point "
+                               r"\((.+)\)", m.group(1))
+            assert far and float(far.group(1)) == pytest.approx(pos["distance_pct_of_range"], abs=0.05 + 1e-9)
+            shown = far.group(2).split(", ")
+            assert [s.split(" = ")[0] for s in shown] == LABELS[:d]  # the config's order, not the JSON's
+            for s, f in zip(shown, names):
+                assert float(s.split(" = ")[1]) == pytest.approx(pos["nearest_admissible"][f], rel=5e-4)
+
+
+# --------------------------------------------------------------------------- the ranking's gains and errors
+def _decimals(text: str) -> int:
+    return len(text.split(".")[1]) if "." in text else 0
+
+
+def _place(x: float, digits: int) -> float:
+    """10 to the power of x's last significant digit once x is rounded to ``digits`` of them."""
+    rounded = abs(float(f"{x:.{digits}g}"))
+    return 10.0 ** (int(np.floor(np.log10(rounded))) - digits + 1)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_the_ranking_quotes_each_gain_to_the_digits_its_numerical_error_supports(seed):
+    rng = np.random.default_rng(seed)
+    sets = ["y", "z", "y+z", "w"][: 2 + seed]
+    n = len(sets)
+    gains = rng.uniform(0.01, 6, n)
+    errors = 10 ** rng.uniform(-3.5, -0.3, n)
+    gains[0] = errors[0] * rng.uniform(0.1, 0.45)  # no gain the error can tell from zero
+    ranking = pd.DataFrame({"material": "m", "rank": range(1, n + 1), "observables": sets,
+                            "information_gain_bits": gains, "information_gain_error_bits": errors,
+                            "best_subset": ["(none)"] * n, "gain_vs_best_subset_bits": rng.uniform(0, 2, n),
+                            "targets_reachable": [True] * n})
+    quiet = {sets[-1]: "its band covers its whole range"} if seed else None
+    shown = ranking_display(ranking, quiet)
+    assert "targets reachable" not in shown
+    for i, s in enumerate(sets):
+        gain_cell, error_cell = shown["information gain [bit]"].iloc[i], shown["± numerical error [bit]"].iloc[i]
+        error_place = _place(errors[i], 2)
+        assert _decimals(error_cell) == max(0, -int(round(np.log10(error_place))))
+        assert abs(float(error_cell) - errors[i]) <= error_place / 2 + 1e-12
+        if quiet and s in quiet:
+            assert gain_cell == f"~0 ({gains[i]:.2f}; uninformative)"
+            continue
+        place = max(error_place, _place(gains[i], 3))
+        if gains[i] <= place / 2:
+            assert gain_cell == "≈ 0"
+            continue
+        assert _decimals(gain_cell) == max(0, -int(round(np.log10(place)))), (gain_cell, gains[i], errors[i])
+        assert abs(float(gain_cell) - gains[i]) <= place / 2 + 1e-12
+
+
+def test_a_set_that_cannot_meet_its_targets_keeps_the_reachable_column():
+    ranking = pd.DataFrame({"material": "m", "rank": [1, 2, 3], "observables": ["y", "z", "y+z"],
+                            "information_gain_bits": [1.0, 0.5, 2.0], "targets_reachable": [True, False, True]})
+    shown = ranking_display(ranking)
+    assert shown["targets reachable"].tolist() == [True, False, True]
+
+
+# --------------------------------------------------------------------------- the next-wave columns' units
+def test_a_predicted_response_without_a_unit_reads_a_dash():
+    units = {"aor": "deg", "si": "-", "d": "", "rho": "kg m^-3"}
+    frame = columns_table({}, {"factors": [("a", "mm")], "responses": list(units.items())})
+    runs = frame[frame["table"] == "next_runs.csv"].set_index("column")["unit"]
+    for r, unit in units.items():
+        assert runs[f"predicted_{r}"] == (unit if unit not in ("", "-") else "–")
