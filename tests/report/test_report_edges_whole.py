@@ -17,7 +17,7 @@ from demid.report.context import ReportContext
 from demid.report.model_criticism import _reference_point_lines
 from demid.report.plausible import ranking_display
 
-from .test_report_sentences_whole import LABELS, _material, _number, _text, _write
+from .test_report_sentences_whole import LABELS, _level2, _material, _number, _text, _write
 
 
 # --------------------------------------------------------------------------- a recommended point on a bound
@@ -160,3 +160,50 @@ def test_a_predicted_response_without_a_unit_reads_a_dash():
     runs = frame[frame["table"] == "next_runs.csv"].set_index("column")["unit"]
     for r, unit in units.items():
         assert runs[f"predicted_{r}"] == (unit if unit not in ("", "-") else "–")
+
+
+# --------------------------------------------------------------------------- the summary's answer line
+@pytest.mark.parametrize("seed", range(3))
+def test_the_answer_line_sorts_the_fullest_scenarios_factors_and_says_when_no_point_meets_every_target(tmp_path,
+                                                                                                        seed):
+    from demid.report.summary import summary
+
+    rng = np.random.default_rng(seed)
+    d = 2 + seed
+    material = _material(d)
+    names = list(material["factors"])
+    kinds = ["identified", "bounded", "unresolved", "in combination"]
+    drawn = [kinds[i % 4] for i in range(d)]
+    rng.shuffle(drawn)
+    rows = []
+    for i, (f, kind) in enumerate(zip(names, drawn)):
+        partner = LABELS[(i + 1) % d]
+        verdict = f"unresolved alone; identified in combination with {partner}" if kind == "in combination" else kind
+        for scenario, v in (("t", "identified"), ("s", verdict)):  # the answer is given for s, the fullest
+            rows.append({"material": "m", "scenario": scenario, "factor": f, "strict_lower": np.nan,
+                         "strict_upper": np.nan, "plausible_lower": 0.1, "plausible_upper": 0.9, "verdict": v,
+                         "reason": "why"})
+    _write(tmp_path, "tables/verdicts.csv", pd.DataFrame(rows))
+    _write(tmp_path, "tables/advice.csv", pd.DataFrame([{"material": "m", "kind": "widen", "factor": "", "bound": "",
+                                                         "observable": "", "text": "Widen b.", "decision": True}]))
+    judged = seed < 2  # the last study has no level 2 (its criticism not run yet): nothing says it failed
+    if judged:
+        _write(tmp_path, "criticism/m.json", {"level1": {}, "level2": _level2(rng, ["y", "z"], False, False)})
+    point = {f: 0.5 for f in names}
+    _write(tmp_path, "uncertainty/m.json", {"recommended": {"scenario": "s", "plausible": True, "point": point,
+                                                            "implausibility": 0.25}})
+    text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
+    label = dict(zip(names, LABELS))
+    identified = [label[f] for f, k in zip(names, drawn) if k == "identified"]
+    combined = [label[f] for f, k in zip(names, drawn) if k == "in combination"]
+    others = [f"{label[f]} {k}" for f, k in zip(names, drawn) if k in ("bounded", "unresolved")]
+    line = (f"m, with Both: identified: {', '.join(identified) or 'none'}"
+            + (f"; in combination only: {', '.join(combined)}" if combined else "")
+            + f"; not identified: {', '.join(others) or 'none'}. Next step: Widen b.")
+    assert line in text, text
+    # no point meets every target and the strict set is empty: the point is the most plausible one, not a match
+    assert (("No parameter set meets every target within the tolerance; counting the surrogate's and the "
+             "measurements' uncertainty, the most plausible point (the point of the plausible set of Both") in text) \
+        == judged
+    assert ("Recommended parameter set (the point of the plausible set of Both" in text) == (not judged)
+    assert "With every observable of Both no point of the search range is admissible" in text
