@@ -2515,7 +2515,8 @@ TABLE: dict[str, dict] = {
     },
     "demid/report/loop.py": {
         "functions": None,
-        "tests": ["tests/report/test_report_reads.py", "tests/report/test_report_sentences_whole.py", _NOT_WORKFLOW],
+        "tests": ["tests/report/test_report_reads.py", "tests/report/test_report_sentences_whole.py",
+                  "tests/report/test_report_edges_whole.py", _NOT_WORKFLOW],
     },
     "demid/report/model_criticism.py": {
         "functions": None,

@@ -177,3 +177,5 @@ def test_a_finding_reports_its_extensions_effect_on_every_scenario_of_its_respon
         assert [row["width_before"][f] for f in "ab"] == pytest.approx(width_before, abs=0.03)
         assert [row["width_after"][f] for f in "ab"] == pytest.approx(width_after, abs=0.03)
     assert result.summary["level1"][which]["findings"] == 1 and result.summary["level1"][other]["findings"] == 0
+    for r in ("y", "z"):  # each response's scenarios, in the config's order
+        assert result.summary["level1"][r]["scenarios"] == [s for s, sc in scenarios.items() if r in sc["observables"]]

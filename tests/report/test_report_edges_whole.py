@@ -17,7 +17,7 @@ from demid.report.context import ReportContext
 from demid.report.model_criticism import _reference_point_lines
 from demid.report.plausible import ranking_display
 
-from .test_report_sentences_whole import LABELS, _level2, _material, _number, _text, _write
+from .test_report_sentences_whole import LABELS, _cells, _level2, _material, _number, _text, _write
 
 
 # --------------------------------------------------------------------------- a recommended point on a bound
@@ -207,3 +207,67 @@ def test_the_answer_line_sorts_the_fullest_scenarios_factors_and_says_when_no_po
         == judged
     assert ("Recommended parameter set (the point of the plausible set of Both" in text) == (not judged)
     assert "With every observable of Both no point of the search range is admissible" in text
+
+
+# --------------------------------------------------------------------------- one factor, the next wave, level 1
+@pytest.mark.parametrize("seed", range(2))
+def test_with_one_factor_the_uncertainty_section_quotes_the_change_from_first_to_last_scenario(tmp_path, seed):
+    from demid.report.plausible import uncertainty
+
+    rng = np.random.default_rng(seed)
+    material = _material(1)
+    material["scenarios"]["u"] = {"observables": ["z"], "tolerance": 0.1, "label": "Second alone"}
+    scenarios = ["s", "t", "u"][: 2 + seed]
+    fractions = {sc: (float(rng.uniform(1, 60)), float(rng.uniform(1, 60))) for sc in scenarios}
+    rows = [{"material": "m", "scenario": sc, "observables": "y", "tolerance": 0.02, "z": 2, "factor": "a",
+             "strict_fraction_pct": fractions[sc][0], "robust_fraction_pct": fractions[sc][1], "strict_width": 0.1,
+             "robust_width": 0.2} for sc in scenarios]  # one row per scenario: its one factor
+    _write(tmp_path, "tables/robust_identifiability.csv", pd.DataFrame(rows))
+    _write(tmp_path, "uncertainty/m.json", {})
+    text = _text(uncertainty(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m"))
+    labels = {"s": "Both", "t": "First alone", "u": "Second alone"}
+    m = re.search(rf"From {labels[scenarios[0]]} to {labels[scenarios[-1]]} the feasible fraction changes by (\S+) % "
+                  r"\(strict\) and (\S+) % \(plausible\)\.", text)
+    assert m, text
+    for quoted, k in zip(m.groups(), (0, 1)):
+        first, last = fractions[scenarios[0]][k], fractions[scenarios[-1]][k]
+        assert _number(quoted) == pytest.approx(100 * (last - first) / first, abs=0.05 + 1e-9)
+
+
+def test_the_next_runs_coordinates_are_printed_to_a_thousandth_of_each_factors_range(tmp_path):
+    from demid.report.loop import next_wave
+
+    material = _material(3)
+    ranges = {"a": (0.0, 1.0), "b": (10.0, 2000.0), "c": (-0.05, 0.05)}
+    for f, (lo, hi) in ranges.items():
+        material["factors"][f].update(lower=lo, upper=hi)
+    rng = np.random.default_rng(3)
+    runs = pd.DataFrame({"material": "m", "proposal": [1, 2, 3],
+                         **{f: lo + rng.random(3) * (hi - lo) for f, (lo, hi) in ranges.items()}, "purpose": "decide"})
+    _write(tmp_path, "tables/next_runs.csv", runs)
+    _write(tmp_path, "next_wave/reasons.json", {"m": "Three runs."})
+    _write(tmp_path, "tables/advice.csv", pd.DataFrame(columns=["material", "kind", "factor", "bound", "observable",
+                                                                "text", "decision"]))
+    table = _cells(next_wave(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m"))
+    assert len(table) == 3
+    for cells, (_, run) in zip(table, runs.iterrows()):
+        for cell, (f, (lo, hi)) in zip(cells[1:4], ranges.items()):
+            place = 10.0 ** np.floor(np.log10(1e-3 * (hi - lo)))  # a thousandth of the range, down to a power of 10
+            assert _decimals(cell) == max(0, -int(round(np.log10(place)))), (f, cell)
+            assert abs(_number(cell) - run[f]) <= place / 2 + 1e-12
+
+
+def test_the_criticism_section_gives_each_verdict_in_words_with_its_sentence(tmp_path):
+    from demid.report.model_criticism import criticism
+
+    material = _material(2, ("y", "z", "w"))
+    level1 = {"w": {"verdict": "adequate", "messages": [], "verdict_message": ""},
+              "z": {"verdict": "defect", "messages": ["z: run 4 does not fit."],
+                    "verdict_message": "z: defect — run 4 does not fit z."},
+              "y": {"verdict": "unexplained", "messages": [], "verdict_message": "y: the misfit is unexplained."}}
+    _write(tmp_path, "criticism/m.json", {"level1": level1})
+    lines = [x.strip() for x in _text(criticism(ReportContext(str(tmp_path), {"materials": {"m": material}}),
+                                                "m")).split("\n") if x.strip()]
+    assert "Yobs — misfit unexplained: the misfit is unexplained." in lines
+    assert "Zobs — defect named: run 4 does not fit Zobs." in lines
+    assert "Wobs: nothing found by the catalogue tests." in lines
