@@ -1681,7 +1681,10 @@ in sub -> not in) and the criticism section's verdict line joined with - (a cras
 sentence); killed after by the criticism summary's scenarios in tests/criticism/test_material_level2_sets_whole.py
 and, in tests/report/test_report_edges_whole.py, a one-factor uncertainty section, the next runs' coordinates to a
 thousandth of each factor's range (three ranges from 0.1 to 2000) and level 1's verdicts in the criticism section
-(``--ids``: 4 of 4).
+(``--ids``: 4 of 4).  Coverage of the eight rows' subsets after: every line run but messages' raise of an unknown
+cause and _effect_points' three-factor grid (settings above); columns ``_describe``'s branch for paper_comparison's
+tolerance was dead (that table's own entries hold the column and return first) and is removed; a material without
+waves or a recommended point is tested (tests/report/test_report_edges_whole.py).
 The numerical core's 33 rows (sampling/*, surrogate, precision, kriging, surrogate_choice, estimability,
 fit_statistics, admissibility, uncertainty/*, next_wave, wave_runs, boundary_runs, pareto, canonical, wave_value,
 waves, combinations/axes and material; ``--per-module 2``): seed 42 as run 55/61 (90.2 %), seed 43, run after seed

@@ -269,8 +269,6 @@ def _describe(table: str, column: str) -> tuple[str, str]:
     own = _TABLES.get(table, {})
     if column in own:
         return own[column]
-    if column == "tolerance" and table == "paper_comparison":
-        return own["tolerance"]
     return _COMMON[column]
 
 

@@ -271,3 +271,22 @@ def test_the_criticism_section_gives_each_verdict_in_words_with_its_sentence(tmp
     assert "Yobs — misfit unexplained: the misfit is unexplained." in lines
     assert "Zobs — defect named: run 4 does not fit Zobs." in lines
     assert "Wobs: nothing found by the catalogue tests." in lines
+
+
+def test_a_material_without_waves_or_a_recommended_point_has_no_such_lines(tmp_path):
+    from demid.report.loop import waves
+    from demid.report.summary import summary
+
+    material = _material(2)
+    context = ReportContext(str(tmp_path), {"materials": {"m": material}})
+    assert waves(context, "m") == []
+    _write(tmp_path, "waves/summary_m.json", {"waves": []})
+    assert waves(context, "m") == []
+    rows = [{"material": "m", "scenario": "s", "factor": f, "strict_lower": 0.1, "strict_upper": 0.2,
+             "plausible_lower": 0.05, "plausible_upper": 0.3, "verdict": "identified", "reason": "narrow"}
+            for f in ("a", "b")]
+    _write(tmp_path, "tables/verdicts.csv", pd.DataFrame(rows))
+    _write(tmp_path, "uncertainty/m.json", {"notes": []})
+    text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
+    assert "m, with Both: identified: Alpha, Beta; not identified: none." in text
+    assert "parameter set" not in text and "lies on" not in text
