@@ -2,7 +2,10 @@
 bound with why no widening is advised (its interval's verdict) or that the advice widens it; the reference point
 against a set that is empty, that holds it, or that lies apart, its nearest point named in the config's order
 whatever the order of the stored JSON; the ranking's gain to the digits its numerical error supports; and the
-next-wave columns' units.  Expected values are computed here from the tables written for the test."""
+next-wave columns' units; the answer line of the fullest scenario; a one-factor uncertainty section; the next
+runs' coordinates to a thousandth of each factor's range, without other materials' columns; the waves table's
+shares of Ω to three significant digits; level 1's verdicts in words.  Expected values are computed here from the
+tables written for the test."""
 
 from __future__ import annotations
 
@@ -290,3 +293,30 @@ def test_a_material_without_waves_or_a_recommended_point_has_no_such_lines(tmp_p
     text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
     assert "m, with Both: identified: Alpha, Beta; not identified: none." in text
     assert "parameter set" not in text and "lies on" not in text
+
+
+def test_the_waves_table_gives_each_share_of_omega_to_three_significant_digits(tmp_path):
+    from demid.report.loop import waves
+
+    rng = np.random.default_rng(7)
+    material = _material(2)
+    shares = 10 ** rng.uniform(-2, 1.9, 4)  # 0.01 % to 80 %
+    rows = [{"wave": w, "scenario": "s", "simulated": 9 + 4 * w, "failed": 0, "analysed": 9 + 4 * w,
+             "surrogate": "quadratic", "q2": {"y": 0.9}, "plausible_fraction_of_omega_pct": float(v),
+             "plausible": {"a": [0.1, 0.2], "b": [0.3, 0.4]}} for w, v in enumerate(shares, start=1)]
+    _write(tmp_path, "waves/summary_m.json", {"waves": rows})
+    table = _cells(waves(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m"))
+    assert [float(cells[6]) for cells in table] == [float(f"{v:.3g}") for v in shares]
+
+
+def test_the_next_runs_table_leaves_out_the_columns_of_other_materials_factors(tmp_path):
+    from demid.report.loop import next_wave
+
+    material = _material(2)
+    runs = pd.DataFrame({"material": ["m", "other", "m"], "proposal": [1, 1, 2], "a": [0.25, np.nan, 0.75],
+                         "b": [1.5, np.nan, 0.5], "q": [np.nan, 3.0, np.nan], "purpose": ["decide", "x", "cover"]})
+    _write(tmp_path, "tables/next_runs.csv", runs)
+    _write(tmp_path, "next_wave/reasons.json", {"m": "Two runs.", "other": "One run."})
+    table = _cells(next_wave(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m"))
+    # a and b (ranges 1 and 2) to a thousandth of their range: three decimals
+    assert table == [["1", "0.250", "1.500", "decide"], ["2", "0.750", "0.500", "cover"]]
