@@ -267,13 +267,22 @@ def test_the_criticism_section_gives_each_verdict_in_words_with_its_sentence(tmp
     level1 = {"w": {"verdict": "adequate", "messages": [], "verdict_message": ""},
               "z": {"verdict": "defect", "messages": ["z: run 4 does not fit."],
                     "verdict_message": "z: defect — run 4 does not fit z."},
-              "y": {"verdict": "unexplained", "messages": [], "verdict_message": "y: the misfit is unexplained."}}
+              "y": {"verdict": "unexplained", "messages": [], "verdict_message": "y: the misfit is unexplained."},
+              "v": {"verdict": "ambiguous", "messages": [],
+                    "verdict_message": "v: ambiguous — two causes — a drift or a slip."}}
+    material["responses"]["v"] = {"target": 2.0, "label": "Vobs"}
     _write(tmp_path, "criticism/m.json", {"level1": level1})
-    lines = [x.strip() for x in _text(criticism(ReportContext(str(tmp_path), {"materials": {"m": material}}),
-                                                "m")).split("\n") if x.strip()]
+    findings = pd.DataFrame({"material": ["m", "m"], "response": ["z", "y"], "cause": ["missing_term;outlier", "none"],
+                             "detail": ["b", np.nan], "p_value": [0.01, 1.0]})
+    _write(tmp_path, "tables/criticism.csv", findings)
+    parts = criticism(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m")
+    lines = [x.strip() for x in _text(parts).split("\n") if x.strip()]
     assert "Yobs — misfit unexplained: the misfit is unexplained." in lines
     assert "Zobs — defect named: run 4 does not fit Zobs." in lines
     assert "Wobs: nothing found by the catalogue tests." in lines
+    assert "Vobs — ambiguous cause: two causes — a drift or a slip." in lines  # only the lead is cut
+    # the named cause's row only, its cause in words and its detail labelled
+    assert _cells(parts) == [["Zobs", "missing term, outlier", "Beta", "0.01"]]
 
 
 def test_a_material_without_waves_or_a_recommended_point_has_no_such_lines(tmp_path):
