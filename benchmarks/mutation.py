@@ -1928,6 +1928,7 @@ TABLE: dict[str, dict] = {
                   "tests/transcription/test_other_repairs_text_whole.py", "tests/transcription/test_repair_explains_whole.py",
                   "tests/transcription/test_likely_typos_few_runs_whole.py",
                   "tests/transcription/test_likely_typos_three_se_whole.py",
+                  "tests/transcription/test_studentised_exact_fit_whole.py",
                   "tests/test_reported_numbers.py", "tests/test_core_contracts.py"],
     },
     "demid/sampling/exact.py": {
@@ -2175,7 +2176,8 @@ TABLE: dict[str, dict] = {
                   "tests/transcription/test_check_messages_whole.py", "tests/transcription/test_check_ranking_whole.py",
                   "tests/test_reconstruct.py", "tests/transcription/test_published_empty_whole.py", "tests/inputs/test_cli.py::test_check_transcription_cli_finds_planted_slip",
                   "tests/inputs/test_cli.py::test_check_transcription_cli_consistent_exit_0",
-                  "tests/transcription/test_check_partial_leads_whole.py"],
+                  "tests/transcription/test_check_partial_leads_whole.py",
+                  "tests/transcription/test_check_leads_and_cells_whole.py"],
     },
     "demid/data.py": {
         "functions": None,
@@ -2186,6 +2188,7 @@ TABLE: dict[str, dict] = {
                   "tests/inputs/test_check_header_whole.py", "tests/inputs/test_design_inference.py",
                   "tests/inputs/test_design_generation.py", "tests/inputs/test_run_numbers_whole.py",
                   "tests/inputs/test_read_printed_whole.py", "tests/inputs/test_targets_sign_symmetry_whole.py",
+                  "tests/inputs/test_block_notes_whole.py", "tests/inputs/test_table_outside_study_whole.py",
                   "-knot readme"],
     },
     # parse_number, infer_coding and check_design, once in data.py
