@@ -2402,7 +2402,8 @@ TABLE: dict[str, dict] = {
                   "tests/inputs/test_design_whole.py", "tests/inputs/test_design_check_coding_whole.py",
                   "tests/inputs/test_level_coding_axial_whole.py", "tests/inputs/test_level_coding_far_from_zero_whole.py",
                   "tests/inputs/test_design_check_messages_whole.py", "tests/inputs/test_inputs_edges_whole.py",
-                  "tests/inputs/test_design_points_missing_whole.py"],
+                  "tests/inputs/test_design_points_missing_whole.py",
+                  "tests/inputs/test_centre_run_count_text_whole.py", "tests/inputs/test_misplaced_point_text_whole.py"],
     },
     "demid/criticism/discrimination.py": {
         "functions": None,
@@ -2580,6 +2581,30 @@ EQUIVALENT: dict[str, str] = {
         "the plausible set's fraction from the last instead of the first row of a scenario and factor: "
         "robust_identifiability.csv holds one row per material, scenario and factor, and verdict_frame is given one "
         "material's rows (story.build), as for the strict rows' #1 and #6",
+    # --- the input rows: mutants no test executed (coverage of the default suite) and the seed-45/46 draws
+    "demid/data.py::_block_notes::check.orthogonal and n.startswith('blocking is orthogonal') => "
+    "n.startswith('blocking is orthogonal')#0":
+        "check_blocks writes a note starting 'blocking is orthogonal' only when the blocking is orthogonal (the other "
+        "note reads 'blocking is not orthogonal', the no-centre note 'block(s) ...'): the test of orthogonal is "
+        "implied by the text's",
+    "demid/design_inference.py::_symmetric::False => True#0":
+        "unit > 0 for every call: _placement passes half the distance between two level medians of _levels, whose "
+        "groups are sorted and separated by a gap, so the medians strictly increase (the branch is unreachable)",
+    "demid/design_check.py::_check_design::True => False#0":
+        "the default of counts is never used: check_design and _passes (its only callers) pass all eight arguments",
+    "demid/design_check.py::_refuse_misplaced_points::0 => -1#1":
+        "repairs[0] read only when len(repairs) == 1: the last repair is the first",
+    "demid/design_check.py::_refuse_misplaced_points::0 => -1#2":
+        "classify_points of the one-row point[None, :]: its last label is its first",
+    "demid/design_check.py::_refuse_misplaced_points::0 => -1#4":
+        "counts holds every kind of _DESIGN_POINTS[type], and _expected_counts' kinds are among them (factorial, "
+        "axial, center for a CCD; edge, center for Box-Behnken): the default of counts.get is never used",
+    "demid/design_generation.py::generate_sheet::1 => 0#0":
+        "blocks is read only by ``blocks > 1``, false for 0 and 1 alike, and RunSheet does not hold it",
+    "demid/story/measurements.py::measurement_order::float(f) => f#0":
+        "f comes from the ranking frame's numeric feasible_fraction_pct column (built numeric, or read back by "
+        "pd.read_csv in story.build): an np.float64 or np.int64 of the same value divides, compares and prints "
+        "(:.3g, :.1f, rough_text) alike",
     # --- the numerical core's seed-42 draw (per module 2), read after it was scored
     "demid/sampling/roots.py::Lines.cut::1 => 2#1":
         "the roots' reshape(n, -2) is reshape(n, -1): numpy (2.4.6 pinned) takes any negative size as the one "
