@@ -2342,7 +2342,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_reach.py", "tests/criticism/test_edges.py", "tests/story/test_check_target_advice_whole.py",
                   "-knot heap", _NOT_WORKFLOW,
                   "tests/test_shares_apart.py", "tests/test_kriging.py", "tests/story/test_unpredictive_advice_whole.py",
-                  "tests/story/test_ridge_advice_rows_whole.py", "tests/story/test_level2_partial_whole.py"],
+                  "tests/story/test_ridge_advice_rows_whole.py", "tests/story/test_level2_partial_whole.py",
+                  "tests/story/test_add_observable_used_uninformative_whole.py"],
     },
     "demid/criticism/one_run.py": {
         "functions": None,
