@@ -2313,7 +2313,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_blocks.py", "tests/criticism/test_blocks_steps.py", "tests/test_blocks_properties.py",
                   "tests/test_blocks_whole.py", "tests/test_blocks_json_whole.py",
-                  "tests/inputs/test_data.py"],
+                  "tests/inputs/test_data.py", "tests/inputs/test_block_notes_whole.py"],
     },
     "demid/combinations/axes.py": {
         "functions": None,
@@ -2597,9 +2597,6 @@ EQUIVALENT: dict[str, str] = {
         "repairs[0] read only when len(repairs) == 1: the last repair is the first",
     "demid/design_check.py::_refuse_misplaced_points::0 => -1#2":
         "classify_points of the one-row point[None, :]: its last label is its first",
-    "demid/design_check.py::_refuse_misplaced_points::0 => -1#4":
-        "counts holds every kind of _DESIGN_POINTS[type], and _expected_counts' kinds are among them (factorial, "
-        "axial, center for a CCD; edge, center for Box-Behnken): the default of counts.get is never used",
     "demid/design_generation.py::generate_sheet::1 => 0#0":
         "blocks is read only by ``blocks > 1``, false for 0 and 1 alike, and RunSheet does not hold it",
     "demid/story/measurements.py::measurement_order::float(f) => f#0":
