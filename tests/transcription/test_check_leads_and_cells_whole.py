@@ -20,7 +20,7 @@ def _lead(s):
     return (s.run, s.column, s.found_text, s.suggested_text, s.kind, s.restores)
 
 
-@pytest.mark.parametrize("seed, k, decimals", [(43, 2, 1), (4, 3, 2)])
+@pytest.mark.parametrize("seed, k, decimals", [(43, 2, 1)])
 def test_without_a_limit_the_ten_best_of_many_equal_repairs_are_listed(seed, k, decimals):
     slipped, names, alpha, published, *_ = _slipped_factor_cell(seed, k, decimals)
     listed = check_transcription(slipped, names, "y", published, alpha=alpha)
