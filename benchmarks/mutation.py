@@ -1689,6 +1689,24 @@ residual|, and numpy's vectorised quicksort orders the ties by neither row nor l
 residual table's first runs, ties to the earlier row).  Listed equivalent: _choices without int() (read only
 through math.log, the same for np.int64), canonical _orient's range(shape[0]) (its eigenvectors are square) and
 extrapolation_warnings' run_hi from row -1 (to_actual of one point is a one-row array).
+
+The input rows (issue #40: transcription/*, paper, data, csv_cells, design, tolerance, formulas, numbers, story/*,
+blocks, design_inference, design_generation, design_check, scenario, io; 23 rows).  First the 25 mutants no test of
+their row executed (coverage of the default suite): 12 killed by new tests (the transcription check's default of ten
+leads, the first missing factor cell it names and its stored frame, validation's block notes, a bad table outside
+the study folder, the typo screen's NaN studentised residuals of an exact fit, ccd_points' default, a sheet without
+a seed), 8 by existing tests (defaults on a def line and the forked figure writer, which coverage does not see), one
+after a fix (below) and 4 listed equivalent (the block note's orthogonal test implied by its text, _symmetric's
+unreachable unit <= 0, _check_design's counts default that no caller uses, generate_sheet's blocks 1 -> 0).  Found on
+the way and fixed: a wrong centre-run count of a factorial or Box-Behnken design declared ``center_runs: 3.0`` (which
+the schema's integer type accepts) read "expected 3.0 centre runs"; the messages now quote the count through
+_n_center_text, which was otherwise dead code (its one other caller needs a factorial or axial count that differs
+from the design's after every point was found run exactly once).  Seed 45 (``--per-module 1``, on the round's
+start): **18 of 20 killed, 90.0 %** as run (three listed before).  Survivors: measurement_order's float() of a
+fraction and _refuse_misplaced_points' ``repairs[0]`` -> ``repairs[-1]``, read only when there is one repair (both
+equivalent, listed; tests/inputs/test_misplaced_point_text_whole.py checks that whole line anyway, and kills the
+first misplaced run's ``bad[0]`` -> ``bad[-1]``).  Hand-written catalogue benchmarks/hand_written/inputs_2.py: 8 of 9
+at its first run; its survivor killed by tests/story/test_add_observable_used_uninformative_whole.py.
 """
 
 from __future__ import annotations
