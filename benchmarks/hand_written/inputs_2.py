@@ -4,8 +4,10 @@ inputs.py's), each written by reading the module, before any test was written ag
 First run (on 632bb26, before any test was written against these mutants): 8 of 9 killed, 88.9 %.  Survivor:
 story/advice _add_observable's filter of uninformative observables applied to every observable of a growth set, not
 only the added one (no test had an observable in use that is uninformative).
-After: 9 of 9 killed (tests/story/test_add_observable_used_uninformative_whole.py: an observable in use is
-uninformative, and the advice still names the informative one that gains most, with its gain and fraction).
+After: the survivor is killed by tests/story/test_add_observable_used_uninformative_whole.py (an observable in use
+is uninformative, and the advice still names the informative one that gains most, with its gain and fraction; the
+mutant applied by hand against that file), and the blocks mutant by tests/test_blocks_orthogonal_boundary_whole.py
+as well; the catalogue as a whole was not re-run after.
 """
 import sys
 from pathlib import Path
