@@ -1723,6 +1723,28 @@ residual|, and numpy's vectorised quicksort orders the ties by neither row nor l
 residual table's first runs, ties to the earlier row).  Listed equivalent: _choices without int() (read only
 through math.log, the same for np.int64), canonical _orient's range(shape[0]) (its eigenvectors are square) and
 extrapolation_warnings' run_hi from row -1 (to_actual of one point is a one-row array).
+
+The input rows (issue #40: transcription/*, paper, data, csv_cells, design, tolerance, formulas, numbers, story/*,
+blocks, design_inference, design_generation, design_check, scenario, io; 23 rows).  First the 25 mutants no test of
+their row executed (coverage of the default suite): 12 killed by new tests (the transcription check's default of ten
+leads, the first missing factor cell it names and its stored frame, validation's block notes, a bad table outside
+the study folder, the typo screen's NaN studentised residuals of an exact fit, ccd_points' default, a sheet without
+a seed), 8 by existing tests (defaults on a def line and the forked figure writer, which coverage does not see), one
+after a fix (below) and 4 listed equivalent (the block note's orthogonal test implied by its text, _symmetric's
+unreachable unit <= 0, _check_design's counts default that no caller uses, generate_sheet's blocks 1 -> 0).  Found on
+the way and fixed: a wrong centre-run count of a factorial or Box-Behnken design declared ``center_runs: 3.0`` (which
+the schema's integer type accepts) read "expected 3.0 centre runs"; the messages now quote the count through
+_n_center_text, which was otherwise dead code (its one other caller needs a factorial or axial count that differs
+from the design's after every point was found run exactly once).  Seed 45 (``--per-module 1``, on the round's
+start): **18 of 20 killed, 90.0 %** as run (three listed before).  Survivors: measurement_order's float() of a
+fraction and _refuse_misplaced_points' ``repairs[0]`` -> ``repairs[-1]``, read only when there is one repair (both
+equivalent, listed; tests/inputs/test_misplaced_point_text_whole.py checks that whole line anyway, and kills the
+first misplaced run's ``bad[0]`` -> ``bad[-1]``).  Hand-written catalogue benchmarks/hand_written/inputs_2.py: 8 of 9
+at its first run; its survivor killed by tests/story/test_add_observable_used_uninformative_whole.py.  Seed 46 on
+the same rows, after those tests were committed and aimed at by none: **19 of 20 killed, 95.0 %** as run (three listed
+before).  Survivor: check_blocks' ``worst < ORTHOGONAL_CORRELATION`` -> ``<=``, killed by
+tests/test_blocks_orthogonal_boundary_whole.py (a term correlated with the block column exactly 1/100 in floating
+point, either sign, and one a hair below).
 """
 
 from __future__ import annotations
@@ -1962,6 +1984,7 @@ TABLE: dict[str, dict] = {
                   "tests/transcription/test_other_repairs_text_whole.py", "tests/transcription/test_repair_explains_whole.py",
                   "tests/transcription/test_likely_typos_few_runs_whole.py",
                   "tests/transcription/test_likely_typos_three_se_whole.py",
+                  "tests/transcription/test_studentised_exact_fit_whole.py",
                   "tests/test_reported_numbers.py", "tests/test_core_contracts.py"],
     },
     "demid/sampling/exact.py": {
@@ -2209,7 +2232,8 @@ TABLE: dict[str, dict] = {
                   "tests/transcription/test_check_messages_whole.py", "tests/transcription/test_check_ranking_whole.py",
                   "tests/test_reconstruct.py", "tests/transcription/test_published_empty_whole.py", "tests/inputs/test_cli.py::test_check_transcription_cli_finds_planted_slip",
                   "tests/inputs/test_cli.py::test_check_transcription_cli_consistent_exit_0",
-                  "tests/transcription/test_check_partial_leads_whole.py"],
+                  "tests/transcription/test_check_partial_leads_whole.py",
+                  "tests/transcription/test_check_leads_and_cells_whole.py"],
     },
     "demid/data.py": {
         "functions": None,
@@ -2220,6 +2244,7 @@ TABLE: dict[str, dict] = {
                   "tests/inputs/test_check_header_whole.py", "tests/inputs/test_design_inference.py",
                   "tests/inputs/test_design_generation.py", "tests/inputs/test_run_numbers_whole.py",
                   "tests/inputs/test_read_printed_whole.py", "tests/inputs/test_targets_sign_symmetry_whole.py",
+                  "tests/inputs/test_block_notes_whole.py", "tests/inputs/test_table_outside_study_whole.py",
                   "-knot readme"],
     },
     # parse_number, infer_coding and check_design, once in data.py
@@ -2344,7 +2369,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_blocks.py", "tests/criticism/test_blocks_steps.py", "tests/test_blocks_properties.py",
                   "tests/test_blocks_whole.py", "tests/test_blocks_json_whole.py",
-                  "tests/inputs/test_data.py"],
+                  "tests/inputs/test_data.py", "tests/inputs/test_block_notes_whole.py",
+                  "tests/test_blocks_orthogonal_boundary_whole.py"],
     },
     "demid/combinations/axes.py": {
         "functions": None,
@@ -2373,7 +2399,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_reach.py", "tests/criticism/test_edges.py", "tests/story/test_check_target_advice_whole.py",
                   "-knot heap", _NOT_WORKFLOW,
                   "tests/test_shares_apart.py", "tests/test_kriging.py", "tests/story/test_unpredictive_advice_whole.py",
-                  "tests/story/test_ridge_advice_rows_whole.py", "tests/story/test_level2_partial_whole.py"],
+                  "tests/story/test_ridge_advice_rows_whole.py", "tests/story/test_level2_partial_whole.py",
+                  "tests/story/test_add_observable_used_uninformative_whole.py"],
     },
     "demid/criticism/one_run.py": {
         "functions": None,
@@ -2433,7 +2460,8 @@ TABLE: dict[str, dict] = {
                   "tests/inputs/test_design_whole.py", "tests/inputs/test_design_check_coding_whole.py",
                   "tests/inputs/test_level_coding_axial_whole.py", "tests/inputs/test_level_coding_far_from_zero_whole.py",
                   "tests/inputs/test_design_check_messages_whole.py", "tests/inputs/test_inputs_edges_whole.py",
-                  "tests/inputs/test_design_points_missing_whole.py"],
+                  "tests/inputs/test_design_points_missing_whole.py",
+                  "tests/inputs/test_centre_run_count_text_whole.py", "tests/inputs/test_misplaced_point_text_whole.py"],
     },
     "demid/criticism/discrimination.py": {
         "functions": None,
@@ -2627,6 +2655,27 @@ EQUIVALENT: dict[str, str] = {
         "the plausible set's fraction from the last instead of the first row of a scenario and factor: "
         "robust_identifiability.csv holds one row per material, scenario and factor, and verdict_frame is given one "
         "material's rows (story.build), as for the strict rows' #1 and #6",
+    # --- the input rows: mutants no test executed (coverage of the default suite) and the seed-45/46 draws
+    "demid/data.py::_block_notes::check.orthogonal and n.startswith('blocking is orthogonal') => "
+    "n.startswith('blocking is orthogonal')#0":
+        "check_blocks writes a note starting 'blocking is orthogonal' only when the blocking is orthogonal (the other "
+        "note reads 'blocking is not orthogonal', the no-centre note 'block(s) ...'): the test of orthogonal is "
+        "implied by the text's",
+    "demid/design_inference.py::_symmetric::False => True#0":
+        "unit > 0 for every call: _placement passes half the distance between two level medians of _levels, whose "
+        "groups are sorted and separated by a gap, so the medians strictly increase (the branch is unreachable)",
+    "demid/design_check.py::_check_design::True => False#0":
+        "the default of counts is never used: check_design and _passes (its only callers) pass all eight arguments",
+    "demid/design_check.py::_refuse_misplaced_points::0 => -1#1":
+        "repairs[0] read only when len(repairs) == 1: the last repair is the first",
+    "demid/design_check.py::_refuse_misplaced_points::0 => -1#2":
+        "classify_points of the one-row point[None, :]: its last label is its first",
+    "demid/design_generation.py::generate_sheet::1 => 0#0":
+        "blocks is read only by ``blocks > 1``, false for 0 and 1 alike, and RunSheet does not hold it",
+    "demid/story/measurements.py::measurement_order::float(f) => f#0":
+        "f comes from the ranking frame's numeric feasible_fraction_pct column (built numeric, or read back by "
+        "pd.read_csv in story.build): an np.float64 or np.int64 of the same value divides, compares and prints "
+        "(:.3g, :.1f, rough_text) alike",
     # --- the numerical core's seed-42 draw (per module 2), read after it was scored
     "demid/sampling/roots.py::Lines.cut::1 => 2#1":
         "the roots' reshape(n, -2) is reshape(n, -1): numpy (2.4.6 pinned) takes any negative size as the one "

@@ -128,3 +128,19 @@ def test_the_fragment_reads_back_as_the_material_config_after_its_comments(respo
                                 "with targets),")
     assert yaml.safe_load(text) == {"materials": {"glass": sheet.material_config("tables/glass.csv", responses)}}
     assert list(yaml.safe_load(text)["materials"]["glass"]["factors"]) == ["mu", "e", "k"]
+
+
+@pytest.mark.parametrize("design_type, k, centres", [("ccd", 2, 5), ("ccd", 4, 3), ("box_behnken", 3, 3),
+                                                     ("factorial", 2, 2)])
+def test_without_a_seed_the_sheet_is_the_one_demid_design_writes_without_one(design_type, k, centres):
+    """``demid design`` without --seed uses seed 0: the run order is numpy's default_rng(0) permutation of the
+    standard order, and every run's factor values are its standard-order point's, in actual units."""
+    factors = [FactorRange(f"x{i}", -1.0 - i, 2.0 + 3 * i) for i in range(k)]
+    frame = generate_sheet(design_type, factors, center_runs=centres).to_frame()
+    a = 2 ** (k / 4) if design_type == "ccd" else 1.0
+    coded = coded_points(design_type, k, a, centres)
+    order = np.random.default_rng(0).permutation(len(coded))
+    assert list(frame["run"]) == list(range(1, len(coded) + 1)) and list(frame["std_order"]) == list(order + 1)
+    for i, f in enumerate(factors):
+        centre, half = (f.low + f.high) / 2, (f.high - f.low) / (2 * a)
+        np.testing.assert_allclose(frame[f.name], centre + half * coded[order, i], rtol=1e-11, atol=1e-11)

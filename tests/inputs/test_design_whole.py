@@ -118,6 +118,15 @@ def test_ccd_points_are_yates_factorial_then_axial_pairs_then_centres(k, centres
     assert list(classify_points(skewed, per_factor)) == list(labels)
 
 
+@pytest.mark.parametrize("k", [1, 2, 3, 4])
+def test_ccd_points_by_default_are_the_rotatable_ccd_with_five_centre_runs(k):
+    """The default the README's studies use: alpha = (2^k)^(1/4), five centre runs after the 2^k + 2k others."""
+    pts = ccd_points(k)
+    assert pts.shape == (2 ** k + 2 * k + 5, k)
+    np.testing.assert_array_equal(pts, ccd_points(k, 2 ** (k / 4), 5))
+    assert not pts[-5:].any() and np.all(np.abs(pts[:-5]).max(axis=1) > 0)
+
+
 @pytest.mark.parametrize("k", [3, 4])
 def test_box_behnken_points_are_a_square_on_every_pair_then_centres(k):
     pts = box_behnken_points(k, 2)
