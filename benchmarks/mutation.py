@@ -1846,7 +1846,7 @@ TABLE: dict[str, dict] = {
                   "tests/combinations/test_canonical_published.py", "tests/test_surrogate_anova_whole.py",
                   "tests/test_influence_refit_limit_whole.py", "tests/test_anova_frame_whole.py",
                   "tests/test_fit_statistics_scales_whole.py",
-                  "tests/test_predict_plain_points_whole.py"],
+                  "tests/test_predict_plain_points_whole.py", "tests/test_fit_material_coding_whole.py"],
     },
     "demid/precision.py": {
         "functions": None,
