@@ -2328,7 +2328,8 @@ TABLE: dict[str, dict] = {
                   "tests/combinations/test_break_ridge_whole.py", "tests/combinations/test_combination_boundaries_whole.py",
                   "tests/story/test_ridge_advice_rows_whole.py", "tests/combinations/test_local_thickness_cells_whole.py",
                   "tests/combinations/test_combination_equation_whole.py", "tests/combinations/test_gradient_coded_whole.py",
-                  "tests/combinations/test_break_ridge_curved_whole.py"],
+                  "tests/combinations/test_break_ridge_curved_whole.py",
+                  "tests/combinations/test_plausible_sets_unjudged_whole.py"],
     },
     "demid/story/advice.py": {
         "functions": None,
