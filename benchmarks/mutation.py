@@ -4094,6 +4094,39 @@ EQUIVALENT: dict[str, str] = {
         "O(h^2), moves by round-off and the credible bounds by a few ulps (at most 4e-15 of themselves over 60 "
         "posteriors of 5-101 nodes, log factors among them) "
         "(tests/uncertainty/test_posterior_interval_tilted_whole.py kills slope[0] -> slope[-1])",
+    # --- never-executed lines of the numerical core (coverage triage), read with their callers
+    "demid/sampling/planes.py::Planes._resultants::0 => 1#2":
+        "the return for a batch without resultants: _breakpoints calls _resultants only when t_degree.max() > 0, "
+        "and then the first loop appends a row for every (plane, observable) of positive degree, so rows is never "
+        "empty and the branch (its empty arrays' shapes included) is never run",
+    "demid/sampling/planes.py::Planes._resultants::0 => -1#2":
+        "the return for a batch without resultants: _breakpoints calls _resultants only when t_degree.max() > 0, "
+        "and then the first loop appends a row for every (plane, observable) of positive degree, so rows is never "
+        "empty and the branch (its empty arrays' shapes included) is never run",
+    "demid/sampling/planes.py::Planes._resultants::0 => 1#4":
+        "the return for a batch without resultants: _breakpoints calls _resultants only when t_degree.max() > 0, "
+        "and then the first loop appends a row for every (plane, observable) of positive degree, so rows is never "
+        "empty and the branch (its empty arrays' shapes included) is never run",
+    "demid/sampling/planes.py::Planes._resultants::0 => -1#4":
+        "the return for a batch without resultants: _breakpoints calls _resultants only when t_degree.max() > 0, "
+        "and then the first loop appends a row for every (plane, observable) of positive degree, so rows is never "
+        "empty and the branch (its empty arrays' shapes included) is never run",
+    "demid/sampling/roots.py::sylvester_det::1 => 2#4":
+        "the resultant of two constants (p = q = 0): both callers in Planes._resultants pass curves of degree >= 1 "
+        "(degree 0 is skipped before each call, and the derivative of a degree-d curve has degree d - 1 >= 0 with "
+        "the curve's own p = d >= 1), so size = p + q >= 1 and the branch is never run",
+    "demid/sampling/roots.py::sylvester_det::1 => 0#4":
+        "the resultant of two constants (p = q = 0): both callers in Planes._resultants pass curves of degree >= 1 "
+        "(degree 0 is skipped before each call, and the derivative of a degree-d curve has degree d - 1 >= 0 with "
+        "the curve's own p = d >= 1), so size = p + q >= 1 and the branch is never run",
+    "demid/surrogate.py::fit_frames::True => False#1":
+        "ignore_index of one of fit_frames' concatenations: the frame's index is never read: write_parquet (and "
+        "as_stored) write it with reset_index(drop=True), choose_surrogates resets it before its own concatenation,"
+        " and mark_criticism and every later reader iterate rows or columns, never the index",
+    "demid/surrogate.py::fit_frames::True => False#2":
+        "ignore_index of one of fit_frames' concatenations: the frame's index is never read: write_parquet (and "
+        "as_stored) write it with reset_index(drop=True), choose_surrogates resets it before its own concatenation,"
+        " and mark_criticism and every later reader iterate rows or columns, never the index",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
