@@ -4287,6 +4287,37 @@ SETTINGS: dict[str, str] = {
         "replicates), as polish_spans' 3 -> 4: an end is accepted only where the optimiser's point is admissible "
         "and extends the span, so a fourth start can only move an end outward, and on every set the Sobol tests "
         "hold the three nearest the end already reach the same boundary",
+    # --- chunk sizes (coverage triage, seed 45)
+    "demid/surrogate.py::predict_all::65536 => 65537#0":
+        "the chunk size of predict_all's model matrices (points evaluated per matrix product, for memory): each "
+        "point's value is the same formula whatever chunk it falls in; only BLAS's blocking of the product changes,"
+        " so values agree to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 factors, "
+        "chunks 4095-4097 and 65535-65537), nothing a user reads",
+    "demid/surrogate.py::predict_all::65536 => 65535#0":
+        "the chunk size of predict_all's model matrices (points evaluated per matrix product, for memory): each "
+        "point's value is the same formula whatever chunk it falls in; only BLAS's blocking of the product changes,"
+        " so values agree to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 factors, "
+        "chunks 4095-4097 and 65535-65537), nothing a user reads",
+    "demid/kriging.py::KrigingSurrogate.predict::4096 => 4097#0":
+        "the chunk size of kriging's mean (points evaluated per matrix product, for memory): each point's value is "
+        "the same formula whatever chunk it falls in; only BLAS's blocking of the product changes, so values agree "
+        "to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 factors, chunks 4095-4097 "
+        "and 65535-65537), nothing a user reads",
+    "demid/kriging.py::KrigingSurrogate.predict::4096 => 4095#0":
+        "the chunk size of kriging's mean (points evaluated per matrix product, for memory): each point's value is "
+        "the same formula whatever chunk it falls in; only BLAS's blocking of the product changes, so values agree "
+        "to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 factors, chunks 4095-4097 "
+        "and 65535-65537), nothing a user reads",
+    "demid/kriging.py::KrigingSurrogate.se_mean::4096 => 4097#0":
+        "the chunk size of kriging's standard error of the mean (points evaluated per matrix product, for memory): "
+        "each point's value is the same formula whatever chunk it falls in; only BLAS's blocking of the product "
+        "changes, so values agree to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 "
+        "factors, chunks 4095-4097 and 65535-65537), nothing a user reads",
+    "demid/kriging.py::KrigingSurrogate.se_mean::4096 => 4095#0":
+        "the chunk size of kriging's standard error of the mean (points evaluated per matrix product, for memory): "
+        "each point's value is the same formula whatever chunk it falls in; only BLAS's blocking of the product "
+        "changes, so values agree to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 "
+        "factors, chunks 4095-4097 and 65535-65537), nothing a user reads",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
