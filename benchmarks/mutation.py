@@ -4127,6 +4127,25 @@ EQUIVALENT: dict[str, str] = {
         "ignore_index of one of fit_frames' concatenations: the frame's index is never read: write_parquet (and "
         "as_stored) write it with reset_index(drop=True), choose_surrogates resets it before its own concatenation,"
         " and mark_criticism and every later reader iterate rows or columns, never the index",
+    # --- defaults no caller leaves out (coverage triage)
+    "demid/uncertainty/posterior.py::gaussian_loglik::False => True#0":
+        "the default of predictive: both callers (subset_posteriors' grid and _qmc_posteriors) pass predictive "
+        "positionally, so the default is never read",
+    "demid/uncertainty/plausible.py::summarise_set::16 => 15#0":
+        "the default Sobol count 2^15 for 2^16 (more than three factors): each of summarise_set's three callers "
+        "(the plausible table, the ranking, the sweep) passes its own sobol_points (as 2 => 1#0)",
+    "demid/uncertainty/plausible.py::plausible_identifiability_frame::2 => 3#0":
+        "the default sobol_points (2 ** 16): its one caller (uncertainty/material.py) always passes the analysis "
+        "size, so the default is never read (as 2 => 1#0)",
+    "demid/uncertainty/plausible.py::plausible_identifiability_frame::16 => 17#0":
+        "the default sobol_points (2 ** 16): its one caller (uncertainty/material.py) always passes the analysis "
+        "size, so the default is never read (as 2 => 1#0)",
+    "demid/uncertainty/plausible.py::plausible_identifiability_frame::16 => 15#0":
+        "the default sobol_points (2 ** 16): its one caller (uncertainty/material.py) always passes the analysis "
+        "size, so the default is never read (as 2 => 1#0)",
+    "demid/uncertainty/recommended.py::recommended_point::401 => 402#0":
+        "the default grid size: its one caller (analyse_material) passes n=sizes['plausible'], so the default is "
+        "never read",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
@@ -4318,6 +4337,19 @@ SETTINGS: dict[str, str] = {
         "each point's value is the same formula whatever chunk it falls in; only BLAS's blocking of the product "
         "changes, so values agree to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 "
         "factors, chunks 4095-4097 and 65535-65537), nothing a user reads",
+    # --- scramble seeds and bin counts (coverage triage)
+    "demid/uncertainty/plausible.py::summarise_set::0 => 1#0":
+        "the default scramble seed of the Sobol points above three factors (read by the ranking's fractions, which "
+        "pass none): another fixed seed gives an equally stratified, equally deterministic sample",
+    "demid/uncertainty/recommended.py::_points::0 => 1#0":
+        "the scramble seed of the recommended point's Sobol candidates above three factors: another fixed seed "
+        "gives an equally stratified, equally deterministic sample of 2^14 candidates",
+    "demid/combinations/axes.py::band_curve::4096 => 4097#0":
+        "how many equal bins scattered points (Sobol sets, more than 4096 distinct values) are cut into for the "
+        "band's centre line: a resolution, not a rule of the answer",
+    "demid/combinations/axes.py::band_curve::4096 => 4095#0":
+        "how many equal bins scattered points (Sobol sets, more than 4096 distinct values) are cut into for the "
+        "band's centre line: a resolution, not a rule of the answer",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
