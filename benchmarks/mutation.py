@@ -2079,7 +2079,8 @@ TABLE: dict[str, dict] = {
                   "tests/test_next_wave_reason_whole.py", "tests/test_propose_runs_whole.py",
                   "tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py",
                   "tests/test_next_wave_aim_whole.py", "tests/test_separating_over_omega_whole.py",
-                  "tests/test_next_wave_edge_runs_whole.py", "tests/test_next_wave_separating_count_whole.py"],
+                  "tests/test_next_wave_edge_runs_whole.py", "tests/test_next_wave_separating_count_whole.py",
+                  "tests/test_plan_materials_box_whole.py"],
     },
     "demid/wave_runs.py": {
         "functions": None,
