@@ -4351,6 +4351,19 @@ SETTINGS: dict[str, str] = {
     "demid/combinations/axes.py::band_curve::4096 => 4095#0":
         "how many equal bins scattered points (Sobol sets, more than 4096 distinct values) are cut into for the "
         "band's centre line: a resolution, not a rule of the answer",
+    # --- search settings of the exact and Sobol sets (coverage triage)
+    "demid/sampling/planes.py::Planes.spans::True => False#0":
+        "whether the span ends are refined by bisection: unrefined, they are the breakpoints of the feasible pieces"
+        " (exact edge and resultant roots) already; the bisection moves them by round-off (at most 1.6e-14 of the "
+        "range over 35 random two- and three-factor exact sets of one and two quadratics)",
+    "demid/sampling/quadrature.py::zoom_min::11 => 12#0":
+        "one more zoom round: the minimiser, already placed to a few 1e-11 of the bracket, is placed eight times "
+        "closer (the 10-round variant is killed by tests/sampling/test_zoom_min_whole.py)",
+    "demid/sampling/sobol.py::_extreme_points::3 => 2#0":
+        "how many of the most extreme admissible Sobol points per coordinate start the span polishing (two instead "
+        "of three, as sobol_fraction's 3 -> 4): an end is accepted only where the optimiser's point is admissible "
+        "and extends the span, and on every Sobol set the tests hold the two nearest the end reach the same "
+        "boundary",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
