@@ -1782,7 +1782,8 @@ TABLE: dict[str, dict] = {
                   "tests/sampling/test_polish_thin_ring_whole.py", "tests/sampling/test_state_frame_of_sampled_sets_whole.py",
                   "tests/uncertainty/test_plausible_given_sets_whole.py", "tests/uncertainty/test_sweep_given_sets_whole.py",
                   "tests/combinations/test_combination_equation_whole.py", "tests/story/test_ridge_advice_rows_whole.py",
-                  "tests/sampling/test_polish_worst_residual_whole.py"],
+                  "tests/sampling/test_polish_worst_residual_whole.py",
+                  "tests/sampling/test_grid_thin_sheet_spans_whole.py"],
     },
     "demid/sampling/domain.py": {
         "functions": None,
