@@ -4148,6 +4148,11 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/recommended.py::recommended_point::401 => 402#0":
         "the default grid size: its one caller (analyse_material) passes n=sizes['plausible'], so the default is "
         "never read",
+    # --- seed 45 (numerical core)
+    "demid/canonical.py::Canonical.to_json::float(self.ridge_value) => self.ridge_value#0":
+        "ridge_value is already a Python float: its one producer, canonical_analysis, passes surface(xr), which "
+        "returns float(...), and the field's default is float('nan'); float() of a float is that float, so the JSON"
+        " value and type are the same",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
