@@ -4370,6 +4370,13 @@ SETTINGS: dict[str, str] = {
         "of three, as sobol_fraction's 3 -> 4): an end is accepted only where the optimiser's point is admissible "
         "and extends the span, and on every Sobol set the tests hold the two nearest the end reach the same "
         "boundary",
+    # --- the Pareto front's polishing caps (coverage triage)
+    "demid/pareto.py::polish_front::21 => 22#0":
+        "how many error caps (from 0 to max_error, and on to the front's end) the sampled front is polished at "
+        "above three factors: a resolution of the front, each polished point an optimum at its own cap",
+    "demid/pareto.py::polish_front::21 => 20#0":
+        "how many error caps (from 0 to max_error, and on to the front's end) the sampled front is polished at "
+        "above three factors: a resolution of the front, each polished point an optimum at its own cap",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
