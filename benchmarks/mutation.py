@@ -2320,7 +2320,8 @@ TABLE: dict[str, dict] = {
                   "tests/combinations/test_combination_material_whole.py",
                   "tests/combinations/test_combination_outputs.py", "tests/story/test_verdicts.py",
                   "tests/combinations/test_combination_boundaries_whole.py",
-                  "tests/combinations/test_local_thickness_cells_whole.py"],
+                  "tests/combinations/test_local_thickness_cells_whole.py",
+                  "tests/combinations/test_linear_statement_whole.py"],
     },
     "demid/combinations/material.py": {
         "functions": None,
