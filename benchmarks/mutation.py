@@ -4156,6 +4156,11 @@ EQUIVALENT: dict[str, str] = {
         "ridge_value is already a Python float: its one producer, canonical_analysis, passes surface(xr), which "
         "returns float(...), and the field's default is float('nan'); float() of a float is that float, so the JSON"
         " value and type are the same",
+    # --- seed 46 (numerical core)
+    "demid/sampling/quadrature.py::integrate::0 => -1#0":
+        "length[length == 0] = 1.0 for == -1: a total length is a bincount of positive piece lengths (pieces no "
+        "longer than 1e-15 are dropped first), so it is 0 only for an owner without pieces, and length is read only"
+        " as length[owners] of owners that have pieces: the guard's value is never read",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
