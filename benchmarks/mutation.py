@@ -1692,7 +1692,7 @@ extrapolation_warnings' run_hi from row -1 (to_actual of one point is a one-row 
 
 The numerical core's never-run mutants (a coverage triage of its 33 rows: 53 mutants whose line no test of the row
 executed, most of them defaults on the continuation lines of multi-line signatures, which line coverage misses),
-each read with its callers and run: 21 are killed by the rows' tests as they stood (a default read by a test: the
+each read with its callers and run: 14 are killed by the rows' tests as they stood (a default read by a test: the
 quadrature's columns, ten zoom rounds, the next wave's plausible grid, percent_text's digits, the ranking's and the
 posteriors' Sobol counts, a negative scramble seed, the stop rule's NaN band), 7 by new tests (fit_material without
 a coding against least squares in the declared design's coding, predict_all with a field that is not a quadratic,
