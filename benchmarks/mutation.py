@@ -1745,6 +1745,32 @@ the same rows, after those tests were committed and aimed at by none: **19 of 20
 before).  Survivor: check_blocks' ``worst < ORTHOGONAL_CORRELATION`` -> ``<=``, killed by
 tests/test_blocks_orthogonal_boundary_whole.py (a term correlated with the block column exactly 1/100 in floating
 point, either sign, and one a hair below).
+
+The numerical core's never-run mutants (a coverage triage of its 33 rows: 53 mutants whose line no test of the row
+executed, most of them defaults on the continuation lines of multi-line signatures, which line coverage misses),
+each read with its callers and run: 14 are killed by the rows' tests as they stood (a default read by a test: the
+quadrature's columns, ten zoom rounds, the next wave's plausible grid, percent_text's digits, the ranking's and the
+posteriors' Sobol counts, a negative scramble seed, the stop rule's NaN band), 7 by new tests (fit_material without
+a coding against least squares in the declared design's coding, predict_all with a field that is not a quadratic,
+plausible_sets without judged scenarios against the bands written out, the next wave planned by hand against the
+plausible spans widened and clipped, the combination sentence written out, the ranking's own posteriors against
+fine quadrature); 14 are listed equivalent (a branch the one caller never reaches: Planes._resultants without rows,
+the resultant of two constants; fit_frames' index, never read; defaults every caller passes) and 18 as settings
+(chunk sizes, agreeing to round-off; the spans' bisection polish, within 1.6e-14 of the breakpoints; one more zoom
+round; polishing starts; Pareto caps; band-curve bins; scramble seeds and default Sobol sizes).
+
+Seed 45 (``--per-module 1``, the 33 numerical-core rows, run after the triage's first tests): **28 of 31 killed,
+90.3 %** (two listed equivalent).  Survivors: grid ``cell_count``'s sampled span update on all() instead of any(),
+killed by tests/sampling/test_grid_thin_sheet_spans_whole.py (a three-factor sheet thinner than the outermost
+slab's sub-grid, its spans from the sampled cells' points); kriging's predict chunk (a setting); canonical
+``to_json``'s float() of a float (equivalent).  The hand-written catalogue numerics_2 (eight bugs) was killed 8 of 8
+on its first run.
+
+Seed 46 (``--per-module 1``, the same 33 rows, started after the triage's and seed 45's tests were committed, none
+aimed at it; the ranking's own-posterior test came after its start): **27 of 29 killed, 93.1 %** (four listed
+equivalent).  Survivors, both listed equivalent after: integrate's zero-length guard at -1 (the guarded lengths are
+never read) and wave_runs ``full_rank``'s tolerance without its max(|m|, 1) scale (its callers' coded points keep
+every model-matrix entry within [-1, 1], so the scale is 1).
 """
 
 from __future__ import annotations
@@ -1838,7 +1864,8 @@ TABLE: dict[str, dict] = {
                   "tests/sampling/test_polish_thin_ring_whole.py", "tests/sampling/test_state_frame_of_sampled_sets_whole.py",
                   "tests/uncertainty/test_plausible_given_sets_whole.py", "tests/uncertainty/test_sweep_given_sets_whole.py",
                   "tests/combinations/test_combination_equation_whole.py", "tests/story/test_ridge_advice_rows_whole.py",
-                  "tests/sampling/test_polish_worst_residual_whole.py"],
+                  "tests/sampling/test_polish_worst_residual_whole.py",
+                  "tests/sampling/test_grid_thin_sheet_spans_whole.py"],
     },
     "demid/sampling/domain.py": {
         "functions": None,
@@ -1902,7 +1929,7 @@ TABLE: dict[str, dict] = {
                   "tests/combinations/test_canonical_published.py", "tests/test_surrogate_anova_whole.py",
                   "tests/test_influence_refit_limit_whole.py", "tests/test_anova_frame_whole.py",
                   "tests/test_fit_statistics_scales_whole.py",
-                  "tests/test_predict_plain_points_whole.py"],
+                  "tests/test_predict_plain_points_whole.py", "tests/test_fit_material_coding_whole.py"],
     },
     "demid/precision.py": {
         "functions": None,
@@ -2125,7 +2152,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_ranking_stored_sets_whole.py",
                   "tests/uncertainty/test_ranking_four_factors_whole.py", "tests/uncertainty/test_ranking_contraction_whole.py",
                   "tests/uncertainty/test_ranking_hair_miss_whole.py",
-                  "tests/uncertainty/test_ranking_equal_fractions_whole.py"],
+                  "tests/uncertainty/test_ranking_equal_fractions_whole.py",
+                  "tests/uncertainty/test_ranking_own_posteriors_whole.py"],
     },
     "demid/next_wave.py": {
         "functions": None,
@@ -2136,7 +2164,8 @@ TABLE: dict[str, dict] = {
                   "tests/test_next_wave_reason_whole.py", "tests/test_propose_runs_whole.py",
                   "tests/test_boundary_runs.py", "tests/test_boundary_runs_batch_properties.py",
                   "tests/test_next_wave_aim_whole.py", "tests/test_separating_over_omega_whole.py",
-                  "tests/test_next_wave_edge_runs_whole.py", "tests/test_next_wave_separating_count_whole.py"],
+                  "tests/test_next_wave_edge_runs_whole.py", "tests/test_next_wave_separating_count_whole.py",
+                  "tests/test_plan_materials_box_whole.py"],
     },
     "demid/wave_runs.py": {
         "functions": None,
@@ -2184,7 +2213,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_qmc_posterior_properties.py", "tests/uncertainty/test_grid_posterior_whole.py",
                   "tests/uncertainty/test_qmc_posterior_whole.py", "tests/uncertainty/test_posterior_small_grids_whole.py",
                   "tests/uncertainty/test_ranking_whole.py", "tests/uncertainty/test_posterior_interval_order_whole.py",
-                  "tests/story/test_ridge_advice_rows_whole.py", "tests/uncertainty/test_posterior_flat_observable_whole.py"],
+                  "tests/story/test_ridge_advice_rows_whole.py", "tests/uncertainty/test_posterior_flat_observable_whole.py",
+                  "tests/uncertainty/test_ranking_own_posteriors_whole.py"],
     },
     "demid/uncertainty/plausible.py": {
         "functions": None,
@@ -2378,7 +2408,8 @@ TABLE: dict[str, dict] = {
                   "tests/combinations/test_combination_material_whole.py",
                   "tests/combinations/test_combination_outputs.py", "tests/story/test_verdicts.py",
                   "tests/combinations/test_combination_boundaries_whole.py",
-                  "tests/combinations/test_local_thickness_cells_whole.py"],
+                  "tests/combinations/test_local_thickness_cells_whole.py",
+                  "tests/combinations/test_linear_statement_whole.py"],
     },
     "demid/combinations/material.py": {
         "functions": None,
@@ -2388,7 +2419,8 @@ TABLE: dict[str, dict] = {
                   "tests/combinations/test_break_ridge_whole.py", "tests/combinations/test_combination_boundaries_whole.py",
                   "tests/story/test_ridge_advice_rows_whole.py", "tests/combinations/test_local_thickness_cells_whole.py",
                   "tests/combinations/test_combination_equation_whole.py", "tests/combinations/test_gradient_coded_whole.py",
-                  "tests/combinations/test_break_ridge_curved_whole.py"],
+                  "tests/combinations/test_break_ridge_curved_whole.py",
+                  "tests/combinations/test_plausible_sets_unjudged_whole.py"],
     },
     "demid/story/advice.py": {
         "functions": None,
@@ -4192,6 +4224,74 @@ EQUIVALENT: dict[str, str] = {
         "O(h^2), moves by round-off and the credible bounds by a few ulps (at most 4e-15 of themselves over 60 "
         "posteriors of 5-101 nodes, log factors among them) "
         "(tests/uncertainty/test_posterior_interval_tilted_whole.py kills slope[0] -> slope[-1])",
+    # --- never-executed lines of the numerical core (coverage triage), read with their callers
+    "demid/sampling/planes.py::Planes._resultants::0 => 1#2":
+        "the return for a batch without resultants: _breakpoints calls _resultants only when t_degree.max() > 0, "
+        "and then the first loop appends a row for every (plane, observable) of positive degree, so rows is never "
+        "empty and the branch (its empty arrays' shapes included) is never run",
+    "demid/sampling/planes.py::Planes._resultants::0 => -1#2":
+        "the return for a batch without resultants: _breakpoints calls _resultants only when t_degree.max() > 0, "
+        "and then the first loop appends a row for every (plane, observable) of positive degree, so rows is never "
+        "empty and the branch (its empty arrays' shapes included) is never run",
+    "demid/sampling/planes.py::Planes._resultants::0 => 1#4":
+        "the return for a batch without resultants: _breakpoints calls _resultants only when t_degree.max() > 0, "
+        "and then the first loop appends a row for every (plane, observable) of positive degree, so rows is never "
+        "empty and the branch (its empty arrays' shapes included) is never run",
+    "demid/sampling/planes.py::Planes._resultants::0 => -1#4":
+        "the return for a batch without resultants: _breakpoints calls _resultants only when t_degree.max() > 0, "
+        "and then the first loop appends a row for every (plane, observable) of positive degree, so rows is never "
+        "empty and the branch (its empty arrays' shapes included) is never run",
+    "demid/sampling/roots.py::sylvester_det::1 => 2#4":
+        "the resultant of two constants (p = q = 0): both callers in Planes._resultants pass curves of degree >= 1 "
+        "(degree 0 is skipped before each call, and the derivative of a degree-d curve has degree d - 1 >= 0 with "
+        "the curve's own p = d >= 1), so size = p + q >= 1 and the branch is never run",
+    "demid/sampling/roots.py::sylvester_det::1 => 0#4":
+        "the resultant of two constants (p = q = 0): both callers in Planes._resultants pass curves of degree >= 1 "
+        "(degree 0 is skipped before each call, and the derivative of a degree-d curve has degree d - 1 >= 0 with "
+        "the curve's own p = d >= 1), so size = p + q >= 1 and the branch is never run",
+    "demid/surrogate.py::fit_frames::True => False#1":
+        "ignore_index of one of fit_frames' concatenations: the frame's index is never read: write_parquet (and "
+        "as_stored) write it with reset_index(drop=True), choose_surrogates resets it before its own concatenation,"
+        " and mark_criticism and every later reader iterate rows or columns, never the index",
+    "demid/surrogate.py::fit_frames::True => False#2":
+        "ignore_index of one of fit_frames' concatenations: the frame's index is never read: write_parquet (and "
+        "as_stored) write it with reset_index(drop=True), choose_surrogates resets it before its own concatenation,"
+        " and mark_criticism and every later reader iterate rows or columns, never the index",
+    # --- defaults no caller leaves out (coverage triage)
+    "demid/uncertainty/posterior.py::gaussian_loglik::False => True#0":
+        "the default of predictive: both callers (subset_posteriors' grid and _qmc_posteriors) pass predictive "
+        "positionally, so the default is never read",
+    "demid/uncertainty/plausible.py::summarise_set::16 => 15#0":
+        "the default Sobol count 2^15 for 2^16 (more than three factors): each of summarise_set's three callers "
+        "(the plausible table, the ranking, the sweep) passes its own sobol_points (as 2 => 1#0)",
+    "demid/uncertainty/plausible.py::plausible_identifiability_frame::2 => 3#0":
+        "the default sobol_points (2 ** 16): its one caller (uncertainty/material.py) always passes the analysis "
+        "size, so the default is never read (as 2 => 1#0)",
+    "demid/uncertainty/plausible.py::plausible_identifiability_frame::16 => 17#0":
+        "the default sobol_points (2 ** 16): its one caller (uncertainty/material.py) always passes the analysis "
+        "size, so the default is never read (as 2 => 1#0)",
+    "demid/uncertainty/plausible.py::plausible_identifiability_frame::16 => 15#0":
+        "the default sobol_points (2 ** 16): its one caller (uncertainty/material.py) always passes the analysis "
+        "size, so the default is never read (as 2 => 1#0)",
+    "demid/uncertainty/recommended.py::recommended_point::401 => 402#0":
+        "the default grid size: its one caller (analyse_material) passes n=sizes['plausible'], so the default is "
+        "never read",
+    # --- seed 45 (numerical core)
+    "demid/canonical.py::Canonical.to_json::float(self.ridge_value) => self.ridge_value#0":
+        "ridge_value is already a Python float: its one producer, canonical_analysis, passes surface(xr), which "
+        "returns float(...), and the field's default is float('nan'); float() of a float is that float, so the JSON"
+        " value and type are the same",
+    # --- seed 46 (numerical core)
+    "demid/sampling/quadrature.py::integrate::0 => -1#0":
+        "length[length == 0] = 1.0 for == -1: a total length is a bincount of positive piece lengths (pieces no "
+        "longer than 1e-15 are dropped first), so it is 0 only for an owner without pieces, and length is read only"
+        " as length[owners] of owners that have pieces: the guard's value is never read",
+    # --- seed 46 (numerical core), read with its callers
+    "demid/wave_runs.py::full_rank::1e-08 * max(np.abs(m).max(), 1.0) => 1e-08#0":
+        "the rank tolerance's scale max(|m|, 1) is 1 for every input its two callers pass: design_count and _design"
+        " hand it points coded to the box or the search range (earlier runs inside it, validated table values "
+        "inside Omega, D-optimal picks from the box's grid and plausible points of the box), so every coordinate, "
+        "and every entry of the quadratic model matrix, lies in [-1, 1] (to 1e-12 of the range at the box's edge)",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
@@ -4358,6 +4458,82 @@ SETTINGS: dict[str, str] = {
         "replicates), as polish_spans' 3 -> 4: an end is accepted only where the optimiser's point is admissible "
         "and extends the span, so a fourth start can only move an end outward, and on every set the Sobol tests "
         "hold the three nearest the end already reach the same boundary",
+    # --- chunk sizes (coverage triage, seed 45)
+    "demid/surrogate.py::predict_all::65536 => 65537#0":
+        "the chunk size of predict_all's model matrices (points evaluated per matrix product, for memory): each "
+        "point's value is the same formula whatever chunk it falls in; only BLAS's blocking of the product changes,"
+        " so values agree to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 factors, "
+        "chunks 4095-4097 and 65535-65537), nothing a user reads",
+    "demid/surrogate.py::predict_all::65536 => 65535#0":
+        "the chunk size of predict_all's model matrices (points evaluated per matrix product, for memory): each "
+        "point's value is the same formula whatever chunk it falls in; only BLAS's blocking of the product changes,"
+        " so values agree to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 factors, "
+        "chunks 4095-4097 and 65535-65537), nothing a user reads",
+    "demid/kriging.py::KrigingSurrogate.predict::4096 => 4097#0":
+        "the chunk size of kriging's mean (points evaluated per matrix product, for memory): each point's value is "
+        "the same formula whatever chunk it falls in; only BLAS's blocking of the product changes, so values agree "
+        "to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 factors, chunks 4095-4097 "
+        "and 65535-65537), nothing a user reads",
+    "demid/kriging.py::KrigingSurrogate.predict::4096 => 4095#0":
+        "the chunk size of kriging's mean (points evaluated per matrix product, for memory): each point's value is "
+        "the same formula whatever chunk it falls in; only BLAS's blocking of the product changes, so values agree "
+        "to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 factors, chunks 4095-4097 "
+        "and 65535-65537), nothing a user reads",
+    "demid/kriging.py::KrigingSurrogate.se_mean::4096 => 4097#0":
+        "the chunk size of kriging's standard error of the mean (points evaluated per matrix product, for memory): "
+        "each point's value is the same formula whatever chunk it falls in; only BLAS's blocking of the product "
+        "changes, so values agree to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 "
+        "factors, chunks 4095-4097 and 65535-65537), nothing a user reads",
+    "demid/kriging.py::KrigingSurrogate.se_mean::4096 => 4095#0":
+        "the chunk size of kriging's standard error of the mean (points evaluated per matrix product, for memory): "
+        "each point's value is the same formula whatever chunk it falls in; only BLAS's blocking of the product "
+        "changes, so values agree to the last bits (at most 3e-16 of the largest over 9,000-140,000 points, 2-3 "
+        "factors, chunks 4095-4097 and 65535-65537), nothing a user reads",
+    # --- scramble seeds and bin counts (coverage triage)
+    "demid/uncertainty/plausible.py::summarise_set::0 => 1#0":
+        "the default scramble seed of the Sobol points above three factors (read by the ranking's fractions, which "
+        "pass none): another fixed seed gives an equally stratified, equally deterministic sample",
+    "demid/uncertainty/recommended.py::_points::0 => 1#0":
+        "the scramble seed of the recommended point's Sobol candidates above three factors: another fixed seed "
+        "gives an equally stratified, equally deterministic sample of 2^14 candidates",
+    "demid/combinations/axes.py::band_curve::4096 => 4097#0":
+        "how many equal bins scattered points (Sobol sets, more than 4096 distinct values) are cut into for the "
+        "band's centre line: a resolution, not a rule of the answer",
+    "demid/combinations/axes.py::band_curve::4096 => 4095#0":
+        "how many equal bins scattered points (Sobol sets, more than 4096 distinct values) are cut into for the "
+        "band's centre line: a resolution, not a rule of the answer",
+    # --- search settings of the exact and Sobol sets (coverage triage)
+    "demid/sampling/planes.py::Planes.spans::True => False#0":
+        "whether the span ends are refined by bisection: unrefined, they are the breakpoints of the feasible pieces"
+        " (exact edge and resultant roots) already; the bisection moves them by round-off (at most 1.6e-14 of the "
+        "range over 35 random two- and three-factor exact sets of one and two quadratics)",
+    "demid/sampling/quadrature.py::zoom_min::11 => 12#0":
+        "one more zoom round: the minimiser, already placed to a few 1e-11 of the bracket, is placed eight times "
+        "closer (the 10-round variant is killed by tests/sampling/test_zoom_min_whole.py)",
+    "demid/sampling/sobol.py::_extreme_points::3 => 2#0":
+        "how many of the most extreme admissible Sobol points per coordinate start the span polishing (two instead "
+        "of three, as sobol_fraction's 3 -> 4): an end is accepted only where the optimiser's point is admissible "
+        "and extends the span, and on every Sobol set the tests hold the two nearest the end reach the same "
+        "boundary",
+    # --- the Pareto front's polishing caps (coverage triage)
+    "demid/pareto.py::polish_front::21 => 22#0":
+        "how many error caps (from 0 to max_error, and on to the front's end) the sampled front is polished at "
+        "above three factors: a resolution of the front, each polished point an optimum at its own cap",
+    "demid/pareto.py::polish_front::21 => 20#0":
+        "how many error caps (from 0 to max_error, and on to the front's end) the sampled front is polished at "
+        "above three factors: a resolution of the front, each polished point an optimum at its own cap",
+    # --- the posteriors' Sobol defaults (coverage triage)
+    "demid/uncertainty/posterior.py::subset_posteriors::16 => 17#0":
+        "the default Sobol sample of the posteriors above three factors (2^17 for 2^16): a resolution; the pipeline"
+        " never reads it (analyse_material and the ranking pass their own sobol_points; grid_posterior has no "
+        "caller in demid)",
+    "demid/uncertainty/posterior.py::subset_posteriors::16 => 15#0":
+        "the default Sobol sample of the posteriors above three factors (2^15 for 2^16): a resolution; the pipeline"
+        " never reads it (analyse_material and the ranking pass their own sobol_points; grid_posterior has no "
+        "caller in demid)",
+    "demid/uncertainty/posterior.py::subset_posteriors::0 => 1#0":
+        "the default scramble seed of the posteriors' Sobol points above three factors: another fixed seed gives an"
+        " equally stratified, equally deterministic sample (analyse_material passes its own)",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
