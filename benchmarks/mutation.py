@@ -1874,6 +1874,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_orthonormal_basis_whole.py", "tests/criticism/test_transform_name_boundary_whole.py",
                   "tests/criticism/test_point_dict_whole.py", "tests/criticism/test_level1_spare_runs_whole.py",
                   "tests/criticism/test_models_backtransform_cap_whole.py",
+                  "tests/criticism/test_new_run_row_whole.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },
     "demid/criticism/catalogue.py": {
@@ -1963,6 +1964,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_level1_spare_runs_whole.py", "tests/criticism/test_level1_too_few_runs_whole.py",
                   "tests/criticism/test_point_dict_whole.py", "tests/criticism/test_runs_json_whole.py",
                   "tests/criticism/test_criticism_frame_whole.py", "tests/criticism/test_finding_json_nonfinite_whole.py",
+                  "tests/criticism/test_level1_run_candidates_whole.py",
                   "-knot 3f and not level2"],
     },
     "demid/criticism/level2.py": {
@@ -2411,7 +2413,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_deciding_runs_kinds_whole.py",
                   "tests/criticism/test_prediction_fitted_scatter_blocks_whole.py",
                   "tests/criticism/test_close_candidates_whole.py",
-                  "tests/criticism/test_prediction_factor_scatter_whole.py"],
+                  "tests/criticism/test_prediction_factor_scatter_whole.py",
+                  "tests/criticism/test_new_run_row_whole.py"],
     },
     "demid/criticism/reach.py": {
         "functions": None,
