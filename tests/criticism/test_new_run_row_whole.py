@@ -1,15 +1,16 @@
 """A new run's predicted response and its variance under a level-1 model with blocks, drift or a step
 (criticism.models.Model.new_run_row through discrimination.new_run_prediction), against statsmodels' OLS on the
 raw columns: the blocks effect-coded (their average, 0 in every column, at a new run), the drift as the raw run
-number (a new run ``later`` runs after the last), the step as 0/1 (a new run is after it).  The model's centring
-and scaling of its run-order columns must not change what it predicts; 2 and 3 factors, 1-3 blocks."""
+number (a new run ``later`` runs after the last, the next one unless said otherwise), the step as 0/1 (a new run
+is after it).  The model's centring and scaling of its run-order columns must not change what it predicts; 2 and 3
+factors, 1-3 blocks."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 import statsmodels.api as sm
 
-from demid.criticism.discrimination import new_run_prediction
+from demid.criticism.discrimination import new_run_prediction, prediction_parts
 from demid.criticism.level1 import prepare_data
 from demid.criticism.models import Model, ModelForm
 from demid.design import model_matrix, quadratic_terms
@@ -66,3 +67,5 @@ def test_a_new_runs_prediction_and_variance_are_the_ols_ones_with_blocks_at_thei
         np.testing.assert_allclose(mean, x0 @ fit.params, rtol=1e-9, atol=1e-9 * np.ptp(data.y))
         want_var = np.einsum("ij,jk,ik->i", x0, fit.cov_params(), x0) + fit.scale
         np.testing.assert_allclose(var, want_var, rtol=1e-7)
+        if later == 1:  # a new run not said to be later is the next one
+            np.testing.assert_allclose(prediction_parts(model, points)[0], mean, rtol=1e-12)
