@@ -4256,6 +4256,21 @@ SETTINGS: dict[str, str] = {
         "replicates), as polish_spans' 3 -> 4: an end is accepted only where the optimiser's point is admissible "
         "and extends the span, so a fourth start can only move an end outward, and on every set the Sobol tests "
         "hold the three nearest the end already reach the same boundary",
+    # --- criticism: the mutants no test of their row executed (a default read by no caller, chunking, starts)
+    "demid/criticism/models.py::Model.new_run_row::1 => 2#0":
+        "new_run_row's default ``later`` is never read: its one caller, discrimination.prediction_parts, passes its "
+        "own later (tests/criticism/test_new_run_row_whole.py checks prediction_parts' default)",
+    "demid/criticism/models.py::Model.new_run_row::1 => 0#0":
+        "new_run_row's default ``later`` is never read: its one caller, discrimination.prediction_parts, passes its "
+        "own later (tests/criticism/test_new_run_row_whole.py checks prediction_parts' default)",
+    "demid/criticism/models.py::ExtendedSurrogate.predict::1000000 => 1000001#0":
+        "how many points are predicted per chunk (memory): each point's prediction is its own row of the model "
+        "matrix times the coefficients, the same whichever chunk holds it",
+    "demid/criticism/searches.py::_smallest_bias::4 => 5#0":
+        "the number of SLSQP starts of the bias search (the best-scored grid nodes at least 0.1 apart), as "
+        "minimax's 4 -> 3: the best of the starts is kept, and on level 2's smooth quadratic errors a fifth start, "
+        "ranked below four others, reaches a minimum one of them reaches (tests/criticism/test_level2_whole.py, "
+        "test_bottleneck_slack_whole.py and test_level2_shared_bias_sentence_whole.py read the same implied biases)",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
