@@ -6,7 +6,11 @@ Written by reading the modules, before any test was written against them.  First
 tests of mutation.TABLE's rows, none aimed at these mutants): **5 of 8 killed, 62.5 %**.  Survivors: level 1's
 runs_before counting the step's first run (no test read the count a step's sentence quotes), level 2's bottleneck
 sentence with "high" and "low" swapped (no test parsed the word) and the bottleneck's near-tie broken by the signed
-bias (no test built two observables tied at a zero error left).
+bias (no test built two observables tied at a zero error left).  Killed since (checked by hand on each mutant) by
+tests/criticism/test_step_finding_counts_whole.py (a step's first run, the runs before it and its shift against
+least squares) and tests/criticism/test_level2_bottleneck_words_whole.py (three linear observables, every two met
+exactly inside the domain: the implied biases from 2 x 2 systems, the bottleneck the smallest, high or low by its
+sign).
 """
 from hand_mutants import HandMutant
 
