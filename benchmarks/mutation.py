@@ -4148,6 +4148,11 @@ EQUIVALENT: dict[str, str] = {
         "surrogate 0 at the three points) the difference is 0 already, and a positive bound is 64 machine epsilons "
         "of the terms' size over the step squared, which a difference of three predictions meets exactly only by a "
         "coincidence of its last bits (then c is within round-off of 0 either way)",
+    # --- criticism, seed 46's survivors
+    "demid/criticism/extensions.py::step_size::float(model.beta[model.names.index('step')]) => "
+    "model.beta[model.names.index('step')]#0":
+        "a step's size as a numpy float, a float subclass: it is formatted into the finding's sentence and written "
+        "to JSON (io.json_ready) as the same number",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
