@@ -265,7 +265,9 @@ class Round:
         if spec.lam is None and spec.weight_on is None:
             self._factor_level(data, m, eps)
 
-        if spec.lam is None and spec.weight_on is None and np.all(m.y > 0):
+        # every run positive, the excluded ones too: a transformed model's likelihood (Model.loglik, which the
+        # AICc and the naming compare) counts each excluded run's Box-Cox Jacobian, log y, undefined at y <= 0
+        if spec.lam is None and spec.weight_on is None and np.all(data.y > 0):
             self._response_transform(m, q, n_null, rng)
 
         if self.hypotheses:

@@ -101,6 +101,22 @@ def test_a_tie_with_one_null_ratio_counts_it():
     assert p == (np.sum(lr_null >= lr_obs) + 1.0) / (n_null + 1.0)
 
 
+def test_an_observed_ratio_a_round_off_above_a_null_ratio_is_reached_by_it():
+    """The observed ratio and the null ratios are computed in different batches, so a tie can differ in its last
+    digits: an observed ratio 5e-10 above a null draw's (far below any real gap between draws) is still reached."""
+    x = _design(2)
+    fitted = 3.0 + 0.4 * x[:, 1]
+    n_null = 200
+    draws, _ = _positive_draws(fitted, 1.0, n_null, 11)
+    lr_null = Round._boxcox_lr(draws, orthonormal_basis(x))
+    values = np.sort(np.unique(lr_null))
+    tied = float(values[len(values) // 2])
+    assert np.min(np.abs(np.diff(values))) > 1e-6  # the draw it ties with is the only one within round-off
+    p, _ = Round._boxcox_bootstrap(Round.__new__(Round), _null_model(x, fitted, 1.0), orthonormal_basis(x),
+                                   tied + 5e-10, n_null, np.random.default_rng(11))
+    assert p == (np.sum(lr_null >= tied) + 1.0) / (n_null + 1.0)
+
+
 def test_no_positive_null_draw_gives_one_over_the_draws_tried():
     """A fitted null model that never yields an all-positive response: the positivity is the evidence."""
     x = _design(2)

@@ -1,12 +1,14 @@
 """Level 1's table (CriticismResult.to_frame): one row per finding with the finding's numbers, or one unexplained
 row whose leave-one-out RMSE is the baseline's (PRESS of the quadratic, numpy) before and after and whose change in
 AICc is 0; the runs a next wave makes on the row they serve (the first finding's, else the last row), as the JSON of
-the result's discriminating runs.  Two outliers planted in 11 runs, named (2 findings) or left unexplained."""
+the result's discriminating runs.  Two outliers planted in 11 runs, named (2 findings) or left unexplained; one
+ambiguous row where the runs cannot tell the readings of one run apart."""
 from __future__ import annotations
 
 import json
 
 import numpy as np
+import pandas as pd
 import pytest
 
 from demid.criticism import criticize
@@ -48,3 +50,27 @@ def test_the_frame_is_the_findings_or_the_unexplained_row(max_findings):
         assert json.loads(frame["discriminating_runs"].iloc[served]) == result.discriminating_runs
         others = frame["discriminating_runs"].drop(frame.index[served])
         assert others.isna().all()
+
+
+def test_an_ambiguous_result_is_one_row_naming_its_candidates():
+    """A 3x3 factorial with one centre replicate and its centre run 30 standard deviations off: the runs do not tell
+    its readings apart, so the table has one ambiguous row listing the candidates, the baseline's leave-one-out RMSE
+    before and after and no change in AICc."""
+    rng = np.random.default_rng(0)
+    points = [(a, b) for a in (-1.0, 0.0, 1.0) for b in (-1.0, 0.0, 1.0)] + [(0.0, 0.0)]
+    a, b = np.array(points).T
+    y = 5 + a - 2 * b + 0.5 * a * b + rng.normal(scale=0.1, size=len(a))
+    y[4] += 3.0
+    table = pd.DataFrame({"run": rng.permutation(len(a)) + 1, "a": a, "b": b, "y": y})
+    result = criticize(table, ["a", "b"], "y", n_null=99)
+    assert result.verdict == "ambiguous" and len(result.candidates) > 1 and not result.findings
+    frame = result.to_frame()
+    assert len(frame) == 1
+    row = frame.iloc[0]
+    assert (row["cause"], row["verdict"], row["message"]) == ("ambiguous", "ambiguous", result.verdict_message)
+    assert row["detail"] == ";".join(f"{c['cause']} ({c['detail']})" for c in result.candidates)
+    _, press = _fit(_quadratic(a, b), y)
+    loo = float(np.sqrt(np.nanmean(press ** 2)))
+    assert row["loo_rmse_baseline"] == pytest.approx(loo, rel=1e-9)
+    assert row["loo_rmse_extended"] == pytest.approx(loo, rel=1e-9)
+    assert row["delta_aicc"] == 0.0 and row["p_value"] is None

@@ -2,15 +2,16 @@
 the 99 % interval: the interval's ends are points of the 0.01 grid, so a convenient value can be one, and it
 counts as inside (the data do not reject it at the 1 % level).  A CCD with 8 centre runs whose response is a
 power 1/1.08 of a plane: the 99 % interval computed here (numpy profile on the documented grid) starts exactly at
-lambda = 0, and the log is used."""
+lambda = 0, and the log is used; and lambda-hat near 1 with no convenient value in the interval, used to two
+decimals (one decimal would read 1, no transform)."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from demid.criticism.catalogue import Hypothesis
+from demid.criticism.catalogue import NICE_LAMBDAS, Hypothesis
 from demid.criticism.extensions import extend_for
-from demid.criticism.models import Model, ModelForm
+from demid.criticism.models import TRANSFORM_NAMES, Model, ModelForm
 from tests.criticism.test_extensions_whole import _lambda_by_hand
 from tests.criticism.test_models_properties import _data
 
@@ -26,5 +27,24 @@ def test_a_convenient_lambda_at_the_end_of_the_99_percent_interval_is_used():
     assert plausible.min() == 0.0 and plausible.max() > 0.5  # log at the edge, sqrt well inside
     spec, info = extend_for(data, model, Hypothesis("response_transform", "boxcox"))
     assert spec.lam == 0.0
+    assert info["lambda_hat"] == pytest.approx(best, abs=1e-9)
+    assert info["lambda_ci"] == pytest.approx([inside.min(), inside.max()], abs=1e-9)
+
+
+@pytest.mark.parametrize("power", [0.97, 1.03])
+def test_a_lambda_near_one_without_a_convenient_value_is_used_to_two_decimals(power):
+    """A Box-Cox power of a plane close to 1 on a response spanning 1 to about 30: the 99 % interval is a few
+    hundredths wide around it and holds no convenient lambda; lambda-hat to one decimal would be 1 (no transform at
+    all), so the transform used is lambda-hat to two decimals."""
+    data = _data(2, 8)
+    rng = np.random.default_rng(2)
+    z = 12.5 + 7.0 * data.coded[:, 0] - 5.0 * data.coded[:, 1] + rng.normal(scale=0.01, size=data.n)
+    data.y = (1 + power * z) ** (1 / power)
+    model = Model(data, ModelForm())
+    best, inside, plausible = _lambda_by_hand(data, model)
+    assert not [v for v in (*TRANSFORM_NAMES, *NICE_LAMBDAS) if plausible.min() <= v <= plausible.max()]
+    assert round(best, 1) == 1.0 and round(best, 2) != 1.0
+    spec, info = extend_for(data, model, Hypothesis("response_transform", "boxcox"))
+    assert spec.lam == pytest.approx(round(best, 2), abs=1e-12)
     assert info["lambda_hat"] == pytest.approx(best, abs=1e-9)
     assert info["lambda_ci"] == pytest.approx([inside.min(), inside.max()], abs=1e-9)

@@ -124,6 +124,17 @@ def test_the_axial_distance_is_read_back_from_a_ccds_actual_levels(alpha, centre
     assert infer_axial_distance(centre + unit * np.sign(coded)) == 1.0
 
 
+@pytest.mark.parametrize("centre, unit", [(0.0, 1.0), (5.0, 0.3), (-40.0, 12.0)])
+def test_inner_levels_a_millionth_of_the_half_range_from_the_ends_are_the_ends(centre, unit):
+    """Coded levels are read to 6 decimals: inner levels at +-(1 - 1e-6) are the ends themselves (a face-centred
+    design printed a little unevenly, alpha 1), at +-(1 - 2e-6) they are factorial levels of a CCD whose alpha is
+    their inverse."""
+    for gap, alpha in ((1e-6, 1.0), (2e-6, 1.0 / (1.0 - 2e-6))):
+        coded = np.array([-1.0, -(1.0 - gap), 0.0, 1.0 - gap, 1.0, 0.0])
+        actual = np.column_stack([centre + unit * coded, centre + unit * coded[::-1]])
+        assert infer_axial_distance(actual) == pytest.approx(alpha, rel=1e-9, abs=0)
+
+
 def test_helpers_read_as_documented():
     z = np.linspace(-2, 2, 9)
     for lam in (0.0, 0.5, -1.0, 2.0):

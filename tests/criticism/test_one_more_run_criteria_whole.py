@@ -36,3 +36,18 @@ def test_each_candidates_rank_and_log_determinant_are_the_design_rebuilt_with_it
         rank, logdet = _by_hand(np.vstack([coded, cands[c]]), base, members)
         assert ranks[c] == rank
         assert logdets[c] == pytest.approx(logdet, rel=1e-7, abs=1e-7)
+
+
+def test_a_candidate_that_leaves_the_members_inestimable_has_no_log_determinant():
+    """A face-centred CCD, whose levels -1, 0, 1 make a^3 the column a: the cubic is not estimable (rank 0), a
+    candidate at a = +-0.5 makes it so (rank 1) and any other leaves it at rank 0, whose log pseudo-determinant is
+    -inf (no direction to measure), as for the design rebuilt with that candidate."""
+    coded = ccd_points(2, 1.0, 3)
+    base, members = quadratic_terms(2), [(3, 0)]
+    cands = candidate_points(2, 1.0)
+    state = OneMoreRun.of(coded, base, members, model_matrix(cands, base), model_matrix(cands, members))
+    ranks, logdets = state.criteria()
+    for c in range(len(cands)):
+        rank, logdet = _by_hand(np.vstack([coded, cands[c]]), base, members)
+        assert ranks[c] == rank == int(abs(cands[c, 0]) == 0.5)
+        assert logdets[c] == (pytest.approx(logdet, rel=1e-7, abs=1e-7) if rank else -np.inf)
