@@ -68,7 +68,9 @@ def extend_for(data: Data, model: Model, h: Hypothesis) -> tuple[ModelForm, dict
         plausible = LAMBDA_FINE_GRID[f_ratio <= stats.f.ppf(0.99, 1, df)]
         lo99, hi99 = float(plausible.min()), float(plausible.max())
         lam = next((v for v in (*TRANSFORM_NAMES, *NICE_LAMBDAS) if lo99 <= v <= hi99), round(lam_hat, 1))
-        if abs(lam - 1.0) < 1e-9:
+        # one decimal may land on no transform at all, or on a named one the data reject (0.04 -> the log, with
+        # the log outside the 99 % interval): lambda-hat to two decimals then
+        if abs(lam - 1.0) < 1e-9 or (lam in TRANSFORM_NAMES and not lo99 <= lam <= hi99):
             lam = round(lam_hat, 2)
         info.update(lambda_hat=lam_hat, lambda_ci=[lo, hi])
         return replace(spec, lam=float(lam)), info
