@@ -1989,7 +1989,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_extensions_accumulate_whole.py", "tests/criticism/test_one_run_weighted_whole.py",
                   "tests/criticism/test_orthonormal_basis_whole.py", "tests/criticism/test_transform_name_boundary_whole.py",
                   "tests/criticism/test_point_dict_whole.py", "tests/criticism/test_level1_spare_runs_whole.py",
-                  "tests/criticism/test_models_backtransform_cap_whole.py",
+                  "tests/criticism/test_models_backtransform_cap_whole.py", "tests/criticism/test_models_loo_rmse_whole.py",
                   "tests/criticism/test_new_run_row_whole.py",
                   "-knot level2 and not residual_figure and not 3f"],
     },

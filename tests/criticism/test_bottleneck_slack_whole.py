@@ -104,3 +104,17 @@ def test_where_every_target_is_met_no_observable_needs_a_bias(errors, weights):
 def test_one_observable_has_no_error_left_to_drop_to():
     problem, grid_s, grid_err = _problem([0.3], np.ones(1))
     assert bottleneck_analysis(problem, grid_s, grid_err, 0.1, False) == ({}, {}, "y0", [], None)
+
+
+@pytest.mark.parametrize("tolerance,bottleneck", [(0.1, "y1"), (0.01, "y0")])
+def test_errors_left_within_a_thousandth_of_the_tolerance_tie_and_the_smaller_bias_is_the_bottleneck(
+        tolerance, bottleneck):
+    """y0 misses by 30.003 %, y1 by 30.001 %: dropping y0 leaves 30.001 %, dropping y1 30.003 %.  At a tolerance of
+    10 % the two errors left fall in the same thousandth of the tolerance (3000.1 and 3000.3 of 1e-4): a tie, which
+    goes to y1, the observable whose own miss (the bias it needs) is smaller.  At 1 % they are 30001 and 30003
+    thousandths apart: y0, whose removal leaves less, is the bottleneck."""
+    problem, grid_s, grid_err = _problem([0.30003, -0.30001], np.ones(2))
+    without, implied, got, candidates, biased = bottleneck_analysis(problem, grid_s, grid_err, tolerance, False)
+    assert without == pytest.approx({"y0": 0.30001, "y1": 0.30003}, rel=1e-12)
+    assert implied == pytest.approx({"y0": 0.30003, "y1": -0.30001}, rel=1e-9)
+    assert (got, candidates, biased) == (bottleneck, [], None)
