@@ -2379,7 +2379,7 @@ TABLE: dict[str, dict] = {
                 "test_wave_history_gives_each_wave_fraction_of_omega_and_the_box_its_runs_were_placed_in",
                 "test_waves_stop_on_the_measured_change_the_budget_or_the_model_never_on_a_misfitting_surrogate")],
                   "tests/test_shares_apart.py", "tests/test_loop_stop_edges_whole.py",
-                  "tests/test_wave_history_types_whole.py"],
+                  "tests/test_wave_history_types_whole.py", "tests/test_waves_config_numbers_whole.py"],
     },
     "demid/admissibility.py": {
         "functions": None,

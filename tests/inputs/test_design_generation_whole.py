@@ -2,7 +2,7 @@
 here, on and past every bound: factor ranges (equal ends, either sign, unusable magnitudes, malformed text), the
 axial distance (1 itself, just below, not finite, the named ones for 1-6 factors), the counts (factors 0-7 per
 design type, centre runs -1 to 2), the blocks (type, count, centre runs per block), the 3^k factorial's extra centre
-runs and the config fragment read back as YAML."""
+runs, the config fragment read back as YAML and a factor named twice."""
 
 from __future__ import annotations
 
@@ -144,3 +144,14 @@ def test_without_a_seed_the_sheet_is_the_one_demid_design_writes_without_one(des
     for i, f in enumerate(factors):
         centre, half = (f.low + f.high) / 2, (f.high - f.low) / (2 * a)
         np.testing.assert_allclose(frame[f.name], centre + half * coded[order, i], rtol=1e-11, atol=1e-11)
+
+
+@pytest.mark.parametrize("names, named", [(["a", "a"], "a"), (["mu_r", "h", "mu_r"], "mu_r"),
+                                          (["b", "a", "b", "a"], "a"), (["z", "y", "x", "z", "y"], "y")])
+def test_a_factor_named_twice_is_one_line_naming_the_alphabetically_first_repeated_name(names, named):
+    factors = [FactorRange(n, 0.0, 1.0 + i) for i, n in enumerate(names)]
+    repeated = [n for n in names if names.count(n) > 1]
+    assert named == min(repeated)
+    with pytest.raises(InputError) as err:
+        generate_sheet("ccd", factors, center_runs=3)
+    assert str(err.value) == f"--factor: '{named}' given more than once"
