@@ -4360,6 +4360,603 @@ EQUIVALENT: dict[str, str] = {
     "model.beta[model.names.index('step')]#0":
         "a step's size as a numpy float, a float subclass: it is formatted into the finding's sentence and written "
         "to JSON (io.json_ready) as the same number",
+    # --- a dropped float(), int(), round() or sorted() (or kind="stable") of the unseen pool: every such mutant
+    # run against the tests that execute its line, and each survivor read with every consumer of the value
+    "demid/criticism/models.py::infer_axial_distance::float(np.median(found)) => np.median(found)#0":
+        _NUMPY_FLOAT + " (median of a list of floats; its one caller, level1.prepare_data, passes it to "
+        "Coding.from_levels, where it divides an array whose entries are each passed through float(), and "
+        "stores float(alpha) in Data)",
+    "demid/criticism/models.py::infer_axial_distance::float(np.min(col)) => np.min(col)#0":
+        _NUMPY_FLOAT + " (col is a float array; lo is only compared and used in arithmetic with that array)",
+    "demid/criticism/models.py::aicc_of::float(_sm_aicc(llf, nobs, k)) => _sm_aicc(llf, nobs, k)#0":
+        "statsmodels' aicc is -2.0 * llf + 2.0 * k * nobs / (nobs - k - 1.0) when nobs - k - 1 > 0 (the only case "
+        "that calls it): with its one caller's arguments (Model.aicc: loglik, returned through float(ll), and the "
+        "Python ints data.n and n_params) it is already a Python float",
+    "demid/criticism/models.py::ModelForm.n_extra_params::int(self.lam is not None) => self.lam is not None#0":
+        "an int plus a bool is the same int (True counts 1), and the sum starts with len(self.extra_terms): "
+        "n_extra_params' value and type are unchanged",
+    "demid/criticism/models.py::ModelForm.n_extra_params::int(self.step is not None) => self.step is not None#0":
+        "an int plus a bool is the same int (True counts 1), and the sum starts with len(self.extra_terms): "
+        "n_extra_params' value and type are unchanged",
+    "demid/criticism/models.py::ModelForm.n_extra_params::int(self.drift) => self.drift#0":
+        "drift is a Python bool (ModelForm's default False, or True from extensions.extend_for's replace(spec, "
+        "drift=True), the only places it is set), added to the int len(self.extra_terms): the same int",
+    "demid/criticism/models.py::Model.__init__::float(max(np.ptp(data.runs.astype(float)), 1.0)) => "
+    "max(np.ptp(data.runs.astype(float)), 1.0)#0":
+        _NUMPY_FLOAT + " (np.ptp of a float array, or the float 1.0; run_scale only divides: run_column's array, "
+        "new_run_row's next run number (put into an array by np.full), extensions.drift_per_run (through float()) "
+        "and the ExtendedSurrogate's drift_per_run field, which nothing reads)",
+    "demid/criticism/models.py::Model.__init__::int(basis.shape[1]) => basis.shape[1]#0":
+        "an array's shape holds Python ints: int() returns the same int",
+    "demid/criticism/models.py::Model.__init__::float(self.resid_w @ self.resid_w) => self.resid_w @ self.resid_w#0":
+        _NUMPY_FLOAT + " (a dot product of two float vectors; ssr is read by gaussian_loglik (np.log arithmetic, "
+        "loglik returned through float()), naming._step_aiccs (less an array), discrimination.prediction_parts "
+        "(divided by max(df_resid, 1) >= 1) and catalogue.Round's math.sqrt(ssr / df_resid), reached only after "
+        "Round returns on df_resid < 3: no division by zero anywhere)",
+    "demid/criticism/models.py::Model.step_column::float(np.mean(after[self.keep])) => np.mean(after[self.keep])#0":
+        _NUMPY_FLOAT + " (subtracted from the float array after[rows]: the same array)",
+    "demid/criticism/models.py::Model.step_column::float(self.data.runs[step]) => self.data.runs[step]#0":
+        "data.runs is the table's run column, integers (read_table refuses any run number not an integer below "
+        "2^53; np.arange(1, n + 1) without the column): a numpy integer compared with the float array "
+        "runs.astype(float) converts exactly, the same mask",
+    "demid/criticism/models.py::Model.new_run_row::float(np.max(self.data.runs.astype(float))) => "
+    "np.max(self.data.runs.astype(float))#0":
+        _NUMPY_FLOAT + " (the largest run number, in arithmetic whose result np.full puts into an array)",
+    "demid/criticism/models.py::Model.n_params::int(self.spec.drift) => self.spec.drift#0":
+        "drift is a Python bool (ModelForm's default False, or True from extensions.extend_for's replace(spec, "
+        "drift=True), the only places it is set): an int less a bool is the same int",
+    "demid/criticism/models.py::Model.new_run_row::float(self.data.runs[self.spec.step]) => "
+    "self.data.runs[self.spec.step]#0":
+        "data.runs is the table's run column, integers (read_table refuses any run number not an integer below "
+        "2^53; np.arange(1, n + 1) without the column): a numpy integer compared with the float array "
+        "runs.astype(float) converts exactly, the same mask",
+    "demid/criticism/models.py::Model.new_run_row::float(np.mean(after[self.keep])) => np.mean(after[self.keep])#0":
+        _NUMPY_FLOAT + " (1.0 minus it fills an array through np.full)",
+    "demid/criticism/models.py::Model.loglik_with::float(ll) => ll#0":
+        _NUMPY_FLOAT + " (gaussian_loglik's np.log makes ll an np.float64; loglik is read by aicc_of (statsmodels' "
+        "arithmetic, then float()), naming's comparisons, differences, round(, 9) sort keys and json_number, and "
+        "the gamma search's minimize_scalar)",
+    "demid/criticism/models.py::Model.loglik_with::float(np.sum(np.log(w))) => np.sum(np.log(w))#0":
+        _NUMPY_FLOAT + " (added to ll, which is returned through float())",
+    "demid/criticism/models.py::Model.loglik_with::float(np.sum(-gamma * v)) => np.sum(-gamma * v)#0":
+        _NUMPY_FLOAT + " (added to ll, which is returned through float())",
+    "demid/criticism/models.py::Model.loglik_with::float(np.sum(np.log(self.data.y))) => np.sum(np.log(self.data.y))#0":
+        _NUMPY_FLOAT + " (multiplied by lam - 1.0 and added to ll, which is returned through float())",
+    "demid/criticism/models.py::Model.loo_rmse_on::float(np.sqrt(np.mean(chosen ** 2))) => np.sqrt(np.mean(chosen ** 2))#0":
+        _NUMPY_FLOAT + " (read by level1's comparison of two of them, _gain_phrase (np.isfinite, a > 0 test before "
+        "dividing by it, :.0f), _gain (a ratio divided only by a positive one), json_number, and a float column "
+        "of CriticismResult.to_frame)",
+    "demid/criticism/models.py::Model.summary::float(np.sum((y - y.mean()) ** 2)) => np.sum((y - y.mean()) ** 2)#0":
+        _NUMPY_FLOAT + " (read only in 1 - sse / sst, computed only when np.ptp(y) > 0: validated responses are 0 or "
+        "of magnitude 1e-30 to 1e30 (demid.numbers), so some deviation from the mean is then at least about 1e-46, "
+        "whose square does not underflow: sst > 0, no division by zero, the same number into json_number)",
+    "demid/criticism/models.py::Model.summary::float(np.sum((y - f) ** 2)) => np.sum((y - f) ** 2)#0":
+        _NUMPY_FLOAT + " (read in np.sqrt(sse / len(y)) and 1 - sse / sst, computed only when np.ptp(y) > 0, where "
+        "sst > 0 (validated responses are 0 or of magnitude 1e-30 to 1e30, demid.numbers: the squared deviations "
+        "do not underflow): both through json_number)",
+    "demid/criticism/models.py::Model.summary::int(len(y)) => len(y)#0":
+        "len() returns a Python int: int() returns the same int",
+    "demid/criticism/models.py::Model.summary::int(self.n_params) => self.n_params#0":
+        "n_params is already a Python int: rank (int(basis.shape[1])) + 1 + n_extra_params (ints and bools) less "
+        "len() and int()s",
+    "demid/criticism/reach.py::reach_beyond_bound::float(domain.to_actual(along([t]))[0, i]) => "
+    "domain.to_actual(along([t]))[0, i]#0":
+        _NUMPY_FLOAT + " (the factor values of a Reach are read by np.isfinite, short_number and rough_text, and "
+        "by to_json, whose isinstance(v, float) holds for both, before io.json_ready)",
+    "demid/criticism/reach.py::reach_beyond_bound::float(f0) => f0#0":
+        _NUMPY_FLOAT + " (Reach.value is read by flat's abs(), missing's subtraction, and to_json, whose "
+        "isinstance(v, float) holds for both, before io.json_ready)",
+    "demid/criticism/reach.py::reach_beyond_bound::float(target) => target#0":
+        "target is already a Python float: the one caller, level2._worth_widening, passes result.targets[worst], "
+        "built by calibration_check as float(targets[o])",
+    "demid/criticism/reach.py::reach_beyond_bound::float(outward * g / width) => outward * g / width#0":
+        _NUMPY_FLOAT + " (the slope is read by flat's abs(), saturation_advice's sign test, short_number and "
+        "rough_text of abs(), and to_json before io.json_ready)",
+    "demid/criticism/reach.py::reach_beyond_bound::float(c) => c#0":
+        _NUMPY_FLOAT + " (c is a second difference of predictions or the float 0.0; the curvature is read by "
+        "flat's abs() and to_json before io.json_ready)",
+    "demid/criticism/reach.py::reach_beyond_bound::float(max(quadratic, 0.0)) => max(quadratic, 0.0)#0":
+        "quadratic is smallest_positive_root's numpy float or np.inf: max with 0.0 is a float or an np.float64 (a "
+        "float subclass), which beyond_limit's and levels_off's tests, saturation_finding's np.isfinite and "
+        ":.0f, to_json's isinstance(v, float) test and io.json_ready read as the same float",
+    "demid/criticism/reach.py::reach_beyond_bound::float(level) => level#0":
+        _NUMPY_FLOAT + " (level is numpy arithmetic or np.nan; levels_off_value is read by short_number and to_json "
+        "before io.json_ready)",
+    "demid/criticism/reach.py::reach_beyond_bound::float(np.max(terms_size(surrogate, domain.to_actual(along(steps))))) => "
+    "np.max(terms_size(surrogate, domain.to_actual(along(steps))))#0":
+        _NUMPY_FLOAT + " (a threshold in one comparison)",
+    "demid/criticism/reach.py::reach_beyond_bound::float(point[f]) => point[f]#0":
+        "the point's values are already Python floats (the one caller passes result.best_point, built from "
+        ".tolist()), and np.array(..., dtype=float) converts them anyway",
+    "demid/criticism/slips.py::slip_candidates::int(kept[pos]) => kept[pos]#0":
+        "a numpy integer of the same value: a candidate's row is read only as an index (data.runs, data.y, "
+        "data.coded, ModelForm.moved's all_coded[i, j]), by np.fromiter(dtype=int) and in == comparisons",
+    "demid/criticism/slips.py::slip_candidates::int(j) => j#0":
+        "a numpy integer of the same value: a candidate's factor is read only as an index (data.factors, "
+        "to_actual's columns, ModelForm.moved's all_coded[i, j], moved_rows) and by np.fromiter(dtype=int)",
+    "demid/criticism/slips.py::slip_candidates::float(coded[pos, j, k]) => coded[pos, j, k]#0":
+        _NUMPY_FLOAT + " (a candidate's coded value is only written into float arrays: moved_rows, extend_for's "
+        "row, Model's all_coded)",
+    "demid/criticism/slips.py::slip_fit::int(np.flatnonzero(np.flatnonzero(m.keep) == same_run[0].row)[0]) => "
+    "np.flatnonzero(np.flatnonzero(m.keep) == same_run[0].row)[0]#0":
+        "a numpy integer of the same value, used only to index others, m.z and x",
+    "demid/criticism/slips.py::slip_fit::int(np.argmax(mass)) => np.argmax(mass)#0":
+        "a numpy integer of the same value, used only to index the list same_run and the array t",
+    "demid/criticism/aliasing.py::term_classes::float(np.linalg.norm(resid[:, j])) => np.linalg.norm(resid[:, j])#0":
+        _NUMPY_FLOAT + " (compared with the column's norm, then dividing the column only when above 1e-7 of it, "
+        "hence positive: the same unit vector)",
+    "demid/criticism/aliasing.py::_separation_criterion::int(keep.sum()) => keep.sum()#0":
+        "a numpy integer of the same value: the rank is only compared (rank < len(members), top <= rank in "
+        "_first_best) in its one caller, _separating_runs_cached, before int(ranks[best]) replaces it",
+    "demid/criticism/aliasing.py::_separation_criterion::float(np.sum(np.log(ev[keep]))) => np.sum(np.log(ev[keep]))#0":
+        "its one caller, _separating_runs_cached, discards the log-determinant (rank, _ = ...)",
+    "demid/criticism/one_run.py::deleted_logp_by_identity::int(np.flatnonzero(_LAMBDA_TEST_GRID == 1.0)[0]) => "
+    "np.flatnonzero(_LAMBDA_TEST_GRID == 1.0)[0]#0":
+        "a numpy integer of the same value, used only to index profiles",
+    "demid/criticism/one_run.py::deleted_logp_by_identity::float(rc[:, 0] @ rc[:, 0]) => rc[:, 0] @ rc[:, 0]#0":
+        _NUMPY_FLOAT + " (less an array: the same array u2)",
+    "demid/criticism/one_run.py::worst_deletion::int(np.flatnonzero(model.keep)[pos]) => np.flatnonzero(model.keep)[pos]#0":
+        "a numpy integer of the same value: Deletion.row is read only as data.runs[one_run.row] in "
+        "naming.why_not_singled_out (through verdict.rests_on_one_run), an index",
+    "demid/criticism/one_run.py::worst_deletion::float(math.exp(logp[pos])) => math.exp(logp[pos])#0":
+        "math.exp returns a Python float already",
+    "demid/criticism/one_run.py::_weakest_by_identity::int(np.argmin(np.abs(GAMMA_GRID))) => np.argmin(np.abs(GAMMA_GRID))#0":
+        "a numpy integer of the same value, used only to index prof",
+    "demid/criticism/one_run.py::_weakest_by_identity::float(r @ r) => r @ r#0":
+        _NUMPY_FLOAT + " (less an array: the same array sse)",
+    "demid/criticism/one_run.py::_weakest_by_identity::float(np.sum(np.log(sw))) => np.sum(np.log(sw))#0":
+        _NUMPY_FLOAT + " (added to an array: the same profile row)",
+    "demid/criticism/slips.py::slip_fit::float(t[k]) => t[k]#0":
+        _NUMPY_FLOAT + " (t_moved is read by finding_message's abs():.1f and written to JSON through io.json_ready "
+        "as a finding's info)",
+    "demid/criticism/slips.py::slip_fit::int(others.sum()) => others.sum()#0":
+        "a numpy integer of the same value: max(it - m.rank, 1) divides a float inside math.sqrt, which returns "
+        "the same Python float",
+    "demid/criticism/slips.py::slip_fit::float(np.sum(mass)) => np.sum(mass)#0":
+        _NUMPY_FLOAT + " (times the float spread; the Bayes factor is compared (naming, "
+        "verdict.other_reading_of_the_run), written with :.1f and to JSON through io.json_ready)",
+    "demid/criticism/naming.py::candidate_entries::int(h.detail) => h.detail#0":
+        "a step's detail is already a Python int (catalogue.Round._step takes it from the starts, which "
+        "step_direction_chunks and step_projections build with int()); it is only compared with != to another int",
+    "demid/criticism/naming.py::_step_aiccs::float(np.sum(np.log(base_model.w))) => np.sum(np.log(base_model.w))#0":
+        _NUMPY_FLOAT + " (added to the array gaussian_loglik(ssr, n) of every change-point)",
+    "demid/criticism/naming.py::_step_aiccs::float(a) => a#0":
+        _NUMPY_FLOAT + " (an element of aicc_of_many's float array; candidate_entries adds the price to it for an "
+        "entry's aicc, which close_candidates and ambiguity only sort, compare, subtract, test with math.isfinite, "
+        "pass through abs/max/math.sqrt (target_separation) and json_number)",
+    "demid/criticism/searches.py::minimax::float(worst[order[0]]) => worst[order[0]]#0":
+        _NUMPY_FLOAT + " (an element of the float array worst; minimax's value is compared, put into the start "
+        "x0, kept in Level2Result.without (a float column of to_frame, json_number in to_json, percent_text and "
+        "a ratio in the message) and passed to json_number or float() by calibration_check and _best_point)",
+    "demid/criticism/searches.py::minimax::float(np.max(weights * np.abs(e))) => np.max(weights * np.abs(e))#0":
+        _NUMPY_FLOAT + " (np.max of a float vector; minimax's value is compared, put into the start x0, kept in "
+        "Level2Result.without (a float column of to_frame, json_number in to_json, percent_text and a ratio in the "
+        "message) and passed to json_number or float() by calibration_check and _best_point)",
+    "demid/criticism/searches.py::_smallest_bias::float(problem.errors(best_s)[row, 0]) => "
+    "problem.errors(best_s)[row, 0]#0":
+        _NUMPY_FLOAT + " (an element of a float array; the implied bias is read by abs() in the bottleneck's sort "
+        "key, a float column of to_frame, json_number in to_json, and percent_text(abs()) and > 0 in the message)",
+    "demid/criticism/searches.py::reference_point_errors::float(reference_point[f]) => reference_point[f]#0":
+        "the reference point's values are config numbers (schema: additionalProperties number), Python ints or "
+        "floats: without float() x_ref may be an integer (or, past 2^63, object) array, and every predict() "
+        "converts its points to float first (Surrogate through model_units, Kriging.unit, ExtendedSurrogate "
+        "through model_units, the plausibility field through its surrogate's): the same predictions",
+    "demid/criticism/aliasing.py::_first_best::int(ranks.max()) => ranks.max()#0":
+        "a numpy integer of the same value, only compared (top <= rank, ranks == top)",
+    "demid/criticism/aliasing.py::OneMoreRun.of::float(np.sum(cols * cols)) => np.sum(cols * cols)#0":
+        _NUMPY_FLOAT + " (column_ss is only added to arrays and to float(z @ z) in with_run and criteria)",
+    "demid/criticism/aliasing.py::OneMoreRun.with_run::float(z @ z) => z @ z#0":
+        _NUMPY_FLOAT + " (added to column_ss, which is only added to arrays in criteria)",
+    "demid/criticism/naming.py::_choices::int(step[0].info['change_points']) => step[0].info['change_points']#0":
+        "info['change_points'] is len(starts), a Python int (catalogue.Round._step, the only builder of a step "
+        "hypothesis): int() returns the same int",
+    "demid/criticism/messages.py::finding_message::float('nan') => 'nan'#1":
+        "the default is never read: finding_message's one caller, level1._finding, sets info['step_size'] "
+        "(extensions.step_size) for every step before it",
+    "demid/criticism/messages.py::level2_miss_text::float((tolerances or {}).get(o, tolerance)) => "
+    "(tolerances or {}).get(o, tolerance)#0":
+        "the tolerances are already Python floats: level2 passes Level2Result.tolerance (float(tolerance)) and "
+        "tolerances (calibration_check's float() per observable); the report passes the level-2 JSON's, written "
+        "by Level2Result.to_json as those floats (own_tolerance() is float()) and read back as floats",
+    "demid/sampling/grid.py::admissible_set::int(np.argmin(worst)) => np.argmin(worst)#0":
+        "best, an np.intp, is local: read only as np.unravel_index(best, shape) and worst.ravel()[best], which "
+        "take an np.intp and an int alike",
+    "demid/sampling/grid.py::admissible_set::float(cell_frac.mean()) => cell_frac.mean()#0":
+        _NUMPY_FLOAT + " (the mean of a float array; the fraction is read by arithmetic (100.0 * in to_frame, "
+        "summarise_set's frames, criticism/material, ranking's quotient behind its frac[best] > 0 guard), "
+        "comparisons (empty, reachable_targets), the legend's :.3g and fraction_with_error's float())",
+    "demid/sampling/grid.py::admissible_set::float(mask.mean()) => mask.mean()#0":
+        _NUMPY_FLOAT + " (node_fraction only enters 100.0 * node_fraction, a float column of to_frame)",
+    "demid/sampling/grid.py::admissible_set::int(mask.size) => mask.size#0":
+        "ndarray.size is a Python int already",
+    "demid/sampling/grid.py::admissible_set::int(len(cand_idx)) => len(cand_idx)#0":
+        "len() is a Python int already",
+    "demid/sampling/grid.py::admissible_set::int(mask.sum()) => mask.sum()#0":
+        "an np.int64 (sum of a bool array): n_admissible_nodes is read only by empty (== 0) and to_frame, whose "
+        "broadcast column is int64 for an np.int64 and a Python int alike",
+    "demid/sampling/grid.py::admissible_set::int(evaluations) => evaluations#0":
+        "evaluations is n ** d * len(observables) plus cell_count's Python-int count, and AdmissibleSet.evaluations "
+        "is read nowhere in demid/ or scripts/",
+    "demid/sampling/grid.py::fraction_with_error::float(tolerance) => tolerance#0":
+        "its one caller, summarise_set, passes a Python float (a scenario's float(c['tolerance']), or the sweep's "
+        "float(t)); eps only enters comparisons and differences in cell_count and _fields, which float()s it again",
+    "demid/sampling/grid.py::fraction_with_error::int(n) => n#0":
+        "n is a Python int: its one caller, summarise_set, passes the plausible or sweep size of recommended_sizes "
+        "(analyse_material's one caller, steps.py, passes no sizes of its own)",
+    "demid/sampling/grid.py::fraction_with_error::int(n) => n#1":
+        "n is a Python int: its one caller, summarise_set, passes the plausible or sweep size of recommended_sizes "
+        "(analyse_material's one caller, steps.py, passes no sizes of its own)",
+    "demid/sampling/grid.py::fraction_with_error::float(reference.fraction) => reference.fraction#0":
+        "reference.fraction is admissible_set's float(...) already, and grid_fraction is read only by "
+        "grid_error = abs(grid_fraction - fine.fraction) + error, arithmetic",
+    "demid/sampling/grid.py::fraction_with_error::float(np.sqrt(np.sum(delta ** 2))) => "
+    "np.sqrt(np.sum(delta ** 2))#0":
+        _NUMPY_FLOAT + " (divided by delta.size > 0, then error and grid_error only enter arithmetic: "
+        "summarise_set reads grid_error into 100.0 * error columns)",
+    "demid/sampling/domain.py::Domain.room_beyond::float(room / (hi[i] - lo[i])) => room / (hi[i] - lo[i])#0":
+        _NUMPY_FLOAT + " (the quotient is computed by numpy either way, so a zero range gives the same inf/nan; "
+        "its one caller, reach_beyond_bound, stores it as Reach.limit_extension, read by comparisons, "
+        "factor_value's np.isfinite and float(), and to_json's isinstance(v, float), written through io.json_ready)",
+    "demid/sampling/domain.py::Domain.at_bound::int(a) => a#0":
+        "a is an np.bool_: a + 2 * int(b) is an np.int64 of the same value, which indexes the tuple AT_BOUND alike",
+    "demid/sampling/planes.py::Planes._breakpoints::int(np.max(np.where(significant, e_t + e_s, 0))) => "
+    "np.max(np.where(significant, e_t + e_s, 0))#0":
+        "an np.int64 (max of an int array): top is read only by _resultants as n_nodes = 2 * top * top + 1 (a small "
+        "count), which np.arange and np.empty take alike",
+    "demid/sampling/planes.py::Solid.seed::float(np.max(np.abs(horner(coef, inside[None, :1])))) => "
+    "np.max(np.abs(horner(coef, inside[None, :1])))#0":
+        _NUMPY_FLOAT + " (a term of the Nelder-Mead objective excess, whose values scipy keeps in a float array; "
+        "res.fun is only compared with eps)",
+    "demid/sampling/planes.py::Solid.seed::float(np.sum(np.abs(u - inside))) => np.sum(np.abs(u - inside))#0":
+        _NUMPY_FLOAT + " (a term of the Nelder-Mead objective excess, whose values scipy keeps in a float array; "
+        "res.fun is only compared with eps)",
+    "demid/sampling/planes.py::Solid.span::float(final[0, 0]) => final[0, 0]#0":
+        _NUMPY_FLOAT + " (its one caller, ExactSet._unit_spans, puts the pair into np.array: a float64 array "
+        "either way)",
+    "demid/sampling/planes.py::Solid.span::float(final[1, 1]) => final[1, 1]#0":
+        _NUMPY_FLOAT + " (its one caller, ExactSet._unit_spans, puts the pair into np.array: a float64 array "
+        "either way)",
+    "demid/waves.py::surrogate_evidence::float(row.lof_p) => row.lof_p#0":
+        "row is a fit-statistics row from itertuples of the statistics frame (float64 lof_p column, NaN where "
+        "undefined), which yields Python floats already; lof_p is read only by surrogate_limits (None test, "
+        "np.isfinite, <= LACK_OF_FIT_ALPHA, :.2g)",
+    "demid/waves.py::wave_evidence::int(runs['purpose'].isin([CONFIRM, DECIDE]).sum()) => "
+    "runs['purpose'].isin([CONFIRM, DECIDE]).sum()#0":
+        "an np.int64 (sum of a bool Series): criticism_runs is read only by stop_decision, as 'if "
+        "evidence.criticism_runs' and in an f-string without a format spec, which print it as the int",
+    "demid/waves.py::wave_history::float(r.lower) => r.lower#0":
+        "itertuples gives a Python int or float (an int only where the box CSV read back holds whole numbers); "
+        "wave 1, always first (domain None, its one caller scripts/wave_history.py passes [None] + boxes), puts "
+        "the spec's float bounds in the same box_lower column, so the column is float64 with the same values",
+    "demid/waves.py::wave_history::float(r.upper) => r.upper#0":
+        "itertuples gives a Python int or float (an int only where the box CSV read back holds whole numbers); "
+        "wave 1, always first (domain None, its one caller scripts/wave_history.py passes [None] + boxes), puts "
+        "the spec's float bounds in the same box_upper column, so the column is float64 with the same values",
+    "demid/waves.py::wave_summary::float(plausible.at[f, 'robust_upper']) => plausible.at[f, 'robust_upper']#0":
+        _NUMPY_FLOAT + " (the plausible frame is read from parquet, a float64 column; the summary is written to "
+        "JSON through io.json_ready)",
+    "demid/transcription/typos.py::likely_typos::float(observed[i]) => observed[i]#1":
+        _NUMPY_FLOAT + " (an entry of a float array; the flag's 'found' is read by repair_explains' arithmetic "
+        "(its bool is only negated) and written in the validation summary through io.json_ready)",
+    "demid/transcription/typos.py::likely_typos::float(student) => student#0":
+        _NUMPY_FLOAT + " (an entry of the studentised residuals; 'student_resid' is only written in the validation "
+        "summary through io.json_ready, the message formats student itself)",
+    "demid/transcription/typos.py::likely_typos::float(loo_pred) => loo_pred#0":
+        _NUMPY_FLOAT + " ('predicted_from_other_runs' is read by repair_explains' arithmetic, the refusal's :.4g and "
+        "the validation summary's io.json_ready)",
+    "demid/transcription/typos.py::likely_typos::float(se) => se#0":
+        _NUMPY_FLOAT + " ('prediction_se' is only written in the validation summary through io.json_ready)",
+    "demid/transcription/typos.py::_shortest::float(value) => value#0":
+        "its callers pass a repair's value, a Python float already (single_cell_slips' and added_digit_repairs' "
+        "float(Decimal(...)))",
+    "demid/transcription/typos.py::refuse_likely_typos::int(r) => r#0":
+        "the validated table's run column is int64 (read_table int()s every run number): iterating the Series "
+        "gives Python ints already",
+    "demid/transcription/typos.py::refuse_likely_typos::int(flag['run']) => flag['run']#0":
+        "flag['run'] is _jsonable(run) of an entry of the int64 run column: a Python int already",
+    "demid/precision.py::printed_place::float(10.0 ** min(exponents)) => 10.0 ** min(exponents)#0":
+        "10.0 ** an int (the exponents are filtered by isinstance(exponent, int)) is a Python float already",
+    "demid/precision.py::round_off_floor::float(np.sqrt(1.5 * np.mean(variance))) => "
+    "np.sqrt(1.5 * np.mean(variance))#0":
+        _NUMPY_FLOAT + " (through max() into the floor, which every caller only compares or squares and compares: "
+        "round_off_only, verdict's ptp test, catalogue's pure-error test, the ANOVA's ss_floor)",
+    "demid/precision.py::round_off_floor::float(np.max(np.abs(y))) => np.max(np.abs(y))#0":
+        _NUMPY_FLOAT + " (ROUND_OFF times it enters max() into the floor, which every caller only compares or "
+        "squares and compares: round_off_only, verdict's ptp test, catalogue's pure-error test, the ANOVA's ss_floor)",
+    "demid/precision.py::round_off_only::float(np.sqrt(np.mean(residuals ** 2))) => np.sqrt(np.mean(residuals ** 2))#0":
+        "the comparison then gives an np.bool_ instead of a bool; every caller only tests its truth (if ... / "
+        "... or round_off_only(...) in surrogate, typos, verdict, catalogue)",
+    "demid/precision.py::place_of::float(10.0 ** (np.floor(np.log10(rounded)) - digits + 1)) => "
+    "10.0 ** (np.floor(np.log10(rounded)) - digits + 1)#0":
+        _NUMPY_FLOAT + " (10.0 ** an np.float64: the place enters value_text's max(), comparisons and np.log10, and "
+        "at_place, where np.log10 gives the decimals, round(value / place) is a Python int either way and "
+        "the product is formatted with .{decimals}f)",
+    "demid/precision.py::coordinate_text::float(10.0 ** np.floor(np.log10(COORDINATE_RESOLUTION * span))) => "
+    "10.0 ** np.floor(np.log10(COORDINATE_RESOLUTION * span))#0":
+        _NUMPY_FLOAT + " (the place only enters at_place, where np.log10 gives the decimals, round(value / place) "
+        "is a Python int either way and the product is formatted with .{decimals}f)",
+    "demid/canonical.py::canonical_analysis::float(np.linalg.norm(hi - lo) / 2) => np.linalg.norm(hi - lo) / 2#0":
+        _NUMPY_FLOAT + " (radius is local: it only enters the array expression that gives 'rising')",
+    "demid/canonical.py::canonical_analysis::float(np.max(np.abs(values))) => np.max(np.abs(values))#0":
+        _NUMPY_FLOAT + " (largest enters comparisons (> 0, == 0, <= 1e-12 * largest) and the default threshold "
+        "0.1 * largest, which Canonical stores as float(threshold))",
+    "demid/canonical.py::canonical_analysis::float(b0 + x @ b + x @ big_b @ x) => b0 + x @ b + x @ big_b @ x#0":
+        _NUMPY_FLOAT + " (surface() gives Canonical.value and ridge_value, read only by to_json through float(); "
+        "fit_canonical(...).to_json() is the one use, in steps.py and cli.py)",
+    "demid/sampling/evaluate.py::exact_set_on_domain::float(reference[f]) => reference[f]#0":
+        "the reference values are schema numbers (int or float); the list goes through to_search, whose "
+        "model_units makes np.array(x, dtype=float): the same float array",
+    "demid/sampling/evaluate.py::closest_approach::float(worst(u)[0]) => worst(u)[0]#0":
+        _NUMPY_FLOAT + " (an entry of a float array: value enters comparisons and is returned as best_value, "
+        "which evaluate_set float()s and reachable_targets compares inside bool())",
+    "demid/next_wave.py::plan_omega_wave::float(classification_error(judged, design_x).max()) => "
+    "classification_error(judged, design_x).max()#0":
+        _NUMPY_FLOAT + " (error is read only by the reason's {error:.2f})",
+    "demid/scenario.py::measurement_sigma::float(cfg['sigma']) => cfg['sigma']#0":
+        "a schema number (int or float); every use multiplies it by a float: scenario_bands by c and "
+        "likelihood_sd by scales.get(o, 1.0) (band_scale floats or 1.0), measurement_sigmas has no caller",
+    "demid/scenario.py::reference_scenario::float(spec.reference_tolerance) => spec.reference_tolerance#0":
+        "reference_tolerance is a scenario's tolerance, float(c['tolerance']) in MaterialSpec, or the float "
+        "FALLBACK_TOLERANCE: a Python float already",
+    "demid/scenario.py::JudgedScenario.tolerance::float(self.scenario.tolerance) => self.scenario.tolerance#0":
+        "every Scenario is built with a float tolerance (MaterialSpec's float(c['tolerance']), reference_scenario's "
+        "float(...)), and JudgedScenario is only given those",
+    "demid/wave_runs.py::full_rank::int(np.linalg.matrix_rank(m, tol=1e-08 * max(np.abs(m).max(), 1.0) * len(m))) "
+    "=> np.linalg.matrix_rank(m, tol=1e-08 * max(np.abs(m).max(), 1.0) * len(m))#0":
+        "an np.int64 rank: the shortfall and the counts made from it (design_count's n_design, _design's short) "
+        "only enter min/max, arithmetic, slicing, range() in d_optimal_augment, list repetition, 'if short', "
+        "f-strings without a format spec and JSON through io.json_ready, which take an np.int64 as the int",
+    "demid/design.py::Coding.from_levels::float(v) => v#0":
+        "np.float64 entries (of a float array) in Coding.center: every use goes through np.array/np.asarray "
+        "(to_coded, to_actual, combinations, slips), arithmetic (combinations' coded * unit + center), float() "
+        "(transcription check), np.allclose (design_generation), a float64 frame column (the fits' center:<f>) or "
+        "JSON through io.json_ready (the validation summary's coding); hashing and == of the frozen dataclass "
+        "treat np.float64 and float alike",
+    "demid/design.py::Coding.from_levels::float(v) => v#1":
+        "np.float64 entries (of a float array, never 0: np.where(unit > 0, unit, 1.0)) in Coding.unit: every use "
+        "goes through np.array/np.asarray, arithmetic and abs() (factor_round_off_sd, _print_tolerance), 'not "
+        "unit', float() (transcription check), a float64 frame column (the fits' unit:<f>) or JSON through "
+        "io.json_ready (the validation summary's coding)",
+    "demid/design_inference.py::infer_design::int(on_centre.sum()) => on_centre.sum()#0":
+        "an np.int64 count: center_runs is read by describe (an f-string and != 1) and, in the design dict, by "
+        "check_design's int() and f-strings, which print it as the int",
+    "demid/design_inference.py::_placement::int(r) => r#0":
+        "the table's run column is int64 (read_table int()s every run number): iterating the Series gives "
+        "Python ints already",
+    "demid/sampling/sobol.py::sobol_admissible_set::int(mask.sum()) => mask.sum()#0":
+        "an np.int64 (sum of a bool array): n_admissible_nodes is read only by empty (== 0) and to_frame, whose "
+        "broadcast column is int64 for an np.int64 and a Python int alike",
+    "demid/pareto.py::pareto_analysis::float(max_error) => max_error#0":
+        "its one caller (steps.py) passes spec.pareto.max_error, float(par['max_error']) in MaterialSpec, and "
+        "ParetoResult.max_error is read nowhere in demid/ or scripts/",
+    "demid/combinations/axes.py::linear_statement::float(normal @ centre + np.sum(normal * mid / unit)) => "
+    "normal @ centre + np.sum(normal * mid / unit)#0":
+        _NUMPY_FLOAT + " (c is divided by scale and lead, formatted by pm_text and stored as the equation's "
+        "'constant', written to JSON through io.json_ready like its np.float64 neighbour half_width)",
+    "demid/report/summary.py::_recommended_lines::float(rows.loc[f.name, 'plausible_upper']) => "
+    "rows.loc[f.name, 'plausible_upper']#0":
+        "a numpy scalar of verdicts.csv's plausible_upper column (np.float64, or np.int64 where every bound read "
+        "back is whole): it enters hi - lo (lo is float()) for digits_for and the {hi:.{digits}f} format, which "
+        "prints an np.int64 3 as 3.00 like the float",
+    "demid/surrogate.py::SurrogateFit.term_block_ss::float(res.ssr) => res.ssr#0":
+        _NUMPY_FLOAT + " (statsmodels' ssr; sse_reduced - sse_full is then an np.float64, and the partial sums of "
+        "squares are read only by anova_frame: LackOfFitAnova._f's arithmetic, which float()s its F and p, ss / df "
+        "and the frame's float column sum_sq)",
+    "demid/surrogate.py::SurrogateFit.anova::float(res.ssr) => res.ssr#0":
+        _NUMPY_FLOAT + " (statsmodels' ssr; anova()'s sums of squares are read only by LackOfFitAnova: _f's "
+        "arithmetic and comparisons, which float() its F and p, lof_note's comparison and to_frame's float "
+        "columns, written to parquet, or to JSON by cli through io.json_ready)",
+    "demid/surrogate.py::SurrogateFit.anova::float(np.sum((self.y - self.y.mean()) ** 2)) => "
+    "np.sum((self.y - self.y.mean()) ** 2)#0":
+        _NUMPY_FLOAT + " (np.sum of a float array; ss_model, ss_block and ss_total are read only by "
+        "LackOfFitAnova: _f's arithmetic, which float()s its F and p, and to_frame's float columns, written to "
+        "parquet, or to JSON by cli through io.json_ready)",
+    "demid/surrogate.py::SurrogateFit.anova::int(round(res.df_resid)) => round(res.df_resid)#0":
+        "round() of a numpy float without digits returns a Python int (numpy 2, the pinned version): int() of an "
+        "int",
+    "demid/surrogate.py::SurrogateFit.anova::round(res.df_resid) => res.df_resid#0":
+        "statsmodels' df_resid is nobs - rank, a whole number held exactly as a float: int() of it is the int "
+        "round() gives",
+    "demid/surrogate.py::SurrogateFit.anova::int(groups.max()) => groups.max()#0":
+        "np.intp (the largest id of pure_error_groups' np.unique inverse): n_unique and df_pure_error, df_lof "
+        "become np.int64, read only by LackOfFitAnova's comparisons, arithmetic and f_tail, and to_frame's "
+        "integer column df (int64 either way; cli's to_dict gives Python ints)",
+    "demid/surrogate.py::SurrogateFit._influence_columns::float(np.sum(e ** 2)) => np.sum(e ** 2)#0":
+        _NUMPY_FLOAT + " (np.sum of a float array, at once less an array: scale_without is the same float array)",
+    "demid/surrogate.py::SurrogateFit.diagnostics::float(np.nanmax(infl['cooks_d'])) => np.nanmax(infl['cooks_d'])#0":
+        _NUMPY_FLOAT + " (np.nanmax of a float column; Diagnostics is read only by to_frame, a float column of "
+        "fits/{material}_diagnostics.parquet)",
+    "demid/surrogate.py::SurrogateFit.diagnostics::float(bp_lm) => bp_lm#0":
+        _NUMPY_FLOAT + " (het_breuschpagan's LM is an np.float64, or the float nan on failure or round-off; "
+        "Diagnostics is read only by to_frame, a float column of fits/{material}_diagnostics.parquet)",
+    "demid/surrogate.py::SurrogateFit.diagnostics::float(bp_p) => bp_p#0":
+        _NUMPY_FLOAT + " (het_breuschpagan's p is an np.float64, or the float nan on failure or round-off; "
+        "Diagnostics is read only by to_frame, a float column of fits/{material}_diagnostics.parquet)",
+    "demid/surrogate.py::SurrogateFit.diagnostics::float(sw) => sw#0":
+        _NUMPY_FLOAT + " (scipy's shapiro statistic of a Series is an np.float64, or the float nan; Diagnostics "
+        "is read only by to_frame, a float column of fits/{material}_diagnostics.parquet)",
+    "demid/surrogate.py::SurrogateFit.diagnostics::float(sp) => sp#0":
+        _NUMPY_FLOAT + " (scipy's shapiro p of a Series is an np.float64, or the float nan; Diagnostics is read "
+        "only by to_frame, a float column of fits/{material}_diagnostics.parquet)",
+    "demid/surrogate.py::SurrogateFit.diagnostics::float(reset.fvalue) => reset.fvalue#0":
+        "linear_reset's F is a Python float already (statsmodels 0.15, the pinned version), or the float nan; "
+        "Diagnostics is read only by to_frame, a float column of fits/{material}_diagnostics.parquet",
+    "demid/surrogate.py::SurrogateFit.diagnostics::float(reset.pvalue) => reset.pvalue#0":
+        _NUMPY_FLOAT + " (linear_reset's p, or the float nan; Diagnostics is read only by to_frame, a float column "
+        "of fits/{material}_diagnostics.parquet)",
+    "demid/surrogate.py::SurrogateFit.diagnostics::float(np.nanmax(vifs)) => np.nanmax(vifs)#0":
+        _NUMPY_FLOAT + " (np.nanmax of a list of floats; Diagnostics is read only by to_frame, a float column of "
+        "fits/{material}_diagnostics.parquet)",
+    "demid/surrogate.py::SurrogateFit.surrogate::int(round(self.results.df_resid)) => round(self.results.df_resid)#0":
+        "round() of a numpy float without digits returns a Python int (numpy 2, the pinned version): int() of an "
+        "int",
+    "demid/surrogate.py::SurrogateFit.surrogate::round(self.results.df_resid) => self.results.df_resid#0":
+        "statsmodels' df_resid is nobs - rank, a whole number held exactly as a float: int() of it is the int "
+        "round() gives",
+    "demid/surrogate.py::coding_from_frame::float(first[f'center:{f}']) => first[f'center:{f}']#0":
+        _NUMPY_FLOAT + " (an element of the fits frame's float64 column; its one caller, report/surfaces, reads "
+        "the centre only in the coding sentence: c >= 0, abs(c) and :.4g)",
+    "demid/surrogate.py::coding_from_frame::float(first[f'unit:{f}']) => first[f'unit:{f}']#0":
+        _NUMPY_FLOAT + " (an element of the fits frame's float64 column; its one caller, report/surfaces, reads "
+        "the unit only in the coding sentence, as :.4g)",
+    "demid/surrogate.py::surrogates_from_frame::float(rows['resid_var'].iloc[0]) => rows['resid_var'].iloc[0]#0":
+        _NUMPY_FLOAT + " (an element of a float64 column; Surrogate.resid_var is read by se_prediction's "
+        "np.sqrt(array + resid_var) and float()ed by tolerance.rescaled_surrogate and wave_value)",
+    "demid/surrogate.py::surrogates_from_frame::int(rows['resid_df'].iloc[0]) => rows['resid_df'].iloc[0]#0":
+        "np.int64 (an element of an int64 column): nothing reads Surrogate.resid_df (surrogates_to_frame writes "
+        "the fits' own surrogate(), not these)",
+    "demid/criticism/catalogue.py::heteroscedasticity_lr::int(np.argmin(np.abs(GAMMA_GRID))) => "
+    "np.argmin(np.abs(GAMMA_GRID))#0":
+        "np.intp, used only to index prof[zero]",
+    "demid/criticism/catalogue.py::stepdown_minp::np.argsort(obs, kind='stable') => np.argsort(obs)#0":
+        "the sorts differ only in the order of equal log p-values (NaNs last either way): the first of a tied "
+        "group counts over order[rank:], the same set (every tied member and every larger one) whichever member "
+        "it is, and each later member counts over a subset, so no more null draws, and running keeps the first's "
+        "value: every adjusted p-value is the same",
+    "demid/criticism/catalogue.py::_between_groups_ss::np.argsort(group, kind='stable') => np.argsort(group)#0":
+        "above ASYMPTOTIC_RUNS runs only; both orders sort by group id, so the reduceat bounds (from the counts) "
+        "cut the same groups and only the order of the runs within a group differs: each group's sum is over the "
+        "same residuals (identical for groups of one or two runs, float addition being commutative), in another "
+        "order for larger ones, the same to the last bits of the summation order (as _response_hypotheses' "
+        "batches)",
+    "demid/criticism/catalogue.py::Round.__init__::float(p) => p#0":
+        _NUMPY_FLOAT + " (an element of the step-down's float array; p_family is read by comparisons with the "
+        "family level, min() into the unwritten naming dict, json_number in catalogue_entry, and as "
+        "Finding.p_value by json_number, a float column of to_frame and the figure's :.3g)",
+    "demid/criticism/catalogue.py::Round._missing_terms::float(added_variable_stats(e_obs, c.direction, df - 1)[0]) "
+    "=> added_variable_stats(e_obs, c.direction, df - 1)[0]#0":
+        _NUMPY_FLOAT + " (an element of a float array; the F is f_logp's argument, np.maximum gives an np.float64 "
+        "either way, and the statistic, read only by json_number in catalogue_entry and Finding.to_json)",
+    "demid/criticism/catalogue.py::Round._missing_terms::float(f_logp(f_obs, df - 1)) => f_logp(f_obs, df - 1)#0":
+        _NUMPY_FLOAT + " (scipy's logsf of a scalar; logp is read by rank_key's sort, comparisons and min() in "
+        "verdict.strongest_rival, np.array for the step-down, and np.exp then json_number or float())",
+    "demid/criticism/catalogue.py::Round._drift::float(added_variable_stats(e_obs, u, df - 1)[0]) => "
+    "added_variable_stats(e_obs, u, df - 1)[0]#0":
+        _NUMPY_FLOAT + " (an element of a float array; the F is f_logp's argument, np.maximum gives an np.float64 "
+        "either way, and the statistic, read only by json_number in catalogue_entry and Finding.to_json)",
+    "demid/criticism/catalogue.py::Round._step::float(f_obs[best]) => f_obs[best]#0":
+        _NUMPY_FLOAT + " (an element of the change-points' float array; the statistic is read only by json_number "
+        "in catalogue_entry and Finding.to_json)",
+    "demid/criticism/catalogue.py::Round._outlier::int(np.argmax(np.abs(t_obs))) => np.argmax(np.abs(t_obs))#0":
+        "np.intp, used only to index np.flatnonzero(m.keep) and t_obs",
+    "demid/criticism/catalogue.py::Round._outlier::int(np.flatnonzero(m.keep)[i]) => np.flatnonzero(m.keep)[i]#0":
+        "np.int64: every reader of an outlier hypothesis' detail int()s it (extensions.extend_for and detail_json, "
+        "messages.finding_message, verdict.other_reading_of_the_run); the one comparison of two details, "
+        "naming.scatter_aliases', is between unequal-scatter hypotheses",
+    "demid/criticism/catalogue.py::Round._outlier::float(t_obs[i]) => t_obs[i]#0":
+        _NUMPY_FLOAT + " (an element of a float array; the statistic is read only by json_number in "
+        "catalogue_entry and Finding.to_json, and as :.1f in the outlier's message)",
+    "demid/criticism/catalogue.py::Round._outlier::float(outlier_logp(abs(t_obs[i]), n, df)) => "
+    "outlier_logp(abs(t_obs[i]), n, df)#0":
+        _NUMPY_FLOAT + " (np.minimum of two scalars; logp is read by rank_key's sort, comparisons and min() in "
+        "verdict.strongest_rival, np.array for the step-down, and np.exp then json_number or float())",
+    "demid/criticism/catalogue.py::Round._heteroscedasticity::float(heteroscedasticity_lr(e_obs, m.x, v)[0]) => "
+    "heteroscedasticity_lr(e_obs, m.x, v)[0]#0":
+        _NUMPY_FLOAT + " (an element of a float array; the likelihood ratio enters _lr_f_logp's arithmetic, an "
+        "np.float64 either way, and the statistic, read only by json_number in catalogue_entry and "
+        "Finding.to_json)",
+    "demid/criticism/catalogue.py::Round._heteroscedasticity::float(_lr_f_logp(lr, df, n)) => _lr_f_logp(lr, df, n)#0":
+        _NUMPY_FLOAT + " (scipy's logsf of a scalar; logp is read by rank_key's sort, comparisons and min() in "
+        "verdict.strongest_rival, np.array for the step-down, and np.exp then json_number or float())",
+    "demid/criticism/catalogue.py::Round._response_transform::float(self._boxcox_lr(m.y[:, None], q)[0]) => "
+    "self._boxcox_lr(m.y[:, None], q)[0]#0":
+        _NUMPY_FLOAT + " (an element of a float array; lr_obs enters _lr_f_logp's arithmetic, an np.float64 either "
+        "way, _boxcox_bootstrap's comparison, and the statistic, read only by json_number in catalogue_entry and "
+        "Finding.to_json)",
+    "demid/criticism/catalogue.py::Round._lack_of_fit::int(group.max()) => group.max()#0":
+        "np.intp (the largest id of pure_error_groups' np.unique inverse): np.bincount's minlength and np.zeros' "
+        "shape take it, and df_pe, df_lof become np.int64, read only by comparisons, arithmetic, stats.f.logsf and "
+        "the hypothesis' info['df'], which nothing reads (lack of fit is never a finding; catalogue_entry leaves "
+        "info out)",
+    "demid/criticism/catalogue.py::Round._factor_level::int(best[0]) => best[0]#0":
+        "np.int64 (an element of slip_ratios' int array), used only to index the list of candidates",
+    "demid/criticism/catalogue.py::Round._factor_level::float(t_obs) => t_obs#0":
+        _NUMPY_FLOAT + " (an element of slip_ratios' float array; the statistic is read only by json_number in "
+        "catalogue_entry and Finding.to_json)",
+    "demid/criticism/catalogue.py::Round._boxcox_bootstrap::int(np.count_nonzero(self._boxcox_lr(y_null[:, take], q) "
+    ">= lr_obs - 1e-09)) => np.count_nonzero(self._boxcox_lr(y_null[:, take], q) >= lr_obs - 1e-09)#0":
+        "np.count_nonzero gives an np.int64 count: exceed is then an np.int64, read only by (exceed + 1.0) / "
+        "(used + 1.0), an np.float64 of the same value, whose one reader, _response_transform, takes math.log of it "
+        "(a float either way)",
+    "demid/criticism/catalogue.py::Round._boxcox_lr::int(np.flatnonzero(_LAMBDA_TEST_GRID == 1.0)[0]) => "
+    "np.flatnonzero(_LAMBDA_TEST_GRID == 1.0)[0]#0":
+        "np.intp, used only to index prof[one]",
+    "demid/criticism/extensions.py::extend_for::int(h.detail) => h.detail#0":
+        "a step's detail is a Python int already: Round._step takes it from the starts of step_direction_chunks "
+        "or step_projections, lists of int(): int() of an int",
+    "demid/criticism/extensions.py::extend_for::float(res.x) => res.x#0":
+        _NUMPY_FLOAT + " (minimize_scalar's bounded x; weight_gamma is read only by arithmetic: Model's "
+        "np.exp(-gamma * v), loglik_with and discrimination's noise, and info['sd_ratio'] float()s np.exp of it)",
+    "demid/criticism/extensions.py::extend_for::float(data.to_actual(row)[0, c.factor]) => "
+    "data.to_actual(row)[0, c.factor]#1":
+        _NUMPY_FLOAT + " (an element of to_actual's float array; fitting_value is read by the slip's message as "
+        "short_number (:.4g) and written with the finding's info through io.json_ready)",
+    "demid/criticism/extensions.py::extend_for::int(h.detail) => h.detail#1":
+        "an outlier's detail is a Python int already (Round._outlier int()s it): int() of an int",
+    "demid/criticism/extensions.py::extend_for::float(v) => v#0":
+        _NUMPY_FLOAT + " (elements of a float array; every reader of weight_values takes "
+        "np.asarray(..., dtype=float) of it: Model, weighted_loglik, discrimination._scatter_covariate)",
+    "demid/criticism/extensions.py::extend_for::float(g) => g#1":
+        _NUMPY_FLOAT + " (minimize_scalar's bounded method passes np.float64 points; weight_gamma is read only by "
+        "arithmetic: Model's np.exp(-gamma * v) and loglik_with, whose loglik is float()ed)",
+    "demid/criticism/extensions.py::detail_json::int(h.detail) => h.detail#0":
+        "an outlier's or a step's detail is a Python int already (Round._outlier int()s it; Round._step takes it "
+        "from lists of int()): int() of an int",
+    "demid/criticism/level2.py::Level2Result.own_tolerance::float(self.tolerances.get(observable, self.tolerance)) => "
+    "self.tolerances.get(observable, self.tolerance)#0":
+        "the one Level2Result is calibration_check's, whose tolerance is float(tolerance) and tolerances its "
+        "dict of float() values: float() of a float",
+    "demid/criticism/level2.py::Level2Result.reference_max_error::float(max((abs(v) for v in "
+    "self.reference_errors.values()))) => max((abs(v) for v in self.reference_errors.values()))#0":
+        _NUMPY_FLOAT + " (relative_error divides by np.abs(target); the value enters to_json's level-2 summary, "
+        "written through io.json_ready, whose readers (story.verdicts, report.model_criticism) compare it and "
+        "write it with percent_text)",
+    "demid/criticism/level2.py::calibration_check::float((tolerances or {}).get(o, tolerance)) => "
+    "(tolerances or {}).get(o, tolerance)#0":
+        "its one caller, criticize_material, passes tolerances=relative_tolerances(spec, targets, ...), a float "
+        "(band / abs(float(target)) or float(tolerance)) for every observable with a target: float() of a float",
+    "demid/criticism/level2.py::calibration_check::float(best_val) => best_val#0":
+        "best_val is a Python float already: minimax float()s every value it returns, and so does _best_point",
+    "demid/criticism/level2.py::calibration_check::float(targets[o]) => targets[o]#0":
+        "its one caller passes spec.targets, float()ed by MaterialSpec (Response(r, float(c['target']), ...)): "
+        "float() of a float",
+    "demid/criticism/level2.py::calibration_check::float(reference_point[f]) => reference_point[f]#0":
+        "a config number (an int or a float): Level2Result.reference_point is read only by to_json's clean, where "
+        "json_number float()s each value",
+    "demid/criticism/level2.py::_best_point::float(np.max(np.abs(grid_err[i]))) => np.max(np.abs(grid_err[i]))#0":
+        _NUMPY_FLOAT + " (np.max of a float row; it enters max(1.0, ...) and a product compared with the spread)",
+    "demid/criticism/level1.py::prepare_data::int(ok.sum()) => ok.sum()#0":
+        "np.int64, used only as np.arange's stop: the same array of run numbers",
+    "demid/criticism/level1.py::_finding::int(same.sum()) => same.sum()#0":
+        "np.int64 (a count of a bool array), read only by finding_message's f-string (the same digits)",
+    "demid/criticism/level1.py::_finding::int(same.sum()) => same.sum()#1":
+        "np.int64 (a count of a bool array): Finding.compared_runs is read only by to_json, written through "
+        "io.json_ready (an int)",
+    "demid/criticism/level1.py::_finding::int(h.detail) => h.detail#0":
+        "a step's detail is a Python int already: Round._step takes it from lists of int(): int() of an int",
+    "demid/criticism/level1.py::_gain::int(same.sum()) => same.sum()#0":
+        "np.int64 (a count of a bool array): gain['compared_runs'] is read only through to_json, written by "
+        "io.json_ready (an int)",
+    "demid/criticism/verdict.py::other_reading_of_the_run::int(h.detail) => h.detail#0":
+        "an outlier's detail is a Python int already (Round._outlier int()s it): int() of an int",
+    "demid/criticism/verdict.py::_specific_share::float(min(specific)) => min(specific)#0":
+        _NUMPY_FLOAT + " (an element of family_weights' float array, positive); its one reader divides n_tests by "
+        "it for detectable_departure's arithmetic and scipy calls",
+    "demid/criticism/verdict.py::unpredictable_runs_message::int(r) => r#0":
+        "np.int64 (read_table's run column is int64: run numbers are integers; without a run column they are "
+        "np.arange): the message writes them with f-strings and str(), the same digits",
+    "demid/criticism/verdict.py::verdict_of::int(r) => r#0":
+        "np.int64 (read_table's run column is int64: run numbers are integers; without a run column they are "
+        "np.arange): detail['unpredictable_runs'] is written through io.json_ready (ints)",
+    "demid/criticism/material.py::reference_point_position::float(100 * aset.exact.reference_distance) => "
+    "100 * aset.exact.reference_distance#0":
+        "reference_distance is a Python float on every path (ExactSet._nearest gives 0.0, np.nan, np.inf or a "
+        "float(); sampling.stored float()s the stored one): 100 times it is a float already",
+    "demid/criticism/discrimination.py::discriminating_runs::int(np.lexsort((taken, -np.round(gain, 9)))[0]) => "
+    "np.lexsort((taken, -np.round(gain, 9)))[0]#0":
+        "np.intp, used only to index points, the parts and sep, and in np.isin against the chosen ones",
+    "demid/criticism/discrimination.py::discriminating_runs::float(np.min(sep_i)) => np.min(sep_i)#0":
+        _NUMPY_FLOAT + " (np.min of a float row), passed at once to json_number",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
