@@ -282,7 +282,7 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
         n_center = int(np.sum(types == "center"))
         if n_center != int(design["center_runs"]):
             raise InputError(f"config key {config_key}.design.center_runs: expected "
-                             f"{design['center_runs']} centre runs, found {n_center}", source=src)
+                             f"{int(design['center_runs'])} centre runs, found {n_center}", source=src)
     elif dtype == "box_behnken":
         n_edge, n_center = int(np.sum(types == "edge")), int(np.sum(types == "center"))
         edges = _expected_counts(design, k)["edge"]
@@ -294,7 +294,7 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
         _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src)
         if n_center != int(design["center_runs"]):
             raise InputError(f"config key {config_key}.design.center_runs: expected "
-                             f"{design['center_runs']} centre runs, found {n_center}", source=src)
+                             f"{int(design['center_runs'])} centre runs, found {n_center}", source=src)
     return coding, types
 
 
