@@ -20,11 +20,14 @@ def _distance(nodes: np.ndarray) -> np.ndarray:
 
 
 def _nearest_nodes(m: int, count: int) -> np.ndarray:
-    """The ``count`` nodes of the m^D grid on the unit cube nearest CENTRE, sorted."""
+    """The ``count`` (<= 64) nodes of the m^D grid on the unit cube nearest CENTRE, sorted.  The 2^D nodes on each
+    axis's two nearest values lie within sqrt(D) steps of it, a node on an axis's sixth nearest value or farther
+    at least 2.5 steps away: the nearest nodes are among the five nearest values of every axis."""
     axis = np.linspace(0.0, 1.0, m)
-    grid = np.array(np.meshgrid(*[axis] * D, indexing="ij")).reshape(D, -1).T
-    dist = np.linalg.norm(grid - CENTRE, axis=1)
-    return np.array(sorted(map(tuple, grid[np.argpartition(dist, count)[:count]])))
+    near = [axis[np.argsort(np.abs(axis - c))[:5]] for c in CENTRE]
+    block = np.array(np.meshgrid(*near, indexing="ij")).reshape(D, -1).T
+    dist = np.linalg.norm(block - CENTRE, axis=1)
+    return np.array(sorted(map(tuple, block[np.argsort(dist)[:count]])))
 
 
 def test_an_empty_set_of_many_points_starts_from_the_nodes_of_a_grid_of_a_million_nearest_the_zero():
