@@ -1850,7 +1850,8 @@ _EXACT_SET_TESTS = ["tests/sampling/test_exact_sets.py", "tests/sampling/test_ex
                     "tests/sampling/test_roots_boundaries_whole.py", "tests/sampling/test_quadrature_cap_whole.py",
                     "tests/sampling/test_solid_span_across_whole.py", "tests/sampling/test_solid_seed_whole.py",
                     "tests/sampling/test_exact_outer_axis_whole.py", "tests/sampling/test_zoom_min_whole.py",
-                    "tests/sampling/test_quadrature_units_whole.py", "tests/sampling/test_roots_accuracy_whole.py"]
+                    "tests/sampling/test_quadrature_units_whole.py", "tests/sampling/test_roots_accuracy_whole.py",
+                    "tests/sampling/test_exact_set_tolerance_whole.py"]
 # level 1's naming of causes (aliasing, extensions, naming, slips): the criticism's planted effects and its
 # confirming and deciding runs; the level-2, figure and 3-factor tests exercise other modules, the slowest
 # confirming-runs test repeats an outlier-or-slip case of the faster ones at four times their cost, and the two
@@ -1950,7 +1951,8 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/test_core_contracts.py",
                   "tests/sampling/test_polish_whole.py", "tests/uncertainty/test_sweep_plausible_whole.py",
                   "tests/sampling/test_polish_two_discs_whole.py", "tests/sampling/test_sobol_whole.py",
-                  "tests/sampling/test_polish_thin_ring_whole.py", "tests/sampling/test_polish_worst_residual_whole.py"],
+                  "tests/sampling/test_polish_thin_ring_whole.py", "tests/sampling/test_polish_worst_residual_whole.py",
+                  "tests/sampling/test_polish_start_points_whole.py"],
     },
     "demid/surrogate.py": {
         "functions": None,
@@ -2531,7 +2533,8 @@ TABLE: dict[str, dict] = {
                   "tests/inputs/test_level_coding_axial_whole.py", "tests/inputs/test_level_coding_far_from_zero_whole.py",
                   "tests/inputs/test_design_check_messages_whole.py", "tests/inputs/test_inputs_edges_whole.py",
                   "tests/inputs/test_design_points_missing_whole.py",
-                  "tests/inputs/test_centre_run_count_text_whole.py", "tests/inputs/test_misplaced_point_text_whole.py"],
+                  "tests/inputs/test_centre_run_count_text_whole.py", "tests/inputs/test_misplaced_point_text_whole.py",
+                  "tests/inputs/test_design_center_runs_whole.py"],
     },
     "demid/criticism/discrimination.py": {
         "functions": None,
