@@ -4960,6 +4960,92 @@ EQUIVALENT: dict[str, str] = {
         "np.intp, used only to index points, the parts and sep, and in np.isin against the chosen ones",
     "demid/criticism/discrimination.py::discriminating_runs::float(np.min(sep_i)) => np.min(sep_i)#0":
         _NUMPY_FLOAT + " (np.min of a float row), passed at once to json_number",
+    "demid/design_check.py::_level_coding::float(unit) => unit#0":
+        _NUMPY_FLOAT + " (the unit is a difference of two np.unique values over 2.0, or np.polyfit's slope: Coding.unit is read by arithmetic (to_coded, to_actual, np.asarray), :.4g formats, float columns of the fit tables and the validation summary JSON through io.json_ready; the two divisions by it (_print_tolerance, _level_tolerance) are guarded by `not unit`)",
+    "demid/design_check.py::_check_design::int(np.sum(types == 'center')) => np.sum(types == 'center')#0":
+        "np.int64 (a count of a bool array): compared with int(design['center_runs']) and printed in an f-string (found {n_center}), which prints the digits either way",
+    "demid/design_check.py::_check_design::int(design['center_runs']) => design['center_runs']#1":
+        "the factorial branch's count is only compared (n_center != it): the schema's integer admits an int or a whole float (3.0), and an int equals the whole float it converts from",
+    "demid/design_check.py::_check_design::int(np.sum(types == 'center')) => np.sum(types == 'center')#1":
+        "np.int64 (a count of a bool array): compared with int(design['center_runs']) and printed in an f-string (found {n_center}), which prints the digits either way",
+    "demid/design_check.py::_refuse_missing_or_repeated_points::int(runs[i]) => runs[i]#0":
+        "np.int64 (read_table's run column is int64; every table checked comes from read_table, design_generation's sheet has int runs): the list only goes to len() and InputError(run=...), which joins the runs with str() (the digits either way)",
+    "demid/design_check.py::_expected_counts::int(design['center_runs']) => design['center_runs']#0":
+        "the centre count is only compared (counts.get(t, 0) < n in _refuse_misplaced_points; the Box-Behnken caller reads ['edge']): the schema's integer admits an int or a whole float (3.0), and an int compares with the whole float as with the int",
+    "demid/design_check.py::_refuse_misplaced_points::int(bad[0]) => bad[0]#0":
+        "np.intp from np.flatnonzero: used only as an index (snapped[i], np.delete(..., i), .iloc[i]), the same with either",
+    "demid/design_check.py::_refuse_misplaced_points::int(table['run'].iloc[i]) => table['run'].iloc[i]#0":
+        "np.int64 (read_table's run column is int64): only passed as InputError(run=...), printed as f'run {run}' (the digits either way)",
+    "demid/design_check.py::_refuse_misplaced_points::int(np.sum(types == t)) => np.sum(types == t)#0":
+        "np.int64 counts: only compared (counts.get(t, 0) < n)",
+    "demid/transcription/check.py::Suspect.to_dict::float(self.found) => self.found#0":
+        "the one Suspect is built in _located with found=float(records[c][3]): already a Python float",
+    "demid/transcription/check.py::Suspect.to_dict::float(self.suggested) => self.suggested#0":
+        "the one Suspect is built in _located with suggested=float(records[c][5]): already a Python float",
+    "demid/transcription/check.py::Suspect.to_dict::int(self.restores) => self.restores#0":
+        "the one Suspect is built in _located with restores=int(restores[c]): already a Python int",
+    "demid/transcription/check.py::check_transcription::float(base[name][0]) => base[name][0]#0":
+        _NUMPY_FLOAT + " (an element of a statistics array: reproduced is read by np.isfinite, PrintedValue.agrees (np.asarray), _format's :.6g, the float column of to_frame and to_json through _jsonable, which converts an np.floating)",
+    "demid/transcription/check.py::_located::int(restores.max()) => restores.max()#0":
+        "np.int64 (max of an int array): printed by _unexplained_message in an f-string only (the digits either way)",
+    "demid/transcription/check.py::_located::int(restores[c]) => restores[c]#0":
+        "np.int64 (an element of an int array): Suspect.restores is read only by to_dict, which applies int()",
+    "demid/transcription/check.py::_factor_hypotheses::int(np.sort(precision)[len(precision) // 2]) => np.sort(precision)[len(precision) // 2]#0":
+        "np.int64 (an element of _precision_elsewhere's int array): _design_levels passes it to _estimate_coding, which reads it only in 10.0 ** (-decimals) (a float base: the same float)",
+    "demid/transcription/check.py::_cell_repairs::float(actual) => actual#1":
+        _NUMPY_FLOAT + " (actual is x_actual[row, j], an element of a float array: abs(value - actual) is the same number, compared only inside the ranking key)",
+    "demid/data.py::ValidatedTable.summary::int(np.sum(self.point_types == t)) => np.sum(self.point_types == t)#0":
+        "np.int64 counts: the summary goes to JSON through io.json_ready (np.integer -> int), and cli.run_counts reads them in f-strings and truth tests",
+    "demid/data.py::read_table::table.sort_values('run', kind='stable') => table.sort_values('run')#0":
+        "read_table refuses a duplicate run number before sorting: the run keys are distinct, so any sort gives the same order",
+    "demid/data.py::read_printed::int(r) => r#0":
+        "r comes from iterating table['run'], the int64 run column of a read_table table (its callers, steps.validate_step and the cli's validate and check-transcription commands, pass read_table/load_table tables): iterating an int64 Series yields Python ints, so int() of one is a no-op",
+    "demid/data.py::implausible_targets::float(y.max()) => y.max()#0":
+        _NUMPY_FLOAT + " (max of a float array: read by comparisons, arithmetic (hi - lo, hi * UNIT_SLIP_RATIO; nothing divides by it) and :.4g formats in far_target_warnings, power_of_ten_repair and story.advice; far stays a Python bool, `not` being applied)",
+    "demid/data.py::far_target_warnings::float(target) => target#0":
+        "its one caller (validate_material) passes spec.targets, built as float(c['target']) in MaterialSpec: repr() of a Python float is the same with or without float()",
+    "demid/data.py::validate_material::int(np.sum((types == 'center') & ok)) => np.sum((types == 'center') & ok)#0":
+        "np.int64 count: only compared (centre_ok < 2)",
+    "demid/data.py::validate_material::int(np.sum(types == 'center')) => np.sum(types == 'center')#0":
+        "np.int64 count: only compared (2 <= it)",
+    "demid/sampling/exact.py::Polynomial.degree::int(self.exponents.sum(axis=1).max()) => self.exponents.sum(axis=1).max()#0":
+        "np.int64 (max of an int array): its one reader, exact_set, takes max(..., 1) and passes it to unit_tensor, which sizes its tensor np.zeros((degree + 1,) * dim) with it (np.zeros accepts an np.int64)",
+    "demid/sampling/exact.py::ExactSet._outer_axis::int(np.argmax(widths)) => np.argmax(widths)#0":
+        "np.intp from np.argmax: used only as an index (_unit_spans[axis]) and as the axis of Solid.integral/distance, where it indexes (ref[axis]), moves (np.moveaxis(..., axis + 1, -1)), deletes and inserts (np.delete, np.insert): the same with either",
+    "demid/sampling/exact.py::ExactSet._fraction::float(shape.length[0]) => shape.length[0]#0":
+        _NUMPY_FLOAT + " (an element of a float array: fraction is read by comparisons (evaluate_set, level 2), float() in evaluate_set and stored_strict_sets, and float DataFrame columns (set_state_frame, to_frame))",
+    "demid/sampling/exact.py::ExactSet._fraction::float(along0) => along0#0":
+        _NUMPY_FLOAT + " (an element of a float array: fraction is read by comparisons (evaluate_set, level 2), float() in evaluate_set and stored_strict_sets, and float DataFrame columns (set_state_frame, to_frame))",
+    "demid/sampling/exact.py::ExactSet._nearest::float(gap[0]) => gap[0]#0":
+        _NUMPY_FLOAT + " (an element of a float array: reference_distance is read by np.isfinite and float(100 * x) in criticism.material and by float DataFrame columns (set_state_frame, to_frame))",
+    "demid/sampling/exact.py::ExactSet._nearest::float(dist[0]) => dist[0]#0":
+        _NUMPY_FLOAT + " (an element of a float array: reference_distance is read by np.isfinite and float(100 * x) in criticism.material and by float DataFrame columns (set_state_frame, to_frame))",
+    "demid/transcription/printed.py::parse_printed::int(value) => value#0":
+        "value is an int or an np.integer here (the isinstance test; bools are refused above): str() of either prints the same digits",
+    "demid/transcription/printed.py::positional::float(value) => value#1":
+        "its one caller, _printed_column, passes elements of a float array (np.float64): np.format_float_positional prints an np.float64 and float() of it alike",
+    "demid/kriging.py::fit_hyperparameters::float(np.exp(best.x[k])) => np.exp(best.x[k])#0":
+        "np.float64: its one caller stores it as KrigingSurrogate.nugget, which is read only inside float(...) (system, resid_var, se_mean_after, hyperparameters_json)",
+    "demid/kriging.py::KrigingSurrogate.system::float(self.nugget) => self.nugget#0":
+        "nugget is already a Python float: fit() stores float(np.exp(...)), from_hyperparameters float(hyper['nugget']); GaussianSystem only adds it to JITTER",
+    "demid/kriging.py::KrigingSurrogate.hyperparameters_json::float(self.nugget) => self.nugget#0":
+        "nugget is already a Python float (fit() stores float(np.exp(...)), from_hyperparameters float(...)): json.dumps prints it the same",
+    "demid/kriging.py::KrigingSurrogate.hyperparameters_json::float(v) => v#0":
+        "the lengths are a float64 array (np.exp of the optimum, np.asarray(..., dtype=float) when restored): each element is an np.float64, a float subclass that json.dumps prints with float.__repr__, the same text",
+    "demid/sampling/planes.py::Solid.integral::float(error[0] + total[0, 1]) => error[0] + total[0, 1]#0":
+        _NUMPY_FLOAT + " (a sum of two float-array elements: its one caller, ExactSet._fraction, returns it as fraction_error, read by float() in evaluate_set and stored_strict_sets and by float DataFrame columns (set_state_frame, to_frame))",
+    "demid/sampling/planes.py::Solid.distance::int(np.argmin(values)) => np.argmin(values)#0":
+        "np.intp from np.argmin: used only in max(i - 1, 0), min(i + 1, 32) and as an index of scan and values, the same with either",
+    "demid/sampling/planes.py::Solid.distance::float(np.sqrt(best[0])) => np.sqrt(best[0])#0":
+        _NUMPY_FLOAT + " (its one caller, ExactSet._nearest, returns it as reference_distance, read by np.isfinite and float(100 * x) in criticism.material and by float DataFrame columns (set_state_frame, to_frame))",
+    "demid/transcription/engine.py::DesignFit.__init__::int(np.sum(s > tol)) => np.sum(s > tol)#0":
+        "np.int64 rank: used in slices (vt[:rank], u[:, :rank], s[:rank]) and np.broadcast_to in _statistics, the same with either",
+    "demid/transcription/engine.py::DesignFit.__init__::int(groups.max()) => groups.max()#0":
+        "np.int64: n_groups sizes np.zeros((n, n_groups)) and gives df_pe = n - n_groups, broadcast into arrays by _statistics: the same with either",
+    "demid/transcription/engine.py::evaluate_designs::int(g.max()) => g.max()#0":
+        "np.int64: each n - (g.max() + 1) goes into np.array, an int64 array either way",
+    "demid/uncertainty/posterior.py::_kl_bits::float(_weighted_sum(term, weights)) => _weighted_sum(term, weights)#0":
+        "_weighted_sum over every axis is a 0-d array: max(0.0, it) is 0.0 for a negative or NaN sum as before, else it, and divided by LN2 it is an np.float64 of the same value; information_gain_bits and its error (abs of a difference) enter float DataFrame columns (to_frame, ranking), comparisons, np.isfinite and :.2f formats",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
