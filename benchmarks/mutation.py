@@ -221,6 +221,43 @@ criticism/discrimination ``_scatter_covariate``' points / alpha -> * alpha; crit
 ``extrapolation_warnings`` 0 -> -1 (#1).  **The last seven held-out draws pool to 413 of 473, 87.3 %** (95 % interval
 about 84-90 %).  The draw is in SEEN_DRAWS; the next held-out seed is written down below.
 
+Fourteenth round (issue #40), before the fourteenth held-out draw.  (1) A coverage triage: the default suite run
+once under coverage with each test's context, and every unseen, unlisted mutant whose statement no test of its row
+executes (109 of 9,259) handed to the area it belongs to: killed by new tests, or read as a default no caller
+leaves, a branch no caller reaches, a chunk size (listed, equivalent or setting); most were defaults on a
+signature's continuation lines, which line coverage counts as not run.  (2) A dropped-cast triage: every unseen,
+unlisted mutant that drops a float(), int(), round() or sorted() call or a kind="stable" (307; earlier draws had
+found such mutants equivalent about 60-70 % of the time) run against the tests of its row that execute its line
+(61 killed, 245 survived, 1 not executed), and every survivor read with every consumer of its value: 229 listed
+equivalent with the value's type and its readers (np.float64 into arithmetic, format specs, float columns and
+io.json_ready; np.int64 used as an index or a count; a value already a Python float), about ten tested where the
+type shows (an integer config value printed as 3.0, numpy's round-half-even taking a Box-Cox lambda of 0.05 to the
+rejected log, a count that crashes np.linspace, a TypeError for a repeated --factor), two left (a stable argsort
+among exact replicates whose choice rests on round-off; a 4-factor material job's level-2 grid size, whose test
+would take 0.7 s).  (3) Areas on seeds 45 and 46 (``--per-module`` 1-3; 45:3 and 46:3 in SEEN_DRAWS) and four
+more hand-written catalogues (criticism_2 5/8, inputs_2 8/9, numerics_2 8/8, sentences_2 6/8 at their first runs,
+27 of 33 = 81.8 %).  Real bugs found on the way and fixed: a Box-Cox transform tested after an outlier with a
+response <= 0 was excluded (its likelihood counts the excluded run: NaN); a Box-Cox lambda rounded to a named
+transform the 99 % interval rejects (lambda 0.04 -> the log); "expected 3.0 centre runs".
+
+Fourteenth held-out draw (seed 296_513, written down before this round and never run until its tests and lists
+were merged; ``--held-out --held-out-only --per-module 1`` over all 81 rows, leaving out SEEN_DRAWS; two halves side
+by side, 15 minutes): **61 of 72 killed, 84.7 %** (30/36 and 31/36; three listed equivalent beforehand, two of them
+by the dropped-cast triage, and one search setting; 61/76 = 80.3 % counting them).  Survivors: sampling/polish
+``_polish``' 1 - 1e-12 -> 1; transcription/typos ``single_cell_slips``' ``digit_at[i] and digit_at[i + 1]`` ->
+``digit_at[i + 1]``; criticism/naming ``_step_aiccs``' ``<= STEP_CHUNK`` -> ``<``; combinations/axes
+``principal_axes``' asarray dropped; design_inference ``infer_design``' ``(1.0,) * k`` -> ``(1.0,)``; io
+``content_digest``' block 1 << 20 -> 2 << 20; surrogate ``anova``' np.zeros((n, 1)) -> (n, 2); next_wave
+``plan_next_wave``' left-out count 0 -> 1 over Omega; story/measurements ``measurement_order``' ``base_frac > 0`` ->
+``> 1``; criticism/edges ``extrapolation_warnings``' row 0 -> -1 (#0); report/summary's key without the verdict
+rule.  Read after the draw (in-sample now): two killed by tests (the shrink sentence at fractions under 1 %,
+tests/story/test_measurement_order_properties.py; the summary's key with the verdict rule,
+tests/report/test_report_sentences_whole.py), one dead branch removed (plan_next_wave over Omega returns earlier),
+six listed equivalent and two settings (the reasons are in EQUIVALENT and SETTINGS).  With the lists written
+before the draw it would have been 61 of 63 (96.8 %); they were written after, so 84.7 % is its held-out figure.
+**The last eight held-out draws pool to 474 of 545, 87.0 %** (95 % interval about 84-90 %).  The 90 % goal is not
+met.  The draw is in SEEN_DRAWS; the next held-out seed is written down below.
+
 Fourth round, the uncertainty, story, combinations, design, wave and loop modules (28 rows; new in-sample draws,
 seeds 21, 22 and 23 with ``--per-module 2`` and 21 and 22 again with 4, each run before any test was aimed at it, on the
 tests of the round so far; "with lists": survivors that reading showed equivalent or a search setting left out of the score):
@@ -5046,6 +5083,29 @@ EQUIVALENT: dict[str, str] = {
         "np.int64: each n - (g.max() + 1) goes into np.array, an int64 array either way",
     "demid/uncertainty/posterior.py::_kl_bits::float(_weighted_sum(term, weights)) => _weighted_sum(term, weights)#0":
         "_weighted_sum over every axis is a 0-d array: max(0.0, it) is 0.0 for a negative or NaN sum as before, else it, and divided by LN2 it is an np.float64 of the same value; information_gain_bits and its error (abs of a difference) enter float DataFrame columns (to_frame, ranking), comparisons, np.isfinite and :.2f formats",
+    # --- the fourteenth held-out draw's survivors (seed 296_513), read after it
+    "demid/transcription/typos.py::single_cell_slips::digit_at[i] and digit_at[i + 1] => digit_at[i + 1]#0":
+        "the pairs it adds are a decimal point and the digit after it (a sign is cut off first, an exponent written "
+        "out, and a printed number has one point): swapped, they are the number with its point one place right, the "
+        "decimal shift by one, which single_cell_slips also lists and which ranks before a transposition in best "
+        "(_KIND_RANK), so the same candidates keep the same kinds ('.5' -> '5.' starts no candidate: its digit has no "
+        "pair before it)",
+    "demid/combinations/axes.py::principal_axes::points = np.asarray(points, dtype=float) => pass#0":
+        "its one caller, set_combinations (from material_combinations), passes Coding.to_coded's float array or, for "
+        "an empty set, admitted_points' float array: np.asarray of a float array is the array itself",
+    "demid/design_inference.py::infer_design::(1.0,) * k => (1.0,)#1":
+        "a custom design's axial distances are read only by table_design's max() (1.0 either way), describe() (which "
+        "returns before them for a custom design) and check_transcription's _factor_hypotheses, which broadcasts alpha "
+        "to one value per factor (np.broadcast_to((1.0,), (k,)) is k ones); design_coding codes an inferred custom "
+        "design with 1.0 whatever its alpha",
+    "demid/io.py::content_digest::1 => 2#0":
+        "the size of the blocks the file is read in (1 MiB -> 2 MiB): SHA-256 of the concatenated blocks is the "
+        "same whatever their size",
+    "demid/surrogate.py::SurrogateFit.anova::1 => 2#3":
+        "np.zeros((n, 1)) -> np.zeros((n, 2)): pure_error_groups of rows that are all zero, one column or two, groups "
+        "the runs by block alone, so the blocks' sum of squares is the same",
+    "demid/criticism/edges.py::extrapolation_warnings::0 => -1#0":
+        "run_lo from row -1 of to_actual of one point, a one-row array: row 0 is row -1 (as run_hi's #1)",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
@@ -5294,6 +5354,15 @@ SETTINGS: dict[str, str] = {
         "minimax's 4 -> 3: the best of the starts is kept, and on level 2's smooth quadratic errors a fifth start, "
         "ranked below four others, reaches a minimum one of them reaches (tests/criticism/test_level2_whole.py, "
         "test_bottleneck_slack_whole.py and test_level2_shared_bias_sentence_whole.py read the same implied biases)",
+    # --- the fourteenth held-out draw's survivors (seed 296_513) that are settings
+    "demid/sampling/polish.py::_polish::1 - 1e-12 => 1#0":
+        "when a span's upper end is within 1e-12 of the search range's upper bound it is taken to reach it and not "
+        "polished; without the slack the SLSQP starts run, and as every point they try is clipped to the range "
+        "(to_actual clips v to [0, 1]) the end can move out by at most 1e-12 of the range, as the lower end's 1e-12",
+    "demid/criticism/naming.py::_step_aiccs::len(base_model.y) <= STEP_CHUNK => len(base_model.y) < STEP_CHUNK#0":
+        "at exactly STEP_CHUNK (256) runs the step AICcs come from the base fit's projections instead of one fit per "
+        "change-point: the same AICc to round-off (the docstring's identity SSR = SSR_base - (u'e)^2), a cost "
+        "threshold like a chunk size",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
@@ -5574,7 +5643,7 @@ def run_tests(tree: Path, tests: list[str], timeout: float) -> tuple[str, float]
 #: its mutants are drawn apart from the in-sample draw (the default ``--seed``, against which tests were written
 #: run by run), and no test may be written against them.  Once its survivors have been read and tests added for
 #: them, its score is in-sample too: write down a new seed here, unused, before the next round.
-HELD_OUT_SEED = 296_513  # the next draw; 702_119's, 781_203's, 864_091's, 927_443's, 415_867's, 143_881's and 865_173's were scored (in SEEN_DRAWS)
+HELD_OUT_SEED = 581_029  # the next draw; 702_119's, 781_203's, 864_091's, 927_443's, 415_867's, 143_881's, 865_173's and 296_513's were scored (in SEEN_DRAWS)
 
 
 #: Draws that tests were written against, run by run (seed, mutants per module): never part of a held-out draw.
@@ -5582,7 +5651,7 @@ HELD_OUT_SEED = 296_513  # the next draw; 702_119's, 781_203's, 864_091's, 927_4
 #: draw's survivors were read and tested), the second and third held-out draws (704_913, 3 per module; 902_611, 1)
 #: were read and tested, and so were the fourth round's draws (seeds 21-22 with 4 per module, 23 with 2, 24 with 2,
 #: 25 with 1).
-SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3", "864091:1", "36:3", "37:3", "927443:1", "38:3", "39:3", "415867:1", "40:3", "41:3", "143881:1", "42:3", "43:3", "44:3", "865173:1", "45:3", "46:3"]
+SEEN_DRAWS = ["14:20", "15:8", "16:5", "17:5", "18:5", "704913:3", "902611:1", "21:4", "22:4", "23:2", "24:2", "25:1", "318557:1", "26:2", "27:2", "28:2", "29:2", "540073:1", "30:2", "31:2", "613447:1", "32:3", "33:3", "702119:1", "781203:1", "34:3", "35:3", "864091:1", "36:3", "37:3", "927443:1", "38:3", "39:3", "415867:1", "40:3", "41:3", "143881:1", "42:3", "43:3", "44:3", "865173:1", "45:3", "46:3", "296513:1"]
 
 
 def _seen_ids(per_module: dict, seen: list[str]) -> set[str]:

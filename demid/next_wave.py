@@ -269,8 +269,7 @@ def plan_next_wave(material: str, table: pd.DataFrame, surrogates: dict, spec: M
 
     # first: they decide what the surrogate can be trusted with; inside the wave's count, not on top of it
     proposed = deciding_runs(findings, factors)
-    deciding, left_out = (proposed, 0) if analysed_over_omega else criticism_runs_in_box(proposed, factors, domain,
-                                                                                         lo, hi)
+    deciding, left_out = criticism_runs_in_box(proposed, factors, domain, lo, hi)  # over Omega: plan_omega_wave
     n_design = design_count(request.count, len(deciding), earlier_u[inside], lo, hi)
     over_budget = len(deciding) - (request.count - n_design)
     deciding = deciding[:request.count - n_design]

@@ -500,3 +500,22 @@ def test_a_recommended_point_beyond_the_design_runs_is_said_to_be_outside_them(t
                                                             "implausibility": 0.5}})
     text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
     assert ("outside the region the design runs cover" in text) == corner
+
+
+def test_how_to_read_the_summary_gives_the_plausible_set_the_verdict_rule_and_the_uninformative_rule(tmp_path):
+    """The key under the answers defines the plausible set, then states the verdict rule and the uninformative
+    rule, in that order, each in full (they are what the verdict words of every line mean)."""
+    from demid.report.summary import summary
+    from demid.sampling.residuals import PLAUSIBLE_DEFINITION
+    from demid.story.verdicts import UNINFORMATIVE_TEXT, VERDICT_TEXT
+
+    material = _material(3)
+    _write(tmp_path, "uncertainty/m.json", {})
+    _write(tmp_path, "criticism/m.json", {"level1": {}, "level2": {}})
+    context = ReportContext(str(tmp_path), {"materials": {"m": material}})
+    text = " ".join(_text(summary(context)).split())
+    pieces = [" ".join(_text([context.md(piece)]).split()) for piece in
+              (PLAUSIBLE_DEFINITION, "Verdicts: " + VERDICT_TEXT, UNINFORMATIVE_TEXT)]
+    at = [text.find(piece) for piece in pieces]
+    assert all(i >= 0 for i in at), [p[:60] for p, i in zip(pieces, at) if i < 0]
+    assert at == sorted(at)

@@ -112,3 +112,17 @@ def test_an_unreachable_target_is_named_first_and_left_out_and_a_ranking_cut_by_
     pair = pd.DataFrame({"observables": ["p", "q", "p+q"], "information_gain_bits": [1.0, 0.9, float("-inf")],
                          "feasible_fraction_pct": [40.0, 30.0, 0.0]})
     assert measurement_order(pair)[0].startswith("The targets of p + q can each be met but not together")
+
+
+@pytest.mark.parametrize("scale", [1.0, 0.02, 1e-4])
+def test_leaving_or_shrinking_the_fraction_reads_the_same_at_any_size_of_the_fraction(scale):
+    """Whether an added measurement leaves the admissible fraction (a relative change under 5e-4) or shrinks it, and
+    by what share, depends on the ratio of the fractions only: the same words for a set of 40 % and of 0.004 %."""
+    frame = pd.DataFrame({"observables": ["p", "q", "p+q"], "information_gain_bits": [1.0, 0.5, 1.7],
+                          "feasible_fraction_pct": [40.0 * scale, 60.0 * scale, 39.99 * scale]})
+    lines = measurement_order(frame)
+    assert re.fullmatch(r"From p, adding q gains 0\.70 bits \(1\.00 -> 1\.70\) but leaves the admissible fraction "
+                        rf"at ({_NUM}) %\.", lines[1]), lines[1]
+    shrink = re.search(rf"and shrinks the admissible fraction by ({_NUM}) %", lines[2])
+    assert shrink, lines[2]
+    assert float(shrink[1]) == pytest.approx(100 * (1 - 39.99 / 60.0), abs=0.051)
