@@ -5106,6 +5106,33 @@ EQUIVALENT: dict[str, str] = {
         "the runs by block alone, so the blocks' sum of squares is the same",
     "demid/criticism/edges.py::extrapolation_warnings::0 => -1#0":
         "run_lo from row -1 of to_actual of one point, a one-row array: row 0 is row -1 (as run_hi's #1)",
+    # --- [0] -> [-1] of a one-row array (the unseen pool's index mutants, screened and read)
+    "demid/sampling/grid.py::admissible_set::0 => -1#0":
+        "the one row of the closest node: to_actual of a single point (model_units reads it with ndmin=2, to_actual "
+        "with np.atleast_2d) is a one-row array, whose row 0 is its row -1",
+    "demid/sampling/grid.py::admissible_set::0 => -1#2":
+        "the one row of the span's lower ends: to_actual of a single point (model_units reads it with ndmin=2, "
+        "to_actual with np.atleast_2d) is a one-row array, whose row 0 is its row -1",
+    "demid/sampling/grid.py::admissible_set::0 => -1#3":
+        "the one row of the span's upper ends: to_actual of a single point (model_units reads it with ndmin=2, "
+        "to_actual with np.atleast_2d) is a one-row array, whose row 0 is its row -1",
+    "demid/combinations/material.py::coded_box::0 => -1#0":
+        "the one row of coding.to_coded(lo[None, :]), a one-row array: row 0 is row -1",
+    "demid/next_wave.py::next_box::0 => -1#1":
+        "the one row of the plausible upper ends (one value per factor): to_search of a single point (model_units "
+        "reads it with ndmin=2, to_actual with np.atleast_2d) is a one-row array, whose row 0 is its row -1",
+    "demid/next_wave.py::plan_omega_wave::0 => -1#0":
+        "the one row of the search range's lower bounds: to_actual of a single point (model_units reads it with "
+        "ndmin=2, to_actual with np.atleast_2d) is a one-row array, whose row 0 is its row -1",
+    "demid/sampling/polish.py::_polish::0 => -1#3":
+        "the one row of the span's lower ends (one value per factor): to_search of a single point (model_units reads "
+        "it with ndmin=2, to_actual with np.atleast_2d) is a one-row array, whose row 0 is its row -1",
+    "demid/sampling/evaluate.py::exact_set_on_domain::0 => -1#0":
+        "the one row of the reference point, built as [[...]]: to_search of a single point (model_units reads it with"
+        " ndmin=2, to_actual with np.atleast_2d) is a one-row array, whose row 0 is its row -1",
+    "demid/criticism/reach.py::reach_beyond_bound::0 => -1#0":
+        "the one row of the point, built as [[...]]: to_search of a single point (model_units reads it with ndmin=2, "
+        "to_actual with np.atleast_2d) is a one-row array, whose row 0 is its row -1",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical

@@ -91,6 +91,9 @@ def test_every_output_of_a_fit_against_least_squares_written_out(seed, k, n_bloc
     np.testing.assert_allclose(sur.predict(probe), m @ beta, rtol=1e-9, atol=1e-9)
     se_mean = np.sqrt(np.einsum("ij,jk,ik->i", m, cov_poly, m))
     np.testing.assert_allclose(sur.se_mean(probe), se_mean, rtol=1e-6)
+    # in chunks of fewer points than the probe (a large grid is evaluated chunk by chunk): the same values
+    np.testing.assert_allclose(sur.se_mean(probe, chunk=k + 1), se_mean, rtol=1e-6)
+    np.testing.assert_allclose(sur.predict(probe, chunk=k + 1), m @ beta, rtol=1e-9, atol=1e-9)
     np.testing.assert_allclose(sur.se_prediction(probe), np.sqrt(se_mean ** 2 + w["s2"]), rtol=1e-6)
     assert sur.resid_var == pytest.approx(w["s2"], rel=1e-9) and sur.resid_df == df
 
