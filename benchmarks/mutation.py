@@ -5133,6 +5133,36 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/reach.py::reach_beyond_bound::0 => -1#0":
         "the one row of the point, built as [[...]]: to_search of a single point (model_units reads it with ndmin=2, "
         "to_actual with np.atleast_2d) is a one-row array, whose row 0 is its row -1",
+    "demid/sampling/exact.py::ExactSet._unit_spans::0 => -1#0":
+        "a one-factor exact set's shape is Lines.cut(self.residuals[None], ...): one line, so its per-line arrays "
+        "(first, last, feasible, length, nearest's gap and point) have one element, whose index 0 is index -1",
+    "demid/sampling/exact.py::ExactSet._unit_spans::0 => -1#2":
+        "a one-factor exact set's shape is Lines.cut(self.residuals[None], ...): one line, so its per-line arrays "
+        "(first, last, feasible, length, nearest's gap and point) have one element, whose index 0 is index -1",
+    "demid/sampling/exact.py::ExactSet._unit_spans::0 => -1#3":
+        "a one-factor exact set's shape is Lines.cut(self.residuals[None], ...): one line, so its per-line arrays "
+        "(first, last, feasible, length, nearest's gap and point) have one element, whose index 0 is index -1",
+    "demid/sampling/exact.py::ExactSet._unit_spans::0 => -1#1":
+        "a two-factor exact set's shape is Planes(self.residuals[None], ...): one plane, so its per-plane results "
+        "(spans(j), distance's distances and points) have one row, whose index 0 is index -1",
+    "demid/sampling/exact.py::ExactSet._fraction::0 => -1#1":
+        "a one-factor exact set's shape is Lines.cut(self.residuals[None], ...): one line, so its per-line arrays "
+        "(first, last, feasible, length, nearest's gap and point) have one element, whose index 0 is index -1",
+    "demid/sampling/exact.py::ExactSet._nearest::0 => -1#0":
+        "in a one-factor set the reference point in unit coordinates has one coordinate: ref[0] is ref[-1]",
+    "demid/sampling/exact.py::ExactSet._nearest::0 => -1#3":
+        "a two-factor exact set's shape is Planes(self.residuals[None], ...): one plane, so its per-plane results "
+        "(spans(j), distance's distances and points) have one row, whose index 0 is index -1",
+    "demid/sampling/exact.py::ExactSet._nearest::0 => -1#4":
+        "a one-factor exact set's shape is Lines.cut(self.residuals[None], ...): one line, so its per-line arrays "
+        "(first, last, feasible, length, nearest's gap and point) have one element, whose index 0 is index -1",
+    "demid/criticism/messages.py::and_list::0 => -1#0":
+        "names[0] is read only when len(names) == 1, where it is names[-1]",
+    "demid/criticism/searches.py::bottleneck_analysis::0 => -1#1":
+        "candidates[0] is read only when len(candidates) == 1, where it is candidates[-1]",
+    "demid/criticism/one_run.py::deleted_logp_by_identity::0 => -1#0":
+        "_LAMBDA_TEST_GRID (np.round(np.arange(-2, 2.0001, 0.05), 10)) holds 1.0 once: the first index of it is the "
+        "last",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
