@@ -5163,6 +5163,17 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/one_run.py::deleted_logp_by_identity::0 => -1#0":
         "_LAMBDA_TEST_GRID (np.round(np.arange(-2, 2.0001, 0.05), 10)) holds 1.0 once: the first index of it is the "
         "last",
+    "demid/criticism/level2.py::calibration_check::0 => -1#0":
+        "problem.actual of the best point, one point of the unit search space (minimax and _best_point return a "
+        "single point), is Level2Problem.actual's np.atleast_2d of it mapped to actual units: a one-row array, whose "
+        "row 0 is its row -1",
+    "demid/criticism/level2.py::calibration_check::0 => -1#1":
+        "problem.actual of the shared-bias point, one point of the unit search space (minimax and _best_point return "
+        "a single point), is Level2Problem.actual's np.atleast_2d of it mapped to actual units: a one-row array, "
+        "whose row 0 is its row -1",
+    "demid/criticism/models.py::Data.point_dict::0 => -1#0":
+        "every caller (level1's extra runs and run candidates, discrimination's runs) passes one point, a row of its "
+        "points; Data.to_actual reads it with np.atleast_2d: a one-row array, whose row 0 is its row -1",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
