@@ -5174,6 +5174,17 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/models.py::Data.point_dict::0 => -1#0":
         "every caller (level1's extra runs and run candidates, discrimination's runs) passes one point, a row of its "
         "points; Data.to_actual reads it with np.atleast_2d: a one-row array, whose row 0 is its row -1",
+    "demid/transcription/check.py::check_transcription::0 => -1#1":
+        "the table's own fit is evaluated for one hypothesis, y[:, None]: every statistic of lack_of_fit_p(...) is an"
+        " array over that one column, whose index 0 is index -1",
+    "demid/transcription/check.py::check_transcription::0 => -1#2":
+        "the table's own fit is evaluated for one hypothesis, y[:, None]: every statistic of lack_of_fit_p(...) and "
+        "so every agreement of printed._agreement (np.atleast_1d per hypothesis) is an array over that one column, "
+        "whose index 0 is index -1",
+    "demid/transcription/check.py::_printed_slip::0 => -1#0":
+        "off[0] is read only after len(off) != 1 returned None: off has one element, off[0] is off[-1]",
+    "demid/transcription/check.py::_printed_slip::0 => -1#2":
+        "targets[off[0]] is evaluated only after len(off) != 1 was false (or short-circuits): off has one element",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
