@@ -5185,6 +5185,27 @@ EQUIVALENT: dict[str, str] = {
         "off[0] is read only after len(off) != 1 returned None: off has one element, off[0] is off[-1]",
     "demid/transcription/check.py::_printed_slip::0 => -1#2":
         "targets[off[0]] is evaluated only after len(off) != 1 was false (or short-circuits): off has one element",
+    "demid/next_wave.py::planned_box::0 => -1#1":
+        "the refocus scenario's rows: the plausible-identifiability frame (uncertainty.plausible) holds one row per "
+        "factor of a scenario and broadcasts the scenario's robust_fraction_pct over them, so its first row's value "
+        "is its last's",
+    "demid/waves.py::wave_evidence::0 => -1#0":
+        "the refocus scenario's rows: the plausible-identifiability frame (uncertainty.plausible) holds one row per "
+        "factor of a scenario and broadcasts the scenario's robust_fraction_pct over them, so its first row's value "
+        "is its last's",
+    "demid/waves.py::wave_summary::0 => -1#1":
+        "the wave's scenario rows (indexed by factor): the plausible-identifiability frame (uncertainty.plausible) "
+        "holds one row per factor of a scenario and broadcasts the scenario's robust_fraction_pct over them, so its "
+        "first row's value is its last's",
+    "demid/story/verdicts.py::verdict_frame::0 => -1#2":
+        "the strict set's row of one scenario and one factor: the frame holds one row per (scenario, factor) "
+        "(scenario names are unique; one row per factor of each), so iloc[0] is iloc[-1]",
+    "demid/story/verdicts.py::verdict_frame::0 => -1#4":
+        "the plausible set's row of one scenario and one factor: the frame holds one row per (scenario, factor) "
+        "(scenario names are unique; one row per factor of each), so iloc[0] is iloc[-1]",
+    "demid/criticism/material.py::reference_point_position::0 => -1#0":
+        "the reference point is built as np.array([[...]]), one row; to_search (model_units, ndmin=2) keeps one row, "
+        "whose row 0 is its row -1",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
