@@ -5206,6 +5206,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/material.py::reference_point_position::0 => -1#0":
         "the reference point is built as np.array([[...]]), one row; to_search (model_units, ndmin=2) keeps one row, "
         "whose row 0 is its row -1",
+    "demid/uncertainty/posterior.py::_weighted_sum::0 => -1#0":
+        "the contracted axis of weights[axis], a one-dimensional array of trapezoid weights: its axis 0 is its axis "
+        "-1",
+    "demid/uncertainty/posterior.py::posterior_from_loglik::0 => -1#0":
+        "the log-likelihood is given on the n^d grid of the domain (its one caller sums terms reshaped to (n,) * "
+        "domain.dim): each of its axes has n nodes, so shape[0] is shape[-1]",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
