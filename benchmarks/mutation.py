@@ -5212,6 +5212,12 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/posterior.py::posterior_from_loglik::0 => -1#0":
         "the log-likelihood is given on the n^d grid of the domain (its one caller sums terms reshaped to (n,) * "
         "domain.dim): each of its axes has n nodes, so shape[0] is shape[-1]",
+    "demid/criticism/searches.py::_shared_bias::0 => -1#0":
+        "_shared_bias_envelope of e[:, None], one column (one point): its value and delta arrays have one element, "
+        "whose index 0 is index -1",
+    "demid/criticism/searches.py::_shared_bias::0 => -1#1":
+        "_shared_bias_envelope of e[:, None], one column (one point): its value and delta arrays have one element, "
+        "whose index 0 is index -1",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
