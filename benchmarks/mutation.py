@@ -5218,6 +5218,15 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/searches.py::_shared_bias::0 => -1#1":
         "_shared_bias_envelope of e[:, None], one column (one point): its value and delta arrays have one element, "
         "whose index 0 is index -1",
+    "demid/criticism/catalogue.py::Round._drift::0 => -1#1":
+        "added_variable_stats of the observed residuals, e_obs = m.resid_w[:, None] (set once in Round.run; passed as"
+        " it is), one column: the per-column statistic has one element, whose index 0 is index -1",
+    "demid/criticism/catalogue.py::Round._heteroscedasticity::0 => -1#0":
+        "heteroscedasticity_lr of the observed residuals, e_obs = m.resid_w[:, None] (set once in Round.run; passed "
+        "as it is), one column: the per-column statistic has one element, whose index 0 is index -1",
+    "demid/criticism/catalogue.py::Round._response_transform::0 => -1#0":
+        "_boxcox_lr of m.y[:, None], one column: the per-column likelihood ratio has one element, whose index 0 is "
+        "index -1",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
