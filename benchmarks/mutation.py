@@ -5227,6 +5227,11 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/catalogue.py::Round._response_transform::0 => -1#0":
         "_boxcox_lr of m.y[:, None], one column: the per-column likelihood ratio has one element, whose index 0 is "
         "index -1",
+    "demid/canonical.py::quadratic_parts::0 => -1#0":
+        "idx[0] is read only in the len(idx) == 1 branch (a linear term), where it is idx[-1]",
+    "demid/transcription/engine.py::evaluate_designs::0 => -1#0":
+        "_group_deviations_ss of y[:, None], one column: its per-column sums have one element, whose index 0 is index"
+        " -1",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
