@@ -5001,8 +5001,9 @@ EQUIVALENT: dict[str, str] = {
         _NUMPY_FLOAT + " (the unit is a difference of two np.unique values over 2.0, or np.polyfit's slope: Coding.unit is read by arithmetic (to_coded, to_actual, np.asarray), :.4g formats, float columns of the fit tables and the validation summary JSON through io.json_ready; the two divisions by it (_print_tolerance, _level_tolerance) are guarded by `not unit`)",
     "demid/design_check.py::_check_design::int(np.sum(types == 'center')) => np.sum(types == 'center')#0":
         "np.int64 (a count of a bool array): compared with int(design['center_runs']) and printed in an f-string (found {n_center}), which prints the digits either way",
-    "demid/design_check.py::_check_design::int(design['center_runs']) => design['center_runs']#1":
-        "the factorial branch's count is only compared (n_center != it): the schema's integer admits an int or a whole float (3.0), and an int equals the whole float it converts from",
+    "demid/design_check.py::_refuse_centre_count::int(design['center_runs']) => design['center_runs']#0":
+        "the centre count is only compared (n_center != it; the message quotes _n_center_text): the schema's "
+        "integer admits an int or a whole float (3.0), and an int equals the whole float it converts from",
     "demid/design_check.py::_check_design::int(np.sum(types == 'center')) => np.sum(types == 'center')#1":
         "np.int64 (a count of a bool array): compared with int(design['center_runs']) and printed in an f-string (found {n_center}), which prints the digits either way",
     "demid/design_check.py::_refuse_missing_or_repeated_points::int(runs[i]) => runs[i]#0":

@@ -280,10 +280,7 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
     elif dtype == "factorial":
         _refuse_incomplete_factorial(factors, snapped, config_key, src)
         n_center = int(np.sum(types == "center"))
-        if n_center != int(design["center_runs"]):
-            # the count as a whole number: center_runs: 3.0 passes the schema's integer type
-            raise InputError(f"config key {config_key}.design.center_runs: expected "
-                             f"{_n_center_text(design)}, found {n_center}", source=src)
+        _refuse_centre_count(n_center, design, config_key, src)
     elif dtype == "box_behnken":
         n_edge, n_center = int(np.sum(types == "edge")), int(np.sum(types == "center"))
         edges = _expected_counts(design, k)["edge"]
@@ -293,10 +290,7 @@ def _check_design(table: pd.DataFrame, factors: list[str], design: dict, src: st
                              "design is not a plain box_behnken; declare design type custom to fit it as it is",
                              source=src)
         _refuse_missing_or_repeated_points(table, factors, design, snapped, coding, log_factors, src)
-        if n_center != int(design["center_runs"]):
-            # the count as a whole number: center_runs: 3.0 passes the schema's integer type
-            raise InputError(f"config key {config_key}.design.center_runs: expected "
-                             f"{_n_center_text(design)}, found {n_center}", source=src)
+        _refuse_centre_count(n_center, design, config_key, src)
     return coding, types
 
 
@@ -392,7 +386,15 @@ def _printed_level(table, f, j, snapped, level, coding, log_factors) -> float:
     return float(f"{10 ** value if f in log_factors else value:.5g}")
 
 
+def _refuse_centre_count(n_center: int, design: dict, config_key: str, src: str) -> None:
+    """A factorial's or Box-Behnken design's centre runs against ``design.center_runs``."""
+    if n_center != int(design["center_runs"]):
+        raise InputError(f"config key {config_key}.design.center_runs: expected {_n_center_text(design)}, "
+                         f"found {n_center}", source=src)
+
+
 def _n_center_text(design: dict) -> str:
+    # the count as a whole number: center_runs: 3.0 passes the schema's integer type
     n = int(design["center_runs"])
     return f"{n} centre run{'s' if n != 1 else ''}"
 
