@@ -1,4 +1,4 @@
-"""Builders of small synthetic design tables for tests."""
+"""Builders of small synthetic design tables and surrogates for tests."""
 
 from __future__ import annotations
 
@@ -108,3 +108,13 @@ def one_response_study(responses, lower, upper, target: float, count: int, margi
     plausible = plausible_identifiability_frame(surrogates, spec.domain, {"y": (("y",), 0.05)}, {"y": target}, 101,
                                                 z=z)
     return table, spec, surrogates, plausible
+
+
+class Linear:
+    """A plane surrogate, y = c + x @ a in actual units (the grid and set estimators' exact test fields)."""
+
+    def __init__(self, c, a):
+        self.c, self.a = float(c), np.asarray(a, dtype=float)
+
+    def predict(self, x):
+        return self.c + np.atleast_2d(np.asarray(x, dtype=float)) @ self.a

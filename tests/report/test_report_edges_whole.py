@@ -20,7 +20,8 @@ from demid.report.context import ReportContext
 from demid.report.model_criticism import _reference_point_lines
 from demid.report.plausible import ranking_display
 
-from .test_report_sentences_whole import LABELS, _cells, _level2, _material, _number, _text, _write
+from .test_report_sentences_whole import (LABELS, _assert_fraction_change_first_to_last, _cells, _level2, _material,
+                                          _number, _text, _write)
 
 
 # --------------------------------------------------------------------------- a recommended point on a bound
@@ -228,13 +229,7 @@ def test_with_one_factor_the_uncertainty_section_quotes_the_change_from_first_to
     _write(tmp_path, "tables/robust_identifiability.csv", pd.DataFrame(rows))
     _write(tmp_path, "uncertainty/m.json", {})
     text = _text(uncertainty(ReportContext(str(tmp_path), {"materials": {"m": material}}), "m"))
-    labels = {"s": "Both", "t": "First alone", "u": "Second alone"}
-    m = re.search(rf"From {labels[scenarios[0]]} to {labels[scenarios[-1]]} the feasible fraction changes by (\S+) % "
-                  r"\(strict\) and (\S+) % \(plausible\)\.", text)
-    assert m, text
-    for quoted, k in zip(m.groups(), (0, 1)):
-        first, last = fractions[scenarios[0]][k], fractions[scenarios[-1]][k]
-        assert _number(quoted) == pytest.approx(100 * (last - first) / first, abs=0.05 + 1e-9)
+    _assert_fraction_change_first_to_last(text, scenarios, fractions)
 
 
 def test_the_next_runs_coordinates_are_printed_to_a_thousandth_of_each_factors_range(tmp_path):

@@ -21,16 +21,10 @@ from demid.sampling import Domain
 from demid.sampling.grid import (AdmissibleSet, FractionEstimate, _box_cdf, _curvature_margin, admissible_set,
                                  cell_range, fraction_with_error, plane_band_fraction, predict_grid)
 
+from ..helpers import Linear
+
 # no shrinking: a failing example is reported as drawn, in seconds
 SETTINGS = settings(max_examples=10, deadline=None, derandomize=True, phases=[Phase.explicit, Phase.generate])
-
-
-class Linear:
-    def __init__(self, c, a):
-        self.c, self.a = float(c), np.asarray(a, dtype=float)
-
-    def predict(self, x):
-        return self.c + np.atleast_2d(np.asarray(x, dtype=float)) @ self.a
 
 
 @pytest.mark.parametrize("sign", [1.0, -1.0])

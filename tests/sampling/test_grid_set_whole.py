@@ -18,15 +18,9 @@ from scipy.optimize import linprog
 from demid.sampling import Domain
 from demid.sampling.grid import admissible_set
 
+from ..helpers import Linear
+
 SETTINGS = settings(max_examples=8, deadline=None, derandomize=True)
-
-
-class Linear:
-    def __init__(self, c, a):
-        self.c, self.a = float(c), np.asarray(a, dtype=float)
-
-    def predict(self, x):
-        return self.c + np.atleast_2d(np.asarray(x, dtype=float)) @ self.a
 
 
 def _study(seed, dim, k, sign):

@@ -12,16 +12,10 @@ import pytest
 from demid.sampling import Domain
 from demid.sampling.grid import admissible_set
 
+from ..helpers import Linear
+
 N = 11  # step 0.1; the sampled cells' sub-grid puts a-points at 0.3375, the slab's 16-point one at 0.3344, 0.3406
 EPS = 0.001 / 0.3375  # the sheet's half-width in a
-
-
-class Linear:
-    def __init__(self, c, a):
-        self.c, self.a = float(c), np.asarray(a, dtype=float)
-
-    def predict(self, x):
-        return self.c + np.atleast_2d(np.asarray(x, dtype=float)) @ self.a
 
 
 @pytest.mark.parametrize("sign", [1.0, -1.0])
