@@ -9,11 +9,7 @@ After: 16 of 16 killed (tests/story/test_point_outside_runs_whole.py: a star of 
 linear ranges; tests/inputs/test_level_printed_two_ways_whole.py: one factorial run off its level by a last-digit
 slip leaves every inferred axial distance).
 """
-import sys
-from pathlib import Path
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from hand_mutants import HandMutant  # noqa: E402
+from hand_mutants import HandMutant
 
 MUTANTS = [
     HandMutant(

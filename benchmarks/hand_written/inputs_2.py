@@ -7,13 +7,9 @@ only the added one (no test had an observable in use that is uninformative).
 After: the survivor is killed by tests/story/test_add_observable_used_uninformative_whole.py (an observable in use
 is uninformative, and the advice still names the informative one that gains most, with its gain and fraction; the
 mutant applied by hand against that file), and the blocks mutant by tests/test_blocks_orthogonal_boundary_whole.py
-as well; the catalogue as a whole was not re-run after.
+as well; the whole catalogue re-run after (on 0b6b92c): 9 of 9 killed.
 """
-import sys
-from pathlib import Path
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from hand_mutants import HandMutant  # noqa: E402
+from hand_mutants import HandMutant
 
 MUTANTS = [
     HandMutant(
