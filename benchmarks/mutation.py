@@ -2694,6 +2694,11 @@ _POSTERIOR_POINTS_DEFAULT = ("the default Sobol count of the posteriors is never
                               "use grids, not Sobol points")
 _WAVE_FRAME_COLUMN = (" (a float column of the wave's scenarios frame, read from its parquet row by row: the "
                       "history's column is float64 either way)")
+_EXACT_ONE_LINE = ("a one-factor exact set's shape is Lines.cut(self.residuals[None], ...): one line, so its per-line "
+                   "arrays (first, last, feasible, length, nearest's gap and point) have one element, whose index 0 "
+                   "is index -1")
+_EXACT_ONE_PLANE = ("a two-factor exact set's shape is Planes(self.residuals[None], ...): one plane, so its per-plane "
+                    "results (spans(j), distance's distances and points) have one row, whose index 0 is index -1")
 EQUIVALENT: dict[str, str] = {
     # --- criticism (naming, slips, verdict, run_order, one_run, discrimination, reach, edges), seed 42
     "demid/criticism/run_order.py::_ranks::1 => 0#0":
@@ -5135,28 +5140,21 @@ EQUIVALENT: dict[str, str] = {
         "the one row of the point, built as [[...]]: to_search of a single point (model_units reads it with ndmin=2, "
         "to_actual with np.atleast_2d) is a one-row array, whose row 0 is its row -1",
     "demid/sampling/exact.py::ExactSet._unit_spans::0 => -1#0":
-        "a one-factor exact set's shape is Lines.cut(self.residuals[None], ...): one line, so its per-line arrays "
-        "(first, last, feasible, length, nearest's gap and point) have one element, whose index 0 is index -1",
+        _EXACT_ONE_LINE,
     "demid/sampling/exact.py::ExactSet._unit_spans::0 => -1#2":
-        "a one-factor exact set's shape is Lines.cut(self.residuals[None], ...): one line, so its per-line arrays "
-        "(first, last, feasible, length, nearest's gap and point) have one element, whose index 0 is index -1",
+        _EXACT_ONE_LINE,
     "demid/sampling/exact.py::ExactSet._unit_spans::0 => -1#3":
-        "a one-factor exact set's shape is Lines.cut(self.residuals[None], ...): one line, so its per-line arrays "
-        "(first, last, feasible, length, nearest's gap and point) have one element, whose index 0 is index -1",
+        _EXACT_ONE_LINE,
     "demid/sampling/exact.py::ExactSet._unit_spans::0 => -1#1":
-        "a two-factor exact set's shape is Planes(self.residuals[None], ...): one plane, so its per-plane results "
-        "(spans(j), distance's distances and points) have one row, whose index 0 is index -1",
+        _EXACT_ONE_PLANE,
     "demid/sampling/exact.py::ExactSet._fraction::0 => -1#1":
-        "a one-factor exact set's shape is Lines.cut(self.residuals[None], ...): one line, so its per-line arrays "
-        "(first, last, feasible, length, nearest's gap and point) have one element, whose index 0 is index -1",
+        _EXACT_ONE_LINE,
     "demid/sampling/exact.py::ExactSet._nearest::0 => -1#0":
         "in a one-factor set the reference point in unit coordinates has one coordinate: ref[0] is ref[-1]",
     "demid/sampling/exact.py::ExactSet._nearest::0 => -1#3":
-        "a two-factor exact set's shape is Planes(self.residuals[None], ...): one plane, so its per-plane results "
-        "(spans(j), distance's distances and points) have one row, whose index 0 is index -1",
+        _EXACT_ONE_PLANE,
     "demid/sampling/exact.py::ExactSet._nearest::0 => -1#4":
-        "a one-factor exact set's shape is Lines.cut(self.residuals[None], ...): one line, so its per-line arrays "
-        "(first, last, feasible, length, nearest's gap and point) have one element, whose index 0 is index -1",
+        _EXACT_ONE_LINE,
     "demid/criticism/messages.py::and_list::0 => -1#0":
         "names[0] is read only when len(names) == 1, where it is names[-1]",
     "demid/criticism/searches.py::bottleneck_analysis::0 => -1#1":
