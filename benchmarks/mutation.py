@@ -2085,6 +2085,7 @@ TABLE: dict[str, dict] = {
                   "tests/transcription/test_other_repairs_text_whole.py", "tests/transcription/test_repair_explains_whole.py",
                   "tests/transcription/test_likely_typos_few_runs_whole.py",
                   "tests/transcription/test_likely_typos_three_se_whole.py",
+                  "tests/transcription/test_likely_typos_rivals_whole.py",
                   "tests/transcription/test_studentised_exact_fit_whole.py",
                   "tests/test_reported_numbers.py", "tests/test_core_contracts.py"],
     },

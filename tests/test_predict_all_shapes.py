@@ -37,3 +37,17 @@ def test_many_points_in_chunks_match_each_surrogates_predict(surrogates, chunk):
     out = predict_all(surrogates, points, chunk=chunk)
     for name, sur in surrogates.items():
         np.testing.assert_allclose(out[name], sur.predict(points), rtol=1e-12)
+
+
+@pytest.mark.parametrize("chunk", [1, 4, 22, 23])
+def test_standard_error_of_the_mean_in_chunks_is_the_quadratic_form_at_every_point(chunk):
+    """se_mean(x) = sqrt(m(x)' C m(x)), m(x) the row of the surrogate's terms at x: every one of 23 points, in
+    chunks of 1, 4, 22 or 23 points (a grid larger than one chunk is evaluated chunk by chunk)."""
+    terms = quadratic_terms(2)
+    root = np.random.default_rng(11).normal(size=(len(terms), len(terms)))
+    sur = Surrogate("y", ["a", "b"], terms, np.arange(1.0, 7.0), root @ root.T / 10, 0.1, 13)
+    points = np.random.default_rng(chunk).uniform(-2, 2, (23, 2))
+    got = sur.se_mean(points, chunk=chunk)
+    for x, value in zip(points, got):
+        row = np.array([x[0] ** t[0] * x[1] ** t[1] for t in terms])
+        assert value == pytest.approx(np.sqrt(row @ sur.covariance @ row), rel=1e-12)

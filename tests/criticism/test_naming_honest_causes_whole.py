@@ -107,3 +107,17 @@ def test_misfit_without_a_named_cause_is_unexplained_and_quotes_the_candidate_no
 def test_no_misfit_and_no_cause_is_not_unexplained():
     first = _round([_term("a^3", 0.4)], 0.05)
     assert honest_causes(_DATA, "y", [], "extended", "base", first, first, None, 0.05) == ([], "extended", None, {})
+
+
+@pytest.mark.parametrize("alpha", [0.05, 0.1])
+def test_of_several_named_causes_the_naming_record_quotes_the_first_named(alpha):
+    first = _round([_term("a^3", 0.2 * alpha), _term("b^3", 0.9)], alpha)
+    last = _round([_term("b^4", 0.8)], alpha)
+    named = [SimpleNamespace(cause="missing_term", detail="a^3", info={"alternatives": [{"cause": "step"}]}),
+             SimpleNamespace(cause="outlier", detail=7, info={"alternatives": []}),
+             SimpleNamespace(cause="drift", detail="run", info={})]
+    findings, model, unexplained, naming = honest_causes(_DATA, "y", named, "extended", "base", first, last,
+                                                         None, alpha)
+    assert findings == named and model == "extended" and unexplained is None
+    assert naming == {"residual_min_p": 0.8, "residual_tests": [], "first_alternatives": [{"cause": "step"}],
+                      "first_cause": "missing_term", "first_detail": "a^3"}

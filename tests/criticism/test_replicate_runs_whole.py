@@ -47,6 +47,10 @@ def test_replicates_of_an_outlier_and_of_the_worst_runs_of_an_unexplained_misfit
     runs = replicate_runs(simulated, fit, outlier, None)
     point = {f: float(f"{table[f][row]:.10g}") for f in factors}
     assert runs == [{**point, "purpose": run_purposes.CONFIRM, "replicate_of": label}] * OUTLIER_REPLICATES
+    # a later finding (another outlier, a term) does not move them: they serve the first cause named
+    later = int(table["run"][(row + 1) % len(table)])
+    for then in (SimpleNamespace(cause="outlier", detail=later), SimpleNamespace(cause="drift", detail="run")):
+        assert replicate_runs(simulated, fit, outlier + [then], None) == runs
     assert replicate_runs(data, fit, outlier, None) == []  # a typed table: its outlier may be a slip
     assert replicate_runs(simulated, fit, [SimpleNamespace(cause="drift", detail="run")], None) == []
     # an unexplained misfit: the runs of largest |externally studentised residual| of the quadratic

@@ -189,6 +189,10 @@ def test_an_incomplete_three_level_factorial_counts_its_missing_points(k, drop):
     text = str(err.value)
     assert (f"a 3^{k} factorial has {3 ** k - 1} non-centre points, the table has {3 ** k - 1 - drop}; missing "
             f"{drop}") in text
+    # the example is the first missing point as the factorial lists them (first factor slowest, -1 before +1)
+    first = min(tuple(int(v) for v in p) for p in coded[non_centre[-drop:]])
+    example = ", ".join(f"x{i + 1}={v:+d}" for i, v in enumerate(first))
+    assert f"e.g. the point ({example}) in coded units" in text
 
 
 @pytest.mark.parametrize("k, centres", [(2, 1), (3, 4)])

@@ -94,3 +94,18 @@ def test_a_factor_value_beyond_its_bound_is_refused_past_a_millionth_of_the_rang
         check_bounds(table, (factor,), "t.csv")
     assert err.value.run == 2 and err.value.column == "a"
     assert f"value {value:g} lies outside the declared bounds [2, 6] (config factors.a)" in str(err.value)
+
+
+@pytest.mark.parametrize("rows", [(0, 3), (1, 2), (2, 4), (0, 4)])
+def test_of_several_values_beyond_a_bound_the_first_row_of_the_table_is_named(rows):
+    factor = Factor("a", 2.0, 6.0, False, "a", "")
+    values = [3.0, 4.0, 5.0, 2.5, 5.5]
+    wrong = iter([1.5, 7.25])
+    for i in rows:
+        values[i] = next(wrong)
+    table = pd.DataFrame({"run": [14, 3, 9, 21, 5], "a": values})
+    with pytest.raises(InputError) as err:
+        check_bounds(table, (factor,), "t.csv")
+    first = min(rows)
+    assert err.value.run == table["run"][first] and err.value.column == "a"
+    assert f"value {values[first]:g} lies outside the declared bounds [2, 6] (config factors.a)" in str(err.value)

@@ -70,3 +70,22 @@ def test_a_cell_whose_corners_are_inside_and_whose_middle_is_not_is_measured_not
     share = 2 * (0.5 - np.sqrt(0.125))  # |u - 0.5| >= sqrt(0.1 / 0.8)
     assert count.cells[0] == pytest.approx(share, abs=1 / 16)
     assert count.sampled_cells >= 1
+
+
+@pytest.mark.parametrize("moving", range(5))
+def test_more_observables_than_grid_nodes_each_cell_is_measured_by_the_observable_that_crosses_the_band(moving):
+    """Five observables on a three-node axis: four are constant inside the band, the fifth (any of them) rises
+    through it, r = 2u - 1.5 on [0, 2]; |r| <= 1 holds for u in [0.25, 1.25], so 3/4 of the first cell and 1/4
+    of the second, measured by the plane through the corners, which is exact for a straight field."""
+    domain = Domain(("a",), (0.0,), (2.0,))
+    nodes = np.array([0.0, 1.0, 2.0])
+
+    def fields(u):
+        out = np.full((5, len(u)), 0.25)
+        out[moving] = 2.0 * u - 1.5
+        return out
+
+    count = cell_count(fields(nodes), 1.0, domain, np.array([1.0]), lambda x: fields(np.atleast_2d(x)[:, 0]), 16)
+    np.testing.assert_allclose(count.cells, [0.75, 0.25], rtol=0, atol=1e-12)
+    assert count.fraction == pytest.approx(0.5, abs=1e-12)
+    assert (count.analytic_cells, count.sampled_cells, count.evaluations) == (2, 0, 0)

@@ -74,6 +74,7 @@ def test_the_unexplained_verdict_lists_every_disagreement_and_what_cannot_be_com
     ("89.9%", 0.989, {"rmse": True}, None),                       # a percentage
     ("-0.95", 0.95, {"rmse": True, "q2": True}, ("0.95", "sign_lost")),
     ("9.5", 0.95, {"rmse": True}, ("0.95", "decimal_shift")),
+    ("11", 1.1, {"rmse": True}, ("1.1", "decimal_shift")),        # the commoner slip before a doubled digit's 1
     ("0.95", 0.95 + 0.3, {"rmse": True}, None),                   # no slip lands on it
 ])
 def test_a_printed_statistic_slip_only_where_exactly_one_of_several_disagrees(printed, reproduced, others, expected):
