@@ -1923,7 +1923,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/sampling/test_set_estimators.py", "tests/sampling/test_admissibility.py", "tests/test_core_contracts.py",
                   "tests/sampling/test_grid_fraction_properties.py", "tests/sampling/test_grid_set_whole.py",
-                  "tests/sampling/test_cell_count_whole.py", "tests/sampling/test_grid_fraction_translation.py",
+                  "tests/sampling/test_cell_count_whole.py", "tests/sampling/test_grid_set_tolerance_whole.py", "tests/sampling/test_grid_fraction_translation.py",
                   "tests/uncertainty/test_uncertainty.py::test_fraction_with_error_meets_target_on_annulus",
                   "tests/uncertainty/test_uncertainty.py::test_plane_band_fraction_matches_sampling",
                   "tests/uncertainty/test_uncertainty.py::test_fraction_with_error_reports_grid_error_and_3d_shell",
