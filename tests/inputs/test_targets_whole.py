@@ -109,3 +109,19 @@ def test_of_several_values_beyond_a_bound_the_first_row_of_the_table_is_named(ro
     first = min(rows)
     assert err.value.run == table["run"][first] and err.value.column == "a"
     assert f"value {values[first]:g} lies outside the declared bounds [2, 6] (config factors.a)" in str(err.value)
+
+
+@pytest.mark.parametrize("target, lo, hi", [(1.23, 10.0, 200.0), (4.56, 0.01, 0.5), (-4.56, -0.5, -0.01),
+                                            (789.0, 5.0, 100.0), (0.0789, 0.5, 10.0), (-789.0, -100.0, -5.0)])
+def test_a_far_target_two_point_shifts_bring_inside_looks_like_the_value_its_repair_names(target, lo, hi):
+    """Two shifts of the decimal point land among the simulated values: the warning names one value, the one a
+    power of ten brings inside with the fewest places (a tenth before ten times at one place)."""
+    powers = sorted((p for p in range(-6, 7) if p), key=abs)
+    inside = [target * 10.0 ** p for p in powers if lo <= target * 10.0 ** p <= hi]
+    assert len(inside) == 2
+    table = pd.DataFrame({"y": [lo, (lo + hi) / 2, hi]})
+    (text,) = far_target_warnings(table, {"y": target}, "t.csv")
+    said = re.search(r"and looks like (\S+) with the decimal point shifted; repair: [×÷]\S+ → (\S+) lies inside", text)
+    assert said, text
+    assert float(said.group(1)) == pytest.approx(inside[0], rel=1e-9)
+    assert float(said.group(2)) == pytest.approx(inside[0], rel=1e-9)
