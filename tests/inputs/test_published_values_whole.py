@@ -128,3 +128,14 @@ def test_a_list_where_a_list_is_due_asks_for_lower_and_upper_only_for_an_interva
                                                                     "[lower, upper]")
     assert _fails({"contractions": 5}).endswith("key contractions: 5 should be a list")
     assert _fails({"scenario_sets": {"m": {"s": {"unresolved": "a"}}}}).endswith("'a' should be a list")
+
+
+@pytest.mark.parametrize("slips, named", [
+    ({"table2": {"m": {"y": {"r2": "high"}}}, "source": 5}, "source: 5 should be text"),
+    ({"source": 5, "table2": {"m": {"y": {"r2": "high"}}}}, "source: 5 should be text"),
+    ({"tolerances": {"m": {"s": "x"}}, "targets": {"m": {"y": "x"}}}, "targets.m.y: 'x' is not a number"),
+    ({"table3": {"m": {"s": {"feasible_fraction_pct": 1, "width": {"b": "w"}}}}, "tolerances": {"m": {"t": "x"}}},
+     "tolerances.m.t: 'x' is not a number"),
+])
+def test_of_several_slips_in_a_file_the_shallowest_is_named_then_the_first_by_key(slips, named):
+    assert _fails(slips) == f"pub.yaml, key {named}"
