@@ -281,3 +281,20 @@ def test_several_runs_moved_onto_one_corner_count_the_points_left_without_a_run(
     text = str(err.value)
     assert f"all {moved + 1} are the point" in text, text
     assert text.endswith(f") and {moved - 1} more has no run"), text
+
+
+@pytest.mark.parametrize("prints", [(0.751, 0.75), (0.75, 0.751), (0.749, 0.7505)])
+def test_the_nearest_level_is_quoted_as_the_first_run_at_it_prints_it(prints):
+    """Two runs print the level a = +1 a little apart (both within the check's tolerance): a run typed onto no
+    level (0.9, coded +1.6) is told the nearest level as the first run of the table at that level prints it."""
+    coded = ccd_points(2, 1.0, 1)
+    table = pd.DataFrame({"run": np.arange(1, len(coded) + 1), "a": 0.5 + 0.25 * coded[:, 0],
+                          "b": 6.0 + 2.5 * coded[:, 1]})
+    at_one = np.flatnonzero(coded[:, 0] == 1.0)  # factorial runs 2 and 4, then the axial run 6
+    table.loc[at_one[0], "a"], table.loc[at_one[1], "a"] = prints
+    table.loc[at_one[2], "a"] = 0.9
+    with pytest.raises(InputError) as err:
+        check_design(table, ["a", "b"], {"type": "ccd", "alpha": 1.0, "center_runs": 1}, "t.csv", "materials.m")
+    assert err.value.run == at_one[2] + 1 and err.value.column == "a"
+    assert "value 0.9 is not a level of the declared ccd design (coded +1.6" in str(err.value)
+    assert str(err.value).endswith(f"; nearest valid level: {prints[0]:g} (coded +1)")
