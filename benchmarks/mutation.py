@@ -2153,6 +2153,7 @@ TABLE: dict[str, dict] = {
                                   "tests/criticism/test_extensions_accumulate_whole.py",
                                   "tests/criticism/test_one_run_whole.py", "tests/criticism/test_one_run_spare_runs_whole.py",
                                   "tests/criticism/test_aliasing_first_best_whole.py",
+                                  "tests/criticism/test_separating_runs_few_runs_whole.py",
                                   "tests/criticism/test_one_more_run_units_whole.py",
                                   "tests/criticism/test_one_more_run_criteria_whole.py"],
     },
