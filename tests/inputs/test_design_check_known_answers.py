@@ -298,3 +298,25 @@ def test_the_nearest_level_is_quoted_as_the_first_run_at_it_prints_it(prints):
     assert err.value.run == at_one[2] + 1 and err.value.column == "a"
     assert "value 0.9 is not a level of the declared ccd design (coded +1.6" in str(err.value)
     assert str(err.value).endswith(f"; nearest valid level: {prints[0]:g} (coded +1)")
+
+
+def test_where_runs_print_one_level_a_little_apart_the_coding_takes_each_levels_lowest_print():
+    """The coding comes from printed values (the centre run, the +-1 pair), not from a fit; where two runs print
+    one level differently (here by 4e-4, within the check's tolerance), the one read is the level's lowest print,
+    whatever the order of the runs: a two-factor face-centred CCD with two centre runs, and a one-factor CCD
+    (alpha 2) without a centre run, whose centre is then the middle of the +-1 pair."""
+    coded = ccd_points(2, 1.0, 2)
+    a = 0.5 + 0.25 * coded[:, 0]
+    shifts = {0.0: (0.0, 4e-4), 1.0: (4e-4, 0.0), -1.0: (-4e-4, 0.0)}  # per level, its runs' offsets in turn
+    for level, offsets in shifts.items():
+        rows = np.flatnonzero(coded[:, 0] == level)
+        a[rows[:2]] += offsets
+    table = pd.DataFrame({"run": np.arange(1, len(a) + 1), "a": a, "b": 6.0 + 2.5 * coded[:, 1]})
+    coding = infer_coding(table, ["a", "b"], {"type": "ccd", "alpha": 1.0, "center_runs": 2}, "t.csv")
+    lowest = {level: a[coded[:, 0] == level].min() for level in shifts}  # 0.5, 0.75 and 0.2496
+    assert coding.center[0] == pytest.approx(lowest[0.0], abs=1e-12)
+    assert coding.unit[0] == pytest.approx((lowest[1.0] - lowest[-1.0]) / 2, abs=1e-12)
+    single = pd.DataFrame({"run": np.arange(1, 7), "x": [1.0, 0.7504, 0.25, 0.75, 0.2504, 0.0]})
+    coding = infer_coding(single, ["x"], {"type": "ccd", "alpha": 2.0, "center_runs": 0}, "t.csv")
+    assert coding.center[0] == pytest.approx((0.75 + 0.25) / 2, abs=1e-12)
+    assert coding.unit[0] == pytest.approx((0.75 - 0.25) / 2, abs=1e-12)
