@@ -121,7 +121,8 @@ def test_a_far_target_two_point_shifts_bring_inside_looks_like_the_value_its_rep
     assert len(inside) == 2
     table = pd.DataFrame({"y": [lo, (lo + hi) / 2, hi]})
     (text,) = far_target_warnings(table, {"y": target}, "t.csv")
-    said = re.search(r"and looks like (\S+) with the decimal point shifted; repair: [×÷]\S+ → (\S+) lies inside", text)
+    said = re.search(r"and looks like (\S+) with the decimal point shifted; repair: [×÷]\S+ → (\S+) lies inside",
+                     text)
     assert said, text
     assert float(said.group(1)) == pytest.approx(inside[0], rel=1e-9)
     assert float(said.group(2)) == pytest.approx(inside[0], rel=1e-9)
