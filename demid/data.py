@@ -289,7 +289,7 @@ def far_target_warnings(table: pd.DataFrame, targets: dict, src: str, material: 
         repair = f"; repair: {power_of_ten_repair(found)}" if found["factor"] is not None else ""
         if slips:
             if found["repaired"] is not None:  # the point shift the repair names first: one value in one sentence
-                slips.sort(key=lambda s: not math.isclose(s[0], found["repaired"], rel_tol=1e-9))
+                slips.sort(key=lambda s: not math.isclose(s[0], found["repaired"]))
             value, kind = slips[0]
             out.append(f"{where} and looks like {value:.6g} with {SLIP_WORDS[kind]}{repair}; check the target. As "
                        "given, no simulated setting comes near it and level 2 will report a discrepancy.")
