@@ -5234,6 +5234,89 @@ EQUIVALENT: dict[str, str] = {
     "demid/transcription/engine.py::evaluate_designs::0 => -1#0":
         "_group_deviations_ss of y[:, None], one column: its per-column sums have one element, whose index 0 is index"
         " -1",
+    # --- the rest of the index [0] -> [-1] and dropped-cast survivors of the unseen pool, read with every consumer
+    "demid/sampling/grid.py::cell_count::float(frac.mean()) => frac.mean()#0":
+        _NUMPY_FLOAT + " (the mean of a float array; CellCount.fraction is read only by fraction_with_error, in "
+        "abs() differences and as FractionEstimate's fraction and coarse_fraction)",
+    "demid/sampling/grid.py::cell_count::int(analytic.sum()) => analytic.sum()#0":
+        "CellCount.analytic_cells is read only by fraction_with_error, which copies it into "
+        "FractionEstimate.analytic_cells, a field nothing in demid/, scripts/ or workflow/ reads: a numpy integer "
+        "of the same count either way",
+    "demid/sampling/planes.py::Solid.integral::0 => -1#3":
+        "integrate(..., n_owners=1, ...) returns error of shape (1,): error[-1] is error[0]",
+    "demid/sampling/planes.py::Solid.distance::0 => -1#0":
+        "the owner label passed to zoom_min is never read: squared(owners, s) ignores owners, and zoom_min uses "
+        "only len(owners) (1 either way) and np.repeat(owners, points), which it hands back to squared",
+    "demid/sampling/planes.py::Solid.distance::0 => -1#1":
+        "s_best from zoom_min has one element (one owner), so self.planes(axis, s_best) is one plane and its "
+        "distance()'s points have one row: point[-1] is point[0]",
+    "demid/sampling/planes.py::Solid.distance::0 => -1#4":
+        "zoom_min is given one owner (np.array([0])), so best has one element: best[-1] is best[0]",
+    "demid/surrogate.py::predict_all::0 => -1#1":
+        "first only supplies model_units and terms for the group, and a group is keyed by (factors, "
+        "log_factors, terms) while Surrogate.model_units reads only factors and log_factors: every member "
+        "gives the same model matrix",
+    "demid/surrogate.py::SurrogateFit.anova_frame::0 => -1#0":
+        "LackOfFitAnova.to_frame writes exactly one 'Model' row (the optional 'Blocks' row comes before it): "
+        "its one index is both [0] and [-1]",
+    "demid/surrogate.py::surrogates_from_frame::0 => -1#0":
+        "the fits frame is written only by surrogates_to_frame, which sets log_factors to one string for every "
+        "row of a response (coef['log_factors'] = ','.join(...)): its last row's is its first's",
+    "demid/surrogate.py::surrogates_from_frame::0 => -1#1":
+        "the fits frame is written only by surrogates_to_frame, which sets resid_var to one value for every "
+        "row of a response (coef['resid_var'] = sur.resid_var): its last row's is its first's",
+    "demid/criticism/searches.py::_shared_bias_envelope::0 => -1#0":
+        "delta's start is kept only in a column where no pair's meeting height exceeds 0; the weights are positive "
+        "(eps / eps_k, eps_k > 0) and the errors finite (config.py refuses a zero target), so that height is 0 only "
+        "where every pair's errors are equal (or differ below ~1e-300, invisible in delta): there err[0] == err[-1]",
+    "demid/transcription/typos.py::likely_typos::0 => -1#0":
+        "the mask table['run'] == run selects exactly one row: read_table refuses a duplicate run number, and "
+        "read_printed returns the printed cells in the table's row order, so the row's first cell is its last",
+    "demid/transcription/typos.py::refuse_likely_typos::0 => -1#0":
+        "the mask validated.table['run'] == run selects exactly one row: read_table refuses a duplicate run number, "
+        "and read_printed returns the printed cells in the table's row order, so the row's first cell is its last",
+    "demid/criticism/extensions.py::extend_for::0 => -1#3":
+        "np.flatnonzero(model.keep) holds distinct indices, and the slipped run c.row is one of the kept runs: "
+        "the comparison with it is true at exactly one position",
+    "demid/criticism/slips.py::slip_fit::0 => -1#0":
+        "np.flatnonzero(m.keep) holds distinct indices, and the slip's run is one of the kept runs: the "
+        "comparison with it is true at exactly one position",
+    "demid/criticism/naming.py::_choices::0 => -1#1":
+        "a Round appends at most one step hypothesis (catalogue.Round.__init__ calls _step once, which appends "
+        "one Hypothesis('step', ...)): the list step has one element",
+    "demid/criticism/verdict.py::confirming_message::0 => -1#0":
+        "the message reads only the keys of a run's expected dict, and discriminating_runs gives every run "
+        "the same keys in the same order ({label: ... for label in labels}): named and rivals are the same",
+    "demid/criticism/verdict.py::verdict_of::0 => -1#0":
+        "runs is either replicate_runs' list (every run has replicate_of) or ambiguity's discriminating runs "
+        "(none has it; level1.criticize: runs = replicate_runs(...) or runs): the first run has the key iff the "
+        "last has",
+    "demid/criticism/verdict.py::verdict_of::0 => -1#1":
+        "runs is either replicate_runs' list (every run has replicate_of) or ambiguity's discriminating runs "
+        "(none has it; level1.criticize: runs = replicate_runs(...) or runs): the first run has the key iff the "
+        "last has",
+    "demid/uncertainty/material.py::_plausible_tables::0 => -1#0":
+        "a group is either every scenario of a spec without own tolerances, whose JudgedScenario.surrogates are "
+        "all scenario_surrogates(fitted, ...) = the same fitted dict (judged_scenarios passes one), or a single "
+        "scenario: the first's surrogates are the last's",
+    "demid/data.py::validate_material::0 => -1#0":
+        "factor_levels gives every factor nominal_levels of the one design type: empty for every factor "
+        "(custom) or for none (3 or 5 levels): len(levels[0]) and len(levels[-1]) are both zero or both not",
+    "demid/story/verdicts.py::interval_at_bound::0 => -1#0":
+        "the Domain has one factor ('x',), so at_bound returns a 1-tuple: its first element is its last",
+    "demid/combinations/material.py::break_ridge_advice::0 => -1#4":
+        "the ranking has one row per observable subset (rank_observable_sets builds its rows from "
+        "itertools.combinations of distinct observables), so at most one row matches the wanted set",
+    "demid/design_check.py::_check_design::0 => -1#1":
+        "the mask table['run'] == r selects exactly one row: every table reaching the check has distinct run "
+        "numbers (read_table refuses a duplicate; a generated sheet numbers its runs 1..n)",
+    "demid/design_check.py::_refuse_missing_or_repeated_points::0 => -1#2":
+        "near[0] -> near[-1] inside `if len(near) == 1`: the list's one element either way",
+    "demid/criticism/material.py::criticize_material::0 => -1#0":
+        "same holds the scenarios whose observables are, as a set, with_targets and whose tolerance is the "
+        "reference tolerance: every one of them defines the same strict set (the observables' order aside), and "
+        "calibration_check reads of it only properties of the set (exact.fraction > 0, its admissible point "
+        "nearest the search's best, at_bound)",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
