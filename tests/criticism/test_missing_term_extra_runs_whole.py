@@ -38,7 +38,7 @@ def test_extra_runs_are_proposed_and_named_only_where_the_runs_cannot_tell_the_t
     table = pd.DataFrame(coding.to_actual(coded), columns=factors)
     table.insert(0, "run", np.arange(1, 14))
     table["y"] = y
-    (finding, *_) = criticize(table, FACTORS[2], "y", n_null=199).findings
+    (finding, *_) = criticize(table, FACTORS[2], "y", n_null=99).findings
     assert finding.cause == "missing_term"
     assert finding.aliases == [term_name(cubic, factors), term_name(alias, factors)]
     head = (f"y: the quadratic misses curvature along {factors[factor]} (term {term_name(cubic, factors)}, aliased "
