@@ -2642,7 +2642,8 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_edges.py::test_summary_lines_carry_best_point_and_extrapolation",
                   "tests/criticism/test_honest_causes.py::test_a_term_only_the_corner_runs_carry_is_found_by_its_geometry",
                   "tests/criticism/test_finding_sentences_whole.py", "tests/report/test_report_sentences_whole.py",
-                  "tests/criticism/test_level2_miss_words_whole.py"],
+                  "tests/criticism/test_level2_miss_words_whole.py",
+                  "tests/criticism/test_missing_term_extra_runs_whole.py"],
     },
     "demid/criticism/material.py": {
         "functions": None,

@@ -112,7 +112,9 @@ def greedy_batch(score: np.ndarray, candidates: np.ndarray, existing: np.ndarray
     for _ in range(count):
         factor = dist if length is None else np.minimum(1.0, dist / length)
         value = score * factor + TIE_BREAK * dist
-        value = np.round(value / value.max(), 9)  # the same choice whatever the last bits of the arithmetic
+        # the same choice whatever the last bits of the arithmetic; every candidate already a run (one factor's
+        # 41 nodes, a large count): all values 0, a tie, so the earliest candidate not chosen yet
+        value = np.round(value / max(value.max(), 1e-300), 9)
         if chosen:
             value[chosen] = -np.inf
         best = int(np.argmax(value))

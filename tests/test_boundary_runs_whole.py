@@ -156,8 +156,27 @@ def test_a_waves_runs_are_the_greedy_picks_of_each_score_and_their_kinds_are_cou
 
 def test_scores_equal_to_the_ninth_decimal_tie_and_go_to_the_earlier_candidate():
     """The same choice whatever the last bits of the arithmetic: scores that differ in the tenth decimal are a tie
-    (the earlier candidate), in the eighth they are not."""
+    (the earlier candidate), in the ninth or the eighth they are not."""
     cand = np.array([[0.2, 0.5], [0.8, 0.5], [0.5, 0.9]])
-    for gap, pick in ((3e-10, 0), (3e-8, 1)):
+    for gap, pick in ((3e-10, 0), (3e-9, 1), (3e-8, 1)):
         score = np.array([0.4, 0.4 * (1 + gap), 0.1])
         assert greedy_batch(score, cand, np.empty((0, 2)), 1, 0.1) == [pick]
+
+
+def test_once_every_candidate_holds_a_run_the_picks_go_to_the_earliest_not_yet_chosen():
+    """More runs than candidates: once every candidate holds a run, every value is 0, a tie, and each further pick
+    is the earliest candidate the batch has not chosen yet (no division by a zero largest value)."""
+    cand = np.linspace(0.0, 1.0, 5)[:, None]
+    # nodes 0, 2 and 4 are 0.25 from the runs at nodes 1 and 3 (factor 1 at length 0.2): a tie, in grid order
+    assert greedy_batch(np.full(5, 0.3), cand, cand[[1, 3]], 5, 0.2) == [0, 2, 4, 1, 3]
+    assert greedy_batch(np.full(5, 0.3), cand, cand[[1, 3]], 5, None) == [0, 2, 4, 1, 3]
+    # one factor's wave of 50 runs over its 41 nodes: every node once, then the exploring runs' earliest others
+    judged, rng = _judged(1, 1, 3, 0, 0.1)
+    lo, hi = judged.spec.domain.search_bounds()
+    nodes = np.linspace(lo[0], hi[0], 41)
+    runs, kinds = boundary_runs(judged, lo + rng.random((3, 1)) * (hi - lo), 50)
+    assert kinds == ["boundary"] * 38 + ["explore"] * 12
+    index = [int(np.argmin(np.abs(nodes - r))) for r in runs[:, 0]]
+    assert runs[:, 0] == pytest.approx(nodes[index], rel=1e-12, abs=1e-12)
+    assert sorted(index[:41]) == list(range(41))
+    assert index[41:] == [i for i in range(41) if i not in index[38:41]][:9]

@@ -28,3 +28,22 @@ def test_replicates_differing_in_the_seventh_decimal_are_one_point(k):
     assert (out.drift_tested, out.reason) == (False, "standard_order")
     assert out.to_json()["rank_correlation"] == 1.0
     assert "(rank correlation 1.00: " in out.message
+
+
+@pytest.mark.parametrize("pair", [(0.100001, 0.100004), (-0.500004, -0.500002), (0.999991, 0.999994)])
+def test_levels_differing_in_the_sixth_decimal_are_distinct_points(pair):
+    """Two levels 2e-6 to 3e-6 apart in coded units are two points: listed against their order, the run column
+    is no standard order (rank correlation that of scipy against the order of the values, 0.8), and drift is
+    tested; listed in their order, it is the standard order."""
+    low, high = pair
+    against = np.array([[-1.0], [high], [low], [1.0]])
+    runs = np.arange(1.0, 5.0)
+    by_value = stats.rankdata(against[:, 0])
+    expected = float(stats.spearmanr(runs, by_value)[0])
+    assert expected == pytest.approx(0.8, abs=1e-12)
+    assert standard_order_correlation(runs, against) == pytest.approx(expected, abs=1e-12)
+    out = assess_run_order(runs, against, {})
+    assert (out.drift_tested, out.reason) == (True, "")
+    along = against[[0, 2, 1, 3]]
+    assert standard_order_correlation(runs, along) == pytest.approx(1.0, abs=1e-12)
+    assert assess_run_order(runs, along, {}).reason == "standard_order"
