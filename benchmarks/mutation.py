@@ -5321,6 +5321,50 @@ EQUIVALENT: dict[str, str] = {
         "reference tolerance: every one of them defines the same strict set (the observables' order aside), and "
         "calibration_check reads of it only properties of the set (exact.fraction > 0, its admissible point "
         "nearest the search's best, at_bound)",
+    # --- every unseen mutant of the modules with the fewest (all modules up to about 170 mutants not drawn before)
+    # run against the tests that execute its line, and each survivor read with every consumer of the value
+    "demid/criticism/run_order.py::_ranks::np.cumsum(new_row) - 1 => np.cumsum(new_row) + 1#0":
+        "every rank two higher: the ranks are read only by _rank_correlation, a Pearson correlation, which no "
+        "shift of one variable changes; to the last bit too: run numbers are distinct (data.py refuses a repeated "
+        "one), so the ranks are a permutation of 0..n-1 (2..n+1 shifted) whose mean (n-1)/2 ((n+3)/2) is exact, and "
+        "np.corrcoef's deviations from the mean are the same half-integers",
+    "demid/criticism/run_order.py::standard_order_correlation::1.0 - 1e-12 => 1.0 + 1e-12#0":
+        "the early return once a standard order is matched can no longer trigger: best is the largest of 0.0 and "
+        "correlations np.corrcoef clips to [-1, 1], so it never exceeds 1; the loop then only takes further maxima, "
+        "which can raise a best already >= 1 - 1e-12 by at most 1e-12: assess_run_order's >= 0.95, its '.2f' "
+        "text (1.00) and to_json's round(., 6) (1.0) read the same, and no other code reads the correlation",
+    "demid/criticism/step_changes.py::step_direction_chunks::size = size or STEP_CHUNK => pass#0":
+        "no code passes a size (catalogue.Round._step and step_starts call step_direction_chunks(m, q)), and both use "
+        "it only on at most 256 runs (_step below ASYMPTOTIC_RUNS = 256, naming._step_aiccs' step_starts up to "
+        "STEP_CHUNK = 256): at most 256 - 3 change-points, one chunk of STEP_CHUNK = 256 or without a limit alike",
+    "demid/criticism/step_changes.py::step_direction_chunks::size or STEP_CHUNK => size#0":
+        "no code passes a size (catalogue.Round._step and step_starts call step_direction_chunks(m, q)), and both use "
+        "it only on at most 256 runs (_step below ASYMPTOTIC_RUNS = 256, naming._step_aiccs' step_starts up to "
+        "STEP_CHUNK = 256): at most 256 - 3 change-points, one chunk of STEP_CHUNK = 256 or without a limit alike",
+    "demid/criticism/step_changes.py::step_projections::1 => 0#4":
+        "suffix()'s table of n rows instead of n + 1: the dropped last row (the empty tail's zero) is never read: "
+        "the table is read only at ``first``, the first sorted position of a change-point's label, at most "
+        "n - STEP_MIN_RUNS",
+    "demid/boundary_runs.py::_unit::np.asarray(u, dtype=float) - lo => np.asarray(u, dtype=float) + lo#0":
+        "the candidates and the earlier runs are both mapped by _unit, now shifted alike by 2 lo / (hi - lo): "
+        "greedy_batch reads the points only through their differences (distances to earlier and chosen points), "
+        "which a common shift leaves unchanged, and the runs returned are cand_u[picked] (search units, not _unit's); "
+        "the shifted coordinates' round-off (ulps of |lo| / (hi - lo)) is of the order the grid already carries from "
+        "np.linspace(lo, hi) in search units, which the 9-digit rounding of the values absorbs (checked: the same "
+        "runs on 80 scenarios of 1-2 factors with ranges shifted by 0, 1e3 and 1e5)",
+    "demid/boundary_runs.py::_unit::np.asarray(u, dtype=float) - lo => np.asarray(u, dtype=float)#0":
+        "the candidates and the earlier runs are both mapped by _unit, now shifted alike by lo / (hi - lo): "
+        "greedy_batch reads the points only through their differences (distances to earlier and chosen points), "
+        "which a common shift leaves unchanged, and the runs returned are cand_u[picked] (search units, not _unit's); "
+        "the shifted coordinates' round-off (ulps of |lo| / (hi - lo)) is of the order the grid already carries from "
+        "np.linspace(lo, hi) in search units, which the 9-digit rounding of the values absorbs (checked: the same "
+        "runs on 80 scenarios of 1-2 factors with ranges shifted by 0, 1e3 and 1e5)",
+    "demid/boundary_runs.py::boundary_runs::1 => 2#1":
+        "reshape(-2, k) of the earlier runs is reshape(-1, k): numpy (2.4.6 pinned) takes any negative size as the "
+        "one unknown dimension, so the shape is the same",
+    "demid/boundary_runs.py::boundary_runs::1 => 2#3":
+        "reshape(-2, k) of the picked candidates is reshape(-1, k): numpy (2.4.6 pinned) takes any negative size as "
+        "the one unknown dimension, so the shape is the same",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
