@@ -2280,7 +2280,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_pareto.py", "tests/test_pareto_properties.py", "tests/test_core_contracts.py",
                   "tests/test_pareto_front_inputs_whole.py", "tests/test_pareto_polish_wells_whole.py",
-                  "tests/test_pareto_polish_sign_whole.py"],
+                  "tests/test_pareto_polish_sign_whole.py", "tests/test_pareto_polish_rules_whole.py"],
     },
     "demid/uncertainty/posterior.py": {
         "functions": None,
