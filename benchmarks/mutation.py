@@ -2621,8 +2621,9 @@ TABLE: dict[str, dict] = {
     },
     "demid/io.py": {
         "functions": None,
-        "tests": ["tests/test_save_figures_return_io_whole.py",  # first: a save_figures ending its caller ends the run (status 0)
-                  "tests/test_core_contracts.py", "tests/test_io_properties.py", "tests/test_kriging_likelihood_and_full_csv.py",
+        # the return test first: a save_figures that ended its calling process would end the run with status 0
+        "tests": ["tests/test_save_figures_return_io_whole.py", "tests/test_core_contracts.py",
+                  "tests/test_io_properties.py", "tests/test_kriging_likelihood_and_full_csv.py",
                   "tests/report/test_report_outputs.py::test_figures_drawn_in_two_processes_are_the_bytes_of_one",
                   "tests/test_io_whole.py", "tests/test_save_figures_io_whole.py",
                   "tests/test_csv_line_ends_whole.py", "tests/test_json_ready_whole.py",
