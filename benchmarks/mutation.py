@@ -2388,7 +2388,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_tolerance.py", "tests/criticism/test_level2_sign_properties.py", "tests/test_scenario.py",
                   "tests/criticism/test_level2_own_tolerance.py", "tests/test_judged_scenario_properties.py",
-                  "tests/test_tolerance_whole.py"],
+                  "tests/test_tolerance_whole.py", "tests/test_strict_set_predictions_whole.py"],
     },
     "demid/formulas.py": {
         "functions": None,
