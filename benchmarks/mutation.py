@@ -2286,7 +2286,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_pareto.py", "tests/test_pareto_properties.py", "tests/test_core_contracts.py",
                   "tests/test_pareto_front_inputs_whole.py", "tests/test_pareto_polish_wells_whole.py",
-                  "tests/test_pareto_polish_sign_whole.py"],
+                  "tests/test_pareto_polish_sign_whole.py", "tests/test_pareto_polish_rules_whole.py"],
     },
     "demid/uncertainty/posterior.py": {
         "functions": None,
@@ -2394,7 +2394,7 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/test_tolerance.py", "tests/criticism/test_level2_sign_properties.py", "tests/test_scenario.py",
                   "tests/criticism/test_level2_own_tolerance.py", "tests/test_judged_scenario_properties.py",
-                  "tests/test_tolerance_whole.py"],
+                  "tests/test_tolerance_whole.py", "tests/test_strict_set_predictions_whole.py"],
     },
     "demid/formulas.py": {
         "functions": None,
@@ -2627,7 +2627,9 @@ TABLE: dict[str, dict] = {
     },
     "demid/io.py": {
         "functions": None,
-        "tests": ["tests/test_core_contracts.py", "tests/test_io_properties.py", "tests/test_kriging_likelihood_and_full_csv.py",
+        # the return test first: a save_figures that ended its calling process would end the run with status 0
+        "tests": ["tests/test_save_figures_return_io_whole.py", "tests/test_core_contracts.py",
+                  "tests/test_io_properties.py", "tests/test_kriging_likelihood_and_full_csv.py",
                   "tests/report/test_report_outputs.py::test_figures_drawn_in_two_processes_are_the_bytes_of_one",
                   "tests/test_io_whole.py", "tests/test_save_figures_io_whole.py",
                   "tests/test_csv_line_ends_whole.py", "tests/test_json_ready_whole.py",

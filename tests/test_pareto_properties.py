@@ -67,6 +67,10 @@ def test_whole_pareto_output_matches_a_brute_force_front(k, n, seed, target, cap
             assert np.isnan(row.lower) and np.isnan(row.upper)
 
     table = result.to_frame()
+    # the CSV's columns: the row kind first, then the front's, then the intervals'
+    assert list(table.columns) == ["kind", *factors, "error", "objective", "factor", "lower", "upper", "n_points"]
     assert list(table["kind"]) == ["front"] * len(expected) + ["interval"] * k
+    pd.testing.assert_frame_equal(table.iloc[len(expected):][["factor", "lower", "upper", "n_points"]]
+                                  .reset_index(drop=True), intervals, check_dtype=False)
     pd.testing.assert_frame_equal(table.iloc[:len(expected)].drop(columns="kind").dropna(axis=1, how="all")
                                   .reset_index(drop=True), front, check_dtype=False)
