@@ -5367,6 +5367,49 @@ EQUIVALENT: dict[str, str] = {
     "demid/boundary_runs.py::boundary_runs::1 => 2#3":
         "reshape(-2, k) of the picked candidates is reshape(-1, k): numpy (2.4.6 pinned) takes any negative size as "
         "the one unknown dimension, so the shape is the same",
+    "demid/io.py::content_digest::20 => 19#0":
+        "the read block of the digest, 1 MiB -> 512 KiB: hashlib's sha256 is fed the same bytes in the same order "
+        "either way (iter(read, b'') until the end of the file), only in other pieces, so the hex digest, its one "
+        "output, is the same; the block size changes the memory used and the speed only",
+    "demid/scenario.py::JudgedScenario.likelihood_sd::has_own_band(response) and target => has_own_band(response)#0":
+        "target is spec.targets[o], a configured target, and config._check_names (run by check_semantics on "
+        "every material, load_config's validation) refuses a target of 0 ('a relative tolerance needs a non-zero "
+        "target'): a float that is never 0 (nor -0.0) is always truthy, so the 'and target' never selects the "
+        "scenario's tolerance and both forms compute own_rel = band / |target|",
+    "demid/blocks.py::block_effects::1 => 2#0":
+        "contrasts gains a second row of -1s (B+1 rows instead of B): its only caller, SurrogateFit.block_effects, "
+        "passes the B-1 block coefficients (params[p:], one per block_columns column) with the B block_levels, and "
+        "the result is zip(levels, effects, se), which stops after B rows; the first B rows (the identity and one "
+        "row of -1s) are the original contrasts, so every effect and standard error returned is the same and the "
+        "extra row is computed and dropped",
+    "demid/blocks.py::ccd_blocks::code * 2 + (np.prod(signs[:, i:], axis=1) > 0) => "
+    "code * 2 - (np.prod(signs[:, i:], axis=1) > 0)#0":
+        "ccd_blocks is called only by design_generation._check_blocks, which refuses every n_blocks but 2 and 3 "
+        "(3 only from three factors); 2 takes the factorial_blocks == 1 branch, 3 runs the loop int(log2(2)) = 1 "
+        "time on code = 0, so code = -(p > 0) and 1 + code % 2 (numpy's % takes the divisor's sign: -1 % 2 = 1) "
+        "gives the same block numbers as 1 + (p > 0) % 2",
+    "demid/blocks.py::ccd_blocks::code * 2 + (np.prod(signs[:, i:], axis=1) > 0) => "
+    "np.prod(signs[:, i:], axis=1) > 0#0":
+        "ccd_blocks is called only by design_generation._check_blocks, which refuses every n_blocks but 2 and 3 "
+        "(3 only from three factors); 2 takes the factorial_blocks == 1 branch, 3 runs the loop int(log2(2)) = 1 "
+        "time on code = 0, where code * 2 + b is b: the boolean array gives the same 1 + b % 2 block numbers",
+    "demid/blocks.py::ccd_blocks::code * 2 => 2#0":
+        "ccd_blocks is called only by design_generation._check_blocks, which refuses every n_blocks but 2 and 3 "
+        "(3 only from three factors); 2 takes the factorial_blocks == 1 branch, 3 runs the loop int(log2(2)) = 1 "
+        "time on code = 0, so code = 2 + b and 1 + (2 + b) % 2 = 1 + b % 2: the same block numbers",
+    "demid/blocks.py::ccd_blocks::code * 2 => code#0":
+        "ccd_blocks is called only by design_generation._check_blocks, which refuses every n_blocks but 2 and 3 "
+        "(3 only from three factors); 2 takes the factorial_blocks == 1 branch, 3 runs the loop int(log2(2)) = 1 "
+        "time on code = 0, where code * 2 and code are both 0: the same block numbers",
+    "demid/pareto.py::polish_front::front.empty or target == 0 => front.empty#0":
+        "polish_front's one caller, steps.pareto_step, passes spec.targets[pareto.error_of]: config "
+        "_check_cross_references refuses an error_of without a target ('has no target') and _check_names a target "
+        "of 0, so target == 0 never holds and the guard returns early only for an empty front, as before",
+    "demid/pareto.py::polish_front::[(0.0, 1.0)] * domain.dim => [(0.0, 1.0)]#1":
+        "the SLSQP bounds: scipy's minimize first turns bounds into new-style Bounds (standardize_bounds(..., "
+        "'new'), which broadcasts a single (lower, upper) pair to every coordinate) and back to one pair per "
+        "coordinate for SLSQP, so one pair and domain.dim equal pairs are the same bounds (checked with scipy "
+        "1.17.1, the pinned version: the same res.x)",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
@@ -5624,6 +5667,16 @@ SETTINGS: dict[str, str] = {
         "at exactly STEP_CHUNK (256) runs the step AICcs come from the base fit's projections instead of one fit per "
         "change-point: the same AICc to round-off (the docstring's identity SSR = SSR_base - (u'e)^2), a cost "
         "threshold like a chunk size",
+    "demid/pareto.py::polish_front::200 => 199#0":
+        "SLSQP's iteration cap (maxiter) of each polished cap: a search's budget, not a rule of the answer (its "
+        "ftol 1e-12 ends it first on the tested fronts: the closed-form fronts of "
+        "tests/test_pareto_polish_rules_whole.py are reached to 1e-14)",
+    "demid/pareto.py::polish_front::1 => 2#0":
+        "the acceptance of a polished point, error <= cap (1 + 1e-6) -> cap (2 + 1e-6): an accepted point "
+        "carries its own recomputed error and objective and the front is recomputed over the pool, so a looser "
+        "acceptance only adds evaluated points of the trade-off (where SLSQP misses its cap, e.g. at a cap below "
+        "the least error there is); on the closed-form fronts of tests/test_pareto_polish_rules_whole.py the one "
+        "point it adds lies on the true front",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
