@@ -1981,7 +1981,8 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/sampling/test_admissibility.py",
                   "tests/sampling/test_sobol_properties.py", "tests/sampling/test_sobol_whole.py",
                   "tests/test_core_contracts.py", "tests/uncertainty/test_posterior_quantiles.py",
-                  "tests/sampling/test_sobol_boundaries_whole.py"],
+                  "tests/sampling/test_sobol_boundaries_whole.py",
+                  "tests/sampling/test_sobol_band_edge_and_small_samples_whole.py"],
     },
     "demid/sampling/polish.py": {
         "functions": ["start_points", "_polish", "polish_spans"],
