@@ -2316,7 +2316,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_material_whole.py", "tests/uncertainty/test_material_tables_whole.py",
                   "tests/uncertainty/test_material_without_scenarios_whole.py",
                   "tests/uncertainty/test_own_tolerance_posteriors.py", "tests/criticism/test_unreachable_targets.py",
-                  "tests/story/test_story.py", "tests/uncertainty/test_material_notes_whole.py", _NOT_WORKFLOW],
+                  "tests/story/test_story.py", "tests/uncertainty/test_material_notes_whole.py",
+                  "tests/uncertainty/test_two_factor_posterior_resolution_whole.py", _NOT_WORKFLOW],
     },
     "demid/paper.py": {
         "functions": None,
