@@ -2231,7 +2231,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_ranking_four_factors_whole.py", "tests/uncertainty/test_ranking_contraction_whole.py",
                   "tests/uncertainty/test_ranking_hair_miss_whole.py",
                   "tests/uncertainty/test_ranking_equal_fractions_whole.py",
-                  "tests/uncertainty/test_ranking_own_posteriors_whole.py"],
+                  "tests/uncertainty/test_ranking_own_posteriors_whole.py",
+                  "tests/uncertainty/test_met_together_starts_whole.py"],
     },
     "demid/next_wave.py": {
         "functions": None,
