@@ -43,7 +43,7 @@ def _pair(sign: float, inert: bool):
 @pytest.mark.parametrize("sign", [1.0, -1.0])
 @pytest.mark.parametrize("inert", [False, True])
 @pytest.mark.parametrize("tolerance", [0.005, 0.02, 0.05])
-def test_a_pair_met_only_at_one_end_of_a_line_of_one_targets_is_met_together(sign, inert, tolerance):
+def test_a_pair_met_only_at_one_end_of_the_line_where_one_target_alone_is_met_is_found(sign, inert, tolerance):
     domain, surrogates, targets = _pair(sign, inert)
     witness = np.array([[5.8, 20.0, 0.3][:domain.dim]])
     errors = [abs(float(surrogates[o].predict(witness)[0]) - t) / abs(t) for o, t in targets.items()]
