@@ -1985,7 +1985,8 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/sampling/test_set_estimators.py", "tests/uncertainty/test_uncertainty.py", "tests/sampling/test_admissibility.py",
                   "tests/sampling/test_sobol_properties.py", "tests/sampling/test_sobol_whole.py",
                   "tests/test_core_contracts.py", "tests/uncertainty/test_posterior_quantiles.py",
-                  "tests/sampling/test_sobol_boundaries_whole.py"],
+                  "tests/sampling/test_sobol_boundaries_whole.py",
+                  "tests/sampling/test_sobol_band_edge_and_small_samples_whole.py"],
     },
     "demid/sampling/polish.py": {
         "functions": ["start_points", "_polish", "polish_spans"],
@@ -2236,7 +2237,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_ranking_four_factors_whole.py", "tests/uncertainty/test_ranking_contraction_whole.py",
                   "tests/uncertainty/test_ranking_hair_miss_whole.py",
                   "tests/uncertainty/test_ranking_equal_fractions_whole.py",
-                  "tests/uncertainty/test_ranking_own_posteriors_whole.py"],
+                  "tests/uncertainty/test_ranking_own_posteriors_whole.py",
+                  "tests/uncertainty/test_met_together_starts_whole.py"],
     },
     "demid/next_wave.py": {
         "functions": None,
@@ -2321,7 +2323,8 @@ TABLE: dict[str, dict] = {
                   "tests/uncertainty/test_material_whole.py", "tests/uncertainty/test_material_tables_whole.py",
                   "tests/uncertainty/test_material_without_scenarios_whole.py",
                   "tests/uncertainty/test_own_tolerance_posteriors.py", "tests/criticism/test_unreachable_targets.py",
-                  "tests/story/test_story.py", "tests/uncertainty/test_material_notes_whole.py", _NOT_WORKFLOW],
+                  "tests/story/test_story.py", "tests/uncertainty/test_material_notes_whole.py",
+                  "tests/uncertainty/test_two_factor_posterior_resolution_whole.py", _NOT_WORKFLOW],
     },
     "demid/paper.py": {
         "functions": None,

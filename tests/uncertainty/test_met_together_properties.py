@@ -7,6 +7,7 @@ not at 5 % less."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy import optimize
@@ -59,3 +60,31 @@ def test_targets_are_met_together_exactly_down_to_the_minimax_tolerance(k, more,
     assert _met_together(surrogates, domain, names, target_of, best)
     assert _met_together(surrogates, domain, names, target_of, best * 1.05)
     assert not _met_together(surrogates, domain, names, target_of, best * 0.95)
+
+
+def _study(seed):
+    """Two or three factors, one or two observables more than factors, linear responses with targets of either
+    sign, each target the response's value at its own random point: their minimax tolerance by linprog."""
+    rng = np.random.default_rng(seed)
+    k = int(rng.integers(2, 4))
+    count = k + int(rng.integers(1, 3))
+    factors = [f"f{i}" for i in range(k)]
+    lower = rng.uniform(-2.0, 2.0, k)
+    upper = lower + rng.uniform(0.5, 3.0, k)
+    names = [f"y{i}" for i in range(count)]
+    intercepts = [float(rng.choice([-1.0, 1.0])) * rng.uniform(5.0, 10.0) for _ in range(count)]
+    slopes = [rng.uniform(-1.0, 1.0, k) for _ in range(count)]
+    targets = [b + a @ (lower + rng.uniform(0, 1, k) * (upper - lower)) for b, a in zip(intercepts, slopes)]
+    surrogates = {n: _linear(n, factors, b, a) for n, b, a in zip(names, intercepts, slopes)}
+    best = _smallest_tolerance(lower, upper, intercepts, slopes, targets)
+    return surrogates, Domain(tuple(factors), tuple(lower), tuple(upper)), names, dict(zip(names, targets)), best
+
+
+@pytest.mark.parametrize("seed", [12, 13, 16, 23, 45, 59, 70])
+def test_a_set_a_thousandth_wider_than_a_point_is_found(seed):
+    """0.1 % above the minimax tolerance the set of points meeting every target is a sliver around the minimax
+    point, far thinner than any grid cell: the search still finds it (and, as above, nothing below the minimax
+    tolerance)."""
+    surrogates, domain, names, targets, best = _study(seed)
+    assert best > 0.0
+    assert _met_together(surrogates, domain, names, targets, best * 1.001)
