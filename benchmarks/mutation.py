@@ -5413,6 +5413,100 @@ EQUIVALENT: dict[str, str] = {
         "'new'), which broadcasts a single (lower, upper) pair to every coordinate) and back to one pair per "
         "coordinate for SLSQP, so one pair and domain.dim equal pairs are the same bounds (checked with scipy "
         "1.17.1, the pinned version: the same res.x)",
+    "demid/uncertainty/plausible.py::summarise_set::0 => -1#2":
+        "z is never negative (robust_z has exclusiveMinimum 0; the sweep and the ranking pass 0), so z == -1 is "
+        "false and every set built here becomes plausible_admissible_set(..., z=z): for z > 0 the original's "
+        "branch too; for z == 0 (a strict set that is not exact) its PlausibilityFields return "
+        "surrogate.predict unchanged (predict: `if self.z == 0: return yhat`), and admissible_set without "
+        "grid_predictions predicts the same n-grid itself (the shared predictions are predict_grid of the same "
+        "domain and n in tolerance_sweep and the ranking; Surrogate.predict is predict_all with the same chunk "
+        "and model matrix): the same residuals, set, fraction and spans",
+    "demid/sampling/stored.py::stored_strict_sets::0 => 1#8":
+        "the node mask of a stored set (np.zeros(1) for np.zeros(0), both all False) is never read: the stored "
+        "sets are exact (method EXACT_METHOD) and reach only analyse_material (summarise_set returns an exact "
+        "set's fraction, error and spans before any mask; the ranking and the sweep reuse only exact ones; "
+        "_notes reads .exact) and criticize_material (_identifiability_effect reads fraction and width, "
+        "reference_point_position takes its aset.exact branch, calibration_check reads .exact and .at_bound); "
+        "AdmissibleSet's own properties (empty, width, to_frame) do not read mask",
+    "demid/sampling/evaluate.py::_evaluate_set::base.best_error < best_error => base.best_error <= best_error#0":
+        "at a tie the two candidates have the same best_error (the one number that leaves: to_frame's "
+        "best_max_rel_error); they differ only in best_point, and no consumer reads an AdmissibleSet's "
+        "best_point (grep: only _evaluate_set reads its own base.best_point; level2's best_point is its own "
+        "search's)",
+    "demid/sampling/evaluate.py::_evaluate_set::observables = tuple(observables) => pass#0":
+        "both callers pass a tuple already (JudgedScenario.strict_set/plausible_set pass self.observables, which "
+        "returns tuple(self.scenario.observables); summarise_set converts before calling): tuple() of a tuple is "
+        "the same tuple",
+    "demid/sampling/evaluate.py::closest_approach::1 => 2#0":
+        "start is one point: _evaluate_set passes base.best_point (an admissible_set's best_point, "
+        "domain.to_actual(...)[0], one point of d values; an empty best_point becomes None), and to_unit's "
+        "np.atleast_2d makes it one row, so [:2] is [:1]; the ranking passes None",
+    "demid/uncertainty/material.py::_notes::strict_sets and all((a.exact is not None for a in strict_sets.values())) => strict_sets#0":
+        "every strict set reaching _notes is exact, so all() is true whenever strict_sets is non-empty: "
+        "analyse_material's own strict sets are built only for scenarios where uses_exact holds on the fitted "
+        "surrogates (their own-tolerance rescalings stay polynomials on the same factors, "
+        "tolerance.rescaled_surrogate's dataclasses.replace, so evaluate_set takes its exact path), and its "
+        "one caller (steps.material_step) passes stored_strict_sets, which returns exact sets only",
+    "demid/uncertainty/material.py::_plausible_tables::True => False#0":
+        "the plausible frame's index is never read: write_parquet resets it and stores none, and its one "
+        "in-memory reader, steps._next_box_points -> next_wave.planned_box, selects rows by a boolean mask and "
+        "then set_index('factor') (as _plausible_tables' True => False#1 for the sweep)",
+    "demid/uncertainty/material.py::analyse_material::widest is not None and all((o in surrogates for o in widest.observables)) => widest is not None#0":
+        "the all() is always true here, as for its all => any#0: every scenario's observables have surrogates by "
+        "this line (the plausible tables above raise KeyError first for one without), so dropping the test "
+        "changes nothing",
+    "demid/sampling/sobol.py::sobol_fraction::1 => 0#0":
+        "max(0, m') for max(1, m'): m' = round(log2(max(n_points / replicates, 2))) is at least round(log2 2) = 1 "
+        "already, so both give the same m for every n_points",
+    "demid/sampling/sobol.py::sobol_fraction::2 => 1#2":
+        "max(n_points / replicates, 1) for max(..., 2): they differ only where n_points / replicates < 2, where the "
+        "mutant's round(log2(.)) is 0 or 1 and the outer max(1, ...) makes m = 1, as the original's round(log2 2) "
+        "= 1 does: the same m for every n_points",
+    "demid/sampling/polish.py::_polish::0 => -1#2":
+        "v is one point (SLSQP's iterate, d values): to_actual makes it one row (np.atleast_2d), so evaluate's "
+        "(K, 1) residuals have one column, whose index 0 is index -1",
+    "demid/sampling/polish.py::_polish::0 => -1#7":
+        "v is one point (the clipped SLSQP result, d values): to_actual makes it one row (np.atleast_2d), so "
+        "evaluate's (K, 1) residuals have one column, whose index 0 is index -1",
+    "demid/sampling/polish.py::_polish::0 => -1#5":
+        "sign runs over (1.0, -1.0) only: 'sign > -1' and 'sign > 0' are both true for 1.0 and both false for "
+        "-1.0 (as the listed 0 => -1#6 in the same loop)",
+    "demid/sampling/polish.py::polish_spans::admissible_set.empty or not np.isfinite(lower).all() => admissible_set.empty and (not np.isfinite(lower).all())#0":
+        "polish_spans' one caller (summarise_set) passes grid sets of admissible_set only (the strict sets it "
+        "is given are exact and returned before), whose spans are NaN exactly when the set is empty: an empty "
+        "set (fraction 0, no admissible node) has no occupied cell and no admissible node or sub-point, so its "
+        "span stays infinite and admissible_set writes NaN; a non-empty one has an admissible node (mask "
+        "update) or an occupied cell (the cells' extent fallback), so all its ends are finite (each update "
+        "sets every coordinate at once): `empty or NaN` = `empty` = `empty and NaN`",
+    "demid/sampling/polish.py::polish_spans::admissible_set.empty or not np.isfinite(lower).all() => admissible_set.empty#0":
+        "polish_spans' one caller (summarise_set) passes grid sets of admissible_set only, whose spans are NaN "
+        "exactly when the set is empty (as for the `and` mutant of this test): the second test never decides",
+    "demid/sampling/polish.py::start_points::1000000.0 ** (1.0 / d) => 1000000.0 * (1.0 / d)#0":
+        "the cap never binds either way: polish_spans runs only from summarise_set with the analysis sizes of "
+        "recommended_sizes (analyse_material merges no config sizes: 401 and 201 per axis up to two factors, 61 "
+        "and 41 for three; polishing is grid-only), below both caps (1e6 ** (1/d): 1e6, 1000, 99; 1e6 / d: "
+        "333333 and more), so min(n, cap) is n",
+    "demid/sampling/polish.py::start_points::2 * d => 2#0":
+        "polish_spans runs on grid sets only (at most MAX_GRID_DIM = 3 factors; the Sobol path has its own), "
+        "where max(16, 2 d) and max(16, 2) are both 16 (as 2 => 1#0)",
+    "demid/uncertainty/ranking.py::rank_observable_sets::len(t) > 1 => len(t) >= 1#0":
+        "the singletons the shortcut now also reads are reachable_set[(o,)], set first (subsets run by size) to "
+        "all(reachable[o]) and the shortcut over combinations((o,), 0) = [()] (filtered out: len 0) and the "
+        "len(s) == 1 clause: reachable[o] itself, which the clause `all(reachable[o] for o in s)` already "
+        "requires; for a single observable combinations(s, 0) yields only () either way",
+    "demid/sampling/domain.py::Domain.at_bound::int(a) + 2 * int(b) => int(a) - 2 * int(b)#0":
+        "AT_BOUND has four entries: int(a) - 2 int(b) is 0, 1, -2, -1 where int(a) + 2 int(b) is 0, 1, 2, 3, and "
+        "index -2 of a 4-tuple is index 2 ('upper'), -1 is 3 ('both'): the same value for every a, b",
+    "demid/sampling/domain.py::sides_at_limit::abs(bounds[1] - bounds[0]) => bounds[1] - bounds[0]#0":
+        "bounds is always a factor's search range (lower, upper) in that order (story/recommended, "
+        "story/verdicts, combinations/material, criticism/edges), and lower < upper: config.py refuses a "
+        "factor otherwise ('lower ... must be below upper'), and a next wave's box is a plausible span widened "
+        "by a positive margin (next_wave.next_box): upper - lower is positive, its abs() itself",
+    "demid/sampling/polish.py::start_points::int(1000000.0 ** (1.0 / d)) => 1000000.0 ** (1.0 / d)#0":
+        "min(n, cap) returns n itself (an int) whenever the cap does not bind, and it never binds: polish_spans "
+        "runs only from summarise_set with the analysis sizes of recommended_sizes (analyse_material merges no "
+        "config sizes: 401 and 201 per axis up to two factors, 61 and 41 for three; polishing is grid-only), "
+        "below the caps 1e6, 1000.0 and 99.99999999999997, so domain.grid gets the same int n",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
@@ -5680,6 +5774,22 @@ SETTINGS: dict[str, str] = {
         "acceptance only adds evaluated points of the trade-off (where SLSQP misses its cap, e.g. at a cap below "
         "the least error there is); on the closed-form fronts of tests/test_pareto_polish_rules_whole.py the one "
         "point it adds lies on the true front",
+    "demid/sampling/evaluate.py::closest_approach::CLOSEST_STARTS - 1 => CLOSEST_STARTS + 1#0":
+        "with a given start, how many of the start grid's basins are searched besides it: basins[:5] of at most "
+        "CLOSEST_STARTS = 4 basins is all four instead of three, as the listed 1 => 0#2 (a further search can only "
+        "lower the closest approach: another search replaces the kept one only when lower by 1e-9 of itself)",
+    "demid/sampling/polish.py::_polish::np.max(np.abs(evaluate(to_actual(v))[:, 0])) > eps * (1 + 1e-09) => np.max(np.abs(evaluate(to_actual(v))[:, 0])) >= eps * (1 + 1e-09)#0":
+        "the round-off margin (1e-9 relative over the tolerance) within which a polished span end is accepted: the "
+        "two differ only when the optimiser's point has its largest residual exactly at the double "
+        "eps * (1 + 1e-9), which the mutant rejects (the end keeps its grid value) and the original accepts",
+    "demid/sampling/polish.py::_polish::upper_v[i] >= 1 - 1e-12 => upper_v[i] > 1 - 1e-12#0":
+        "when a span's upper end is taken to reach the range's upper bound (as the listed 1 - 1e-12 => 1): they "
+        "differ only for an end exactly at 1 - 1e-12 of the range, which the mutant polishes; an end is only "
+        "moved outward and v is clipped to [0, 1], so it moves by at most 1e-12 of the range",
+    "demid/uncertainty/ranking.py::reachable_targets::closest <= tolerance * (1 + 1e-09) => closest < tolerance * (1 + 1e-09)#0":
+        "the round-off margin (1e-9 relative) by which a closest approach may exceed the tolerance and still count "
+        "as within reach: the two differ only for a closest approach exactly at the double tolerance * (1 + 1e-9) "
+        "(a closest approach exactly at the tolerance is within reach either way)",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
