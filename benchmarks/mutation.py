@@ -3055,9 +3055,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/ranking.py::rank_observable_sets::float(tolerance) => tolerance#0":
         "its one caller passes spec.reference_tolerance, a scenario's float(c['tolerance']) or the float "
         "FALLBACK_TOLERANCE: float() of a Python float is the same object's value",
-    "demid/uncertainty/ranking.py::rank_observable_sets::1 => 2#5":
-        "pairs left out of the shortcut `every smaller set reachable`: a set holding a pair that cannot be met "
-        "together has a fraction of 0 and no point that meets it (_met_together), so it is unreachable all the same",
     # --- the uncertainty, story, combinations and loop rows (eighth round, seeds 32 and 33)
     "demid/uncertainty/ranking.py::rank_observable_sets::False => True#0":
         "polish=True for the ranking's fractions: polishing moves a set's span ends only (polish_spans, the Sobol "

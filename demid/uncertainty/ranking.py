@@ -12,7 +12,7 @@ import numpy as np
 import pandas as pd
 
 from ..sampling import uses_grid
-from ..sampling.evaluate import closest_approach, relative_errors, start_nodes
+from ..sampling.evaluate import basin_nodes, closest_approach, relative_errors, start_nodes
 from ..sampling.grid import predict_grid
 from ..spec import join_observables
 from .posterior import NO_OBSERVABLE, subset_posteriors
@@ -110,7 +110,8 @@ def _met_together(surrogates, domain, observables, targets, tolerance, starts: i
 
     The largest relative error has a kink wherever two observables trade places, on which a simplex search
     stalls short of a set that exists; the squared excess over the tolerance is smooth and zero exactly on
-    the set, so a bounded quasi-Newton search from the best nodes of a grid settles it.
+    the set, so a bounded quasi-Newton search from the best nodes of a grid, and from the best nodes of its
+    other basins, settles it.
     """
     from scipy import optimize
 
@@ -123,13 +124,33 @@ def _met_together(surrogates, domain, observables, targets, tolerance, starts: i
         return float(np.sum(np.maximum(errors(u)[:, 0] - tolerance, 0.0) ** 2))
 
     nodes = start_nodes(domain)
-    worst = errors(nodes).max(axis=0)
-    for u0 in nodes[np.argsort(worst, kind="stable")[:starts]]:
+    node_errors = errors(nodes)
+    worst = node_errors.max(axis=0)
+    best = np.argsort(worst, kind="stable")[:starts]
+    # and half as many again from other basins: a set that no point meets costs half as many searches more
+    for u0 in nodes[np.concatenate([best, _other_basins(node_errors, worst, best, domain.dim, starts // 2)])]:
         res = optimize.minimize(excess, u0, method="L-BFGS-B", bounds=[(0.0, 1.0)] * domain.dim,
                                 options={"ftol": 1e-15, "gtol": 1e-12, "maxiter": 500})
         if float(errors(np.clip(res.x, 0.0, 1.0)).max()) <= tolerance * (1 + 1e-6):
             return True
     return False
+
+
+def _other_basins(node_errors: np.ndarray, worst: np.ndarray, tried: np.ndarray, dim: int, count: int) -> np.ndarray:
+    """Up to ``count`` more start nodes: the best node of each basin of the grid's largest error whose errors differ
+    from every node tried.  The best nodes alone may all lie in one basin (a near miss at a bound, over factors
+    without effect) while the set lies between nodes elsewhere."""
+    per_axis = int(round(len(worst) ** (1.0 / dim)))
+    seen = {tuple(np.round(node_errors[:, i], 12)) for i in tried}
+    out = []
+    for i in basin_nodes(worst, per_axis, dim, len(worst)):
+        key = tuple(np.round(node_errors[:, i], 12))
+        if len(out) == count:
+            break
+        if key not in seen:
+            seen.add(key)
+            out.append(i)
+    return np.asarray(out, dtype=int)
 
 
 def reachable_targets(surrogates: dict[str, Surrogate], domain: Domain, observables, targets: dict[str, float],

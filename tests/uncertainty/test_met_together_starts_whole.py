@@ -60,3 +60,26 @@ def test_a_pair_whose_second_target_lies_beyond_the_range_is_not_met_together(si
     closest = abs(10 + 2.2 ** 2 - 16.5) / 16.5
     assert not _met_together(surrogates, domain, ["y1", "y2"], targets, 0.99 * closest)
     assert _met_together(surrogates, domain, ["y1", "y2"], targets, 1.01 * closest)
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+@pytest.mark.parametrize("n_inert", [0, 2])
+def test_a_pair_met_between_nodes_is_found_when_every_best_node_is_a_near_miss_at_the_range_end(sign, n_inert):
+    """y2 = 10 + (a - 3.91)^2 with target 10 + 1.92^2: met at a = 5.83 and, just outside the range [2, 6], at 1.99.
+    Every node at a = 2, b = 20 misses y2 by 0.28 % (beside factors neither response moves, all equally good), the
+    nodes near a = 5.83 by 5 % or more; at a tolerance of 0.2 % the pair is met only near (5.83, 20)."""
+    factors = ["a", "b", "c", "d"][:2 + n_inert]
+    domain = Domain(tuple(factors), (2.0, 10.0, 0.0, 0.0)[:len(factors)], (6.0, 30.0, 1.0, 1.0)[:len(factors)])
+    zero = (0,) * len(factors)
+
+    def term(**exponents):
+        return tuple(exponents.get(f, 0) for f in factors)
+
+    surrogates = {
+        "y1": _quadratic("y1", factors, {term(b=1): sign}),
+        "y2": _quadratic("y2", factors, {zero: sign * (10 + 3.91 ** 2), term(a=1): -sign * 7.82, term(a=2): sign}),
+    }
+    targets = {"y1": sign * 20.0, "y2": sign * (10 + 1.92 ** 2)}
+    witness = np.array([[5.83, 20.0, 0.5, 0.5][:len(factors)]])
+    assert max(abs(float(surrogates[o].predict(witness)[0]) - t) / abs(t) for o, t in targets.items()) <= 1e-12
+    assert _met_together(surrogates, domain, ["y1", "y2"], targets, 0.002)
