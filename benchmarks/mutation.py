@@ -2661,7 +2661,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/story/test_story.py::test_the_ranking_shows_an_uninformative_observables_gain_as_about_zero",
                   "tests/report/test_report_reads.py", "tests/report/test_report_sentences_whole.py",
-                  "tests/report/test_report_edges_whole.py", _NOT_WORKFLOW],
+                  "tests/report/test_report_edges_whole.py", "tests/report/test_uncertainty_section_whole.py",
+                  _NOT_WORKFLOW],
     },
     "demid/report/loop.py": {
         "functions": None,
