@@ -2675,7 +2675,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_honest_causes.py::"
                   "test_report_warns_about_scenarios_using_a_surrogate_that_does_not_predict",
                   "tests/report/test_report_sentences_whole.py", "tests/report/test_report_edges_whole.py",
-                  _NOT_WORKFLOW],
+                  "tests/report/test_criticism_section_whole.py", _NOT_WORKFLOW],
     },
     "demid/published_values.py": {
         "functions": None,
