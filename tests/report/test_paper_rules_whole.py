@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 
+import pandas as pd
 import pytest
 
 from demid.paper import COLUMNS, _Rows
@@ -79,11 +80,25 @@ def test_printed_agreement_is_rounding_to_the_printed_decimals(published, reprod
     assert rows.rows[0]["printed_agrees"] is agrees
 
 
-@pytest.mark.parametrize("reproduced, agrees", [(99.5, True), (99.49, False), (100.0, True), (float("nan"), False)])
+@pytest.mark.parametrize("reproduced, agrees", [(99.5, True), (99.49, False), (100.0, True), (float("nan"), False),
+                                                (float("inf"), False)])
 def test_an_unresolved_factor_agrees_with_the_print_from_99_5_percent(reproduced, agrees):
     rows = _Rows()
     rows.add("q", "m", 100.0, reproduced, "unresolved")
     assert rows.rows[0]["printed_agrees"] is agrees
+
+
+def test_a_width_over_a_published_range_too_narrow_to_divide_by_neither_passes_nor_agrees():
+    """A search range published as [0, 1e-310] (in another unit than the config's, say): the width's share of it
+    overflows, and an infinite share is no reproduction of "the full search range"."""
+    from demid.paper import paper_comparison
+
+    ident = pd.DataFrame({"material": ["m"], "scenario": ["s"], "tolerance": [0.05], "feasible_fraction_pct": [40.0],
+                          "factor": ["a"], "lower": [0.0], "upper": [0.5], "width": [0.5]})
+    published = {"scenario_sets": {"m": {"s": {"unresolved": ["a"]}}}, "search_domain": {"m": {"a": [0.0, 1e-310]}}}
+    row = paper_comparison(published, pd.DataFrame(columns=["material", "response", "r2", "rmse"]), ident, {}).iloc[0]
+    assert row["reproduced"] == math.inf
+    assert not row["pass"] and not row["printed_agrees"]
 
 
 def test_an_unknown_kind_is_refused_by_name():
