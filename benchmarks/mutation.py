@@ -2649,7 +2649,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/report/test_report_reads.py", "tests/criticism/test_edges.py",
                   "tests/combinations/test_combinations.py::test_combination_verdicts_and_lines",
                   "tests/report/test_report_sentences_whole.py", "tests/report/test_report_edges_whole.py",
-                  _NOT_WORKFLOW],
+                  "tests/report/test_summary_section_whole.py", _NOT_WORKFLOW],
     },
     "demid/report/columns.py": {
         "functions": None,

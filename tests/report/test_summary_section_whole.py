@@ -1,0 +1,34 @@
+"""The summary's recommended point when level 2 and the recommended scenario disagree: level 2 (every target at the
+reference tolerance) can fail while the scenario the point is read from still has an admissible set; the point is
+then recommended as such, and the words of a point that meets no target are kept for a scenario with none."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from demid.report.context import ReportContext
+from demid.report.summary import summary
+
+from .test_report_sentences_whole import _material, _text, _write
+
+
+@pytest.mark.parametrize("strict_empty", [False, True])
+def test_a_failed_level2_is_no_failure_of_a_scenario_that_has_an_admissible_set(tmp_path, strict_empty):
+    material = _material(2)
+    strict = (np.nan, np.nan) if strict_empty else (0.2, 0.6)
+    rows = [{"material": "m", "scenario": "t", "factor": f, "strict_lower": strict[0], "strict_upper": strict[1],
+             "plausible_lower": 0.1, "plausible_upper": 0.7, "verdict": "bounded", "reason": "why"} for f in "ab"]
+    _write(tmp_path, "tables/verdicts.csv", pd.DataFrame(rows))
+    _write(tmp_path, "criticism/m.json", {"level1": {}, "level2": {"feasible": False, "tolerance": 0.02,
+                                                                   "best_errors": {"y": 0.05, "z": 0.01},
+                                                                   "best_max_error": 0.05, "observables": ["y", "z"]}})
+    _write(tmp_path, "uncertainty/m.json", {"recommended": {"scenario": "t", "plausible": True,
+                                                            "point": {"a": 0.4, "b": 0.5}, "implausibility": 0.5}})
+    text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
+    recommended = "Recommended parameter set (the point of the plausible set of First alone"
+    most_plausible = ("No parameter set meets every target within the tolerance; counting the surrogate's and the "
+                      "measurements' uncertainty, the most plausible point (the point of the plausible set of First "
+                      "alone")
+    assert (recommended in text, most_plausible in text) == (not strict_empty, strict_empty)
