@@ -526,3 +526,6 @@ def test_how_to_read_the_summary_gives_the_plausible_set_the_verdict_rule_and_th
     at = [text.find(piece) for piece in pieces]
     assert all(i >= 0 for i in at), [p[:60] for p, i in zip(pieces, at) if i < 0]
     assert at == sorted(at)
+    # and last, where every other term is explained
+    assert pieces[-1] + " Other terms: Terms." in text
+    assert 'Other terms: <a href="#Terms">Terms</a>.' in "".join(p.data for p in summary(context))
