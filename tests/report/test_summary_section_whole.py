@@ -1,6 +1,7 @@
 """The summary's recommended point when level 2 and the recommended scenario disagree: level 2 (every target at the
 reference tolerance) can fail while the scenario the point is read from still has an admissible set; the point is
-then recommended as such, and the words of a point that meets no target are kept for a scenario with none."""
+then recommended as such, and the words of a point that meets no target are kept for a scenario with none.  And
+a point whose scenario has no verdict rows."""
 
 from __future__ import annotations
 
@@ -32,3 +33,18 @@ def test_a_failed_level2_is_no_failure_of_a_scenario_that_has_an_admissible_set(
                       "measurements' uncertainty, the most plausible point (the point of the plausible set of First "
                       "alone")
     assert (recommended in text, most_plausible in text) == (not strict_empty, strict_empty)
+
+
+def test_a_point_whose_scenario_has_no_verdict_rows_is_quoted_without_intervals(tmp_path):
+    """Verdicts of another scenario only (a results tree whose story ran before the point's scenario was judged):
+    the point is given to four decimals (no interval sets its digits), without a plausible interval it does not
+    have."""
+    material = _material(2)
+    rows = [{"material": "m", "scenario": "t", "factor": f, "strict_lower": 0.2, "strict_upper": 0.6,
+             "plausible_lower": 0.1, "plausible_upper": 0.7, "verdict": "bounded", "reason": "why"} for f in "ab"]
+    _write(tmp_path, "tables/verdicts.csv", pd.DataFrame(rows))
+    _write(tmp_path, "uncertainty/m.json", {"recommended": {"scenario": "s", "plausible": True,
+                                                            "point": {"a": 0.4, "b": 0.5}, "implausibility": 0.5}})
+    text = _text(summary(ReportContext(str(tmp_path), {"materials": {"m": material}})))
+    assert "Recommended parameter set (the point of the plausible set of Both" in text
+    assert "implausibility 0.50): Alpha = 0.4000; Beta = 0.5000." in text and "(plausible " not in text
