@@ -2661,7 +2661,7 @@ TABLE: dict[str, dict] = {
         "tests": ["tests/report/test_report_reads.py", "tests/criticism/test_edges.py",
                   "tests/combinations/test_combinations.py::test_combination_verdicts_and_lines",
                   "tests/report/test_report_sentences_whole.py", "tests/report/test_report_edges_whole.py",
-                  _NOT_WORKFLOW],
+                  "tests/report/test_summary_section_whole.py", _NOT_WORKFLOW],
     },
     "demid/report/columns.py": {
         "functions": None,
@@ -2673,7 +2673,8 @@ TABLE: dict[str, dict] = {
         "functions": None,
         "tests": ["tests/story/test_story.py::test_the_ranking_shows_an_uninformative_observables_gain_as_about_zero",
                   "tests/report/test_report_reads.py", "tests/report/test_report_sentences_whole.py",
-                  "tests/report/test_report_edges_whole.py", _NOT_WORKFLOW],
+                  "tests/report/test_report_edges_whole.py", "tests/report/test_uncertainty_section_whole.py",
+                  _NOT_WORKFLOW],
     },
     "demid/report/loop.py": {
         "functions": None,
@@ -2686,7 +2687,7 @@ TABLE: dict[str, dict] = {
                   "tests/criticism/test_honest_causes.py::"
                   "test_report_warns_about_scenarios_using_a_surrogate_that_does_not_predict",
                   "tests/report/test_report_sentences_whole.py", "tests/report/test_report_edges_whole.py",
-                  _NOT_WORKFLOW],
+                  "tests/report/test_criticism_section_whole.py", _NOT_WORKFLOW],
     },
     "demid/published_values.py": {
         "functions": None,

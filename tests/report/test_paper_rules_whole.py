@@ -3,12 +3,14 @@ tolerance, against the rule of the module docstring written out here: the differ
 when the published value is not zero), the tolerance's text, the pass flag (the relative rules fall back to the
 absolute difference where the published value is zero) and whether the reproduction rounds to the printed
 digits.  The boundary values are chosen so that the differences are exact in binary (1/1000 of 1000, 0.0005 of
-0)."""
+0).  And two comparisons of a few published numbers: an unresolved factor's share of a published search range
+too narrow to divide by, a Table 3 entry that publishes its feasible fraction only."""
 
 from __future__ import annotations
 
 import math
 
+import pandas as pd
 import pytest
 
 from demid.paper import COLUMNS, _Rows
@@ -79,13 +81,41 @@ def test_printed_agreement_is_rounding_to_the_printed_decimals(published, reprod
     assert rows.rows[0]["printed_agrees"] is agrees
 
 
-@pytest.mark.parametrize("reproduced, agrees", [(99.5, True), (99.49, False), (100.0, True), (float("nan"), False)])
+@pytest.mark.parametrize("reproduced, agrees", [(99.5, True), (99.49, False), (100.0, True), (float("nan"), False),
+                                                (float("inf"), False)])
 def test_an_unresolved_factor_agrees_with_the_print_from_99_5_percent(reproduced, agrees):
     rows = _Rows()
     rows.add("q", "m", 100.0, reproduced, "unresolved")
     assert rows.rows[0]["printed_agrees"] is agrees
 
 
+def test_a_width_over_a_published_range_too_narrow_to_divide_by_neither_passes_nor_agrees():
+    """A search range published as [0, 1e-310] (in another unit than the config's, say): the width's share of it
+    overflows, and an infinite share is no reproduction of "the full search range"."""
+    from demid.paper import paper_comparison
+
+    ident = pd.DataFrame({"material": ["m"], "scenario": ["s"], "tolerance": [0.05], "feasible_fraction_pct": [40.0],
+                          "factor": ["a"], "lower": [0.0], "upper": [0.5], "width": [0.5]})
+    published = {"scenario_sets": {"m": {"s": {"unresolved": ["a"]}}}, "search_domain": {"m": {"a": [0.0, 1e-310]}}}
+    row = paper_comparison(published, pd.DataFrame(columns=["material", "response", "r2", "rmse"]), ident, {}).iloc[0]
+    assert row["reproduced"] == math.inf
+    assert not row["pass"] and not row["printed_agrees"]
+
+
 def test_an_unknown_kind_is_refused_by_name():
     with pytest.raises(ValueError, match="unknown kind of published number 'slope'"):
         _Rows().add("q", "m", 1.0, 1.0, "slope")
+
+
+def test_a_table3_entry_with_only_its_feasible_fraction_gives_that_one_row():
+    from demid.paper import paper_comparison
+
+    ident = pd.DataFrame({"material": ["m", "m"], "scenario": ["s", "s"], "tolerance": [0.05, 0.05],
+                          "feasible_fraction_pct": [40.0, 40.0], "factor": ["a", "b"], "lower": [0.0, 1.0],
+                          "upper": [0.5, 2.0], "width": [0.5, 1.0]})
+    published = {"table3": {"m": {"s": {"feasible_fraction_pct": 40.02}}}}
+    table = paper_comparison(published, pd.DataFrame(columns=["material", "response", "r2", "rmse"]), ident, {})
+    assert list(table["quantity"]) == ["Table 3 feasible fraction [%] s"]
+    row = table.iloc[0]
+    assert (row["published"], row["reproduced"]) == (40.02, 40.0)
+    assert row["rel_diff"] == pytest.approx(0.02 / 40.02) and row["pass"] and not row["printed_agrees"]

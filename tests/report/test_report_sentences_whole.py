@@ -248,7 +248,9 @@ def test_level2_lines_quote_the_best_points_miss_and_the_reference_points_error(
     assert m, ref
     assert float(m.group(1)) == pytest.approx(100 * level2["reference_max_error"], rel=0.01)
     assert m.group(2) == ("within" if level2["reference_within"] else "outside")
-    assert (m.group(3) == "the 2 % tolerance") == (not own)
+    # each own tolerance in the config's order, two decimals below 10 % and one from there
+    listed = ", ".join(f"{o.upper()}obs {100 * tol[o]:.{2 if tol[o] < 0.1 else 1}f} %" for o in observables)
+    assert m.group(3) == (f"their own tolerances: {listed}" if own else "the 2 % tolerance")
 
 
 @pytest.mark.parametrize("seed", range(4))
@@ -524,3 +526,6 @@ def test_how_to_read_the_summary_gives_the_plausible_set_the_verdict_rule_and_th
     at = [text.find(piece) for piece in pieces]
     assert all(i >= 0 for i in at), [p[:60] for p, i in zip(pieces, at) if i < 0]
     assert at == sorted(at)
+    # and last, where every other term is explained
+    assert pieces[-1] + " Other terms: Terms." in text
+    assert 'Other terms: <a href="#Terms">Terms</a>.' in "".join(p.data for p in summary(context))

@@ -126,3 +126,20 @@ def test_leaving_or_shrinking_the_fraction_reads_the_same_at_any_size_of_the_fra
     shrink = re.search(rf"and shrinks the admissible fraction by ({_NUM}) %", lines[2])
     assert shrink, lines[2]
     assert float(shrink[1]) == pytest.approx(100 * (1 - 39.99 / 60.0), abs=0.051)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_the_narrower_measurement_is_named_when_gains_in_bits_exceed_fractions_in_percent(seed):
+    """A posterior on under 1 % of the domain gains about log2(100 / fraction) bits, several times its fraction in
+    percent: the measurement that contracts more is still named beside the more informative one."""
+    rng = np.random.default_rng(seed)
+    fractions = np.sort(rng.uniform(0.05, 0.9, 2))  # q is the narrower
+    gains = {"p": float(np.log2(100 / fractions[1]) + 1.0), "q": float(np.log2(100 / fractions[0]) - 1.5)}
+    assert gains["p"] > gains["q"] > 1.0 > fractions[1]
+    frame = pd.DataFrame({"observables": ["p", "q", "p+q"],
+                          "information_gain_bits": [gains["p"], gains["q"], gains["p"] + 1.0],
+                          "feasible_fraction_pct": [fractions[1], fractions[0], fractions[0] / 2]})
+    first = measurement_order(frame)[0]
+    assert first == (f"As a first measurement, p is the most informative: {gains['p']:.2f} bits, admissible fraction "
+                     f"{fractions[1]:.3g} % of the domain; q would gain {gains['q']:.2f} bits; by fraction alone q "
+                     f"contracts more ({fractions[0]:.3g} % vs {fractions[1]:.3g} %).")
