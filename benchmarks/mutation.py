@@ -5505,6 +5505,25 @@ EQUIVALENT: dict[str, str] = {
         "runs only from summarise_set with the analysis sizes of recommended_sizes (analyse_material merges no "
         "config sizes: 401 and 201 per axis up to two factors, 61 and 41 for three; polishing is grid-only), "
         "below the caps 1e6, 1000.0 and 99.99999999999997, so domain.grid gets the same int n",
+    "demid/story/measurements.py::measurement_order::by_frac[2] != best and by_frac[1] < f_new => by_frac[1] < f_new#0":
+        "each observable is one option, so by_frac[2] == best means by_frac is options[0] itself, whose fraction is "
+        "f_new, and f_new < f_new is False (NaN too): the test without 'by_frac[2] != best' is False there as well",
+    "demid/story/measurements.py::measurement_order::by_frac[2] != best and by_frac[1] < f_new => by_frac[2] != best or by_frac[1] < f_new#0":
+        "min() leaves options[0] (best) only for a strictly smaller fraction (NaN is never smaller), so where "
+        "by_frac[2] != best its fraction is < f_new already; where by_frac is best, by_frac[1] is f_new and "
+        "f_new < f_new is False: 'or' and 'and' agree on every ranking",
+    "demid/report/model_criticism.py::unreliable_surrogate_lines::info.get('level1') or {} => info.get('level1')#0":
+        "the value goes only to unpredictive_responses, which reads its argument as (level1 or {}): None, {} and a "
+        "missing level1 all give the same empty list",
+    "demid/paper.py::_Rows.add::pub != 0 and np.isfinite(abs_diff) => pub != 0#0":
+        "the two differ only for pub != 0 with abs_diff not finite: NaN / |pub| is NaN as in the original; "
+        "abs_diff = inf with a finite rep needs pub = ±inf (a YAML .inf where the checker leaves a number unbounded; "
+        "inf / inf is NaN too) or rep - pub to overflow: where the published number is unbounded (bounds, widths, "
+        "intervals, Pareto ends) the reproduced one is a factor value or width within the config's magnitudes "
+        "(<= 1e30, demid/numbers.py), far below the half unit of the last place of any number near 1.8e308; R², "
+        "tolerances and fractions are published in [0, 1] or [0, 100]; an RMSE (both >= 0) or a contraction (both "
+        ">= -100, after / before being >= 0) is never large with opposite signs; 'unresolved' takes "
+        "max(0, 100 - rep)",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
