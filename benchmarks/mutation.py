@@ -5524,6 +5524,9 @@ EQUIVALENT: dict[str, str] = {
         "tolerances and fractions are published in [0, 1] or [0, 100]; an RMSE (both >= 0) or a contraction (both "
         ">= -100, after / before being >= 0) is never large with opposite signs; 'unresolved' takes "
         "max(0, 100 - rep)",
+    "demid/uncertainty/ranking.py::_met_together::starts // 2 => starts / 2#0":
+        "the count of further starts is read only by _other_basins' len(out) == count: 4 == 4.0 (and 0 == 0.0 for "
+        "starts 1), the same starts either way",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
@@ -5807,6 +5810,18 @@ SETTINGS: dict[str, str] = {
         "the round-off margin (1e-9 relative) by which a closest approach may exceed the tolerance and still count "
         "as within reach: the two differ only for a closest approach exactly at the double tolerance * (1 + 1e-9) "
         "(a closest approach exactly at the tolerance is within reach either way)",
+    "demid/uncertainty/ranking.py::_met_together::2 => 3#1":
+        "how many further starts _met_together takes from the grid's other basins (8 // 3 = 2 instead of 4): a "
+        "search's budget, not a rule of the answer (the set's one other basin in the tests is searched either way)",
+    "demid/uncertainty/ranking.py::_met_together::2 => 1#1":
+        "how many further starts _met_together takes from the grid's other basins (8 instead of 4): a search's "
+        "budget, not a rule of the answer",
+    "demid/uncertainty/ranking.py::_other_basins::12 => 13#1":
+        "the decimals to which a basin node's errors are compared with the nodes already tried (13 instead of 12): "
+        "how near two start nodes' errors must be to count as one start, a search setting",
+    "demid/uncertainty/ranking.py::_other_basins::12 => 11#1":
+        "the decimals to which a basin node's errors are compared with the nodes already tried (11 instead of 12): "
+        "how near two start nodes' errors must be to count as one start, a search setting",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
