@@ -5525,8 +5525,8 @@ EQUIVALENT: dict[str, str] = {
         ">= -100, after / before being >= 0) is never large with opposite signs; 'unresolved' takes "
         "max(0, 100 - rep)",
     "demid/uncertainty/ranking.py::_met_together::starts // 2 => starts / 2#0":
-        "the count of further starts is read only by _other_basins' len(out) == count: 4 == 4.0 (and 0 == 0.0 for "
-        "starts 1), the same starts either way",
+        "the one caller (rank_observable_sets) leaves starts at 8: the count of further starts, 8 // 2 = 4 or "
+        "8 / 2 = 4.0, is read only by _other_basins' len(out) == count, the same starts either way",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
