@@ -179,3 +179,28 @@ def test_a_finding_reports_its_extensions_effect_on_every_scenario_of_its_respon
     assert result.summary["level1"][which]["findings"] == 1 and result.summary["level1"][other]["findings"] == 0
     for r in ("y", "z"):  # each response's scenarios, in the config's order
         assert result.summary["level1"][r]["scenarios"] == [s for s, sc in scenarios.items() if r in sc["observables"]]
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_level2_warns_of_the_search_range_beyond_the_runs_that_gave_a_response(level1_stand_in, seed):
+    from demid.criticism.models import short_number
+
+    rng = np.random.default_rng(30 + seed)
+    lower, upper = np.array([0.0, 1.0]), np.array([2.0, 3.0])
+    table, _, coef, targets, _ = _study(rng, lower, upper, SCENARIOS[0])
+    wide = {"a": {"lower": -1.0, "upper": 2.0}, "b": {"lower": 1.0, "upper": 3.0 + 2.0 * seed}}
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5}, "factors": wide,
+        "responses": {o: {"target": t} for o, t in targets.items()}, "scenarios": SCENARIOS[0]}, grid_points=41)
+    # a failed run (no response) out at the widened bounds covers nothing
+    failed = pd.DataFrame([{"run": len(table) + 1, "a": -1.0, "b": 3.0 + 2.0 * seed, "y": np.nan, "z": np.nan}])
+    table = pd.concat([table, failed], ignore_index=True)
+    surrogates = {o: _plane(o, c) for o, c in coef.items()}
+    level2 = material.criticize_material(table, surrogates, spec, fits=NO_FITS).summary["level2"]
+    beyond = {"a": ("lower", lower[0], upper[0]), "b": ("upper", lower[1], upper[1])} if seed else \
+        {"a": ("lower", lower[0], upper[0])}
+    assert len(level2["extrapolation"]) == len(beyond)
+    for sentence, (f, (side, lo, hi)) in zip(level2["extrapolation"], beyond.items()):
+        assert sentence.startswith(f"Extrapolation: the search range of {f}, ")
+        assert f"which cover {short_number(lo)} to {short_number(hi)};" in sentence
+        assert sentence.endswith(f"simulate runs out to the {side} bound.")
