@@ -204,3 +204,36 @@ def test_level2_warns_of_the_search_range_beyond_the_runs_that_gave_a_response(l
         assert sentence.startswith(f"Extrapolation: the search range of {f}, ")
         assert f"which cover {short_number(lo)} to {short_number(hi)};" in sentence
         assert sentence.endswith(f"simulate runs out to the {side} bound.")
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_four_factors_level2_misses_by_the_targets_distance_from_the_planes_range_over_the_box(level1_stand_in,
+                                                                                                 seed):
+    rng = np.random.default_rng(50 + seed)
+    names = "abcd"
+    lower, upper = np.array([0.0, 1.0, -2.0, 10.0]), np.array([1.0, 3.0, 2.0, 20.0])
+    coef = np.concatenate([[rng.uniform(-4, 4)], rng.uniform(0.5, 1.5, 4) * rng.choice([-1, 1], 4) / (upper - lower)])
+    ends = coef[0] + np.sort([np.sum(np.minimum(coef[1:] * lower, coef[1:] * upper)),
+                              np.sum(np.maximum(coef[1:] * lower, coef[1:] * upper))])
+    # a target inside the plane's range over the box, 10 % beyond its upper end, or 10 % beyond its lower end
+    target = [float(np.mean(ends)), 1.1 * ends[1] if ends[1] > 0 else 0.9 * ends[1],
+              0.9 * ends[0] if ends[0] > 0 else 1.1 * ends[0]][seed]
+    table = make_ccd_table(lambda x: {"y": coef[0] + x @ coef[1:]}, lower, upper, seed=1)
+    table = table.rename(columns={f"x{i + 1}": f for i, f in enumerate(names)})
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+        "factors": {f: {"lower": float(lo), "upper": float(hi)} for f, lo, hi in zip(names, lower, upper)},
+        "responses": {"y": {"target": target}}, "scenarios": {"y": {"observables": ["y"], "tolerance": 0.05}}},
+        grid_points=256)
+    terms = [(0, 0, 0, 0)] + [tuple(int(i == k) for i in range(4)) for k in range(4)]
+    surrogate = Surrogate("y", list(names), terms, coef, np.zeros((5, 5)), 0.0, 20)
+    level2 = material.criticize_material(table, {"y": surrogate}, spec, fits={"y": None}).summary["level2"]
+    miss = max(ends[0] - target, target - ends[1], 0.0) / abs(target)
+    assert level2["best_max_error"] == pytest.approx(miss, rel=1e-6, abs=1e-9)
+    assert level2["feasible"] is (seed == 0)
+    best = np.array([level2["best_point"][f] for f in names])
+    assert np.all((best >= lower) & (best <= upper))
+    assert level2["best_errors"]["y"] == pytest.approx((coef[0] + coef[1:] @ best - target) / abs(target), abs=1e-12)
+    if seed:  # the nearest end of the range is a corner of the box: the point where each term is at that end
+        corner = np.where((coef[1:] > 0) == (seed == 1), upper, lower)
+        assert best == pytest.approx(corner)
