@@ -189,3 +189,30 @@ def test_an_extensions_effect_on_slabs_is_the_exact_fraction_and_widths_in_perce
             assert row[f"fraction_pct_{when}"] == pytest.approx(100 * (hi - lo) / 2 * b / 2, rel=1e-6)
             assert row[f"width_{when}"] == pytest.approx({"a": hi - lo, "b": b}, rel=1e-6)
     assert a_before == pytest.approx(a_interval(0.05, slope))
+
+
+@pytest.mark.parametrize("reverse", [False, True])
+def test_a_table_without_a_run_column_is_judged_in_its_row_order(reverse):
+    from demid.criticism.material import material_run_order
+    from demid.design import Coding
+
+    from ..helpers import make_ccd_table
+
+    table = make_ccd_table(lambda x: {"y": 3.0 + x[:, 0] + 0.1 * x[:, 1]}, [0.0, 1.0], [2.0, 3.0], seed=4)
+    table = table.rename(columns={"x1": "a", "x2": "b"})
+    # rows listed by y (ascending or descending), the run numbers left out: the rows follow the response
+    table = table.sort_values("y", ascending=not reverse, kind="stable").drop(columns="run")
+    spec = MaterialSpec.from_material("m", {
+        "design": {"type": "ccd"}, "factors": {"a": {"lower": 0, "upper": 2}, "b": {"lower": 1, "upper": 3}},
+        "responses": {"y": {"target": 4.0}}, "scenarios": {"y": {"observables": ["y"], "tolerance": 0.1}}})
+    coding = Coding.from_levels(["a", "b"], table[["a", "b"]].to_numpy(), 1.41421)
+    order = material_run_order(table, spec, coding).to_json()
+    # y's ties (the centre runs) share a rank: the rank correlation of 1..n with y is +-1 only up to them
+    y = table["y"].to_numpy()
+    ranks = np.argsort(np.argsort(y, kind="stable"), kind="stable") + 1.0
+    ties = np.array([np.mean(ranks[y == v]) for v in y])
+    position = np.arange(1.0, len(y) + 1)
+    rho = np.corrcoef(position, ties)[0, 1]
+    assert order["reason"] == "sorted_by_response" and order["follows_response"] == "y"
+    assert order["rank_correlation"] == pytest.approx(rho, abs=1e-6) and not order["drift_tested"]
+    assert bool(rho > 0) is (not reverse)
