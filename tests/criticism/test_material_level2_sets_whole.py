@@ -237,3 +237,31 @@ def test_four_factors_level2_misses_by_the_targets_distance_from_the_planes_rang
     if seed:  # the nearest end of the range is a corner of the box: the point where each term is at that end
         corner = np.where((coef[1:] > 0) == (seed == 1), upper, lower)
         assert best == pytest.approx(corner)
+
+
+def test_four_factors_without_a_scenario_of_the_targets_level2_judges_no_sampled_set(level1_stand_in):
+    """No scenario holds both targets at the reference tolerance and four factors have no exact set: level 2
+    decides by its own search and says nothing of a set's bounds (no set of these targets is evaluated)."""
+    rng = np.random.default_rng(7)
+    names = "abcd"
+    lower, upper = np.zeros(4), np.ones(4)
+    coef = {"y": np.array([2.0, 1.0, 0.5, -0.5, 0.25]), "z": np.array([3.0, 0.1, 0.0, 0.0, 0.0])}
+    x0 = rng.uniform(0.3, 0.7, 4)
+    targets = {o: float(c[0] + c[1:] @ x0) for o, c in coef.items()}
+    table = make_ccd_table(lambda x: {o: c[0] + x @ c[1:] for o, c in coef.items()}, lower, upper, seed=1)
+    table = table.rename(columns={f"x{i + 1}": f for i, f in enumerate(names)})
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+        "factors": {f: {"lower": 0.0, "upper": 1.0} for f in names},
+        "responses": {o: {"target": t} for o, t in targets.items()},
+        "scenarios": {"y_alone": {"observables": ["y"], "tolerance": 0.1},
+                      "z_alone": {"observables": ["z"], "tolerance": 0.1}}}, grid_points=256)
+    terms = [(0, 0, 0, 0)] + [tuple(int(i == k) for i in range(4)) for k in range(4)]
+    surrogates = {o: Surrogate(o, list(names), terms, c, np.zeros((5, 5)), 0.0, 20) for o, c in coef.items()}
+    level2 = material.criticize_material(table, surrogates, spec, fits=NO_FITS).summary["level2"]
+    assert level2["feasible"] and level2["best_max_error"] <= 0.1
+    assert level2["set_at_bound"] is None
+    best = np.array([level2["best_point"][f] for f in names])
+    on_bound = {f: ["lower"] if v <= BOUND_TOUCH else ["upper"] if v >= 1 - BOUND_TOUCH else []
+                for f, v in zip(names, best)}
+    assert level2["widen"] == {f: sides for f, sides in on_bound.items() if sides}
