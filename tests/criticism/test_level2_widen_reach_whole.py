@@ -53,3 +53,22 @@ def test_level2_with_every_observable_unmoved_advises_widening_nothing():
     assert result.best_max_error == pytest.approx(0.5)
     assert result.widen == {} and result.reach == [] and "Widen the range" not in result.message
     assert "z is predicted the same everywhere in the search range" in result.message
+
+
+def test_level2_met_on_a_corner_advises_widening_both_bounds_with_no_reach_of_a_missed_target():
+    # y = 10 + 10 a + 10 b meets 30 only at the corner (1, 1): the best point sits on both upper bounds, and with
+    # every target met there is no missing best point whose reach beyond a bound is estimated
+    result = calibration_check({"y": _plane("y", 10.0, 10.0, 10.0)}, DOMAIN, {"y": 30.0}, 0.05, 21)
+    assert result.feasible and result.best_max_error == pytest.approx(0.0, abs=1e-9)
+    assert result.widen == {"a": ["upper"], "b": ["upper"]} and result.reach == []
+
+
+def test_level2_with_an_empty_exact_set_reports_no_set_bounds():
+    from demid.sampling.evaluate import evaluate_set
+
+    surrogates = {"y": _plane("y", 10.0, 10.0, 0.0)}
+    strict = evaluate_set(surrogates, DOMAIN, ("y",), {"y": 25.0}, 0.05, 21)
+    assert strict.exact is not None and strict.exact.fraction == 0.0  # y is at most 20: no point meets 25
+    result = calibration_check(surrogates, DOMAIN, {"y": 25.0}, 0.05, 21, strict_set=strict)
+    assert not result.feasible and result.set_at_bound is None and result.to_json()["set_at_bound"] is None
+    assert result.widen == {"a": ["upper"]}
