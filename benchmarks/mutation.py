@@ -1915,6 +1915,7 @@ _LEVEL2_TESTS = ["tests/criticism/test_level2_known_answers.py", "tests/test_rep
                  "tests/criticism/test_level2_reference_sentence_whole.py",
                  "tests/criticism/test_level2_shared_bias_sentence_whole.py",
                  "tests/criticism/test_level2_bottleneck_words_whole.py",
+                 "tests/criticism/test_level2_widen_reach_whole.py",
                  "-klevel2 or edge or reach"]
 # the transcription check's tests (the CLI ones run the check end to end on a small table)
 _TRANSCRIPTION_TESTS = ["tests/transcription/test_transcription.py",

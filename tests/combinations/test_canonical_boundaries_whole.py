@@ -48,6 +48,23 @@ def test_a_stationary_point_on_the_box_s_face_is_inside(beyond, inside):
     assert c.inside is inside and c.kind == "maximum"
 
 
+@pytest.mark.parametrize("scale, ratio, singular", [
+    *[(scale, ratio, ratio < 1e-12) for scale in (1e-4, 1.0, 1e4) for ratio in (1e-13, 1e-11)],
+    (1.0, 1e-12, True),  # exactly 1e-12 of the largest: singular
+])
+def test_a_surface_is_singular_by_its_smallest_eigenvalue_relative_to_its_largest_at_any_scale(scale, ratio,
+                                                                                               singular):
+    # scale * (2 + 0.6 x1 + x1^2 + ratio x2^2): eigenvalues scale and scale * ratio, x_s = (-0.3, 0) unless singular
+    c = canonical_analysis(2.0 * scale, [0.6 * scale, 0.0], np.diag([scale, scale * ratio]),
+                           region_lower=[-1, -1], region_upper=[1, 1])
+    if singular:
+        assert np.isnan(c.stationary_coded).all() and np.isnan(c.value) and not c.inside
+    else:
+        assert c.stationary_coded == pytest.approx([-0.3, 0.0], abs=1e-12) and c.inside
+        assert c.value == pytest.approx(scale * (2.0 - 0.18 + 0.09))
+    assert c.kind == "stationary ridge" and c.ridge_slopes.tolist() == [0.0]
+
+
 def _rotation(rng, k):
     q, r = np.linalg.qr(rng.normal(size=(k, k)))
     return q * np.sign(np.diag(r))

@@ -155,6 +155,27 @@ def test_a_thin_set_the_local_search_misses_gives_its_point_nearest_the_searchs_
     assert result.best_errors["y"] == pytest.approx(0.01, abs=1e-8)
 
 
+def test_a_thin_set_the_local_search_misses_reports_the_largest_error_of_every_observable_there():
+    """The thin set of y beside a second observable z, met everywhere (its error at most 0.5 %, weighted 1 %): the
+    best point is still y's set's point nearest the search's best, and its largest weighted error is y's 2 %."""
+    from demid.sampling.evaluate import evaluate_set
+
+    surrogate, y_of_a = _well_in_a()
+    z = Surrogate("z", ["a", "b"], [(0, 0), (0, 1)], np.array([1.0 - 0.005, 0.0005]), np.zeros((2, 2)), 0.0, 5)
+    domain = Domain(("a", "b"), (2.0, 10.0), (6.0, 20.0), (False, False))
+    surrogates, targets = {"y": surrogate, "z": z}, {"y": 1.0, "z": 1.0}
+    strict = evaluate_set(surrogates, domain, ("y", "z"), targets, 0.01, 21)
+    roots = (y_of_a - 1.01).roots()
+    a2 = sorted(r.real for r in roots if abs(r.imag) < 1e-12 and 2 <= r.real <= 6)[1]
+    result = calibration_check(surrogates, domain, targets, 0.02, 3, tolerances={"y": 0.01, "z": 0.01},
+                               strict_set=strict)
+    assert result.feasible and result.best_point["a"] == pytest.approx(a2, abs=1e-7)
+    b = result.best_point["b"]
+    assert result.best_errors["z"] == pytest.approx(0.0005 * (b - 10.0), abs=1e-12)
+    assert result.best_errors["y"] == pytest.approx(0.01, abs=1e-8)
+    assert result.best_max_error == pytest.approx(0.02, abs=1e-8)
+
+
 def test_implied_bias_is_the_narrow_well_at_the_grids_best_node():
     """y2 = (b - 1/4)^2 (b - 7/10)^2 (1 + 2000 b^6) - b/50 cannot reach its target -1; where y1 = a meets 0.5, the
     smallest bias y2 needs is at the narrow well near b = 0.7 (brute force on a fine grid).  Only the grid node

@@ -36,3 +36,15 @@ def test_an_observable_constant_to_round_off_with_a_far_target_is_unmoved(slope,
     assert result.unmoved == (["z2"] if unmoved else [])
     if unmoved:
         assert abs(result.best_errors["z1"]) <= 1e-6  # the best point is sought on the observable that moves
+
+
+@pytest.mark.parametrize("step,unmoved", [(1.0, True), (2.0, False)])
+def test_an_error_spread_of_exactly_a_billionth_is_unmoved_and_twice_that_is_moved(step, unmoved):
+    # z2 = 1e9 + step * p against the target 1e9: its relative error runs from 0 to step / 1e9 over p in [0, 1]
+    assert (1e9 + 1.0 - 1e9) / 1e9 == 1e-9  # the premise: a spread of exactly 1e-9 * max(1, largest |error|)
+    surrogates = {"z1": _surrogate("z1", {0: 10.0, 1: 5.0, 2: 3.0}), "z2": _surrogate("z2", {0: 1e9, 1: step})}
+    result = calibration_check(surrogates, Domain(tuple(NAMES), (0.0, 0.0), (1.0, 1.0)), {"z1": 13.0, "z2": 1e9},
+                               0.05, 21)
+    assert result.unmoved == (["z2"] if unmoved else [])
+    stuck = "z2 is predicted the same everywhere in the search range"
+    assert (stuck in result.message) is unmoved

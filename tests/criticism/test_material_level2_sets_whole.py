@@ -179,3 +179,89 @@ def test_a_finding_reports_its_extensions_effect_on_every_scenario_of_its_respon
     assert result.summary["level1"][which]["findings"] == 1 and result.summary["level1"][other]["findings"] == 0
     for r in ("y", "z"):  # each response's scenarios, in the config's order
         assert result.summary["level1"][r]["scenarios"] == [s for s, sc in scenarios.items() if r in sc["observables"]]
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_level2_warns_of_the_search_range_beyond_the_runs_that_gave_a_response(level1_stand_in, seed):
+    from demid.criticism.models import short_number
+
+    rng = np.random.default_rng(30 + seed)
+    lower, upper = np.array([0.0, 1.0]), np.array([2.0, 3.0])
+    table, _, coef, targets, _ = _study(rng, lower, upper, SCENARIOS[0])
+    wide = {"a": {"lower": -1.0, "upper": 2.0}, "b": {"lower": 1.0, "upper": 3.0 + 2.0 * seed}}
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5}, "factors": wide,
+        "responses": {o: {"target": t} for o, t in targets.items()}, "scenarios": SCENARIOS[0]}, grid_points=41)
+    # a failed run (no response) out at the widened bounds covers nothing
+    failed = pd.DataFrame([{"run": len(table) + 1, "a": -1.0, "b": 3.0 + 2.0 * seed, "y": np.nan, "z": np.nan}])
+    table = pd.concat([table, failed], ignore_index=True)
+    surrogates = {o: _plane(o, c) for o, c in coef.items()}
+    level2 = material.criticize_material(table, surrogates, spec, fits=NO_FITS).summary["level2"]
+    beyond = {"a": ("lower", lower[0], upper[0]), "b": ("upper", lower[1], upper[1])} if seed else \
+        {"a": ("lower", lower[0], upper[0])}
+    assert len(level2["extrapolation"]) == len(beyond)
+    for sentence, (f, (side, lo, hi)) in zip(level2["extrapolation"], beyond.items()):
+        assert sentence.startswith(f"Extrapolation: the search range of {f}, ")
+        assert f"which cover {short_number(lo)} to {short_number(hi)};" in sentence
+        assert sentence.endswith(f"simulate runs out to the {side} bound.")
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_four_factors_level2_misses_by_the_targets_distance_from_the_planes_range_over_the_box(level1_stand_in,
+                                                                                                 seed):
+    rng = np.random.default_rng(50 + seed)
+    names = "abcd"
+    lower, upper = np.array([0.0, 1.0, -2.0, 10.0]), np.array([1.0, 3.0, 2.0, 20.0])
+    coef = np.concatenate([[rng.uniform(-4, 4)], rng.uniform(0.5, 1.5, 4) * rng.choice([-1, 1], 4) / (upper - lower)])
+    ends = coef[0] + np.sort([np.sum(np.minimum(coef[1:] * lower, coef[1:] * upper)),
+                              np.sum(np.maximum(coef[1:] * lower, coef[1:] * upper))])
+    # a target inside the plane's range over the box, 10 % beyond its upper end, or 10 % beyond its lower end
+    target = [float(np.mean(ends)), 1.1 * ends[1] if ends[1] > 0 else 0.9 * ends[1],
+              0.9 * ends[0] if ends[0] > 0 else 1.1 * ends[0]][seed]
+    table = make_ccd_table(lambda x: {"y": coef[0] + x @ coef[1:]}, lower, upper, seed=1)
+    table = table.rename(columns={f"x{i + 1}": f for i, f in enumerate(names)})
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+        "factors": {f: {"lower": float(lo), "upper": float(hi)} for f, lo, hi in zip(names, lower, upper)},
+        "responses": {"y": {"target": target}}, "scenarios": {"y": {"observables": ["y"], "tolerance": 0.05}}},
+        grid_points=256)
+    terms = [(0, 0, 0, 0)] + [tuple(int(i == k) for i in range(4)) for k in range(4)]
+    surrogate = Surrogate("y", list(names), terms, coef, np.zeros((5, 5)), 0.0, 20)
+    level2 = material.criticize_material(table, {"y": surrogate}, spec, fits={"y": None}).summary["level2"]
+    miss = max(ends[0] - target, target - ends[1], 0.0) / abs(target)
+    assert level2["best_max_error"] == pytest.approx(miss, rel=1e-6, abs=1e-9)
+    assert level2["feasible"] is (seed == 0)
+    best = np.array([level2["best_point"][f] for f in names])
+    assert np.all((best >= lower) & (best <= upper))
+    assert level2["best_errors"]["y"] == pytest.approx((coef[0] + coef[1:] @ best - target) / abs(target), abs=1e-12)
+    if seed:  # the nearest end of the range is a corner of the box: the point where each term is at that end
+        corner = np.where((coef[1:] > 0) == (seed == 1), upper, lower)
+        assert best == pytest.approx(corner)
+
+
+def test_four_factors_without_a_scenario_of_the_targets_level2_judges_no_sampled_set(level1_stand_in):
+    """No scenario holds both targets at the reference tolerance and four factors have no exact set: level 2
+    decides by its own search and says nothing of a set's bounds (no set of these targets is evaluated)."""
+    rng = np.random.default_rng(7)
+    names = "abcd"
+    lower, upper = np.zeros(4), np.ones(4)
+    coef = {"y": np.array([2.0, 1.0, 0.5, -0.5, 0.25]), "z": np.array([3.0, 0.1, 0.0, 0.0, 0.0])}
+    x0 = rng.uniform(0.3, 0.7, 4)
+    targets = {o: float(c[0] + c[1:] @ x0) for o, c in coef.items()}
+    table = make_ccd_table(lambda x: {o: c[0] + x @ c[1:] for o, c in coef.items()}, lower, upper, seed=1)
+    table = table.rename(columns={f"x{i + 1}": f for i, f in enumerate(names)})
+    spec = MaterialSpec.from_material("m", {
+        "data": "x.csv", "design": {"type": "ccd", "alpha": 1.41421, "center_runs": 5},
+        "factors": {f: {"lower": 0.0, "upper": 1.0} for f in names},
+        "responses": {o: {"target": t} for o, t in targets.items()},
+        "scenarios": {"y_alone": {"observables": ["y"], "tolerance": 0.1},
+                      "z_alone": {"observables": ["z"], "tolerance": 0.1}}}, grid_points=256)
+    terms = [(0, 0, 0, 0)] + [tuple(int(i == k) for i in range(4)) for k in range(4)]
+    surrogates = {o: Surrogate(o, list(names), terms, c, np.zeros((5, 5)), 0.0, 20) for o, c in coef.items()}
+    level2 = material.criticize_material(table, surrogates, spec, fits=NO_FITS).summary["level2"]
+    assert level2["feasible"] and level2["best_max_error"] <= 0.1
+    assert level2["set_at_bound"] is None
+    best = np.array([level2["best_point"][f] for f in names])
+    on_bound = {f: ["lower"] if v <= BOUND_TOUCH else ["upper"] if v >= 1 - BOUND_TOUCH else []
+                for f, v in zip(names, best)}
+    assert level2["widen"] == {f: sides for f, sides in on_bound.items() if sides}

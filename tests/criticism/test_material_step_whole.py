@@ -147,3 +147,72 @@ def test_four_factors_reference_distance_and_fractions_on_sampled_sets(seed):
     for key, c in (("fraction_pct_before", coef), ("fraction_pct_after", tilted)):
         share = 100 * np.mean(np.abs(c[0] + points @ c[1:] - target) <= 0.1 * abs(target))
         assert effect[key] == pytest.approx(share, abs=1.5)
+
+
+def _slab(rng, lower, upper, tolerance, flatten=1.0):
+    """A plane in one factor whose band (relative ``tolerance`` about a target of either sign) is centred inside
+    [lower, upper] and may run past an end; the plane's slope times ``flatten`` about the same centre."""
+    target = float(rng.choice([-1, 1]) * rng.uniform(1, 3))
+    centre = rng.uniform(lower + 0.15 * (upper - lower), upper - 0.15 * (upper - lower))
+    half = rng.uniform(0.1, 0.6) * (upper - lower)  # the half-width of the band before flattening
+    slope = float(rng.choice([-1, 1])) * tolerance * abs(target) / half * flatten
+    interval = (max(lower, centre - half / flatten), min(upper, centre + half / flatten))
+    return np.array([target - slope * centre, slope]), target, interval
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_an_extensions_effect_on_slabs_is_the_exact_fraction_and_widths_in_percent(seed):
+    rng = np.random.default_rng(40 + seed)
+    own_z = float(rng.choice([0.02, 0.3]))
+    y, ty, a_before = _slab(rng, 0.0, 2.0, 0.05)
+    z, tz, b_both = _slab(rng, 1.0, 3.0, own_z)
+    spec = MaterialSpec.from_material("m", {
+        "design": {"type": "ccd"}, "factors": {"a": {"lower": 0, "upper": 2}, "b": {"lower": 1, "upper": 3}},
+        "responses": {"y": {"target": ty}, "z": {"target": tz, "tolerance": own_z}},
+        "scenarios": {"both": {"observables": ["y", "z"], "tolerance": 0.05},
+                      "y_alone": {"observables": ["y"], "tolerance": 0.1}}})
+    surrogates = {"y": _plane("y", [y[0], y[1], 0.0]), "z": _plane("z", [z[0], 0.0, z[1]])}
+    flatten = rng.uniform(0.3, 0.7)
+    extended = _plane("y", [ty - flatten * y[1] * (ty - y[0]) / y[1], flatten * y[1], 0.0])
+    rows = {r["scenario"]: r for r in _identifiability_effect(surrogates, extended, "y", spec, 51)}
+    centre, slope = (ty - y[0]) / y[1], abs(y[1])
+
+    def a_interval(tolerance, slope):
+        half = tolerance * abs(ty) / slope
+        return max(0.0, centre - half), min(2.0, centre + half)
+
+    b_width = b_both[1] - b_both[0]
+    for name, tolerance, b in (("both", 0.05, b_width), ("y_alone", 0.1, 2.0)):
+        row = rows[name]
+        for when, s in (("before", slope), ("after", flatten * slope)):
+            lo, hi = a_interval(tolerance, s)
+            assert row[f"fraction_pct_{when}"] == pytest.approx(100 * (hi - lo) / 2 * b / 2, rel=1e-6)
+            assert row[f"width_{when}"] == pytest.approx({"a": hi - lo, "b": b}, rel=1e-6)
+    assert a_before == pytest.approx(a_interval(0.05, slope))
+
+
+@pytest.mark.parametrize("reverse", [False, True])
+def test_a_table_without_a_run_column_is_judged_in_its_row_order(reverse):
+    from demid.criticism.material import material_run_order
+    from demid.design import Coding
+
+    from ..helpers import make_ccd_table
+
+    table = make_ccd_table(lambda x: {"y": 3.0 + x[:, 0] + 0.1 * x[:, 1]}, [0.0, 1.0], [2.0, 3.0], seed=4)
+    table = table.rename(columns={"x1": "a", "x2": "b"})
+    # rows listed by y (ascending or descending), the run numbers left out: the rows follow the response
+    table = table.sort_values("y", ascending=not reverse, kind="stable").drop(columns="run")
+    spec = MaterialSpec.from_material("m", {
+        "design": {"type": "ccd"}, "factors": {"a": {"lower": 0, "upper": 2}, "b": {"lower": 1, "upper": 3}},
+        "responses": {"y": {"target": 4.0}}, "scenarios": {"y": {"observables": ["y"], "tolerance": 0.1}}})
+    coding = Coding.from_levels(["a", "b"], table[["a", "b"]].to_numpy(), 1.41421)
+    order = material_run_order(table, spec, coding).to_json()
+    # y's ties (the centre runs) share a rank: the rank correlation of 1..n with y is +-1 only up to them
+    y = table["y"].to_numpy()
+    ranks = np.argsort(np.argsort(y, kind="stable"), kind="stable") + 1.0
+    ties = np.array([np.mean(ranks[y == v]) for v in y])
+    position = np.arange(1.0, len(y) + 1)
+    rho = np.corrcoef(position, ties)[0, 1]
+    assert order["reason"] == "sorted_by_response" and order["follows_response"] == "y"
+    assert order["rank_correlation"] == pytest.approx(rho, abs=1e-6) and not order["drift_tested"]
+    assert bool(rho > 0) is (not reverse)
