@@ -5528,6 +5528,53 @@ EQUIVALENT: dict[str, str] = {
     "demid/uncertainty/ranking.py::_met_together::starts // 2 => starts / 2#0":
         "the one caller (rank_observable_sets) leaves starts at 8: the count of further starts, 8 // 2 = 4 or "
         "8 / 2 = 4.0, is read only by _other_basins' len(out) == count, the same starts either way",
+    "demid/criticism/material.py::criticize_material::5 => 6#0":
+        "the floor of level 2's points per axis above three factors binds only where int(2e5 ** (1 / d)) < 6; the "
+        "config schema allows at most six factors (maxProperties 6), where it gives 21, 11 and 7 points at four to "
+        "six (at three factors and fewer n_level2 is n_effect)",
+    "demid/criticism/material.py::criticize_material::fits or {} => {}#0":
+        "the given fits ignored and every response refitted: the one caller (steps.material_step) passes "
+        "fit_material(table, spec, coding=validated.coding), i.e. fit_response(table, factors, r, coding=coding, "
+        "log_factors=log_factors) per response on the same table and the same coding it passes as coding=, the very "
+        "call made here (the docstring's fits are those fits); the same deterministic OLS, only slower",
+    "demid/criticism/material.py::criticize_material::strict_sets or {} => {}#0":
+        "the stored strict sets ignored, each scenario's set evaluated again: stored_strict_sets holds only exact "
+        "sets, rebuilt from the same fits with the state the admissibility step wrote from that very evaluation "
+        "(fraction, unit spans, reference distance and nearest point, round-tripped exactly through parquet by "
+        "as_stored; at_bound by the same domain.at_bound of the same spans), and an exact set has no grid size: "
+        "evaluating it again (JudgedScenario.strict_set with reference=spec.reference_point, as admissibility did) "
+        "gives the same fraction, widths, at_bound, distance and nearest point, only slower",
+    "demid/story/verdicts.py::_limit_ends::np.isfinite(lower) and np.isfinite(upper) => np.isfinite(lower) or "
+    "np.isfinite(upper)#0":
+        "an interval's ends are NaN together (an empty set, or a row missing from one table), never one alone: "
+        "verdict_frame passes the plausible ends p_lo, p_hi, set NaN together when the plausible fraction is 0",
+    "demid/story/verdicts.py::verdict_frame::sc.observables and all((o in uninformative for o in sc.observables)) => "
+    "all((o in uninformative for o in sc.observables))#0":
+        "differs only for a scenario without observables (all() of nothing is True): the config schema's scenario "
+        "requires observables with minItems 1, and verdict_frame iterates spec.scenarios, the config's",
+    "demid/canonical.py::_orient::out[np.argmax(np.abs(out[:, j])), j] < 0 => out[np.argmax(np.abs(out[:, j])), j] <= "
+    "0#0":
+        "differs only where a column's largest |loading| is 0: _orient's one caller passes np.linalg.eigh's "
+        "eigenvectors, unit columns, whose largest |loading| is at least 1/sqrt(k) (NaN loadings fail both)",
+    "demid/canonical.py::canonical_analysis::largest == 0 or np.min(np.abs(values)) <= 1e-12 * largest => "
+    "np.min(np.abs(values)) <= 1e-12 * largest#0":
+        "largest is max|lambda|, so largest == 0 makes every |lambda| 0 and min|lambda| <= 0 holds too; an empty B "
+        "(where np.min would raise) never arrives: canonical_analysis's one caller, fit_canonical, passes k = "
+        "len(fit.factors) >= 1 (the config's factors have minProperties 1)",
+    "demid/criticism/level2.py::_best_point::0 => -1#2":
+        "best_s is one point (minimax's polished point), so the errors have one column: [:, 0] and [:, -1] are the "
+        "same",
+    "demid/criticism/level2.py::_best_point::0 => -1#3":
+        "best_s is one point (the clipped nearest point of the exact set, a 1-D array), so the errors have one "
+        "column: [:, 0] and [:, -1] are the same",
+    "demid/criticism/slips.py::_positions::1 => 0#0":
+        "the filler of lookup for runs the model leaves out is never read: every candidate _positions is given "
+        "(moved_rows and slip_ratios, from catalogue._factor_level's slip_candidates(data, m) with the same m, and "
+        "slip_fit's same-run subset of them) has row = kept[pos], a kept run, whose entry the next line sets",
+    "demid/criticism/slips.py::_positions::1 => 2#0":
+        "the filler of lookup for runs the model leaves out is never read: every candidate _positions is given "
+        "(moved_rows and slip_ratios, from catalogue._factor_level's slip_candidates(data, m) with the same m, and "
+        "slip_fit's same-run subset of them) has row = kept[pos], a kept run, whose entry the next line sets",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
@@ -5823,6 +5870,25 @@ SETTINGS: dict[str, str] = {
     "demid/uncertainty/ranking.py::_other_basins::12 => 11#1":
         "the decimals to which a basin node's errors are compared with the nodes already tried (11 instead of 12): "
         "how near two start nodes' errors must be to count as one start, a search setting",
+    "demid/criticism/material.py::_effect_points::2 => 1#0":
+        "two-factor materials get the three-factor size (61 points per axis) instead of 401 for the before/after and "
+        "level-2 searches, where polynomial sets are exact, an extension's sampled set refines its boundary cells and "
+        "level 2 polishes its grid's best nodes: a resolution, not a rule of the answer",
+    "demid/criticism/material.py::_effect_points::2 => 3#0":
+        "three-factor materials get the two-factor cap (401, so the config's grid_points_3d, 201 by default) instead "
+        "of 61 points per axis: a resolution and a cost, not a rule of the answer",
+    "demid/criticism/material.py::_effect_points::2 => 3#1":
+        "the Sobol sample size above three factors capped at 3**14 instead of 2**14 (so the config's sobol_points, "
+        "65,536 by default): a resolution and a cost, not a rule of the answer",
+    "demid/criticism/material.py::_effect_points::401 => 402#0":
+        "the grid size (401 -> 402 points per axis) of the before/after and level-2 searches at two factors: a "
+        "resolution, not a rule of the answer",
+    "demid/criticism/material.py::_effect_points::min(n, 2 ** 14) => max(n, 2 ** 14)#0":
+        "the Sobol sample size above three factors at least 2**14 (the config's sobol_points, 65,536 by default) "
+        "instead of at most: a resolution and a cost, not a rule of the answer",
+    "demid/criticism/material.py::_effect_points::min(n, 401) => max(n, 401)#0":
+        "the two-factor grid at least 401 (the config's grid_points, 1001 by default) instead of at most 401 points "
+        "per axis: a resolution and a cost, not a rule of the answer",
 }
 
 # Files and folders copied into the private tree the mutants are written to.
