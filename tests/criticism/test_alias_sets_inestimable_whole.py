@@ -1,0 +1,41 @@
+"""A term the design cannot estimate at all gets the runs that would make it estimable: in a face-centred CCD
+every factor takes only the levels -1, 0 and 1, where a^3 equals a, so the pure cubes are reported as not
+testable, each with runs after which its column is no longer a combination of the quadratic's."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from demid.criticism import criticize
+from demid.design import model_matrix, parse_term, quadratic_terms
+from tests.generators import FACTORS, ccd_table
+
+
+def _coded(table, factors):
+    x = table[factors].to_numpy(dtype=float)
+    lo, hi = x.min(axis=0), x.max(axis=0)
+    return lambda actual: (np.asarray(actual, dtype=float) - (lo + hi) / 2) / ((hi - lo) / 2)
+
+
+def _left_over(coded, term):
+    """Norm of the term's column off the quadratic's columns, relative to the column's norm."""
+    x, z = model_matrix(coded, quadratic_terms(coded.shape[1])), model_matrix(coded, [term])[:, 0]
+    resid = z - x @ np.linalg.lstsq(x, z, rcond=None)[0]
+    return float(np.linalg.norm(resid) / np.linalg.norm(z))
+
+
+def test_pure_cubes_of_a_face_centred_design_get_runs_that_make_them_estimable():
+    factors = FACTORS[2]
+    table, _ = ccd_table(4, 2, "clean", alpha=1.0)
+    to_coded = _coded(table, factors)
+    coded = to_coded(table[factors])
+    result = criticize(table, factors, "y", n_null=19)
+    cubes = {f"{f}^3" for f in factors}
+    untestable = [a for a in result.alias_sets if not a.testable]
+    assert {a.representative for a in untestable} == cubes
+    for a in untestable:
+        term = parse_term(a.representative, factors)
+        assert _left_over(coded, term) < 1e-9  # a^3 is a at the levels -1, 0, 1
+        assert a.extra_runs, a.representative
+        added = to_coded([[run[f] for f in factors] for run in a.extra_runs])
+        assert _left_over(np.vstack([coded, added]), term) > 1e-3
