@@ -39,3 +39,18 @@ def test_pure_cubes_of_a_face_centred_design_get_runs_that_make_them_estimable()
         assert a.extra_runs, a.representative
         added = to_coded([[run[f] for f in factors] for run in a.extra_runs])
         assert _left_over(np.vstack([coded, added]), term) > 1e-3
+
+
+def test_a_term_the_runs_estimate_however_narrowly_gets_no_runs():
+    # the same design with its outer levels written to seven digits, each run's a little differently: the pure
+    # cube of gamma stays barely apart from gamma, so it is testable, and a testable lone term needs no run
+    factors = FACTORS[2]
+    table, _ = ccd_table(4, 2, "clean", alpha=1.0)
+    sign = np.array([1, -1, -1, 1, 1, -1, 1, 1, -1, 1, -1, 1, -1])
+    g = table["gamma"].to_numpy(dtype=float)
+    table["gamma"] = np.where(g != 8.0, np.round(g * (1 + 3e-7 * sign), 6), g)
+    result = criticize(table, factors, "y", n_null=19)
+    alone = [a for a in result.alias_sets if len(a.members) == 1 and a.testable]
+    assert "gamma^3" in {a.representative for a in alone}
+    assert _left_over(_coded(table, factors)(table[factors]), parse_term("gamma^3", factors)) < 1e-5
+    assert all(a.extra_runs == () for a in alone)
