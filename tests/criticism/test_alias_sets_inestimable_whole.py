@@ -41,16 +41,33 @@ def test_pure_cubes_of_a_face_centred_design_get_runs_that_make_them_estimable()
         assert _left_over(np.vstack([coded, added]), term) > 1e-3
 
 
-def test_a_term_the_runs_estimate_however_narrowly_gets_no_runs():
-    # the same design with its outer levels written to seven digits, each run's a little differently: the pure
-    # cube of gamma stays barely apart from gamma, so it is testable, and a testable lone term needs no run
-    factors = FACTORS[2]
+def _narrowly_apart():
+    """The same design with its outer levels of gamma written to seven digits, each run's a little differently:
+    the pure cube of gamma stays barely apart from gamma."""
     table, _ = ccd_table(4, 2, "clean", alpha=1.0)
     sign = np.array([1, -1, -1, 1, 1, -1, 1, 1, -1, 1, -1, 1, -1])
     g = table["gamma"].to_numpy(dtype=float)
     table["gamma"] = np.where(g != 8.0, np.round(g * (1 + 3e-7 * sign), 6), g)
-    result = criticize(table, factors, "y", n_null=19)
+    coded = _coded(table, FACTORS[2])(table[FACTORS[2]])
+    assert _left_over(coded, parse_term("gamma^3", FACTORS[2])) < 1e-5
+    return table, coded
+
+
+def test_a_term_the_runs_estimate_however_narrowly_gets_no_runs():
+    # testable, and a testable lone term needs no run to be told apart
+    table, _ = _narrowly_apart()
+    result = criticize(table, FACTORS[2], "y", n_null=19)
     alone = [a for a in result.alias_sets if len(a.members) == 1 and a.testable]
     assert "gamma^3" in {a.representative for a in alone}
-    assert _left_over(_coded(table, factors)(table[factors]), parse_term("gamma^3", factors)) < 1e-5
     assert all(a.extra_runs == () for a in alone)
+
+
+def test_a_lone_missing_term_named_on_such_runs_proposes_no_runs_to_separate_it():
+    table, coded = _narrowly_apart()
+    x = model_matrix(coded, quadratic_terms(2))
+    z = model_matrix(coded, [parse_term("gamma^3", FACTORS[2])])[:, 0]
+    resid = z - x @ np.linalg.lstsq(x, z, rcond=None)[0]
+    table["y"] = table["y"] + 10.0 * resid / np.linalg.norm(resid)  # the response follows that narrow direction
+    result = criticize(table, FACTORS[2], "y", n_null=199)
+    assert [(f.cause, f.detail) for f in result.findings] == [("missing_term", "gamma^3")]
+    assert result.findings[0].extra_runs == [] and "extra_runs" not in result.findings[0].to_json()
