@@ -68,6 +68,6 @@ def test_a_lone_missing_term_named_on_such_runs_proposes_no_runs_to_separate_it(
     z = model_matrix(coded, [parse_term("gamma^3", FACTORS[2])])[:, 0]
     resid = z - x @ np.linalg.lstsq(x, z, rcond=None)[0]
     table["y"] = table["y"] + 10.0 * resid / np.linalg.norm(resid)  # the response follows that narrow direction
-    result = criticize(table, FACTORS[2], "y", n_null=199)
+    result = criticize(table, FACTORS[2], "y", n_null=99)
     assert [(f.cause, f.detail) for f in result.findings] == [("missing_term", "gamma^3")]
     assert result.findings[0].extra_runs == [] and "extra_runs" not in result.findings[0].to_json()
