@@ -2160,7 +2160,8 @@ TABLE: dict[str, dict] = {
                                   "tests/criticism/test_aliasing_first_best_whole.py",
                                   "tests/criticism/test_separating_runs_few_runs_whole.py",
                                   "tests/criticism/test_one_more_run_units_whole.py",
-                                  "tests/criticism/test_one_more_run_criteria_whole.py"],
+                                  "tests/criticism/test_one_more_run_criteria_whole.py",
+                                  "tests/criticism/test_alias_sets_inestimable_whole.py"],
     },
     "demid/criticism/extensions.py": {
         "functions": None,
