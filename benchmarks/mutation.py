@@ -2161,7 +2161,8 @@ TABLE: dict[str, dict] = {
                                   "tests/criticism/test_separating_runs_few_runs_whole.py",
                                   "tests/criticism/test_one_more_run_units_whole.py",
                                   "tests/criticism/test_one_more_run_criteria_whole.py",
-                                  "tests/criticism/test_alias_sets_inestimable_whole.py"],
+                                  "tests/criticism/test_alias_sets_inestimable_whole.py",
+                                  "tests/criticism/test_missing_term_blocks_whole.py"],
     },
     "demid/criticism/extensions.py": {
         "functions": None,
