@@ -45,3 +45,13 @@ def test_almost_as_likely_lists_the_alternatives_less_than_two_log_likelihood_un
     else:
         assert "Almost as likely" not in finding.message
     assert finding.info["alternatives"] == alternatives
+
+
+def test_another_run_of_the_named_cause_almost_as_likely_is_listed(named):
+    # a second outlying run fitted nearly as well is a close alternative like any other cause
+    data, model, (h, spec, info, new, _) = named
+    assert h.cause == "outlier"
+    others = [r for r in data.runs.tolist() if r != h.detail][:2]
+    alternatives = [_alternative("outlier", others[0], -0.5), _alternative("outlier", others[1], -2.5)]
+    finding = _finding(data, "y", model, h, spec, dict(info), new, alternatives)
+    assert finding.message.endswith(f" Almost as likely: {CAUSE_WORDS['outlier']} {others[0]}.")
