@@ -3398,9 +3398,6 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/step_changes.py::step_projections::int(kept[order[c]]) => kept[order[c]]#0":
         "a numpy integer where the int was: a step's change-point is only an index into data.runs (Model.step_column, "
         "Model.new_run_row) or taken int() of (extend_for, detail_json, _step_aiccs' comparison), never written",
-    "demid/criticism/level1.py::_alias_sets::len(c.terms) > 1 => len(c.terms) >= 1#0":
-        "separating_runs of a single estimable term adds no run (its residualised block already has rank 1, the "
-        "loop's stop), the () the original leaves: only the work differs",
     "demid/criticism/extensions.py::extend_for::len(model.y) > ASYMPTOTIC_RUNS => len(model.y) >= ASYMPTOTIC_RUNS#0":
         "at exactly 256 runs the gamma search reads weighted_loglik (the fit's sum of squares) instead of a Model "
         "per step: the same log-likelihood to round-off (its docstring; tests/criticism/test_scatter_gamma_search.py), "
@@ -5579,6 +5576,127 @@ EQUIVALENT: dict[str, str] = {
         "the filler of lookup for runs the model leaves out is never read: every candidate _positions is given "
         "(moved_rows and slip_ratios, from catalogue._factor_level's slip_candidates(data, m) with the same m, and "
         "slip_fit's same-run subset of them) has row = kept[pos], a kept run, whose entry the next line sets",
+    "demid/criticism/level1.py::CriticismResult.dumps::2 => 3#0":
+        "the indentation of the pretty-printed text only: json.dumps(..., indent=3) is the same JSON document (the "
+        "same keys, order and numbers to the last bit; whitespace between tokens is not part of a JSON value); "
+        "dumps is called by nothing in demid, scripts or workflow (the criticism files are written by "
+        "io.write_json from to_json), only parsed back with json.loads",
+    "demid/criticism/level1.py::CriticismResult.to_frame::self.runs_for_next_wave and rows => "
+    "self.runs_for_next_wave#0":
+        "rows is empty only with no finding, no candidate and no unexplained misfit, and then criticize leaves no "
+        "discriminating runs: naming.ambiguity returns runs only with findings or with candidates (its other "
+        "returns are ([], [])), and replicate_runs returns [] with no finding and no unexplained; so "
+        "runs_for_next_wave (bool(runs) and ...) is already False whenever rows is empty (CriticismResult is built "
+        "only by criticize and never modified)",
+    "demid/criticism/level1.py::_rounds::1 => 2#0":
+        "range(max_findings + 2) instead of + 1: the loop never reaches an index beyond max_findings, since at "
+        "rnd_index == max_findings the test 'not rejected or rnd_index == max_findings' breaks before anything "
+        "else runs (criticize's callers use the default max_findings = 3)",
+    "demid/design.py::model_matrix::power > 1 => power >= 1#0":
+        "the test is the elif of 'if power == 1': it is reached only with power != 1, and exponents are "
+        "non-negative integers, so power >= 1 there is power > 1",
+    "demid/design.py::term_name::power > 1 => power >= 1#0":
+        "the test is the elif of 'if power == 1': it is reached only with power != 1, and exponents are "
+        "non-negative integers, so power >= 1 there is power > 1",
+    "demid/design.py::classify_points::coded = np.asarray(coded, dtype=float) => pass#0":
+        "its two callers (design_check: the table's snapped points, and one snapped point[None, :]) pass float "
+        "ndarrays from snap_to_factor_levels (a column_stack of nominal_levels' float arrays): np.asarray(..., "
+        "dtype=float) returns the same array, which is only iterated and read",
+    "demid/design.py::snap_to_levels::coded = np.asarray(coded, dtype=float) => pass#0":
+        "its one caller, snap_to_factor_levels, passes coded[:, j] of a float ndarray: np.asarray(..., dtype=float) "
+        "returns the same array, which is only read",
+    "demid/design.py::snap_to_factor_levels::coded = np.array(coded, dtype=float, ndmin=2) => pass#0":
+        "its three callers (design_check twice, data.validate_material) pass coding.to_coded(model_units(table ...)), "
+        "a 2-d float ndarray: the copy is the same values and shape, and the array is only read (snap_to_levels "
+        "returns new arrays)",
+    "demid/design.py::nominal_levels::abs(alpha - 1) > 1e-09 => abs(alpha - 1) >= 1e-09#0":
+        "differs only where abs(alpha - 1) is exactly the double 1e-9, which no float alpha gives: within [0.5, 2] "
+        "alpha - 1 is exact (Sterbenz) and a multiple of 2^-53, and 1e-9 * 2^53 = 9007199.25... is not an integer; "
+        "outside that interval abs(alpha - 1) >= 0.5",
+    "demid/criticism/level1.py::_summary::not n_tests and exact => exact#0":
+        "whenever exact_fit_message is non-empty the catalogue is empty, so 'not n_tests' is already True: a "
+        "constant response (ptp(y) <= round_off_floor(y)) leaves residuals of root mean square at most ptp(y), "
+        "and the other case is round_off_only(fit's residuals, y, fit.factor_round_off), which is the test "
+        "catalogue.Round applies first to the base model (the same least-squares fit of the same y on the same "
+        "quadratic and block columns, data.factor_round_off = fit.factor_round_off, no weights or transform) "
+        "before returning with no hypothesis; only a residual RMS equal to the floor to the last bits, computed "
+        "twice, could split them",
+    "demid/criticism/level1.py::prepare_data::1 => 0#0":
+        "the np.arange run numbers are the fallback for a table without a 'run' column, which never reaches "
+        "prepare_data: its one caller criticize is called by the CLI (load_table -> data.read_table, whose "
+        "check_header requires 'run') and by criticism.material for steps.py's validated table (read_table) or a "
+        "simulated wave (waves inserts 'run'), so the else branch is never evaluated",
+    "demid/criticism/level1.py::prepare_data::1 => 0#1":
+        "the np.arange run numbers are the fallback for a table without a 'run' column, which never reaches "
+        "prepare_data: its one caller criticize is called by the CLI (load_table -> data.read_table, whose "
+        "check_header requires 'run') and by criticism.material for steps.py's validated table (read_table) or a "
+        "simulated wave (waves inserts 'run'), so the else branch is never evaluated",
+    "demid/criticism/level1.py::prepare_data::1 => 2#0":
+        "the np.arange run numbers are the fallback for a table without a 'run' column, which never reaches "
+        "prepare_data: its one caller criticize is called by the CLI (load_table -> data.read_table, whose "
+        "check_header requires 'run') and by criticism.material for steps.py's validated table (read_table) or a "
+        "simulated wave (waves inserts 'run'), so the else branch is never evaluated",
+    "demid/criticism/level1.py::prepare_data::1 => 2#1":
+        "the np.arange run numbers are the fallback for a table without a 'run' column, which never reaches "
+        "prepare_data: its one caller criticize is called by the CLI (load_table -> data.read_table, whose "
+        "check_header requires 'run') and by criticism.material for steps.py's validated table (read_table) or a "
+        "simulated wave (waves inserts 'run'), so the else branch is never evaluated",
+    "demid/criticism/level1.py::prepare_data::int(ok.sum()) + 1 => 1#0":
+        "the np.arange run numbers are the fallback for a table without a 'run' column, which never reaches "
+        "prepare_data: its one caller criticize is called by the CLI (load_table -> data.read_table, whose "
+        "check_header requires 'run') and by criticism.material for steps.py's validated table (read_table) or a "
+        "simulated wave (waves inserts 'run'), so the else branch is never evaluated",
+    "demid/design.py::ccd_points::1 => 2#0":
+        "reshape(n_factors, -2) instead of reshape(n_factors, -1): numpy infers the one negative dimension whatever "
+        "its value (the pinned numpy 2.4.6 gives the same (n_factors, 2^n_factors) array, without a warning), so "
+        "the factorial points are the same",
+    "demid/criticism/aliasing.py::OneMoreRun.of::len(s) and s[0] > 0 => len(s) or s[0] > 0#0":
+        "every base holds the intercept (quadratic_terms, or a model's mean_terms built on them, in all four callers "
+        "of separating_runs), so with at least one run len(s) >= 1 and s[0] >= sqrt(n) > 0: both tests are True; "
+        "with no run the mutant raises IndexError (s[0] of an empty array) here, and the original raises the same "
+        "IndexError a line later in _separation_criterion (models.orthonormal_basis reads s[0] of the same empty SVD)",
+    "demid/criticism/aliasing.py::OneMoreRun.of::len(s) and s[0] > 0 => s[0] > 0#0":
+        "every base holds the intercept (quadratic_terms, or a model's mean_terms built on them, in all four callers "
+        "of separating_runs), so with at least one run len(s) >= 1 and s[0] >= sqrt(n) > 0: both tests are True; "
+        "with no run the mutant raises IndexError (s[0] of an empty array) here, and the original raises the same "
+        "IndexError a line later in _separation_criterion (models.orthonormal_basis reads s[0] of the same empty SVD)",
+    "demid/criticism/aliasing.py::OneMoreRun.of::s[0] > 0 => s[0] >= 0#0":
+        "every base holds the intercept (quadratic_terms, or a model's mean_terms built on them, in all four callers "
+        "of separating_runs), so with at least one run s[0] >= sqrt(n) > 0 and both tests are True (with no run "
+        "len(s) is 0 and the test is not evaluated)",
+    "demid/criticism/verdict.py::_specific_share::min(specific) => max(specific)#0":
+        "catalogue.family_weights gives every member other than lack of fit the same weight (all ones, or "
+        "(1 - LOF_SHARE) * m / (m - 1) each, the same expression for each): the specific weights are equal, so "
+        "their min and max are the same float",
+    "demid/criticism/verdict.py::other_reading_of_the_run::slip is None or h.cause not in ('outlier', "
+    "'factor_level') => slip is None#0":
+        "slip is not None only when h is a slip itself (h.cause == 'factor_level') or an outlier with a slip of its "
+        "run (the generator's condition requires h.cause == 'outlier'): whenever slip is not None, h.cause is in "
+        "('outlier', 'factor_level'), so the second test never decides",
+    "demid/criticism/verdict.py::replicate_runs::float(f'{v:.10g}') + 0.0 => float(f'{v:.10g}') - 0.0#0":
+        "x - 0.0 and x + 0.0 differ only for x = -0.0, and a replicate's coordinate is never -0.0: it is "
+        "coded * unit + center (10 ** that for a log factor, positive) with coded = (actual - center) / unit "
+        "(surrogate.SurrogateFit.coded); an IEEE sum is -0.0 only when both terms are -0.0, and coded * unit is -0.0 "
+        "only for actual = +-0 with center = +0.0 (actual - (-0.0) is +0.0 for either zero), so center -0.0 and "
+        "product -0.0 never meet; every other value (and its '.10g' text) is the same",
+    "demid/criticism/aliasing.py::term_classes::extra_columns is not None and extra_columns.size => "
+    "extra_columns is not None#0":
+        "with None both tests are False; with an array (catalogue.Round, the one caller, passes "
+        "m.x[:, len(m.mean_terms):]) they differ only for one without columns (size 0), where "
+        "np.column_stack([base, extra]) is base itself, the same values as not stacking",
+    "demid/criticism/aliasing.py::_separating_runs_cached::1 => 2#1":
+        "reshape(-2, k) instead of reshape(-1, k): numpy infers the one negative dimension whatever its value (the "
+        "pinned numpy 2.4.6 gives the same (len(chosen), k) array, also for no run chosen, without a warning)",
+    "demid/criticism/aliasing.py::_separating_runs_cached::len(chosen) < len(members) => len(chosen) <= "
+    "len(members)#0":
+        "each run chosen raises the rank (_first_best returns a candidate only when its rank top exceeds the current "
+        "one, and rank becomes that top), so len(chosen) <= rank at every test: while rank < len(members), "
+        "len(chosen) < len(members) and <= both hold, and the loop stops exactly when rank reaches len(members)",
+    "demid/criticism/aliasing.py::_separating_runs_cached::rank < len(members) and len(chosen) < len(members) => "
+    "rank < len(members) or len(chosen) < len(members)#0":
+        "len(chosen) <= rank always (each run chosen raises the rank), so while rank < len(members) both are True; "
+        "once rank is len(members) the mutant may scan once more, but no candidate can raise a rank of the members' "
+        "block beyond len(members): _first_best returns None and the loop stops with the same runs",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
