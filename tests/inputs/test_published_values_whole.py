@@ -172,3 +172,13 @@ def test_a_misspelt_name_is_suggested_when_it_is_the_only_one_known():
 ])
 def test_a_missing_entry_is_named_with_the_schema_s_words(content, named):
     assert _fails(content) == f"pub.yaml, key {named}"
+
+
+def test_a_misspelt_material_of_a_contraction_is_named_at_its_item():
+    materials = {"mortar": MATERIALS["m"]}
+    content = {"contractions": [{"material": "mortar", "from": "s", "to": "t", "quantity": "fraction", "value": 1},
+                                {"material": "mortr", "from": "s", "to": "t", "quantity": "fraction", "value": 1}]}
+    with pytest.raises(InputError) as info:
+        check_published_values(content, materials, "pub.yaml")
+    assert str(info.value) == ("pub.yaml, key contractions (item 2).material: 'mortr' is not a material of the "
+                               "config; did you mean 'mortar'?")
