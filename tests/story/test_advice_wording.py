@@ -192,3 +192,13 @@ def test_level2s_own_tolerances_are_read_back_in_the_config_order_of_its_observa
     older = {"tolerance": 0.05, "tolerances": {"d10": 0.05, "d5": 0.02}}
     assert list(level2_own_tolerances(older)) == ["d5", "d10"]
     assert level2_own_tolerances({"tolerance": 0.05, "observables": ["a"], "tolerances": {"a": 0.05}}) is None
+
+
+def test_a_material_without_scenarios_is_not_told_that_every_observable_is_used():
+    spec = _spec(scenarios={})
+    ranking = pd.DataFrame([{"observables": "D", "n_observables": 1, "best_subset": "(none)",
+                             "information_gain_bits": 2.0, "gain_vs_best_subset_bits": 2.0,
+                             "feasible_fraction_pct": 10.0, "targets_reachable": True}])
+    for given in (None, ranking):
+        advice = material_advice(spec, NO_VERDICTS, ranking=given, criticism={"level2": {"feasible": True}})
+        assert [i for i in advice if i.kind != "measurement_order"] == []
