@@ -139,3 +139,46 @@ def test_a_list_where_a_list_is_due_asks_for_lower_and_upper_only_for_an_interva
 ])
 def test_of_several_slips_in_a_file_the_shallowest_is_named_then_the_first_by_key(slips, named):
     assert _fails(slips) == f"pub.yaml, key {named}"
+
+
+def test_a_published_interval_may_be_a_single_point_but_a_search_range_may_not():
+    check_published_values({"intervals": {"m": {"s": {"a": [0.5, 0.5], "b": ["2.0", "2.00"]}}}}, MATERIALS, "pub.yaml")
+    check_published_values({"pareto": {"m": {"max_error": 0.1, "intervals": {"a": [3, 3]}}}}, MATERIALS, "pub.yaml")
+    assert "lower end at its upper end" in _fails({"search_domain": {"m": {"b": [0.5, 0.5]}}})
+
+
+def test_an_unknown_factor_of_an_interval_is_named_at_its_full_key():
+    message = _fails({"intervals": {"m": {"t": {"a": [0, 1], "bb": [0, 1]}}}})
+    assert message == "pub.yaml, key intervals.m.t.bb: 'bb' is not a factor of m; did you mean 'b'?"
+
+
+def test_a_misspelt_name_is_suggested_when_it_is_the_only_one_known():
+    materials = {"m": {"responses": {"angle": {}}, "scenarios": {"only": {}}, "factors": {"mu_r": {}}}}
+    for content, key, words in [({"targets": {"m": {"angel": 30}}}, "targets.m.angel",
+                                 "'angel' is not a response of m; did you mean 'angle'?"),
+                                ({"reference_points": {"m": {"mu": 0.2}}}, "reference_points.m.mu",
+                                 "'mu' is not a factor of m; did you mean 'mu_r'?"),
+                                ({"tolerances": {"m": {"x": 0.1}}}, "tolerances.m.x",
+                                 "'x' is not a scenario of m (known: only)")]:
+        with pytest.raises(InputError) as info:
+            check_published_values(content, materials, "pub.yaml")
+        assert str(info.value) == f"pub.yaml, key {key}: {words}"
+
+
+@pytest.mark.parametrize("content, named", [
+    ({"pareto": {"m": {"intervals": {"a": [0, 1]}}}}, "pareto.m: 'max_error' is a required property"),
+    ({"table3": {"m": {"s": {"width": {"a": 1}}}}}, "table3.m.s: 'feasible_fraction_pct' is a required property"),
+    ({"table2": {"m": {"y": {}}}}, "table2.m.y: {} should be non-empty"),
+])
+def test_a_missing_entry_is_named_with_the_schema_s_words(content, named):
+    assert _fails(content) == f"pub.yaml, key {named}"
+
+
+def test_a_misspelt_material_of_a_contraction_is_named_at_its_item():
+    materials = {"mortar": MATERIALS["m"]}
+    content = {"contractions": [{"material": "mortar", "from": "s", "to": "t", "quantity": "fraction", "value": 1},
+                                {"material": "mortr", "from": "s", "to": "t", "quantity": "fraction", "value": 1}]}
+    with pytest.raises(InputError) as info:
+        check_published_values(content, materials, "pub.yaml")
+    assert str(info.value) == ("pub.yaml, key contractions (item 2).material: 'mortr' is not a material of the "
+                               "config; did you mean 'mortar'?")

@@ -192,3 +192,67 @@ def test_level2s_own_tolerances_are_read_back_in_the_config_order_of_its_observa
     older = {"tolerance": 0.05, "tolerances": {"d10": 0.05, "d5": 0.02}}
     assert list(level2_own_tolerances(older)) == ["d5", "d10"]
     assert level2_own_tolerances({"tolerance": 0.05, "observables": ["a"], "tolerances": {"a": 0.05}}) is None
+
+
+def test_a_material_without_scenarios_is_not_told_that_every_observable_is_used():
+    spec = _spec(scenarios={})
+    ranking = pd.DataFrame([{"observables": "D", "n_observables": 1, "best_subset": "(none)",
+                             "information_gain_bits": 2.0, "gain_vs_best_subset_bits": 2.0,
+                             "feasible_fraction_pct": 10.0, "targets_reachable": True}])
+    for given in (None, ranking):
+        advice = material_advice(spec, NO_VERDICTS, ranking=given, criticism={"level2": {"feasible": True}})
+        assert [i for i in advice if i.kind != "measurement_order"] == []
+
+
+def test_a_rough_reach_in_degrees_is_written_against_its_number_and_other_units_after_a_space():
+    for unit, written in (("°", "about 10° per unit a, about 10° short of the target"),
+                          ("mm", "about 10 mm per unit a, about 10 mm short of the target")):
+        spec = _spec(responses={"D": {"target": 100.0, "unit": unit}, "S": {"unit": "-"}})
+        level2 = {"feasible": False, "tolerance": 0.05, "observables": ["D"], "unmoved": [],
+                  "best_point_at_bound": {"a": "upper", "b": "none"}, "reach": [_reach_at_upper_bound()]}
+        criticism = {"level1": {"D": {"verdict": "does_not_predict"}}, "level2": level2}
+        (item,) = [i for i in material_advice(spec, NO_VERDICTS, criticism=criticism) if i.factor == "a"]
+        assert written in item.text, item.text
+
+
+def _level2_at_upper_bound_of_a(feasible: bool, unmoved: list) -> dict:
+    return {"feasible": feasible, "tolerance": 0.05, "observables": ["D"], "unmoved": unmoved,
+            "best_point_at_bound": {"a": "upper", "b": "none"}, "widen": {"a": ["upper"]}, "reach": []}
+
+
+def test_the_best_point_on_a_bound_is_a_reason_to_widen_only_when_no_point_meets_every_target():
+    spec = _spec()
+    advice = material_advice(spec, NO_VERDICTS, criticism={"level2": _level2_at_upper_bound_of_a(False, [])})
+    (widen,) = [i for i in advice if i.kind == "widen"]
+    assert (widen.factor, widen.bound) == ("a", "upper")
+    assert widen.text.endswith("no point meets every target and the best point lies on it.")
+    advice = material_advice(spec, NO_VERDICTS, criticism={"level2": _level2_at_upper_bound_of_a(True, [])})
+    assert [i for i in advice if i.factor] == []
+
+
+def test_no_range_is_widened_for_an_observable_that_no_factor_moves():
+    advice = material_advice(_spec(), NO_VERDICTS, criticism={"level2": _level2_at_upper_bound_of_a(False, ["D"])})
+    assert [i for i in advice if i.kind == "widen"] == []
+
+
+def test_a_response_neither_in_a_set_nor_in_the_pareto_front_is_not_said_to_be_used_by_the_front():
+    spec = _spec(responses={"D": {"target": 100.0}, "S": {"unit": "-"}, "T": {"unit": "-"}},
+                 pareto={"error_of": "D", "minimise": "S", "max_error": 0.05})
+    criticism = {"level1": {"T": {"verdict": "does_not_predict"}}}
+    (item,) = [i for i in material_advice(spec, NO_VERDICTS, criticism=criticism) if i.kind == "recalibrate"]
+    assert item.observable == "T" and item.text.endswith("so do not use it to judge parameter sets.")
+
+
+def test_the_ranking_is_called_rough_only_for_a_surrogate_it_rests_on():
+    spec = _spec()
+    ranking = pd.DataFrame({"observables": ["D"], "n_observables": [1], "best_subset": ["(none)"],
+                            "information_gain_bits": [2.0], "gain_vs_best_subset_bits": [2.0],
+                            "feasible_fraction_pct": [20.0], "targets_reachable": [True]})
+
+    def walk(weak):
+        return [i.text for i in material_advice(spec, NO_VERDICTS, ranking=ranking,
+                                                criticism={"level1": {weak: {"verdict": "does_not_predict"}}})
+                if i.kind == "measurement_order"]
+
+    assert not any(t.startswith("The ranking rests on") for t in walk("S"))
+    assert walk("D")[0].startswith("The ranking rests on surrogates of which the surrogate of D does not predict")
