@@ -5697,6 +5697,86 @@ EQUIVALENT: dict[str, str] = {
         "len(chosen) <= rank always (each run chosen raises the rank), so while rank < len(members) both are True; "
         "once rank is len(members) the mutant may scan once more, but no candidate can raise a rank of the members' "
         "block beyond len(members): _first_best returns None and the loop stops with the same runs",
+    "demid/published_values.py::_names::mat.get(key) or {} => mat.get(key)#0":
+        "mat is a material entry of the validated config (check_published_values' one caller, "
+        "config._check_published_file, passes config['materials'] after validate_schema has filled the schema's "
+        "defaults, in load_config and in workflow/rules/common.smk alike): responses and factors are required "
+        "(minProperties 1) and scenarios defaults to {} (the schema's type object refuses null), so mat.get(key) "
+        "is always a dict and `or {}` never replaces it",
+    "demid/published_values.py::_schema_error::err.validator == 'additionalProperties' and isinstance(err.instance, dict) => err.validator == 'additionalProperties'#0":
+        "jsonschema's additionalProperties keyword (Draft7Validator, _keywords.additionalProperties) yields an "
+        "error of its own only after validator.is_type(instance, 'object'), i.e. isinstance(instance, dict) "
+        "(_types.is_object); errors from its subschema carry their own validator name, so an error whose "
+        "validator is 'additionalProperties' always has a dict instance",
+    "demid/published_values.py::for_materials::value or [] => value#0":
+        "for_materials' one caller (scripts/summary_tables.py) reads config['published'], the file "
+        "check_published_values validated at the workflow's start (common.smk's check_semantics -> "
+        "_check_published_file, same path): its schema gives contractions type array, so null is refused and the "
+        "value is a list ([] or [] is [])",
+    "demid/published_values.py::for_materials::value or {} => value#0":
+        "for_materials' one caller (scripts/summary_tables.py) reads config['published'], the file "
+        "check_published_values validated at the workflow's start: the schema allows no top-level key besides "
+        "source/provenance (kept as they are), contractions and the per-material sections, each of type object, so "
+        "null is refused and the value is a dict",
+    "demid/published_values.py::out_of_range::1 < value <= 100 => 1 <= value <= 100#0":
+        "the hint is reached only for a value outside [low, high] with percent=True; every such caller's range "
+        "contains 1: check_published_values' tolerances, r2 and pareto max_error are [0, 1], and "
+        "transcription.printed.impossible_published (percent by default) uses _PUBLISHED_RANGES, whose every "
+        "statistic's range is [0, 1], (-inf, 1] or [0, inf); so value == 1 never reaches the hint",
+    "demid/published_values.py::out_of_range::1 => 0#0":
+        "the hint is reached only for a value outside [low, high] with percent=True; every such caller's range "
+        "contains [0, 1] (check_published_values' tolerances, r2 and pareto max_error: [0, 1]; "
+        "impossible_published's _PUBLISHED_RANGES: [0, 1], (-inf, 1] or [0, inf) for every statistic), so no "
+        "value in (0, 1] reaches it and 0 < value <= 100 selects the same values as 1 < value <= 100 there",
+    "demid/story/advice.py::_add_observable::any((o in uninformative for o in s.split('+') if o not in used)) => all((o in uninformative for o in s.split('+') if o not in used))#0":
+        "grow keeps only ranking rows whose best_subset is '+'.join(used) and whose set has len(used) + 1 "
+        "observables; rank_observable_sets draws best_subset from the proper subsets of the row's own set "
+        "(combinations(s, size), distinct names without '+'), so used is a subset of s one smaller and the "
+        "generator yields exactly one observable: any and all of one element agree",
+    "demid/story/advice.py::_add_observable::level2 and (not level2.get('feasible', True)) => not level2.get('feasible', True)#0":
+        "level2 is always a dict: _add_observable's one caller, material_advice, passes "
+        "criticism.get('level2') or {}; for {} the original gives {} and the mutant not True, both false in the "
+        "`if`, and for a non-empty dict both give not level2.get('feasible', True)",
+    "demid/story/advice.py::_check_targets::True => False#0":
+        "the default of found.get('far', ...) is never read: implausible reaches _check_targets only from "
+        "material_advice's one caller (story/build.py), which passes data.implausible_targets(table, targets), "
+        "and every entry it makes sets 'far' (found = {'lo', 'hi', 'factor', 'repaired', 'far'})",
+    "demid/story/advice.py::_widen::True => False#0":
+        "the default of level2.get('feasible', ...) is never read: level2 is material_advice's "
+        "criticism.get('level2') or {}, i.e. {} (then `level2 and ...` stops at {}) or Level2Result.to_json(), "
+        "which always writes 'feasible' (criticism/material.py writes level2.to_json() or None)",
+    "demid/story/advice.py::_widen::level2 and (not level2.get('feasible', True)) => not level2.get('feasible', True)#0":
+        "level2 is always a dict (material_advice passes criticism.get('level2') or {}): for {} the original gives "
+        "{} and the mutant not True, both false where misses is read (`if misses and ...`), and for a non-empty "
+        "dict both give not level2['feasible']",
+    "demid/story/advice.py::_widen::level2 or {} => level2#1":
+        "level2 is always a dict (material_advice passes criticism.get('level2') or {}), so (level2 or {}) is "
+        "level2 itself: {} when empty, the same dict otherwise",
+    "demid/criticism/discrimination.py::_scatter_covariate::np.linalg.lstsq(x, np.asarray(spec.weight_values, dtype=float), rcond=None) => np.linalg.lstsq(x, np.asarray(spec.weight_values, dtype=float))#0":
+        "rcond=None is numpy.linalg.lstsq's default since numpy 2.0 (signature (a, b, rcond=None)); requirements.txt "
+        "pins numpy 2.4.6, so the call is the same (only under numpy 1.x, which requirements.in's numpy>=1.26 still "
+        "admits, would the default be rcond=-1 with a FutureWarning)",
+    "demid/criticism/discrimination.py::discriminating_runs::2 => 1#0":
+        "with one model the original returns [] at once and the mutant goes on to pairs = [(a, b) for a, b in "
+        "combinations(range(1), 2) ...], which is empty, so `if not pairs: return []` returns the same [] "
+        "(with no model both return [] at the first test)",
+    "demid/criticism/discrimination.py::spread_separation::1 => 2#0":
+        "cov_a.shape[-2] for shape[-1]: the one caller, joint_separation, passes stacked()'s covs = "
+        "np.einsum('qij,jk,qlk->qil', jacs, cov, jacs), of shape (points, m, m), square in its last two axes",
+    "demid/criticism/searches.py::_shared_bias_envelope::1 => 0#1":
+        "range(i, ...) adds the pair (i, i) to each row: its meet is w_i w_i |e_i - e_i| / (2 w_i) = 0 (NaN for a "
+        "NaN error), and `higher = meet > value` is then false, since value starts at 0 and only ever grows "
+        "(np.where(higher, meet, value) with meet >= 0); so value and delta are never changed by it",
+    "demid/criticism/searches.py::_shared_bias_envelope::i + 1 => i#0":
+        "range(i, ...) adds the pair (i, i) to each row: its meet is w_i w_i |e_i - e_i| / (2 w_i) = 0 (NaN for a "
+        "NaN error), and `higher = meet > value` is then false, since value starts at 0 and only ever grows "
+        "(np.where(higher, meet, value) with meet >= 0); so value and delta are never changed by it",
+    "demid/criticism/searches.py::_smallest_bias::0 => -1#3":
+        "problem.errors(grid_s[i]) is of one point: grid_s[i] is one grid node (1-D), which Level2Problem.actual "
+        "makes one row (np.atleast_2d), so values and errors have shape (observables, 1) and column 0 is column -1",
+    "demid/criticism/searches.py::_smallest_bias::0 => -1#4":
+        "problem.errors(s) is of one point: s = np.clip(res.x[:d], 0, 1) is 1-D, which Level2Problem.actual makes "
+        "one row (np.atleast_2d), so values and errors have shape (observables, 1) and column 0 is column -1",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
