@@ -1,7 +1,8 @@
 """Unequal scatter that follows the predicted value, on runs made in blocks (criticism.extensions.extend_for): the
 covariate of every run, the excluded one too, is the quadratic's prediction with its block's effect, scaled so that
 the kept runs span -1 to 1 -- against a least-squares fit with one column per block written out with numpy; two and
-three blocks, with and without an excluded run."""
+three blocks, with and without an excluded run; and on a model that carries a drift or a step, the kept runs'
+covariate is the tested one, the fitted values with their run-order part."""
 
 from __future__ import annotations
 
