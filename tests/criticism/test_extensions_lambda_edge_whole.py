@@ -70,3 +70,20 @@ def test_a_lambda_without_a_convenient_value_is_used_to_one_decimal_even_outside
     assert spec.lam == pytest.approx(one_decimal, abs=1e-12)
     assert info["lambda_hat"] == pytest.approx(best, abs=1e-9)
     assert info["lambda_ci"] == pytest.approx([inside.min(), inside.max()], abs=1e-9)
+
+
+def test_a_convenient_lambda_at_the_upper_end_of_the_99_percent_interval_is_used():
+    """The log at the interval's upper end counts as inside too: it is used before the inverse, which lies inside
+    further down (a negative power of a plane: lambda-hat about -0.4, the 99 % interval ending exactly at 0)."""
+    data = _data(0, 8)
+    rng = np.random.default_rng(0)
+    power = -0.58
+    eta = 4.0 + 1.5 * data.coded[:, 0] - 1.0 * data.coded[:, 1] + rng.normal(scale=0.01, size=data.n)
+    data.y = (1 + power * eta / 8) ** (1 / power) * 10
+    model = Model(data, ModelForm())
+    best, inside, plausible = _lambda_by_hand(data, model)
+    assert plausible.max() == 0.0 and plausible.min() <= -1.0 < best
+    spec, info = extend_for(data, model, Hypothesis("response_transform", "boxcox"))
+    assert spec.lam == 0.0
+    assert info["lambda_hat"] == pytest.approx(best, abs=1e-9)
+    assert info["lambda_ci"] == pytest.approx([inside.min(), inside.max()], abs=1e-9)
