@@ -115,6 +115,30 @@ def test_criticism_runs_within_the_rounding_are_put_on_the_bound_and_the_others_
     assert criticism_runs_in_box([], factors, domain, lo, hi) == ([], 0)
 
 
+def test_a_criticism_run_outside_by_exactly_the_rounding_is_kept_on_the_bound_and_one_beyond_is_counted_out():
+    """'No more than the rounding' outside includes exactly the rounding: a thousandth of the range [0, 1000] is
+    exactly 1, so -1 and 1001 are on the bounds 0 and 1000, and the next floats beyond are left out."""
+    domain = Domain(("a", "b"), (0.0, 0.0), (1000.0, 1000.0))
+    lo, hi = np.array([0.0, 200.0]), np.array([500.0, 1000.0])
+    runs = [{"a": -1.0, "b": 300.0, "response": "y0"}, {"a": 250.0, "b": 1001.0, "response": "y1"},
+            {"a": float(np.nextafter(-1.0, -2.0)), "b": 300.0, "response": "y2"},
+            {"a": 250.0, "b": float(np.nextafter(1001.0, 1002.0)), "response": "y3"}]
+    kept, left_out = criticism_runs_in_box(runs, ["a", "b"], domain, lo, hi)
+    assert kept == [{"a": 0.0, "b": 300.0, "response": "y0"}, {"a": 250.0, "b": 1000.0, "response": "y1"}]
+    assert left_out == 2
+
+
+def test_a_criticism_run_exactly_on_a_log_factors_box_bound_keeps_its_written_value():
+    """A run on the box's bound is inside it: its value is the one the criticism wrote, not the bound raised back
+    from log10 units (10 ** log10(2e6) is not 2e6 in floating point)."""
+    domain = Domain(("k",), (2e6,), (5e7,), (True,))
+    lo, hi = np.log10([2e6]), np.log10([3e6])
+    assert 10 ** lo[0] != 2e6 and 10 ** hi[0] != 3e6
+    runs = [{"k": 2e6, "response": "y0"}, {"k": 3e6, "response": "y1"}]
+    kept, left_out = criticism_runs_in_box(runs, ["k"], domain, lo, hi)
+    assert kept == runs and left_out == 0
+
+
 def test_alias_sets_are_read_from_missing_term_findings_with_the_responses_naming_them():
     findings = pd.DataFrame({
         "response": ["y1", "y2", "y3", "y4", "y5"],
