@@ -8,6 +8,7 @@ against every candidate tried by brute force."""
 
 from __future__ import annotations
 
+import json
 from itertools import product
 
 import numpy as np
@@ -17,6 +18,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from demid import run_purposes
+from demid.io import as_stored
 from demid.sampling import Domain
 from demid.wave_runs import (aliased_findings, box_support_count, candidate_points, criticism_runs_in_box,
                              d_optimal_augment, deciding_reason, deciding_runs, design_count, full_rank)
@@ -169,6 +171,17 @@ def test_a_findings_table_without_runs_asks_for_none():
     assert deciding_runs(None, ["a"]) == [] and deciding_runs(pd.DataFrame({"response": ["y"]}), ["a"]) == []
     frame = pd.DataFrame({"response": ["y"], "discriminating_runs": [""]})
     assert deciding_runs(frame, ["a"]) == []
+
+
+def test_rows_without_runs_in_a_stored_findings_table_are_skipped():
+    """The criticism writes its runs on the one row they serve; the other rows of the stored findings (read back
+    from parquet) have no value there, and the next wave reads the runs of that one row only."""
+    rows = [{"response": "y", "cause": "drift", "discriminating_runs": json.dumps(
+                [{"a": 0.5, "purpose": run_purposes.CONFIRM}, {"a": -1.0, "purpose": run_purposes.DECIDE}])},
+            {"response": "y", "cause": "outlier"}, {"response": "z", "cause": "unexplained"}]
+    stored = as_stored(pd.DataFrame(rows))
+    assert deciding_runs(stored, ["a"]) == [{"a": -1.0, "response": "y", "purpose": run_purposes.DECIDE},
+                                            {"a": 0.5, "response": "y", "purpose": run_purposes.CONFIRM}]
 
 
 @given(k=st.integers(1, 2), earlier=st.integers(0, 8), count=st.integers(1, 4), seed=st.integers(0, 10_000))
