@@ -228,7 +228,7 @@ def test_the_box_codes_earlier_runs_to_its_own_minus_one_to_one_before_judging_t
     of the half-width: the wave keeps a design run for the quadratic's missing coefficient exactly when the runs in
     those units are one short -- on the circle, and 3e-8 off (the smallest singular value of their quadratic's rows
     0.7 of the rank tolerance, 1e-8 per run), they are; 1e-7 off (over twice the tolerance) they determine it."""
-    lo, hi = np.array([10.0, 20.0]), np.array([30.0, 60.0])
+    lo, hi = np.array([50.0, 100.0]), np.array([70.0, 140.0])
     n = 12
     t = 2 * np.pi * np.arange(n) / n
     r = 0.6 + off * (-1.0) ** np.arange(n)
