@@ -71,3 +71,22 @@ def test_a_constant_s_error_estimate_is_round_off_whatever_its_scale(value, leng
     assert total[0, 0] == pytest.approx(value * length, rel=1e-14)
     floor = 50 * np.finfo(float).eps * abs(total[0, 0])
     assert floor * (1 - 1e-12) <= error[0] < 1e-11 * abs(total[0, 0])
+
+
+@pytest.mark.parametrize("at", [0.3, 1 / 3, 0.7])
+def test_a_jump_is_refined_for_the_full_forty_rounds_and_its_last_piece_counted(at):
+    """A step from 0 to 1 at s = ``at``: the piece holding the jump never meets its share of the tolerance (its
+    error shrinks only with its length, as its share does), and after r bisections it is 2^-r long, above the 1e-13
+    floor for every r < 40; so every one of the 40 rounds is made, one call each, and the last round's pieces are
+    counted: the error estimate covers the actual error, and is at most what the last piece's variation can be
+    (its length 2^-39 times the jump) beside the other pieces' round-off floors."""
+    assert quadrature._MAX_ROUNDS == 40
+    calls = []
+
+    def step(owner, s):
+        calls.append(len(s))
+        return (s > at).astype(float)[:, None] + 0.0 * owner[:, None]
+
+    total, error = integrate(step, [0], [0.0], [1.0], 1, rtol=1e-6)
+    assert len(calls) == 40
+    assert abs(total[0, 0] - (1 - at)) <= error[0] <= 2.0 ** -39 + 1e-13
