@@ -1,7 +1,7 @@
 """The quadrature's limits met exactly: a batch of pieces is bisected while the bisection leaves at most
-_MAX_PIECES pieces (10,000 owners of one piece are bisected once, 10,001 are not), and a piece no longer than
-1e-15 is left out, and a jump is refined for all 40 rounds.  Each answer is compared with the same rule applied by hand: the 15-point Kronrod sums of the
-pieces the rule ends on, computed by a call that stops at once."""
+_MAX_PIECES pieces (10,000 owners of one piece are bisected once, 10,001 are not), a piece no longer than 1e-15 is
+left out, and a jump is refined for all 40 rounds.  Each answer is compared with the same rule applied by hand: the
+15-point Kronrod sums of the pieces the rule ends on, computed by a call that stops at once."""
 
 from __future__ import annotations
 
