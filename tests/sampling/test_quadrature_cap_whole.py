@@ -1,7 +1,8 @@
 """The quadrature's limits met exactly: a batch of pieces is bisected while the bisection leaves at most
 _MAX_PIECES pieces (10,000 owners of one piece are bisected once, 10,001 are not), a piece no longer than 1e-15 is
-left out, and a jump is refined for all 40 rounds.  Each answer is compared with the same rule applied by hand: the
-15-point Kronrod sums of the pieces the rule ends on, computed by a call that stops at once."""
+left out, a jump is refined for all 40 rounds, and a straight line's estimate is QUADPACK's floor.  Each answer is
+compared with the same rule applied by hand: the 15-point Kronrod sums of the pieces the rule ends on, computed by a
+call that stops at once."""
 
 from __future__ import annotations
 
@@ -90,3 +91,14 @@ def test_a_jump_is_refined_for_the_full_forty_rounds_and_its_last_piece_counted(
     total, error = integrate(step, [0], [0.0], [1.0], 1, rtol=1e-6)
     assert len(calls) == 40
     assert abs(total[0, 0] - (1 - at)) <= error[0] <= 2.0 ** -39 + 1e-13
+
+
+@pytest.mark.parametrize("value", [1e-9, -1e-6, 1.0, -3e3, 1e6])
+@pytest.mark.parametrize("length", [1.0, 0.25])
+def test_a_straight_lines_error_estimate_is_exactly_quadpacks_floor(value, length):
+    """value (1 + s) on [0, length]: both rules integrate a straight line exactly, so |K - G| is round-off while
+    the spread about the mean, value length^2 / 4, is not; QUADPACK's scaled difference is then some 1e-19 of the
+    integral, and the estimate is its floor, 50 machine epsilons of the integral."""
+    total, error = integrate(lambda o, s: value * (1.0 + s)[:, None], [0], [0.0], [length], 1, rtol=1e-8)
+    assert total[0, 0] == pytest.approx(value * (length + length ** 2 / 2), rel=1e-14, abs=0.0)
+    assert error[0] == pytest.approx(50 * np.finfo(float).eps * abs(total[0, 0]), rel=1e-12, abs=0.0)
