@@ -8,6 +8,7 @@ against every candidate tried by brute force."""
 
 from __future__ import annotations
 
+import json
 from itertools import product
 
 import numpy as np
@@ -17,6 +18,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from demid import run_purposes
+from demid.io import as_stored
 from demid.sampling import Domain
 from demid.wave_runs import (aliased_findings, box_support_count, candidate_points, criticism_runs_in_box,
                              d_optimal_augment, deciding_reason, deciding_runs, design_count, full_rank)
@@ -115,6 +117,30 @@ def test_criticism_runs_within_the_rounding_are_put_on_the_bound_and_the_others_
     assert criticism_runs_in_box([], factors, domain, lo, hi) == ([], 0)
 
 
+def test_a_criticism_run_outside_by_exactly_the_rounding_is_kept_on_the_bound_and_one_beyond_is_counted_out():
+    """'No more than the rounding' outside includes exactly the rounding: a thousandth of the range [0, 1000] is
+    exactly 1, so -1 and 1001 are on the bounds 0 and 1000, and the next floats beyond are left out."""
+    domain = Domain(("a", "b"), (0.0, 0.0), (1000.0, 1000.0))
+    lo, hi = np.array([0.0, 200.0]), np.array([500.0, 1000.0])
+    runs = [{"a": -1.0, "b": 300.0, "response": "y0"}, {"a": 250.0, "b": 1001.0, "response": "y1"},
+            {"a": float(np.nextafter(-1.0, -2.0)), "b": 300.0, "response": "y2"},
+            {"a": 250.0, "b": float(np.nextafter(1001.0, 1002.0)), "response": "y3"}]
+    kept, left_out = criticism_runs_in_box(runs, ["a", "b"], domain, lo, hi)
+    assert kept == [{"a": 0.0, "b": 300.0, "response": "y0"}, {"a": 250.0, "b": 1000.0, "response": "y1"}]
+    assert left_out == 2
+
+
+def test_a_criticism_run_exactly_on_a_log_factors_box_bound_keeps_its_written_value():
+    """A run on the box's bound is inside it: its value is the one the criticism wrote, not the bound raised back
+    from log10 units (10 ** log10(2e6) is not 2e6 in floating point)."""
+    domain = Domain(("k",), (2e6,), (5e7,), (True,))
+    lo, hi = np.log10([2e6]), np.log10([3e6])
+    assert 10 ** lo[0] != 2e6 and 10 ** hi[0] != 3e6
+    runs = [{"k": 2e6, "response": "y0"}, {"k": 3e6, "response": "y1"}]
+    kept, left_out = criticism_runs_in_box(runs, ["k"], domain, lo, hi)
+    assert kept == runs and left_out == 0
+
+
 def test_alias_sets_are_read_from_missing_term_findings_with_the_responses_naming_them():
     findings = pd.DataFrame({
         "response": ["y1", "y2", "y3", "y4", "y5"],
@@ -145,6 +171,17 @@ def test_a_findings_table_without_runs_asks_for_none():
     assert deciding_runs(None, ["a"]) == [] and deciding_runs(pd.DataFrame({"response": ["y"]}), ["a"]) == []
     frame = pd.DataFrame({"response": ["y"], "discriminating_runs": [""]})
     assert deciding_runs(frame, ["a"]) == []
+
+
+def test_rows_without_runs_in_a_stored_findings_table_are_skipped():
+    """The criticism writes its runs on the one row they serve; the other rows of the stored findings (read back
+    from parquet) have no value there, and the next wave reads the runs of that one row only."""
+    rows = [{"response": "y", "cause": "drift", "discriminating_runs": json.dumps(
+                [{"a": 0.5, "purpose": run_purposes.CONFIRM}, {"a": -1.0, "purpose": run_purposes.DECIDE}])},
+            {"response": "y", "cause": "outlier"}, {"response": "z", "cause": "unexplained"}]
+    stored = as_stored(pd.DataFrame(rows))
+    assert deciding_runs(stored, ["a"]) == [{"a": -1.0, "response": "y", "purpose": run_purposes.DECIDE},
+                                            {"a": 0.5, "response": "y", "purpose": run_purposes.CONFIRM}]
 
 
 @given(k=st.integers(1, 2), earlier=st.integers(0, 8), count=st.integers(1, 4), seed=st.integers(0, 10_000))
@@ -183,3 +220,21 @@ def test_runs_on_a_conic_as_a_sheet_prints_them_leave_its_quadratic_one_coeffici
     assert design_count(9, 9, printed, lo, hi) == 1
     off = circle * (1.0 + 1e-3 * rng.standard_normal((n, 1)))
     assert full_rank(off, 2) == 0 and design_count(9, 9, off, lo, hi) == 0
+
+
+@pytest.mark.parametrize("off, short", [(0.0, 1), (3e-8, 1), (1e-7, 0), (1e-6, 0)])
+def test_the_box_codes_earlier_runs_to_its_own_minus_one_to_one_before_judging_them(off, short):
+    """Earlier runs near a circle of radius 0.6 in the box's coded units ([-1, 1] over the box), off it by ``off``
+    of the half-width: the wave keeps a design run for the quadratic's missing coefficient exactly when the runs in
+    those units are one short -- on the circle, and 3e-8 off (the smallest singular value of their quadratic's rows
+    0.7 of the rank tolerance, 1e-8 per run), they are; 1e-7 off (over twice the tolerance) they determine it."""
+    lo, hi = np.array([50.0, 100.0]), np.array([70.0, 140.0])
+    n = 12
+    t = 2 * np.pi * np.arange(n) / n
+    r = 0.6 + off * (-1.0) ** np.arange(n)
+    coded = np.column_stack([r * np.cos(t), r * np.sin(t)])
+    actual = (lo + hi) / 2 + coded * (hi - lo) / 2
+    ratio = np.linalg.svd(_quadratic_rows(coded), compute_uv=False).min() / (1e-8 * n)
+    assert (ratio <= 1) == bool(short) and not 0.8 < ratio < 1.25
+    assert full_rank(coded, 2) == short
+    assert design_count(5, 5, actual, lo, hi) == short

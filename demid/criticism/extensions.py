@@ -75,12 +75,13 @@ def extend_for(data: Data, model: Model, h: Hypothesis) -> tuple[ModelForm, dict
         info.update(lambda_hat=lam_hat, lambda_ci=[lo, hi])
         return replace(spec, lam=float(lam)), info
     if h.cause == "heteroscedasticity":
-        if h.detail == "fitted":  # excluded runs: their predicted value, same scaling
+        if h.detail == "fitted":  # excluded runs: their predicted value at the average run, same scaling
             k = len(model.mean_terms)
             fz_all = model_matrix(data.coded, model.mean_terms) @ model.beta[:k]
             if data.blocks is not None:
                 fz_all = fz_all + data.blocks @ model.beta[k:k + data.blocks.shape[1]]
             fz = model.fitted_z
+            fz_all[model.keep] = fz  # the kept runs' covariate is the one tested (drift, step and moved values too)
             values = (fz_all - (fz.max() + fz.min()) / 2) / (np.ptp(fz) / 2)
         else:
             values = data.coded[:, data.factors.index(h.detail)] / data.alpha

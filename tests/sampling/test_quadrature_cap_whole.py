@@ -1,7 +1,8 @@
 """The quadrature's limits met exactly: a batch of pieces is bisected while the bisection leaves at most
-_MAX_PIECES pieces (10,000 owners of one piece are bisected once, 10,001 are not), and a piece no longer than
-1e-15 is left out.  Each answer is compared with the same rule applied by hand: the 15-point Kronrod sums of the
-pieces the rule ends on, computed by a call that stops at once."""
+_MAX_PIECES pieces (10,000 owners of one piece are bisected once, 10,001 are not), a piece no longer than 1e-15 is
+left out, a jump is refined for all 40 rounds, and a straight line's estimate is QUADPACK's floor.  Each answer is
+compared with the same rule applied by hand: the 15-point Kronrod sums of the pieces the rule ends on, computed by a
+call that stops at once."""
 
 from __future__ import annotations
 
@@ -71,3 +72,33 @@ def test_a_constant_s_error_estimate_is_round_off_whatever_its_scale(value, leng
     assert total[0, 0] == pytest.approx(value * length, rel=1e-14)
     floor = 50 * np.finfo(float).eps * abs(total[0, 0])
     assert floor * (1 - 1e-12) <= error[0] < 1e-11 * abs(total[0, 0])
+
+
+@pytest.mark.parametrize("at", [0.3, 1 / 3, 0.7])
+def test_a_jump_is_refined_for_the_full_forty_rounds_and_its_last_piece_counted(at):
+    """A step from 0 to 1 at s = ``at``: the piece holding the jump never meets its share of the tolerance (its
+    error shrinks only with its length, as its share does), and after r bisections it is 2^-r long, above the 1e-13
+    floor for every r < 40; so every one of the 40 rounds is made, one call each, and the last round's pieces are
+    counted: the error estimate covers the actual error, and is at most what the last piece's variation can be
+    (its length 2^-39 times the jump) beside the other pieces' round-off floors."""
+    assert quadrature._MAX_ROUNDS == 40
+    calls = []
+
+    def step(owner, s):
+        calls.append(len(s))
+        return (s > at).astype(float)[:, None] + 0.0 * owner[:, None]
+
+    total, error = integrate(step, [0], [0.0], [1.0], 1, rtol=1e-6)
+    assert len(calls) == 40
+    assert abs(total[0, 0] - (1 - at)) <= error[0] <= 2.0 ** -39 + 1e-13
+
+
+@pytest.mark.parametrize("value", [1e-9, -1e-6, 1.0, -3e3, 1e6])
+@pytest.mark.parametrize("length", [1.0, 0.25])
+def test_a_straight_lines_error_estimate_is_exactly_quadpacks_floor(value, length):
+    """value (1 + s) on [0, length]: both rules integrate a straight line exactly, so |K - G| is round-off while
+    the spread about the mean, value length^2 / 4, is not; QUADPACK's scaled difference is then some 1e-19 of the
+    integral, and the estimate is its floor, 50 machine epsilons of the integral."""
+    total, error = integrate(lambda o, s: value * (1.0 + s)[:, None], [0], [0.0], [length], 1, rtol=1e-8)
+    assert total[0, 0] == pytest.approx(value * (length + length ** 2 / 2), rel=1e-14, abs=0.0)
+    assert error[0] == pytest.approx(50 * np.finfo(float).eps * abs(total[0, 0]), rel=1e-12, abs=0.0)

@@ -75,3 +75,21 @@ def test_a_two_factor_fraction_error_adds_both_integrations_estimates_and_their_
     assert err0 > 0 and err1 > 0 and along0 != along1  # premise: every part of the sum counts
     assert exact.fraction == along0
     assert exact.fraction_error == pytest.approx(err0 + err1 + abs(along0 - along1), rel=1e-12, abs=0.0)
+
+
+@pytest.mark.parametrize("eps", [1e-2, 1e-3])
+def test_one_piece_estimate_is_quadpacks_formula_to_a_thousandth(eps):
+    """An integrand whose spread about its mean is smooth: f = 2 + (s - 1/2) |s - 1/2| + eps cos(10 s), so that
+    |f - mean| is (s - 1/2)^2 but for a kink of order eps^1.5, and the 15-point sum of it is its integral to a few
+    1e-5; with 200 |K - G| / v well below 1 the estimate v (200 |K - G| / v) ** 1.5 is then checked to 1e-3."""
+    def f(s):
+        return 2.0 + (s - 0.5) * np.abs(s - 0.5) + eps * np.cos(10.0 * s)
+
+    total, error = quadrature.integrate(lambda owner, s: f(s)[:, None], [0], [0.0], [1.0], 1, rtol=10.0)
+    kronrod = float(total[0, 0])
+    x, w = np.polynomial.legendre.leggauss(7)
+    gauss = float(np.sum(w / 2 * _substituted(f, (x + 1) / 2)))
+    variation = integrate.quad(lambda s: abs(f(s) - kronrod), 0.0, 1.0, limit=400, epsabs=1e-14, epsrel=1e-12)[0]
+    ratio = 200 * abs(kronrod - gauss) / variation
+    assert 1e-3 < ratio < 0.5
+    assert error[0] == pytest.approx(variation * ratio ** 1.5, rel=1e-3)
