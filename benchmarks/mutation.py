@@ -3814,10 +3814,6 @@ EQUIVALENT: dict[str, str] = {
         "frame is built from a list of rows, so its index is the RangeIndex the Series gets by default",
     "demid/wave_value.py::expected_contraction::float(after.mean()) => after.mean()#0":
         _NUMPY_FLOAT + " (phi_after enters arithmetic, :.3g text and JSON through io.json_ready)",
-    "demid/wave_runs.py::design_count::lo + hi => hi#0":
-        "the earlier runs are then shifted by lo / 2 in coded units: the full quadratics in shifted coordinates "
-        "are the same space, so the model matrix's rank is the same (its singular values are either of the order "
-        "of max|m| or round-off, as full_rank's tolerance entry says)",
     "demid/combinations/material.py::MaterialCombinations.to_json::float(v) => v#1":
         _NUMPY_FLOAT + " (the coded centre is written to combinations/{material}.json through io.json_ready)",
     "demid/combinations/axes.py::linear_statement::float(np.linalg.norm(a)) => np.linalg.norm(a)#0":
@@ -5777,6 +5773,41 @@ EQUIVALENT: dict[str, str] = {
     "demid/criticism/searches.py::_smallest_bias::0 => -1#4":
         "problem.errors(s) is of one point: s = np.clip(res.x[:d], 0, 1) is 1-D, which Level2Problem.actual makes "
         "one row (np.atleast_2d), so values and errors have shape (observables, 1) and column 0 is column -1",
+    "demid/design_generation.py::parse_factor::np.isfinite(lo) and np.isfinite(hi) => np.isfinite(hi)#0":
+        "the line above already refuses lo or hi not finite (numbers.unusable_number names a nan as 'not a number' "
+        "and an infinity as infinite or overflowing): here both are finite and the finiteness test is always True",
+    "demid/design_generation.py::parse_factor::np.isfinite(lo) and np.isfinite(hi) => np.isfinite(lo) or "
+    "np.isfinite(hi)#0":
+        "the line above already refuses lo or hi not finite (numbers.unusable_number names a nan as 'not a number' "
+        "and an infinity as infinite or overflowing): here both are finite, so 'and' and 'or' are both True",
+    "demid/criticism/extensions.py::extend_for::0 => -1#1":
+        "boxcox_profile(model.y[:, None], ...) profiles the columns of an (n, 1) array: its result is (lambdas, 1), "
+        "so its first and last columns are the same",
+    "demid/wave_runs.py::d_optimal_augment::1 => 2#1":
+        "the chosen points' reshape(-2, k) for reshape(-1, k): numpy takes any negative size as the one unknown "
+        "dimension, so the shape is the same, (0, k) too when no run is chosen (checked with numpy 2.4.6)",
+    "demid/wave_runs.py::d_optimal_augment::candidates is None or not len(candidates) => candidates is None#0":
+        "the only caller passing candidates, next_wave._design, passes the band's points only after returning early "
+        "when there are none (if not len(plausible)): the candidates are never an empty array",
+    "demid/wave_runs.py::design_count::1 => 2#0":
+        "the earlier runs' reshape(-2, k) for reshape(-1, k): numpy takes any negative size as the one unknown "
+        "dimension, so the shape is the same, (0, k) too without earlier runs (checked with numpy 2.4.6)",
+    "demid/wave_runs.py::full_rank::max(np.abs(m).max(), 1.0) => min(np.abs(m).max(), 1.0)#0":
+        "the quadratic model matrix's largest entry is 1: its intercept column is all ones, and every other entry is "
+        "a product of coordinates in [-1, 1] (design_count and next_wave._design pass points coded to the box: "
+        "earlier runs inside it to 1e-12 of its range, the box's grid and band points; see the entry of "
+        "'1e-08 * max(np.abs(m).max(), 1.0) => 1e-08#0'), so max(1, 1) and min(1, 1) are the same scale 1",
+    "demid/wave_runs.py::full_rank::np.abs(m).max() => np.abs(m).min()#0":
+        "the tolerance's scale is then max(min |m|, 1.0) = 1 (the intercept's ones make min |m| <= 1), and the "
+        "original's max(max |m|, 1.0) is 1 too: the largest entry is the intercept's 1, every other entry being a "
+        "product of coordinates coded to the box, in [-1, 1] (design_count and next_wave._design; see the entry of "
+        "'1e-08 * max(np.abs(m).max(), 1.0) => 1e-08#0')",
+    "demid/sampling/quadrature.py::integrate::1 - np.cos(np.pi * _KRONROD_NODES) => 1 + np.cos(np.pi * _KRONROD_NODES)#0":
+        "the same Gauss-Kronrod rule with the piece's map reflected (s0 + h - ... for s0 + ...): the nodes on [0, 1] "
+        "are symmetric about 1/2 and cos(pi (1 - v)) = -cos(pi v), so node i lands where node 14 - i did, and its "
+        "Kronrod and Gauss weights and Jacobian (sin(pi v)) are those of its mirror: every sum of the piece (integral, "
+        "Gauss value, variation) is the same sum in reverse order, equal to round-off (4e-16 of pi / 2 on a "
+        "square-root end), and the bisections alike",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
