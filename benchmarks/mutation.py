@@ -5828,6 +5828,14 @@ EQUIVALENT: dict[str, str] = {
         "Kronrod and Gauss weights and Jacobian (sin(pi v)) are those of its mirror: every sum of the piece (integral, "
         "Gauss value, variation) is the same sum in reverse order, equal to round-off (4e-16 of pi / 2 on a "
         "square-root end), and the bisections alike",
+    # --- the fifteenth held-out draw's survivors (seed 581_029), read after it
+    "demid/sampling/grid.py::admissible_set::subdivisions or (16 if d <= 2 else 4) => 16 if d <= 2 else 4#0":
+        "no caller in demid/ or scripts/ passes subdivisions: evaluate_set and summarise_set call admissible_set "
+        "without it, and plausible_admissible_set forwards its own, which its one caller (summarise_set) leaves at "
+        "None",
+    "demid/sampling/roots.py::_quadratic_roots::0 => -1#0":
+        "disc < -1 for disc < 0: a disc in [-1, 0) gives np.sqrt(disc) = NaN (invalid ignored by the errstate), so q "
+        "and both roots are NaN, which the next line's ~np.isfinite(roots) sets to NaN all the same",
 }
 
 # Search settings: id -> reason.  A mutant of one of these changes no formula but a setting of a numerical
