@@ -26,7 +26,12 @@ def _pair(sign: float, inert: bool):
     root, 1.8, is below the range): both are met near (5.8, 20), and y2 rises away from the range's lower end,
     where nothing meets it.  ``sign`` -1 negates responses and targets."""
     factors = ["a", "b", "c"] if inert else ["a", "b"]
-    lower, upper = (2.0, 10.0, -1.0), (6.0, 30.0, 1.0)
+    return _line_and_well(sign, factors, (2.0, 10.0, -1.0), (6.0, 30.0, 1.0), 3.8, 2.0)
+
+
+def _line_and_well(sign: float, factors, lower, upper, centre: float, half_width: float):
+    """y1 = b with target 20 and y2 = 10 + (a - centre)^2 with target 10 + half_width^2 (met at centre +- half_width),
+    over the first len(factors) of ``lower`` and ``upper``; ``sign`` -1 negates responses and targets."""
     domain = Domain(tuple(factors), lower[:len(factors)], upper[:len(factors)])
     zero = (0,) * len(factors)
 
@@ -35,9 +40,10 @@ def _pair(sign: float, inert: bool):
 
     surrogates = {
         "y1": _quadratic("y1", factors, {term(b=1): sign}),
-        "y2": _quadratic("y2", factors, {zero: sign * (10 + 3.8 ** 2), term(a=1): -sign * 7.6, term(a=2): sign}),
+        "y2": _quadratic("y2", factors, {zero: sign * (10 + centre ** 2), term(a=1): -sign * 2 * centre,
+                                         term(a=2): sign}),
     }
-    return domain, surrogates, {"y1": sign * 20.0, "y2": sign * 14.0}
+    return domain, surrogates, {"y1": sign * 20.0, "y2": sign * (10 + half_width ** 2)}
 
 
 @pytest.mark.parametrize("sign", [1.0, -1.0])
@@ -69,17 +75,8 @@ def test_a_pair_met_between_nodes_is_found_when_every_best_node_is_a_near_miss_a
     Every node at a = 2, b = 20 misses y2 by 0.28 % (beside factors neither response moves, all equally good), the
     nodes near a = 5.83 by 5 % or more; at a tolerance of 0.2 % the pair is met only near (5.83, 20)."""
     factors = ["a", "b", "c", "d"][:2 + n_inert]
-    domain = Domain(tuple(factors), (2.0, 10.0, 0.0, 0.0)[:len(factors)], (6.0, 30.0, 1.0, 1.0)[:len(factors)])
-    zero = (0,) * len(factors)
-
-    def term(**exponents):
-        return tuple(exponents.get(f, 0) for f in factors)
-
-    surrogates = {
-        "y1": _quadratic("y1", factors, {term(b=1): sign}),
-        "y2": _quadratic("y2", factors, {zero: sign * (10 + 3.91 ** 2), term(a=1): -sign * 7.82, term(a=2): sign}),
-    }
-    targets = {"y1": sign * 20.0, "y2": sign * (10 + 1.92 ** 2)}
+    domain, surrogates, targets = _line_and_well(sign, factors, (2.0, 10.0, 0.0, 0.0), (6.0, 30.0, 1.0, 1.0), 3.91,
+                                                 1.92)
     witness = np.array([[5.83, 20.0, 0.5, 0.5][:len(factors)]])
     assert max(abs(float(surrogates[o].predict(witness)[0]) - t) / abs(t) for o, t in targets.items()) <= 1e-12
     assert _met_together(surrogates, domain, ["y1", "y2"], targets, 0.002)
