@@ -32,17 +32,23 @@ def test_a_convenient_lambda_at_the_end_of_the_99_percent_interval_is_used():
     assert info["lambda_ci"] == pytest.approx([inside.min(), inside.max()], abs=1e-9)
 
 
-@pytest.mark.parametrize("power", [0.97, 1.03])
-def test_a_lambda_near_one_without_a_convenient_value_is_used_to_two_decimals(power):
-    """A Box-Cox power of a plane close to 1 on a response spanning 1 to about 30: the 99 % interval is a few
-    hundredths wide around it and holds no convenient lambda; lambda-hat to one decimal would be 1 (no transform at
-    all), so the transform used is lambda-hat to two decimals."""
+def _boxcox_plane(power: float):
+    """Two factors, eight runs: a response whose Box-Cox transform with ``power`` is a plane spanning about 1 to 30,
+    with a hundredth of noise; its model and what _lambda_by_hand reads from it."""
     data = _data(2, 8)
     rng = np.random.default_rng(2)
     z = 12.5 + 7.0 * data.coded[:, 0] - 5.0 * data.coded[:, 1] + rng.normal(scale=0.01, size=data.n)
     data.y = (1 + power * z) ** (1 / power)
     model = Model(data, ModelForm())
-    best, inside, plausible = _lambda_by_hand(data, model)
+    return (data, model, *_lambda_by_hand(data, model))
+
+
+@pytest.mark.parametrize("power", [0.97, 1.03])
+def test_a_lambda_near_one_without_a_convenient_value_is_used_to_two_decimals(power):
+    """A Box-Cox power of a plane close to 1 on a response spanning 1 to about 30: the 99 % interval is a few
+    hundredths wide around it and holds no convenient lambda; lambda-hat to one decimal would be 1 (no transform at
+    all), so the transform used is lambda-hat to two decimals."""
+    data, model, best, inside, plausible = _boxcox_plane(power)
     assert not [v for v in (*TRANSFORM_NAMES, *NICE_LAMBDAS) if plausible.min() <= v <= plausible.max()]
     assert round(best, 1) == 1.0 and round(best, 2) != 1.0
     spec, info = extend_for(data, model, Hypothesis("response_transform", "boxcox"))
@@ -56,12 +62,7 @@ def test_a_lambda_without_a_convenient_value_is_used_to_one_decimal_even_outside
     """A Box-Cox power of a plane away from 1 and from every convenient value, with a 99 % interval a few
     hundredths wide: lambda-hat to one decimal is neither 1 nor a named transform, so it is the transform used,
     though it lies just outside the interval (two decimals only where one decimal reads 1 or names a transform)."""
-    data = _data(2, 8)
-    rng = np.random.default_rng(2)
-    z = 12.5 + 7.0 * data.coded[:, 0] - 5.0 * data.coded[:, 1] + rng.normal(scale=0.01, size=data.n)
-    data.y = (1 + power * z) ** (1 / power)
-    model = Model(data, ModelForm())
-    best, inside, plausible = _lambda_by_hand(data, model)
+    data, model, best, inside, plausible = _boxcox_plane(power)
     assert not [v for v in (*TRANSFORM_NAMES, *NICE_LAMBDAS) if plausible.min() <= v <= plausible.max()]
     one_decimal = round(best, 1)
     assert one_decimal != 1.0 and one_decimal not in TRANSFORM_NAMES
