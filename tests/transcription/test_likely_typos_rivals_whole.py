@@ -9,25 +9,10 @@ by more than an error nor by a slip as common; 61.1 and 62.1 lie within two erro
 from __future__ import annotations
 
 import numpy as np
-import pandas as pd
 import pytest
 
 import demid.transcription.typos as typos
-from demid.data import validate_material
-from demid.spec import MaterialSpec
-
-
-def _validated(tmp_path):
-    points = np.array([(a, b) for a in (0.1, 0.5, 0.9) for b in (1.0, 6.0, 11.0)])
-    y = np.round(30 + 10 * points[:, 0] + points[:, 1], 2)
-    y[4] = 6.1
-    table = pd.DataFrame({"run": np.arange(1, 10), "x1": points[:, 0], "x2": points[:, 1], "y": y})
-    path = tmp_path / "t.csv"
-    table.to_csv(path, index=False)
-    spec = MaterialSpec.from_material("m", {
-        "data": str(path), "design": {"type": "custom"},
-        "factors": {"x1": {"lower": 0.1, "upper": 0.9}, "x2": {"lower": 1, "upper": 11}}, "responses": {"y": {}}})
-    return validate_material(spec), spec
+from tests.transcription.test_likely_typos_three_se_whole import _validated
 
 
 def _screen(coded, observed, terms, df):
@@ -39,7 +24,7 @@ def _screen(coded, observed, terms, df):
 
 
 def test_the_other_repairs_are_those_fitting_better_by_an_error_or_of_as_common_a_slip(tmp_path, monkeypatch):
-    validated, spec = _validated(tmp_path)
+    validated, spec = _validated(tmp_path, 6.1)
     monkeypatch.setattr(typos, "_screen_residuals", _screen)
     (flag,) = typos.likely_typos(validated, spec)
     assert (flag["run"], flag["column"], flag["found"], flag["suggested"], flag["kind"]) == (

@@ -16,10 +16,11 @@ from demid.data import validate_material
 from demid.spec import MaterialSpec
 
 
-def _validated(tmp_path):
+def _validated(tmp_path, printed: float = 61.0):
+    """A plane over a 3 x 3 grid with run 5 printed as ``printed`` (by default 61.0 where 16.0 was meant)."""
     points = np.array([(a, b) for a in (0.1, 0.5, 0.9) for b in (1.0, 6.0, 11.0)])
     y = np.round(30 + 10 * points[:, 0] + points[:, 1], 2)
-    y[4] = 61.0  # run 5, printed 61.0 where 16.0 was meant
+    y[4] = printed
     table = pd.DataFrame({"run": np.arange(1, 10), "x1": points[:, 0], "x2": points[:, 1], "y": y})
     path = tmp_path / "t.csv"
     table.to_csv(path, index=False)
