@@ -10,18 +10,7 @@ import os
 import pytest
 
 import demid.io
-
-
-class _Sized:
-    def __init__(self, width, height):
-        self.size = (width, height)
-
-    def get_size_inches(self):
-        return self.size
-
-
-def _noting_pid(fig, path):
-    path.write_text(str(os.getpid()), encoding="utf-8")
+from tests.test_save_figures_io_whole import _noting_pid, _Sized
 
 
 @pytest.mark.skipif(not hasattr(os, "fork"), reason="the share needs a platform that can fork")
